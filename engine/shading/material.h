@@ -1,0 +1,21 @@
+#pragma once
+// Contract: the hair fibre material of the Marschner model (REFERENCES.md §3). Angles are stored in
+// radians; absorption sigma_a is per unit fibre radius, per RGB channel. validate() throws hp::Error
+// naming the first bad field (NaN, negative, or outside the physically meaningful range).
+#include <glm/glm.hpp>
+
+namespace hp {
+struct HairMaterial {
+  double eta = 1.55;                                  // index of refraction of the fibre
+  glm::dvec3 absorption = {0.55, 0.91, 1.78};         // sigma_a per unit radius (brown)
+  double alphaR = glm::radians(-7.5);                 // longitudinal shift of R (radians)
+  double betaR = glm::radians(7.5);                   // longitudinal width of R (radians)
+  double kG = 0.5;                                    // caustic glint scale
+  double wc = glm::radians(15.0);                     // caustic azimuthal width (radians)
+  double dEta = 0.3;                                  // caustic fade range for eta'
+  double dhM = 0.5;                                   // caustic maximum h range
+
+  void validate() const;
+  bool operator==(const HairMaterial&) const = default;
+};
+}  // namespace hp

@@ -1,0 +1,32 @@
+// Entry point of the `hairpipe` command line tool: builds the CLI11 app from the registered
+// subcommands and maps every failure to a message on stderr and exit code 1.
+#include <iostream>
+
+#include "engine/error.h"
+#include "samples/cli/command.h"
+
+namespace hp::cli {
+std::vector<CommandSetup>& commandRegistry() {
+  static std::vector<CommandSetup> registry;
+  return registry;
+}
+}  // namespace hp::cli
+
+int main(int argc, char** argv) {
+  CLI::App app{"hairpipe: a dynamic strand-hair pipeline on Vulkan"};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", "hairpipe 0.1.0");
+  for (const auto& setup : hp::cli::commandRegistry()) setup(app);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  } catch (const hp::Error& e) {
+    std::cerr << "hairpipe: error: " << e.what() << "\n";
+    return 1;
+  } catch (const std::exception& e) {
+    std::cerr << "hairpipe: error: " << e.what() << "\n";
+    return 1;
+  }
+  return 0;
+}
