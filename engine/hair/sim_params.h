@@ -1,0 +1,27 @@
+#pragma once
+// Contract: parameters of the guide simulation (REFERENCES.md §2). Units are scene units (metres for
+// the default head) and seconds. validate() throws hp::Error naming the first bad field: NaN/Inf,
+// dt <= 0, iterations outside [1, 1000], negative radii, damping outside [0, 1], and so on.
+#include <glm/glm.hpp>
+
+#include <cstdint>
+
+namespace hp {
+struct SimulationParams {
+  double dt = 1.0 / 60.0;                 // frame time step (s)
+  std::uint32_t substeps = 2;             // Verlet substeps per frame
+  std::uint32_t iterations = 8;           // length-constraint + collision iterations per substep
+  glm::dvec3 gravity = {0.0, -9.81, 0.0}; // m/s^2, world space
+  double damping = 0.02;                  // fraction of velocity removed per substep, [0, 1]
+  double pearlRadius = 0.002;             // r_p: sphere around every particle (scene units)
+  double stiffness = 0.05;                // shape stiffness toward the rest pose at the root, [0, 1]
+  double stiffnessFalloff = 0.7;          // per-segment decay of the stiffness toward the tip, [0, 1]
+  double maxSpeed = 10.0;                 // particle speed clamp (scene units / s), > 0
+  glm::dvec3 windDirection = {1.0, 0.0, 0.0};
+  double windStrength = 0.0;              // acceleration (scene units / s^2) along windDirection
+  double windGust = 0.0;                  // relative gust amplitude, [0, 1]
+  double windGustFrequency = 0.5;         // Hz
+
+  void validate() const;
+};
+}  // namespace hp
