@@ -1,0 +1,111 @@
+// Shared by GLSL and C++ (one source of truth for the Marschner shading interface, REFERENCES.md §3):
+// - the LUT mode values, LUT resolutions and the parameterisation constants;
+// - MarschnerParams, the GPU material + LUT-scale block (std140/std430-safe: 16-byte members only;
+//   C++ size/offset checks live in engine/shading/marschner_gpu.h);
+// - the texture-coordinate functions of the LUT modes. They are written in the common subset of GLSL
+//   and C++ (HP_FN, float literals with an f suffix), so the CPU emulation in
+//   engine/shading/lut_sampler.cpp computes bit-for-bit the same coordinates formula as the shader.
+#ifndef HP_SHARED_MARSCHNER_H
+#define HP_SHARED_MARSCHNER_H
+
+#include "common.h"
+
+#ifdef __cplusplus
+#include <cmath>
+#define HP_FN inline
+namespace hp::gpu {
+using vec3 = glm::vec3;
+using uvec4 = glm::uvec4;
+using glm::clamp;
+using glm::dot;
+using glm::inversesqrt;
+using glm::max;
+using glm::normalize;
+using std::sqrt;
+}  // namespace hp::gpu
+#else
+#define HP_FN
+#endif
+
+HP_BEGIN
+
+// How S is evaluated (MarschnerParams.control.x, or a push constant).
+HP_CONST(uint, MARSCHNER_MODE_DIRECT, 0u)     // analytic S in the shader, no textures
+HP_CONST(uint, MARSCHNER_MODE_LUT_PAPER, 1u)  // the paper's two RGBA8 128x128 textures
+HP_CONST(uint, MARSCHNER_MODE_LUT_FLOAT, 2u)  // three RGBA16F textures, separate lobes
+
+// `paper` mode: M (RGBA8) indexed by (sin theta_i, sin theta_r) * 0.5 + 0.5,
+// N (RGBA8) indexed by (cos phi * 0.5 + 0.5, cos theta_d). Both square.
+HP_CONST(uint, MARSCHNER_PAPER_LUT_SIZE, 128u)
+
+// `float` mode (RGBA16F, see docs/SHADING.md for the measurements behind these numbers):
+//   M  : MARSCHNER_FLOAT_M_WIDTH x 1, (M_R, M_TT, M_TRT, 0) over the signed pseudo-angle of theta_h;
+//   N0 : N_WIDTH x N_HEIGHT, (N_TT.rgb, N_R); N1: same size, (N_TRT.rgb, 0);
+//        u = pseudo-angle of phi/2 (0 at phi = 0, 1 at phi = pi), v = pseudo-angle of |theta_d|.
+// N is NOT divided by cos^2 theta_d: the shader multiplies by 2 / (1 + cos 2 theta_d), exact and cheap.
+HP_CONST(uint, MARSCHNER_FLOAT_M_WIDTH, 1024u)
+HP_CONST(uint, MARSCHNER_FLOAT_N_WIDTH, 256u)
+HP_CONST(uint, MARSCHNER_FLOAT_N_HEIGHT, 128u)
+
+HP_CONST(float, MARSCHNER_INV_SQRT2, 0.70710678f)
+
+// GPU block: material and the factors that undo the LUT rescaling.
+struct MarschnerParams {
+  vec4 absorption;    // xyz = sigma_a per unit fibre radius (RGB), w = eta
+  vec4 longitudinal;  // x = alpha_R, y = beta_R, z = k_G, w = w_c (radians)
+  vec4 caustic;       // x = d_eta', y = dh_M, zw = 0
+  vec4 mScale;        // sampled M texel * mScale = physical value (paper: per channel; float: 1)
+  vec4 n0Scale;       // same for the first N texture
+  vec4 n1Scale;       // same for the second N texture (float mode only)
+  uvec4 control;      // x = MARSCHNER_MODE_*, yzw = 0
+};
+
+// Pseudo-angle of a in [0, pi/2] from cos(2a): sin(a)/sqrt2 below pi/4, 1 - cos(a)/sqrt2 above.
+// It is 0 at a = 0, 1/2 at pi/4, 1 at pi/2, C1, and its slope in a stays within [0.35, 0.5] (x sqrt2)
+// so a texture indexed by it resolves every angle about equally, using only square roots.
+HP_FN float marschnerPseudoAngle(float cos2a) {
+  float s = sqrt(max(0.0f, 0.5f - 0.5f * cos2a));
+  float c = sqrt(max(0.0f, 0.5f + 0.5f * cos2a));
+  return cos2a >= 0.0f ? s * MARSCHNER_INV_SQRT2 : 1.0f - c * MARSCHNER_INV_SQRT2;
+}
+
+// Maps x in [0, 1] onto texel centres: x = 0 lands on the centre of texel 0, x = 1 on texel n-1, so
+// the table holds both ends exactly and clamp-to-edge never extrapolates.
+HP_FN float marschnerTexelCentreCoord(float x, float n) {
+  return (x * (n - 1.0f) + 0.5f) / n;
+}
+
+// (sin theta_i, sin theta_r, cos phi, 0) from unit-or-not L, V, T (REFERENCES §3, eqs. 4-7).
+// Degenerate azimuth (L or V parallel to T): cos phi = 0, i.e. phi = pi/2.
+HP_FN vec4 marschnerAngles(vec3 L, vec3 V, vec3 T) {
+  vec3 t = normalize(T);
+  float si = clamp(dot(normalize(L), t), -1.0f, 1.0f);
+  float sr = clamp(dot(normalize(V), t), -1.0f, 1.0f);
+  vec3 lp = normalize(L) - si * t;
+  vec3 vp = normalize(V) - sr * t;
+  float d = dot(lp, lp) * dot(vp, vp);
+  float cosPhi = d > 1e-14f ? clamp(dot(lp, vp) * inversesqrt(d), -1.0f, 1.0f) : 0.0f;
+  return vec4(si, sr, cosPhi, 0.0f);
+}
+
+// `float` mode coordinates from marschnerAngles(): (M u, N u, N v, 1 / cos^2 theta_d).
+// cos 2theta_h = cos(theta_i + theta_r), cos 2theta_d = cos(theta_r - theta_i): products of sines and
+// cosines, no inverse trigonometry. sign(theta_h) = sign(sin theta_i + sin theta_r).
+HP_FN vec4 marschnerFloatCoords(vec4 angles) {
+  float si = angles.x;
+  float sr = angles.y;
+  float ci = sqrt(max(0.0f, 1.0f - si * si));
+  float cr = sqrt(max(0.0f, 1.0f - sr * sr));
+  float cos2h = ci * cr - si * sr;
+  float cos2d = ci * cr + si * sr;
+  float h = marschnerPseudoAngle(cos2h);
+  float mx = 0.5f + 0.5f * (si + sr >= 0.0f ? h : -h);
+  float mu = marschnerTexelCentreCoord(mx, float(MARSCHNER_FLOAT_M_WIDTH));
+  float nu = marschnerTexelCentreCoord(marschnerPseudoAngle(angles.z), float(MARSCHNER_FLOAT_N_WIDTH));
+  float nv = marschnerTexelCentreCoord(marschnerPseudoAngle(cos2d), float(MARSCHNER_FLOAT_N_HEIGHT));
+  return vec4(mu, nu, nv, 2.0f / max(1.0f + cos2d, 1e-12f));
+}
+
+HP_END
+
+#endif

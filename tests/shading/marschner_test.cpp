@@ -1,0 +1,158 @@
+// The exact S: closed forms, symmetry, sanity over random directions, lobe shapes, caustic branches.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <random>
+
+#include "engine/shading/fresnel.h"
+#include "engine/shading/marschner.h"
+#include "engine/shading/marschner_terms.h"
+#include "tests/shading/random_directions.h"
+
+using namespace hp;
+using namespace hp::shading;
+constexpr double kPi = std::numbers::pi;
+
+TEST(Marschner, NRIsTheClosedForm) {
+  HairMaterial m;
+  for (double td : {0.0, 0.4, -0.9})
+    for (double phi = 0.0; phi <= kPi; phi += 0.1) {
+      double e1 = bravaisEtaPrime(m.eta, td), e2 = bravaisEtaDoublePrime(m.eta, td);
+      double expected = fresnel(e1, e2, -phi / 2) * std::cos(phi / 2) / 4;
+      EXPECT_NEAR(lobeNR(phi, td, m), expected, 1e-15) << td << " " << phi;
+    }
+}
+
+TEST(Marschner, BravaisIndicesAtNormalIncidenceAreEta) {
+  EXPECT_DOUBLE_EQ(bravaisEtaPrime(1.55, 0.0), 1.55);
+  EXPECT_DOUBLE_EQ(bravaisEtaDoublePrime(1.55, 0.0), 1.55);
+  double td = 0.7, s = std::sin(td), c = std::cos(td);
+  EXPECT_NEAR(bravaisEtaPrime(1.55, td), std::sqrt(1.55 * 1.55 - s * s) / c, 1e-15);
+  EXPECT_NEAR(bravaisEtaDoublePrime(1.55, td), 1.55 * 1.55 * c / std::sqrt(1.55 * 1.55 - s * s), 1e-15);
+}
+
+TEST(Marschner, MIsTheShiftedGaussian) {
+  HairMaterial m;
+  EXPECT_NEAR(lobeM(0, m.alphaR, m), 1.0 / (m.betaR * std::sqrt(2 * kPi)), 1e-12);
+  EXPECT_NEAR(lobeM(1, -m.alphaR / 2, m), 1.0 / (m.betaR / 2 * std::sqrt(2 * kPi)), 1e-12);
+  EXPECT_NEAR(lobeM(2, -1.5 * m.alphaR, m), 1.0 / (2 * m.betaR * std::sqrt(2 * kPi)), 1e-12);
+}
+
+TEST(Marschner, SIsSymmetricInLAndV) {
+  HairMaterial m;
+  std::mt19937_64 rng(7);
+  for (int i = 0; i < 2000; ++i) {
+    auto t = test::uniformTriple(rng);
+    glm::dvec3 a = marschnerS(t.L, t.V, t.T, m), b = marschnerS(t.V, t.L, t.T, m);
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(a[c], b[c], 1e-12 * (std::abs(a[c]) + 1e-300));
+  }
+}
+
+TEST(Marschner, FlippingTheTangentIsSymmetricOnlyWithoutShift) {
+  // T -> -T maps theta_h -> -theta_h; M_p(theta_h - alpha_p) is even only if alpha_R = 0.
+  HairMaterial m;
+  m.alphaR = 0.0;
+  std::mt19937_64 rng(8);
+  for (int i = 0; i < 500; ++i) {
+    auto t = test::uniformTriple(rng);
+    glm::dvec3 a = marschnerS(t.L, t.V, t.T, m), b = marschnerS(t.L, t.V, -t.T, m);
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(a[c], b[c], 1e-10 * (std::abs(a[c]) + 1e-300));
+  }
+  HairMaterial shifted;
+  glm::dvec3 L(1, 0, -0.13), V(0.2, 1, -0.13), T(0, 0, 1);  // theta_h ~ alpha_R
+  EXPECT_GT(std::abs(marschnerS(L, V, T, shifted).x - marschnerS(L, V, -T, shifted).x), 1e-3);
+}
+
+TEST(Marschner, RotationAboutTheTangentChangesNothing) {
+  HairMaterial m;
+  glm::dvec3 T(0, 0, 1), L(0.3, 0.4, 0.5), V(-0.7, 0.2, -0.1);
+  double c = std::cos(1.1), s = std::sin(1.1);
+  auto rot = [&](glm::dvec3 x) { return glm::dvec3(c * x.x - s * x.y, s * x.x + c * x.y, x.z); };
+  glm::dvec3 a = marschnerS(L, V, T, m), b = marschnerS(rot(L), rot(V), T, m);
+  for (int k = 0; k < 3; ++k) EXPECT_NEAR(a[k], b[k], 1e-12 * a[k]);
+}
+
+TEST(Marschner, FiniteAndNonNegativeOverRandomDirections) {
+  HairMaterial m;
+  std::mt19937_64 rng(1);
+  for (int i = 0; i < 100000; ++i) {
+    auto t = test::uniformTriple(rng);
+    glm::dvec3 s = marschnerS(t.L, t.V, t.T, m);
+    for (int c = 0; c < 3; ++c) {
+      ASSERT_TRUE(std::isfinite(s[c])) << i;
+      ASSERT_GE(s[c], 0.0) << i;
+    }
+  }
+}
+
+TEST(Marschner, DegenerateDirectionsAreFinite) {
+  HairMaterial m;
+  glm::dvec3 T(0, 0, 1);
+  glm::dvec3 cases[][2] = {{T, {1, 0, 0}}, {{1, 0, 0}, -T}, {T, T}, {-T, T}, {T, -T}, {{0, 1, 0}, {0, 1, 0}}};
+  for (auto& c : cases) {
+    glm::dvec3 s = marschnerS(c[0], c[1], T, m);
+    for (int k = 0; k < 3; ++k) {
+      EXPECT_TRUE(std::isfinite(s[k]));
+      EXPECT_GE(s[k], 0.0);
+    }
+  }
+  EXPECT_EQ(shadingAngles(T, {1, 0, 0}, T).cosPhi, 0.0);  // no azimuth: phi = pi/2
+}
+
+TEST(Marschner, TTPeaksNearBackScatterAzimuthPi) {
+  HairMaterial m;
+  for (double td : {0.0, 0.3, 0.6}) {
+    double bestPhi = 0, best = -1;
+    for (double phi = 0.0; phi <= kPi + 1e-9; phi += kPi / 720) {
+      double v = lobeNTT(phi, td, m).x;
+      if (v > best) best = v, bestPhi = phi;
+    }
+    EXPECT_NEAR(bestPhi, kPi, 0.02) << td;
+    EXPECT_NEAR(lobeNTT(kPi / 4, td, m).x, 0.0, 1e-12);  // TT cannot exit far from the forward direction
+  }
+}
+
+TEST(Marschner, TRTCausticBranches) {
+  HairMaterial m;
+  // eta' = sqrt(eta^2 - s^2)/cos: eta' < 2 near theta_d = 0, >= 2 for large theta_d.
+  TrtCaustic low = trtCaustic(0.0, m);
+  EXPECT_TRUE(low.causticBranch);
+  EXPECT_EQ(low.t, 1.0);
+  EXPECT_GT(low.hc, 0.5);
+  EXPECT_LE(low.dh, m.dhM);
+  double td = 1.0;  // eta' ~ 2.63 > 2 + dEta: fully faded
+  ASSERT_GE(bravaisEtaPrime(m.eta, td), 2.0 + m.dEta);
+  TrtCaustic faded = trtCaustic(td, m);
+  EXPECT_FALSE(faded.causticBranch);
+  EXPECT_EQ(faded.t, 0.0);
+  EXPECT_EQ(faded.dh, m.dhM);
+  // Inside the fade range 2 <= eta' < 2 + dEta: 0 < t < 1, and N_TRT is the raw sum damped by t.
+  double tdMid = std::asin(std::sqrt((2.15 * 2.15 - m.eta * m.eta) / (2.15 * 2.15 - 1)));
+  ASSERT_NEAR(bravaisEtaPrime(m.eta, tdMid), 2.15, 1e-9);
+  TrtCaustic mid = trtCaustic(tdMid, m);
+  EXPECT_GT(mid.t, 0.0);
+  EXPECT_LT(mid.t, 1.0);
+  // With t = 0 the caustic changes nothing.
+  EXPECT_EQ(lobeNTRT(0.7, td, m), lobeNRaw(2, 0.7, td, m));
+  // In the caustic branch the glint adds energy at phi_c.
+  double phic = std::remainder(low.phic, 2 * kPi);
+  EXPECT_GT(lobeNTRT(std::abs(phic), 0.0, m).x, 0.0);
+}
+
+TEST(Marschner, NIsContinuousAcrossTheCausticBranchSwitch) {
+  HairMaterial m;
+  double tdSwitch = std::asin(std::sqrt((4 - m.eta * m.eta) / 3));  // eta' = 2
+  for (double phi : {0.1, 0.5, 1.0, 2.0}) {
+    glm::dvec3 a = lobeNTRT(phi, tdSwitch - 1e-7, m), b = lobeNTRT(phi, tdSwitch + 1e-7, m);
+    EXPECT_NEAR(a.x, b.x, 1e-4 * (a.x + 1e-6)) << phi;
+  }
+}
+
+TEST(Marschner, LobeDecompositionSumsToS) {
+  HairMaterial m;
+  MarschnerLobes l = marschnerLobes(0.3, -0.2, -0.8, m);
+  glm::dvec3 s = marschnerS(0.3, -0.2, -0.8, m);
+  EXPECT_NEAR(l.total().y, s.y, 1e-15);
+  EXPECT_NEAR(l.cosThetaD, std::cos(0.5 * (std::asin(-0.2) - std::asin(0.3))), 1e-15);
+}
