@@ -1,0 +1,11 @@
+#pragma once
+// Contract: writes a whole file or nothing. The bytes go to a temporary file in the destination's
+// directory, which is flushed and then renamed over the destination, so a reader (or a failure half
+// way) never sees a partial file. Throws hp::Error naming the path on any failure.
+#include <cstddef>
+#include <filesystem>
+#include <span>
+
+namespace hp {
+void writeFileAtomically(const std::filesystem::path& path, std::span<const std::byte> bytes);
+}  // namespace hp

@@ -1,0 +1,31 @@
+#pragma once
+// Contract: everything the GPU side needs to simulate and draw one head of hair, in head space:
+// guides (P particles each, root first, the rest pose), the interpolation topology (triangles of
+// guide indices and one binding per render strand), sphere colliders, and an opaque head mesh to
+// draw. Host-only data; nothing here touches Vulkan. Produced by buildDefaultHeadAsset,
+// buildSceneAsset or the importers.
+#include <glm/glm.hpp>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "engine/hair/collider.h"
+#include "engine/hair/guide_set.h"
+#include "engine/hair/strand_topology.h"
+
+namespace hp {
+struct HeadMesh {
+  std::vector<glm::vec3> positions;
+  std::vector<glm::vec3> normals;      // unit, one per position
+  std::vector<std::uint32_t> indices;  // triangle list, counter-clockwise seen from outside
+};
+
+struct HairAsset {
+  std::string name;
+  GuideSet guides;
+  InterpolationTopology topology;
+  std::vector<SphereCollider> colliders;
+  HeadMesh head;
+};
+}  // namespace hp

@@ -1,0 +1,15 @@
+#pragma once
+// Contract: simple opaque meshes for the head: a UV ellipsoid, and their concatenation. Every vertex
+// of an ellipsoid built with radii <= r (per axis) lies inside the sphere of radius r at the same
+// center, which is how the default head keeps its render mesh inside its colliders.
+#include <glm/glm.hpp>
+
+#include <cstdint>
+
+#include "engine/hair/hair_asset.h"
+
+namespace hp {
+HeadMesh makeEllipsoidMesh(const glm::vec3& center, const glm::vec3& radii, std::uint32_t slices = 32,
+                           std::uint32_t stacks = 16);
+void appendMesh(HeadMesh& into, const HeadMesh& part);
+}  // namespace hp

@@ -1,0 +1,26 @@
+#pragma once
+// Contract: how an imported model maps into head space (Y up, metres for the default scene). Models
+// in the wild are often in centimetres with Z up: scale 0.01, up Z. A point goes p -> R_up (scale * p)
+// + translation, where R_up is the rotation taking the model's up axis to +Y (Z up: (x, y, z) ->
+// (x, z, -y), a proper rotation, so handedness and triangle winding are kept). Normals only rotate.
+#include <glm/glm.hpp>
+
+#include <string>
+
+namespace hp {
+enum class UpAxis { Y, Z };
+
+struct ModelTransform {
+  float scale = 1.0f;
+  UpAxis up = UpAxis::Y;
+  glm::vec3 translation{0.0f};
+
+  glm::vec3 applyToPoint(const glm::vec3& p) const;
+  glm::vec3 applyToNormal(const glm::vec3& n) const;
+  void validate() const;  // scale finite and > 0, translation finite
+  bool operator==(const ModelTransform&) const = default;
+};
+
+UpAxis parseUpAxis(const std::string& text);  // "y" / "z" (any case); throws hp::Error otherwise
+const char* upAxisName(UpAxis up);
+}  // namespace hp

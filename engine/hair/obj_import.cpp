@@ -1,0 +1,114 @@
+#include "engine/hair/obj_import.h"
+
+#include <tiny_obj_loader.h>
+
+#include <string>
+#include <unordered_map>
+
+#include "engine/error.h"
+
+namespace hp {
+namespace {
+struct RawMesh {
+  std::vector<glm::vec3> positions;
+  std::vector<glm::vec3> normalSums;   // summed file normals per vertex
+  std::vector<glm::uvec3> triangles;
+  bool allCornersHaveNormals = true;
+};
+
+std::string faceLabel(const std::string& file, std::size_t face) {
+  return file + ": face " + std::to_string(face + 1);
+}
+
+void checkCorner(const tinyobj::index_t& idx, std::size_t vertexCount, const std::string& where) {
+  if (idx.vertex_index < 0)
+    throw Error(where + ": negative vertex index points before the first vertex");
+  if (std::size_t(idx.vertex_index) >= vertexCount)
+    throw Error(where + ": vertex index " + std::to_string(idx.vertex_index + 1) + " is out of range (the file has " +
+                std::to_string(vertexCount) + " vertices)");
+}
+
+void addFace(RawMesh& raw, const tinyobj::attrib_t& attrib, const tinyobj::index_t* corners, unsigned count,
+             const std::string& where) {
+  if (count < 3) throw Error(where + ": a face needs at least 3 vertices, got " + std::to_string(count));
+  const std::size_t normalCount = attrib.normals.size() / 3;
+  for (unsigned k = 0; k < count; ++k) {
+    checkCorner(corners[k], raw.positions.size(), where);
+    for (unsigned j = 0; j < k; ++j)
+      if (corners[j].vertex_index == corners[k].vertex_index)
+        throw Error(where + ": degenerate face, vertex " + std::to_string(corners[k].vertex_index + 1) +
+                    " appears twice");
+    int n = corners[k].normal_index;
+    if (n < 0 || std::size_t(n) >= normalCount) {
+      raw.allCornersHaveNormals = false;
+      continue;
+    }
+    raw.normalSums[corners[k].vertex_index] +=
+        glm::vec3(attrib.normals[3 * n], attrib.normals[3 * n + 1], attrib.normals[3 * n + 2]);
+  }
+  for (unsigned k = 1; k + 1 < count; ++k)
+    raw.triangles.emplace_back(corners[0].vertex_index, corners[k].vertex_index, corners[k + 1].vertex_index);
+}
+
+// Each undirected edge may border at most two faces.
+void checkManifold(const std::vector<glm::uvec3>& triangles, const std::string& file) {
+  std::unordered_map<std::uint64_t, int> uses;
+  for (const auto& t : triangles)
+    for (int k = 0; k < 3; ++k) {
+      std::uint32_t a = t[k], b = t[(k + 1) % 3];
+      if (a > b) std::swap(a, b);
+      if (++uses[(std::uint64_t(a) << 32) | b] > 2)
+        throw Error(file + ": non-manifold edge between vertices " + std::to_string(a + 1) + " and " +
+                    std::to_string(b + 1) + " (shared by more than two faces)");
+    }
+}
+
+RawMesh readRaw(const std::filesystem::path& path) {
+  const std::string file = path.string();
+  tinyobj::ObjReaderConfig config;
+  config.triangulate = false;  // indices are validated before any triangulation touches them
+  config.vertex_color = false;
+  tinyobj::ObjReader reader;
+  if (!reader.ParseFromFile(file, config)) {
+    std::string err = reader.Error();
+    while (!err.empty() && (err.back() == '\n' || err.back() == ' ')) err.pop_back();
+    throw Error(file + ": " + (err.empty() ? std::string("cannot parse") : err));
+  }
+  const auto& attrib = reader.GetAttrib();
+  RawMesh raw;
+  for (std::size_t i = 0; i + 2 < attrib.vertices.size(); i += 3)
+    raw.positions.emplace_back(attrib.vertices[i], attrib.vertices[i + 1], attrib.vertices[i + 2]);
+  raw.normalSums.assign(raw.positions.size(), glm::vec3(0.0f));
+  std::size_t face = 0;
+  for (const auto& shape : reader.GetShapes()) {
+    std::size_t offset = 0;
+    for (unsigned count : shape.mesh.num_face_vertices) {
+      addFace(raw, attrib, shape.mesh.indices.data() + offset, count, faceLabel(file, face++));
+      offset += count;
+    }
+  }
+  if (raw.triangles.empty()) throw Error(file + ": no faces");
+  checkManifold(raw.triangles, file);
+  return raw;
+}
+}  // namespace
+
+ScalpMesh loadObjScalp(const std::filesystem::path& path, const ModelTransform& transform) {
+  transform.validate();
+  RawMesh raw = readRaw(path);
+  // Keep only vertices some face uses: one guide grows per scalp vertex.
+  std::vector<std::int64_t> remap(raw.positions.size(), -1);
+  std::vector<glm::vec3> positions, normals;
+  for (auto& t : raw.triangles)
+    for (int k = 0; k < 3; ++k) {
+      if (remap[t[k]] < 0) {
+        remap[t[k]] = static_cast<std::int64_t>(positions.size());
+        positions.push_back(transform.applyToPoint(raw.positions[t[k]]));
+        normals.push_back(transform.applyToNormal(raw.normalSums[t[k]]));
+      }
+      t[k] = static_cast<std::uint32_t>(remap[t[k]]);
+    }
+  if (!raw.allCornersHaveNormals) normals.clear();
+  return buildScalpMesh(std::move(positions), std::move(raw.triangles), std::move(normals), path.string());
+}
+}  // namespace hp
