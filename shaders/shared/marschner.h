@@ -43,7 +43,7 @@ HP_CONST(uint, MARSCHNER_PAPER_LUT_SIZE, 128u)
 //   N0 : N_WIDTH x N_HEIGHT, (N_TT.rgb, N_R); N1: same size, (N_TRT.rgb, 0);
 //        u = pseudo-angle of phi/2 (0 at phi = 0, 1 at phi = pi), v = pseudo-angle of |theta_d|.
 // N is NOT divided by cos^2 theta_d: the shader multiplies by 2 / (1 + cos 2 theta_d), exact and cheap.
-HP_CONST(uint, MARSCHNER_FLOAT_M_WIDTH, 1024u)
+HP_CONST(uint, MARSCHNER_FLOAT_M_WIDTH, 2048u)
 HP_CONST(uint, MARSCHNER_FLOAT_N_WIDTH, 256u)
 HP_CONST(uint, MARSCHNER_FLOAT_N_HEIGHT, 128u)
 
