@@ -96,6 +96,9 @@ RawMesh readRaw(const std::filesystem::path& path) {
 ScalpMesh loadObjScalp(const std::filesystem::path& path, const ModelTransform& transform) {
   transform.validate();
   RawMesh raw = readRaw(path);
+  // Zero-area faces go before compaction, so vertices only they used go too.
+  std::uint32_t dropped = dropDegenerateTriangles(raw.positions, raw.triangles);
+  if (raw.triangles.empty()) throw Error(path.string() + ": no non-degenerate triangles");
   // Keep only vertices some face uses: one guide grows per scalp vertex.
   std::vector<std::int64_t> remap(raw.positions.size(), -1);
   std::vector<glm::vec3> positions, normals;
@@ -109,6 +112,8 @@ ScalpMesh loadObjScalp(const std::filesystem::path& path, const ModelTransform& 
       t[k] = static_cast<std::uint32_t>(remap[t[k]]);
     }
   if (!raw.allCornersHaveNormals) normals.clear();
-  return buildScalpMesh(std::move(positions), std::move(raw.triangles), std::move(normals), path.string());
+  ScalpMesh mesh = buildScalpMesh(std::move(positions), std::move(raw.triangles), std::move(normals), path.string());
+  mesh.droppedDegenerateTriangles += dropped;
+  return mesh;
 }
 }  // namespace hp

@@ -27,20 +27,6 @@ void checkIndices(const std::vector<glm::uvec3>& triangles, std::size_t vertexCo
                     std::to_string(triangles[t][k]) + " but there are only " + std::to_string(vertexCount));
 }
 
-// Relative threshold: a triangle whose doubled area is below (1e-6 * diagonal)^2 is degenerate.
-std::uint32_t dropDegenerate(ScalpMesh& mesh) {
-  float diag = boundingDiagonal(mesh.positions);
-  float minArea2 = (1e-6f * diag) * (1e-6f * diag);
-  auto degenerate = [&](const glm::uvec3& t) {
-    if (t.x == t.y || t.y == t.z || t.x == t.z) return true;
-    return glm::length(triangleAreaVector(mesh.positions, t)) <= minArea2;
-  };
-  auto end = std::remove_if(mesh.triangles.begin(), mesh.triangles.end(), degenerate);
-  auto dropped = static_cast<std::uint32_t>(mesh.triangles.end() - end);
-  mesh.triangles.erase(end, mesh.triangles.end());
-  return dropped;
-}
-
 std::vector<glm::vec3> areaWeightedNormals(const ScalpMesh& mesh) {
   std::vector<glm::vec3> normals(mesh.positions.size(), glm::vec3(0.0f));
   for (const auto& t : mesh.triangles) {
@@ -50,6 +36,20 @@ std::vector<glm::vec3> areaWeightedNormals(const ScalpMesh& mesh) {
   return normals;
 }
 }  // namespace
+
+// Relative threshold: a triangle whose doubled area is below (1e-6 * diagonal)^2 is degenerate.
+std::uint32_t dropDegenerateTriangles(const std::vector<glm::vec3>& positions, std::vector<glm::uvec3>& triangles) {
+  float diag = boundingDiagonal(positions);
+  float minArea2 = (1e-6f * diag) * (1e-6f * diag);
+  auto degenerate = [&](const glm::uvec3& t) {
+    if (t.x == t.y || t.y == t.z || t.x == t.z) return true;
+    return glm::length(triangleAreaVector(positions, t)) <= minArea2;
+  };
+  auto end = std::remove_if(triangles.begin(), triangles.end(), degenerate);
+  auto dropped = static_cast<std::uint32_t>(triangles.end() - end);
+  triangles.erase(end, triangles.end());
+  return dropped;
+}
 
 glm::vec3 triangleAreaVector(const std::vector<glm::vec3>& positions, const glm::uvec3& t) {
   return glm::cross(positions[t.y] - positions[t.x], positions[t.z] - positions[t.x]);
@@ -65,7 +65,7 @@ ScalpMesh buildScalpMesh(std::vector<glm::vec3> positions, std::vector<glm::uvec
   ScalpMesh mesh;
   mesh.positions = std::move(positions);
   mesh.triangles = std::move(triangles);
-  mesh.droppedDegenerateTriangles = dropDegenerate(mesh);
+  mesh.droppedDegenerateTriangles = dropDegenerateTriangles(mesh.positions, mesh.triangles);
   if (mesh.triangles.empty()) throw Error(source + ": no non-degenerate triangles");
   mesh.normals = normals.empty() ? areaWeightedNormals(mesh) : std::move(normals);
   for (std::size_t i = 0; i < mesh.normals.size(); ++i) {

@@ -25,6 +25,9 @@ struct ScalpMesh {
 ScalpMesh buildScalpMesh(std::vector<glm::vec3> positions, std::vector<glm::uvec3> triangles,
                          std::vector<glm::vec3> normals = {}, const std::string& source = "scalp");
 
+// Removes zero-area triangles (relative to the mesh size) and returns how many it removed.
+std::uint32_t dropDegenerateTriangles(const std::vector<glm::vec3>& positions, std::vector<glm::uvec3>& triangles);
+
 // Twice the area vector of triangle t (cross product of two edges).
 glm::vec3 triangleAreaVector(const std::vector<glm::vec3>& positions, const glm::uvec3& t);
 }  // namespace hp

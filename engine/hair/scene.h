@@ -1,0 +1,71 @@
+#pragma once
+// Contract: a scene file (JSON; schema in engine/hair/README.md) read into plain structs. Every
+// field has a default, so "{}" is the demo scene: the default head, lit and framed. loadSceneFile
+// rejects syntax errors, unknown keys, wrong types and out-of-range values with hp::Error naming the
+// file and the JSON pointer. Paths in the scene are relative to the scene file's directory.
+// buildSceneAsset turns a scene into the HairAsset the GPU side consumes.
+#include <glm/glm.hpp>
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "engine/hair/collider.h"
+#include "engine/hair/guide_growth.h"
+#include "engine/hair/hair_asset.h"
+#include "engine/hair/model_transform.h"
+#include "engine/hair/sim_params.h"
+#include "engine/hair/strand_topology.h"
+#include "engine/shading/material.h"
+
+namespace hp {
+struct ModelSpec {
+  enum class Kind { Default, Hair, Obj };
+  Kind kind = Kind::Default;
+  std::filesystem::path path;   // absolute, or relative to the working directory
+  ModelTransform transform;     // for .hair and .obj models
+  bool keepStrands = false;     // .hair: keep the strands' own points instead of resampling
+};
+
+struct LightSpec {
+  glm::vec3 direction = glm::normalize(glm::vec3(0.5f, 0.8f, 0.6f));  // unit, from the hair toward the light
+  glm::vec3 color{1.0f};  // linear RGB radiance colour
+  float intensity = 3.0f;
+};
+
+struct CameraSpec {
+  float orbitDeg = 30.0f;       // around +Y, 0 looks at the face from +Z
+  float elevationDeg = 10.0f;   // above the horizon
+  float distance = 0.9f;        // from target (scene units)
+  float fovDeg = 35.0f;         // vertical field of view
+  glm::vec3 target{0.0f, -0.08f, 0.0f};
+};
+
+struct RenderSpec {
+  std::uint32_t width = 1280;
+  std::uint32_t height = 720;
+  std::uint32_t msaa = 4;  // 1, 2, 4 or 8
+};
+
+struct Scene {
+  std::string source = "<defaults>";  // where the scene came from, for messages
+  ModelSpec model;
+  GrowthOptions growth;  // defaults to defaultHeadGrowth()
+  DensityOptions density;
+  std::optional<std::vector<SphereCollider>> colliders;  // absent: the model's own (default head, fitted)
+  HairMaterial material;
+  LightSpec light;
+  CameraSpec camera;
+  RenderSpec render;
+  SimulationParams simulation;
+
+  Scene();
+};
+
+Scene loadSceneFile(const std::filesystem::path& path);
+// `source` names the text in messages; relative model paths resolve against baseDir.
+Scene parseScene(const std::string& jsonText, const std::string& source, const std::filesystem::path& baseDir);
+
+HairAsset buildSceneAsset(const Scene& scene);
+}  // namespace hp

@@ -1,0 +1,202 @@
+// Scene file parsing: one function per section, each reading its keys and checking its ranges.
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "engine/error.h"
+#include "engine/hair/default_head.h"
+#include "engine/hair/json_reader.h"
+#include "engine/hair/scene.h"
+
+namespace hp {
+namespace {
+// Runs a struct's own validate() and prefixes its message with the section's location.
+template <typename T>
+void validateSection(const T& value, const JsonObject& section, const std::string& pointer) {
+  try {
+    value.validate();
+  } catch (const Error& e) {
+    throw Error(section.where(pointer) + ": " + e.what());
+  }
+}
+
+void requireThat(bool ok, JsonObject& o, const char* key, const std::string& message) {
+  if (!ok) o.fail(key, message);
+}
+
+ModelSpec::Kind kindOf(const std::string& source, JsonObject& o) {
+  if (source == "default") return ModelSpec::Kind::Default;
+  std::string ext = std::filesystem::path(source).extension().string();
+  for (auto& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (ext == ".hair") return ModelSpec::Kind::Hair;
+  if (ext == ".obj") return ModelSpec::Kind::Obj;
+  o.fail("source", "expected \"default\" or a path ending in .hair or .obj, got \"" + source + "\"");
+}
+
+void readModel(JsonObject& root, ModelSpec& model, const std::filesystem::path& baseDir) {
+  const nlohmann::json* v = root.value("model");
+  if (!v) return;
+  nlohmann::json object = v->is_string() ? nlohmann::json{{"source", *v}} : *v;  // "model": "x.hair"
+  JsonObject o(object, root.pointer("model"), root.file());
+  std::string source = "default", up = upAxisName(model.transform.up);
+  o.read("source", source);
+  o.read("scale", model.transform.scale);
+  o.read("up", up);
+  o.read("translate", model.transform.translation);
+  o.read("keepStrands", model.keepStrands);
+  o.finish();
+  model.kind = kindOf(source, o);
+  if (model.kind != ModelSpec::Kind::Default) model.path = baseDir / source;
+  requireThat(up == "y" || up == "z" || up == "Y" || up == "Z", o, "up", "expected \"y\" or \"z\", got \"" + up + "\"");
+  model.transform.up = parseUpAxis(up);
+  validateSection(model.transform, o, root.pointer("model"));
+}
+
+void readGrowth(JsonObject& root, GrowthOptions& g) {
+  auto o = root.object("growth");
+  if (!o) return;
+  o->read("particles", g.particlesPerGuide);
+  o->read("length", g.length);
+  o->read("lengthVariation", g.lengthVariation);
+  o->read("segmentRatio", g.segmentRatio);
+  o->read("bend", g.bend);
+  o->read("bendDirection", g.bendDirection);
+  o->read("seed", g.seed);
+  o->finish();
+  validateSection(g, *o, root.pointer("growth"));
+}
+
+void readDensity(JsonObject& root, DensityOptions& d) {
+  auto o = root.object("density");
+  if (!o) return;
+  if (o->has("strandsPerTriangle") && o->has("totalStrands"))
+    o->fail("totalStrands", "give either strandsPerTriangle or totalStrands, not both");
+  if (o->has("strandsPerTriangle")) d.mode = DensityOptions::Mode::PerTriangle;
+  o->read("strandsPerTriangle", d.strandsPerTriangle);
+  o->read("totalStrands", d.totalStrands);
+  o->read("seed", d.seed);
+  o->finish();
+  validateSection(d, *o, root.pointer("density"));
+}
+
+void readColliders(JsonObject& root, std::optional<std::vector<SphereCollider>>& colliders) {
+  const nlohmann::json* list = root.array("colliders");
+  if (!list) return;
+  colliders.emplace();
+  for (std::size_t i = 0; i < list->size(); ++i) {
+    JsonObject c((*list)[i], root.pointer("colliders") + "/" + std::to_string(i), root.file());
+    SphereCollider s;
+    if (!c.has("center") || !c.has("radius")) c.fail(c.has("center") ? "radius" : "center", "is required");
+    c.read("center", s.center);
+    c.read("radius", s.radius);
+    c.finish();
+    requireThat(std::isfinite(s.radius) && s.radius > 0.0f, c, "radius", "must be > 0");
+    colliders->push_back(s);
+  }
+}
+
+void readMaterial(JsonObject& root, HairMaterial& m) {
+  auto o = root.object("material");
+  if (!o) return;
+  o->read("eta", m.eta);
+  o->read("absorption", m.absorption);
+  o->readDegrees("alphaRDeg", m.alphaR);
+  o->readDegrees("betaRDeg", m.betaR);
+  o->read("kG", m.kG);
+  o->readDegrees("wcDeg", m.wc);
+  o->read("dEta", m.dEta);
+  o->read("dhM", m.dhM);
+  o->finish();
+  validateSection(m, *o, root.pointer("material"));
+}
+
+void readLight(JsonObject& root, LightSpec& l) {
+  auto o = root.object("light");
+  if (!o) return;
+  o->read("direction", l.direction);
+  o->read("color", l.color);
+  o->read("intensity", l.intensity);
+  o->finish();
+  float len = glm::length(l.direction);
+  requireThat(std::isfinite(len) && len > 1e-6f, *o, "direction", "must be a non-zero vector");
+  l.direction /= len;
+  requireThat(glm::all(glm::greaterThanEqual(l.color, glm::vec3(0.0f))), *o, "color", "components must be >= 0");
+  requireThat(std::isfinite(l.intensity) && l.intensity >= 0.0f, *o, "intensity", "must be >= 0");
+}
+
+void readCamera(JsonObject& root, CameraSpec& c) {
+  auto o = root.object("camera");
+  if (!o) return;
+  o->read("orbitDeg", c.orbitDeg);
+  o->read("elevationDeg", c.elevationDeg);
+  o->read("distance", c.distance);
+  o->read("fovDeg", c.fovDeg);
+  o->read("target", c.target);
+  o->finish();
+  requireThat(std::abs(c.elevationDeg) <= 89.0f, *o, "elevationDeg", "must be in [-89, 89]");
+  requireThat(c.distance > 0.0f && std::isfinite(c.distance), *o, "distance", "must be > 0");
+  requireThat(c.fovDeg > 0.0f && c.fovDeg < 180.0f, *o, "fovDeg", "must be in (0, 180)");
+}
+
+void readRender(JsonObject& root, RenderSpec& r) {
+  auto o = root.object("render");
+  if (!o) return;
+  o->read("width", r.width);
+  o->read("height", r.height);
+  o->read("msaa", r.msaa);
+  o->finish();
+  requireThat(r.width >= 1 && r.width <= 16384, *o, "width", "must be in [1, 16384], got " + std::to_string(r.width));
+  requireThat(r.height >= 1 && r.height <= 16384, *o, "height", "must be in [1, 16384], got " + std::to_string(r.height));
+  requireThat(r.msaa == 1 || r.msaa == 2 || r.msaa == 4 || r.msaa == 8, *o, "msaa",
+              "must be 1, 2, 4 or 8, got " + std::to_string(r.msaa));
+}
+
+void readSimulation(JsonObject& root, SimulationParams& s) {
+  auto o = root.object("simulation");
+  if (!o) return;
+  o->read("dt", s.dt);
+  o->read("substeps", s.substeps);
+  o->read("iterations", s.iterations);
+  o->read("gravity", s.gravity);
+  o->read("damping", s.damping);
+  o->read("pearlRadius", s.pearlRadius);
+  o->read("stiffness", s.stiffness);
+  o->read("stiffnessFalloff", s.stiffnessFalloff);
+  o->read("maxSpeed", s.maxSpeed);
+  o->read("windDirection", s.windDirection);
+  o->read("windStrength", s.windStrength);
+  o->read("windGust", s.windGust);
+  o->read("windGustFrequency", s.windGustFrequency);
+  o->finish();
+  validateSection(s, *o, root.pointer("simulation"));
+}
+}  // namespace
+
+Scene::Scene() : growth(defaultHeadGrowth()) {}
+
+Scene parseScene(const std::string& jsonText, const std::string& source, const std::filesystem::path& baseDir) {
+  nlohmann::json json = parseJsonText(jsonText, source);
+  JsonObject root(json, "", source);
+  Scene scene;
+  scene.source = source;
+  readModel(root, scene.model, baseDir);
+  readGrowth(root, scene.growth);
+  readDensity(root, scene.density);
+  readColliders(root, scene.colliders);
+  readMaterial(root, scene.material);
+  readLight(root, scene.light);
+  readCamera(root, scene.camera);
+  readRender(root, scene.render);
+  readSimulation(root, scene.simulation);
+  root.finish();
+  return scene;
+}
+
+Scene loadSceneFile(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw Error(path.string() + ": cannot open");
+  std::stringstream text;
+  text << in.rdbuf();
+  return parseScene(text.str(), path.string(), path.parent_path());
+}
+}  // namespace hp
