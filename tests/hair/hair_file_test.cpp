@@ -1,0 +1,204 @@
+// .hair reading and writing (REFERENCES.md §5): a hand-built file with every array, byte-exact
+// round trips, and every refused input with its message.
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstring>
+
+#include "engine/hair/hair_export.h"
+#include "engine/hair/hair_file.h"
+#include "tests/hair/hair_test_util.h"
+
+namespace hp {
+namespace {
+// Little-endian byte builder, independent of the encoder under test.
+struct Bytes {
+  std::vector<std::byte> data;
+  template <typename T>
+  Bytes& put(T v) {
+    std::size_t at = data.size();
+    data.resize(at + sizeof(T));
+    std::memcpy(data.data() + at, &v, sizeof(T));
+    return *this;
+  }
+  Bytes& header(const char* sig, std::uint32_t strands, std::uint32_t points, std::uint32_t flags,
+                std::uint32_t defSegments = 0) {
+    for (int i = 0; i < 4; ++i) put(sig[i]);
+    put(strands).put(points).put(flags).put(defSegments);
+    put(0.5f).put(0.25f).put(0.1f).put(0.2f).put(0.3f);
+    for (int i = 0; i < 88; ++i) put(char(i < 5 ? "hello"[i] : 0));
+    return *this;
+  }
+};
+
+// Two strands (3 and 2 points) with all five arrays.
+Bytes everyArrayFile() {
+  Bytes b;
+  b.header("HAIR", 2, 5, 31);
+  b.put(std::uint16_t(2)).put(std::uint16_t(1));
+  for (int i = 0; i < 15; ++i) b.put(float(i) * 0.5f);  // points
+  for (int i = 0; i < 5; ++i) b.put(1.0f + i);          // thickness
+  for (int i = 0; i < 5; ++i) b.put(0.1f * i);          // transparency
+  for (int i = 0; i < 15; ++i) b.put(float(i) / 15.0f); // colors
+  return b;
+}
+
+std::string decodeError(const Bytes& b) {
+  return test::errorOf([&] { decodeHair(b.data, "m.hair"); });
+}
+
+TEST(HairFile, ReadsAHandBuiltFileWithEveryArray) {
+  HairFileData d = decodeHair(everyArrayFile().data, "m.hair");
+  EXPECT_EQ(d.strandCount, 2u);
+  EXPECT_EQ(d.pointCount(), 5u);
+  EXPECT_EQ(d.arrayFlags(), 31u);
+  EXPECT_EQ(d.strandPointCount(0), 3u);
+  EXPECT_EQ(d.strandPointCount(1), 2u);
+  EXPECT_EQ(d.points[4], glm::vec3(6.0f, 6.5f, 7.0f));
+  EXPECT_EQ(d.thickness[4], 5.0f);
+  EXPECT_FLOAT_EQ(d.transparency[2], 0.2f);
+  EXPECT_FLOAT_EQ(d.colors[1].x, 3.0f / 15.0f);
+  EXPECT_EQ(d.defaultThickness, 0.5f);
+  EXPECT_EQ(d.defaultTransparency, 0.25f);
+  EXPECT_EQ(d.defaultColor, glm::vec3(0.1f, 0.2f, 0.3f));
+  EXPECT_EQ(d.infoText(), "hello");
+  EXPECT_EQ(d.strandOffsets(), (std::vector<std::uint32_t>{0, 3, 5}));
+}
+
+TEST(HairFile, RoundTripIsByteExact) {
+  Bytes b = everyArrayFile();
+  EXPECT_EQ(encodeHair(decodeHair(b.data, "m.hair")), b.data);
+  // Points only, default segment count, garbage after the info text's NUL kept verbatim.
+  Bytes p;
+  p.header("HAIR", 3, 9, 2, 2);
+  p.data[40 + 80] = std::byte{0x7f};
+  for (int i = 0; i < 27; ++i) p.put(std::sin(float(i)));
+  HairFileData d = decodeHair(p.data, "p.hair");
+  EXPECT_TRUE(d.segments.empty());
+  EXPECT_EQ(d.strandPointCount(2), 3u);
+  EXPECT_EQ(encodeHair(d), p.data);
+}
+
+TEST(HairFile, WriteThenReadThroughTheFileSystem) {
+  test::TempDir dir;
+  HairFileData d = decodeHair(everyArrayFile().data, "m.hair");
+  writeHairFile(dir / "out.hair", d);
+  HairFileData back = readHairFile(dir / "out.hair");
+  EXPECT_EQ(encodeHair(back), encodeHair(d));
+  std::size_t files = 0;
+  for ([[maybe_unused]] const auto& e : std::filesystem::directory_iterator(dir.path())) ++files;
+  EXPECT_EQ(files, 1u);  // no temporary left behind
+}
+
+TEST(HairFile, ExportsGuidesAndRenderStrands) {
+  GuideSet g;
+  g.particlesPerGuide = 3;
+  g.positions = {{0, 0, 0}, {0, -1, 0}, {0, -2, 0}, {1, 0, 0}, {1, -1, 0}, {1, -2, 0}, {0, 0, 1}, {0, -1, 1}, {0, -2, 1}};
+  HairFileData guides = guidesToHair(g);
+  EXPECT_EQ(guides.strandCount, 3u);
+  EXPECT_EQ(guides.points, g.positions);
+  EXPECT_EQ(decodeHair(encodeHair(guides), "g").points, g.positions);
+  InterpolationTopology topo{{{0, 1, 2}}, {{0, {0.5f, 0.25f, 0.25f}, 0.0f}}};
+  HairFileData strands = renderStrandsToHair(g, topo);
+  ASSERT_EQ(strands.points.size(), 3u);
+  EXPECT_EQ(strands.points[1], glm::vec3(0.25f, -1.0f, 0.25f));
+}
+
+TEST(HairFile, RejectsShortHeader) {
+  Bytes b;
+  b.header("HAIR", 1, 2, 2);
+  b.data.resize(100);
+  EXPECT_THAT_ERROR_CONTAINS_IMPL(decodeError(b), "m.hair: short header: 100 bytes, a .hair header has 128");
+}
+
+TEST(HairFile, RejectsWrongSignature) {
+  Bytes b;
+  b.header("HAIX", 1, 2, 2);
+  for (int i = 0; i < 6; ++i) b.put(0.0f);
+  EXPECT_THAT_ERROR_CONTAINS_IMPL(decodeError(b), "m.hair: wrong signature \"HAIX\" (expected \"HAIR\")");
+}
+
+TEST(HairFile, RejectsTruncatedArrays) {
+  Bytes b = everyArrayFile();
+  b.data.resize(b.data.size() - 4);
+  EXPECT_THAT_ERROR_CONTAINS_IMPL(decodeError(b),
+                                  "m.hair: truncated arrays: the header's counts need 164 bytes after the header, "
+                                  "the file has 160");
+}
+
+TEST(HairFile, RejectsTrailingBytes) {
+  Bytes b = everyArrayFile();
+  b.put(std::uint32_t(0));
+  EXPECT_THAT_ERROR_CONTAINS_IMPL(decodeError(b), "m.hair: 4 unexpected bytes after the arrays");
+}
+
+TEST(HairFile, RejectsHugeCountsBeforeAllocating) {
+  Bytes b;
+  b.header("HAIR", 0xffffffffu, 0xffffffffu, 31);
+  b.put(std::uint16_t(1));
+  auto start = std::chrono::steady_clock::now();
+  EXPECT_THAT_ERROR_CONTAINS_IMPL(decodeError(b), "truncated arrays: the header's counts need 146028888030 bytes");
+  EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::milliseconds(100));
+}
+
+TEST(HairFile, RejectsSegmentSumNotMatchingPointCount) {
+  Bytes b;
+  b.header("HAIR", 2, 8, 3);
+  b.put(std::uint16_t(2)).put(std::uint16_t(3));  // 3 + 4 = 7 points, header says 8
+  for (int i = 0; i < 24; ++i) b.put(0.0f);
+  EXPECT_THAT_ERROR_CONTAINS_IMPL(decodeError(b),
+                                  "m.hair: the strands' segments + 1 sum to 7 points but the point count is 8");
+  Bytes d;
+  d.header("HAIR", 2, 7, 2, 2);  // default segments: 2 strands x 3 points = 6
+  for (int i = 0; i < 21; ++i) d.put(0.0f);
+  EXPECT_THAT_ERROR_CONTAINS_IMPL(decodeError(d), "sum to 6 points but the point count is 7");
+}
+
+TEST(HairFile, RejectsZeroStrands) {
+  Bytes b;
+  b.header("HAIR", 0, 0, 2);
+  EXPECT_THAT_ERROR_CONTAINS_IMPL(decodeError(b), "m.hair: zero strands");
+}
+
+TEST(HairFile, RejectsMissingPointsArray) {
+  Bytes b;
+  b.header("HAIR", 1, 2, 1);
+  b.put(std::uint16_t(1));
+  EXPECT_THAT_ERROR_CONTAINS_IMPL(decodeError(b), "m.hair: the file has no points array");
+}
+
+TEST(HairFile, RejectsUnknownFlags) {
+  Bytes b;
+  b.header("HAIR", 1, 2, 2 | 64, 1);
+  EXPECT_THAT_ERROR_CONTAINS_IMPL(decodeError(b), "m.hair: unknown array flags 66");
+}
+
+TEST(HairFile, RejectsNonFinitePoints) {
+  for (float bad : {NAN, INFINITY, -INFINITY}) {
+    Bytes b;
+    b.header("HAIR", 2, 4, 2, 1);
+    for (int i = 0; i < 12; ++i) b.put(i == 7 ? bad : 0.0f);
+    EXPECT_THAT_ERROR_CONTAINS_IMPL(decodeError(b), "m.hair: point 2 (strand 1) is not finite (NaN or Inf)");
+  }
+}
+
+TEST(HairFile, RejectsOnePointStrand) {
+  Bytes b;
+  b.header("HAIR", 2, 4, 3);
+  b.put(std::uint16_t(2)).put(std::uint16_t(0));
+  for (int i = 0; i < 12; ++i) b.put(0.0f);
+  EXPECT_THAT_ERROR_CONTAINS_IMPL(decodeError(b), "m.hair: strand 1 has 1 point (0 segments); a strand needs at least 2");
+}
+
+TEST(HairFile, RejectsMissingFileAndInconsistentData) {
+  EXPECT_ERROR_CONTAINS(readHairFile("/nonexistent/x.hair"), "/nonexistent/x.hair: cannot open");
+  HairFileData d = decodeHair(everyArrayFile().data, "m.hair");
+  d.thickness.pop_back();
+  EXPECT_ERROR_CONTAINS(encodeHair(d), "4 thickness values for 5 points");
+  test::TempDir dir;
+  EXPECT_ERROR_CONTAINS(writeHairFile(dir / "bad.hair", d), "thickness");
+  EXPECT_FALSE(std::filesystem::exists(dir / "bad.hair"));
+}
+}  // namespace
+}  // namespace hp
