@@ -38,11 +38,20 @@ std::vector<glm::dvec3> fibonacciSphere(std::uint32_t n) {
   return dirs;
 }
 
-// Gravity plus a backward pull that grows toward the forehead: combs hair away from the face
-// (turning a forehead strand straight toward gravity would take it over the face).
-glm::vec3 combDirection(const glm::vec3& normal, const glm::vec3& gravity) {
-  float back = 0.3f + 4.0f * std::max(0.0f, normal.z);
-  return glm::normalize(glm::normalize(gravity) + glm::vec3(0.0f, 0.0f, -back));
+// Near the cranium hair lies along it: turn toward the downhill tangent (gravity minus its normal
+// part, plus a slight pull inward that the collider turns into sliding), with a backward comb that
+// grows toward the forehead so no strand falls over the face. Away from the head: plain gravity.
+glm::vec3 combDirection(const glm::vec3& position, const glm::vec3& gravity) {
+  const SphereCollider& cranium = kParts[0].collider;
+  glm::vec3 offset = position - cranium.center;
+  float distance = glm::length(offset);
+  glm::vec3 down = glm::normalize(gravity);
+  if (distance > cranium.radius * 1.3f || offset.y < -0.02f) return down;
+  glm::vec3 n = offset / distance;
+  glm::vec3 pull = down + glm::vec3(0.0f, 0.0f, -(0.3f + 3.0f * std::max(0.0f, n.z)));
+  glm::vec3 tangent = pull - glm::dot(pull, n) * n;
+  if (glm::length(tangent) < 1e-4f) tangent = glm::vec3(0.0f, 0.0f, -1.0f);
+  return glm::normalize(tangent) - 0.2f * n;
 }
 }  // namespace
 
@@ -50,8 +59,8 @@ GrowthOptions defaultHeadGrowth() {
   GrowthOptions g;
   g.length = 0.30f;
   g.lengthVariation = 0.15f;
-  g.segmentRatio = 1.3f;
-  g.bend = 0.35f;
+  g.segmentRatio = 1.4f;  // short first segments: hair leaves the scalp low
+  g.bend = 0.6f;
   g.seed = 1;
   return g;
 }
@@ -91,12 +100,11 @@ HeadMesh makeDefaultHeadMesh() {
 HairAsset buildDefaultHeadAsset(const GrowthOptions& growth, const DensityOptions& density) {
   growth.validate();
   ScalpMesh scalp = makeDefaultScalp();
-  std::vector<glm::vec3> combs(scalp.vertexCount());
-  for (std::uint32_t i = 0; i < combs.size(); ++i) combs[i] = combDirection(scalp.normals[i], growth.bendDirection);
   HairAsset asset;
   asset.name = "default head";
   asset.colliders = defaultHeadColliders();
-  asset.guides = growGuides(scalp, growth, asset.colliders, combs);
+  auto comb = [&](const glm::vec3& p, std::uint32_t) { return combDirection(p, growth.bendDirection); };
+  asset.guides = growGuides(scalp, growth, asset.colliders, comb);
   asset.topology = buildInterpolationTopology(asset.guides.roots(), scalp.triangles, density);
   asset.head = makeDefaultHeadMesh();
   return asset;

@@ -38,23 +38,36 @@ const SphereCollider* insideCollider(const glm::vec3& p, std::span<const SphereC
   return nullptr;
 }
 
-// Keeps |p - prev| = len while sliding p out of the colliders; a few projections converge on the
-// surface (each one rotates the segment toward the tangent plane).
-glm::vec3 slideOutside(const glm::vec3& prev, glm::vec3 dir, float len,
+// The point at distance len from a that lies just outside collider c and is nearest to p0: on the
+// circle where the sphere of radius len around a meets the collider's surface.
+glm::vec3 nearestOnShell(const glm::vec3& a, float len, const SphereCollider& c, const glm::vec3& p0) {
+  const float r = c.radius * 1.0005f;  // a hair's breadth outside, so the result tests as outside
+  glm::vec3 ac = c.center - a;
+  float d = glm::length(ac);
+  if (d < r) {  // a itself is inside (a root below the collider surface): leave radially
+    glm::vec3 q = c.center + glm::normalize(p0 - c.center) * r;
+    return a + glm::normalize(q - a) * len;
+  }
+  glm::vec3 u = ac / d;
+  float h = (len * len + d * d - r * r) / (2.0f * d);
+  float rho2 = len * len - h * h;
+  if (rho2 < 0.0f) return p0;  // cannot reach the collider (p0 was not inside after all)
+  glm::vec3 w = (p0 - a) - glm::dot(p0 - a, u) * u;
+  if (glm::length(w) < 1e-12f) w = glm::cross(u, std::abs(u.x) < 0.9f ? glm::vec3(1, 0, 0) : glm::vec3(0, 0, 1));
+  return a + h * u + std::sqrt(rho2) * glm::normalize(w);
+}
+
+// Keeps |p - prev| = len while moving p out of the colliders (a few rounds: leaving one collider
+// may enter another).
+glm::vec3 slideOutside(const glm::vec3& prev, const glm::vec3& dir, float len,
                        std::span<const SphereCollider> colliders, glm::vec3& dirOut) {
   glm::vec3 p = prev + dir * len;
-  for (int it = 0; it < 16; ++it) {
+  for (int round = 0; round < 8; ++round) {
     const SphereCollider* c = insideCollider(p, colliders);
     if (!c) break;
-    glm::vec3 out = p - c->center;
-    float d = glm::length(out);
-    glm::vec3 onSurface = c->center + (d > 0.0f ? out / d : dir) * (c->radius * 1.0005f);
-    glm::vec3 step = onSurface - prev;
-    if (glm::length(step) < 1e-9f) break;
-    dir = glm::normalize(step);
-    p = prev + dir * len;
+    p = nearestOnShell(prev, len, *c, p);
   }
-  dirOut = dir;
+  dirOut = glm::normalize(p - prev);
   return p;
 }
 }  // namespace
@@ -77,11 +90,9 @@ float grownGuideLength(const GrowthOptions& options, std::uint32_t guide) {
 }
 
 GuideSet growGuides(const ScalpMesh& scalp, const GrowthOptions& options,
-                    std::span<const SphereCollider> colliders, std::span<const glm::vec3> bendDirections) {
+                    std::span<const SphereCollider> colliders, const BendField& bendField) {
   options.validate();
-  if (!bendDirections.empty() && bendDirections.size() != scalp.vertexCount())
-    throw Error("growth: " + std::to_string(bendDirections.size()) + " bend directions for " +
-                std::to_string(scalp.vertexCount()) + " scalp vertices");
+  const glm::vec3 constantTarget = glm::normalize(options.bendDirection);
   const std::uint32_t P = options.particlesPerGuide;
   GuideSet guides;
   guides.particlesPerGuide = P;
@@ -91,9 +102,9 @@ GuideSet growGuides(const ScalpMesh& scalp, const GrowthOptions& options,
     auto guide = guides.guide(g);
     guide[0] = scalp.positions[g];
     glm::vec3 dir = scalp.normals[g];
-    glm::vec3 target = glm::normalize(bendDirections.empty() ? options.bendDirection : bendDirections[g]);
     for (std::uint32_t k = 1; k < P; ++k) {
-      if (k > 1 && options.bend > 0.0f) dir = turnToward(dir, target, options.bend);
+      if (k > 1 && options.bend > 0.0f)
+        dir = turnToward(dir, bendField ? glm::normalize(bendField(guide[k - 1], g)) : constantTarget, options.bend);
       guide[k] = colliders.empty() ? guide[k - 1] + dir * lengths[k - 1]
                                    : slideOutside(guide[k - 1], dir, lengths[k - 1], colliders, dir);
     }

@@ -9,6 +9,7 @@
 #include <glm/glm.hpp>
 
 #include <cstdint>
+#include <functional>
 #include <span>
 
 #include "engine/hair/collider.h"
@@ -29,11 +30,13 @@ struct GrowthOptions {
   bool operator==(const GrowthOptions&) const = default;
 };
 
-// bendDirections, when not empty, gives each vertex its own bend target (one per scalp vertex)
-// instead of options.bendDirection; the default head uses it to comb hair back from the forehead.
+// Where a segment starting at `position` of guide `guide` should turn (need not be unit length).
+using BendField = std::function<glm::vec3(const glm::vec3& position, std::uint32_t guide)>;
+
+// bendField, when set, replaces the constant options.bendDirection; the default head uses it to lay
+// hair along the scalp and comb it back from the forehead.
 GuideSet growGuides(const ScalpMesh& scalp, const GrowthOptions& options,
-                    std::span<const SphereCollider> colliders = {},
-                    std::span<const glm::vec3> bendDirections = {});
+                    std::span<const SphereCollider> colliders = {}, const BendField& bendField = {});
 
 // The length guide g gets (before any collider sliding, which keeps it).
 float grownGuideLength(const GrowthOptions& options, std::uint32_t guide);

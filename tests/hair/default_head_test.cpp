@@ -1,0 +1,90 @@
+// The procedural default head: scalp size, colliders enclosing the head mesh, a rest pose that
+// hangs like hair, and a usable interpolation topology.
+#include <gtest/gtest.h>
+
+#include "engine/hair/default_head.h"
+#include "tests/hair/hair_test_util.h"
+
+namespace hp {
+namespace {
+const HairAsset& asset() {
+  static const HairAsset a = buildDefaultHeadAsset();
+  return a;
+}
+
+float insideDepth(const glm::vec3& p, const std::vector<SphereCollider>& colliders) {
+  float depth = -1e9f;
+  for (const auto& c : colliders) depth = std::max(depth, c.radius - glm::distance(p, c.center));
+  return depth;  // > 0: inside some collider
+}
+
+TEST(DefaultHead, ScalpHasOneToFourThousandVerticesAndOneGuideEach) {
+  ScalpMesh scalp = makeDefaultScalp();
+  EXPECT_GE(scalp.vertexCount(), 1000u);
+  EXPECT_LE(scalp.vertexCount(), 4000u);
+  EXPECT_EQ(asset().guides.guideCount(), scalp.vertexCount());
+  EXPECT_EQ(asset().guides.particlesPerGuide, 7u);
+  EXPECT_EQ(asset().topology.triangles, scalp.triangles);
+  EXPECT_EQ(asset().name, "default head");
+}
+
+TEST(DefaultHead, ScalpCoversCrownBackAndSidesButNotTheFace) {
+  ScalpMesh scalp = makeDefaultScalp();
+  bool crown = false, back = false, left = false, right = false;
+  for (const auto& p : scalp.positions) {
+    crown |= p.y > 0.095f;
+    back |= p.z < -0.09f;
+    left |= p.x < -0.085f;
+    right |= p.x > 0.085f;
+    EXPECT_FALSE(p.z > 0.05f && p.y < 0.02f) << "scalp vertex on the face at " << p.x << " " << p.y << " " << p.z;
+  }
+  EXPECT_TRUE(crown && back && left && right);
+}
+
+TEST(DefaultHead, CollidersEncloseTheHeadMesh) {
+  const auto& a = asset();
+  ASSERT_EQ(a.colliders.size(), 7u);
+  ASSERT_EQ(a.head.positions.size(), a.head.normals.size());
+  ASSERT_EQ(a.head.indices.size() % 3, 0u);
+  for (std::uint32_t i : a.head.indices) ASSERT_LT(i, a.head.positions.size());
+  for (const auto& p : a.head.positions) EXPECT_GE(insideDepth(p, a.colliders), -1e-6f);
+}
+
+TEST(DefaultHead, RestPoseHangsLikeHairOutsideTheColliders) {
+  const auto& g = asset().guides;
+  std::uint32_t hanging = 0;
+  glm::vec3 meanTipDir(0.0f);
+  for (std::uint32_t i = 0; i < g.guideCount(); ++i) {
+    auto guide = g.guide(i);
+    for (std::uint32_t k = 1; k < 7; ++k) EXPECT_LE(insideDepth(guide[k], asset().colliders), 1e-4f);
+    glm::vec3 tipDir = glm::normalize(guide[6] - guide[5]);
+    meanTipDir += tipDir;
+    hanging += tipDir.y < -0.3f;
+  }
+  meanTipDir /= float(g.guideCount());
+  EXPECT_LT(meanTipDir.y, -0.6f);          // tips point down on average
+  EXPECT_GT(hanging, g.guideCount() * 9 / 10);  // not a hedgehog
+  // Long hair: the lowest tips reach below the chin.
+  float lowest = 0.0f;
+  for (std::uint32_t i = 0; i < g.guideCount(); ++i) lowest = std::min(lowest, g.guide(i)[6].y);
+  EXPECT_LT(lowest, -0.12f);
+}
+
+TEST(DefaultHead, NoStrandHangsOverTheFace) {
+  const auto& g = asset().guides;
+  for (std::uint32_t i = 0; i < g.guideCount(); ++i)
+    for (std::uint32_t k = 1; k < 7; ++k) {
+      glm::vec3 p = g.guide(i)[k];
+      EXPECT_FALSE(p.z > 0.09f && std::abs(p.x) < 0.04f && p.y < 0.0f) << "guide " << i << " particle " << k;
+    }
+}
+
+TEST(DefaultHead, TopologyAndDeterminism) {
+  const auto& a = asset();
+  EXPECT_EQ(a.topology.strands.size(), DensityOptions{}.totalStrands);
+  HairAsset b = buildDefaultHeadAsset();
+  EXPECT_EQ(a.guides.positions, b.guides.positions);
+  EXPECT_EQ(a.topology.strands.back().barycentric, b.topology.strands.back().barycentric);
+}
+}  // namespace
+}  // namespace hp
