@@ -10,9 +10,13 @@
 
 namespace hp {
 namespace {
+bool isAngle(const std::string& field) { return field == "alphaR" || field == "betaR" || field == "wc"; }
+
 [[noreturn]] void fail(const std::string& field, double value, const char* rule) {
   std::ostringstream os;
-  os << "HairMaterial." << field << " = " << value << " is invalid: " << rule;
+  os << "HairMaterial." << field << " = " << value;
+  if (isAngle(field)) os << " rad (" << value * 180.0 / 3.14159265358979323846 << " deg)";
+  os << " is invalid: " << rule;
   throw Error(os.str());
 }
 
