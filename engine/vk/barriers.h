@@ -1,0 +1,43 @@
+#pragma once
+// Contract: every pipeline barrier in hairpipe goes through these helpers (synchronization2).
+// A use is a small semantic enum; the one switch in barriers.cpp maps it to stage, access and (for
+// images) layout, so a barrier reads as "from what to what" and cannot mismatch stage and access.
+#include <volk.h>
+
+#include <cstdint>
+
+namespace hp::vk {
+enum class BufferUse {
+  None,              // nothing before (first use in a submission)
+  TransferSrc,
+  TransferDst,
+  ComputeRead,       // storage/uniform read in a compute shader
+  ComputeWrite,      // storage write in a compute shader (read-modify-write included)
+  VertexRead,        // storage read in a vertex shader (vertex pulling)
+  FragmentRead,      // storage/uniform read in a fragment shader
+  GraphicsRead,      // vertex + fragment shader reads
+  HostRead,          // mapped readback after the submission
+};
+
+enum class ImageUse {
+  Undefined,         // contents may be discarded
+  TransferSrc,
+  TransferDst,
+  ColorAttachment,   // written (and blended) as a color attachment
+  DepthAttachment,   // depth test + write
+  FragmentSampled,   // sampled in a fragment shader
+  VertexSampled,     // sampled in a vertex shader
+  ComputeSampled,    // sampled in a compute shader
+  GraphicsSampled,   // sampled in vertex and fragment shaders
+};
+
+// A buffer range barrier between two uses.
+void bufferBarrier(VkCommandBuffer cmd, VkBuffer buffer, BufferUse from, BufferUse to,
+                   VkDeviceSize offset = 0, VkDeviceSize size = VK_WHOLE_SIZE);
+// A global memory barrier between two uses (all buffers); for chains of dependent compute passes.
+void memoryBarrier(VkCommandBuffer cmd, BufferUse from, BufferUse to);
+// A layout transition (and its memory dependency) of all layers of one mip.
+void imageBarrier(VkCommandBuffer cmd, VkImage image, VkImageAspectFlags aspect, ImageUse from, ImageUse to,
+                  std::uint32_t layers = 1);
+VkImageLayout imageLayout(ImageUse use);
+}  // namespace hp::vk

@@ -1,0 +1,82 @@
+#include "engine/vk/buffer.h"
+
+#include <utility>
+
+#include "engine/error.h"
+#include "engine/vk/check.h"
+#include "engine/vk/context.h"
+
+namespace hp::vk {
+namespace {
+VkMemoryPropertyFlags requiredFlags(MemoryKind kind) {
+  switch (kind) {
+    case MemoryKind::DeviceLocal: return VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT;
+    case MemoryKind::Upload: return VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
+    case MemoryKind::Readback: return VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT;
+  }
+  return 0;
+}
+VkMemoryPropertyFlags preferredFlags(MemoryKind kind) {
+  return kind == MemoryKind::Readback ? VK_MEMORY_PROPERTY_HOST_CACHED_BIT : 0;
+}
+}  // namespace
+
+Buffer::Buffer(const Context& ctx, VkDeviceSize size, VkBufferUsageFlags usage, MemoryKind kind,
+               const std::string& name)
+    : device_(ctx.device()), size_(size), name_(name) {
+  if (size == 0) throw Error("buffer '" + name + "': size must be positive");
+  VkBufferCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
+  info.size = size;
+  info.usage = usage;
+  info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
+  HP_VK_CHECK(vkCreateBuffer(device_, &info, nullptr, &buffer_));
+  ctx.setName(VK_OBJECT_TYPE_BUFFER, reinterpret_cast<std::uint64_t>(buffer_), name);
+  try {
+    VkMemoryRequirements req;
+    vkGetBufferMemoryRequirements(device_, buffer_, &req);
+    VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
+    alloc.allocationSize = req.size;
+    alloc.memoryTypeIndex = ctx.findMemoryType(req.memoryTypeBits, requiredFlags(kind), preferredFlags(kind));
+    HP_VK_CHECK(vkAllocateMemory(device_, &alloc, nullptr, &memory_));
+    ctx.setName(VK_OBJECT_TYPE_DEVICE_MEMORY, reinterpret_cast<std::uint64_t>(memory_), name + " memory");
+    HP_VK_CHECK(vkBindBufferMemory(device_, buffer_, memory_, 0));
+    if (kind != MemoryKind::DeviceLocal) HP_VK_CHECK(vkMapMemory(device_, memory_, 0, VK_WHOLE_SIZE, 0, &mapped_));
+  } catch (...) {
+    release();
+    throw;
+  }
+}
+
+Buffer::~Buffer() { release(); }
+
+Buffer::Buffer(Buffer&& other) noexcept { *this = std::move(other); }
+
+Buffer& Buffer::operator=(Buffer&& other) noexcept {
+  if (this != &other) {
+    release();
+    device_ = std::exchange(other.device_, VK_NULL_HANDLE);
+    buffer_ = std::exchange(other.buffer_, VK_NULL_HANDLE);
+    memory_ = std::exchange(other.memory_, VK_NULL_HANDLE);
+    size_ = std::exchange(other.size_, 0);
+    mapped_ = std::exchange(other.mapped_, nullptr);
+    name_ = std::move(other.name_);
+  }
+  return *this;
+}
+
+void Buffer::invalidate() const {
+  if (!mapped_) return;
+  VkMappedMemoryRange range{VK_STRUCTURE_TYPE_MAPPED_MEMORY_RANGE};
+  range.memory = memory_;
+  range.size = VK_WHOLE_SIZE;
+  HP_VK_CHECK(vkInvalidateMappedMemoryRanges(device_, 1, &range));
+}
+
+void Buffer::release() {
+  if (buffer_) vkDestroyBuffer(device_, buffer_, nullptr);
+  if (memory_) vkFreeMemory(device_, memory_, nullptr);
+  buffer_ = VK_NULL_HANDLE;
+  memory_ = VK_NULL_HANDLE;
+  mapped_ = nullptr;
+}
+}  // namespace hp::vk

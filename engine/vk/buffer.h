@@ -1,0 +1,47 @@
+#pragma once
+// Contract: a VkBuffer with its own VkDeviceMemory, move-only, destroyed with its owner. The caller
+// guarantees the GPU no longer uses it when it is destroyed (frame owners wait on their fences).
+// Host-visible kinds are persistently mapped; `mapped()` is null for device-local memory.
+#include <volk.h>
+
+#include <cstdint>
+
+#include <string>
+
+namespace hp::vk {
+class Context;
+
+enum class MemoryKind {
+  DeviceLocal,  // GPU-only; filled by transfers or shaders
+  Upload,       // host-visible, coherent: staging and per-frame constants written by the host
+  Readback,     // host-visible, cached where possible: results the host reads
+};
+
+class Buffer {
+ public:
+  Buffer() = default;
+  Buffer(const Context& ctx, VkDeviceSize size, VkBufferUsageFlags usage, MemoryKind kind, const std::string& name);
+  ~Buffer();
+  Buffer(Buffer&& other) noexcept;
+  Buffer& operator=(Buffer&& other) noexcept;
+  Buffer(const Buffer&) = delete;
+  Buffer& operator=(const Buffer&) = delete;
+
+  VkBuffer handle() const { return buffer_; }
+  VkDeviceSize size() const { return size_; }
+  void* mapped() const { return mapped_; }
+  const std::string& name() const { return name_; }
+  explicit operator bool() const { return buffer_ != VK_NULL_HANDLE; }
+  // For host-visible buffers whose memory might not be coherent (Readback): make GPU writes visible.
+  void invalidate() const;
+
+ private:
+  void release();
+  VkDevice device_ = VK_NULL_HANDLE;
+  VkBuffer buffer_ = VK_NULL_HANDLE;
+  VkDeviceMemory memory_ = VK_NULL_HANDLE;
+  VkDeviceSize size_ = 0;
+  void* mapped_ = nullptr;
+  std::string name_;
+};
+}  // namespace hp::vk

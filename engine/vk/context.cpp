@@ -1,0 +1,210 @@
+#include "engine/vk/context.h"
+
+#include <cstdlib>
+#include <cstring>
+
+#include "engine/error.h"
+#include "engine/vk/check.h"
+#include "engine/vk/device_probe.h"
+
+namespace hp::vk {
+namespace {
+constexpr const char* kValidationLayer = "VK_LAYER_KHRONOS_validation";
+
+bool instanceExtensionAvailable(const char* name) {
+  std::uint32_t count = 0;
+  HP_VK_CHECK(vkEnumerateInstanceExtensionProperties(nullptr, &count, nullptr));
+  std::vector<VkExtensionProperties> exts(count);
+  HP_VK_CHECK(vkEnumerateInstanceExtensionProperties(nullptr, &count, exts.data()));
+  for (const auto& e : exts)
+    if (std::strcmp(e.extensionName, name) == 0) return true;
+  return false;
+}
+
+VkDebugUtilsMessengerCreateInfoEXT messengerInfo(ValidationLog* log) {
+  VkDebugUtilsMessengerCreateInfoEXT info{VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
+  info.messageSeverity = VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
+  info.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT |
+                     VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT;
+  info.pfnUserCallback = &ValidationLog::callback;
+  info.pUserData = log;
+  return info;
+}
+
+std::string requestedDevice(const ContextOptions& options) {
+  if (!options.device.empty()) return options.device;
+  const char* env = std::getenv("HAIRPIPE_DEVICE");
+  return env ? env : "";
+}
+}  // namespace
+
+void initializeLoader() {
+  static bool loaded = false;
+  if (loaded) return;
+  if (volkInitialize() != VK_SUCCESS)
+    throw Error("the Vulkan loader (libvulkan.so.1) was not found; install libvulkan1 and a driver such as mesa-vulkan-drivers");
+  loaded = true;
+}
+
+bool instanceLayerAvailable(const char* name) {
+  initializeLoader();
+  std::uint32_t count = 0;
+  HP_VK_CHECK(vkEnumerateInstanceLayerProperties(&count, nullptr));
+  std::vector<VkLayerProperties> layers(count);
+  HP_VK_CHECK(vkEnumerateInstanceLayerProperties(&count, layers.data()));
+  for (const auto& l : layers)
+    if (std::strcmp(l.layerName, name) == 0) return true;
+  return false;
+}
+
+std::unique_ptr<Context> Context::createHeadless(const ContextOptions& options) {
+  initializeLoader();
+  std::unique_ptr<Context> ctx(new Context());
+  ctx->ownsInstanceAndDevice_ = true;
+  ctx->createInstance(options);
+  ctx->createDevice(options);
+  ctx->finishSetup();
+  return ctx;
+}
+
+std::unique_ptr<Context> Context::adopt(const ExternalDevice& external) {
+  if (!external.getInstanceProcAddr || !external.instance || !external.physicalDevice || !external.device ||
+      !external.queue)
+    throw Error("Context::adopt: every handle of ExternalDevice (getInstanceProcAddr, instance, physicalDevice, "
+                "device, queue) must be set");
+  volkInitializeCustom(external.getInstanceProcAddr);
+  volkLoadInstanceOnly(external.instance);
+  volkLoadDevice(external.device);
+  std::unique_ptr<Context> ctx(new Context());
+  ctx->instance_ = external.instance;
+  ctx->physical_ = external.physicalDevice;
+  ctx->device_ = external.device;
+  ctx->queue_ = external.queue;
+  ctx->queueFamily_ = external.queueFamily;
+  ctx->debugUtils_ = external.debugUtilsEnabled;
+  ctx->finishSetup();
+  return ctx;
+}
+
+void Context::createInstance(const ContextOptions& options) {
+  std::vector<const char*> layers;
+  std::vector<const char*> extensions;
+  if (instanceExtensionAvailable(VK_EXT_DEBUG_UTILS_EXTENSION_NAME)) {
+    extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
+    debugUtils_ = true;
+  }
+  validation_ = options.validation;
+  if (validation_) {
+    if (!instanceLayerAvailable(kValidationLayer))
+      throw Error("validation was requested but VK_LAYER_KHRONOS_validation is not installed (vulkan-validationlayers)");
+    if (!debugUtils_) throw Error("validation was requested but VK_EXT_debug_utils is not available");
+    layers.push_back(kValidationLayer);
+  }
+  VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
+  app.pApplicationName = options.appName.c_str();
+  app.pEngineName = "hairpipe";
+  app.apiVersion = VK_API_VERSION_1_3;
+
+  // Synchronization validation is opt-in in the layer; turn it on whenever validation is.
+  VkValidationFeatureEnableEXT enables[] = {VK_VALIDATION_FEATURE_ENABLE_SYNCHRONIZATION_VALIDATION_EXT};
+  VkValidationFeaturesEXT features{VK_STRUCTURE_TYPE_VALIDATION_FEATURES_EXT};
+  features.enabledValidationFeatureCount = 1;
+  features.pEnabledValidationFeatures = enables;
+  VkDebugUtilsMessengerCreateInfoEXT messenger = messengerInfo(log_.get());
+  messenger.pNext = &features;
+
+  VkInstanceCreateInfo info{VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO};
+  info.pNext = validation_ ? &messenger : nullptr;  // also captures messages of vkCreateInstance itself
+  info.pApplicationInfo = &app;
+  info.enabledLayerCount = static_cast<std::uint32_t>(layers.size());
+  info.ppEnabledLayerNames = layers.data();
+  info.enabledExtensionCount = static_cast<std::uint32_t>(extensions.size());
+  info.ppEnabledExtensionNames = extensions.data();
+  HP_VK_CHECK(vkCreateInstance(&info, nullptr, &instance_));
+  volkLoadInstanceOnly(instance_);
+  if (validation_) {
+    VkDebugUtilsMessengerCreateInfoEXT m = messengerInfo(log_.get());
+    HP_VK_CHECK(vkCreateDebugUtilsMessengerEXT(instance_, &m, nullptr, &messenger_));
+  }
+}
+
+void Context::createDevice(const ContextOptions& options) {
+  std::vector<DeviceReport> reports = probeDevices(instance_);
+  std::vector<DeviceCandidate> candidates;
+  for (const auto& r : reports) candidates.push_back(r.candidate);
+  choice_ = chooseDevice(candidates, requestedDevice(options));
+  if (!choice_.chosen) throw Error(choice_.error);
+  const DeviceReport& chosen = reports[*choice_.chosen];
+  physical_ = chosen.handle;
+  queueFamily_ = static_cast<std::uint32_t>(chosen.queueFamily);
+
+  float priority = 1.0f;
+  VkDeviceQueueCreateInfo queueInfo{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
+  queueInfo.queueFamilyIndex = queueFamily_;
+  queueInfo.queueCount = 1;
+  queueInfo.pQueuePriorities = &priority;
+  VkPhysicalDeviceVulkan13Features v13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
+  v13.dynamicRendering = VK_TRUE;
+  v13.synchronization2 = VK_TRUE;
+  VkPhysicalDeviceFeatures2 features{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &v13};
+  VkDeviceCreateInfo info{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO, &features};
+  info.queueCreateInfoCount = 1;
+  info.pQueueCreateInfos = &queueInfo;
+  HP_VK_CHECK(vkCreateDevice(physical_, &info, nullptr, &device_));
+  volkLoadDevice(device_);
+  vkGetDeviceQueue(device_, queueFamily_, 0, &queue_);
+}
+
+void Context::finishSetup() {
+  vkGetPhysicalDeviceProperties(physical_, &properties_);
+  vkGetPhysicalDeviceMemoryProperties(physical_, &memory_);
+  std::uint32_t count = 0;
+  vkGetPhysicalDeviceQueueFamilyProperties(physical_, &count, nullptr);
+  std::vector<VkQueueFamilyProperties> families(count);
+  vkGetPhysicalDeviceQueueFamilyProperties(physical_, &count, families.data());
+  if (queueFamily_ >= count) throw Error("queue family index " + std::to_string(queueFamily_) + " is out of range");
+  timestampsSupported_ = families[queueFamily_].timestampValidBits > 0 && properties_.limits.timestampPeriod > 0.0f;
+
+  VkCommandPoolCreateInfo pool{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
+  pool.flags = VK_COMMAND_POOL_CREATE_TRANSIENT_BIT | VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
+  pool.queueFamilyIndex = queueFamily_;
+  HP_VK_CHECK(vkCreateCommandPool(device_, &pool, nullptr, &transientPool_));
+  setName(VK_OBJECT_TYPE_COMMAND_POOL, reinterpret_cast<std::uint64_t>(transientPool_), "hairpipe transient pool");
+}
+
+Context::~Context() {
+  // An adopted device belongs to the application: never wait idle on it, the app has already
+  // ensured hairpipe's work is finished before destroying hairpipe (see the embedding contract).
+  if (ownsInstanceAndDevice_ && device_) vkDeviceWaitIdle(device_);
+  if (transientPool_) vkDestroyCommandPool(device_, transientPool_, nullptr);
+  if (!ownsInstanceAndDevice_) return;
+  if (device_) vkDestroyDevice(device_, nullptr);
+  if (messenger_) vkDestroyDebugUtilsMessengerEXT(instance_, messenger_, nullptr);
+  if (instance_) vkDestroyInstance(instance_, nullptr);
+}
+
+std::uint32_t Context::findMemoryType(std::uint32_t typeBits, VkMemoryPropertyFlags required,
+                                      VkMemoryPropertyFlags preferred) const {
+  std::int32_t fallback = -1;
+  for (std::uint32_t i = 0; i < memory_.memoryTypeCount; ++i) {
+    if (!(typeBits & (1u << i))) continue;
+    VkMemoryPropertyFlags flags = memory_.memoryTypes[i].propertyFlags;
+    if ((flags & required) != required) continue;
+    if ((flags & preferred) == preferred) return i;
+    if (fallback < 0) fallback = static_cast<std::int32_t>(i);
+  }
+  if (fallback < 0) throw Error("no Vulkan memory type with the required properties (flags " + std::to_string(required) + ")");
+  return static_cast<std::uint32_t>(fallback);
+}
+
+void Context::setName(VkObjectType type, std::uint64_t handle, const std::string& name) const {
+  if (!debugUtils_ || !vkSetDebugUtilsObjectNameEXT || handle == 0) return;
+  VkDebugUtilsObjectNameInfoEXT info{VK_STRUCTURE_TYPE_DEBUG_UTILS_OBJECT_NAME_INFO_EXT};
+  info.objectType = type;
+  info.objectHandle = handle;
+  info.pObjectName = name.c_str();
+  HP_VK_CHECK(vkSetDebugUtilsObjectNameEXT(device_, &info));
+}
+
+void Context::waitIdle() const { HP_VK_CHECK(vkDeviceWaitIdle(device_)); }
+}  // namespace hp::vk

@@ -1,0 +1,93 @@
+#pragma once
+// Contract: the Vulkan instance/device hairpipe works with, either created headless by hairpipe
+// (createHeadless) or handed over by the embedding application (adopt). It owns only what it created.
+// Functions are loaded through volk's global table, so one process drives one VkDevice at a time.
+// Required: Vulkan 1.3 with dynamicRendering and synchronization2 enabled, and a graphics+compute queue.
+// With validation on, VK_LAYER_KHRONOS_validation runs with synchronization validation and every
+// message lands in validationLog(); a missing layer is an error, never a silent downgrade.
+#include <volk.h>
+
+#include <cstdint>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "engine/vk/device_selection.h"
+#include "engine/vk/validation_log.h"
+
+namespace hp::vk {
+struct ContextOptions {
+  bool validation = false;
+  std::string device;  // --device NAME-SUBSTRING|INDEX; empty: HAIRPIPE_DEVICE, else the best device
+  std::string appName = "hairpipe";
+};
+
+// Handles owned by an embedding application. hairpipe never destroys them.
+struct ExternalDevice {
+  PFN_vkGetInstanceProcAddr getInstanceProcAddr = nullptr;
+  VkInstance instance = VK_NULL_HANDLE;
+  VkPhysicalDevice physicalDevice = VK_NULL_HANDLE;
+  VkDevice device = VK_NULL_HANDLE;
+  std::uint32_t queueFamily = 0;
+  VkQueue queue = VK_NULL_HANDLE;
+  bool debugUtilsEnabled = false;  // whether the app enabled VK_EXT_debug_utils (object names)
+};
+
+class Context {
+ public:
+  static std::unique_ptr<Context> createHeadless(const ContextOptions& options);
+  static std::unique_ptr<Context> adopt(const ExternalDevice& external);
+  ~Context();
+  Context(const Context&) = delete;
+  Context& operator=(const Context&) = delete;
+
+  VkInstance instance() const { return instance_; }
+  VkPhysicalDevice physicalDevice() const { return physical_; }
+  VkDevice device() const { return device_; }
+  VkQueue queue() const { return queue_; }
+  std::uint32_t queueFamily() const { return queueFamily_; }
+  VkCommandPool transientPool() const { return transientPool_; }
+  const VkPhysicalDeviceProperties& properties() const { return properties_; }
+  const VkPhysicalDeviceMemoryProperties& memoryProperties() const { return memory_; }
+  bool timestampsSupported() const { return timestampsSupported_; }
+  bool validationEnabled() const { return validation_; }
+  ValidationLog& validationLog() { return *log_; }
+  // Shared so a test can still read messages reported while the device and instance are destroyed.
+  std::shared_ptr<ValidationLog> sharedValidationLog() const { return log_; }
+  const DeviceChoice& selection() const { return choice_; }
+
+  // A memory type index with all `required` flags, preferring one that also has `preferred`.
+  std::uint32_t findMemoryType(std::uint32_t typeBits, VkMemoryPropertyFlags required,
+                               VkMemoryPropertyFlags preferred = 0) const;
+  // Debug name for any object (no-op when VK_EXT_debug_utils is off).
+  void setName(VkObjectType type, std::uint64_t handle, const std::string& name) const;
+  void waitIdle() const;
+
+ private:
+  Context() = default;
+  void createInstance(const ContextOptions& options);
+  void createDevice(const ContextOptions& options);
+  void finishSetup();
+
+  VkInstance instance_ = VK_NULL_HANDLE;
+  VkDebugUtilsMessengerEXT messenger_ = VK_NULL_HANDLE;
+  VkPhysicalDevice physical_ = VK_NULL_HANDLE;
+  VkDevice device_ = VK_NULL_HANDLE;
+  VkQueue queue_ = VK_NULL_HANDLE;
+  std::uint32_t queueFamily_ = 0;
+  VkCommandPool transientPool_ = VK_NULL_HANDLE;
+  VkPhysicalDeviceProperties properties_{};
+  VkPhysicalDeviceMemoryProperties memory_{};
+  bool ownsInstanceAndDevice_ = false;
+  bool debugUtils_ = false;
+  bool validation_ = false;
+  bool timestampsSupported_ = false;
+  std::shared_ptr<ValidationLog> log_ = std::make_shared<ValidationLog>();
+  DeviceChoice choice_;
+};
+
+// Loads the Vulkan loader through volk once per process; throws hp::Error when it is missing.
+void initializeLoader();
+bool instanceLayerAvailable(const char* name);
+}  // namespace hp::vk

@@ -1,0 +1,92 @@
+#include "engine/vk/descriptors.h"
+
+#include <map>
+#include <utility>
+#include <vector>
+
+#include "engine/vk/check.h"
+#include "engine/vk/context.h"
+
+namespace hp::vk {
+DescriptorSet::DescriptorSet(const Context& ctx, std::span<const Binding> bindings, const std::string& name)
+    : device_(ctx.device()) {
+  std::vector<VkDescriptorSetLayoutBinding> layoutBindings;
+  std::map<VkDescriptorType, std::uint32_t> typeCounts;
+  for (const Binding& b : bindings) {
+    layoutBindings.push_back({b.binding, b.type, 1, b.stages, nullptr});
+    ++typeCounts[b.type];
+  }
+  VkDescriptorSetLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
+  layoutInfo.bindingCount = static_cast<std::uint32_t>(layoutBindings.size());
+  layoutInfo.pBindings = layoutBindings.data();
+  HP_VK_CHECK(vkCreateDescriptorSetLayout(device_, &layoutInfo, nullptr, &layout_));
+  ctx.setName(VK_OBJECT_TYPE_DESCRIPTOR_SET_LAYOUT, reinterpret_cast<std::uint64_t>(layout_), name + " layout");
+
+  std::vector<VkDescriptorPoolSize> sizes;
+  for (auto [type, count] : typeCounts) sizes.push_back({type, count});
+  VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
+  poolInfo.maxSets = 1;
+  poolInfo.poolSizeCount = static_cast<std::uint32_t>(sizes.size());
+  poolInfo.pPoolSizes = sizes.data();
+  try {
+    HP_VK_CHECK(vkCreateDescriptorPool(device_, &poolInfo, nullptr, &pool_));
+    ctx.setName(VK_OBJECT_TYPE_DESCRIPTOR_POOL, reinterpret_cast<std::uint64_t>(pool_), name + " pool");
+    VkDescriptorSetAllocateInfo alloc{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
+    alloc.descriptorPool = pool_;
+    alloc.descriptorSetCount = 1;
+    alloc.pSetLayouts = &layout_;
+    HP_VK_CHECK(vkAllocateDescriptorSets(device_, &alloc, &set_));
+    ctx.setName(VK_OBJECT_TYPE_DESCRIPTOR_SET, reinterpret_cast<std::uint64_t>(set_), name);
+  } catch (...) {
+    release();
+    throw;
+  }
+}
+
+DescriptorSet::~DescriptorSet() { release(); }
+
+DescriptorSet::DescriptorSet(DescriptorSet&& other) noexcept { *this = std::move(other); }
+
+DescriptorSet& DescriptorSet::operator=(DescriptorSet&& other) noexcept {
+  if (this != &other) {
+    release();
+    device_ = std::exchange(other.device_, VK_NULL_HANDLE);
+    layout_ = std::exchange(other.layout_, VK_NULL_HANDLE);
+    pool_ = std::exchange(other.pool_, VK_NULL_HANDLE);
+    set_ = std::exchange(other.set_, VK_NULL_HANDLE);
+  }
+  return *this;
+}
+
+void DescriptorSet::release() {
+  if (pool_) vkDestroyDescriptorPool(device_, pool_, nullptr);  // frees the set too
+  if (layout_) vkDestroyDescriptorSetLayout(device_, layout_, nullptr);
+  pool_ = VK_NULL_HANDLE;
+  layout_ = VK_NULL_HANDLE;
+  set_ = VK_NULL_HANDLE;
+}
+
+void DescriptorSet::writeBuffer(std::uint32_t binding, VkDescriptorType type, VkBuffer buffer, VkDeviceSize offset,
+                                VkDeviceSize range) const {
+  VkDescriptorBufferInfo info{buffer, offset, range};
+  VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+  write.dstSet = set_;
+  write.dstBinding = binding;
+  write.descriptorCount = 1;
+  write.descriptorType = type;
+  write.pBufferInfo = &info;
+  vkUpdateDescriptorSets(device_, 1, &write, 0, nullptr);
+}
+
+void DescriptorSet::writeSampledImage(std::uint32_t binding, VkImageView view, VkSampler sampler,
+                                      VkImageLayout layout) const {
+  VkDescriptorImageInfo info{sampler, view, layout};
+  VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+  write.dstSet = set_;
+  write.dstBinding = binding;
+  write.descriptorCount = 1;
+  write.descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+  write.pImageInfo = &info;
+  vkUpdateDescriptorSets(device_, 1, &write, 0, nullptr);
+}
+}  // namespace hp::vk

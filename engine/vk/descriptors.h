@@ -1,0 +1,52 @@
+#pragma once
+// Contract: one descriptor set together with its layout and a pool sized exactly for it, move-only.
+// Passes declare their bindings once (numbers from the shared GLSL/C++ header) and write resources
+// whenever the buffers behind them change; writes happen outside command recording.
+#include <volk.h>
+
+#include <cstdint>
+
+#include <span>
+#include <string>
+
+namespace hp::vk {
+class Context;
+
+struct Binding {
+  std::uint32_t binding;
+  VkDescriptorType type;
+  VkShaderStageFlags stages;
+};
+
+class DescriptorSet {
+ public:
+  DescriptorSet() = default;
+  DescriptorSet(const Context& ctx, std::span<const Binding> bindings, const std::string& name);
+  ~DescriptorSet();
+  DescriptorSet(DescriptorSet&& other) noexcept;
+  DescriptorSet& operator=(DescriptorSet&& other) noexcept;
+  DescriptorSet(const DescriptorSet&) = delete;
+  DescriptorSet& operator=(const DescriptorSet&) = delete;
+
+  VkDescriptorSetLayout layout() const { return layout_; }
+  VkDescriptorSet set() const { return set_; }
+
+  void writeBuffer(std::uint32_t binding, VkDescriptorType type, VkBuffer buffer, VkDeviceSize offset = 0,
+                   VkDeviceSize range = VK_WHOLE_SIZE) const;
+  void writeStorageBuffer(std::uint32_t binding, VkBuffer buffer) const {
+    writeBuffer(binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, buffer);
+  }
+  void writeUniformBuffer(std::uint32_t binding, VkBuffer buffer) const {
+    writeBuffer(binding, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, buffer);
+  }
+  void writeSampledImage(std::uint32_t binding, VkImageView view, VkSampler sampler,
+                         VkImageLayout layout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL) const;
+
+ private:
+  void release();
+  VkDevice device_ = VK_NULL_HANDLE;
+  VkDescriptorSetLayout layout_ = VK_NULL_HANDLE;
+  VkDescriptorPool pool_ = VK_NULL_HANDLE;
+  VkDescriptorSet set_ = VK_NULL_HANDLE;
+};
+}  // namespace hp::vk

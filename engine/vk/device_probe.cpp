@@ -1,0 +1,70 @@
+#include "engine/vk/device_probe.h"
+
+#include "engine/vk/check.h"
+
+namespace hp::vk {
+DeviceKind deviceKind(VkPhysicalDeviceType type) {
+  switch (type) {
+    case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU: return DeviceKind::Discrete;
+    case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU: return DeviceKind::Integrated;
+    case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU: return DeviceKind::Virtual;
+    case VK_PHYSICAL_DEVICE_TYPE_CPU: return DeviceKind::Cpu;
+    default: return DeviceKind::Other;
+  }
+}
+
+namespace {
+void probeQueues(DeviceReport& report) {
+  std::uint32_t count = 0;
+  vkGetPhysicalDeviceQueueFamilyProperties(report.handle, &count, nullptr);
+  std::vector<VkQueueFamilyProperties> families(count);
+  vkGetPhysicalDeviceQueueFamilyProperties(report.handle, &count, families.data());
+  const VkQueueFlags needed = VK_QUEUE_GRAPHICS_BIT | VK_QUEUE_COMPUTE_BIT;
+  for (std::uint32_t i = 0; i < count; ++i) {
+    if ((families[i].queueFlags & needed) == needed) {
+      report.queueFamily = static_cast<std::int32_t>(i);
+      report.timestamps = families[i].timestampValidBits > 0;
+      return;
+    }
+  }
+  report.candidate.missing.push_back("a graphics+compute queue");
+}
+
+void probeFeatures(DeviceReport& report) {
+  VkPhysicalDeviceVulkan13Features v13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
+  VkPhysicalDeviceFeatures2 features{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &v13};
+  vkGetPhysicalDeviceFeatures2(report.handle, &features);
+  if (!v13.dynamicRendering) report.candidate.missing.push_back("feature dynamicRendering");
+  if (!v13.synchronization2) report.candidate.missing.push_back("feature synchronization2");
+}
+}  // namespace
+
+std::vector<DeviceReport> probeDevices(VkInstance instance) {
+  std::uint32_t count = 0;
+  HP_VK_CHECK(vkEnumeratePhysicalDevices(instance, &count, nullptr));
+  std::vector<VkPhysicalDevice> handles(count);
+  HP_VK_CHECK(vkEnumeratePhysicalDevices(instance, &count, handles.data()));
+  std::vector<DeviceReport> reports;
+  for (std::uint32_t i = 0; i < count; ++i) {
+    DeviceReport r;
+    r.handle = handles[i];
+    r.driver.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DRIVER_PROPERTIES;
+    VkPhysicalDeviceProperties2 props{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2, &r.driver};
+    vkGetPhysicalDeviceProperties2(r.handle, &props);
+    r.properties = props.properties;
+    vkGetPhysicalDeviceMemoryProperties(r.handle, &r.memory);
+    r.candidate.index = i;
+    r.candidate.name = r.properties.deviceName;
+    r.candidate.kind = deviceKind(r.properties.deviceType);
+    r.candidate.apiVersion = r.properties.apiVersion;
+    if (r.properties.apiVersion < VK_API_VERSION_1_3) {
+      r.candidate.missing.push_back("Vulkan 1.3");
+    } else {
+      probeFeatures(r);
+    }
+    probeQueues(r);
+    reports.push_back(std::move(r));
+  }
+  return reports;
+}
+}  // namespace hp::vk

@@ -1,0 +1,135 @@
+#include "engine/vk/image.h"
+
+#include <utility>
+
+#include "engine/error.h"
+#include "engine/vk/check.h"
+#include "engine/vk/context.h"
+
+namespace hp::vk {
+bool isDepthFormat(VkFormat format) {
+  return format == VK_FORMAT_D32_SFLOAT || format == VK_FORMAT_D16_UNORM || format == VK_FORMAT_D24_UNORM_S8_UINT ||
+         format == VK_FORMAT_D32_SFLOAT_S8_UINT;
+}
+
+std::uint32_t formatBytesPerPixel(VkFormat format) {
+  switch (format) {
+    case VK_FORMAT_R8G8B8A8_UNORM:
+    case VK_FORMAT_R8G8B8A8_SRGB:
+    case VK_FORMAT_B8G8R8A8_UNORM:
+    case VK_FORMAT_B8G8R8A8_SRGB:
+    case VK_FORMAT_R32_SFLOAT:
+    case VK_FORMAT_R32_UINT:
+    case VK_FORMAT_D32_SFLOAT:
+      return 4;
+    case VK_FORMAT_R16G16B16A16_SFLOAT: return 8;
+    case VK_FORMAT_R32G32B32A32_SFLOAT: return 16;
+    default: throw Error("formatBytesPerPixel: unsupported format " + std::to_string(format));
+  }
+}
+
+VkImageAspectFlags Image::aspect() const {
+  return isDepthFormat(desc_.format) ? VK_IMAGE_ASPECT_DEPTH_BIT : VK_IMAGE_ASPECT_COLOR_BIT;
+}
+
+Image::Image(const Context& ctx, const ImageDesc& desc) : device_(ctx.device()), desc_(desc) {
+  const auto& limits = ctx.properties().limits;
+  if (desc.width == 0 || desc.height == 0 || desc.width > limits.maxImageDimension2D ||
+      desc.height > limits.maxImageDimension2D)
+    throw Error("image '" + desc.name + "': size " + std::to_string(desc.width) + "x" + std::to_string(desc.height) +
+                " is outside 1.." + std::to_string(limits.maxImageDimension2D) + " for this device");
+  if (desc.layers == 0 || desc.layers > limits.maxImageArrayLayers)
+    throw Error("image '" + desc.name + "': bad layer count " + std::to_string(desc.layers));
+  VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
+  info.imageType = VK_IMAGE_TYPE_2D;
+  info.format = desc.format;
+  info.extent = {desc.width, desc.height, 1};
+  info.mipLevels = 1;
+  info.arrayLayers = desc.layers;
+  info.samples = desc.samples;
+  info.tiling = VK_IMAGE_TILING_OPTIMAL;
+  info.usage = desc.usage;
+  info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
+  HP_VK_CHECK(vkCreateImage(device_, &info, nullptr, &image_));
+  ctx.setName(VK_OBJECT_TYPE_IMAGE, reinterpret_cast<std::uint64_t>(image_), desc.name);
+  try {
+    VkMemoryRequirements req;
+    vkGetImageMemoryRequirements(device_, image_, &req);
+    VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
+    alloc.allocationSize = req.size;
+    alloc.memoryTypeIndex = ctx.findMemoryType(req.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+    HP_VK_CHECK(vkAllocateMemory(device_, &alloc, nullptr, &memory_));
+    ctx.setName(VK_OBJECT_TYPE_DEVICE_MEMORY, reinterpret_cast<std::uint64_t>(memory_), desc.name + " memory");
+    HP_VK_CHECK(vkBindImageMemory(device_, image_, memory_, 0));
+    VkImageViewType type = desc.layers > 1 ? VK_IMAGE_VIEW_TYPE_2D_ARRAY : VK_IMAGE_VIEW_TYPE_2D;
+    view_ = createView(ctx, type, 0, desc.layers, desc.name + " view");
+    if (desc.layers > 1)
+      for (std::uint32_t i = 0; i < desc.layers; ++i)
+        layerViews_.push_back(createView(ctx, VK_IMAGE_VIEW_TYPE_2D, i, 1, desc.name + " layer " + std::to_string(i)));
+    else
+      layerViews_.push_back(view_);
+  } catch (...) {
+    release();
+    throw;
+  }
+}
+
+VkImageView Image::createView(const Context& ctx, VkImageViewType type, std::uint32_t firstLayer,
+                              std::uint32_t layerCount, const std::string& name) {
+  VkImageViewCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
+  info.image = image_;
+  info.viewType = type;
+  info.format = desc_.format;
+  info.subresourceRange = {aspect(), 0, 1, firstLayer, layerCount};
+  VkImageView view = VK_NULL_HANDLE;
+  HP_VK_CHECK(vkCreateImageView(device_, &info, nullptr, &view));
+  ctx.setName(VK_OBJECT_TYPE_IMAGE_VIEW, reinterpret_cast<std::uint64_t>(view), name);
+  return view;
+}
+
+Image::~Image() { release(); }
+
+Image::Image(Image&& other) noexcept { *this = std::move(other); }
+
+Image& Image::operator=(Image&& other) noexcept {
+  if (this != &other) {
+    release();
+    device_ = std::exchange(other.device_, VK_NULL_HANDLE);
+    image_ = std::exchange(other.image_, VK_NULL_HANDLE);
+    memory_ = std::exchange(other.memory_, VK_NULL_HANDLE);
+    view_ = std::exchange(other.view_, VK_NULL_HANDLE);
+    layerViews_ = std::move(other.layerViews_);
+    other.layerViews_.clear();
+    desc_ = std::move(other.desc_);
+  }
+  return *this;
+}
+
+void Image::release() {
+  if (!device_) return;
+  for (VkImageView v : layerViews_)
+    if (v != view_) vkDestroyImageView(device_, v, nullptr);
+  layerViews_.clear();
+  if (view_) vkDestroyImageView(device_, view_, nullptr);
+  if (image_) vkDestroyImage(device_, image_, nullptr);
+  if (memory_) vkFreeMemory(device_, memory_, nullptr);
+  view_ = VK_NULL_HANDLE;
+  image_ = VK_NULL_HANDLE;
+  memory_ = VK_NULL_HANDLE;
+}
+
+VkSampler createLinearClampSampler(const Context& ctx, const std::string& name) {
+  VkSamplerCreateInfo info{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
+  info.magFilter = VK_FILTER_LINEAR;
+  info.minFilter = VK_FILTER_LINEAR;
+  info.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
+  info.addressModeU = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+  info.addressModeV = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+  info.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+  info.maxLod = 0.0f;
+  VkSampler sampler = VK_NULL_HANDLE;
+  HP_VK_CHECK(vkCreateSampler(ctx.device(), &info, nullptr, &sampler));
+  ctx.setName(VK_OBJECT_TYPE_SAMPLER, reinterpret_cast<std::uint64_t>(sampler), name);
+  return sampler;
+}
+}  // namespace hp::vk

@@ -1,0 +1,60 @@
+#pragma once
+// Contract: a 2D (array) image with its own device-local memory and views, move-only. view() covers all
+// layers (2D, or 2D_ARRAY when layers > 1); layerView(i) is a 2D view of one layer for attachments.
+// Layout tracking is the caller's job, through the named transitions in barriers.h.
+#include <volk.h>
+
+#include <cstdint>
+
+#include <string>
+#include <vector>
+
+namespace hp::vk {
+class Context;
+
+struct ImageDesc {
+  std::uint32_t width = 1;
+  std::uint32_t height = 1;
+  std::uint32_t layers = 1;
+  VkFormat format = VK_FORMAT_R8G8B8A8_UNORM;
+  VkImageUsageFlags usage = 0;
+  VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
+  std::string name;
+};
+
+class Image {
+ public:
+  Image() = default;
+  Image(const Context& ctx, const ImageDesc& desc);
+  ~Image();
+  Image(Image&& other) noexcept;
+  Image& operator=(Image&& other) noexcept;
+  Image(const Image&) = delete;
+  Image& operator=(const Image&) = delete;
+
+  VkImage handle() const { return image_; }
+  VkImageView view() const { return view_; }
+  VkImageView layerView(std::uint32_t layer) const { return layerViews_.at(layer); }
+  const ImageDesc& desc() const { return desc_; }
+  VkExtent2D extent() const { return {desc_.width, desc_.height}; }
+  VkImageAspectFlags aspect() const;
+  explicit operator bool() const { return image_ != VK_NULL_HANDLE; }
+
+ private:
+  void release();
+  VkImageView createView(const Context& ctx, VkImageViewType type, std::uint32_t firstLayer,
+                         std::uint32_t layerCount, const std::string& name);
+  VkDevice device_ = VK_NULL_HANDLE;
+  VkImage image_ = VK_NULL_HANDLE;
+  VkDeviceMemory memory_ = VK_NULL_HANDLE;
+  VkImageView view_ = VK_NULL_HANDLE;
+  std::vector<VkImageView> layerViews_;
+  ImageDesc desc_;
+};
+
+bool isDepthFormat(VkFormat format);
+std::uint32_t formatBytesPerPixel(VkFormat format);  // for the formats hairpipe reads back
+
+// A sampler with linear filtering and clamp-to-edge: what every LUT and shadow lookup uses.
+VkSampler createLinearClampSampler(const Context& ctx, const std::string& name);
+}  // namespace hp::vk

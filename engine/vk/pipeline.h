@@ -1,0 +1,86 @@
+#pragma once
+// Contract: compute and graphics pipelines built from embedded SPIR-V (shaders/embedded_shaders.h),
+// move-only, each with its own layout. Graphics pipelines use dynamic rendering (no render passes) and
+// vertex pulling (no vertex input state); viewport and scissor are dynamic.
+// ComputePipeline knows its workgroup size (from the shared GLSL/C++ header), so dispatch() takes a
+// thread count and never a restated literal.
+#include <volk.h>
+
+#include <cstdint>
+
+#include <string>
+#include <vector>
+
+namespace hp::vk {
+class Context;
+
+class PipelineBase {
+ public:
+  PipelineBase() = default;
+  ~PipelineBase();
+  PipelineBase(PipelineBase&& other) noexcept;
+  PipelineBase& operator=(PipelineBase&& other) noexcept;
+  PipelineBase(const PipelineBase&) = delete;
+  PipelineBase& operator=(const PipelineBase&) = delete;
+
+  VkPipeline handle() const { return pipeline_; }
+  VkPipelineLayout layout() const { return layout_; }
+  void pushConstants(VkCommandBuffer cmd, const void* data, std::uint32_t size) const;
+  template <class T>
+  void push(VkCommandBuffer cmd, const T& constants) const {
+    pushConstants(cmd, &constants, sizeof(T));
+  }
+
+ protected:
+  void createLayout(const Context& ctx, const std::vector<VkDescriptorSetLayout>& sets, std::uint32_t pushSize,
+                    VkShaderStageFlags pushStages, const std::string& name);
+  void release();
+  VkDevice device_ = VK_NULL_HANDLE;
+  VkPipelineLayout layout_ = VK_NULL_HANDLE;
+  VkPipeline pipeline_ = VK_NULL_HANDLE;
+  VkShaderStageFlags pushStages_ = 0;
+  VkPipelineBindPoint bindPoint_ = VK_PIPELINE_BIND_POINT_COMPUTE;
+};
+
+class ComputePipeline : public PipelineBase {
+ public:
+  ComputePipeline() = default;
+  ComputePipeline(const Context& ctx, const std::string& shader, std::uint32_t workgroupSize,
+                  const std::vector<VkDescriptorSetLayout>& sets, std::uint32_t pushSize, const std::string& name);
+  void bind(VkCommandBuffer cmd, VkDescriptorSet set) const;
+  // Enough workgroups for `threads` invocations. Past maxComputeWorkGroupCount[0] groups the grid
+  // becomes 2D; shaders use hpThreadId(size) from shaders/common.glsl and bounds-check against their count.
+  void dispatch(VkCommandBuffer cmd, std::uint32_t threads) const;
+  std::uint32_t workgroupSize() const { return workgroupSize_; }
+
+ private:
+  std::uint32_t workgroupSize_ = 0;
+  std::uint32_t maxGroupsX_ = 65535;
+};
+
+enum class BlendMode { None, Alpha, Additive };
+
+struct GraphicsPipelineDesc {
+  std::string vertexShader;    // embedded shader names, e.g. "strands.vert"
+  std::string fragmentShader;
+  std::vector<VkFormat> colorFormats;
+  VkFormat depthFormat = VK_FORMAT_UNDEFINED;
+  VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
+  BlendMode blend = BlendMode::None;  // applied to every color attachment
+  bool depthTest = false;
+  bool depthWrite = false;
+  bool alphaToCoverage = false;
+  VkPrimitiveTopology topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
+  VkCullModeFlags cullMode = VK_CULL_MODE_NONE;
+  std::vector<VkDescriptorSetLayout> sets;
+  std::uint32_t pushSize = 0;
+  std::string name;
+};
+
+class GraphicsPipeline : public PipelineBase {
+ public:
+  GraphicsPipeline() = default;
+  GraphicsPipeline(const Context& ctx, const GraphicsPipelineDesc& desc);
+  void bind(VkCommandBuffer cmd, VkDescriptorSet set, VkExtent2D extent) const;
+};
+}  // namespace hp::vk

@@ -1,0 +1,52 @@
+#pragma once
+// Contract: GPU timestamps around named scopes of a command buffer. reset() at the start of recording,
+// begin()/end() around each scope (they may nest), results() after the submission has completed.
+// Times come from timestampPeriod and the queue's valid bits; on a device without timestamps every
+// call is a no-op and results() is empty (supported() says which).
+#include <volk.h>
+
+#include <cstdint>
+
+#include <string>
+#include <vector>
+
+namespace hp::vk {
+class Context;
+
+struct ScopeTime {
+  std::string name;
+  double milliseconds = 0.0;
+  int depth = 0;  // nesting level, 0 for top-level scopes
+};
+
+class GpuProfiler {
+ public:
+  GpuProfiler(const Context& ctx, std::uint32_t maxScopes, const std::string& name);
+  ~GpuProfiler();
+  GpuProfiler(const GpuProfiler&) = delete;
+  GpuProfiler& operator=(const GpuProfiler&) = delete;
+
+  bool supported() const { return pool_ != VK_NULL_HANDLE; }
+  void reset(VkCommandBuffer cmd);
+  void begin(VkCommandBuffer cmd, const std::string& scope);
+  void end(VkCommandBuffer cmd);
+  // Blocks until the queries of the last recorded frame are available.
+  std::vector<ScopeTime> results() const;
+
+ private:
+  struct Scope {
+    std::string name;
+    std::uint32_t beginQuery;
+    std::uint32_t endQuery;
+    int depth;
+  };
+  VkDevice device_ = VK_NULL_HANDLE;
+  VkQueryPool pool_ = VK_NULL_HANDLE;
+  std::uint32_t capacity_ = 0;
+  std::uint32_t used_ = 0;
+  double periodNs_ = 1.0;
+  std::uint64_t validMask_ = ~0ull;
+  std::vector<Scope> scopes_;
+  std::vector<std::size_t> open_;
+};
+}  // namespace hp::vk

@@ -1,0 +1,27 @@
+// Shared by GLSL and C++: the self-test kernels that prove the Vulkan layer (prefix sum, a flat draw).
+#ifndef HP_SHARED_SELFTEST_H
+#define HP_SHARED_SELFTEST_H
+#include "common.h"  // relative to this header: works for glslc and C++ alike
+
+HP_BEGIN
+HP_CONST(uint, SCAN_WORKGROUP_SIZE, 256)
+HP_CONST(uint, SCAN_BINDING_DATA, 0)     // uint[]: scanned in place, block by block
+HP_CONST(uint, SCAN_BINDING_SUMS, 1)     // uint[]: one total per block (output of scan, input of add)
+HP_CONST(uint, DRAW_BINDING_VERTICES, 0) // vec4[]: xy in pixels
+
+struct ScanPush {
+  uint count;
+};
+
+struct FlatDrawPush {
+  vec4 color;
+  vec2 viewportSize;
+  vec2 pad;
+};
+HP_END
+
+#ifdef __cplusplus
+static_assert(sizeof(hp::gpu::ScanPush) == 4);
+static_assert(sizeof(hp::gpu::FlatDrawPush) == 32);
+#endif
+#endif

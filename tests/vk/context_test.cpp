@@ -1,0 +1,54 @@
+#include <gtest/gtest.h>
+
+#include "engine/error.h"
+#include "engine/vk/check.h"
+#include "engine/vk/context.h"
+#include "tests/support/vk_fixture.h"
+
+using hp::test::VulkanTest;
+
+TEST_F(VulkanTest, CreatesAVulkan13DeviceWithAGraphicsComputeQueue) {
+  EXPECT_GE(ctx->properties().apiVersion, VK_API_VERSION_1_3);
+  EXPECT_NE(ctx->queue(), VK_NULL_HANDLE);
+  EXPECT_TRUE(ctx->validationEnabled());
+  EXPECT_TRUE(ctx->selection().chosen.has_value());
+}
+
+// Proves the fixture can fail: an invalid call must be captured by the validation log.
+TEST_F(VulkanTest, ValidationCaptureReportsAnInvalidCall) {
+  VkBufferCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
+  info.size = 0;  // VUID-VkBufferCreateInfo-size-00912: size must be greater than 0
+  info.usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
+  VkBuffer buffer = VK_NULL_HANDLE;
+  VkResult r = vkCreateBuffer(ctx->device(), &info, nullptr, &buffer);
+  if (r == VK_SUCCESS && buffer) vkDestroyBuffer(ctx->device(), buffer, nullptr);
+  auto messages = log->messages();
+  ASSERT_FALSE(messages.empty());
+  EXPECT_NE(log->describeProblems().find("00912"), std::string::npos) << log->describeProblems();
+  EXPECT_GE(takeValidationProblems(), 1u);
+}
+
+TEST(VulkanContext, UnknownDeviceRequestFailsAndListsDevices) {
+  hp::vk::ContextOptions options;
+  options.device = "nosuchdevice";
+  try {
+    hp::vk::Context::createHeadless(options);
+    FAIL() << "expected hp::Error";
+  } catch (const hp::Error& e) {
+    std::string msg = e.what();
+    EXPECT_NE(msg.find("nosuchdevice"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("available devices"), std::string::npos) << msg;
+  }
+}
+
+TEST(VulkanCheck, FailureNamesTheCallAndTheResult) {
+  try {
+    hp::vk::check(VK_ERROR_OUT_OF_DEVICE_MEMORY, "vkAllocateMemory(device, ...)");
+    FAIL() << "expected hp::Error";
+  } catch (const hp::Error& e) {
+    std::string msg = e.what();
+    EXPECT_NE(msg.find("vkAllocateMemory"), std::string::npos);
+    EXPECT_NE(msg.find("VK_ERROR_OUT_OF_DEVICE_MEMORY"), std::string::npos);
+  }
+  EXPECT_NO_THROW(hp::vk::check(VK_SUCCESS, "vkFoo"));
+}
