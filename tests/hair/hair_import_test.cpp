@@ -1,0 +1,90 @@
+// .hair models as assets: resampled guides, kept strands, fitted colliders, root topology.
+#include <gtest/gtest.h>
+
+#include "engine/hair/hair_import.h"
+#include "engine/hair/resample.h"
+#include "engine/hair/synthetic_hair.h"
+#include "tests/hair/hair_test_util.h"
+
+namespace hp {
+namespace {
+HairFileData model(std::uint32_t strands = 600, std::uint32_t pointsPerStrand = 30) {
+  SyntheticHairOptions o;
+  o.strands = strands;
+  o.points = strands * pointsPerStrand;
+  return makeSyntheticHair(o);
+}
+
+TEST(HairImport, SyntheticModelHasExactCountsAndVaryingStrands) {
+  HairFileData d = model();
+  EXPECT_NO_THROW(validateHairData(d, "synthetic"));
+  EXPECT_EQ(d.pointCount(), 600u * 30u);
+  EXPECT_NE(d.strandPointCount(0), d.strandPointCount(1));
+}
+
+TEST(HairImport, ResamplesEveryStrandKeepingRootsTipsAndLength) {
+  HairFileData d = model();
+  HairImportOptions o;
+  GuideSet g = guidesFromHair(d, o, "m.hair");
+  ASSERT_EQ(g.guideCount(), 600u);
+  auto offsets = d.strandOffsets();
+  for (std::uint32_t s = 0; s < 600; ++s) {
+    std::span<const glm::vec3> in(d.points.data() + offsets[s], d.strandPointCount(s));
+    EXPECT_EQ(g.guide(s)[0], in.front());
+    EXPECT_EQ(g.guide(s)[6], in.back());
+    // The synthetic strands are wavy; 7 particles cut across the waves (a smooth arc keeps 1%:
+    // see Resample.KeepsRootTipAndArcLength).
+    EXPECT_NEAR(polylineLength(g.guide(s)) / polylineLength(in), 1.0f, 0.1f);
+  }
+}
+
+TEST(HairImport, KeepsStrandsAsTheyAreWhenAsked) {
+  HairFileData d;
+  d.strandCount = 2;
+  d.defaultSegments = 2;
+  d.points = {{0, 0, 0}, {0, -1, 0}, {0, -3, 0}, {1, 0, 0}, {1, -1, 0}, {1, -2, 0}};
+  HairImportOptions o;
+  o.keepStrands = true;
+  o.transform.translation = glm::vec3(0, 10, 0);
+  GuideSet g = guidesFromHair(d, o, "k.hair");
+  EXPECT_EQ(g.particlesPerGuide, 3u);
+  EXPECT_EQ(g.guide(0)[2], glm::vec3(0, 7, 0));
+  HairFileData mixed = model(10, 5);
+  EXPECT_ERROR_CONTAINS(guidesFromHair(mixed, o, "mixed.hair"),
+                        "mixed.hair: keeping strands as they are needs one point count for all strands");
+  HairFileData tooLong;
+  tooLong.strandCount = 1;
+  tooLong.defaultSegments = 69;
+  tooLong.points.assign(70, glm::vec3(0.0f));
+  EXPECT_ERROR_CONTAINS(guidesFromHair(tooLong, o, "long.hair"), "particles per guide must be in [2, 64], got 70");
+}
+
+TEST(HairImport, BuildsTopologyAndFitsAHeadCollider) {
+  HairImportOptions o;
+  o.density.totalStrands = 5000;
+  HairAsset a = importHairAsset(model(), o, "m.hair");
+  EXPECT_EQ(a.name, "m.hair");
+  EXPECT_GT(a.topology.triangles.size(), 600u);  // about 2 per root on an open cap
+  EXPECT_EQ(a.topology.strands.size(), 5000u);
+  ASSERT_EQ(a.colliders.size(), 1u);
+  EXPECT_NEAR(a.colliders[0].radius, 0.1f, 1e-4f);
+  EXPECT_NEAR(glm::length(a.colliders[0].center), 0.0f, 1e-4f);
+  for (const auto& p : a.head.positions) EXPECT_LE(glm::length(p - a.colliders[0].center), 0.1f);
+}
+
+TEST(HairImport, SceneCollidersReplaceTheFittedOne) {
+  HairImportOptions o;
+  o.colliders = std::vector<SphereCollider>{{{0, 0, 0}, 0.05f}, {{0, -0.2f, 0}, 0.04f}};
+  HairAsset a = importHairAsset(model(), o, "m.hair");
+  EXPECT_EQ(a.colliders, *o.colliders);
+}
+
+TEST(HairImport, RootsThatCannotBeTriangulatedAreAnError) {
+  HairFileData d;
+  d.strandCount = 3;
+  d.defaultSegments = 1;
+  d.points = {{0, 0, 0}, {0, -1, 0}, {1, 0, 0}, {1, -1, 0}, {2, 0, 0}, {2, -1, 0}};
+  EXPECT_ERROR_CONTAINS(importHairAsset(d, {}, "line.hair"), "line.hair: cannot triangulate the strand roots");
+}
+}  // namespace
+}  // namespace hp
