@@ -1,0 +1,46 @@
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "tests/support/cli_runner.h"
+
+using hp::test::runCli;
+
+TEST(CliInfo, ListsDevicesSelectionAndValidationLayerAsJson) {
+  auto r = runCli({"info", "--json"});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  auto j = nlohmann::json::parse(r.out);
+  ASSERT_FALSE(j["devices"].empty());
+  EXPECT_TRUE(j["validation_layer"].get<bool>());
+  const auto& d = j["devices"][j["selected"].get<int>()];
+  EXPECT_FALSE(d["name"].get<std::string>().empty());
+  EXPECT_GT(d["max_storage_buffer_range"].get<std::uint64_t>(), 0u);
+  EXPECT_GT(d["max_compute_workgroup_invocations"].get<std::uint32_t>(), 0u);
+  EXPECT_GT(d["timestamp_period_ns"].get<double>(), 0.0);
+  EXPECT_TRUE(d["suitable"].get<bool>());
+}
+
+TEST(CliInfo, TextOutputMarksTheSelectedDevice) {
+  auto r = runCli({"info"});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.out.find("<- selected"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("maxStorageBufferRange"), std::string::npos);
+}
+
+TEST(CliInfo, UnknownDeviceExitsNonZeroAndListsDevices) {
+  auto r = runCli({"info", "--device", "nosuchdevice"});
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_NE(r.err.find("nosuchdevice"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("available devices"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("[0]"), std::string::npos) << r.err;
+}
+
+TEST(CliHelp, EverySubcommandHasHelp) {
+  auto r = runCli({"--help"});
+  EXPECT_EQ(r.exitCode, 0);
+  EXPECT_NE(r.out.find("info"), std::string::npos);
+  auto info = runCli({"info", "--help"});
+  EXPECT_EQ(info.exitCode, 0);
+  EXPECT_NE(info.out.find("--device"), std::string::npos);
+  EXPECT_NE(info.out.find("--json"), std::string::npos);
+}
