@@ -1,0 +1,111 @@
+// `hairpipe inspect FILE [--json]`: what is in a .hair model (strands, points, points per strand,
+// bounding box, arrays present, the head sphere fitted to the roots) or an OBJ scalp (vertices,
+// triangles, dropped degenerate faces, bounding box, fitted sphere). Bad files exit 1 with a message.
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "engine/error.h"
+#include "engine/hair/fit_sphere.h"
+#include "engine/hair/hair_file.h"
+#include "engine/hair/obj_import.h"
+#include "samples/cli/command.h"
+
+namespace {
+struct InspectOptions {
+  std::string file;
+  bool json = false;
+};
+
+nlohmann::json vec(const glm::vec3& v) { return {v.x, v.y, v.z}; }
+
+nlohmann::json boundsAndSphere(std::span<const glm::vec3> points, std::span<const glm::vec3> sphereOf) {
+  glm::vec3 lo(INFINITY), hi(-INFINITY);
+  for (const auto& p : points) lo = glm::min(lo, p), hi = glm::max(hi, p);
+  hp::SphereFit fit = hp::fitSphere(sphereOf);
+  return {{"bbox", {{"min", vec(lo)}, {"max", vec(hi)}}},
+          {"head_sphere", {{"center", vec(fit.sphere.center)}, {"radius", fit.sphere.radius},
+                           {"fitted", fit.fitted}, {"rms_error", fit.rmsError}}}};
+}
+
+nlohmann::json inspectHair(const std::filesystem::path& path) {
+  hp::HairFileData d = hp::readHairFile(path);
+  std::uint32_t lo = UINT32_MAX, hi = 0;
+  std::vector<glm::vec3> roots;
+  auto offsets = d.strandOffsets();
+  for (std::uint32_t s = 0; s < d.strandCount; ++s) {
+    lo = std::min(lo, d.strandPointCount(s));
+    hi = std::max(hi, d.strandPointCount(s));
+    roots.push_back(d.points[offsets[s]]);
+  }
+  nlohmann::json arrays = nlohmann::json::array();
+  if (!d.segments.empty()) arrays.push_back("segments");
+  arrays.push_back("points");
+  if (!d.thickness.empty()) arrays.push_back("thickness");
+  if (!d.transparency.empty()) arrays.push_back("transparency");
+  if (!d.colors.empty()) arrays.push_back("colors");
+  nlohmann::json j = {{"file", path.string()}, {"format", "hair"}, {"strands", d.strandCount},
+                      {"points", d.pointCount()}, {"min_points_per_strand", lo},
+                      {"max_points_per_strand", hi}, {"arrays", arrays}, {"info", d.infoText()}};
+  j.update(boundsAndSphere(d.points, roots));
+  return j;
+}
+
+nlohmann::json inspectObj(const std::filesystem::path& path) {
+  hp::ScalpMesh m = hp::loadObjScalp(path);
+  nlohmann::json j = {{"file", path.string()}, {"format", "obj"}, {"vertices", m.vertexCount()},
+                      {"triangles", m.triangles.size()},
+                      {"dropped_degenerate_triangles", m.droppedDegenerateTriangles}};
+  j.update(boundsAndSphere(m.positions, m.positions));
+  return j;
+}
+
+std::string text3(const nlohmann::json& v) {
+  char buf[128];
+  std::snprintf(buf, sizeof buf, "(%.6g, %.6g, %.6g)", v[0].get<double>(), v[1].get<double>(), v[2].get<double>());
+  return buf;
+}
+
+void printText(const nlohmann::json& j) {
+  std::cout << "file: " << j["file"].get<std::string>() << "\n";
+  if (j["format"] == "hair") {
+    std::cout << "strands: " << j["strands"] << "\npoints: " << j["points"] << "\npoints per strand: min "
+              << j["min_points_per_strand"] << ", max " << j["max_points_per_strand"] << "\narrays:";
+    for (const auto& a : j["arrays"]) std::cout << " " << a.get<std::string>();
+    std::cout << "\ninfo: \"" << j["info"].get<std::string>() << "\"\n";
+  } else {
+    std::cout << "vertices: " << j["vertices"] << "\ntriangles: " << j["triangles"]
+              << "\ndropped degenerate triangles: " << j["dropped_degenerate_triangles"] << "\n";
+  }
+  const auto& s = j["head_sphere"];
+  std::cout << "bbox: min " << text3(j["bbox"]["min"]) << " max " << text3(j["bbox"]["max"]) << "\n"
+            << "head sphere" << (s["fitted"].get<bool>() ? "" : " (stand-in: points are nearly flat)")
+            << ": center " << text3(s["center"]) << " radius " << s["radius"].get<double>() << "\n";
+}
+
+void run(const InspectOptions& o) {
+  std::filesystem::path path(o.file);
+  std::string ext = path.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  nlohmann::json j;
+  if (ext == ".hair") j = inspectHair(path);
+  else if (ext == ".obj") j = inspectObj(path);
+  else throw hp::Error(o.file + ": unknown file type (expected .hair or .obj)");
+  if (o.json) std::cout << j.dump(2) << "\n";
+  else printText(j);
+}
+
+void setup(CLI::App& app) {
+  auto opts = std::make_shared<InspectOptions>();
+  auto* cmd = app.add_subcommand("inspect", "Describe a .hair model or an OBJ scalp");
+  cmd->add_option("file", opts->file, "a .hair or .obj file")->required();
+  cmd->add_flag("--json", opts->json, "print JSON instead of text");
+  cmd->callback([opts] { run(*opts); });
+}
+}  // namespace
+
+HP_CLI_COMMAND(setup);
