@@ -2,6 +2,9 @@
 // assets from .hair and .obj models. Also SimulationParams::validate.
 #include <gtest/gtest.h>
 
+#include <fstream>
+#include <sstream>
+
 #include "engine/hair/hair_file.h"
 #include "engine/hair/scene.h"
 #include "engine/hair/synthetic_hair.h"
@@ -212,6 +215,33 @@ TEST(SceneSimParams, DefaultsAreValidAndBadFieldsAreNamed) {
   p = {};
   p.substeps = 0;
   EXPECT_ERROR_CONTAINS(p.validate(), "substeps must be in [1, 64]");
+}
+}  // namespace
+}  // namespace hp
+
+namespace hp {
+namespace {
+// The schema example in engine/hair/README.md must stay a valid scene with the documented defaults.
+TEST(SceneReadme, ExampleParsesAndMatchesTheDefaults) {
+  std::ifstream in(std::filesystem::path(HAIRPIPE_TEST_DATA_DIR) / "../../engine/hair/README.md");
+  ASSERT_TRUE(in) << "engine/hair/README.md not found";
+  std::string text((std::istreambuf_iterator<char>(in)), {});
+  auto begin = text.find("```json\n"), end = text.find("```", begin + 8);
+  ASSERT_NE(begin, std::string::npos);
+  std::string json, line;
+  std::istringstream lines(text.substr(begin + 8, end - begin - 8));
+  while (std::getline(lines, line)) json += line.substr(0, line.find("//")) + "\n";  // drop the comments
+  Scene s = parseScene(json, "README.md", "/base");
+  Scene d;
+  EXPECT_EQ(s.growth, d.growth);
+  EXPECT_EQ(s.density, d.density);
+  EXPECT_EQ(s.model.kind, ModelSpec::Kind::Default);
+  EXPECT_NEAR(s.material.alphaR, d.material.alphaR, 1e-12);
+  EXPECT_NEAR(s.simulation.dt, d.simulation.dt, 1e-6);
+  EXPECT_EQ(s.simulation.iterations, d.simulation.iterations);
+  EXPECT_EQ(s.render.width, d.render.width);
+  EXPECT_EQ(s.camera.distance, d.camera.distance);
+  EXPECT_NEAR(glm::distance(s.light.direction, d.light.direction), 0.0f, 1e-6f);
 }
 }  // namespace
 }  // namespace hp
