@@ -8,6 +8,7 @@
 
 #include "engine/hair/hair_export.h"
 #include "engine/hair/hair_file.h"
+#include "engine/hair/rng.h"
 #include "tests/hair/hair_test_util.h"
 
 namespace hp {
@@ -189,6 +190,31 @@ TEST(HairFile, RejectsOnePointStrand) {
   b.put(std::uint16_t(2)).put(std::uint16_t(0));
   for (int i = 0; i < 12; ++i) b.put(0.0f);
   EXPECT_THAT_ERROR_CONTAINS_IMPL(decodeError(b), "m.hair: strand 1 has 1 point (0 segments); a strand needs at least 2");
+}
+
+TEST(HairFile, CorruptedBytesAreRefusedOrReadNeverCrash) {
+  HairFileData d;
+  d.strandCount = 20;
+  for (std::uint32_t s = 0; s < 20; ++s) {
+    d.segments.push_back(static_cast<std::uint16_t>(1 + s % 5));
+    for (std::uint32_t k = 0; k <= 1 + s % 5; ++k) d.points.emplace_back(float(s), -float(k), 0.0f);
+  }
+  d.thickness.assign(d.points.size(), 0.1f);
+  const std::vector<std::byte> good = encodeHair(d);
+  for (std::uint32_t trial = 0; trial < 3000; ++trial) {
+    std::vector<std::byte> b = good;
+    for (int k = 0; k < 4; ++k) {  // flip a few bytes, header-heavy
+      std::size_t at = std::size_t(hashRandom(9, trial, k) * (k < 2 ? 48 : b.size()));
+      b[at] = std::byte(hashRandom(9, trial, 10 + k) * 256.0f);
+    }
+    if (hashRandom(9, trial, 20) < 0.2f) b.resize(std::size_t(hashRandom(9, trial, 21) * b.size()));
+    try {
+      HairFileData back = decodeHair(b, "fuzz.hair");
+      EXPECT_EQ(encodeHair(back), b);  // whatever is accepted round-trips exactly
+    } catch (const Error& e) {
+      EXPECT_EQ(std::string(e.what()).rfind("fuzz.hair: ", 0), 0u) << e.what();
+    }
+  }
 }
 
 TEST(HairFile, RejectsMissingFileAndInconsistentData) {
