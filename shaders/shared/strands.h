@@ -1,0 +1,145 @@
+// Shared by GLSL and C++: the render-strand data of the tessellate and interpolate passes
+// (compute/tessellate_pass.h, compute/interpolate_pass.h, compute/strand_buffers.h). One source of
+// truth for bindings, workgroup sizes, push constants, the per-strand structs, the sample
+// distribution along a strand and the per-strand attribute hash.
+//
+// Buffers (all std430, tightly packed arrays; G guides, P particles, Q vertices, S render strands):
+//   guide particles  vec4[G*P]  xyz position, w unused; root first (the simulation's output)
+//   smoothed guides  vec4[G*Q]  positions: xyz, w = v (0 at the root, 1 at the tip)
+//                    vec4[G*Q]  tangents: xyz unit (root to tip), w = 0
+//   triangles        uvec4[T]   x, y, z = guides A, B, C; w = first render strand of the triangle
+//   bindings         StrandBindingGpu[S]
+//   strand positions vec4[S*Q]  as smoothed guides: xyz, w = v
+//   strand tangents  vec4[S*Q]  xyz unit, w = 0
+//   attributes       StrandAttributes[S]
+// Vertex j of strand s is element s*Q + j. Per-strand arrays are split into chunks when they would
+// exceed maxStorageBufferRange; within a chunk, s is the chunk-local strand index.
+#ifndef HP_SHARED_STRANDS_H
+#define HP_SHARED_STRANDS_H
+#include "common.h"
+
+// Functions defined once for both languages (plain arithmetic only).
+#ifdef __cplusplus
+#include <cstddef>
+#define HP_STRANDS_FN inline constexpr
+#else
+#define HP_STRANDS_FN
+#endif
+
+HP_BEGIN
+HP_CONST(uint, TESSELLATE_WORKGROUP_SIZE, 64)
+HP_CONST(uint, TESSELLATE_BINDING_PARTICLES, 0)  // in:  vec4[G*P] guide particles
+HP_CONST(uint, TESSELLATE_BINDING_POSITIONS, 1)  // out: vec4[G*Q] smoothed guide positions
+HP_CONST(uint, TESSELLATE_BINDING_TANGENTS, 2)   // out: vec4[G*Q] smoothed guide tangents
+
+HP_CONST(uint, INTERPOLATE_WORKGROUP_SIZE, 64)
+HP_CONST(uint, INTERPOLATE_BINDING_GUIDE_POSITIONS, 0)  // in:  vec4[G*Q]
+HP_CONST(uint, INTERPOLATE_BINDING_GUIDE_TANGENTS, 1)   // in:  vec4[G*Q]
+HP_CONST(uint, INTERPOLATE_BINDING_TRIANGLES, 2)        // in:  uvec4[T]
+HP_CONST(uint, INTERPOLATE_BINDING_BINDINGS, 3)         // in:  StrandBindingGpu[chunk strands]
+HP_CONST(uint, INTERPOLATE_BINDING_POSITIONS, 4)        // out: vec4[chunk strands * Q]
+HP_CONST(uint, INTERPOLATE_BINDING_TANGENTS, 5)         // out: vec4[chunk strands * Q]
+HP_CONST(uint, INTERPOLATE_BINDING_ATTRIBUTES, 6)       // out: StrandAttributes[chunk strands]
+
+HP_CONST(uint, INTERPOLATE_MODE_STRANDS, 0)  // K_j = X1 A_j + X2 B_j + X3 C_j per binding
+HP_CONST(uint, INTERPOLATE_MODE_GUIDES, 1)   // debug: render strand s is smoothed guide s
+
+HP_CONST(uint, MAX_VERTICES_PER_STRAND, 256)
+
+// Attribute ranges: widthScale in [WIDTH_SCALE_MIN, WIDTH_SCALE_MAX), colorScale likewise.
+HP_CONST(float, WIDTH_SCALE_MIN, 0.75f)
+HP_CONST(float, WIDTH_SCALE_MAX, 1.25f)
+HP_CONST(float, COLOR_SCALE_MIN, 0.8f)
+HP_CONST(float, COLOR_SCALE_MAX, 1.2f)
+
+struct TessellatePush {
+  uint guideCount;
+  uint particles;  // P
+  uint vertices;   // Q
+  uint pad;
+};
+
+struct InterpolatePush {
+  uint firstStrand;  // global index of the chunk's first strand (guides mode: first guide)
+  uint strandCount;  // strands in this chunk
+  uint vertices;     // Q
+  uint mode;         // INTERPOLATE_MODE_*
+};
+
+// One render strand: barycentrics of guides A and B (C gets max(0, 1 - x1 - x2)), the asset's
+// per-strand random value in [0, 1) and the triangle index.
+struct StrandBindingGpu {
+  float x1;
+  float x2;
+  float random;
+  uint triangle;
+};
+
+// Per-strand shading attributes, written by the interpolate pass.
+struct StrandAttributes {
+  float random;      // StrandBinding::random (guides mode: strandHash01(guide, 0))
+  float widthScale;  // multiplies the strand width
+  float colorScale;  // multiplies the base colour (lightness variation)
+  uint source;       // triangle index (guides mode: guide index)
+};
+
+// PCG integer hash (Jarzynski & Olano 2020), same constants as hp::pcgHash in engine/hair/rng.h.
+HP_STRANDS_FN uint strandHash(uint v) {
+  uint state = v * 747796405u + 2891336453u;
+  uint word = ((state >> ((state >> 28u) + 4u)) ^ state) * 277803737u;
+  return (word >> 22u) ^ word;
+}
+
+// Uniform in [0, 1) from a key and a stream; the top 24 bits, exact in float.
+HP_STRANDS_FN float strandHash01(uint key, uint stream) {
+  return float(strandHash(strandHash(key) + stream) >> 8u) * (1.0f / 16777216.0f);
+}
+
+// Attributes of a strand from its random value r in [0, 1): r is a multiple of 2^-24 (hashRandom),
+// so uint(r * 2^24) recovers its 24 bits exactly and keys two further independent hashes.
+HP_STRANDS_FN StrandAttributes makeStrandAttributes(float random, uint source) {
+  uint key = uint(random * 16777216.0f);
+  StrandAttributes a;
+  a.random = random;
+  a.widthScale = WIDTH_SCALE_MIN + (WIDTH_SCALE_MAX - WIDTH_SCALE_MIN) * strandHash01(key, 1u);
+  a.colorScale = COLOR_SCALE_MIN + (COLOR_SCALE_MAX - COLOR_SCALE_MIN) * strandHash01(key, 2u);
+  a.source = source;
+  return a;
+}
+
+// Sample distribution along a strand (Q vertices over the P - 1 Bezier segments). Particle i sits
+// exactly at vertex particleVertex(i) = round(i (Q-1) / (P-1)), so every particle is hit and the
+// Q - 1 intervals are spread as evenly as integers allow (P=7, Q=36: particles at vertices
+// 0 6 12 18 23 29 35, segments of 6 6 6 5 6 6 intervals). Vertex j of segment i has the Bezier
+// parameter u = (j - particleVertex(i)) / (particleVertex(i+1) - particleVertex(i)).
+// The same distribution for every guide, so vertex j of the three guides of a triangle correspond.
+// Requires 2 <= P <= Q.
+HP_STRANDS_FN uint particleVertex(uint i, uint particles, uint vertices) {
+  uint segments = particles - 1u;
+  return (2u * i * (vertices - 1u) + segments) / (2u * segments);
+}
+
+// The segment (0 .. P-2) holding vertex j: the last i with particleVertex(i) <= j, capped at P-2.
+HP_STRANDS_FN uint vertexSegment(uint j, uint particles, uint vertices) {
+  uint segments = particles - 1u;
+  uint i = (j * segments) / (vertices - 1u);  // particleVertex(i) <= j; one step may remain
+  if (i >= segments) i = segments - 1u;
+  if (i + 1u < segments && particleVertex(i + 1u, particles, vertices) <= j) i = i + 1u;
+  return i;
+}
+HP_END
+
+#ifdef __cplusplus
+static_assert(sizeof(hp::gpu::TessellatePush) == 16);
+static_assert(sizeof(hp::gpu::InterpolatePush) == 16);
+static_assert(sizeof(hp::gpu::StrandBindingGpu) == 16);
+static_assert(offsetof(hp::gpu::StrandBindingGpu, random) == 8);
+static_assert(offsetof(hp::gpu::StrandBindingGpu, triangle) == 12);
+static_assert(sizeof(hp::gpu::StrandAttributes) == 16);
+static_assert(offsetof(hp::gpu::StrandAttributes, widthScale) == 4);
+static_assert(offsetof(hp::gpu::StrandAttributes, colorScale) == 8);
+static_assert(offsetof(hp::gpu::StrandAttributes, source) == 12);
+static_assert(hp::gpu::particleVertex(3, 7, 36) == 18 && hp::gpu::particleVertex(4, 7, 36) == 23);
+static_assert(hp::gpu::vertexSegment(35, 7, 36) == 5 && hp::gpu::vertexSegment(23, 7, 36) == 4);
+#endif
+#endif
