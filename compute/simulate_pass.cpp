@@ -1,0 +1,129 @@
+#include "compute/simulate_pass.h"
+
+#include <cstring>
+
+#include "engine/error.h"
+#include "engine/vk/barriers.h"
+#include "engine/vk/context.h"
+#include "engine/vk/transfer.h"
+
+namespace hp {
+namespace {
+constexpr VkBufferUsageFlags kParticleUsage =
+    VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
+
+const vk::Binding kBindings[] = {
+    {gpu::SIM_BINDING_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
+    {gpu::SIM_BINDING_POSITIONS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
+    {gpu::SIM_BINDING_PREVIOUS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
+    {gpu::SIM_BINDING_REST, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
+};
+
+VkDeviceSize particleBytes(const vk::Context& ctx, const GuideSet& guides) {
+  checkParticlesPerGuide(guides.particlesPerGuide, "simulation");
+  if (guides.guideCount() == 0) throw Error("simulation: the asset has no guides");
+  VkDeviceSize bytes = VkDeviceSize(guides.positions.size()) * sizeof(glm::vec4);
+  if (bytes > ctx.properties().limits.maxStorageBufferRange)
+    throw Error("simulation: " + std::to_string(guides.guideCount()) + " guides need " + std::to_string(bytes) +
+                " bytes per particle buffer, past this device's maxStorageBufferRange of " +
+                std::to_string(ctx.properties().limits.maxStorageBufferRange));
+  return bytes;
+}
+
+glm::vec4 point(const glm::mat4& m, const glm::vec4& p) { return m * glm::vec4(glm::vec3(p), 1.0f); }
+}  // namespace
+
+std::vector<glm::vec4> guideRestPose(const GuideSet& guides) {
+  std::vector<glm::vec4> rest(guides.positions.size());
+  for (std::uint32_t g = 0; g < guides.guideCount(); ++g) {
+    auto p = guides.guide(g);
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      float len = i == 0 ? 0.0f : glm::length(p[i] - p[i - 1]);
+      rest[std::size_t(g) * p.size() + i] = glm::vec4(p[i], len);
+    }
+  }
+  return rest;
+}
+
+SimulatePass::SimulatePass(const vk::Context& ctx, const HairAsset& asset, const SimulationParams& params,
+                           const glm::mat4& initialHead)
+    : ctx_(ctx),
+      params_(params),
+      guideCount_(asset.guides.guideCount()),
+      particlesPerGuide_(asset.guides.particlesPerGuide),
+      rest_(guideRestPose(asset.guides)),
+      colliders_(asset.colliders) {
+  params_.validate();
+  if (colliders_.size() > gpu::SIM_MAX_COLLIDERS)
+    throw Error("simulation: " + std::to_string(colliders_.size()) + " colliders, at most " +
+                std::to_string(gpu::SIM_MAX_COLLIDERS) + " are supported");
+  for (const auto& c : colliders_)
+    if (!std::isfinite(c.radius) || c.radius < 0.0f || !std::isfinite(glm::length(c.center)))
+      throw Error("simulation: a collider has a negative or non-finite radius or center");
+  const VkDeviceSize bytes = particleBytes(ctx, asset.guides);
+  positions_ = vk::Buffer(ctx, bytes, kParticleUsage, vk::MemoryKind::DeviceLocal, "guide positions");
+  previous_ = vk::Buffer(ctx, bytes, kParticleUsage, vk::MemoryKind::DeviceLocal, "guide previous positions");
+  restBuffer_ = vk::Buffer(ctx, bytes, kParticleUsage, vk::MemoryKind::DeviceLocal, "guide rest pose");
+  frame_ = vk::Buffer(ctx, sizeof(gpu::SimFrame), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                      vk::MemoryKind::DeviceLocal, "simulation frame");
+  set_ = vk::DescriptorSet(ctx, kBindings, "simulate");
+  set_.writeUniformBuffer(gpu::SIM_BINDING_FRAME, frame_.handle());
+  set_.writeStorageBuffer(gpu::SIM_BINDING_POSITIONS, positions_.handle());
+  set_.writeStorageBuffer(gpu::SIM_BINDING_PREVIOUS, previous_.handle());
+  set_.writeStorageBuffer(gpu::SIM_BINDING_REST, restBuffer_.handle());
+  pipeline_ = vk::ComputePipeline(ctx, "simulate.comp", gpu::SIM_WORKGROUP_SIZE, {set_.layout()}, 0, "simulate");
+  vk::upload<glm::vec4>(ctx, restBuffer_, rest_, vk::BufferUse::ComputeRead);
+  reset(initialHead);
+}
+
+void SimulatePass::setParams(const SimulationParams& params) {
+  params.validate();
+  params_ = params;
+}
+
+void SimulatePass::reset(const glm::mat4& head) {
+  std::vector<glm::vec4> world(rest_.size());
+  for (std::size_t i = 0; i < rest_.size(); ++i) world[i] = point(head, rest_[i]);
+  vk::upload<glm::vec4>(ctx_, positions_, world, vk::BufferUse::ComputeWrite);
+  vk::upload<glm::vec4>(ctx_, previous_, world, vk::BufferUse::ComputeWrite);
+}
+
+gpu::SimFrame SimulatePass::frameConstants(const HeadMotion& motion) const {
+  gpu::SimFrame f{};
+  const double h = params_.dt / params_.substeps;
+  f.headFrom = motion.from;
+  f.headTo = motion.to;
+  f.gravity = glm::vec4(glm::vec3(params_.gravity), float(h));
+  glm::dvec3 windDir = glm::length(params_.windDirection) > 0.0 ? glm::normalize(params_.windDirection) : glm::dvec3(0.0);
+  f.wind = glm::vec4(glm::vec3(windDir * params_.windStrength), float(params_.windGust));
+  f.damping = float(params_.damping);
+  f.pearlRadius = float(params_.pearlRadius);
+  f.stiffness = float(params_.stiffness);
+  f.stiffnessFalloff = float(params_.stiffnessFalloff);
+  f.maxSpeed = float(params_.maxSpeed);
+  f.time = float(motion.time);
+  f.gustFrequency = float(params_.windGustFrequency);
+  f.teleport = motion.teleport ? 1u : 0u;
+  f.guideCount = guideCount_;
+  f.particlesPerGuide = particlesPerGuide_;
+  f.substeps = params_.substeps;
+  f.iterations = params_.iterations;
+  f.colliderCount = static_cast<std::uint32_t>(colliders_.size());
+  for (std::size_t c = 0; c < colliders_.size(); ++c) f.colliders[c] = glm::vec4(colliders_[c].center, colliders_[c].radius);
+  return f;
+}
+
+void SimulatePass::record(VkCommandBuffer cmd, const HeadMotion& motion, vk::GpuProfiler* profiler) {
+  if (profiler) profiler->begin(cmd, "simulate");
+  gpu::SimFrame f = frameConstants(motion);
+  // The previous frame's dispatch may still read the block: order that read before this write.
+  vk::bufferBarrier(cmd, frame_.handle(), frameWritten_ ? vk::BufferUse::ComputeRead : vk::BufferUse::None,
+                    vk::BufferUse::TransferDst);
+  vkCmdUpdateBuffer(cmd, frame_.handle(), 0, sizeof(f), &f);
+  vk::bufferBarrier(cmd, frame_.handle(), vk::BufferUse::TransferDst, vk::BufferUse::ComputeRead);
+  frameWritten_ = true;
+  pipeline_.bind(cmd, set_.set());
+  pipeline_.dispatch(cmd, guideCount_);
+  if (profiler) profiler->end(cmd);
+}
+}  // namespace hp

@@ -1,0 +1,76 @@
+#include "compute/simulation_driver.h"
+
+#include <algorithm>
+
+#include "engine/vk/barriers.h"
+#include "engine/vk/submit.h"
+#include "engine/vk/transfer.h"
+
+namespace hp {
+namespace {
+constexpr std::uint32_t kMaxFramesPerSubmit = 256;
+}
+
+SimulationDriver::SimulationDriver(const vk::Context& ctx, SimulatePass& pass, HeadAnimation animation,
+                                   float headRadius)
+    : ctx_(ctx), pass_(pass), animation_(animation), headRadius_(headRadius),
+      profiler_(ctx, kMaxFramesPerSubmit, "simulation frames") {}
+
+HeadMotion SimulationDriver::nextMotion() const {
+  const double t0 = time(), t1 = (frame_ + 1) * pass_.params().dt;
+  return {headTransformAt(animation_, t0, headRadius_), headTransformAt(animation_, t1, headRadius_), t0,
+          headTeleportsBetween(animation_, t0, t1)};
+}
+
+void SimulationDriver::runFrames(std::uint32_t count) {
+  while (count > 0) {
+    const std::uint32_t batch = std::min(count, kMaxFramesPerSubmit);
+    vk::submitAndWait(ctx_, [&](VkCommandBuffer cmd) {
+      profiler_.reset(cmd);
+      for (std::uint32_t i = 0; i < batch; ++i) {
+        // Each frame reads and writes what the previous one wrote.
+        vk::memoryBarrier(cmd, vk::BufferUse::ComputeWrite, vk::BufferUse::ComputeWrite);
+        pass_.record(cmd, nextMotion(), &profiler_);
+        ++frame_;
+      }
+    }, "simulate frames");
+    for (const auto& scope : profiler_.results()) frameMs_.push_back(scope.milliseconds);
+    count -= batch;
+  }
+}
+
+double SimulationDriver::medianFrameMilliseconds() const {
+  if (frameMs_.empty()) return 0.0;
+  std::vector<double> sorted = frameMs_;
+  std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
+  return sorted[sorted.size() / 2];
+}
+
+std::vector<glm::vec4> SimulationDriver::readPositions() const {
+  return vk::readback<glm::vec4>(ctx_, pass_.positions(), vk::BufferUse::ComputeWrite,
+                                 pass_.positions().size() / sizeof(glm::vec4));
+}
+
+std::vector<glm::vec4> SimulationDriver::readPrevious() const {
+  return vk::readback<glm::vec4>(ctx_, pass_.previous(), vk::BufferUse::ComputeWrite,
+                                 pass_.previous().size() / sizeof(glm::vec4));
+}
+
+SimStats SimulationDriver::stats() const {
+  const auto& p = pass_.params();
+  return computeSimStats(readPositions(), readPrevious(), pass_.rest(), pass_.particlesPerGuide(), pass_.colliders(),
+                         head(), p.pearlRadius, p.dt / p.substeps);
+}
+
+float assetHeadRadius(const HairAsset& asset) {
+  float r = 0.0f;
+  for (const auto& c : asset.colliders) r = std::max(r, c.radius);
+  if (r > 0.0f) return r;
+  glm::vec3 lo(1e30f), hi(-1e30f);
+  for (const auto& p : asset.guides.roots()) {
+    lo = glm::min(lo, p);
+    hi = glm::max(hi, p);
+  }
+  return std::max(0.5f * glm::length(hi - lo), 1e-3f);
+}
+}  // namespace hp

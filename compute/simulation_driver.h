@@ -1,0 +1,45 @@
+#pragma once
+// Contract: drives a SimulatePass through scripted frames outside an application's frame loop (CLI,
+// tests, benchmarks): records a batch of frames into one submission with the frame-to-frame barrier,
+// times each frame with GPU timestamps, and reads the state back on request. The head follows a
+// HeadAnimation; a jump in it is handed to the pass as a teleport.
+#include <vector>
+
+#include "compute/simulate_pass.h"
+#include "engine/sim/head_animation.h"
+#include "engine/sim/sim_stats.h"
+#include "engine/vk/profiler.h"
+
+namespace hp {
+class SimulationDriver {
+ public:
+  SimulationDriver(const vk::Context& ctx, SimulatePass& pass, HeadAnimation animation, float headRadius);
+
+  // Simulates `count` frames in one submission and waits for it. Appends each frame's GPU ms.
+  void runFrames(std::uint32_t count);
+  const std::vector<double>& frameMilliseconds() const { return frameMs_; }
+  double medianFrameMilliseconds() const;
+
+  std::uint32_t frame() const { return frame_; }
+  double time() const { return frame_ * pass_.params().dt; }
+  glm::mat4 head() const { return headTransformAt(animation_, time(), headRadius_); }
+  // The motion of the next frame (what runFrames records for it).
+  HeadMotion nextMotion() const;
+
+  std::vector<glm::vec4> readPositions() const;
+  std::vector<glm::vec4> readPrevious() const;
+  SimStats stats() const;
+
+ private:
+  const vk::Context& ctx_;
+  SimulatePass& pass_;
+  HeadAnimation animation_;
+  float headRadius_;
+  std::uint32_t frame_ = 0;
+  vk::GpuProfiler profiler_;
+  std::vector<double> frameMs_;
+};
+
+// A head radius for animations and tolerances: the largest collider's, else the roots' extent.
+float assetHeadRadius(const HairAsset& asset);
+}  // namespace hp

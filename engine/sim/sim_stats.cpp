@@ -1,0 +1,42 @@
+#include "engine/sim/sim_stats.h"
+
+#include <cmath>
+#include <limits>
+
+namespace hp {
+namespace {
+bool finite(const glm::vec4& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); }
+}  // namespace
+
+SimStats computeSimStats(std::span<const glm::vec4> positions, std::span<const glm::vec4> previous,
+                         std::span<const glm::vec4> rest, std::uint32_t particlesPerGuide,
+                         std::span<const SphereCollider> colliders, const glm::mat4& head, double pearlRadius,
+                         double substepSeconds) {
+  SimStats s;
+  s.minColliderClearance = std::numeric_limits<double>::infinity();
+  std::vector<glm::dvec3> centers;
+  for (const auto& c : colliders) centers.push_back(glm::dvec3(head * glm::vec4(c.center, 1.0f)));
+  for (std::size_t i = 0; i < positions.size(); ++i) {
+    if (!finite(positions[i])) {
+      ++s.nanCount;
+      continue;
+    }
+    const glm::dvec3 x(positions[i]);
+    const bool root = i % particlesPerGuide == 0;
+    if (!root) {
+      if (finite(positions[i - 1]) && rest[i].w > 0.0f) {
+        double len = glm::length(x - glm::dvec3(positions[i - 1]));
+        s.maxLengthError = std::max(s.maxLengthError, std::abs(len - rest[i].w) / rest[i].w);
+      }
+      glm::dvec3 v = (x - glm::dvec3(previous[i])) / substepSeconds;
+      s.maxSpeed = std::max(s.maxSpeed, glm::length(v));
+      s.kineticEnergy += 0.5 * glm::dot(v, v);
+      for (std::size_t c = 0; c < centers.size(); ++c)
+        s.minColliderClearance = std::min(s.minColliderClearance,
+                                          glm::length(x - centers[c]) - colliders[c].radius - pearlRadius);
+    }
+  }
+  if (!std::isfinite(s.minColliderClearance)) s.minColliderClearance = 0.0;
+  return s;
+}
+}  // namespace hp

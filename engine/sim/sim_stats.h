@@ -1,0 +1,26 @@
+#pragma once
+// Contract: measures of a simulated guide state, computed on the host from a readback (outside the
+// frame loop): segment length error, clearance to the colliders, NaNs, speed. Used by
+// `hairpipe simulate`, the tests and the benchmark.
+#include <glm/glm.hpp>
+
+#include <span>
+#include <vector>
+
+#include "engine/hair/collider.h"
+
+namespace hp {
+struct SimStats {
+  double maxLengthError = 0.0;        // max over segments of |len - rest| / rest
+  double minColliderClearance = 0.0;  // min over particles and colliders of |x - c| - r_c - r_p
+  std::size_t nanCount = 0;           // particles with a non-finite coordinate
+  double maxSpeed = 0.0;              // max |x - x_prev| / h over free particles
+  double kineticEnergy = 0.0;         // sum of 0.5 |v|^2 over free particles (unit mass)
+};
+
+// positions/previous: vec4 per particle (w ignored); rest: xyz head-space rest pose, w rest length.
+SimStats computeSimStats(std::span<const glm::vec4> positions, std::span<const glm::vec4> previous,
+                         std::span<const glm::vec4> rest, std::uint32_t particlesPerGuide,
+                         std::span<const SphereCollider> colliders, const glm::mat4& head, double pearlRadius,
+                         double substepSeconds);
+}  // namespace hp

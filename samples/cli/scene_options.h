@@ -1,0 +1,26 @@
+#pragma once
+// Contract: the options every device command shares to say what to load and where to run it:
+//   --scene FILE.json | --model default|FILE.hair|FILE.obj, --device NAME|INDEX, --validation.
+// loadScene() returns the scene file's content, or the default scene with the chosen model.
+#include <CLI/CLI.hpp>
+
+#include <memory>
+#include <string>
+
+#include "engine/hair/scene.h"
+#include "engine/vk/context.h"
+
+namespace hp::cli {
+struct SceneOptions {
+  std::string scenePath;
+  std::string model = "default";
+  std::string device;
+  bool validation = false;
+};
+
+void addSceneOptions(CLI::App& cmd, SceneOptions& options);
+Scene loadScene(const SceneOptions& options);
+std::unique_ptr<vk::Context> createContext(const SceneOptions& options);
+// After a run with --validation: throws hp::Error listing the messages, if any.
+void checkValidation(vk::Context& ctx);
+}  // namespace hp::cli

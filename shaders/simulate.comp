@@ -1,0 +1,141 @@
+#version 460
+// One invocation simulates one guide for one frame (REFERENCES.md §2): per substep, pin the root to
+// the moving scalp, Verlet-integrate the free particles (gravity, wind, damping, speed clamp), pull
+// mildly toward the rest pose, then iterate length constraints (Gauss-Seidel, root to tip; the last
+// sweep follow-the-leader) and pearl collisions, collisions last so the final state is outside every
+// collider.
+// tests/compute/sim_reference.cpp is the same algorithm in double precision; keep them in step.
+#include "shared/simulate.h"
+#include "common.glsl"
+
+layout(local_size_x = SIM_WORKGROUP_SIZE) in;
+layout(std140, binding = SIM_BINDING_FRAME) uniform Frame { SimFrame frame; };
+layout(std430, binding = SIM_BINDING_POSITIONS) buffer Positions { vec4 positions[]; };
+layout(std430, binding = SIM_BINDING_PREVIOUS) buffer Previous { vec4 previous[]; };
+layout(std430, binding = SIM_BINDING_REST) readonly buffer Rest { vec4 rest[]; };
+
+vec3 x[SIM_MAX_PARTICLES];
+vec3 xPrev[SIM_MAX_PARTICLES];
+
+// A per-guide phase in [0, 2 pi) so gusts do not move every strand in lockstep.
+float gustPhase(uint guide) {
+  uint h = guide * 747796405u + 2891336453u;
+  h = ((h >> ((h >> 28u) + 4u)) ^ h) * 277803737u;
+  return float((h >> 22u) ^ h) * (6.28318530718 / 4294967296.0);
+}
+
+vec3 transformPoint(mat4 m, vec3 p) { return (m * vec4(p, 1.0)).xyz; }
+
+void integrate(uint base, uint n, mat4 head, vec3 accel, float h) {
+  x[0] = transformPoint(head, rest[base].xyz);  // the root is pinned to the scalp
+  xPrev[0] = x[0];
+  float maxStep = frame.maxSpeed * h;
+  for (uint i = 1u; i < n; ++i) {
+    vec3 v = (x[i] - xPrev[i]) * (1.0 - frame.damping);
+    float speed = length(v);
+    if (speed > maxStep) v *= maxStep / speed;
+    xPrev[i] = x[i];
+    x[i] += v + accel * (h * h);
+  }
+}
+
+void pullTowardRest(uint base, uint n, mat4 head) {
+  float k = frame.stiffness;
+  for (uint i = 1u; i < n && k > 0.0; ++i) {
+    x[i] += k * (transformPoint(head, rest[base + i].xyz) - x[i]);
+    k *= frame.stiffnessFalloff;
+  }
+}
+
+// One Gauss-Seidel sweep, root to tip. `leaderOnly` moves only the child of each segment
+// (follow-the-leader): after such a sweep every segment has exactly its rest length.
+void satisfyLengths(uint base, uint n, bool leaderOnly) {
+  for (uint i = 1u; i < n; ++i) {
+    vec3 d = x[i] - x[i - 1u];
+    float len = length(d);
+    if (len < 1e-12) continue;
+    vec3 correction = d * ((len - rest[base + i].w) / len);
+    if (i == 1u || leaderOnly) {
+      x[i] -= correction;  // the root does not move
+    } else {
+      x[i - 1u] += 0.5 * correction;
+      x[i] -= 0.5 * correction;
+    }
+  }
+}
+
+// Where a pearl inside a collider goes: onto the collider surface (REFERENCES.md §2). Of the surface
+// points, it takes the one at the segment's rest length from its parent that is nearest to it (the
+// two spheres meet in a circle), so a strand lying on the head keeps its length; where the spheres
+// do not meet it falls back to the paper's radial push.
+vec3 resolvePearl(vec3 p, vec3 parent, float restLength, vec3 center, float reach) {
+  vec3 fromCenter = p - center;
+  float dist = length(fromCenter);
+  vec3 radial = center + (dist > 1e-12 ? fromCenter / dist : vec3(0.0, 1.0, 0.0)) * reach;
+  vec3 axis = parent - center;
+  float d = length(axis);
+  if (d < 1e-12 || d + reach < restLength || abs(d - reach) > restLength) return radial;
+  axis /= d;
+  float along = (d * d + reach * reach - restLength * restLength) / (2.0 * d);
+  float ringRadius = sqrt(max(reach * reach - along * along, 0.0));
+  vec3 inPlane = fromCenter - dot(fromCenter, axis) * axis;
+  float inPlaneLength = length(inPlane);
+  if (inPlaneLength < 1e-12) return radial;
+  return center + along * axis + (ringRadius / inPlaneLength) * inPlane;
+}
+
+// Colliders overlap (cranium, face, neck, shoulders): leaving one can enter another, so the colliders
+// are visited again, up to SIM_COLLISION_PASSES times, while the last visit moved a pearl.
+void collide(uint base, uint n, mat4 head) {
+  bool moved = true;
+  for (uint pass = 0u; pass < SIM_COLLISION_PASSES && moved; ++pass) {
+    moved = false;
+    for (uint c = 0u; c < frame.colliderCount; ++c) {
+      vec3 center = transformPoint(head, frame.colliders[c].xyz);
+      float reach = frame.colliders[c].w + frame.pearlRadius;
+      for (uint i = 1u; i < n; ++i) {
+        if (length(x[i] - center) >= reach) continue;
+        x[i] = resolvePearl(x[i], x[i - 1u], rest[base + i].w, center, reach);
+        moved = true;
+      }
+    }
+  }
+}
+
+void main() {
+  uint guide = hpThreadId(SIM_WORKGROUP_SIZE);
+  if (guide >= frame.guideCount) return;
+  uint n = frame.particlesPerGuide;
+  uint base = guide * n;
+  for (uint i = 0u; i < n; ++i) {
+    x[i] = positions[base + i].xyz;
+    xPrev[i] = previous[base + i].xyz;
+  }
+  if (frame.teleport != 0u) {
+    mat4 carry = frame.headTo * inverse(frame.headFrom);
+    for (uint i = 0u; i < n; ++i) {
+      x[i] = transformPoint(carry, x[i]);
+      xPrev[i] = transformPoint(carry, xPrev[i]);
+    }
+  }
+  float h = frame.gravity.w;
+  float phase = gustPhase(guide);
+  for (uint s = 0u; s < frame.substeps; ++s) {
+    float t = float(s + 1u) / float(frame.substeps);
+    mat4 head = frame.teleport != 0u ? frame.headTo : frame.headFrom * (1.0 - t) + frame.headTo * t;
+    float gust = 1.0 + frame.wind.w * sin(6.28318530718 * frame.gustFrequency * (frame.time + h * float(s + 1u)) + phase);
+    vec3 accel = frame.gravity.xyz + frame.wind.xyz * gust;
+    integrate(base, n, head, accel, h);
+    pullTowardRest(base, n, head);
+    for (uint it = 0u; it < frame.iterations; ++it) {
+      // Symmetric sweeps converge slowly for a chain hanging from a pinned root; the last sweep is
+      // follow-the-leader so lengths are exact before the final collision push.
+      satisfyLengths(base, n, it + 1u == frame.iterations);
+      collide(base, n, head);
+    }
+  }
+  for (uint i = 0u; i < n; ++i) {
+    positions[base + i] = vec4(x[i], 1.0);
+    previous[base + i] = vec4(xPrev[i], 1.0);
+  }
+}

@@ -1,0 +1,111 @@
+#include "tests/compute/sim_reference.h"
+
+#include <cmath>
+
+namespace hp::test {
+namespace {
+constexpr double kTwoPi = 6.28318530718;
+
+double gustPhase(std::uint32_t guide) {  // the shader's hash, bit for bit
+  std::uint32_t h = guide * 747796405u + 2891336453u;
+  h = ((h >> ((h >> 28u) + 4u)) ^ h) * 277803737u;
+  return double(float((h >> 22u) ^ h) * float(kTwoPi / 4294967296.0));
+}
+
+glm::dvec3 apply(const glm::dmat4& m, const glm::dvec3& p) { return glm::dvec3(m * glm::dvec4(p, 1.0)); }
+
+// The shader's resolvePearl: the surface point at rest length from the parent nearest to p, else radial.
+glm::dvec3 resolvePearl(const glm::dvec3& p, const glm::dvec3& parent, double restLength, const glm::dvec3& center,
+                        double reach) {
+  glm::dvec3 fromCenter = p - center;
+  double dist = glm::length(fromCenter);
+  glm::dvec3 radial = center + (dist > 1e-12 ? fromCenter / dist : glm::dvec3(0, 1, 0)) * reach;
+  glm::dvec3 axis = parent - center;
+  double d = glm::length(axis);
+  if (d < 1e-12 || d + reach < restLength || std::abs(d - reach) > restLength) return radial;
+  axis /= d;
+  double along = (d * d + reach * reach - restLength * restLength) / (2.0 * d);
+  double ringRadius = std::sqrt(std::max(reach * reach - along * along, 0.0));
+  glm::dvec3 inPlane = fromCenter - glm::dot(fromCenter, axis) * axis;
+  double inPlaneLength = glm::length(inPlane);
+  if (inPlaneLength < 1e-12) return radial;
+  return center + along * axis + (ringRadius / inPlaneLength) * inPlane;
+}
+}  // namespace
+
+SimReference::SimReference(const SimulatePass& pass, const SimulationParams& params, const glm::mat4& initialHead)
+    : params_(params), n_(pass.particlesPerGuide()), colliders_(pass.colliders()) {
+  for (const auto& r : pass.rest()) {
+    rest_.push_back(glm::dvec4(r));
+    x_.push_back(apply(glm::dmat4(initialHead), glm::dvec3(r)));
+  }
+  xPrev_ = x_;
+}
+
+void SimReference::step(const HeadMotion& motion) {
+  for (std::size_t base = 0, g = 0; base < x_.size(); base += n_, ++g)
+    simulateGuide(base, motion, static_cast<std::uint32_t>(g));
+}
+
+void SimReference::simulateGuide(std::size_t base, const HeadMotion& motion, std::uint32_t guide) {
+  glm::dvec3* x = &x_[base];
+  glm::dvec3* xp = &xPrev_[base];
+  const glm::dvec4* rest = &rest_[base];
+  const glm::dmat4 from(motion.from), to(motion.to);
+  if (motion.teleport) {
+    glm::dmat4 carry = to * glm::inverse(from);
+    for (std::uint32_t i = 0; i < n_; ++i) {
+      x[i] = apply(carry, x[i]);
+      xp[i] = apply(carry, xp[i]);
+    }
+  }
+  const double h = params_.dt / params_.substeps;
+  const glm::dvec3 windDir = glm::length(params_.windDirection) > 0 ? glm::normalize(params_.windDirection) : glm::dvec3(0);
+  for (std::uint32_t s = 0; s < params_.substeps; ++s) {
+    double t = double(s + 1) / params_.substeps;
+    glm::dmat4 head = motion.teleport ? to : from * (1.0 - t) + to * t;
+    double gust = 1.0 + params_.windGust * std::sin(kTwoPi * params_.windGustFrequency * (motion.time + h * (s + 1)) + gustPhase(guide));
+    glm::dvec3 accel = params_.gravity + windDir * params_.windStrength * gust;
+    // Verlet with the root pinned.
+    x[0] = apply(head, glm::dvec3(rest[0]));
+    xp[0] = x[0];
+    for (std::uint32_t i = 1; i < n_; ++i) {
+      glm::dvec3 v = (x[i] - xp[i]) * (1.0 - params_.damping);
+      double speed = glm::length(v), maxStep = params_.maxSpeed * h;
+      if (speed > maxStep) v *= maxStep / speed;
+      xp[i] = x[i];
+      x[i] += v + accel * (h * h);
+    }
+    double k = params_.stiffness;
+    for (std::uint32_t i = 1; i < n_ && k > 0.0; ++i, k *= params_.stiffnessFalloff)
+      x[i] += k * (apply(head, glm::dvec3(rest[i])) - x[i]);
+    for (std::uint32_t it = 0; it < params_.iterations; ++it) {
+      for (std::uint32_t i = 1; i < n_; ++i) {
+        glm::dvec3 d = x[i] - x[i - 1];
+        double len = glm::length(d);
+        if (len < 1e-12) continue;
+        glm::dvec3 corr = d * ((len - rest[i].w) / len);
+        if (i == 1 || it + 1 == params_.iterations) {
+          x[i] -= corr;
+        } else {
+          x[i - 1] += 0.5 * corr;
+          x[i] -= 0.5 * corr;
+        }
+      }
+      bool moved = true;
+      for (std::uint32_t pass = 0; pass < gpu::SIM_COLLISION_PASSES && moved; ++pass) {
+        moved = false;
+        for (const auto& c : colliders_) {
+          glm::dvec3 center = apply(head, glm::dvec3(c.center));
+          double reach = double(c.radius) + params_.pearlRadius;
+          for (std::uint32_t i = 1; i < n_; ++i) {
+            if (glm::length(x[i] - center) >= reach) continue;
+            x[i] = resolvePearl(x[i], x[i - 1], rest[i].w, center, reach);
+            moved = true;
+          }
+        }
+      }
+    }
+  }
+}
+}  // namespace hp::test
