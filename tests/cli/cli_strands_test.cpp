@@ -1,0 +1,92 @@
+// `hairpipe strands`: writes a readable .hair with the expected counts (render strands, guides only,
+// from a .hair model), and refuses bad options with exit code 1 and a message naming the option.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+
+#include <nlohmann/json.hpp>
+
+#include "engine/hair/hair_file.h"
+#include "tests/support/cli_runner.h"
+
+using hp::test::runCli;
+namespace fs = std::filesystem;
+
+namespace {
+fs::path tempPath(const std::string& name) {
+  fs::path dir = fs::path(::testing::TempDir()) / "hairpipe_cli_strands";
+  fs::create_directories(dir);
+  fs::path p = dir / name;
+  fs::remove(p);
+  return p;
+}
+
+void expectUniformFiniteStrands(const hp::HairFileData& hair, std::uint32_t strands, std::uint32_t vertices) {
+  EXPECT_EQ(hair.strandCount, strands);
+  ASSERT_EQ(hair.pointCount(), std::uint64_t(strands) * vertices);
+  for (std::uint32_t s = 0; s < hair.strandCount; ++s) ASSERT_EQ(hair.strandPointCount(s), vertices);
+  for (const glm::vec3& p : hair.points) ASSERT_TRUE(std::isfinite(p.x + p.y + p.z));
+}
+}  // namespace
+
+TEST(CliStrands, WritesRenderStrandsOfTheRequestedDensity) {
+  fs::path out = tempPath("strands.hair");
+  auto r = runCli({"strands", "--density", "5000", "--out", out.string(), "--json", "--validation"});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["strands"].get<std::uint32_t>(), 5000u);
+  EXPECT_EQ(j["vertices_per_strand"].get<std::uint32_t>(), 36u);
+  EXPECT_EQ(j["points"].get<std::uint32_t>(), 5000u * 36);
+  EXPECT_FALSE(j["guides_only"].get<bool>());
+  expectUniformFiniteStrands(hp::readHairFile(out), 5000, 36);
+}
+
+TEST(CliStrands, GuidesOnlyWritesOneSmoothedStrandPerGuide) {
+  fs::path out = tempPath("guides.hair");
+  auto r = runCli({"strands", "--guides-only", "--vertices", "12", "--out", out.string(), "--json"});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  auto j = nlohmann::json::parse(r.out);
+  const auto guides = j["guides"].get<std::uint32_t>();
+  EXPECT_GT(guides, 500u);
+  EXPECT_EQ(j["strands"].get<std::uint32_t>(), guides);
+  expectUniformFiniteStrands(hp::readHairFile(out), guides, 12);
+}
+
+TEST(CliStrands, ReadsAHairModelAndPrintsASummary) {
+  fs::path model = tempPath("model.hair"), out = tempPath("from_model.hair");
+  ASSERT_EQ(runCli({"strands", "--guides-only", "--out", model.string()}).exitCode, 0);
+  auto r = runCli({"strands", "--model", model.string(), "--density", "2000", "--out", out.string()});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.out.find("2000 render strands x 36 vertices"), std::string::npos) << r.out;
+  expectUniformFiniteStrands(hp::readHairFile(out), 2000, 36);
+}
+
+TEST(CliStrands, BadOptionsExitOneNamingTheOption) {
+  fs::path out = tempPath("never.hair");
+  struct Case {
+    std::vector<std::string> args;
+    std::string expected;
+  };
+  const Case cases[] = {
+      {{"--density", "0"}, "--density"},
+      {{"--density", "50000000"}, "--density"},
+      {{"--vertices", "5"}, "--vertices"},    // fewer than the 7 particles per guide
+      {{"--vertices", "300"}, "--vertices"},  // more than 256
+      {{"--model", "head.txt"}, "--model"},
+  };
+  for (const Case& c : cases) {
+    std::vector<std::string> args{"strands", "--out", out.string()};
+    args.insert(args.end(), c.args.begin(), c.args.end());
+    auto r = runCli(args);
+    EXPECT_EQ(r.exitCode, 1) << c.args[0] << " " << c.args[1];
+    EXPECT_NE(r.err.find(c.expected), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(out)) << "no output on failure";
+  }
+}
+
+TEST(CliStrands, OutIsRequired) {
+  auto r = runCli({"strands"});
+  EXPECT_NE(r.exitCode, 0);
+  EXPECT_NE(r.err.find("--out"), std::string::npos) << r.err;
+}
