@@ -50,7 +50,7 @@ void InterpolatePass::record(VkCommandBuffer cmd, vk::GpuProfiler* profiler) con
   for (const Chunk& c : chunks_) {
     pipeline_.bind(cmd, c.set.set());
     pipeline_.push(cmd, c.push);
-    pipeline_.dispatch(cmd, c.push.strandCount * c.push.vertices);
+    pipeline_.dispatch(cmd, c.push.strandCount);
   }
   if (profiler) profiler->end(cmd);
 }

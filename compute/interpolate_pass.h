@@ -4,7 +4,7 @@
 // renormalised blended tangents and per-strand attributes (random, width and colour scales; see
 // makeStrandAttributes in shaders/shared/strands.h). In guides-only layouts (StrandOptions::guidesOnly)
 // it copies the smoothed guides instead, one render strand per guide. Owns its pipeline and one
-// descriptor set per chunk; record() adds one dispatch per chunk (chunk strands x Q invocations) and
+// descriptor set per chunk; record() adds one dispatch per chunk (one invocation per strand) and
 // inserts no barriers. The frame recorder guarantees:
 //   before record: smoothed guides in BufferUse::ComputeRead (after TessellatePass's ComputeWrite);
 //                  triangles and bindings in ComputeRead (StrandBuffers leaves them there);

@@ -2,9 +2,11 @@
 // Interpolation (REFERENCES.md §1): render strand s of a scalp triangle with guides A, B, C and
 // barycentrics X is K_j = X1 A_j + X2 B_j + X3 C_j for every vertex j of the smoothed guides.
 // Tangents: the guides' unit tangents blended with the same weights and renormalised (A's tangent if
-// the blend vanishes). One invocation per output vertex of one chunk; vertex 0 also writes the
-// strand's attributes (makeStrandAttributes in shared/strands.h).
+// the blend vanishes). Also writes the strand's attributes (makeStrandAttributes, shared/strands.h).
 // Debug mode INTERPOLATE_MODE_GUIDES: strand s is smoothed guide firstStrand + s, copied as is.
+// One invocation per strand of one chunk, looping over its Q vertices: the binding and triangle are
+// read once per strand instead of once per vertex (1.65x faster on lavapipe than one invocation per
+// vertex, docs/PERFORMANCE.md); lanes write Q*16 bytes apart, which caches merge on GPUs.
 #include "shared/strands.h"
 #include "common.glsl"
 
@@ -18,36 +20,39 @@ layout(std430, binding = INTERPOLATE_BINDING_TANGENTS) writeonly buffer Tangents
 layout(std430, binding = INTERPOLATE_BINDING_ATTRIBUTES) writeonly buffer Attributes { StrandAttributes attributes[]; };
 layout(push_constant) uniform Push { InterpolatePush push; };
 
-void copyGuide(uint id, uint s, uint j) {
+void copyGuide(uint s) {
   uint guide = push.firstStrand + s;
-  uint src = guide * push.vertices + j;
-  positions[id] = guidePositions[src];
-  tangents[id] = guideTangents[src];
-  if (j == 0u) attributes[s] = makeStrandAttributes(strandHash01(guide, 0u), guide);
+  uint src = guide * push.vertices, dst = s * push.vertices;
+  for (uint j = 0u; j < push.vertices; ++j) {
+    positions[dst + j] = guidePositions[src + j];
+    tangents[dst + j] = guideTangents[src + j];
+  }
+  attributes[s] = makeStrandAttributes(strandHash01(guide, 0u), guide);
 }
 
-void interpolate(uint id, uint s, uint j) {
+void interpolate(uint s) {
   StrandBindingGpu b = bindings[s];
-  uvec3 tri = triangles[b.triangle].xyz * push.vertices + j;
+  uvec3 src = triangles[b.triangle].xyz * push.vertices;
   vec3 w = vec3(b.x1, b.x2, max(0.0, 1.0 - b.x1 - b.x2));
-  vec4 pa = guidePositions[tri.x];
-  vec3 pos = w.x * pa.xyz + w.y * guidePositions[tri.y].xyz + w.z * guidePositions[tri.z].xyz;
-  vec3 ta = guideTangents[tri.x].xyz;
-  vec3 tan = w.x * ta + w.y * guideTangents[tri.y].xyz + w.z * guideTangents[tri.z].xyz;
-  float len2 = dot(tan, tan);
-  tan = len2 > 1e-30 ? tan * inversesqrt(len2) : ta;
-  positions[id] = vec4(pos, pa.w);  // w = v, the same for all guides
-  tangents[id] = vec4(tan, 0.0);
-  if (j == 0u) attributes[s] = makeStrandAttributes(b.random, b.triangle);
+  uint dst = s * push.vertices;
+  for (uint j = 0u; j < push.vertices; ++j) {
+    vec4 pa = guidePositions[src.x + j];
+    vec3 pos = w.x * pa.xyz + w.y * guidePositions[src.y + j].xyz + w.z * guidePositions[src.z + j].xyz;
+    vec3 ta = guideTangents[src.x + j].xyz;
+    vec3 tan = w.x * ta + w.y * guideTangents[src.y + j].xyz + w.z * guideTangents[src.z + j].xyz;
+    float len2 = dot(tan, tan);
+    tan = len2 > 1e-30 ? tan * inversesqrt(len2) : ta;
+    positions[dst + j] = vec4(pos, pa.w);  // w = v, the same for all guides
+    tangents[dst + j] = vec4(tan, 0.0);
+  }
+  attributes[s] = makeStrandAttributes(b.random, b.triangle);
 }
 
 void main() {
-  uint id = hpThreadId(INTERPOLATE_WORKGROUP_SIZE);
-  if (id >= push.strandCount * push.vertices) return;
-  uint s = id / push.vertices;
-  uint j = id - s * push.vertices;
+  uint s = hpThreadId(INTERPOLATE_WORKGROUP_SIZE);
+  if (s >= push.strandCount) return;
   if (push.mode == INTERPOLATE_MODE_GUIDES)
-    copyGuide(id, s, j);
+    copyGuide(s);
   else
-    interpolate(id, s, j);
+    interpolate(s);
 }

@@ -1,0 +1,174 @@
+// `hairpipe bench-strands [--strands 10000,100000,1000000] [--frames F] [--vertices Q] [--json]`:
+// GPU time per frame of the tessellate and interpolate passes (GpuProfiler timestamps, median of F
+// frames after one warm-up frame) on the default head at each render-strand count, and the achieved
+// bandwidth as a fraction of a vkCmdCopyBuffer of 128 MiB timed in the same frames.
+// Bytes counted per pass are the compulsory traffic: every input read once, every output written once
+//   tessellate:  G*P*16 read + G*Q*32 written
+//   interpolate: S*16 bindings + T*16 triangles + G*Q*32 smoothed guides read + S*(Q*32 + 16) written
+//   copy:        2 * 128 MiB (read + write)
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "compute/strand_dump.h"
+#include "engine/error.h"
+#include "engine/hair/default_head.h"
+#include "engine/vk/barriers.h"
+#include "engine/vk/context.h"
+#include "engine/vk/submit.h"
+#include "samples/cli/command.h"
+
+namespace {
+constexpr VkDeviceSize kCopyBytes = 128ull << 20;
+
+struct BenchOptions {
+  std::vector<std::uint32_t> strands{10000, 100000, 1000000};
+  std::uint32_t frames = 5;
+  std::uint32_t vertices = hp::compute::kDefaultVerticesPerStrand;
+  bool json = false;
+  std::string device;
+};
+
+struct Result {
+  hp::compute::StrandLayout layout;
+  double tessellateMs = 0, interpolateMs = 0, copyMs = 0;
+  double frameWallMs = 0;  // host wall clock of a whole frame submission (sanity check of the timestamps)
+  double tessellateBytes = 0, interpolateBytes = 0;
+};
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  return v.empty() ? 0.0 : v[v.size() / 2];
+}
+
+void countBytes(Result& r) {
+  const auto& l = r.layout;
+  const double g = l.guideCount, p = l.particlesPerGuide, q = l.verticesPerStrand, s = l.strandCount;
+  r.tessellateBytes = g * p * 16 + g * q * 32;
+  r.interpolateBytes = s * 16 + l.triangleCount * 16.0 + g * q * 32 + s * (q * 32 + 16);
+}
+
+// One frame: the previous frame's writes are done (the frame recorder's barrier), then the passes,
+// then the reference copy.
+void recordFrame(VkCommandBuffer cmd, hp::vk::GpuProfiler& profiler, const hp::compute::TessellatePass& tessellate,
+                 const hp::compute::InterpolatePass& interpolate, const hp::vk::Buffer& src,
+                 const hp::vk::Buffer& dst) {
+  profiler.reset(cmd);
+  hp::vk::memoryBarrier(cmd, hp::vk::BufferUse::ComputeWrite, hp::vk::BufferUse::ComputeWrite);
+  hp::compute::recordStrandPasses(cmd, tessellate, interpolate, &profiler);
+  hp::vk::bufferBarrier(cmd, dst.handle(), hp::vk::BufferUse::TransferDst, hp::vk::BufferUse::TransferDst);
+  profiler.begin(cmd, "copy");
+  VkBufferCopy region{0, 0, kCopyBytes};
+  vkCmdCopyBuffer(cmd, src.handle(), dst.handle(), 1, &region);
+  profiler.end(cmd);
+}
+
+Result benchOne(const hp::vk::Context& ctx, std::uint32_t strands, const BenchOptions& o) {
+  hp::DensityOptions density;
+  density.totalStrands = strands;
+  hp::HairAsset asset = hp::buildDefaultHeadAsset(hp::defaultHeadGrowth(), density);
+  const hp::GuideSet& guides = asset.guides;
+  hp::compute::StrandOptions options;
+  options.verticesPerStrand = o.vertices;
+  hp::compute::StrandBuffers buffers(ctx, guides.guideCount(), guides.particlesPerGuide, asset.topology, options);
+  hp::vk::Buffer particles = hp::compute::uploadGuideParticles(ctx, guides);
+  hp::compute::TessellatePass tessellate(ctx, particles, buffers);
+  hp::compute::InterpolatePass interpolate(ctx, buffers);
+  const VkBufferUsageFlags copyUsage = VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
+  hp::vk::Buffer src(ctx, kCopyBytes, copyUsage, hp::vk::MemoryKind::DeviceLocal, "bench copy source");
+  hp::vk::Buffer dst(ctx, kCopyBytes, copyUsage, hp::vk::MemoryKind::DeviceLocal, "bench copy destination");
+  hp::vk::submitAndWait(ctx, [&](VkCommandBuffer cmd) {
+    vkCmdFillBuffer(cmd, src.handle(), 0, kCopyBytes, 0x3f800000u);
+    hp::vk::bufferBarrier(cmd, src.handle(), hp::vk::BufferUse::TransferDst, hp::vk::BufferUse::TransferSrc);
+  }, "bench copy fill");
+  hp::vk::GpuProfiler profiler(ctx, 8, "bench strands");
+  std::map<std::string, std::vector<double>> times;
+  for (std::uint32_t f = 0; f <= o.frames; ++f) {  // frame 0 warms up (first touch of the memory)
+    const auto start = std::chrono::steady_clock::now();
+    hp::vk::submitAndWait(ctx, [&](VkCommandBuffer cmd) { recordFrame(cmd, profiler, tessellate, interpolate, src, dst); },
+                          "bench strands frame");
+    const double wallMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    if (f == 0) continue;
+    times["wall"].push_back(wallMs);
+    for (const auto& t : profiler.results()) times[t.name].push_back(t.milliseconds);
+  }
+  Result r;
+  r.layout = buffers.layout();
+  r.tessellateMs = median(times["tessellate"]);
+  r.interpolateMs = median(times["interpolate"]);
+  r.copyMs = median(times["copy"]);
+  r.frameWallMs = median(times["wall"]);
+  countBytes(r);
+  return r;
+}
+
+double gbPerSecond(double bytes, double ms) { return ms > 0 ? bytes / (ms * 1e6) : 0.0; }
+
+nlohmann::json toJson(const Result& r) {
+  const double copyGbs = gbPerSecond(2.0 * kCopyBytes, r.copyMs);
+  auto pass = [&](double ms, double bytes) {
+    const double gbs = gbPerSecond(bytes, ms);
+    return nlohmann::json{{"ms", ms}, {"bytes", bytes}, {"gb_per_s", gbs}, {"fraction_of_copy", gbs / copyGbs}};
+  };
+  return {{"strands", r.layout.strandCount},
+          {"guides", r.layout.guideCount},
+          {"vertices_per_strand", r.layout.verticesPerStrand},
+          {"chunks", r.layout.chunks.size()},
+          {"tessellate", pass(r.tessellateMs, r.tessellateBytes)},
+          {"interpolate", pass(r.interpolateMs, r.interpolateBytes)},
+          {"copy", {{"ms", r.copyMs}, {"bytes", 2.0 * kCopyBytes}, {"gb_per_s", copyGbs}}},
+          {"frame_wall_ms", r.frameWallMs}};
+}
+
+void printText(const nlohmann::json& report) {
+  std::cout << "device: " << report["device"].get<std::string>() << ", median of " << report["frames"]
+            << " frames\n";
+  std::cout << "strands  chunks  tessellate ms  interpolate ms  interp GB/s  of copy  copy GB/s  frame wall ms\n";
+  for (const auto& r : report["results"]) {
+    char line[160];
+    std::snprintf(line, sizeof line, "%7u  %6zu  %13.3f  %14.3f  %11.2f  %6.0f%%  %9.2f  %13.1f\n", r["strands"].get<unsigned>(),
+                  r["chunks"].get<std::size_t>(), r["tessellate"]["ms"].get<double>(),
+                  r["interpolate"]["ms"].get<double>(), r["interpolate"]["gb_per_s"].get<double>(),
+                  100.0 * r["interpolate"]["fraction_of_copy"].get<double>(), r["copy"]["gb_per_s"].get<double>(),
+                  r["frame_wall_ms"].get<double>());
+    std::cout << line;
+  }
+}
+
+void run(const BenchOptions& o) {
+  if (o.frames == 0 || o.frames > 1000) throw hp::Error("bench-strands: --frames must be in [1, 1000]");
+  for (std::uint32_t s : o.strands)
+    if (s == 0 || s > 4'000'000) throw hp::Error("bench-strands: --strands values must be in [1, 4000000]");
+  hp::vk::ContextOptions ctxOptions;
+  ctxOptions.device = o.device;
+  auto ctx = hp::vk::Context::createHeadless(ctxOptions);
+  if (!ctx->timestampsSupported()) throw hp::Error("bench-strands: the device has no timestamp queries");
+  nlohmann::json report = {{"device", ctx->properties().deviceName}, {"frames", o.frames},
+                           {"copy_bytes", kCopyBytes}, {"results", nlohmann::json::array()}};
+  for (std::uint32_t s : o.strands) report["results"].push_back(toJson(benchOne(*ctx, s, o)));
+  if (o.json)
+    std::cout << report.dump(2) << "\n";
+  else
+    printText(report);
+}
+
+void setup(CLI::App& app) {
+  auto o = std::make_shared<BenchOptions>();
+  CLI::App* cmd = app.add_subcommand("bench-strands", "Time the tessellate and interpolate passes on the device");
+  cmd->add_option("--strands", o->strands, "Render strand counts, comma separated")->delimiter(',')->capture_default_str();
+  cmd->add_option("--frames", o->frames, "Timed frames per count (median), after one warm-up")->capture_default_str();
+  cmd->add_option("--vertices", o->vertices, "Vertices per strand (Q)")->capture_default_str();
+  cmd->add_flag("--json", o->json, "Print JSON");
+  cmd->add_option("--device", o->device, "Vulkan device: index or name substring (env HAIRPIPE_DEVICE)");
+  cmd->callback([o] { run(*o); });
+}
+}  // namespace
+
+HP_CLI_COMMAND(setup);
