@@ -3,6 +3,7 @@
 // checks. Interface: shaders/shared/brdf_eval.h.
 #include "shared/brdf_eval.h"
 #include "marschner.glsl"
+#include "common.glsl"
 
 layout(local_size_x = BRDF_EVAL_WORKGROUP_SIZE) in;
 
@@ -15,7 +16,8 @@ layout(binding = BRDF_EVAL_BINDING_N1) uniform sampler2D n1Tex;
 layout(push_constant) uniform Push { BrdfEvalPush push; };
 
 void main() {
-  uint i = gl_GlobalInvocationID.x;
+  // Never gl_WorkGroupSize (lavapipe 22.3 would run one invocation per group); the grid may be 2D.
+  uint i = hpThreadId(BRDF_EVAL_WORKGROUP_SIZE);
   if (i >= push.control.x) return;
   BrdfEvalInput row = rows[i];
   vec3 s = marschnerEvaluate(push.control.y, row.L.xyz, row.V.xyz, row.T.xyz, mTex, n0Tex, n1Tex,

@@ -6,7 +6,8 @@
 //   binding 3, 4, 5: combined image samplers M, N0, N1 (linear, clamp to edge). All three must be
 //     bound in every mode because the mode is a run-time branch: bind any 1x1 texture to the unused.
 //   push constant BrdfEvalPush: control.x = row count, control.y = MARSCHNER_MODE_*.
-// Dispatch ceil(count / BRDF_EVAL_WORKGROUP_SIZE) workgroups.
+// Dispatch with ComputePipeline::dispatch(count) (the grid may fold into 2D; the kernel uses
+// hpThreadId). Host side: engine/render/brdf_evaluator.h.
 #ifndef HP_SHARED_BRDF_EVAL_H
 #define HP_SHARED_BRDF_EVAL_H
 
