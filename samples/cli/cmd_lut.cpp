@@ -2,7 +2,6 @@
 // textures on the CPU and writes, per texture NAME: NAME_rgb.pfm and NAME_a.pfm (stored float values,
 // channels 0-2 and 3), NAME.png and NAME_a.png (8-bit previews), plus lut.json (layout,
 // parameterisation, per-channel scale factors, material, files). Every file is written atomically.
-#include <png.h>
 
 #include <filesystem>
 #include <iostream>
@@ -13,6 +12,7 @@
 
 #include "engine/error.h"
 #include "engine/hair/atomic_write.h"
+#include "engine/render/png_file.h"
 #include "engine/shading/lut.h"
 #include "engine/shading/lut_export.h"
 #include "samples/cli/command.h"
@@ -24,31 +24,6 @@ struct LutOptions {
   std::string mode = "float";
   hp::HairMaterial material;
 };
-
-void appendPng(png_structp png, png_bytep data, png_size_t size) {
-  auto* out = static_cast<std::vector<std::byte>*>(png_get_io_ptr(png));
-  for (png_size_t i = 0; i < size; ++i) out->push_back(std::byte(data[i]));
-}
-
-std::vector<std::byte> encodePng(const hp::PreviewImage& img) {
-  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
-  png_infop info = png ? png_create_info_struct(png) : nullptr;
-  if (!info) throw hp::Error("libpng: cannot create the PNG writer");
-  std::vector<std::byte> out;
-  if (setjmp(png_jmpbuf(png))) {
-    png_destroy_write_struct(&png, &info);
-    throw hp::Error("libpng: encoding the LUT preview failed");
-  }
-  png_set_write_fn(png, &out, appendPng, nullptr);
-  png_set_IHDR(png, info, img.width, img.height, 8, PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE,
-               PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
-  png_write_info(png, info);
-  for (std::uint32_t y = 0; y < img.height; ++y)
-    png_write_row(png, const_cast<png_bytep>(&img.rgb[std::size_t(y) * img.width * 3]));
-  png_write_end(png, nullptr);
-  png_destroy_write_struct(&png, &info);
-  return out;
-}
 
 std::vector<std::byte> bytesOf(const std::string& s) {
   std::vector<std::byte> b(s.size());
@@ -62,7 +37,8 @@ void writeTexture(const std::filesystem::path& dir, const hp::LutTexture& t, nlo
     std::string pfm = t.name + suffix + ".pfm";
     std::string png = t.name + (which == hp::LutChannels::Rgb ? "" : "_a") + ".png";
     hp::writeFileAtomically(dir / pfm, hp::lutTexturePfm(t, which));
-    hp::writeFileAtomically(dir / png, encodePng(hp::lutPreviewRgb8(t, which)));
+    const hp::PreviewImage preview = hp::lutPreviewRgb8(t, which);
+    hp::writePng(dir / png, preview.width, preview.height, 3, preview.rgb);
     files[t.name].push_back(pfm);
     files[t.name].push_back(png);
   }

@@ -1,0 +1,69 @@
+#include "engine/hair_system.h"
+
+#include "engine/vk/barriers.h"
+#include "engine/vk/context.h"
+
+namespace hp {
+namespace {
+vk::Buffer makeFrameBlock(const vk::Context& ctx) {
+  return vk::Buffer(ctx, sizeof(gpu::RenderFrame), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                    vk::MemoryKind::DeviceLocal, "render frame");
+}
+
+const HairSystemSettings& validated(const HairSystemSettings& s) {
+  s.simulation.validate();
+  s.material.validate();
+  s.look.validate();
+  return s;
+}
+}  // namespace
+
+HairSystem::HairSystem(const vk::Context& ctx, const HairAsset& asset, const HairSystemSettings& settings,
+                       const glm::mat4& initialHead)
+    : ctx_(ctx),
+      settings_(validated(settings)),
+      simulate_(ctx, asset, settings.simulation, initialHead),
+      strands_(ctx, asset.guides.guideCount(), asset.guides.particlesPerGuide, asset.topology, settings.strands),
+      tessellate_(ctx, simulate_.positions(), strands_),
+      interpolate_(ctx, strands_),
+      marschner_(ctx, settings.material, settings.lutMode),
+      frameBlock_(makeFrameBlock(ctx)),
+      head_(ctx, asset.head, frameBlock_, settings.formats),
+      strandPass_(ctx, strands_, marschner_, frameBlock_, settings.formats) {}
+
+void HairSystem::recordUpdate(VkCommandBuffer cmd, const HeadMotion& motion, vk::GpuProfiler* profiler) {
+  // The previous frame drew the strands and chained compute passes over the same buffers.
+  vk::memoryBarrier(cmd, vk::BufferUse::VertexRead, vk::BufferUse::ComputeWrite);
+  vk::memoryBarrier(cmd, vk::BufferUse::ComputeWrite, vk::BufferUse::ComputeWrite);
+  simulate_.record(cmd, motion, profiler);
+  vk::memoryBarrier(cmd, vk::BufferUse::ComputeWrite, vk::BufferUse::ComputeRead);
+  tessellate_.record(cmd, profiler);
+  vk::memoryBarrier(cmd, vk::BufferUse::ComputeWrite, vk::BufferUse::ComputeRead);
+  interpolate_.record(cmd, profiler);
+}
+
+void HairSystem::recordPrepareDraw(VkCommandBuffer cmd, const DrawView& view) {
+  gpu::RenderFrame frame = render::makeRenderFrame(view.camera, view.extent, view.light, settings_.material,
+                                                   settings_.look, strands_.layout().verticesPerStrand, false);
+  vk::bufferBarrier(cmd, frameBlock_.handle(), vk::BufferUse::GraphicsRead, vk::BufferUse::TransferDst);
+  vkCmdUpdateBuffer(cmd, frameBlock_.handle(), 0, sizeof(frame), &frame);
+  vk::bufferBarrier(cmd, frameBlock_.handle(), vk::BufferUse::TransferDst, vk::BufferUse::GraphicsRead);
+  vk::memoryBarrier(cmd, vk::BufferUse::ComputeWrite, vk::BufferUse::VertexRead);
+}
+
+void HairSystem::recordDraw(VkCommandBuffer cmd, const DrawView& view, vk::GpuProfiler* profiler) const {
+  if (profiler) profiler->begin(cmd, "head");
+  head_.draw(cmd, view.extent, view.headToWorld);
+  if (profiler) profiler->end(cmd);
+  if (profiler) profiler->begin(cmd, "shade");
+  strandPass_.draw(cmd, view.extent, view.lines);
+  if (profiler) profiler->end(cmd);
+}
+
+void HairSystem::setMaterial(const HairMaterial& material, LutMode mode) {
+  if (!marschner_.rebuild(material, mode)) return;
+  settings_.material = material;
+  settings_.lutMode = mode;
+  strandPass_.bind(strands_, marschner_, frameBlock_);
+}
+}  // namespace hp

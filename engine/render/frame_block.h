@@ -1,0 +1,24 @@
+#pragma once
+// Contract: fills the per-frame block the draw passes read (gpu::RenderFrame) from a camera, the light,
+// the hair material and the look settings. Pure host code.
+#include "engine/hair/scene.h"
+#include "engine/render/camera.h"
+#include <volk.h>
+#include "shaders/shared/render.h"
+
+namespace hp::render {
+struct LookSettings {
+  // Ribbon width at the root (scene units). Real hair is 50-120 um, but a render strand stands for a
+  // few hundred real ones (20k of them replace ~100k hairs), so it is drawn as a thin clump.
+  float strandWidth = 0.0005f;
+  float tipWidthFraction = 0.35f;    // width at the tip relative to the root
+  glm::vec3 skinColor{0.62f, 0.45f, 0.36f};
+  float wrap = 0.5f;                 // the paper's wrap term for the head, [0, 1]
+  float ambient = 0.06f;             // constant fill light, relative to the hair/skin albedo
+  void validate() const;             // throws hp::Error naming the field
+};
+
+gpu::RenderFrame makeRenderFrame(const CameraMatrices& camera, VkExtent2D extent, const LightSpec& light,
+                                 const HairMaterial& material, const LookSettings& look,
+                                 std::uint32_t verticesPerStrand, bool opacityShadows);
+}  // namespace hp::render

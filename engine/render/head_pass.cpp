@@ -1,0 +1,64 @@
+#include "engine/render/head_pass.h"
+
+#include "engine/error.h"
+#include "engine/vk/transfer.h"
+#include "shaders/shared/render.h"
+
+namespace hp::render {
+namespace {
+constexpr VkBufferUsageFlags kUsage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
+constexpr VkShaderStageFlags kVertex = VK_SHADER_STAGE_VERTEX_BIT;
+const vk::Binding kBindings[] = {
+    {gpu::RENDER_BINDING_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT},
+    {gpu::RENDER_BINDING_POSITIONS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kVertex},
+    {gpu::RENDER_BINDING_TANGENTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kVertex},
+    {gpu::RENDER_BINDING_ATTRIBUTES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kVertex},
+};
+
+std::vector<glm::vec4> asVec4(const std::vector<glm::vec3>& v) {
+  std::vector<glm::vec4> out;
+  out.reserve(v.size());
+  for (const auto& p : v) out.emplace_back(p, 1.0f);
+  return out;
+}
+}  // namespace
+
+HeadPass::HeadPass(const vk::Context& ctx, const HeadMesh& mesh, const vk::Buffer& frameBlock,
+                   const AttachmentFormats& formats)
+    : indexCount_(static_cast<std::uint32_t>(mesh.indices.size())) {
+  if (mesh.normals.size() != mesh.positions.size()) throw Error("head mesh: one normal per position is required");
+  for (std::uint32_t i : mesh.indices)
+    if (i >= mesh.positions.size()) throw Error("head mesh: index " + std::to_string(i) + " is out of range");
+  set_ = vk::DescriptorSet(ctx, kBindings, "head");
+  set_.writeUniformBuffer(gpu::RENDER_BINDING_FRAME, frameBlock.handle());
+  vk::GraphicsPipelineDesc desc;
+  desc.vertexShader = "head.vert";
+  desc.fragmentShader = "head.frag";
+  desc.colorFormats = {formats.color};
+  desc.depthFormat = formats.depth;
+  desc.samples = formats.samples;
+  desc.depthTest = desc.depthWrite = true;
+  desc.cullMode = VK_CULL_MODE_BACK_BIT;
+  desc.sets = {set_.layout()};
+  desc.pushSize = sizeof(glm::mat4);
+  desc.name = "head";
+  pipeline_ = vk::GraphicsPipeline(ctx, desc);
+  if (empty()) return;
+  positions_ = vk::Buffer(ctx, mesh.positions.size() * sizeof(glm::vec4), kUsage, vk::MemoryKind::DeviceLocal, "head positions");
+  normals_ = vk::Buffer(ctx, mesh.normals.size() * sizeof(glm::vec4), kUsage, vk::MemoryKind::DeviceLocal, "head normals");
+  indices_ = vk::Buffer(ctx, mesh.indices.size() * sizeof(std::uint32_t), kUsage, vk::MemoryKind::DeviceLocal, "head indices");
+  vk::upload<glm::vec4>(ctx, positions_, asVec4(mesh.positions), vk::BufferUse::VertexRead);
+  vk::upload<glm::vec4>(ctx, normals_, asVec4(mesh.normals), vk::BufferUse::VertexRead);
+  vk::upload<std::uint32_t>(ctx, indices_, mesh.indices, vk::BufferUse::VertexRead);
+  set_.writeStorageBuffer(gpu::RENDER_BINDING_POSITIONS, positions_.handle());
+  set_.writeStorageBuffer(gpu::RENDER_BINDING_TANGENTS, normals_.handle());
+  set_.writeStorageBuffer(gpu::RENDER_BINDING_ATTRIBUTES, indices_.handle());
+}
+
+void HeadPass::draw(VkCommandBuffer cmd, VkExtent2D extent, const glm::mat4& headToWorld) const {
+  if (empty()) return;
+  pipeline_.bind(cmd, set_.set(), extent);
+  pipeline_.push(cmd, headToWorld);
+  vkCmdDraw(cmd, indexCount_, 1, 0, 0);
+}
+}  // namespace hp::render

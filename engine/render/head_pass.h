@@ -1,0 +1,27 @@
+#pragma once
+// Contract: draws the opaque head mesh (HairAsset::head) with the paper's wrap lighting, depth test and
+// write on, into the caller's dynamic rendering. Owns the mesh buffers (uploaded once), pipeline and
+// descriptor set; reads the frame block the caller keeps up to date (RenderFrame, shaders/shared/render.h).
+// draw() must be called inside vkCmdBeginRendering with attachments matching `formats`.
+#include <glm/glm.hpp>
+
+#include "engine/hair/hair_asset.h"
+#include "engine/render/attachment_formats.h"
+#include "engine/vk/buffer.h"
+#include "engine/vk/descriptors.h"
+#include "engine/vk/pipeline.h"
+
+namespace hp::render {
+class HeadPass {
+ public:
+  HeadPass(const vk::Context& ctx, const HeadMesh& mesh, const vk::Buffer& frameBlock, const AttachmentFormats& formats);
+  void draw(VkCommandBuffer cmd, VkExtent2D extent, const glm::mat4& headToWorld) const;
+  bool empty() const { return indexCount_ == 0; }
+
+ private:
+  std::uint32_t indexCount_ = 0;
+  vk::Buffer positions_, normals_, indices_;
+  vk::DescriptorSet set_;
+  vk::GraphicsPipeline pipeline_;
+};
+}  // namespace hp::render

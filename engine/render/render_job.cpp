@@ -1,0 +1,63 @@
+#include "engine/render/render_job.h"
+
+#include "compute/simulation_driver.h"
+#include "engine/error.h"
+#include "engine/render/offscreen_renderer.h"
+#include "engine/vk/context.h"
+#include "engine/vk/submit.h"
+
+namespace hp {
+namespace {
+HairSystemSettings systemSettings(const RenderRequest& r, const render::AttachmentFormats& formats) {
+  HairSystemSettings s;
+  s.simulation = r.scene.simulation;
+  s.material = r.scene.material;
+  s.lutMode = r.lutMode;
+  s.strands.guidesOnly = r.guidesOnly;
+  s.formats = formats;
+  s.look = r.look;
+  return s;
+}
+
+void validate(const RenderRequest& r) {
+  if (r.settleFrames > 100000) throw Error("settle frames must be at most 100000");
+  if (!(r.exposure > 0.0f) || !std::isfinite(r.exposure)) throw Error("exposure must be a positive number");
+  if (!std::isfinite(glm::length(r.scene.light.direction)) || glm::length(r.scene.light.direction) < 1e-6f)
+    throw Error("the light direction must be a non-zero finite vector");
+}
+}  // namespace
+
+RenderResult renderStill(const vk::Context& ctx, const HairAsset& asset, const RenderRequest& request) {
+  validate(request);
+  const RenderSpec& size = request.scene.render;
+  render::OffscreenRenderer renderer(ctx, size.width, size.height, size.msaa);
+  HairSystem hair(ctx, asset, systemSettings(request, renderer.formats()));
+  SimulationDriver driver(ctx, hair.simulation(), request.animation, assetHeadRadius(asset));
+  if (request.settleFrames > 0) driver.runFrames(request.settleFrames);
+
+  DrawView view;
+  view.extent = renderer.extent();
+  view.camera = orbitCamera(request.scene.camera, float(size.width) / float(size.height));
+  view.light = request.scene.light;
+  view.lines = request.lines;
+  const HeadMotion motion = driver.nextMotion();
+  view.headToWorld = motion.to;
+  vk::GpuProfiler profiler(ctx, 16, "render frame");
+  vk::submitAndWait(ctx, [&](VkCommandBuffer cmd) {
+    profiler.reset(cmd);
+    hair.recordUpdate(cmd, motion, &profiler);
+    hair.recordPrepareDraw(cmd, view);
+    renderer.record(cmd, hair, view, request.exposure, &profiler);
+  }, "render frame");
+
+  RenderResult result;
+  result.width = size.width;
+  result.height = size.height;
+  result.rgba = renderer.readDisplay();
+  result.passTimes = profiler.results();
+  result.guides = hair.simulation().guideCount();
+  result.strands = hair.strands().layout().strandCount;
+  result.verticesPerStrand = hair.strands().layout().verticesPerStrand;
+  return result;
+}
+}  // namespace hp

@@ -1,0 +1,35 @@
+#pragma once
+// Contract: renders one still of a scene the way `hairpipe render` does: builds a HairSystem over the
+// asset, lets the simulation settle for settleFrames (the head following `animation`), then records
+// the last frame in full (simulate, tessellate, interpolate, head, hair, tonemap) with GPU timestamps
+// per pass and reads the image back. Blocking; for tools and tests, not for a frame loop.
+#include <vector>
+
+#include "engine/hair_system.h"
+#include "engine/sim/head_animation.h"
+#include "engine/vk/profiler.h"
+
+namespace hp {
+struct RenderRequest {
+  Scene scene;                      // camera, light, render size, material, simulation, density
+  std::uint32_t settleFrames = 90;  // simulated frames before the rendered one
+  HeadAnimation animation = HeadAnimation::None;
+  LutMode lutMode = LutMode::Float;
+  bool lines = false;
+  bool guidesOnly = false;
+  float exposure = 1.0f;
+  render::LookSettings look;
+};
+
+struct RenderResult {
+  std::uint32_t width = 0;
+  std::uint32_t height = 0;
+  std::vector<std::uint8_t> rgba;        // sRGB, rows top to bottom
+  std::vector<vk::ScopeTime> passTimes;  // GPU ms of each pass of the rendered frame
+  std::uint32_t guides = 0;
+  std::uint32_t strands = 0;
+  std::uint32_t verticesPerStrand = 0;
+};
+
+RenderResult renderStill(const vk::Context& ctx, const HairAsset& asset, const RenderRequest& request);
+}  // namespace hp

@@ -1,0 +1,25 @@
+#pragma once
+// Contract: the offscreen images hairpipe's own renderer draws into (the CLI, tests, benchmarks):
+// a multisampled HDR colour + depth pair, the single-sample HDR resolve, and the 8-bit sRGB image the
+// tonemap pass writes and the host reads back. An embedding application uses its own attachments.
+#include "engine/vk/image.h"
+
+namespace hp {
+inline constexpr VkFormat kHdrFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
+inline constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
+inline constexpr VkFormat kDisplayFormat = VK_FORMAT_R8G8B8A8_SRGB;
+
+struct RenderTargets {
+  // Throws hp::Error for a size past the device's limits or an unsupported sample count.
+  RenderTargets(const vk::Context& ctx, std::uint32_t width, std::uint32_t height, std::uint32_t msaa);
+
+  VkExtent2D extent() const { return display.extent(); }
+  VkSampleCountFlagBits samples() const { return hdr.desc().samples; }
+  vk::Image hdr;       // multisampled (or not, for msaa 1), colour attachment
+  vk::Image depth;     // same sample count
+  vk::Image resolved;  // single-sample HDR, resolve target and tonemap input (when msaa > 1)
+  vk::Image display;   // sRGB, tonemap output, read back
+};
+
+VkSampleCountFlagBits sampleCountFlag(std::uint32_t msaa);
+}  // namespace hp

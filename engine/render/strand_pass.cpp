@@ -1,0 +1,77 @@
+#include "engine/render/strand_pass.h"
+
+#include "shaders/shared/render.h"
+
+namespace hp::render {
+namespace {
+constexpr VkShaderStageFlags kBoth = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
+constexpr VkShaderStageFlags kVertex = VK_SHADER_STAGE_VERTEX_BIT;
+constexpr VkShaderStageFlags kFragment = VK_SHADER_STAGE_FRAGMENT_BIT;
+const vk::Binding kBindings[] = {
+    {gpu::RENDER_BINDING_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kBoth},
+    {gpu::RENDER_BINDING_MARSCHNER, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kFragment},
+    {gpu::RENDER_BINDING_LUT_M, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kFragment},
+    {gpu::RENDER_BINDING_LUT_N0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kFragment},
+    {gpu::RENDER_BINDING_LUT_N1, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kFragment},
+    {gpu::RENDER_BINDING_POSITIONS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kVertex},
+    {gpu::RENDER_BINDING_TANGENTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kVertex},
+    {gpu::RENDER_BINDING_ATTRIBUTES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kVertex},
+};
+
+vk::GraphicsPipeline makePipeline(const vk::Context& ctx, VkDescriptorSetLayout layout,
+                                  const AttachmentFormats& formats, bool lines) {
+  vk::GraphicsPipelineDesc desc;
+  desc.vertexShader = "strands.vert";
+  desc.fragmentShader = "strands.frag";
+  desc.colorFormats = {formats.color};
+  desc.depthFormat = formats.depth;
+  desc.samples = formats.samples;
+  desc.depthTest = desc.depthWrite = true;
+  // Coverage through MSAA samples keeps overlapping hair order-independent; without MSAA, blend.
+  desc.alphaToCoverage = formats.samples != VK_SAMPLE_COUNT_1_BIT;
+  desc.blend = formats.samples != VK_SAMPLE_COUNT_1_BIT ? vk::BlendMode::None : vk::BlendMode::Alpha;
+  desc.topology = lines ? VK_PRIMITIVE_TOPOLOGY_LINE_LIST : VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
+  desc.sets = {layout};
+  desc.pushSize = sizeof(gpu::StrandDrawPush);
+  desc.name = lines ? "strand lines" : "strand ribbons";
+  return vk::GraphicsPipeline(ctx, desc);
+}
+}  // namespace
+
+StrandPass::StrandPass(const vk::Context& ctx, const compute::StrandBuffers& strands,
+                       const MarschnerTextures& marschner, const vk::Buffer& frameBlock,
+                       const AttachmentFormats& formats)
+    : ctx_(ctx) {
+  bind(strands, marschner, frameBlock);
+  ribbons_ = makePipeline(ctx, sets_.front().layout(), formats, false);
+  lines_ = makePipeline(ctx, sets_.front().layout(), formats, true);
+}
+
+void StrandPass::bind(const compute::StrandBuffers& strands, const MarschnerTextures& marschner,
+                      const vk::Buffer& frameBlock) {
+  strands_ = &strands;
+  sets_.clear();
+  for (const auto& chunk : strands.chunks()) {
+    vk::DescriptorSet set(ctx_, kBindings, "strands chunk " + std::to_string(sets_.size()));
+    set.writeUniformBuffer(gpu::RENDER_BINDING_FRAME, frameBlock.handle());
+    marschner.writeDescriptors(set, gpu::RENDER_BINDING_MARSCHNER, gpu::RENDER_BINDING_LUT_M,
+                               gpu::RENDER_BINDING_LUT_N0, gpu::RENDER_BINDING_LUT_N1);
+    set.writeStorageBuffer(gpu::RENDER_BINDING_POSITIONS, chunk.positions.handle());
+    set.writeStorageBuffer(gpu::RENDER_BINDING_TANGENTS, chunk.tangents.handle());
+    set.writeStorageBuffer(gpu::RENDER_BINDING_ATTRIBUTES, chunk.attributes.handle());
+    sets_.push_back(std::move(set));
+  }
+}
+
+void StrandPass::draw(VkCommandBuffer cmd, VkExtent2D extent, bool lines) const {
+  const auto& layout = strands_->layout();
+  const std::uint32_t perSegment = lines ? gpu::STRAND_VERTICES_PER_LINE : gpu::STRAND_VERTICES_PER_QUAD;
+  const vk::GraphicsPipeline& pipeline = lines ? lines_ : ribbons_;
+  for (std::size_t c = 0; c < sets_.size(); ++c) {
+    const auto& range = strands_->chunks()[c].range;
+    pipeline.bind(cmd, sets_[c].set(), extent);
+    pipeline.push(cmd, gpu::StrandDrawPush{range.firstStrand, lines ? 1u : 0u, 0u, 0u});
+    vkCmdDraw(cmd, range.strandCount * (layout.verticesPerStrand - 1) * perSegment, 1, 0, 0);
+  }
+}
+}  // namespace hp::render

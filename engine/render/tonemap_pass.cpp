@@ -1,0 +1,35 @@
+#include "engine/render/tonemap_pass.h"
+
+#include "engine/vk/context.h"
+#include "engine/vk/image.h"
+#include "shaders/shared/render.h"
+
+namespace hp::render {
+namespace {
+const vk::Binding kBindings[] = {
+    {gpu::TONEMAP_BINDING_HDR, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT}};
+}
+
+TonemapPass::TonemapPass(const vk::Context& ctx, VkFormat displayFormat)
+    : ctx_(ctx), sampler_(vk::createLinearClampSampler(ctx, "tonemap sampler")) {
+  set_ = vk::DescriptorSet(ctx, kBindings, "tonemap");
+  vk::GraphicsPipelineDesc desc;
+  desc.vertexShader = "tonemap.vert";
+  desc.fragmentShader = "tonemap.frag";
+  desc.colorFormats = {displayFormat};
+  desc.sets = {set_.layout()};
+  desc.pushSize = sizeof(gpu::TonemapPush);
+  desc.name = "tonemap";
+  pipeline_ = vk::GraphicsPipeline(ctx, desc);
+}
+
+TonemapPass::~TonemapPass() { vkDestroySampler(ctx_.device(), sampler_, nullptr); }
+
+void TonemapPass::setInput(VkImageView hdr) { set_.writeSampledImage(gpu::TONEMAP_BINDING_HDR, hdr, sampler_); }
+
+void TonemapPass::draw(VkCommandBuffer cmd, VkExtent2D extent, float exposure) const {
+  pipeline_.bind(cmd, set_.set(), extent);
+  pipeline_.push(cmd, gpu::TonemapPush{exposure, 0, 0, 0});
+  vkCmdDraw(cmd, 3, 1, 0, 0);
+}
+}  // namespace hp::render

@@ -1,0 +1,25 @@
+#pragma once
+// Contract: full-screen pass from the resolved linear HDR image to the display image (exposure and a
+// filmic curve; the sRGB target format applies the transfer function). Draws inside the caller's
+// dynamic rendering of a single-sample `displayFormat` attachment; the HDR input must be in
+// ImageUse::FragmentSampled.
+#include "engine/vk/descriptors.h"
+#include "engine/vk/pipeline.h"
+
+namespace hp::render {
+class TonemapPass {
+ public:
+  TonemapPass(const vk::Context& ctx, VkFormat displayFormat);
+  ~TonemapPass();
+  TonemapPass(const TonemapPass&) = delete;
+  TonemapPass& operator=(const TonemapPass&) = delete;
+  void setInput(VkImageView hdr);
+  void draw(VkCommandBuffer cmd, VkExtent2D extent, float exposure) const;
+
+ private:
+  const vk::Context& ctx_;
+  VkSampler sampler_ = VK_NULL_HANDLE;
+  vk::DescriptorSet set_;
+  vk::GraphicsPipeline pipeline_;
+};
+}  // namespace hp::render
