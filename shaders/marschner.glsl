@@ -27,6 +27,12 @@
 #include "shared/marschner.h"
 #endif
 
+#ifdef MARSCHNER_GLSL_AS_CPP
+// The C++ port checks the logic in double, with the exact inverse trigonometry.
+float marschnerAsin(float x) { return asin(x); }
+float marschnerAcos(float x) { return acos(x); }
+#endif
+
 const float MARSCHNER_PI = 3.14159265358979;
 const float MARSCHNER_HALF_PI = 1.57079632679490;
 const float MARSCHNER_TWO_PI = 6.28318530717959;
@@ -53,9 +59,13 @@ float marschnerFresnelP(float n, float cosI) {
   return r * r;
 }
 
-float marschnerFresnel(float n1, float n2, float gamma) {
-  float c = abs(cos(gamma));
+// c = |cos gamma|.
+float marschnerFresnelCos(float n1, float n2, float c) {
   return 0.5 * (marschnerFresnelS(n1, c) + marschnerFresnelP(n2, c));
+}
+
+float marschnerFresnel(float n1, float n2, float gamma) {
+  return marschnerFresnelCos(n1, n2, abs(cos(gamma)));
 }
 
 // Per-theta_d quantities shared by every lobe.
@@ -70,10 +80,12 @@ struct MarschnerFiber {
 vec3 marschnerAttenuation(int p, float gammaI, MarschnerFiber f) {
   float fr = marschnerFresnel(f.etaP, f.etaPP, gammaI);
   if (p == 0) return vec3(fr);
-  float gammaT = asin(clamp(sin(gammaI) / f.etaP, -1.0, 1.0));
-  vec3 t = exp(-2.0 * f.sigma / f.cosThetaT * cos(gammaT));
+  // Only cos gamma_t is needed: no inverse trigonometry (see marschnerAsin in shared/marschner.h).
+  float sinGammaT = clamp(sin(gammaI) / f.etaP, -1.0, 1.0);
+  float cosGammaT = sqrt(1.0 - sinGammaT * sinGammaT);
+  vec3 t = exp(-2.0 * f.sigma / f.cosThetaT * cosGammaT);
   vec3 a = (1.0 - fr) * (1.0 - fr) * t;
-  if (p == 2) a *= marschnerFresnel(1.0 / f.etaP, 1.0 / f.etaPP, gammaT) * t;
+  if (p == 2) a *= marschnerFresnelCos(1.0 / f.etaP, 1.0 / f.etaPP, cosGammaT) * t;
   return a;
 }
 
@@ -88,7 +100,7 @@ int marschnerSolveCubic(float P, float Q, out float r[3]) {
     return 1;
   }
   float m = 2.0 * sqrt(-P / 3.0);
-  float th = acos(clamp(3.0 * Q / (P * m), -1.0, 1.0)) / 3.0;
+  float th = marschnerAcos(clamp(3.0 * Q / (P * m), -1.0, 1.0)) / 3.0;
   for (int j = 0; j < 3; ++j) r[j] = m * cos(th - MARSCHNER_TWO_PI * float(j) / 3.0);
   return 3;
 }
@@ -96,7 +108,7 @@ int marschnerSolveCubic(float P, float Q, out float r[3]) {
 // N_p without the caustic: sum over all roots gamma of Phi(p, gamma) = phi + 2 pi k of
 // A(p, h) / |2 dPhi/dh| = A cos(gamma) / (2 |dPhi/dgamma|).
 vec3 marschnerNRaw(int p, float phi, MarschnerFiber f) {
-  float c = asin(1.0 / f.etaP);
+  float c = marschnerAsin(1.0 / f.etaP);
   float a = 6.0 * float(p) * c / MARSCHNER_PI - 2.0;
   float b = 8.0 * float(p) * c / (MARSCHNER_PI * MARSCHNER_PI * MARSCHNER_PI);
   float h = MARSCHNER_HALF_PI;
@@ -140,7 +152,7 @@ vec3 marschnerNTRT(float phi, MarschnerFiber f, MarschnerParams prm) {
   float hc = 0.0, phic = 0.0, dh = dhM, t;
   if (f.etaP < 2.0) {
     hc = sqrt((4.0 - f.etaP * f.etaP) / 3.0);
-    phic = 4.0 * asin(hc / f.etaP) - 2.0 * asin(hc) + MARSCHNER_TWO_PI;
+    phic = 4.0 * marschnerAsin(hc / f.etaP) - 2.0 * marschnerAsin(hc) + MARSCHNER_TWO_PI;
     float e2 = f.etaP * f.etaP - hc * hc, o2 = 1.0 - hc * hc;
     float d2 = abs(4.0 * hc / (e2 * sqrt(e2)) - 2.0 * hc / (o2 * sqrt(o2)));
     dh = d2 > 0.0 ? min(dhM, 2.0 * sqrt(2.0 * wc / d2)) : dhM;
@@ -152,15 +164,15 @@ vec3 marschnerNTRT(float phi, MarschnerFiber f, MarschnerParams prm) {
   float rm = exp(-dm * dm / (2.0 * wc * wc));  // g(wc, x) / g(wc, 0)
   float rp = exp(-dp * dp / (2.0 * wc * wc));
   vec3 n = marschnerNRaw(2, phi, f) * (1.0 - t * rm) * (1.0 - t * rp);
-  vec3 glint = marschnerAttenuation(2, asin(hc), f) * (t * kG * dh * (rm + rp) / (wc * MARSCHNER_SQRT_2PI));
+  vec3 glint = marschnerAttenuation(2, marschnerAsin(hc), f) * (t * kG * dh * (rm + rp) / (wc * MARSCHNER_SQRT_2PI));
   return n + glint;
 }
 
 vec3 marschnerDirect(vec3 L, vec3 V, vec3 T, MarschnerParams prm) {
   vec4 ang = marschnerAngles(L, V, T);
-  float ti = asin(ang.x), tr = asin(ang.y);
+  float ti = marschnerAsin(ang.x), tr = marschnerAsin(ang.y);
   float thetaH = 0.5 * (ti + tr), thetaD = 0.5 * (tr - ti);
-  float phi = acos(ang.z);
+  float phi = marschnerAcos(ang.z);
   float eta = prm.absorption.w;
   float cosD = max(cos(thetaD), 1e-4), sinD = sin(thetaD);
   float root = sqrt(eta * eta - sinD * sinD);

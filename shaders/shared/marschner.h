@@ -17,6 +17,7 @@ namespace hp::gpu {
 using vec3 = glm::vec3;
 using uvec4 = glm::uvec4;
 using glm::clamp;
+using std::abs;
 using glm::dot;
 using glm::inversesqrt;
 using glm::max;
@@ -73,6 +74,32 @@ HP_FN float marschnerPseudoAngle(float cos2a) {
 // the table holds both ends exactly and clamp-to-edge never extrapolates.
 HP_FN float marschnerTexelCentreCoord(float x, float n) {
   return (x * (n - 1.0f) + 0.5f) / n;
+}
+
+// asin and acos to float precision from +, *, sqrt only. Vulkan lets the built-ins err by 4096 ULP
+// (inherited from atan) and Mesa's are short polynomials off by up to ~1e-4 rad, which the 3.75-degree
+// M_TT Gaussian turns into errors of several tenths of a percent in S (measured on lavapipe).
+// Kernel: asin(x) = x + x z P(z), z = x^2, |x| <= 1/2; P is a degree-4 Chebyshev fit of
+// (asin(x)/x - 1)/z made for this project (relative error 1.7e-8 on [0, 1/2]). Larger |x| go through
+// asin(x) = pi/2 - 2 asin(sqrt((1 - x)/2)), where 1 - x is exact, so acos stays accurate near 0 and pi.
+HP_FN float marschnerAsinKernel(float x) {
+  float z = x * x;
+  float p = (((0.03808502356f * z + 0.02655454221f) * z + 0.04500138007f) * z + 0.07498855073f) * z +
+            0.1666667241f;
+  return x + x * z * p;
+}
+
+HP_FN float marschnerAsin(float x) {
+  float a = abs(x);
+  if (a <= 0.5f) return marschnerAsinKernel(x);
+  float r = 1.57079633f - 2.0f * marschnerAsinKernel(sqrt(max(0.0f, 0.5f - 0.5f * a)));
+  return x < 0.0f ? -r : r;
+}
+
+HP_FN float marschnerAcos(float x) {
+  if (abs(x) <= 0.5f) return 1.57079633f - marschnerAsinKernel(x);
+  float r = 2.0f * marschnerAsinKernel(sqrt(max(0.0f, 0.5f - 0.5f * abs(x))));
+  return x < 0.0f ? 3.14159265f - r : r;
 }
 
 // (sin theta_i, sin theta_r, cos phi, 0) from unit-or-not L, V, T (REFERENCES §3, eqs. 4-7).
