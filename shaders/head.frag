@@ -1,15 +1,18 @@
 #version 460
-// The head: diffuse with the paper's wrap term (wrap + N.L) / (1 + wrap), plus ambient.
+// The head: diffuse with the paper's wrap term (wrap + N.L) / (1 + wrap), plus ambient; hair-coloured
+// where hair grows.
 #include "shared/render.h"
 
 layout(std140, binding = RENDER_BINDING_FRAME) uniform Frame { RenderFrame frame; };
 layout(location = 0) in vec3 inNormal;
+layout(location = 1) in float inScalp;
 layout(location = 0) out vec4 outColor;
 
 void main() {
   vec3 N = normalize(inNormal);
   float wrap = frame.skinColor.w;
   float diffuse = max((wrap + dot(N, frame.lightDirection.xyz)) / (1.0 + wrap), 0.0);
-  vec3 albedo = frame.skinColor.rgb;
+  // Under the hair the scalp takes the hair's albedo, darkened as the hair's own shadow would.
+  vec3 albedo = mix(frame.skinColor.rgb, 0.5 * frame.hairColor.rgb, inScalp);
   outColor = vec4(albedo * (diffuse * frame.lightRadiance.rgb / 3.14159265 + frame.hairColor.w), 1.0);
 }

@@ -9,10 +9,12 @@ layout(std430, binding = RENDER_BINDING_ATTRIBUTES) readonly buffer Indices { ui
 layout(push_constant) uniform Push { mat4 headToWorld; };
 
 layout(location = 0) out vec3 outNormal;
+layout(location = 1) out float outScalp;  // 1 where hair grows
 
 void main() {
   uint i = indices[gl_VertexIndex];
   vec4 world = headToWorld * vec4(positions[i].xyz, 1.0);
   outNormal = mat3(headToWorld) * normals[i].xyz;
+  outScalp = normals[i].w;
   gl_Position = frame.proj * frame.view * world;
 }

@@ -107,6 +107,7 @@ HairAsset buildDefaultHeadAsset(const GrowthOptions& growth, const DensityOption
   asset.guides = growGuides(scalp, growth, asset.colliders, comb);
   asset.topology = buildInterpolationTopology(asset.guides.roots(), scalp.triangles, density);
   asset.head = makeDefaultHeadMesh();
+  markScalp(asset.head, asset.guides.roots());
   return asset;
 }
 }  // namespace hp

@@ -19,6 +19,9 @@ struct HeadMesh {
   std::vector<glm::vec3> positions;
   std::vector<glm::vec3> normals;      // unit, one per position
   std::vector<std::uint32_t> indices;  // triangle list, counter-clockwise seen from outside
+  // Per position, 1 where hair grows (the scalp shows through as hair colour), 0 on bare skin;
+  // empty means bare everywhere. Filled by markScalp (engine/hair/head_mesh.h).
+  std::vector<float> scalp;
 };
 
 struct HairAsset {

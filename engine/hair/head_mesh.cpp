@@ -1,5 +1,8 @@
 #include "engine/hair/head_mesh.h"
 
+#include <algorithm>
+#include <limits>
+
 #include <cmath>
 
 namespace hp {
@@ -31,5 +34,32 @@ void appendMesh(HeadMesh& into, const HeadMesh& part) {
   into.positions.insert(into.positions.end(), part.positions.begin(), part.positions.end());
   into.normals.insert(into.normals.end(), part.normals.begin(), part.normals.end());
   for (std::uint32_t i : part.indices) into.indices.push_back(base + i);
+}
+namespace {
+// Nearest distance from p to any root except index `skip`.
+float nearestRoot(const glm::vec3& p, std::span<const glm::vec3> roots, std::size_t skip) {
+  float best = std::numeric_limits<float>::infinity();
+  for (std::size_t i = 0; i < roots.size(); ++i)
+    if (i != skip) best = std::min(best, glm::length(roots[i] - p));
+  return best;
+}
+
+float meanRootSpacing(std::span<const glm::vec3> roots) {
+  const std::size_t samples = std::min<std::size_t>(roots.size(), 256);
+  const std::size_t stride = roots.size() / samples;
+  double sum = 0.0;
+  for (std::size_t k = 0; k < samples; ++k) sum += nearestRoot(roots[k * stride], roots, k * stride);
+  return float(sum / double(samples));
+}
+}  // namespace
+
+void markScalp(HeadMesh& mesh, std::span<const glm::vec3> roots) {
+  mesh.scalp.assign(mesh.positions.size(), 0.0f);
+  if (roots.size() < 2) return;
+  const float spacing = meanRootSpacing(roots);
+  for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
+    const float d = nearestRoot(mesh.positions[v], roots, roots.size());
+    mesh.scalp[v] = 1.0f - glm::smoothstep(spacing, 3.0f * spacing, d);
+  }
 }
 }  // namespace hp

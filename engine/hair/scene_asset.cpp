@@ -1,6 +1,7 @@
 // Scene -> HairAsset: dispatch on the model kind, then apply the scene's overrides.
 #include "engine/error.h"
 #include "engine/hair/default_head.h"
+#include "engine/hair/head_mesh.h"
 #include "engine/hair/fit_sphere.h"
 #include "engine/hair/hair_import.h"
 #include "engine/hair/obj_import.h"
@@ -32,7 +33,8 @@ HairAsset objAsset(const Scene& scene) {
 }
 }  // namespace
 
-HairAsset buildSceneAsset(const Scene& scene) {
+namespace {
+HairAsset modelAsset(const Scene& scene) {
   switch (scene.model.kind) {
     case ModelSpec::Kind::Hair:
       return importHairAsset(readHairFile(scene.model.path), importOptions(scene), scene.model.path.string());
@@ -43,6 +45,13 @@ HairAsset buildSceneAsset(const Scene& scene) {
   }
   HairAsset asset = buildDefaultHeadAsset(scene.growth, scene.density);
   if (scene.colliders) asset.colliders = *scene.colliders;
+  return asset;
+}
+}  // namespace
+
+HairAsset buildSceneAsset(const Scene& scene) {
+  HairAsset asset = modelAsset(scene);
+  if (asset.head.scalp.empty()) markScalp(asset.head, asset.guides.roots());
   return asset;
 }
 }  // namespace hp

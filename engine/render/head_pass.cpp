@@ -15,10 +15,11 @@ const vk::Binding kBindings[] = {
     {gpu::RENDER_BINDING_ATTRIBUTES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kVertex},
 };
 
-std::vector<glm::vec4> asVec4(const std::vector<glm::vec3>& v) {
+// xyz from v, w from `w` (or 1 where it is empty).
+std::vector<glm::vec4> asVec4(const std::vector<glm::vec3>& v, const std::vector<float>& w = {}) {
   std::vector<glm::vec4> out;
   out.reserve(v.size());
-  for (const auto& p : v) out.emplace_back(p, 1.0f);
+  for (std::size_t i = 0; i < v.size(); ++i) out.emplace_back(v[i], w.empty() ? 1.0f : w[i]);
   return out;
 }
 }  // namespace
@@ -27,6 +28,8 @@ HeadPass::HeadPass(const vk::Context& ctx, const HeadMesh& mesh, const vk::Buffe
                    const AttachmentFormats& formats)
     : indexCount_(static_cast<std::uint32_t>(mesh.indices.size())) {
   if (mesh.normals.size() != mesh.positions.size()) throw Error("head mesh: one normal per position is required");
+  if (!mesh.scalp.empty() && mesh.scalp.size() != mesh.positions.size())
+    throw Error("head mesh: one scalp weight per position is required");
   for (std::uint32_t i : mesh.indices)
     if (i >= mesh.positions.size()) throw Error("head mesh: index " + std::to_string(i) + " is out of range");
   set_ = vk::DescriptorSet(ctx, kBindings, "head");
@@ -48,7 +51,9 @@ HeadPass::HeadPass(const vk::Context& ctx, const HeadMesh& mesh, const vk::Buffe
   normals_ = vk::Buffer(ctx, mesh.normals.size() * sizeof(glm::vec4), kUsage, vk::MemoryKind::DeviceLocal, "head normals");
   indices_ = vk::Buffer(ctx, mesh.indices.size() * sizeof(std::uint32_t), kUsage, vk::MemoryKind::DeviceLocal, "head indices");
   vk::upload<glm::vec4>(ctx, positions_, asVec4(mesh.positions), vk::BufferUse::VertexRead);
-  vk::upload<glm::vec4>(ctx, normals_, asVec4(mesh.normals), vk::BufferUse::VertexRead);
+  // The normal's w carries the scalp weight: hair colour shows through where hair grows.
+  std::vector<float> scalp = mesh.scalp.empty() ? std::vector<float>(mesh.positions.size(), 0.0f) : mesh.scalp;
+  vk::upload<glm::vec4>(ctx, normals_, asVec4(mesh.normals, scalp), vk::BufferUse::VertexRead);
   vk::upload<std::uint32_t>(ctx, indices_, mesh.indices, vk::BufferUse::VertexRead);
   set_.writeStorageBuffer(gpu::RENDER_BINDING_POSITIONS, positions_.handle());
   set_.writeStorageBuffer(gpu::RENDER_BINDING_TANGENTS, normals_.handle());

@@ -1,5 +1,6 @@
 #pragma once
-// Contract: draws the opaque head mesh (HairAsset::head) with the paper's wrap lighting, depth test and
+// Contract: draws the opaque head mesh (HairAsset::head) with the paper's wrap lighting, the hair colour
+// where HeadMesh::scalp marks hair roots (so the scalp does not show bare between strands), depth test and
 // write on, into the caller's dynamic rendering. Owns the mesh buffers (uploaded once), pipeline and
 // descriptor set; reads the frame block the caller keeps up to date (RenderFrame, shaders/shared/render.h).
 // draw() must be called inside vkCmdBeginRendering with attachments matching `formats`.
