@@ -12,6 +12,9 @@
 // Deviations from the exact double-precision definition (engine/shading/marschner.cpp), for speed:
 //  - single precision throughout; cubic roots are refined by two Newton steps (float Cardano loses
 //    digits for small roots);
+//  - asin/acos are marschnerAsin/marschnerAcos (shared/marschner.h), not the built-ins: Vulkan allows
+//    the built-ins 4096 ULP and lavapipe's are off by ~1e-4 rad, which made the device's direct S
+//    miss by p99 0.31% (now 0.0003%); gamma_t needs only its cosine, so it is never formed;
 //  - cos theta_d is floored at 1e-4 (exact: 1e-6) and |dPhi/dgamma| at 1e-6 (exact: 1e-12), so the
 //    integrable singularities at |theta_d| -> 90 deg and at the cubic's own caustic saturate earlier;
 //  - N_R uses its closed form F(eta', eta'', -phi/2) cos(phi/2) / 4 instead of the root sum (equal:
