@@ -29,9 +29,9 @@ configure: deps
 build: configure
 	cmake --build $(BUILD) -j $(JOBS)
 
+# The default head from behind and to the side, where the hair is; 90 settling frames first.
 demo: build
-	mkdir -p out
-	./$(BUILD)/samples/hairpipe info
+	./$(BUILD)/samples/hairpipe render --camera-orbit 145 --out out/hair.png
 
 test: build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS) --timeout 900

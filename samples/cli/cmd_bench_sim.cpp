@@ -1,0 +1,104 @@
+// `hairpipe bench-sim`: GPU ms per frame of the simulation pass for 1k / 10k / 100k guides (the default
+// head's guides repeated), and its achieved bytes/s as a fraction of vkCmdCopyBuffer bandwidth measured
+// in the same run. Bytes counted per frame: positions and previous read + written, rest pose read.
+#include <algorithm>
+#include <iostream>
+
+#include <nlohmann/json.hpp>
+
+#include "compute/simulate_pass.h"
+#include "engine/error.h"
+#include "engine/hair/default_head.h"
+#include "engine/vk/barriers.h"
+#include "engine/vk/context.h"
+#include "engine/vk/copy_reference.h"
+#include "engine/vk/submit.h"
+#include "samples/cli/command.h"
+#include "samples/cli/scene_options.h"
+
+namespace {
+struct BenchOptions {
+  hp::cli::SceneOptions scene;
+  std::vector<std::uint32_t> guides{1000, 10000, 100000};
+  std::uint32_t frames = 20;
+  bool json = false;
+};
+
+hp::HairAsset repeatedGuides(const hp::HairAsset& head, std::uint32_t count) {
+  hp::HairAsset asset;
+  asset.colliders = head.colliders;
+  asset.guides.particlesPerGuide = head.guides.particlesPerGuide;
+  for (std::uint32_t g = 0; g < count; ++g)
+    for (const auto& p : head.guides.guide(g % head.guides.guideCount())) asset.guides.positions.push_back(p);
+  return asset;
+}
+
+double median(std::vector<double> v) {
+  std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
+  return v[v.size() / 2];
+}
+
+nlohmann::json benchOne(const hp::vk::Context& ctx, const hp::HairAsset& asset, std::uint32_t frames,
+                        const hp::vk::CopyReference& copy) {
+  hp::SimulatePass pass(ctx, asset, hp::SimulationParams{});
+  hp::vk::GpuProfiler profiler(ctx, 2 * frames + 2, "bench-sim");
+  std::vector<double> sim, copyMs;
+  for (std::uint32_t f = 0; f < frames; ++f) {
+    hp::vk::submitAndWait(ctx, [&](VkCommandBuffer cmd) {
+      profiler.reset(cmd);
+      hp::vk::memoryBarrier(cmd, hp::vk::BufferUse::ComputeWrite, hp::vk::BufferUse::ComputeWrite);
+      pass.record(cmd, {glm::mat4(1.0f), glm::mat4(1.0f), f / 60.0, false}, &profiler);
+      copy.record(cmd, profiler);
+    }, "bench-sim frame");
+    auto times = profiler.results();
+    sim.push_back(times[0].milliseconds);
+    copyMs.push_back(times[1].milliseconds);
+  }
+  const double particles = double(asset.guides.positions.size());
+  const double bytes = particles * 16.0 * 5.0;
+  const double simMs = median(sim), cMs = median(copyMs);
+  const double simGbs = hp::vk::gigabytesPerSecond(bytes, simMs);
+  const double copyGbs = hp::vk::gigabytesPerSecond(copy.bytesMoved(), cMs);
+  return {{"guides", asset.guides.guideCount()}, {"particles", particles}, {"ms", simMs}, {"bytes", bytes},
+          {"gb_per_s", simGbs}, {"copy_gb_per_s", copyGbs}, {"fraction_of_copy", simGbs / copyGbs}};
+}
+
+void runBench(const BenchOptions& o) {
+  if (o.frames == 0 || o.frames > 10000) throw hp::Error("--frames must be in [1, 10000]");
+  auto ctx = hp::cli::createContext(o.scene);
+  if (!ctx->timestampsSupported()) throw hp::Error("this device has no timestamps; cannot benchmark");
+  const hp::HairAsset head = hp::buildDefaultHeadAsset();
+  hp::vk::CopyReference copy(*ctx, 64ull << 20);
+  nlohmann::json report = {{"device", ctx->properties().deviceName},
+                           {"iterations", hp::SimulationParams{}.iterations},
+                           {"substeps", hp::SimulationParams{}.substeps},
+                           {"results", nlohmann::json::array()}};
+  for (std::uint32_t g : o.guides) {
+    if (g == 0 || g > 4000000) throw hp::Error("--guides values must be in [1, 4000000]");
+    report["results"].push_back(benchOne(*ctx, repeatedGuides(head, g), o.frames, copy));
+  }
+  hp::cli::checkValidation(*ctx);
+  if (o.json) {
+    std::cout << report.dump(2) << "\n";
+    return;
+  }
+  std::cout << "simulation on " << report["device"].get<std::string>() << " (median of " << o.frames << " frames)\n"
+            << "guides    ms/frame   GB/s   copy GB/s  of copy\n";
+  for (const auto& r : report["results"])
+    std::printf("%-9u %-10.3f %-6.3f %-10.2f %.1f%%\n", r["guides"].get<unsigned>(), r["ms"].get<double>(),
+                r["gb_per_s"].get<double>(), r["copy_gb_per_s"].get<double>(),
+                100.0 * r["fraction_of_copy"].get<double>());
+}
+
+void setupBench(CLI::App& app) {
+  auto o = std::make_shared<BenchOptions>();
+  CLI::App* cmd = app.add_subcommand("bench-sim", "Benchmark the simulation pass with GPU timestamps");
+  hp::cli::addSceneOptions(*cmd, o->scene);
+  cmd->add_option("--guides", o->guides, "Guide counts to measure (default 1000 10000 100000)");
+  cmd->add_option("--frames", o->frames, "Frames per measurement (median is reported)");
+  cmd->add_flag("--json", o->json, "Print JSON");
+  cmd->callback([o] { runBench(*o); });
+}
+}  // namespace
+
+HP_CLI_COMMAND(setupBench);
