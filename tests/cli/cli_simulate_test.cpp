@@ -1,0 +1,58 @@
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+
+#include "engine/hair/hair_file.h"
+#include "tests/support/cli_runner.h"
+
+using hp::test::runCli;
+
+TEST(CliSimulate, ReportsTheSettledStateAsJsonAndWritesTheGuides) {
+  const auto out = std::filesystem::temp_directory_path() / "hairpipe_cli_simulate.hair";
+  std::filesystem::remove(out);
+  auto r = runCli({"simulate", "--frames", "40", "--animate", "nod", "--json", "--validation", "--out", out.string()});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["frames"], 40);
+  EXPECT_EQ(j["animation"], "nod");
+  EXPECT_GT(j["guides"].get<int>(), 1000);
+  EXPECT_EQ(j["nan_count"], 0);
+  EXPECT_LT(j["max_length_error"].get<double>(), 0.01);
+  EXPECT_GE(j["min_collider_clearance"].get<double>(), -1e-5);
+  EXPECT_GT(j["max_speed"].get<double>(), 0.0);
+  EXPECT_GT(j["gpu_ms_per_frame_median"].get<double>(), 0.0);
+  hp::HairFileData guides = hp::readHairFile(out);
+  EXPECT_EQ(guides.strandPointCount(0), j["particles_per_guide"].get<std::uint32_t>());
+  EXPECT_EQ(guides.pointCount(), j["guides"].get<std::uint32_t>() * j["particles_per_guide"].get<std::uint32_t>());
+  std::filesystem::remove(out);
+}
+
+TEST(CliSimulate, BadParametersExitWithAMessageNamingThem) {
+  struct Case {
+    std::vector<std::string> args;
+    std::string needle;
+  };
+  const std::vector<Case> cases = {
+      {{"--dt", "0"}, "dt"},           {{"--dt", "nan"}, "dt"},
+      {{"--dt", "-0.1"}, "dt"},        {{"--iterations", "0"}, "iterations"},
+      {{"--iterations", "1001"}, "iterations"}, {{"--substeps", "0"}, "substeps"},
+      {{"--frames", "0"}, "frames"},   {{"--animate", "wobble"}, "wobble"},
+      {{"--model", "missing.hair"}, "missing.hair"},
+  };
+  for (const auto& c : cases) {
+    std::vector<std::string> args{"simulate"};
+    args.insert(args.end(), c.args.begin(), c.args.end());
+    auto r = runCli(args);
+    EXPECT_EQ(r.exitCode, 1) << c.args[0] << " " << c.args[1];
+    EXPECT_NE(r.err.find(c.needle), std::string::npos) << "stderr: " << r.err;
+  }
+}
+
+TEST(CliSimulate, AFailedRunLeavesNoOutputFile) {
+  const auto out = std::filesystem::temp_directory_path() / "hairpipe_cli_simulate_fail.hair";
+  std::filesystem::remove(out);
+  auto r = runCli({"simulate", "--iterations", "0", "--out", out.string()});
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_FALSE(std::filesystem::exists(out));
+}
