@@ -52,6 +52,9 @@ TEST_F(VulkanTest, BrdfDirectModeOnDeviceMatchesExactS) {
   auto a = measure(*ctx, LutMode::Direct);
   EXPECT_LE(a.p99, 0.001) << a.str();
   EXPECT_LE(a.relativeSum, 0.001) << a.str();
+  // Guards the two numerical fixes (own asin/acos: max was 18.6%; phi from the vectors instead of
+  // acos(cos phi): max was 0.47%, at phi ~ pi). Measured on lavapipe: 0.022%.
+  EXPECT_LE(a.max, 0.002) << a.str();
 }
 
 TEST_F(VulkanTest, BrdfFloatModeOnDeviceMatchesExactS) {
