@@ -108,6 +108,8 @@ bool MarschnerTextures::rebuild(const HairMaterial& material, LutMode mode) {
 }
 
 void MarschnerTextures::upload(const MarschnerLut& lut) {
+  // Refuse an unusable format before touching anything, so that failure keeps the old state too.
+  for (const LutTexture& t : lut.textures) requireLinearFiltering(ctx_, vkFormatOf(t.format), t.name);
   std::vector<const vk::Image*> uploaded;
   for (std::uint32_t slot = 0; slot < 3; ++slot) {
     if (slot >= lut.textures.size()) {
@@ -119,7 +121,6 @@ void MarschnerTextures::upload(const MarschnerLut& lut) {
     const vk::ImageDesc& have = images_[slot].desc();
     // Same size and format (same mode): refill in place so existing descriptors stay valid.
     if (!images_[slot] || have.width != t.width || have.height != t.height || have.format != format) {
-      requireLinearFiltering(ctx_, format, t.name);
       vk::ImageDesc desc;
       desc.width = t.width;
       desc.height = t.height;

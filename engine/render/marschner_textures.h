@@ -18,7 +18,9 @@
 // uses them (e.g. its frame fences, or Context::waitIdle in an owner that owns the queue); hairpipe never
 // waits idle on its own. Image views survive a rebuild when the mode (hence every size and format) is
 // unchanged; a mode change recreates them, so descriptors must be written again after any rebuild()
-// that returned true. A failed rebuild (invalid material) throws hp::Error and leaves the old state.
+// that returned true. An invalid material, or a LUT format the device cannot filter linearly (RGBA32F
+// on request), throws hp::Error and leaves the old state; a Vulkan failure during the upload itself
+// throws too and leaves the textures unusable.
 #include <volk.h>
 
 #include <cstdint>
