@@ -14,6 +14,8 @@
 //   attributes       StrandAttributes[S]
 // Vertex j of strand s is element s*Q + j. Per-strand arrays are split into chunks when they would
 // exceed maxStorageBufferRange; within a chunk, s is the chunk-local strand index.
+// Dispatch: tessellate has one invocation per smoothed vertex (G*Q); interpolate one per strand of
+// a chunk, looping over its Q vertices. Both use hpThreadId(WORKGROUP_SIZE) and bounds-check.
 #ifndef HP_SHARED_STRANDS_H
 #define HP_SHARED_STRANDS_H
 #include "common.h"
