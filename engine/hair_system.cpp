@@ -14,6 +14,7 @@ const HairSystemSettings& validated(const HairSystemSettings& s) {
   s.simulation.validate();
   s.material.validate();
   s.look.validate();
+  s.opacity.validate();
   return s;
 }
 }  // namespace
@@ -28,8 +29,10 @@ HairSystem::HairSystem(const vk::Context& ctx, const HairAsset& asset, const Hai
       interpolate_(ctx, strands_),
       marschner_(ctx, settings.material, settings.lutMode),
       frameBlock_(makeFrameBlock(ctx)),
+      bounds_(ctx, strands_),
+      opacity_(ctx, strands_, asset.head, bounds_.lightSpace(), settings.opacity),
       head_(ctx, asset.head, frameBlock_, settings.formats),
-      strandPass_(ctx, strands_, marschner_, frameBlock_, settings.formats) {}
+      strandPass_(ctx, strands_, marschner_, frameBlock_, opacity_.shadowInputs(), settings.formats) {}
 
 void HairSystem::recordUpdate(VkCommandBuffer cmd, const HeadMotion& motion, vk::GpuProfiler* profiler) {
   // The previous frame drew the strands and chained compute passes over the same buffers.
@@ -42,13 +45,42 @@ void HairSystem::recordUpdate(VkCommandBuffer cmd, const HeadMotion& motion, vk:
   interpolate_.record(cmd, profiler);
 }
 
-void HairSystem::recordPrepareDraw(VkCommandBuffer cmd, const DrawView& view) {
+void HairSystem::recordPrepareDraw(VkCommandBuffer cmd, const DrawView& view, vk::GpuProfiler* profiler) {
   gpu::RenderFrame frame = render::makeRenderFrame(view.camera, view.extent, view.light, settings_.material,
-                                                   settings_.look, strands_.layout().verticesPerStrand, false);
+                                                   settings_.look, strands_.layout().verticesPerStrand,
+                                                   settings_.opacity);
   vk::bufferBarrier(cmd, frameBlock_.handle(), vk::BufferUse::GraphicsRead, vk::BufferUse::TransferDst);
   vkCmdUpdateBuffer(cmd, frameBlock_.handle(), 0, sizeof(frame), &frame);
   vk::bufferBarrier(cmd, frameBlock_.handle(), vk::BufferUse::TransferDst, vk::BufferUse::GraphicsRead);
   vk::memoryBarrier(cmd, vk::BufferUse::ComputeWrite, vk::BufferUse::VertexRead);
+  if (settings_.opacity.enabled) recordShadows(cmd, view, profiler);
+}
+
+// bounds (reduce -> finalize) -> opacity maps. The strands' ComputeWrite -> VertexRead barrier above
+// is already recorded; the bounds pass reads them in compute too.
+void HairSystem::recordShadows(VkCommandBuffer cmd, const DrawView& view, vk::GpuProfiler* profiler) {
+  const VkBuffer light = bounds_.lightSpace().handle();
+  const glm::vec3 towardLight = view.light.direction;
+  compute::BoundsFraming framing;
+  framing.resolution = settings_.opacity.resolution;
+  framing.marginWorld = 0.5f * settings_.look.strandWidth * gpu::WIDTH_SCALE_MAX;
+  if (profiler) profiler->begin(cmd, "bounds");
+  vk::memoryBarrier(cmd, vk::BufferUse::ComputeWrite, vk::BufferUse::ComputeRead);
+  vk::bufferBarrier(cmd, light, vk::BufferUse::VertexRead, vk::BufferUse::ComputeWrite);  // last frame's readers
+  bounds_.recordReduce(cmd, towardLight);
+  vk::bufferBarrier(cmd, light, vk::BufferUse::ComputeWrite, vk::BufferUse::ComputeWrite);
+  bounds_.recordFinalize(cmd, towardLight, framing);
+  vk::bufferBarrier(cmd, light, vk::BufferUse::ComputeWrite, vk::BufferUse::VertexRead);
+  if (profiler) profiler->end(cmd);
+
+  const vk::Image& maps = opacity_.image();
+  if (profiler) profiler->begin(cmd, "opacity");
+  vk::imageBarrier(cmd, maps.handle(), VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::FragmentSampled,
+                   vk::ImageUse::ColorAttachment, gpu::OPACITY_TARGETS);
+  opacity_.record(cmd, view.headToWorld);
+  vk::imageBarrier(cmd, maps.handle(), VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::ColorAttachment,
+                   vk::ImageUse::FragmentSampled, gpu::OPACITY_TARGETS);
+  if (profiler) profiler->end(cmd);
 }
 
 void HairSystem::recordDraw(VkCommandBuffer cmd, const DrawView& view, vk::GpuProfiler* profiler) const {
@@ -64,6 +96,6 @@ void HairSystem::setMaterial(const HairMaterial& material, LutMode mode) {
   if (!marschner_.rebuild(material, mode)) return;
   settings_.material = material;
   settings_.lutMode = mode;
-  strandPass_.bind(strands_, marschner_, frameBlock_);
+  strandPass_.bind(strands_, marschner_, frameBlock_, opacity_.shadowInputs());
 }
 }  // namespace hp

@@ -12,6 +12,7 @@
 // HairSystem alive until the GPU has finished every command buffer it recorded into.
 #include <memory>
 
+#include "compute/bounds_pass.h"
 #include "compute/interpolate_pass.h"
 #include "compute/simulate_pass.h"
 #include "compute/strand_buffers.h"
@@ -22,6 +23,7 @@
 #include "engine/render/frame_block.h"
 #include "engine/render/head_pass.h"
 #include "engine/render/marschner_textures.h"
+#include "engine/render/opacity_pass.h"
 #include "engine/render/strand_pass.h"
 #include "engine/vk/profiler.h"
 
@@ -33,6 +35,7 @@ struct HairSystemSettings {
   compute::StrandOptions strands;
   render::AttachmentFormats formats;
   render::LookSettings look;
+  render::OpacitySettings opacity;
 };
 
 struct DrawView {
@@ -49,7 +52,7 @@ class HairSystem {
              const glm::mat4& initialHead = glm::mat4(1.0f));
 
   void recordUpdate(VkCommandBuffer cmd, const HeadMotion& motion, vk::GpuProfiler* profiler = nullptr);
-  void recordPrepareDraw(VkCommandBuffer cmd, const DrawView& view);
+  void recordPrepareDraw(VkCommandBuffer cmd, const DrawView& view, vk::GpuProfiler* profiler = nullptr);
   void recordDraw(VkCommandBuffer cmd, const DrawView& view, vk::GpuProfiler* profiler = nullptr) const;
 
   // Outside the frame loop, with the GPU done with this system: new material or LUT mode.
@@ -58,6 +61,8 @@ class HairSystem {
   SimulatePass& simulation() { return simulate_; }
   const compute::StrandBuffers& strands() const { return strands_; }
   const render::MarschnerTextures& marschner() const { return marschner_; }
+  const compute::BoundsPass& bounds() const { return bounds_; }
+  const render::OpacityPass& opacity() const { return opacity_; }
   const HairSystemSettings& settings() const { return settings_; }
 
  private:
@@ -69,7 +74,11 @@ class HairSystem {
   compute::InterpolatePass interpolate_;
   render::MarschnerTextures marschner_;
   vk::Buffer frameBlock_;
+  compute::BoundsPass bounds_;
+  render::OpacityPass opacity_;
   render::HeadPass head_;
   render::StrandPass strandPass_;
+
+  void recordShadows(VkCommandBuffer cmd, const DrawView& view, vk::GpuProfiler* profiler);
 };
 }  // namespace hp

@@ -17,7 +17,7 @@ void LookSettings::validate() const {
 
 gpu::RenderFrame makeRenderFrame(const CameraMatrices& camera, VkExtent2D extent, const LightSpec& light,
                                  const HairMaterial& material, const LookSettings& look,
-                                 std::uint32_t verticesPerStrand, bool opacityShadows) {
+                                 std::uint32_t verticesPerStrand, const OpacitySettings& opacity) {
   gpu::RenderFrame f{};
   f.view = camera.view;
   f.proj = camera.proj;
@@ -29,8 +29,8 @@ gpu::RenderFrame makeRenderFrame(const CameraMatrices& camera, VkExtent2D extent
   const glm::dvec3 albedo = glm::exp(-2.0 * material.absorption);
   f.hairColor = glm::vec4(glm::vec3(albedo), look.ambient);
   f.skinColor = glm::vec4(look.skinColor, look.wrap);
-  f.strand = glm::vec4(look.strandWidth, look.tipWidthFraction, 0.0f, 0.0f);
-  f.options = glm::uvec4(verticesPerStrand, opacityShadows ? 1u : 0u, 0u, 0u);
+  f.strand = glm::vec4(look.strandWidth, look.tipWidthFraction, opacity.k, opacity.biasSlices);
+  f.options = glm::uvec4(verticesPerStrand, opacity.enabled ? 1u : 0u, 0u, 0u);
   return f;
 }
 }  // namespace hp::render

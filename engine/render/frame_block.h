@@ -1,8 +1,9 @@
 #pragma once
 // Contract: fills the per-frame block the draw passes read (gpu::RenderFrame) from a camera, the light,
-// the hair material and the look settings. Pure host code.
+// the hair material, the look settings and the opacity shadow settings (on/off, k, bias). Pure host code.
 #include "engine/hair/scene.h"
 #include "engine/render/camera.h"
+#include "engine/render/opacity_settings.h"
 #include <volk.h>
 #include "shaders/shared/render.h"
 
@@ -20,5 +21,5 @@ struct LookSettings {
 
 gpu::RenderFrame makeRenderFrame(const CameraMatrices& camera, VkExtent2D extent, const LightSpec& light,
                                  const HairMaterial& material, const LookSettings& look,
-                                 std::uint32_t verticesPerStrand, bool opacityShadows);
+                                 std::uint32_t verticesPerStrand, const OpacitySettings& opacity);
 }  // namespace hp::render

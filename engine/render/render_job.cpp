@@ -46,7 +46,7 @@ RenderResult renderStill(const vk::Context& ctx, const HairAsset& asset, const R
   vk::submitAndWait(ctx, [&](VkCommandBuffer cmd) {
     profiler.reset(cmd);
     hair.recordUpdate(cmd, motion, &profiler);
-    hair.recordPrepareDraw(cmd, view);
+    hair.recordPrepareDraw(cmd, view, &profiler);
     renderer.record(cmd, hair, view, request.exposure, &profiler);
   }, "render frame");
 

@@ -13,6 +13,8 @@ const vk::Binding kBindings[] = {
     {gpu::RENDER_BINDING_LUT_M, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kFragment},
     {gpu::RENDER_BINDING_LUT_N0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kFragment},
     {gpu::RENDER_BINDING_LUT_N1, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kFragment},
+    {gpu::RENDER_BINDING_OPACITY, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kFragment},
+    {gpu::RENDER_BINDING_LIGHT, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kVertex},
     {gpu::RENDER_BINDING_POSITIONS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kVertex},
     {gpu::RENDER_BINDING_TANGENTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kVertex},
     {gpu::RENDER_BINDING_ATTRIBUTES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kVertex},
@@ -40,15 +42,15 @@ vk::GraphicsPipeline makePipeline(const vk::Context& ctx, VkDescriptorSetLayout 
 
 StrandPass::StrandPass(const vk::Context& ctx, const compute::StrandBuffers& strands,
                        const MarschnerTextures& marschner, const vk::Buffer& frameBlock,
-                       const AttachmentFormats& formats)
+                       const ShadowInputs& shadows, const AttachmentFormats& formats)
     : ctx_(ctx) {
-  bind(strands, marschner, frameBlock);
+  bind(strands, marschner, frameBlock, shadows);
   ribbons_ = makePipeline(ctx, sets_.front().layout(), formats, false);
   lines_ = makePipeline(ctx, sets_.front().layout(), formats, true);
 }
 
 void StrandPass::bind(const compute::StrandBuffers& strands, const MarschnerTextures& marschner,
-                      const vk::Buffer& frameBlock) {
+                      const vk::Buffer& frameBlock, const ShadowInputs& shadows) {
   strands_ = &strands;
   sets_.clear();
   for (const auto& chunk : strands.chunks()) {
@@ -59,6 +61,8 @@ void StrandPass::bind(const compute::StrandBuffers& strands, const MarschnerText
     set.writeStorageBuffer(gpu::RENDER_BINDING_POSITIONS, chunk.positions.handle());
     set.writeStorageBuffer(gpu::RENDER_BINDING_TANGENTS, chunk.tangents.handle());
     set.writeStorageBuffer(gpu::RENDER_BINDING_ATTRIBUTES, chunk.attributes.handle());
+    set.writeSampledImage(gpu::RENDER_BINDING_OPACITY, shadows.opacityView, shadows.sampler);
+    set.writeStorageBuffer(gpu::RENDER_BINDING_LIGHT, shadows.lightSpace);
     sets_.push_back(std::move(set));
   }
 }

@@ -2,7 +2,8 @@
 // Contract: draws the render strands as camera-facing ribbons (or lines) shaded with Marschner S, into
 // the caller's dynamic rendering: depth test and write on, alpha-to-coverage for sub-pixel strands.
 // Vertex pulling from the interpolate pass's chunk buffers (one descriptor set per chunk). Reads the
-// frame block and the Marschner resources; the caller keeps both current and orders the strand
+// frame block, the Marschner resources and the opacity maps + LightSpace (ShadowInputs: sampled in the
+// fragment shader, read in the vertex shader); the caller keeps them current and orders the strand
 // buffers' ComputeWrite before this pass's VertexRead. draw() goes inside vkCmdBeginRendering with
 // attachments matching `formats`.
 #include <vector>
@@ -10,6 +11,7 @@
 #include "compute/strand_buffers.h"
 #include "engine/render/attachment_formats.h"
 #include "engine/render/marschner_textures.h"
+#include "engine/render/opacity_pass.h"
 #include "engine/vk/descriptors.h"
 #include "engine/vk/pipeline.h"
 
@@ -17,9 +19,10 @@ namespace hp::render {
 class StrandPass {
  public:
   StrandPass(const vk::Context& ctx, const compute::StrandBuffers& strands, const MarschnerTextures& marschner,
-             const vk::Buffer& frameBlock, const AttachmentFormats& formats);
+             const vk::Buffer& frameBlock, const ShadowInputs& shadows, const AttachmentFormats& formats);
   // Rewrites every descriptor (after the strand buffers or the Marschner textures changed).
-  void bind(const compute::StrandBuffers& strands, const MarschnerTextures& marschner, const vk::Buffer& frameBlock);
+  void bind(const compute::StrandBuffers& strands, const MarschnerTextures& marschner, const vk::Buffer& frameBlock,
+            const ShadowInputs& shadows);
   void draw(VkCommandBuffer cmd, VkExtent2D extent, bool lines) const;
 
  private:

@@ -5,6 +5,7 @@
 #ifndef HP_SHARED_RENDER_H
 #define HP_SHARED_RENDER_H
 #include "common.h"
+#include "opacity.h"
 
 HP_BEGIN
 // Set 0 of the strand and head pipelines.
@@ -13,8 +14,8 @@ HP_CONST(uint, RENDER_BINDING_MARSCHNER, 1)   // UBO MarschnerParams (shaders/sh
 HP_CONST(uint, RENDER_BINDING_LUT_M, 2)       // sampler2D
 HP_CONST(uint, RENDER_BINDING_LUT_N0, 3)      // sampler2D
 HP_CONST(uint, RENDER_BINDING_LUT_N1, 4)      // sampler2D
-HP_CONST(uint, RENDER_BINDING_OPACITY, 5)     // sampler2DArray: 4 layers x RGBA = 16 opacity slices
-HP_CONST(uint, RENDER_BINDING_LIGHT, 6)       // storage LightSpace, written on the device by the bounds pass
+HP_CONST(uint, RENDER_BINDING_OPACITY, 5)     // sampler2DArray: 4 layers x RGBA = 16 opacity slices (shared/opacity.h)
+HP_CONST(uint, RENDER_BINDING_LIGHT, 6)       // storage LightSpace (shared/opacity.h), written on the device by the bounds pass
 HP_CONST(uint, RENDER_BINDING_POSITIONS, 7)   // strands: vec4[S*Q]; head: vec4 positions
 HP_CONST(uint, RENDER_BINDING_TANGENTS, 8)    // strands: vec4[S*Q]; head: vec4 normals
 HP_CONST(uint, RENDER_BINDING_ATTRIBUTES, 9)  // strands: StrandAttributes[S]; head: uint indices
@@ -23,7 +24,6 @@ HP_CONST(uint, TONEMAP_BINDING_HDR, 0)
 
 HP_CONST(uint, STRAND_VERTICES_PER_QUAD, 6)
 HP_CONST(uint, STRAND_VERTICES_PER_LINE, 2)
-HP_CONST(uint, OPACITY_SLICES, 16)            // REFERENCES.md §4: four RGBA targets
 
 struct RenderFrame {
   mat4 view;
@@ -33,17 +33,9 @@ struct RenderFrame {
   vec4 lightRadiance;    // rgb linear radiance of the light
   vec4 hairColor;        // rgb ambient albedo of the hair (exp(-2 sigma_a)); w = ambient strength
   vec4 skinColor;        // rgb albedo of the head; w = wrap in [0, 1]
-  vec4 strand;           // x = width at the root (scene units), y = width at the tip / root, z = shadow k, w = shadow bias (slices)
+  vec4 strand;           // x = width at the root (scene units), y = width at the tip / root, z = shadow k
+                         // (T = exp(-k alpha)), w = shadow bias in slices (lookups move this far toward the light)
   uvec4 options;         // x = vertices per strand Q, y = 1 when opacity shadows are on, zw = 0
-};
-
-// Light-space framing of the hair for the opacity maps, written by the bounds pass on the device.
-struct LightSpace {
-  mat4 viewProj;         // world -> light clip space (orthographic, directional light)
-  vec4 depthRange;       // x = z_near, y = z_far (light view depth, growing away from the light), z = d_z, w = 1 / d_z
-  vec4 lightView0;       // rows of the light view matrix (world -> light view), for depth per vertex
-  vec4 lightView1;
-  vec4 lightView2;
 };
 
 struct StrandDrawPush {
@@ -66,7 +58,6 @@ HP_END
 static_assert(offsetof(hp::gpu::RenderFrame, cameraPosition) == 128);
 static_assert(offsetof(hp::gpu::RenderFrame, options) == 224);
 static_assert(sizeof(hp::gpu::RenderFrame) == 240);
-static_assert(sizeof(hp::gpu::LightSpace) == 128);
 static_assert(sizeof(hp::gpu::StrandDrawPush) == 16);
 static_assert(sizeof(hp::gpu::TonemapPush) == 16);
 #endif

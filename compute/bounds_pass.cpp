@@ -1,0 +1,92 @@
+#include "compute/bounds_pass.h"
+
+#include <cmath>
+#include <string>
+
+#include "engine/vk/transfer.h"
+
+namespace hp::compute {
+namespace {
+constexpr VkShaderStageFlags kCompute = VK_SHADER_STAGE_COMPUTE_BIT;
+constexpr VkDescriptorType kStorage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+const vk::Binding kBindings[] = {
+    {gpu::BOUNDS_BINDING_POSITIONS, kStorage, kCompute},
+    {gpu::BOUNDS_BINDING_LIGHT, kStorage, kCompute},
+};
+constexpr float kBig = 3.0e38f;  // the shader's empty-reduction value
+}  // namespace
+
+glm::mat3 lightBasisRows(const glm::vec3& towardLight) {
+  const glm::vec3 z = glm::normalize(towardLight);
+  const glm::vec3 up = std::abs(z.y) > 0.99f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0);
+  const glm::vec3 x = glm::normalize(glm::cross(up, z));
+  const glm::vec3 y = glm::cross(z, x);
+  return glm::transpose(glm::mat3(x, y, z));  // rows x, y, z
+}
+
+gpu::LightSpace initialLightSpace() {
+  gpu::LightSpace l{};
+  l.viewProj = glm::mat4(1.0f);
+  l.depthRange = glm::vec4(0.0f, 1.0f, 1.0f / gpu::OPACITY_SLICES, float(gpu::OPACITY_SLICES));
+  l.extent = glm::vec4(-1, -1, 1, 1);
+  l.minBits = glm::uvec4(gpu::orderedFromFloat(kBig));
+  l.maxBits = glm::uvec4(gpu::orderedFromFloat(-kBig));
+  return l;
+}
+
+BoundsPass::BoundsPass(const vk::Context& ctx, const StrandBuffers& strands)
+    : ctx_(&ctx),
+      lightSpace_(ctx, sizeof(gpu::LightSpace), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT |
+                                                   VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                  vk::MemoryKind::DeviceLocal, "light space"),
+      layoutSet_(ctx, kBindings, "bounds layout"),
+      pipeline_(ctx, "bounds.comp", gpu::BOUNDS_WORKGROUP_SIZE, {layoutSet_.layout()}, sizeof(gpu::BoundsPush),
+                "bounds") {
+  const gpu::LightSpace initial = initialLightSpace();
+  vk::uploadBytes(ctx, lightSpace_, &initial, sizeof(initial), vk::BufferUse::VertexRead);
+  bind(strands);
+}
+
+void BoundsPass::bind(const StrandBuffers& strands) {
+  std::vector<Chunk> chunks;
+  for (const StrandChunk& c : strands.chunks()) {
+    Chunk chunk{vk::DescriptorSet(*ctx_, kBindings, "bounds [chunk " + std::to_string(chunks.size()) + "]"),
+                c.range.strandCount * strands.layout().verticesPerStrand};
+    chunk.set.writeStorageBuffer(gpu::BOUNDS_BINDING_POSITIONS, c.positions.handle());
+    chunk.set.writeStorageBuffer(gpu::BOUNDS_BINDING_LIGHT, lightSpace_.handle());
+    chunks.push_back(std::move(chunk));
+  }
+  chunks_ = std::move(chunks);
+}
+
+gpu::BoundsPush BoundsPass::push(const glm::vec3& towardLight) const {
+  const glm::mat3 rows = glm::transpose(lightBasisRows(towardLight));  // columns = rows of the basis
+  gpu::BoundsPush p{};
+  p.row0 = glm::vec4(rows[0], 0.0f);
+  p.row1 = glm::vec4(rows[1], 0.0f);
+  p.row2 = glm::vec4(rows[2], 0.0f);
+  return p;
+}
+
+void BoundsPass::recordReduce(VkCommandBuffer cmd, const glm::vec3& towardLight) const {
+  gpu::BoundsPush p = push(towardLight);
+  p.mode = gpu::BOUNDS_MODE_REDUCE;
+  for (const Chunk& c : chunks_) {
+    p.vertexCount = c.vertexCount;
+    pipeline_.bind(cmd, c.set.set());
+    pipeline_.push(cmd, p);
+    pipeline_.dispatch(cmd, (c.vertexCount + gpu::BOUNDS_VERTICES_PER_THREAD - 1) / gpu::BOUNDS_VERTICES_PER_THREAD);
+  }
+}
+
+void BoundsPass::recordFinalize(VkCommandBuffer cmd, const glm::vec3& towardLight, const BoundsFraming& f) const {
+  gpu::BoundsPush p = push(towardLight);
+  p.mode = gpu::BOUNDS_MODE_FINALIZE;
+  p.marginWorld = f.marginWorld;
+  p.marginTexels = f.marginTexels;
+  p.resolution = f.resolution;
+  pipeline_.bind(cmd, chunks_.front().set.set());
+  pipeline_.push(cmd, p);
+  pipeline_.dispatch(cmd, 1);
+}
+}  // namespace hp::compute

@@ -1,0 +1,32 @@
+#include "engine/render/opacity_settings.h"
+
+#include <cmath>
+#include <sstream>
+#include <string>
+
+#include "engine/error.h"
+#include "shaders/shared/opacity.h"
+
+namespace hp::render {
+namespace {
+void checkRange(float value, float lo, float hi, bool loOpen, const char* field) {
+  const bool ok = std::isfinite(value) && (loOpen ? value > lo : value >= lo) && value <= hi;
+  if (ok) return;
+  std::ostringstream m;
+  m << "opacity settings: " << field << " must be in " << (loOpen ? "(" : "[") << lo << ", " << hi << "], got "
+    << value;
+  throw Error(m.str());
+}
+}  // namespace
+
+void OpacitySettings::validate() const {
+  if (resolution < 16 || resolution > 4096)
+    throw Error("opacity settings: resolution must be in [16, 4096], got " + std::to_string(resolution));
+  checkRange(strandOpacity, 0.0f, 100.0f, true, "strandOpacity");
+  checkRange(headOpacity, 0.0f, 1.0e4f, false, "headOpacity");
+  checkRange(k, 0.0f, 1.0e3f, false, "k");
+  checkRange(biasSlices, 0.0f, float(gpu::OPACITY_SLICES), false, "biasSlices");
+  if (format != VK_FORMAT_R32G32B32A32_SFLOAT && format != VK_FORMAT_R16G16B16A16_SFLOAT)
+    throw Error("opacity settings: format must be RGBA32F or RGBA16F");
+}
+}  // namespace hp::render

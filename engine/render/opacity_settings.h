@@ -1,0 +1,23 @@
+#pragma once
+// Contract: the opacity shadow map settings of a HairSystem (REFERENCES.md §4; engine/render/README.md
+// "Opacity shadow maps"). Pure host data; validate() throws hp::Error naming the field.
+#include <volk.h>
+
+#include <cstdint>
+
+namespace hp::render {
+struct OpacitySettings {
+  bool enabled = true;
+  std::uint32_t resolution = 512;   // texels per side, [16, 4096] (docs/PERFORMANCE.md "Opacity maps")
+  // Opacity one strand line adds to the texels it crosses. alpha = opacity x crossings, and with lines
+  // each texel a strand crosses counts once, so the density per texel scales with texel size.
+  float strandOpacity = 0.04f;      // (0, 100]
+  float headOpacity = 50.0f;        // per head fragment, [0, 1e4]; T = exp(-k 50) is black behind the head
+  float k = 1.0f;                   // T = exp(-k alpha), [0, 1e3]
+  float biasSlices = 1.0f;          // lookups move this many slices toward the light, [0, 16]
+  // RGBA32F: exact additive sums (RGBA16F stalls adding 0.04 past alpha ~ 8); measured no slower on
+  // lavapipe. RGBA16F is accepted for devices where bandwidth matters more.
+  VkFormat format = VK_FORMAT_R32G32B32A32_SFLOAT;
+  void validate() const;            // throws hp::Error naming the field
+};
+}  // namespace hp::render

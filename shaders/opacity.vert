@@ -1,0 +1,23 @@
+#version 460
+// Opacity maps, strands (REFERENCES.md §4): every segment of every render strand as a line seen from
+// the light, pulled from the chunk's position buffer (line list, 2 vertices per segment). The light
+// depth travels as the slice coordinate s = 16 clip.z; clip z is a constant so no hair or head part
+// is ever depth-clipped (there is no depth test: opacity is additive, order-independent).
+#include "shared/opacity.h"
+
+layout(std430, binding = OPACITY_BINDING_POSITIONS) readonly buffer Positions { vec4 positions[]; };
+layout(std430, binding = OPACITY_BINDING_LIGHT) readonly buffer Light { LightSpace light; };
+layout(push_constant) uniform Push { OpacityPush push; };
+
+layout(location = 0) out float outSlice;
+
+void main() {
+  uint q = push.verticesPerStrand;
+  uint segment = gl_VertexIndex / 2u;
+  uint strand = segment / (q - 1u);
+  uint k = segment % (q - 1u);
+  uint v = strand * q + k + (gl_VertexIndex & 1u);
+  vec4 clip = light.viewProj * vec4(positions[v].xyz, 1.0);
+  outSlice = clip.z * float(OPACITY_SLICES);
+  gl_Position = vec4(clip.xy, 0.5, 1.0);
+}

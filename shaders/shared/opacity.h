@@ -1,0 +1,105 @@
+// Shared by GLSL and C++: opacity shadow maps (REFERENCES.md §4): the bounds pass
+// (compute/bounds_pass.h, shaders/bounds.comp), the opacity pass (engine/render/opacity_pass.h,
+// shaders/opacity*.vert/.frag) and the lookup in the shading passes (shaders/opacity_lookup.glsl).
+//
+// Light space. For a directional light with unit direction L (from the hair toward the light), the
+// host builds an orthonormal basis (rows r0, r1, r2 = L; see lightBasis in bounds_pass.cpp): a point p
+// has light coordinates x = r0.p, y = r1.p and depth d = -L.p (growing away from the light). The
+// bounds pass reduces [x, y, d] over every render strand vertex and builds an orthographic
+// viewProj: clip.xy in [-1, 1] over the padded x/y box, clip.z = (d - z_near) / (z_far - z_near), so
+// the continuous slice coordinate of a point is s = OPACITY_SLICES * clip.z and slice i
+// (i = 1..16) sits at s = i, i.e. depth z_i = z_near + i d_z.
+//
+// Opacity maps: one 2D-array image of OPACITY_TARGETS layers, RGBA; slice i is layer (i-1)/4,
+// channel (i-1)%4, and holds alpha(z_i) = sum of the per-fragment opacities at s <= i.
+#ifndef HP_SHARED_OPACITY_H
+#define HP_SHARED_OPACITY_H
+#include "common.h"
+
+HP_BEGIN
+HP_CONST(uint, OPACITY_SLICES, 16)
+HP_CONST(uint, OPACITY_TARGETS, 4)            // RGBA layers: OPACITY_SLICES / 4
+// A fragment at slice coordinate s adds to slice i when s <= i + OPACITY_SLICE_EPSILON, so hair at
+// exactly z_far (s = 16 up to rounding) still lands in slice 16.
+HP_CONST(float, OPACITY_SLICE_EPSILON, 1.0e-3f)
+
+// Bounds pass (compute): per chunk a reduction, then one finalize dispatch.
+HP_CONST(uint, BOUNDS_WORKGROUP_SIZE, 256)
+HP_CONST(uint, BOUNDS_VERTICES_PER_THREAD, 8)
+HP_CONST(uint, BOUNDS_BINDING_POSITIONS, 0)   // vec4[chunk strands * Q] render strand positions
+HP_CONST(uint, BOUNDS_BINDING_LIGHT, 1)       // LightSpace (read-modify-write)
+HP_CONST(uint, BOUNDS_MODE_REDUCE, 0)
+HP_CONST(uint, BOUNDS_MODE_FINALIZE, 1)
+
+// Opacity pass (graphics): strands as lines, the head as triangles.
+HP_CONST(uint, OPACITY_BINDING_POSITIONS, 0)  // strands: vec4[chunk strands * Q]; head: vec4 positions
+HP_CONST(uint, OPACITY_BINDING_INDICES, 1)    // head only: uint indices (triangle list)
+HP_CONST(uint, OPACITY_BINDING_LIGHT, 2)      // LightSpace (read)
+
+// Light-space framing, written on the device by the bounds pass and read by every later pass.
+struct LightSpace {
+  mat4 viewProj;      // world -> light clip (orthographic); see the header comment
+  vec4 depthRange;    // x = z_near, y = z_far (light depth d = -L.p), z = d_z = (z_far - z_near) / 16, w = 1 / d_z
+  vec4 extent;        // x, y = min light x, y; z, w = max light x, y (padded box the map covers)
+  uvec4 minBits;      // reduction accumulators: order-preserving uint encodings (orderedFromFloat) of
+  uvec4 maxBits;      // min / max of (x, y, d); the finalize step re-arms them for the next frame
+};
+
+struct BoundsPush {
+  vec4 row0;          // light basis rows (world -> light x, y), w = 0
+  vec4 row1;
+  vec4 row2;          // = L; light depth d = -dot(row2.xyz, p)
+  uint vertexCount;   // vertices in this chunk (reduce)
+  uint mode;          // BOUNDS_MODE_*
+  float marginWorld;  // x/y padding added on each side (half the widest strand), scene units
+  float marginTexels; // extra x/y padding in texels of the opacity map
+  uint resolution;    // opacity map size (texels per side)
+  uint pad0;
+  uint pad1;
+  uint pad2;
+};
+
+struct OpacityPush {
+  mat4 headToWorld;   // head draws only
+  float opacity;      // added per fragment (strand or head)
+  uint verticesPerStrand;  // strands: Q
+  uint pad0;
+  uint pad1;
+};
+HP_END
+
+// Order-preserving float <-> uint: a < b (floats, no NaN) iff encode(a) < encode(b) (uints), so
+// atomicMin/atomicMax on the encodings reduce floats.
+#ifdef __cplusplus
+#include <bit>
+namespace hp::gpu {
+inline std::uint32_t orderedFromFloat(float f) {
+  std::uint32_t u = std::bit_cast<std::uint32_t>(f);
+  return (u & 0x80000000u) ? ~u : (u | 0x80000000u);
+}
+inline float floatFromOrdered(std::uint32_t u) {
+  return std::bit_cast<float>((u & 0x80000000u) ? (u & 0x7fffffffu) : ~u);
+}
+}  // namespace hp::gpu
+#else
+uint orderedFromFloat(float f) {
+  uint u = floatBitsToUint(f);
+  return (u & 0x80000000u) != 0u ? ~u : (u | 0x80000000u);
+}
+float floatFromOrdered(uint u) {
+  return uintBitsToFloat((u & 0x80000000u) != 0u ? (u & 0x7fffffffu) : ~u);
+}
+#endif
+
+#ifdef __cplusplus
+#include <cstddef>
+static_assert(hp::gpu::OPACITY_SLICES == 4 * hp::gpu::OPACITY_TARGETS);
+static_assert(sizeof(hp::gpu::LightSpace) == 128);
+static_assert(offsetof(hp::gpu::LightSpace, depthRange) == 64);
+static_assert(offsetof(hp::gpu::LightSpace, minBits) == 96);
+static_assert(sizeof(hp::gpu::BoundsPush) == 80);
+static_assert(offsetof(hp::gpu::BoundsPush, vertexCount) == 48);
+static_assert(sizeof(hp::gpu::OpacityPush) == 80);
+static_assert(offsetof(hp::gpu::OpacityPush, opacity) == 64);
+#endif
+#endif
