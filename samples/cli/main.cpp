@@ -20,7 +20,10 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e);
+    // --help and --version print and succeed; every other parse error is a usage error: exit code 1,
+    // like every other failure of the tool.
+    const int code = app.exit(e);
+    return code == 0 ? 0 : 1;
   } catch (const hp::Error& e) {
     std::cerr << "hairpipe: error: " << e.what() << "\n";
     return 1;

@@ -44,3 +44,12 @@ TEST(CliHelp, EverySubcommandHasHelp) {
   EXPECT_NE(info.out.find("--device"), std::string::npos);
   EXPECT_NE(info.out.find("--json"), std::string::npos);
 }
+
+TEST(CliUsage, UsageErrorsExitWithCodeOneAndHelpSucceeds) {
+  EXPECT_EQ(runCli({"nosuchcommand"}).exitCode, 1);
+  EXPECT_EQ(runCli({"info", "--no-such-flag"}).exitCode, 1);
+  auto r = runCli({"lut", "--mode", "bogus", "--out", "/tmp/hairpipe-never"});
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_NE(r.err.find("bogus"), std::string::npos) << r.err;
+  EXPECT_EQ(runCli({"--version"}).exitCode, 0);
+}
