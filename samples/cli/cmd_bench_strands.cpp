@@ -22,6 +22,7 @@
 #include "engine/hair/default_head.h"
 #include "engine/vk/barriers.h"
 #include "engine/vk/context.h"
+#include "engine/vk/copy_reference.h"
 #include "engine/vk/submit.h"
 #include "samples/cli/command.h"
 
@@ -58,16 +59,11 @@ void countBytes(Result& r) {
 // One frame: the previous frame's writes are done (the frame recorder's barrier), then the passes,
 // then the reference copy.
 void recordFrame(VkCommandBuffer cmd, hp::vk::GpuProfiler& profiler, const hp::compute::TessellatePass& tessellate,
-                 const hp::compute::InterpolatePass& interpolate, const hp::vk::Buffer& src,
-                 const hp::vk::Buffer& dst) {
+                 const hp::compute::InterpolatePass& interpolate, const hp::vk::CopyReference& copy) {
   profiler.reset(cmd);
   hp::vk::memoryBarrier(cmd, hp::vk::BufferUse::ComputeWrite, hp::vk::BufferUse::ComputeWrite);
   hp::compute::recordStrandPasses(cmd, tessellate, interpolate, &profiler);
-  hp::vk::bufferBarrier(cmd, dst.handle(), hp::vk::BufferUse::TransferDst, hp::vk::BufferUse::TransferDst);
-  profiler.begin(cmd, "copy");
-  VkBufferCopy region{0, 0, kCopyBytes};
-  vkCmdCopyBuffer(cmd, src.handle(), dst.handle(), 1, &region);
-  profiler.end(cmd);
+  copy.record(cmd, profiler);
 }
 
 Result benchOne(const hp::vk::Context& ctx, std::uint32_t strands, const BenchOptions& o) {
@@ -81,18 +77,12 @@ Result benchOne(const hp::vk::Context& ctx, std::uint32_t strands, const BenchOp
   hp::vk::Buffer particles = hp::compute::uploadGuideParticles(ctx, guides);
   hp::compute::TessellatePass tessellate(ctx, particles, buffers);
   hp::compute::InterpolatePass interpolate(ctx, buffers);
-  const VkBufferUsageFlags copyUsage = VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
-  hp::vk::Buffer src(ctx, kCopyBytes, copyUsage, hp::vk::MemoryKind::DeviceLocal, "bench copy source");
-  hp::vk::Buffer dst(ctx, kCopyBytes, copyUsage, hp::vk::MemoryKind::DeviceLocal, "bench copy destination");
-  hp::vk::submitAndWait(ctx, [&](VkCommandBuffer cmd) {
-    vkCmdFillBuffer(cmd, src.handle(), 0, kCopyBytes, 0x3f800000u);
-    hp::vk::bufferBarrier(cmd, src.handle(), hp::vk::BufferUse::TransferDst, hp::vk::BufferUse::TransferSrc);
-  }, "bench copy fill");
+  hp::vk::CopyReference copy(ctx, kCopyBytes);
   hp::vk::GpuProfiler profiler(ctx, 8, "bench strands");
   std::map<std::string, std::vector<double>> times;
   for (std::uint32_t f = 0; f <= o.frames; ++f) {  // frame 0 warms up (first touch of the memory)
     const auto start = std::chrono::steady_clock::now();
-    hp::vk::submitAndWait(ctx, [&](VkCommandBuffer cmd) { recordFrame(cmd, profiler, tessellate, interpolate, src, dst); },
+    hp::vk::submitAndWait(ctx, [&](VkCommandBuffer cmd) { recordFrame(cmd, profiler, tessellate, interpolate, copy); },
                           "bench strands frame");
     const double wallMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     if (f == 0) continue;
@@ -109,7 +99,7 @@ Result benchOne(const hp::vk::Context& ctx, std::uint32_t strands, const BenchOp
   return r;
 }
 
-double gbPerSecond(double bytes, double ms) { return ms > 0 ? bytes / (ms * 1e6) : 0.0; }
+double gbPerSecond(double bytes, double ms) { return hp::vk::gigabytesPerSecond(bytes, ms); }
 
 nlohmann::json toJson(const Result& r) {
   const double copyGbs = gbPerSecond(2.0 * kCopyBytes, r.copyMs);

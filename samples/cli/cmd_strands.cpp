@@ -16,6 +16,7 @@
 #include "engine/hair/scene.h"
 #include "engine/vk/context.h"
 #include "samples/cli/command.h"
+#include "samples/cli/scene_options.h"
 #include "shaders/shared/strands.h"
 
 namespace {
@@ -23,33 +24,14 @@ namespace {
 constexpr std::int64_t kMaxDensity = 2'000'000;
 
 struct StrandsOptions {
-  std::string scene;
-  std::string model = "default";
+  hp::cli::SceneOptions scene;
   std::int64_t density = -1;  // -1: the scene's own density
   std::int64_t vertices = hp::compute::kDefaultVerticesPerStrand;
   bool guidesOnly = false;
   std::string out;
   bool json = false;
-  std::string device;
-  bool validation = false;
 };
 
-hp::Scene loadScene(const StrandsOptions& o) {
-  if (!o.scene.empty()) return hp::loadSceneFile(o.scene);
-  hp::Scene scene;
-  if (o.model == "default") return scene;
-  const std::filesystem::path path(o.model);
-  const std::string ext = path.extension().string();
-  if (ext == ".hair")
-    scene.model.kind = hp::ModelSpec::Kind::Hair;
-  else if (ext == ".obj")
-    scene.model.kind = hp::ModelSpec::Kind::Obj;
-  else
-    throw hp::Error("--model " + o.model + ": expected 'default', a .hair file or an .obj file");
-  scene.model.path = path;
-  scene.source = o.model;
-  return scene;
-}
 
 void checkOptions(const StrandsOptions& o) {
   if (o.density != -1 && (o.density < 1 || o.density > kMaxDensity))
@@ -92,7 +74,7 @@ void report(const StrandsOptions& o, const hp::HairAsset& asset, const hp::compu
 
 void runStrands(const StrandsOptions& o) {
   checkOptions(o);
-  hp::Scene scene = loadScene(o);
+  hp::Scene scene = hp::cli::loadScene(o.scene);
   if (o.density != -1) {
     scene.density.mode = hp::DensityOptions::Mode::Total;
     scene.density.totalStrands = static_cast<std::uint32_t>(o.density);
@@ -102,19 +84,14 @@ void runStrands(const StrandsOptions& o) {
   if (o.vertices < particles)
     throw hp::Error("--vertices must be at least the particles per guide (" + std::to_string(particles) + "), got " +
                     std::to_string(o.vertices));
-  hp::vk::ContextOptions ctxOptions;
-  ctxOptions.device = o.device;
-  ctxOptions.validation = o.validation;
-  auto ctx = hp::vk::Context::createHeadless(ctxOptions);
-  ctx->validationLog().setEcho(true);
+  auto ctx = hp::cli::createContext(o.scene);
   hp::compute::StrandOptions options;
   options.verticesPerStrand = static_cast<std::uint32_t>(o.vertices);
   options.guidesOnly = o.guidesOnly;
   const std::string info = std::string("hairpipe strands ") + (o.guidesOnly ? "guides-only " : "") +
                            std::to_string(o.vertices) + " vertices: " + scene.source;
   hp::compute::StrandRun run = hp::compute::computeRenderStrands(*ctx, asset, options, info);
-  if (ctx->validationEnabled() && ctx->validationLog().problemCount() > 0)
-    throw hp::Error(std::to_string(ctx->validationLog().problemCount()) + " Vulkan validation message(s) were reported");
+  hp::cli::checkValidation(*ctx);
   hp::writeHairFile(o.out, run.hair);
   report(o, asset, run, *ctx);
 }
@@ -123,16 +100,13 @@ void setupStrands(CLI::App& app) {
   auto o = std::make_shared<StrandsOptions>();
   CLI::App* cmd = app.add_subcommand(
       "strands", "Tessellate and interpolate the hair on the device and write the render strands as .hair");
-  auto* scene = cmd->add_option("--scene", o->scene, "Scene file (JSON; schema in engine/hair/README.md)");
-  cmd->add_option("--model", o->model, "Model when no scene is given: default, FILE.hair or FILE.obj")->excludes(scene);
+  hp::cli::addSceneOptions(*cmd, o->scene);
   cmd->add_option("--density", o->density, "Render strands in total (overrides the scene), 1-2000000");
   cmd->add_option("--vertices", o->vertices, "Vertices per smoothed strand (Q), particles per guide to 256")
       ->capture_default_str();
   cmd->add_flag("--guides-only", o->guidesOnly, "Debug: write the smoothed guides (one strand per guide), no interpolation");
   cmd->add_option("--out", o->out, "Output .hair file (written atomically)")->required();
   cmd->add_flag("--json", o->json, "Print a JSON report");
-  cmd->add_option("--device", o->device, "Vulkan device: index or name substring (env HAIRPIPE_DEVICE)");
-  cmd->add_flag("--validation", o->validation, "Run with the Khronos validation layer; fail on any message");
   cmd->callback([o] { runStrands(*o); });
 }
 }  // namespace
