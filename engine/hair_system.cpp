@@ -53,31 +53,31 @@ void HairSystem::recordPrepareDraw(VkCommandBuffer cmd, const DrawView& view, vk
   vkCmdUpdateBuffer(cmd, frameBlock_.handle(), 0, sizeof(frame), &frame);
   vk::bufferBarrier(cmd, frameBlock_.handle(), vk::BufferUse::TransferDst, vk::BufferUse::GraphicsRead);
   vk::memoryBarrier(cmd, vk::BufferUse::ComputeWrite, vk::BufferUse::VertexRead);
-  if (settings_.opacity.enabled) recordShadows(cmd, view, profiler);
-}
-
-// bounds (reduce -> finalize) -> opacity maps. The strands' ComputeWrite -> VertexRead barrier above
-// is already recorded; the bounds pass reads them in compute too.
-void HairSystem::recordShadows(VkCommandBuffer cmd, const DrawView& view, vk::GpuProfiler* profiler) {
-  const VkBuffer light = bounds_.lightSpace().handle();
-  const glm::vec3 towardLight = view.light.direction;
+  if (!settings_.opacity.enabled) return;
   compute::BoundsFraming framing;
   framing.resolution = settings_.opacity.resolution;
   framing.marginWorld = 0.5f * settings_.look.strandWidth * gpu::WIDTH_SCALE_MAX;
+  recordShadowPasses(cmd, bounds_, opacity_, view.light.direction, framing, view.headToWorld, profiler);
+}
+
+void recordShadowPasses(VkCommandBuffer cmd, const compute::BoundsPass& bounds, const render::OpacityPass& opacity,
+                        const glm::vec3& towardLight, const compute::BoundsFraming& framing,
+                        const glm::mat4& headToWorld, vk::GpuProfiler* profiler) {
+  const VkBuffer light = bounds.lightSpace().handle();
   if (profiler) profiler->begin(cmd, "bounds");
-  vk::memoryBarrier(cmd, vk::BufferUse::ComputeWrite, vk::BufferUse::ComputeRead);
+  vk::memoryBarrier(cmd, vk::BufferUse::ComputeWrite, vk::BufferUse::ComputeRead);        // strand positions
   vk::bufferBarrier(cmd, light, vk::BufferUse::VertexRead, vk::BufferUse::ComputeWrite);  // last frame's readers
-  bounds_.recordReduce(cmd, towardLight);
+  bounds.recordReduce(cmd, towardLight);
   vk::bufferBarrier(cmd, light, vk::BufferUse::ComputeWrite, vk::BufferUse::ComputeWrite);
-  bounds_.recordFinalize(cmd, towardLight, framing);
+  bounds.recordFinalize(cmd, towardLight, framing);
   vk::bufferBarrier(cmd, light, vk::BufferUse::ComputeWrite, vk::BufferUse::VertexRead);
   if (profiler) profiler->end(cmd);
 
-  const vk::Image& maps = opacity_.image();
+  const vk::Image& maps = opacity.image();
   if (profiler) profiler->begin(cmd, "opacity");
   vk::imageBarrier(cmd, maps.handle(), VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::FragmentSampled,
                    vk::ImageUse::ColorAttachment, gpu::OPACITY_TARGETS);
-  opacity_.record(cmd, view.headToWorld);
+  opacity.record(cmd, headToWorld);
   vk::imageBarrier(cmd, maps.handle(), VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::ColorAttachment,
                    vk::ImageUse::FragmentSampled, gpu::OPACITY_TARGETS);
   if (profiler) profiler->end(cmd);

@@ -79,6 +79,13 @@ class HairSystem {
   render::HeadPass head_;
   render::StrandPass strandPass_;
 
-  void recordShadows(VkCommandBuffer cmd, const DrawView& view, vk::GpuProfiler* profiler);
 };
+
+// The shadow passes and the barriers around them, as recordPrepareDraw records them (public so tests
+// can drive the passes over hand-made strands with the same synchronization). The strand positions'
+// last ComputeWrite must already be made visible to VertexRead; this adds ComputeRead for the bounds.
+// Leaves LightSpace in BufferUse::VertexRead and the maps in ImageUse::FragmentSampled.
+void recordShadowPasses(VkCommandBuffer cmd, const compute::BoundsPass& bounds, const render::OpacityPass& opacity,
+                        const glm::vec3& towardLight, const compute::BoundsFraming& framing,
+                        const glm::mat4& headToWorld, vk::GpuProfiler* profiler = nullptr);
 }  // namespace hp

@@ -16,6 +16,7 @@ HairSystemSettings systemSettings(const RenderRequest& r, const render::Attachme
   s.strands.guidesOnly = r.guidesOnly;
   s.formats = formats;
   s.look = r.look;
+  s.opacity = r.opacity;
   return s;
 }
 
@@ -58,6 +59,9 @@ RenderResult renderStill(const vk::Context& ctx, const HairAsset& asset, const R
   result.guides = hair.simulation().guideCount();
   result.strands = hair.strands().layout().strandCount;
   result.verticesPerStrand = hair.strands().layout().verticesPerStrand;
+  if (request.captureOpacity && request.opacity.enabled)
+    result.opacity = render::captureOpacity(ctx, hair.opacity().image(), hair.bounds().lightSpace(), request.opacity,
+                                            glm::normalize(view.light.direction));
   return result;
 }
 }  // namespace hp

@@ -2,10 +2,12 @@
 // Contract: renders one still of a scene the way `hairpipe render` does: builds a HairSystem over the
 // asset, lets the simulation settle for settleFrames (the head following `animation`), then records
 // the last frame in full (simulate, tessellate, interpolate, head, hair, tonemap) with GPU timestamps
-// per pass and reads the image back. Blocking; for tools and tests, not for a frame loop.
+// per pass (bounds and opacity included when shadows are on) and reads the image back. Blocking; for tools and tests, not for a frame loop.
+#include <optional>
 #include <vector>
 
 #include "engine/hair_system.h"
+#include "engine/render/opacity_capture.h"
 #include "engine/sim/head_animation.h"
 #include "engine/vk/profiler.h"
 
@@ -19,6 +21,8 @@ struct RenderRequest {
   bool guidesOnly = false;
   float exposure = 1.0f;
   render::LookSettings look;
+  render::OpacitySettings opacity;
+  bool captureOpacity = false;      // read the opacity maps and light framing back (RenderResult::opacity)
 };
 
 struct RenderResult {
@@ -29,6 +33,7 @@ struct RenderResult {
   std::uint32_t guides = 0;
   std::uint32_t strands = 0;
   std::uint32_t verticesPerStrand = 0;
+  std::optional<render::OpacityCapture> opacity;  // with captureOpacity and shadows on
 };
 
 RenderResult renderStill(const vk::Context& ctx, const HairAsset& asset, const RenderRequest& request);
