@@ -48,12 +48,13 @@ void OffscreenRenderer::record(VkCommandBuffer cmd, const HairSystem& hair, cons
 void OffscreenRenderer::recordScene(VkCommandBuffer cmd, const HairSystem& hair, const DrawView& view,
                                     vk::GpuProfiler* profiler) const {
   const bool msaa = bool(targets_.resolved);
-  vk::imageBarrier(cmd, targets_.hdr.handle(), VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::Undefined,
-                   vk::ImageUse::ColorAttachment);
+  vk::imageBarrier(cmd, targets_.hdr.handle(), VK_IMAGE_ASPECT_COLOR_BIT,
+                   msaa ? vk::ImageUse::Undefined : vk::ImageUse::FragmentSampledDiscard, vk::ImageUse::ColorAttachment);
   vk::imageBarrier(cmd, targets_.depth.handle(), VK_IMAGE_ASPECT_DEPTH_BIT, vk::ImageUse::Undefined,
                    vk::ImageUse::DepthAttachment);
+  // The previous frame's tonemap may still sample the HDR input: wait for it before discarding it.
   if (msaa)
-    vk::imageBarrier(cmd, targets_.resolved.handle(), VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::Undefined,
+    vk::imageBarrier(cmd, targets_.resolved.handle(), VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::FragmentSampledDiscard,
                      vk::ImageUse::ColorAttachment);
   VkRenderingAttachmentInfo color = colorAttachment(targets_.hdr.view(), kBackground);
   if (msaa) {

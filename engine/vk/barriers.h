@@ -29,6 +29,8 @@ enum class ImageUse {
   VertexSampled,     // sampled in a vertex shader
   ComputeSampled,    // sampled in a compute shader
   GraphicsSampled,   // sampled in vertex and fragment shaders
+  FragmentSampledDiscard,  // sampled in a fragment shader by earlier work, contents now discarded
+                           // (layout UNDEFINED): reusing a frame's image waits for those reads
 };
 
 // A buffer range barrier between two uses.

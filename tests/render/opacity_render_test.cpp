@@ -1,0 +1,158 @@
+// Opacity shadows in rendered images (small, low density, so they stay fast on lavapipe), checked
+// semantically against the same frame with shadows off: the half of the hair away from the light
+// darkens more than the lit half, and hair under other hair (light from above) darkens more than the
+// hair on top. The head mesh is left out of these frames so every non-background pixel is hair.
+// Also: two whole frames in one command buffer (bounds, opacity and shading of frame 1 followed by
+// frame 2's writes) are clean under synchronization validation.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "compute/simulation_driver.h"
+#include "engine/hair/default_head.h"
+#include "engine/render/offscreen_renderer.h"
+#include "engine/render/render_job.h"
+#include "engine/vk/submit.h"
+#include "tests/support/vk_fixture.h"
+
+using hp::test::VulkanTest;
+
+namespace {
+constexpr std::uint32_t kWidth = 160, kHeight = 120;
+
+hp::HairAsset hairOnly() {
+  hp::DensityOptions density;
+  density.totalStrands = 3000;
+  hp::HairAsset asset = hp::buildDefaultHeadAsset(hp::defaultHeadGrowth(), density);
+  asset.head = {};
+  return asset;
+}
+
+hp::RenderRequest request(const glm::vec3& towardLight, float orbitDeg, bool shadows, float strandOpacity = 0.3f) {
+  hp::RenderRequest r;
+  r.scene.render = {kWidth, kHeight, 1};
+  r.scene.light.direction = glm::normalize(towardLight);
+  r.scene.camera.orbitDeg = orbitDeg;
+  r.settleFrames = 0;
+  r.opacity.enabled = shadows;
+  r.opacity.resolution = 256;
+  r.opacity.strandOpacity = strandOpacity;  // 0.3: 3,000 strands stand in for the default 20,000 at 0.04
+  return r;
+}
+
+double linear(std::uint8_t v) { return std::pow(v / 255.0, 2.2); }
+double luminance(const std::vector<std::uint8_t>& rgba, std::size_t px) {
+  return linear(rgba[px * 4]) + linear(rgba[px * 4 + 1]) + linear(rgba[px * 4 + 2]);
+}
+
+// Sums of linear luminance over the hair pixels (unlike the background corner in `off`) of a region.
+struct Region {
+  double on = 0.0, off = 0.0;
+  std::size_t pixels = 0;
+  double ratio() const { return off > 0.0 ? on / off : 1.0; }
+  double meanOn() const { return pixels ? on / double(pixels) : 0.0; }
+};
+
+template <class Pick>
+Region sumRegion(const hp::RenderResult& on, const hp::RenderResult& off, Pick inRegion) {
+  Region r;
+  const double background = luminance(off.rgba, 0);
+  for (std::uint32_t y = 0; y < kHeight; ++y)
+    for (std::uint32_t x = 0; x < kWidth; ++x) {
+      const std::size_t px = std::size_t(y) * kWidth + x;
+      if (!inRegion(x, y) || luminance(off.rgba, px) < background + 0.004) continue;
+      r.on += luminance(on.rgba, px);
+      r.off += luminance(off.rgba, px);
+      ++r.pixels;
+    }
+  return r;
+}
+
+// Screen x (pixels) of the head centre moved toward the light: which half of the image is lit.
+bool lightOnTheRight(const hp::RenderRequest& r) {
+  const hp::CameraMatrices cam = hp::orbitCamera(r.scene.camera, float(kWidth) / float(kHeight));
+  auto ndcX = [&](const glm::vec3& p) {
+    const glm::vec4 c = cam.proj * cam.view * glm::vec4(p, 1.0f);
+    return c.x / c.w;
+  };
+  return ndcX(r.scene.camera.target + 0.2f * r.scene.light.direction) > ndcX(r.scene.camera.target);
+}
+}  // namespace
+
+TEST_F(VulkanTest, HairAwayFromTheLightIsDarkerThanTheLitSide) {
+  const hp::HairAsset asset = hairOnly();
+  const glm::vec3 light(1.0f, 0.3f, 0.0f);
+  const hp::RenderRequest withShadows = request(light, 180.0f, true);
+  const hp::RenderResult on = hp::renderStill(*ctx, asset, withShadows);
+  const hp::RenderResult off = hp::renderStill(*ctx, asset, request(light, 180.0f, false));
+  const bool right = lightOnTheRight(withShadows);
+  const Region lit = sumRegion(on, off, [&](std::uint32_t x, std::uint32_t) { return (x >= kWidth / 2) == right; });
+  const Region away = sumRegion(on, off, [&](std::uint32_t x, std::uint32_t) { return (x >= kWidth / 2) != right; });
+  ASSERT_GT(lit.pixels, 500u);
+  ASSERT_GT(away.pixels, 500u);
+  EXPECT_LT(away.meanOn(), 0.8 * lit.meanOn()) << "away " << away.meanOn() << " lit " << lit.meanOn();
+  // The shadows themselves (not only the shading) darken the far side more.
+  EXPECT_LT(away.ratio(), lit.ratio() - 0.1) << "away " << away.ratio() << " lit " << lit.ratio();
+  EXPECT_LT(lit.ratio(), 1.0 + 1e-9);
+}
+
+TEST_F(VulkanTest, HairUnderOtherHairIsDarkerThanHairOnTop) {
+  const hp::HairAsset asset = hairOnly();
+  // Light from (almost) straight above, seen from the side: the crown is on top, the hair hanging
+  // below it is under it. Twice the opacity of the other test makes the layering of only 3,000
+  // strands measurable.
+  const glm::vec3 light(0.0f, 1.0f, 0.1f);
+  const hp::RenderResult on = hp::renderStill(*ctx, asset, request(light, 90.0f, true, 0.6f));
+  const hp::RenderResult off = hp::renderStill(*ctx, asset, request(light, 90.0f, false, 0.6f));
+  // Rows of the hair in the image, by pixel count: the top quarter of the hair pixels (on top) against
+  // the bottom quarter (under).
+  std::vector<std::size_t> perRow(kHeight, 0);
+  std::size_t total = 0;
+  const double background = luminance(off.rgba, 0);
+  for (std::uint32_t y = 0; y < kHeight; ++y)
+    for (std::uint32_t x = 0; x < kWidth; ++x)
+      if (luminance(off.rgba, std::size_t(y) * kWidth + x) >= background + 0.004) ++perRow[y], ++total;
+  std::uint32_t top = 0, bottom = kHeight - 1;
+  for (std::size_t seen = 0; seen + perRow[top] < total / 4; ++top) seen += perRow[top];
+  for (std::size_t seen = 0; seen + perRow[bottom] < total / 4; --bottom) seen += perRow[bottom];
+  ASSERT_LT(top + 10, bottom);
+  const Region upper = sumRegion(on, off, [&](std::uint32_t, std::uint32_t y) { return y <= top; });
+  const Region lower = sumRegion(on, off, [&](std::uint32_t, std::uint32_t y) { return y >= bottom; });
+  ASSERT_GT(upper.pixels, 100u);
+  ASSERT_GT(lower.pixels, 100u);
+  EXPECT_LT(lower.ratio(), upper.ratio() - 0.1) << "under " << lower.ratio() << " on top " << upper.ratio();
+  EXPECT_GT(upper.ratio(), 0.6) << "hair on top is mostly lit";
+}
+
+TEST_F(VulkanTest, TwoShadowedFramesInOneCommandBufferAreSyncClean) {
+  hp::DensityOptions density;
+  density.totalStrands = 1000;
+  const hp::HairAsset asset = hp::buildDefaultHeadAsset(hp::defaultHeadGrowth(), density);
+  hp::render::OffscreenRenderer renderer(*ctx, 64, 48, 4);
+  hp::HairSystemSettings settings;
+  settings.formats = renderer.formats();
+  settings.opacity.resolution = 64;
+  hp::HairSystem hair(*ctx, asset, settings);
+  hp::DrawView view;
+  view.extent = renderer.extent();
+  view.camera = hp::orbitCamera(hp::CameraSpec{}, 64.0f / 48.0f);
+  hp::vk::GpuProfiler profiler(*ctx, 32, "two frames");
+  hp::vk::submitAndWait(*ctx, [&](VkCommandBuffer cmd) {
+    profiler.reset(cmd);
+    for (int frame = 0; frame < 2; ++frame) {
+      hair.recordUpdate(cmd, hp::HeadMotion{}, &profiler);
+      hair.recordPrepareDraw(cmd, view, &profiler);
+      renderer.record(cmd, hair, view, 1.0f, &profiler);
+    }
+  }, "two frames");
+  std::size_t bounds = 0, opacity = 0;
+  for (const auto& t : profiler.results()) {
+    bounds += t.name == "bounds";
+    opacity += t.name == "opacity";
+  }
+  if (profiler.supported()) {
+    EXPECT_EQ(bounds, 2u);
+    EXPECT_EQ(opacity, 2u);
+  }
+  EXPECT_EQ(renderer.readDisplay().size(), 64u * 48u * 4u);
+}
