@@ -31,7 +31,7 @@ HairSystem::HairSystem(const vk::Context& ctx, const HairAsset& asset, const Hai
       frameBlock_(makeFrameBlock(ctx)),
       bounds_(ctx, strands_),
       opacity_(ctx, strands_, asset.head, bounds_.lightSpace(), settings.opacity),
-      head_(ctx, asset.head, frameBlock_, settings.formats),
+      head_(ctx, asset.head, frameBlock_, opacity_.shadowInputs(), settings.formats),
       strandPass_(ctx, strands_, marschner_, frameBlock_, opacity_.shadowInputs(), settings.formats) {}
 
 void HairSystem::recordUpdate(VkCommandBuffer cmd, const HeadMotion& motion, vk::GpuProfiler* profiler) {

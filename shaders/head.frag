@@ -1,11 +1,15 @@
 #version 460
 // The head: diffuse with the paper's wrap term (wrap + N.L) / (1 + wrap), plus ambient; hair-coloured
-// where hair grows.
+// where hair grows. The direct term is shadowed by the hair (opacity maps, T = exp(-k alpha)).
 #include "shared/render.h"
+#include "opacity_lookup.glsl"
 
 layout(std140, binding = RENDER_BINDING_FRAME) uniform Frame { RenderFrame frame; };
+layout(binding = RENDER_BINDING_OPACITY) uniform sampler2DArray opacityMaps;
 layout(location = 0) in vec3 inNormal;
 layout(location = 1) in float inScalp;
+layout(location = 2) in vec2 inLightUv;
+layout(location = 3) in vec4 inSliceWeights[4];
 layout(location = 0) out vec4 outColor;
 
 void main() {
@@ -14,5 +18,8 @@ void main() {
   float diffuse = max((wrap + dot(N, frame.lightDirection.xyz)) / (1.0 + wrap), 0.0);
   // Under the hair the scalp takes the hair's albedo, darkened as the hair's own shadow would.
   vec3 albedo = mix(frame.skinColor.rgb, 0.5 * frame.hairColor.rgb, inScalp);
-  outColor = vec4(albedo * (diffuse * frame.lightRadiance.rgb / 3.14159265 + frame.hairColor.w), 1.0);
+  float alpha = opacityAlpha(opacityMaps, inLightUv, inSliceWeights[0], inSliceWeights[1], inSliceWeights[2],
+                             inSliceWeights[3]);
+  float transmittance = exp(-frame.strand.z * alpha);
+  outColor = vec4(albedo * (transmittance * diffuse * frame.lightRadiance.rgb / 3.14159265 + frame.hairColor.w), 1.0);
 }

@@ -13,6 +13,8 @@ const vk::Binding kBindings[] = {
     {gpu::RENDER_BINDING_POSITIONS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kVertex},
     {gpu::RENDER_BINDING_TANGENTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kVertex},
     {gpu::RENDER_BINDING_ATTRIBUTES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kVertex},
+    {gpu::RENDER_BINDING_OPACITY, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT},
+    {gpu::RENDER_BINDING_LIGHT, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kVertex},
 };
 
 // xyz from v, w from `w` (or 1 where it is empty).
@@ -25,7 +27,7 @@ std::vector<glm::vec4> asVec4(const std::vector<glm::vec3>& v, const std::vector
 }  // namespace
 
 HeadPass::HeadPass(const vk::Context& ctx, const HeadMesh& mesh, const vk::Buffer& frameBlock,
-                   const AttachmentFormats& formats)
+                   const ShadowInputs& shadows, const AttachmentFormats& formats)
     : indexCount_(static_cast<std::uint32_t>(mesh.indices.size())) {
   if (mesh.normals.size() != mesh.positions.size()) throw Error("head mesh: one normal per position is required");
   if (!mesh.scalp.empty() && mesh.scalp.size() != mesh.positions.size())
@@ -34,6 +36,8 @@ HeadPass::HeadPass(const vk::Context& ctx, const HeadMesh& mesh, const vk::Buffe
     if (i >= mesh.positions.size()) throw Error("head mesh: index " + std::to_string(i) + " is out of range");
   set_ = vk::DescriptorSet(ctx, kBindings, "head");
   set_.writeUniformBuffer(gpu::RENDER_BINDING_FRAME, frameBlock.handle());
+  set_.writeSampledImage(gpu::RENDER_BINDING_OPACITY, shadows.opacityView, shadows.sampler);  // hair shadows
+  set_.writeStorageBuffer(gpu::RENDER_BINDING_LIGHT, shadows.lightSpace);
   vk::GraphicsPipelineDesc desc;
   desc.vertexShader = "head.vert";
   desc.fragmentShader = "head.frag";

@@ -2,12 +2,14 @@
 // Contract: draws the opaque head mesh (HairAsset::head) with the paper's wrap lighting, the hair colour
 // where HeadMesh::scalp marks hair roots (so the scalp does not show bare between strands), depth test and
 // write on, into the caller's dynamic rendering. Owns the mesh buffers (uploaded once), pipeline and
-// descriptor set; reads the frame block the caller keeps up to date (RenderFrame, shaders/shared/render.h).
+// descriptor set; reads the frame block the caller keeps up to date (RenderFrame, shaders/shared/render.h)
+// and the opacity maps + LightSpace (ShadowInputs), so hair shadows fall on the head.
 // draw() must be called inside vkCmdBeginRendering with attachments matching `formats`.
 #include <glm/glm.hpp>
 
 #include "engine/hair/hair_asset.h"
 #include "engine/render/attachment_formats.h"
+#include "engine/render/shadow_inputs.h"
 #include "engine/vk/buffer.h"
 #include "engine/vk/descriptors.h"
 #include "engine/vk/pipeline.h"
@@ -15,7 +17,8 @@
 namespace hp::render {
 class HeadPass {
  public:
-  HeadPass(const vk::Context& ctx, const HeadMesh& mesh, const vk::Buffer& frameBlock, const AttachmentFormats& formats);
+  HeadPass(const vk::Context& ctx, const HeadMesh& mesh, const vk::Buffer& frameBlock, const ShadowInputs& shadows,
+           const AttachmentFormats& formats);
   void draw(VkCommandBuffer cmd, VkExtent2D extent, const glm::mat4& headToWorld) const;
   bool empty() const { return indexCount_ == 0; }
 

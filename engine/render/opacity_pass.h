@@ -22,19 +22,13 @@
 #include "compute/strand_buffers.h"
 #include "engine/hair/hair_asset.h"
 #include "engine/render/opacity_settings.h"
+#include "engine/render/shadow_inputs.h"
 #include "engine/vk/buffer.h"
 #include "engine/vk/descriptors.h"
 #include "engine/vk/image.h"
 #include "engine/vk/pipeline.h"
 
 namespace hp::render {
-// What the shading passes bind to look the maps up.
-struct ShadowInputs {
-  VkImageView opacityView = VK_NULL_HANDLE;  // 2D array, 4 layers
-  VkSampler sampler = VK_NULL_HANDLE;
-  VkBuffer lightSpace = VK_NULL_HANDLE;      // gpu::LightSpace
-};
-
 class OpacityPass {
  public:
   OpacityPass(const vk::Context& ctx, const compute::StrandBuffers& strands, const HeadMesh& head,

@@ -11,7 +11,7 @@
 #include "compute/strand_buffers.h"
 #include "engine/render/attachment_formats.h"
 #include "engine/render/marschner_textures.h"
-#include "engine/render/opacity_pass.h"
+#include "engine/render/shadow_inputs.h"
 #include "engine/vk/descriptors.h"
 #include "engine/vk/pipeline.h"
 

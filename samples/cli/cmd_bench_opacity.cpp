@@ -1,0 +1,102 @@
+// `hairpipe bench-opacity [--strands 10000,100000,1000000] [--resolutions 512,1024] [--frames F]
+// [--half] [--json]`: GPU time of the bounds and opacity passes (GpuProfiler timestamps, median of F
+// frames after one warm-up frame) on the default head in its rest pose, for each render-strand count
+// and opacity-map resolution. Each frame is interpolate -> bounds -> opacity, as HairSystem records it.
+#include <algorithm>
+#include <cstdio>
+#include <iostream>
+#include <map>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "engine/error.h"
+#include "engine/hair/default_head.h"
+#include "engine/hair_system.h"
+#include "engine/vk/context.h"
+#include "engine/vk/submit.h"
+#include "samples/cli/command.h"
+
+namespace {
+struct BenchOptions {
+  std::vector<std::uint32_t> strands{10000, 100000, 1000000};
+  std::vector<std::uint32_t> resolutions{512, 1024};
+  std::uint32_t frames = 3;
+  bool half = false;
+  bool json = false;
+  std::string device;
+};
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  return v.empty() ? 0.0 : v[v.size() / 2];
+}
+
+nlohmann::json benchOne(const hp::vk::Context& ctx, const hp::HairAsset& asset, std::uint32_t resolution,
+                        const BenchOptions& o) {
+  hp::HairSystemSettings settings;
+  settings.opacity.resolution = resolution;
+  if (o.half) settings.opacity.format = VK_FORMAT_R16G16B16A16_SFLOAT;
+  hp::HairSystem hair(ctx, asset, settings);
+  hp::DrawView view;
+  hp::vk::GpuProfiler profiler(ctx, 8, "bench opacity");
+  std::map<std::string, std::vector<double>> times;
+  for (std::uint32_t f = 0; f <= o.frames; ++f) {
+    hp::vk::submitAndWait(ctx, [&](VkCommandBuffer cmd) {
+      profiler.reset(cmd);
+      hair.recordUpdate(cmd, hp::HeadMotion{}, &profiler);
+      hair.recordPrepareDraw(cmd, view, &profiler);
+    }, "bench opacity frame");
+    if (f == 0) continue;  // warm-up
+    for (const auto& t : profiler.results()) times[t.name].push_back(t.milliseconds);
+  }
+  return {{"strands", hair.strands().layout().strandCount},
+          {"chunks", hair.strands().layout().chunks.size()},
+          {"resolution", resolution},
+          {"format", o.half ? "RGBA16F" : "RGBA32F"},
+          {"bounds_ms", median(times["bounds"])},
+          {"opacity_ms", median(times["opacity"])}};
+}
+
+void run(const BenchOptions& o) {
+  if (o.frames == 0 || o.frames > 100) throw hp::Error("bench-opacity: --frames must be in [1, 100]");
+  for (std::uint32_t s : o.strands)
+    if (s == 0 || s > 4'000'000) throw hp::Error("bench-opacity: --strands values must be in [1, 4000000]");
+  hp::vk::ContextOptions ctxOptions;
+  ctxOptions.device = o.device;
+  auto ctx = hp::vk::Context::createHeadless(ctxOptions);
+  if (!ctx->timestampsSupported()) throw hp::Error("bench-opacity: the device has no timestamp queries");
+  nlohmann::json report = {{"device", ctx->properties().deviceName}, {"frames", o.frames},
+                           {"results", nlohmann::json::array()}};
+  for (std::uint32_t s : o.strands) {
+    hp::DensityOptions density;
+    density.totalStrands = s;
+    const hp::HairAsset asset = hp::buildDefaultHeadAsset(hp::defaultHeadGrowth(), density);
+    for (std::uint32_t r : o.resolutions) {
+      nlohmann::json row = benchOne(*ctx, asset, r, o);
+      if (!o.json)
+        std::printf("%8u strands  %4u^2 %s  bounds %8.2f ms  opacity %9.2f ms\n", s, r,
+                    row["format"].get<std::string>().c_str(), row["bounds_ms"].get<double>(),
+                    row["opacity_ms"].get<double>());
+      std::fflush(stdout);
+      report["results"].push_back(row);
+    }
+  }
+  if (o.json) std::cout << report.dump(2) << "\n";
+}
+
+void setup(CLI::App& app) {
+  auto o = std::make_shared<BenchOptions>();
+  CLI::App* cmd = app.add_subcommand("bench-opacity", "Time the bounds and opacity-map passes on the device");
+  cmd->add_option("--strands", o->strands, "Render strand counts, comma separated")->delimiter(',')->capture_default_str();
+  cmd->add_option("--resolutions", o->resolutions, "Opacity map sizes, comma separated")->delimiter(',')->capture_default_str();
+  cmd->add_option("--frames", o->frames, "Timed frames per case (median), after one warm-up")->capture_default_str();
+  cmd->add_flag("--half", o->half, "RGBA16F opacity maps instead of RGBA32F");
+  cmd->add_flag("--json", o->json, "Print JSON");
+  cmd->add_option("--device", o->device, "Vulkan device: index or name substring (env HAIRPIPE_DEVICE)");
+  cmd->callback([o] { run(*o); });
+}
+}  // namespace
+
+HP_CLI_COMMAND(setup);

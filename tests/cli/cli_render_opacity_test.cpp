@@ -1,0 +1,113 @@
+// `hairpipe render --dump-opacity DIR`: the 16 slices as PFM (size, finite, non-decreasing in i), the
+// contact sheet PNG and the slice depths JSON (z_i = z_near + i d_z), the bounds and opacity passes
+// in the reported GPU times; refused shadow options exit 1 naming the option or field.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "engine/render/png_file.h"
+#include "tests/support/cli_runner.h"
+
+using hp::test::runCli;
+namespace fs = std::filesystem;
+
+namespace {
+fs::path tempDir(const std::string& name) {
+  fs::path dir = fs::path(::testing::TempDir()) / "hairpipe_cli_render_opacity" / name;
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+// A 1-channel little-endian PFM: width, height, values.
+std::vector<float> readPfm(const fs::path& path, std::uint32_t& width, std::uint32_t& height) {
+  std::ifstream in(path, std::ios::binary);
+  std::string magic;
+  float scale = 0;
+  in >> magic >> width >> height >> scale;
+  in.get();
+  EXPECT_EQ(magic, "Pf");
+  EXPECT_LT(scale, 0.0f) << "little-endian";
+  std::vector<float> v(std::size_t(width) * height);
+  in.read(reinterpret_cast<char*>(v.data()), std::streamsize(v.size() * 4));
+  EXPECT_TRUE(bool(in)) << path;
+  return v;
+}
+
+std::vector<std::string> baseArgs(const fs::path& dir) {
+  return {"render", "--width", "64", "--height", "48", "--msaa", "1", "--density", "800", "--frames", "2",
+          "--opacity-resolution", "64", "--out", (dir / "img.png").string()};
+}
+}  // namespace
+
+TEST(CliRenderOpacity, DumpsSlicesContactSheetAndDepths) {
+  const fs::path dir = tempDir("dump");
+  auto args = baseArgs(dir);
+  for (const char* a : {"--dump-opacity", "", "--json", "--validation"}) args.push_back(a);
+  args[args.size() - 3] = (dir / "maps").string();
+  auto r = runCli(args);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  auto report = nlohmann::json::parse(r.out);
+  EXPECT_TRUE(report["gpu_ms"].contains("bounds"));
+  EXPECT_TRUE(report["gpu_ms"].contains("opacity"));
+
+  auto depths = nlohmann::json::parse(std::ifstream(dir / "maps" / "opacity_slices.json"));
+  EXPECT_EQ(depths["resolution"].get<int>(), 64);
+  const double zNear = depths["z_near"], zFar = depths["z_far"], dz = depths["d_z"];
+  EXPECT_LT(zNear, zFar);
+  EXPECT_NEAR(dz, (zFar - zNear) / 16.0, 1e-6);
+  ASSERT_EQ(depths["slice_depths"].size(), 16u);
+  for (int i = 1; i <= 16; ++i) EXPECT_NEAR(depths["slice_depths"][i - 1].get<double>(), zNear + i * dz, 1e-5);
+
+  std::vector<float> previous;
+  for (int i = 1; i <= 16; ++i) {
+    std::ostringstream name;
+    name << "opacity_slice_" << (i < 10 ? "0" : "") << i << ".pfm";
+    std::uint32_t w = 0, h = 0;
+    std::vector<float> slice = readPfm(dir / "maps" / name.str(), w, h);
+    ASSERT_EQ(w, 64u);
+    ASSERT_EQ(h, 64u);
+    std::size_t decreasing = 0;
+    for (std::size_t t = 0; t < slice.size(); ++t) {
+      ASSERT_TRUE(std::isfinite(slice[t]));
+      if (!previous.empty()) decreasing += slice[t] < previous[t];
+    }
+    EXPECT_EQ(decreasing, 0u) << "slice " << i;
+    previous = slice;
+  }
+  float last = 0;
+  for (float v : previous) last = std::max(last, v);
+  EXPECT_GT(last, 0.0f) << "slice 16 holds hair";
+  const hp::RgbaImage sheet = hp::readPngRgba(dir / "maps" / "opacity_contact_sheet.png");
+  EXPECT_EQ(sheet.width, 4u * 64u);
+  EXPECT_EQ(sheet.height, 4u * 64u);
+  for (const auto& entry : fs::directory_iterator(dir / "maps"))
+    EXPECT_EQ(entry.path().filename().string().find(".tmp"), std::string::npos) << "left a temporary file";
+}
+
+TEST(CliRenderOpacity, RefusesBadShadowOptions) {
+  const fs::path dir = tempDir("bad");
+  const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
+      {{"--opacity-resolution", "0"}, "resolution"},
+      {{"--opacity-resolution", "100000"}, "resolution"},
+      {{"--strand-opacity", "-1"}, "strandOpacity"},
+      {{"--strand-opacity", "nan"}, "strandOpacity"},
+      {{"--shadow-k", "-2"}, "k must be"},
+      {{"--shadow-bias", "40"}, "biasSlices"},
+      {{"--no-shadows", "--dump-opacity", (dir / "x").string()}, "--dump-opacity"},
+  };
+  for (const auto& [extra, needle] : cases) {
+    auto args = baseArgs(dir);
+    args.insert(args.end(), extra.begin(), extra.end());
+    auto r = runCli(args);
+    EXPECT_EQ(r.exitCode, 1) << extra.front();
+    EXPECT_NE(r.err.find(needle), std::string::npos) << extra.front() << ": " << r.err;
+  }
+  EXPECT_FALSE(fs::exists(dir / "img.png")) << "no output after a refused option";
+}
