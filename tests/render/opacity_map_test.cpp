@@ -43,16 +43,17 @@ struct ShadowRig {
   std::unique_ptr<hp::render::OpacityPass> opacity;
 
   ShadowRig(const hp::vk::Context& ctx, const StrandSet& set, const OpacitySettings& settings,
-            const hp::HeadMesh& head = {}) {
+            VkDeviceSize maxChunkBytes = 0) {
     hp::compute::StrandOptions options;
     options.verticesPerStrand = set.q;
     options.guidesOnly = true;
+    options.maxChunkBytes = maxChunkBytes;
     buffers = std::make_unique<hp::compute::StrandBuffers>(ctx, set.strands(), 2, hp::InterpolationTopology{}, options);
     for (const auto& chunk : buffers->chunks())
       hp::vk::uploadBytes(ctx, chunk.positions, set.positions.data() + std::size_t(chunk.range.firstStrand) * set.q,
                           VkDeviceSize(chunk.range.strandCount) * set.q * sizeof(glm::vec4), hp::vk::BufferUse::VertexRead);
     bounds = std::make_unique<hp::compute::BoundsPass>(ctx, *buffers);
-    opacity = std::make_unique<hp::render::OpacityPass>(ctx, *buffers, head, bounds->lightSpace(), settings);
+    opacity = std::make_unique<hp::render::OpacityPass>(ctx, *buffers, hp::HeadMesh{}, bounds->lightSpace(), settings);
   }
 
   OpacityCapture run(const hp::vk::Context& ctx, const glm::vec3& towardLight, float marginTexels = 2.0f) {
@@ -259,7 +260,9 @@ TEST_F(VulkanTest, OpacityOfParallelLayersIsExactPerTexel) {
 TEST_F(VulkanTest, OpacityOfATiltedVolumeMatchesTheCpuRasterizer) {
   const StrandSet set = tiltedVolume();
   const glm::vec3 light = glm::normalize(glm::vec3(0.3f, 0.8f, 0.5f));
-  ShadowRig rig(*ctx, set, smallSettings(128, 0.1f));
+  // 100 strands per chunk: the reduction and the draws span 3 chunks.
+  ShadowRig rig(*ctx, set, smallSettings(128, 0.1f), VkDeviceSize(100) * set.q * sizeof(glm::vec4));
+  ASSERT_EQ(rig.buffers->chunks().size(), 3u);
   const OpacityCapture c = rig.run(*ctx, light);
 
   // Framing against the CPU reduction.
