@@ -6,7 +6,7 @@
 //   recordUpdate(cmd, motion)        simulate -> tessellate -> interpolate (compute)
 //   recordPrepareDraw(cmd, view)     writes the frame block; makes the strands visible to vertex shaders
 // and inside the application's vkCmdBeginRendering (attachments matching settings.formats):
-//   recordDraw(cmd, view)            head mesh, then hair ribbons (depth test/write, alpha-to-coverage)
+//   recordDraw(cmd, view)            head mesh, then hair ribbons (depth test/write, coverage as a dithered sample mask)
 // Stages it touches: COMPUTE_SHADER, COPY (vkCmdUpdateBuffer), VERTEX_SHADER, FRAGMENT_SHADER,
 // early/late fragment tests and colour output. It never waits on a queue; the application keeps the
 // HairSystem alive until the GPU has finished every command buffer it recorded into.

@@ -1,12 +1,13 @@
 #version 460
 // Hair shading (REFERENCES.md §3-4): radiance = S(L, V, T) cos(theta_i) x light x transmittance, plus
-// a small ambient term, times the strand's lightness variation. Alpha is the ribbon's pixel coverage
-// (alpha-to-coverage with MSAA). Transmittance T = exp(-k alpha) from the opacity maps with the
+// a small ambient term, times the strand's lightness variation. The ribbon's pixel coverage becomes a
+// sample mask with MSAA (dithered per strand and pixel, see coverageMask), alpha without. Transmittance T = exp(-k alpha) from the opacity maps with the
 // per-vertex slice weights (opacity_lookup.glsl); the ambient term is not shadowed.
 #include "shared/render.h"
 #include "shared/marschner.h"
 #include "marschner.glsl"
 #include "opacity_lookup.glsl"
+#include "shared/strands.h"
 
 layout(std140, binding = RENDER_BINDING_FRAME) uniform Frame { RenderFrame frame; };
 layout(std140, binding = RENDER_BINDING_MARSCHNER) uniform Marschner { MarschnerParams marschner; };
@@ -21,7 +22,22 @@ layout(location = 2) in float inCoverage;
 layout(location = 3) in float inColorScale;
 layout(location = 4) in vec2 inLightUv;
 layout(location = 5) in vec4 inSliceWeights[4];
+layout(location = 9) flat in uint inStrand;
+layout(push_constant) uniform Push { StrandDrawPush push; };
 layout(location = 0) out vec4 outColor;
+
+// Coverage c of n samples as a mask of round(c n + dither) bits, rotated by a hash of the strand and
+// the pixel. Plain alpha-to-coverage gives every strand with the same alpha the same mask, so stacked
+// sub-pixel strands keep hitting the same samples and a head of hair stays see-through; rotated masks
+// let coverage accumulate the way overlapping hairs do.
+uint coverageMask(float coverage, uint samples) {
+  uint h = strandHash(inStrand * 9781u ^ strandHash(uint(gl_FragCoord.x) + 4099u * uint(gl_FragCoord.y)));
+  uint bits = min(uint(coverage * float(samples) + float(h & 0xFFFFu) / 65536.0), samples);
+  uint full = (1u << samples) - 1u;
+  uint mask = (1u << bits) - 1u;
+  uint rotate = (h >> 16u) % samples;
+  return ((mask << rotate) | (mask >> (samples - rotate))) & full;
+}
 
 void main() {
   vec3 T = normalize(inTangent);
@@ -35,5 +51,14 @@ void main() {
   float transmittance = exp(-frame.strand.z * alpha);
   vec3 direct = S * cosThetaI * frame.lightRadiance.rgb * transmittance;
   vec3 ambient = frame.hairColor.rgb * frame.hairColor.w;
-  outColor = vec4((direct + ambient) * inColorScale, inCoverage);
+  if (push.samples > 1u) {
+    uint mask = coverageMask(inCoverage, push.samples);
+    if (mask == 0u) discard;
+    gl_SampleMask[0] = int(mask);
+    outColor = vec4((direct + ambient) * inColorScale, 1.0);
+  } else {
+    // A shader that writes the sample mask on one path must write it on all: left unwritten it is undefined.
+    gl_SampleMask[0] = -1;
+    outColor = vec4((direct + ambient) * inColorScale, inCoverage);
+  }
 }

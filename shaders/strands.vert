@@ -21,6 +21,7 @@ layout(location = 2) out float outCoverage;
 layout(location = 3) out float outColorScale;
 layout(location = 4) out vec2 outLightUv;
 layout(location = 5) out vec4 outSliceWeights[4];
+layout(location = 9) flat out uint outStrand;  // global strand index: keys the coverage dither
 
 void main() {
   uint q = frame.options.x;
@@ -53,6 +54,7 @@ void main() {
   outTangent = t;
   outCoverage = coverage;
   outColorScale = attr.colorScale;
+  outStrand = push.firstStrand + strand;
   OpacityVertex o = opacityVertex(light, p, frame.strand.w, frame.options.y != 0u);
   outLightUv = o.uv;
   outSliceWeights = vec4[4](o.w0, o.w1, o.w2, o.w3);

@@ -29,8 +29,8 @@ vk::GraphicsPipeline makePipeline(const vk::Context& ctx, VkDescriptorSetLayout 
   desc.depthFormat = formats.depth;
   desc.samples = formats.samples;
   desc.depthTest = desc.depthWrite = true;
-  // Coverage through MSAA samples keeps overlapping hair order-independent; without MSAA, blend.
-  desc.alphaToCoverage = formats.samples != VK_SAMPLE_COUNT_1_BIT;
+  // With MSAA the fragment shader writes its coverage as a dithered sample mask (order-independent);
+  // without MSAA, coverage is alpha and blends.
   desc.blend = formats.samples != VK_SAMPLE_COUNT_1_BIT ? vk::BlendMode::None : vk::BlendMode::Alpha;
   desc.topology = lines ? VK_PRIMITIVE_TOPOLOGY_LINE_LIST : VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
   desc.sets = {layout};
@@ -43,7 +43,7 @@ vk::GraphicsPipeline makePipeline(const vk::Context& ctx, VkDescriptorSetLayout 
 StrandPass::StrandPass(const vk::Context& ctx, const compute::StrandBuffers& strands,
                        const MarschnerTextures& marschner, const vk::Buffer& frameBlock,
                        const ShadowInputs& shadows, const AttachmentFormats& formats)
-    : ctx_(ctx) {
+    : ctx_(ctx), samples_(formats.samples) {
   bind(strands, marschner, frameBlock, shadows);
   ribbons_ = makePipeline(ctx, sets_.front().layout(), formats, false);
   lines_ = makePipeline(ctx, sets_.front().layout(), formats, true);
@@ -74,7 +74,7 @@ void StrandPass::draw(VkCommandBuffer cmd, VkExtent2D extent, bool lines) const 
   for (std::size_t c = 0; c < sets_.size(); ++c) {
     const auto& range = strands_->chunks()[c].range;
     pipeline.bind(cmd, sets_[c].set(), extent);
-    pipeline.push(cmd, gpu::StrandDrawPush{range.firstStrand, lines ? 1u : 0u, 0u, 0u});
+    pipeline.push(cmd, gpu::StrandDrawPush{range.firstStrand, lines ? 1u : 0u, std::uint32_t(samples_), 0u});
     vkCmdDraw(cmd, range.strandCount * (layout.verticesPerStrand - 1) * perSegment, 1, 0, 0);
   }
 }

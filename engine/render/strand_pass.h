@@ -1,6 +1,7 @@
 #pragma once
 // Contract: draws the render strands as camera-facing ribbons (or lines) shaded with Marschner S, into
-// the caller's dynamic rendering: depth test and write on, alpha-to-coverage for sub-pixel strands.
+// the caller's dynamic rendering: depth test and write on; with MSAA a sub-pixel strand writes its
+// coverage as a dithered sample mask (strands.frag), without MSAA it blends with alpha = coverage.
 // Vertex pulling from the interpolate pass's chunk buffers (one descriptor set per chunk). Reads the
 // frame block, the Marschner resources and the opacity maps + LightSpace (ShadowInputs: sampled in the
 // fragment shader, read in the vertex shader); the caller keeps them current and orders the strand
@@ -31,5 +32,6 @@ class StrandPass {
   std::vector<vk::DescriptorSet> sets_;  // one per chunk
   vk::GraphicsPipeline ribbons_;
   vk::GraphicsPipeline lines_;
+  VkSampleCountFlagBits samples_;  // the flag's value is the count
 };
 }  // namespace hp::render

@@ -41,8 +41,8 @@ struct RenderFrame {
 struct StrandDrawPush {
   uint firstStrand;      // global index of the chunk's first strand (for per-strand variation)
   uint lines;            // 1: line list, 2 vertices per segment
+  uint samples;          // samples per pixel of the attachments (coverage becomes a sample mask when > 1)
   uint pad0;
-  uint pad1;
 };
 
 struct TonemapPush {

@@ -1,0 +1,82 @@
+// The default head as `make demo` frames it, small: a golden image compared with a PSNR tolerance, and
+// a semantic check that survives driver changes (the hair covers a sensible part of the frame).
+// Regenerate the golden after an intended change of the look with HAIRPIPE_UPDATE_GOLDEN=1.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <iostream>
+
+#include "engine/render/png_file.h"
+#include "engine/render/render_job.h"
+#include "tests/support/vk_fixture.h"
+
+using namespace hp;
+using hp::test::VulkanTest;
+
+namespace {
+const std::filesystem::path kGolden = std::filesystem::path(HAIRPIPE_TEST_DATA_DIR) / "golden" / "default_head_192x108.png";
+
+RenderRequest demoRequest() {
+  RenderRequest r;
+  r.scene.render = {192, 108, 4};
+  r.scene.camera.orbitDeg = 145.0f;
+  r.scene.density.totalStrands = 6000;
+  r.settleFrames = 30;
+  return r;
+}
+
+double psnr(const std::vector<std::uint8_t>& a, const std::vector<std::uint8_t>& b) {
+  double sum = 0.0;
+  std::size_t n = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    if (i % 4 == 3) continue;  // alpha
+    const double d = double(a[i]) - double(b[i]);
+    sum += d * d;
+    ++n;
+  }
+  const double mse = sum / double(n);
+  return mse == 0.0 ? 99.0 : 10.0 * std::log10(255.0 * 255.0 / mse);
+}
+
+// Fraction of pixels whose colour moves by more than `threshold` (of 255, any channel) between two images.
+double changedFraction(const RenderResult& a, const RenderResult& b, int threshold) {
+  std::size_t changed = 0;
+  for (std::size_t p = 0; p < a.rgba.size(); p += 4)
+    for (int c = 0; c < 3; ++c)
+      if (std::abs(int(a.rgba[p + c]) - int(b.rgba[p + c])) > threshold) {
+        ++changed;
+        break;
+      }
+  return double(changed) / double(a.rgba.size() / 4);
+}
+}  // namespace
+
+TEST_F(VulkanTest, DefaultHeadMatchesTheGoldenImage) {
+  const RenderRequest request = demoRequest();
+  RenderResult img = renderStill(*ctx, buildSceneAsset(request.scene), request);
+  if (std::getenv("HAIRPIPE_UPDATE_GOLDEN")) {
+    writePng(kGolden, img.width, img.height, 4, img.rgba);
+    GTEST_SKIP() << "golden image rewritten: " << kGolden;
+  }
+  ASSERT_TRUE(std::filesystem::exists(kGolden)) << kGolden;
+  RgbaImage golden = readPngRgba(kGolden);
+  ASSERT_EQ(golden.width, img.width);
+  ASSERT_EQ(golden.height, img.height);
+  const double db = psnr(img.rgba, golden.pixels);
+  if (db < 30.0) writePng(std::filesystem::temp_directory_path() / "default_head_actual.png", img.width, img.height, 4, img.rgba);
+  EXPECT_GE(db, 30.0) << "PSNR against " << kGolden << " (actual written to the temp directory)";
+}
+
+TEST_F(VulkanTest, HairCoversASensiblePartOfTheFrame) {
+  RenderRequest dark = demoRequest();
+  RenderRequest blonde = demoRequest();
+  blonde.scene.material.absorption = {0.08, 0.15, 0.35};
+  const HairAsset asset = buildSceneAsset(dark.scene);
+  // Only hair (and the hair-coloured scalp) changes with the hair's absorption.
+  const double hair = changedFraction(renderStill(*ctx, asset, dark), renderStill(*ctx, asset, blonde), 12);
+  std::cout << "hair covers " << hair * 100.0 << " % of the frame\n";
+  EXPECT_GT(hair, 0.12) << "hair fraction of the frame";
+  EXPECT_LT(hair, 0.6) << "hair fraction of the frame";
+}
