@@ -1,5 +1,7 @@
 #include "engine/render/render_job.h"
 
+#include "compute/strand_dump.h"
+
 #include "compute/simulation_driver.h"
 #include "engine/error.h"
 #include "engine/render/offscreen_renderer.h"
@@ -59,6 +61,9 @@ RenderResult renderStill(const vk::Context& ctx, const HairAsset& asset, const R
   result.guides = hair.simulation().guideCount();
   result.strands = hair.strands().layout().strandCount;
   result.verticesPerStrand = hair.strands().layout().verticesPerStrand;
+  if (request.captureStrands)
+    result.strandDump = compute::renderStrandsToHairData(ctx, hair.strands(), vk::BufferUse::VertexRead,
+                                                         "hairpipe render: render strands of the drawn frame");
   if (request.captureOpacity && request.opacity.enabled)
     result.opacity = render::captureOpacity(ctx, hair.opacity().image(), hair.bounds().lightSpace(), request.opacity,
                                             glm::normalize(view.light.direction));

@@ -6,6 +6,7 @@
 #include <optional>
 #include <vector>
 
+#include "engine/hair/hair_file.h"
 #include "engine/hair_system.h"
 #include "engine/render/opacity_capture.h"
 #include "engine/sim/head_animation.h"
@@ -23,6 +24,7 @@ struct RenderRequest {
   render::LookSettings look;
   render::OpacitySettings opacity;
   bool captureOpacity = false;      // read the opacity maps and light framing back (RenderResult::opacity)
+  bool captureStrands = false;      // read the rendered frame's render strands back (RenderResult::strands)
 };
 
 struct RenderResult {
@@ -34,6 +36,7 @@ struct RenderResult {
   std::uint32_t strands = 0;
   std::uint32_t verticesPerStrand = 0;
   std::optional<render::OpacityCapture> opacity;  // with captureOpacity and shadows on
+  std::optional<HairFileData> strandDump;         // with captureStrands: Q points per render strand
 };
 
 RenderResult renderStill(const vk::Context& ctx, const HairAsset& asset, const RenderRequest& request);

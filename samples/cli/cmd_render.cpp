@@ -33,6 +33,7 @@ struct RenderOptions {
   std::optional<std::uint32_t> opacityResolution;
   std::optional<float> strandOpacity, shadowK, shadowBias;
   std::string dumpOpacity;
+  std::string dumpStrands;
 };
 
 hp::render::OpacitySettings opacitySettings(const RenderOptions& o) {
@@ -80,6 +81,7 @@ hp::RenderRequest makeRequest(const RenderOptions& o, const CLI::App& cmd) {
   r.exposure = o.exposure;
   r.opacity = opacitySettings(o);
   r.captureOpacity = !o.dumpOpacity.empty();
+  r.captureStrands = !o.dumpStrands.empty();
   return r;
 }
 
@@ -93,6 +95,7 @@ void runRender(const RenderOptions& o, const CLI::App& cmd) {
   if (out.has_parent_path()) std::filesystem::create_directories(out.parent_path());
   hp::writePng(out, result.width, result.height, 4, result.rgba);
   if (result.opacity) hp::render::writeOpacityDump(o.dumpOpacity, *result.opacity);
+  if (result.strandDump) hp::writeHairFile(o.dumpStrands, *result.strandDump);
   nlohmann::json passes = nlohmann::json::object();
   for (const auto& t : result.passTimes) passes[t.name] = t.milliseconds;
   nlohmann::json report = {{"out", o.out},        {"width", result.width},   {"height", result.height},
@@ -101,6 +104,7 @@ void runRender(const RenderOptions& o, const CLI::App& cmd) {
                            {"lut_mode", o.lutMode}, {"device", ctx->properties().deviceName},
                            {"gpu_ms", passes}};
   if (result.opacity) report["opacity_dump"] = o.dumpOpacity;
+  if (result.strandDump) report["strands_dump"] = o.dumpStrands;
   if (o.json) {
     std::cout << report.dump(2) << "\n";
     return;
@@ -132,6 +136,7 @@ void setupRender(CLI::App& app) {
   cmd->add_option("--strand-opacity", o->strandOpacity, "Opacity a strand adds per opacity-map texel (default 0.04)");
   cmd->add_option("--shadow-k", o->shadowK, "Extinction k in T = exp(-k alpha) (default 1)");
   cmd->add_option("--shadow-bias", o->shadowBias, "Shadow lookup bias toward the light, in slices (default 1)");
+  cmd->add_option("--dump-strands", o->dumpStrands, "Write the rendered frame's render strands as .hair (Q points each)");
   cmd->add_option("--dump-opacity", o->dumpOpacity, "Write the 16 opacity slices (PFM), a contact sheet and the slice depths to DIR");
   cmd->add_option("--out", o->out, "Output PNG (default out/hair.png)");
   cmd->add_flag("--json", o->json, "Print JSON");

@@ -1,0 +1,59 @@
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+
+#include "engine/hair/hair_file.h"
+#include "engine/render/png_file.h"
+#include "tests/support/cli_runner.h"
+
+using hp::test::runCli;
+
+namespace {
+std::filesystem::path temp(const std::string& name) {
+  auto p = std::filesystem::temp_directory_path() / name;
+  std::filesystem::remove(p);
+  return p;
+}
+}  // namespace
+
+TEST(CliRender, WritesThePngReportsEveryPassAndDumpsTheStrands) {
+  const auto png = temp("hairpipe_cli_render.png");
+  const auto strands = temp("hairpipe_cli_render.hair");
+  auto r = runCli({"render", "--width", "128", "--height", "96", "--density", "2000", "--frames", "5", "--validation",
+                   "--json", "--out", png.string(), "--dump-strands", strands.string()});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  auto j = nlohmann::json::parse(r.out);
+  for (const char* pass : {"simulate", "tessellate", "interpolate", "bounds", "opacity", "head", "shade", "tonemap"})
+    EXPECT_GT(j["gpu_ms"][pass].get<double>(), 0.0) << pass;
+  EXPECT_EQ(j["strands"], 2000);
+  hp::RgbaImage image = hp::readPngRgba(png);
+  EXPECT_EQ(image.width, 128u);
+  EXPECT_EQ(image.height, 96u);
+  hp::HairFileData dump = hp::readHairFile(strands);
+  EXPECT_EQ(dump.pointCount(), 2000u * j["vertices_per_strand"].get<std::uint32_t>());
+  std::filesystem::remove(png);
+  std::filesystem::remove(strands);
+}
+
+TEST(CliRender, BadOptionsExitWithAMessageAndWriteNothing) {
+  struct Case {
+    std::vector<std::string> args;
+    std::string needle;
+  };
+  const std::vector<Case> cases = {
+      {{"--width", "0"}, "width"},          {{"--msaa", "3"}, "msaa"},
+      {{"--lut-mode", "bogus"}, "bogus"},   {{"--light-dir", "0,0,0"}, "light-dir"},
+      {{"--exposure", "-1"}, "exposure"},   {{"--eta", "0.5"}, "eta"},
+      {{"--animate", "spin"}, "spin"},      {{"--density", "0"}, "total"},
+  };
+  const auto png = temp("hairpipe_cli_render_bad.png");
+  for (const auto& c : cases) {
+    std::vector<std::string> args{"render", "--frames", "1", "--out", png.string()};
+    args.insert(args.end(), c.args.begin(), c.args.end());
+    auto r = runCli(args);
+    EXPECT_EQ(r.exitCode, 1) << c.args[0];
+    EXPECT_NE(r.err.find(c.needle), std::string::npos) << c.args[0] << ": " << r.err;
+    EXPECT_FALSE(std::filesystem::exists(png)) << c.args[0];
+  }
+}
