@@ -39,12 +39,7 @@ void SimulationDriver::runFrames(std::uint32_t count) {
   }
 }
 
-double SimulationDriver::medianFrameMilliseconds() const {
-  if (frameMs_.empty()) return 0.0;
-  std::vector<double> sorted = frameMs_;
-  std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
-  return sorted[sorted.size() / 2];
-}
+double SimulationDriver::medianFrameMilliseconds() const { return vk::median(frameMs_); }
 
 std::vector<glm::vec4> SimulationDriver::readPositions() const {
   return vk::readback<glm::vec4>(ctx_, pass_.positions(), vk::BufferUse::ComputeWrite,

@@ -1,5 +1,7 @@
 #include "engine/vk/profiler.h"
 
+#include <algorithm>
+
 #include "engine/error.h"
 #include "engine/vk/check.h"
 #include "engine/vk/context.h"
@@ -64,5 +66,11 @@ std::vector<ScopeTime> GpuProfiler::results() const {
     out.push_back({s.name, ticks * periodNs_ * 1e-6, s.depth});
   }
   return out;
+}
+
+double median(std::vector<double> values) {
+  if (values.empty()) return 0.0;
+  std::nth_element(values.begin(), values.begin() + values.size() / 2, values.end());
+  return values[values.size() / 2];
 }
 }  // namespace hp::vk

@@ -49,4 +49,7 @@ class GpuProfiler {
   std::vector<Scope> scopes_;
   std::vector<std::size_t> open_;
 };
+
+// The median of repeated timings (the benchmarks' and drivers' summary of a run); 0 for none.
+double median(std::vector<double> values);
 }  // namespace hp::vk

@@ -16,6 +16,7 @@
 #include "engine/hair_system.h"
 #include "engine/vk/context.h"
 #include "engine/vk/submit.h"
+#include "samples/cli/bench_context.h"
 #include "samples/cli/command.h"
 
 namespace {
@@ -27,11 +28,6 @@ struct BenchOptions {
   bool json = false;
   std::string device;
 };
-
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v.empty() ? 0.0 : v[v.size() / 2];
-}
 
 nlohmann::json benchOne(const hp::vk::Context& ctx, const hp::HairAsset& asset, std::uint32_t resolution,
                         const BenchOptions& o) {
@@ -55,18 +51,15 @@ nlohmann::json benchOne(const hp::vk::Context& ctx, const hp::HairAsset& asset, 
           {"chunks", hair.strands().layout().chunks.size()},
           {"resolution", resolution},
           {"format", o.half ? "RGBA16F" : "RGBA32F"},
-          {"bounds_ms", median(times["bounds"])},
-          {"opacity_ms", median(times["opacity"])}};
+          {"bounds_ms", hp::vk::median(times["bounds"])},
+          {"opacity_ms", hp::vk::median(times["opacity"])}};
 }
 
 void run(const BenchOptions& o) {
   if (o.frames == 0 || o.frames > 100) throw hp::Error("bench-opacity: --frames must be in [1, 100]");
   for (std::uint32_t s : o.strands)
     if (s == 0 || s > 4'000'000) throw hp::Error("bench-opacity: --strands values must be in [1, 4000000]");
-  hp::vk::ContextOptions ctxOptions;
-  ctxOptions.device = o.device;
-  auto ctx = hp::vk::Context::createHeadless(ctxOptions);
-  if (!ctx->timestampsSupported()) throw hp::Error("bench-opacity: the device has no timestamp queries");
+  auto ctx = hp::cli::createBenchContext(o.device, "bench-opacity");
   nlohmann::json report = {{"device", ctx->properties().deviceName}, {"frames", o.frames},
                            {"results", nlohmann::json::array()}};
   for (std::uint32_t s : o.strands) {

@@ -14,11 +14,11 @@
 #include "engine/vk/copy_reference.h"
 #include "engine/vk/submit.h"
 #include "samples/cli/command.h"
-#include "samples/cli/scene_options.h"
+#include "samples/cli/bench_context.h"
 
 namespace {
 struct BenchOptions {
-  hp::cli::SceneOptions scene;
+  std::string device;
   std::vector<std::uint32_t> guides{1000, 10000, 100000};
   std::uint32_t frames = 20;
   bool json = false;
@@ -31,11 +31,6 @@ hp::HairAsset repeatedGuides(const hp::HairAsset& head, std::uint32_t count) {
   for (std::uint32_t g = 0; g < count; ++g)
     for (const auto& p : head.guides.guide(g % head.guides.guideCount())) asset.guides.positions.push_back(p);
   return asset;
-}
-
-double median(std::vector<double> v) {
-  std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
-  return v[v.size() / 2];
 }
 
 nlohmann::json benchOne(const hp::vk::Context& ctx, const hp::HairAsset& asset, std::uint32_t frames,
@@ -56,7 +51,7 @@ nlohmann::json benchOne(const hp::vk::Context& ctx, const hp::HairAsset& asset, 
   }
   const double particles = double(asset.guides.positions.size());
   const double bytes = particles * 16.0 * 5.0;
-  const double simMs = median(sim), cMs = median(copyMs);
+  const double simMs = hp::vk::median(sim), cMs = hp::vk::median(copyMs);
   const double simGbs = hp::vk::gigabytesPerSecond(bytes, simMs);
   const double copyGbs = hp::vk::gigabytesPerSecond(copy.bytesMoved(), cMs);
   return {{"guides", asset.guides.guideCount()}, {"particles", particles}, {"ms", simMs}, {"bytes", bytes},
@@ -65,8 +60,7 @@ nlohmann::json benchOne(const hp::vk::Context& ctx, const hp::HairAsset& asset, 
 
 void runBench(const BenchOptions& o) {
   if (o.frames == 0 || o.frames > 10000) throw hp::Error("--frames must be in [1, 10000]");
-  auto ctx = hp::cli::createContext(o.scene);
-  if (!ctx->timestampsSupported()) throw hp::Error("this device has no timestamps; cannot benchmark");
+  auto ctx = hp::cli::createBenchContext(o.device, "bench-sim");
   const hp::HairAsset head = hp::buildDefaultHeadAsset();
   hp::vk::CopyReference copy(*ctx, 64ull << 20);
   nlohmann::json report = {{"device", ctx->properties().deviceName},
@@ -77,7 +71,6 @@ void runBench(const BenchOptions& o) {
     if (g == 0 || g > 4000000) throw hp::Error("--guides values must be in [1, 4000000]");
     report["results"].push_back(benchOne(*ctx, repeatedGuides(head, g), o.frames, copy));
   }
-  hp::cli::checkValidation(*ctx);
   if (o.json) {
     std::cout << report.dump(2) << "\n";
     return;
@@ -93,7 +86,7 @@ void runBench(const BenchOptions& o) {
 void setupBench(CLI::App& app) {
   auto o = std::make_shared<BenchOptions>();
   CLI::App* cmd = app.add_subcommand("bench-sim", "Benchmark the simulation pass with GPU timestamps");
-  hp::cli::addSceneOptions(*cmd, o->scene);
+  cmd->add_option("--device", o->device, "Vulkan device: index or name substring (env HAIRPIPE_DEVICE)");
   cmd->add_option("--guides", o->guides, "Guide counts to measure (default 1000 10000 100000)");
   cmd->add_option("--frames", o->frames, "Frames per measurement (median is reported)");
   cmd->add_flag("--json", o->json, "Print JSON");

@@ -24,6 +24,7 @@
 #include "engine/vk/context.h"
 #include "engine/vk/copy_reference.h"
 #include "engine/vk/submit.h"
+#include "samples/cli/bench_context.h"
 #include "samples/cli/command.h"
 
 namespace {
@@ -43,11 +44,6 @@ struct Result {
   double frameWallMs = 0;  // host wall clock of a whole frame submission (sanity check of the timestamps)
   double tessellateBytes = 0, interpolateBytes = 0;
 };
-
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v.empty() ? 0.0 : v[v.size() / 2];
-}
 
 void countBytes(Result& r) {
   const auto& l = r.layout;
@@ -91,10 +87,10 @@ Result benchOne(const hp::vk::Context& ctx, std::uint32_t strands, const BenchOp
   }
   Result r;
   r.layout = buffers.layout();
-  r.tessellateMs = median(times["tessellate"]);
-  r.interpolateMs = median(times["interpolate"]);
-  r.copyMs = median(times["copy"]);
-  r.frameWallMs = median(times["wall"]);
+  r.tessellateMs = hp::vk::median(times["tessellate"]);
+  r.interpolateMs = hp::vk::median(times["interpolate"]);
+  r.copyMs = hp::vk::median(times["copy"]);
+  r.frameWallMs = hp::vk::median(times["wall"]);
   countBytes(r);
   return r;
 }
@@ -136,10 +132,7 @@ void run(const BenchOptions& o) {
   if (o.frames == 0 || o.frames > 1000) throw hp::Error("bench-strands: --frames must be in [1, 1000]");
   for (std::uint32_t s : o.strands)
     if (s == 0 || s > 4'000'000) throw hp::Error("bench-strands: --strands values must be in [1, 4000000]");
-  hp::vk::ContextOptions ctxOptions;
-  ctxOptions.device = o.device;
-  auto ctx = hp::vk::Context::createHeadless(ctxOptions);
-  if (!ctx->timestampsSupported()) throw hp::Error("bench-strands: the device has no timestamp queries");
+  auto ctx = hp::cli::createBenchContext(o.device, "bench-strands");
   nlohmann::json report = {{"device", ctx->properties().deviceName}, {"frames", o.frames},
                            {"copy_bytes", kCopyBytes}, {"results", nlohmann::json::array()}};
   for (std::uint32_t s : o.strands) report["results"].push_back(toJson(benchOne(*ctx, s, o)));
