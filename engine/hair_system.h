@@ -4,11 +4,13 @@
 // between its passes are recorded here, in one place. Per frame, into the application's command
 // buffer, outside any render pass:
 //   recordUpdate(cmd, motion)        simulate -> tessellate -> interpolate (compute)
-//   recordPrepareDraw(cmd, view)     writes the frame block; makes the strands visible to vertex shaders
+//   recordPrepareDraw(cmd, view)     writes the frame block; bounds pass and the opacity shadow maps (the
+//                                    latter in hairpipe's own vkCmdBeginRendering on its own images);
+//                                    makes strands and maps visible to the draw
 // and inside the application's vkCmdBeginRendering (attachments matching settings.formats):
 //   recordDraw(cmd, view)            head mesh, then hair ribbons (depth test/write, coverage as a dithered sample mask)
-// Stages it touches: COMPUTE_SHADER, COPY (vkCmdUpdateBuffer), VERTEX_SHADER, FRAGMENT_SHADER,
-// early/late fragment tests and colour output. It never waits on a queue; the application keeps the
+// Stages it touches: COMPUTE_SHADER, COPY/CLEAR (vkCmdUpdateBuffer), VERTEX_SHADER, FRAGMENT_SHADER,
+// early/late fragment tests and colour output; in the application's attachments only colour and depth. It never waits on a queue; the application keeps the
 // HairSystem alive until the GPU has finished every command buffer it recorded into.
 #include <memory>
 
