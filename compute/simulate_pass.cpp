@@ -71,7 +71,9 @@ SimulatePass::SimulatePass(const vk::Context& ctx, const HairAsset& asset, const
   set_.writeStorageBuffer(gpu::SIM_BINDING_POSITIONS, positions_.handle());
   set_.writeStorageBuffer(gpu::SIM_BINDING_PREVIOUS, previous_.handle());
   set_.writeStorageBuffer(gpu::SIM_BINDING_REST, restBuffer_.handle());
-  pipeline_ = vk::ComputePipeline(ctx, "simulate.comp", gpu::SIM_WORKGROUP_SIZE, {set_.layout()}, 0, "simulate");
+  static_assert(gpu::SIM_SPEC_PARTICLES == 0, "ComputePipeline numbers specialization constants from 0");
+  pipeline_ = vk::ComputePipeline(ctx, "simulate.comp", gpu::SIM_WORKGROUP_SIZE, {set_.layout()}, 0, "simulate",
+                                  {particlesPerGuide_});
   vk::upload<glm::vec4>(ctx, restBuffer_, rest_, vk::BufferUse::ComputeRead);
   reset(initialHead);
 }

@@ -14,8 +14,11 @@ layout(std430, binding = SIM_BINDING_POSITIONS) buffer Positions { vec4 position
 layout(std430, binding = SIM_BINDING_PREVIOUS) buffer Previous { vec4 previous[]; };
 layout(std430, binding = SIM_BINDING_REST) readonly buffer Rest { vec4 rest[]; };
 
-vec3 x[SIM_MAX_PARTICLES];
-vec3 xPrev[SIM_MAX_PARTICLES];
+// Particles per guide, specialised to the asset's P when the pipeline is built, so the strand's arrays
+// have their exact size and constant-bound loops can be unrolled into registers.
+layout(constant_id = SIM_SPEC_PARTICLES) const uint PARTICLES = 7u;
+vec3 x[PARTICLES];
+vec3 xPrev[PARTICLES];
 
 // A per-guide phase in [0, 2 pi) so gusts do not move every strand in lockstep.
 float gustPhase(uint guide) {
@@ -105,7 +108,7 @@ void collide(uint base, uint n, mat4 head) {
 void main() {
   uint guide = hpThreadId(SIM_WORKGROUP_SIZE);
   if (guide >= frame.guideCount) return;
-  uint n = frame.particlesPerGuide;
+  const uint n = PARTICLES;
   uint base = guide * n;
   for (uint i = 0u; i < n; ++i) {
     x[i] = positions[base + i].xyz;

@@ -100,15 +100,21 @@ void PipelineBase::pushConstants(VkCommandBuffer cmd, const void* data, std::uin
 
 ComputePipeline::ComputePipeline(const Context& ctx, const std::string& shader, std::uint32_t workgroupSize,
                                  const std::vector<VkDescriptorSetLayout>& sets, std::uint32_t pushSize,
-                                 const std::string& name)
+                                 const std::string& name, const std::vector<std::uint32_t>& specialization)
     : workgroupSize_(workgroupSize), maxGroupsX_(ctx.properties().limits.maxComputeWorkGroupCount[0]) {
   if (workgroupSize == 0 || workgroupSize > ctx.properties().limits.maxComputeWorkGroupInvocations)
     throw Error("pipeline '" + name + "': workgroup size " + std::to_string(workgroupSize) + " is not supported");
   bindPoint_ = VK_PIPELINE_BIND_POINT_COMPUTE;
   createLayout(ctx, sets, pushSize, VK_SHADER_STAGE_COMPUTE_BIT, name);
   ScopedModule module(ctx, shader);
+  std::vector<VkSpecializationMapEntry> entries;
+  for (std::uint32_t i = 0; i < specialization.size(); ++i)
+    entries.push_back({i, i * std::uint32_t(sizeof(std::uint32_t)), sizeof(std::uint32_t)});
+  VkSpecializationInfo specInfo{static_cast<std::uint32_t>(entries.size()), entries.data(),
+                                specialization.size() * sizeof(std::uint32_t), specialization.data()};
   VkComputePipelineCreateInfo info{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
   info.stage = stageInfo(VK_SHADER_STAGE_COMPUTE_BIT, module.module);
+  if (!specialization.empty()) info.stage.pSpecializationInfo = &specInfo;
   info.layout = layout_;
   HP_VK_CHECK(vkCreateComputePipelines(device_, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline_));
   ctx.setName(VK_OBJECT_TYPE_PIPELINE, reinterpret_cast<std::uint64_t>(pipeline_), name);

@@ -45,8 +45,10 @@ class PipelineBase {
 class ComputePipeline : public PipelineBase {
  public:
   ComputePipeline() = default;
+  // `specialization[i]` is the value of the shader's `layout(constant_id = i) const uint` (i from 0).
   ComputePipeline(const Context& ctx, const std::string& shader, std::uint32_t workgroupSize,
-                  const std::vector<VkDescriptorSetLayout>& sets, std::uint32_t pushSize, const std::string& name);
+                  const std::vector<VkDescriptorSetLayout>& sets, std::uint32_t pushSize, const std::string& name,
+                  const std::vector<std::uint32_t>& specialization = {});
   void bind(VkCommandBuffer cmd, VkDescriptorSet set) const;
   // Enough workgroups for `threads` invocations. Past maxComputeWorkGroupCount[0] groups the grid
   // becomes 2D; shaders use hpThreadId(size) from shaders/common.glsl and bounds-check against their count.

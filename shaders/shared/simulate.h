@@ -11,6 +11,7 @@
 HP_BEGIN
 HP_CONST(uint, SIM_WORKGROUP_SIZE, 64)       // one invocation per guide
 HP_CONST(uint, SIM_MAX_PARTICLES, 64)        // per guide (GuideSet allows 2..64)
+HP_CONST(uint, SIM_SPEC_PARTICLES, 0)        // specialization constant id: particles per guide
 HP_CONST(uint, SIM_MAX_COLLIDERS, 32)
 HP_CONST(uint, SIM_COLLISION_PASSES, 3)      // visits of every collider per constraint iteration
 HP_CONST(uint, SIM_BINDING_FRAME, 0)
