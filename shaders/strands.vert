@@ -1,7 +1,8 @@
 #version 460
 // Camera-facing ribbons pulled from the render strand buffers (no vertex input). Quad k of a strand
 // spans vertices k and k+1; the ribbon thins from the root to the tip. A ribbon narrower than a
-// pixel is widened to one pixel and its coverage is passed on as alpha (alpha-to-coverage), so thin
+// pixel is widened to one pixel and its coverage is passed on (the fragment shader turns it into a
+// dithered sample mask with MSAA, alpha without), so thin
 // hair stays smooth instead of breaking into dashes. Per vertex also the opacity-map lookup weights
 // (opacity_lookup.glsl), interpolated to the fragment shader.
 #include "shared/render.h"
