@@ -46,6 +46,7 @@ TEST(CliRender, BadOptionsExitWithAMessageAndWriteNothing) {
       {{"--lut-mode", "bogus"}, "bogus"},   {{"--light-dir", "0,0,0"}, "light-dir"},
       {{"--exposure", "-1"}, "exposure"},   {{"--eta", "0.5"}, "eta"},
       {{"--animate", "spin"}, "spin"},      {{"--density", "0"}, "total"},
+      {{"--width", "16384", "--height", "16384"}, "device-local heap"},
   };
   const auto png = temp("hairpipe_cli_render_bad.png");
   for (const auto& c : cases) {
