@@ -96,11 +96,24 @@ StrandLayout planStrandLayout(std::uint32_t guideCount, std::uint32_t particlesP
   return l;
 }
 
+void checkStrandMemory(const StrandLayout& layout, VkDeviceSize heapBytes) {
+  // Per strand: positions and tangents (Q vec4 each), binding and attributes; plus the smoothed guides.
+  const double perStrand = double(layout.verticesPerStrand) * 2.0 * kVec4 + 2.0 * kVec4;
+  const double bytes = double(layout.strandCount) * perStrand +
+                       double(layout.guideCount) * layout.verticesPerStrand * 2.0 * kVec4;
+  if (bytes > double(heapBytes))
+    throw Error("strand buffers: " + std::to_string(layout.strandCount) + " strands x " +
+                std::to_string(layout.verticesPerStrand) + " vertices need " +
+                std::to_string(std::uint64_t(bytes / (1 << 20))) + " MiB, more than this device's " +
+                std::to_string(heapBytes >> 20) + " MiB device-local heap");
+}
+
 StrandBuffers::StrandBuffers(const vk::Context& ctx, std::uint32_t guideCount, std::uint32_t particlesPerGuide,
                              const InterpolationTopology& topology, const StrandOptions& options)
     : layout_(planStrandLayout(guideCount, particlesPerGuide, static_cast<std::uint32_t>(topology.triangles.size()),
                                static_cast<std::uint32_t>(topology.strands.size()), options,
                                ctx.properties().limits.maxStorageBufferRange)) {
+  checkStrandMemory(layout_, ctx.deviceLocalHeapBytes());
   const VkDeviceSize guideBytes = VkDeviceSize(guideCount) * layout_.verticesPerStrand * kVec4;
   guidePositions_ = deviceBuffer(ctx, guideBytes, "smoothed guide positions");
   guideTangents_ = deviceBuffer(ctx, guideBytes, "smoothed guide tangents");

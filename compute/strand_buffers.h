@@ -64,6 +64,10 @@ StrandLayout planStrandLayout(std::uint32_t guideCount, std::uint32_t particlesP
                               std::uint32_t triangleCount, std::uint32_t strandCount, const StrandOptions& options,
                               VkDeviceSize maxStorageBufferRange);
 
+// Chunking keeps every descriptor range legal; the total must still fit the device. Throws hp::Error
+// naming the strand count and the heap when the strand buffers would exceed heapBytes.
+void checkStrandMemory(const StrandLayout& layout, VkDeviceSize heapBytes);
+
 struct StrandChunk {
   ChunkRange range;
   vk::Buffer bindings;    // StrandBindingGpu[count] (guides only: a 16-byte placeholder)

@@ -1,7 +1,5 @@
 #include "engine/render/render_targets.h"
 
-#include <algorithm>
-
 #include "engine/error.h"
 #include "engine/vk/context.h"
 
@@ -17,23 +15,15 @@ VkSampleCountFlagBits sampleCountFlag(std::uint32_t msaa) {
 }
 
 namespace {
-// The largest device-local heap: what the attachments must fit in (with room for everything else).
-VkDeviceSize deviceLocalHeap(const vk::Context& ctx) {
-  VkDeviceSize best = 0;
-  const auto& mem = ctx.memoryProperties();
-  for (std::uint32_t i = 0; i < mem.memoryHeapCount; ++i)
-    if (mem.memoryHeaps[i].flags & VK_MEMORY_HEAP_DEVICE_LOCAL_BIT) best = std::max(best, mem.memoryHeaps[i].size);
-  return best;
-}
-
 void checkFits(const vk::Context& ctx, std::uint32_t width, std::uint32_t height, std::uint32_t msaa) {
   // HDR colour + depth per sample, resolve + display per pixel.
   const double bytes = double(width) * height * (msaa * (8.0 + 4.0) + (msaa > 1 ? 8.0 : 0.0) + 4.0);
-  const double budget = 0.5 * double(deviceLocalHeap(ctx));
+  // Half the largest device-local heap: room is left for the hair's own buffers and everything else.
+  const double budget = 0.5 * double(ctx.deviceLocalHeapBytes());
   if (bytes > budget)
     throw Error("render targets of " + std::to_string(width) + "x" + std::to_string(height) + " at msaa " +
                 std::to_string(msaa) + " need " + std::to_string(std::uint64_t(bytes / (1 << 20))) +
-                " MiB, more than half of this device's " + std::to_string(deviceLocalHeap(ctx) >> 20) +
+                " MiB, more than half of this device's " + std::to_string(ctx.deviceLocalHeapBytes() >> 20) +
                 " MiB device-local heap");
 }
 }  // namespace

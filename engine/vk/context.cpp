@@ -1,5 +1,6 @@
 #include "engine/vk/context.h"
 
+#include <algorithm>
 #include <cstdlib>
 #include <cstring>
 
@@ -207,4 +208,11 @@ void Context::setName(VkObjectType type, std::uint64_t handle, const std::string
 }
 
 void Context::waitIdle() const { HP_VK_CHECK(vkDeviceWaitIdle(device_)); }
+
+VkDeviceSize Context::deviceLocalHeapBytes() const {
+  VkDeviceSize best = 0;
+  for (std::uint32_t i = 0; i < memory_.memoryHeapCount; ++i)
+    if (memory_.memoryHeaps[i].flags & VK_MEMORY_HEAP_DEVICE_LOCAL_BIT) best = std::max(best, memory_.memoryHeaps[i].size);
+  return best;
+}
 }  // namespace hp::vk

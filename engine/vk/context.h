@@ -63,6 +63,8 @@ class Context {
   // Debug name for any object (no-op when VK_EXT_debug_utils is off).
   void setName(VkObjectType type, std::uint64_t handle, const std::string& name) const;
   void waitIdle() const;
+  // Size of the largest device-local heap: the budget that size checks of big allocations use.
+  VkDeviceSize deviceLocalHeapBytes() const;
 
  private:
   Context() = default;
