@@ -24,6 +24,14 @@ glm::mat3 lightBasisRows(const glm::vec3& towardLight) {
   return glm::transpose(glm::mat3(x, y, z));  // rows x, y, z
 }
 
+ShadowLight ShadowLight::makeSpot(const glm::vec3& position, const glm::vec3& towardLight, float coneRadians) {
+  ShadowLight l(towardLight);
+  l.spot = true;
+  l.position = position;
+  l.coneRadians = coneRadians;
+  return l;
+}
+
 gpu::LightSpace initialLightSpace() {
   gpu::LightSpace l{};
   l.viewProj = glm::mat4(1.0f);
@@ -59,17 +67,23 @@ void BoundsPass::bind(const StrandBuffers& strands) {
   chunks_ = std::move(chunks);
 }
 
-gpu::BoundsPush BoundsPass::push(const glm::vec3& towardLight) const {
-  const glm::mat3 rows = glm::transpose(lightBasisRows(towardLight));  // columns = rows of the basis
+gpu::BoundsPush BoundsPass::push(const ShadowLight& light) const {
+  const glm::mat3 rows = glm::transpose(lightBasisRows(light.towardLight));  // columns = rows of the basis
   gpu::BoundsPush p{};
   p.row0 = glm::vec4(rows[0], 0.0f);
   p.row1 = glm::vec4(rows[1], 0.0f);
   p.row2 = glm::vec4(rows[2], 0.0f);
+  if (light.spot) {
+    p.perspective = 1;
+    p.tanCone = std::tan(light.coneRadians);
+    p.nearLimit = kSpotNearLimit;
+    p.origin = glm::vec4(light.position, 0.0f);
+  }
   return p;
 }
 
-void BoundsPass::recordReduce(VkCommandBuffer cmd, const glm::vec3& towardLight) const {
-  gpu::BoundsPush p = push(towardLight);
+void BoundsPass::recordReduce(VkCommandBuffer cmd, const ShadowLight& light) const {
+  gpu::BoundsPush p = push(light);
   p.mode = gpu::BOUNDS_MODE_REDUCE;
   for (const Chunk& c : chunks_) {
     p.vertexCount = c.vertexCount;
@@ -79,8 +93,8 @@ void BoundsPass::recordReduce(VkCommandBuffer cmd, const glm::vec3& towardLight)
   }
 }
 
-void BoundsPass::recordFinalize(VkCommandBuffer cmd, const glm::vec3& towardLight, const BoundsFraming& f) const {
-  gpu::BoundsPush p = push(towardLight);
+void BoundsPass::recordFinalize(VkCommandBuffer cmd, const ShadowLight& light, const BoundsFraming& f) const {
+  gpu::BoundsPush p = push(light);
   p.mode = gpu::BOUNDS_MODE_FINALIZE;
   p.marginWorld = f.marginWorld;
   p.marginTexels = f.marginTexels;

@@ -3,7 +3,8 @@
 // extent of every render strand vertex (all chunks) on the device and writes gpu::LightSpace into
 // its own device buffer: the orthographic light viewProj over the padded x/y box and the 16 slice
 // depths z_i = z_near + i d_z. The host never reads it back in the frame loop; later passes bind
-// lightSpace() as a storage buffer. Directional light only (the basis comes from its direction).
+// lightSpace() as a storage buffer. A directional light gets an orthographic framing, a spot light a
+// perspective one from its position, capped by its cone (shared/opacity.h has the conventions).
 //
 // Recording, in the frame recorder, with barriers between the steps (the pass inserts none):
 //   recordReduce(cmd, light)  one dispatch per chunk: atomicMin/Max into LightSpace.minBits/maxBits
@@ -30,6 +31,20 @@ namespace hp::compute {
 // hint is +Y unless the light is within ~8 degrees of it, then +X, so the basis is never degenerate.
 glm::mat3 lightBasisRows(const glm::vec3& towardLight);
 
+// The light as the shadow passes see it. Implicit from a direction: a directional light.
+struct ShadowLight {
+  glm::vec3 towardLight{0.0f, 0.0f, 1.0f};  // unit; spot: minus its axis (from the lit hair toward it)
+  bool spot = false;
+  glm::vec3 position{0.0f};  // spot: world position
+  float coneRadians = 0.5f;  // spot: cone half-angle, (0, 80 deg]
+  ShadowLight() = default;
+  ShadowLight(const glm::vec3& direction) : towardLight(direction) {}  // NOLINT: a direction is a directional light
+  static ShadowLight makeSpot(const glm::vec3& position, const glm::vec3& towardLight, float coneRadians);
+};
+
+// Hair closer to a spot than this (scene units, along its axis) is left out of its framing.
+inline constexpr float kSpotNearLimit = 1.0e-3f;
+
 struct BoundsFraming {
   std::uint32_t resolution = 512;  // opacity map texels per side (for the texel padding)
   float marginWorld = 0.0f;        // half the widest strand, scene units
@@ -41,8 +56,8 @@ class BoundsPass {
   BoundsPass(const vk::Context& ctx, const StrandBuffers& strands);
   void bind(const StrandBuffers& strands);  // outside the frame loop, after StrandBuffers changed
 
-  void recordReduce(VkCommandBuffer cmd, const glm::vec3& towardLight) const;
-  void recordFinalize(VkCommandBuffer cmd, const glm::vec3& towardLight, const BoundsFraming& framing) const;
+  void recordReduce(VkCommandBuffer cmd, const ShadowLight& light) const;
+  void recordFinalize(VkCommandBuffer cmd, const ShadowLight& light, const BoundsFraming& framing) const;
   const vk::Buffer& lightSpace() const { return lightSpace_; }
 
  private:
@@ -50,7 +65,7 @@ class BoundsPass {
     vk::DescriptorSet set;
     std::uint32_t vertexCount;
   };
-  gpu::BoundsPush push(const glm::vec3& towardLight) const;
+  gpu::BoundsPush push(const ShadowLight& light) const;
 
   const vk::Context* ctx_;
   vk::Buffer lightSpace_;

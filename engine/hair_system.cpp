@@ -57,19 +57,25 @@ void HairSystem::recordPrepareDraw(VkCommandBuffer cmd, const DrawView& view, vk
   compute::BoundsFraming framing;
   framing.resolution = settings_.opacity.resolution;
   framing.marginWorld = 0.5f * settings_.look.strandWidth * gpu::WIDTH_SCALE_MAX;
-  recordShadowPasses(cmd, bounds_, opacity_, view.light.direction, framing, view.headToWorld, profiler);
+  recordShadowPasses(cmd, bounds_, opacity_, shadowLightOf(view.light), framing, view.headToWorld, profiler);
+}
+
+compute::ShadowLight shadowLightOf(const LightSpec& light) {
+  const glm::vec3 toward = glm::normalize(light.direction);
+  if (light.type == LightSpec::Type::Directional) return compute::ShadowLight(toward);
+  return compute::ShadowLight::makeSpot(light.position, toward, glm::radians(light.coneDeg));
 }
 
 void recordShadowPasses(VkCommandBuffer cmd, const compute::BoundsPass& bounds, const render::OpacityPass& opacity,
-                        const glm::vec3& towardLight, const compute::BoundsFraming& framing,
+                        const compute::ShadowLight& shadowLight, const compute::BoundsFraming& framing,
                         const glm::mat4& headToWorld, vk::GpuProfiler* profiler) {
   const VkBuffer light = bounds.lightSpace().handle();
   if (profiler) profiler->begin(cmd, "bounds");
   vk::memoryBarrier(cmd, vk::BufferUse::ComputeWrite, vk::BufferUse::ComputeRead);        // strand positions
   vk::bufferBarrier(cmd, light, vk::BufferUse::VertexRead, vk::BufferUse::ComputeWrite);  // last frame's readers
-  bounds.recordReduce(cmd, towardLight);
+  bounds.recordReduce(cmd, shadowLight);
   vk::bufferBarrier(cmd, light, vk::BufferUse::ComputeWrite, vk::BufferUse::ComputeWrite);
-  bounds.recordFinalize(cmd, towardLight, framing);
+  bounds.recordFinalize(cmd, shadowLight, framing);
   vk::bufferBarrier(cmd, light, vk::BufferUse::ComputeWrite, vk::BufferUse::VertexRead);
   if (profiler) profiler->end(cmd);
 

@@ -87,7 +87,8 @@ class HairSystem {
 // can drive the passes over hand-made strands with the same synchronization). The strand positions'
 // last ComputeWrite must already be made visible to VertexRead; this adds ComputeRead for the bounds.
 // Leaves LightSpace in BufferUse::VertexRead and the maps in ImageUse::FragmentSampled.
+compute::ShadowLight shadowLightOf(const LightSpec& light);
 void recordShadowPasses(VkCommandBuffer cmd, const compute::BoundsPass& bounds, const render::OpacityPass& opacity,
-                        const glm::vec3& towardLight, const compute::BoundsFraming& framing,
+                        const compute::ShadowLight& light, const compute::BoundsFraming& framing,
                         const glm::mat4& headToWorld, vk::GpuProfiler* profiler = nullptr);
 }  // namespace hp

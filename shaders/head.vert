@@ -12,8 +12,9 @@ layout(push_constant) uniform Push { mat4 headToWorld; };
 
 layout(location = 0) out vec3 outNormal;
 layout(location = 1) out float outScalp;  // 1 where hair grows
-layout(location = 2) out vec2 outLightUv;  // opacity-map lookup (opacity_lookup.glsl)
+layout(location = 2) out vec3 outLightUvw;  // opacity-map lookup (opacity_lookup.glsl)
 layout(location = 3) out vec4 outSliceWeights[4];
+layout(location = 7) out vec3 outWorld;  // for a spot's per-fragment L
 
 void main() {
   uint i = indices[gl_VertexIndex];
@@ -21,7 +22,8 @@ void main() {
   outNormal = mat3(headToWorld) * normals[i].xyz;
   outScalp = normals[i].w;
   OpacityVertex o = opacityVertex(light, world.xyz, frame.strand.w, frame.options.y != 0u);
-  outLightUv = o.uv;
+  outLightUvw = o.uvw;
+  outWorld = world.xyz;
   outSliceWeights = vec4[4](o.w0, o.w1, o.w2, o.w3);
   gl_Position = frame.proj * frame.view * world;
 }

@@ -1,8 +1,10 @@
 #version 460
 // Opacity maps, strands (REFERENCES.md §4): every segment of every render strand as a line seen from
 // the light, pulled from the chunk's position buffer (line list, 2 vertices per segment). The light
-// depth travels as the slice coordinate s = 16 clip.z; clip z is a constant so no hair or head part
-// is ever depth-clipped (there is no depth test: opacity is additive, order-independent).
+// depth travels as the slice coordinate s = 16 clip.z (linear in light depth, so perspective-correct
+// interpolation keeps it exact for a spot); clip z is half of w so no hair or head part in front of
+// the light is ever depth-clipped (there is no depth test: opacity is additive, order-independent).
+// For a spot, parts behind it (w <= 0) are clipped: they cannot shadow anything in the cone.
 #include "shared/opacity.h"
 
 layout(std430, binding = OPACITY_BINDING_POSITIONS) readonly buffer Positions { vec4 positions[]; };
@@ -19,5 +21,5 @@ void main() {
   uint v = strand * q + k + (gl_VertexIndex & 1u);
   vec4 clip = light.viewProj * vec4(positions[v].xyz, 1.0);
   outSlice = clip.z * float(OPACITY_SLICES);
-  gl_Position = vec4(clip.xy, 0.5, 1.0);
+  gl_Position = vec4(clip.xy, 0.5 * clip.w, clip.w);  // w = 1 (directional) or spot depth
 }

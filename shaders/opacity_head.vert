@@ -14,5 +14,5 @@ void main() {
   vec4 world = push.headToWorld * vec4(positions[indices[gl_VertexIndex]].xyz, 1.0);
   vec4 clip = light.viewProj * world;
   outSlice = clip.z * float(OPACITY_SLICES);
-  gl_Position = vec4(clip.xy, 0.5, 1.0);
+  gl_Position = vec4(clip.xy, 0.5 * clip.w, clip.w);  // w = 1 (directional) or spot depth
 }

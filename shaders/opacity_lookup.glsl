@@ -1,14 +1,15 @@
 // Opacity shadow map lookup (REFERENCES.md §4 eq. 10), GLSL only, for the shading passes.
-// Per vertex: the light uv and the 16 interpolation weights w_i = max(0, 1 - |s - i|) of the slice
+// Per vertex: the light clip (x, y, w) and the 16 interpolation weights w_i = max(0, 1 - |s - i|) of the slice
 // coordinate s (shared/opacity.h), moved `bias` slices toward the light so a strand does not shadow
 // itself. Per fragment: alpha = sum_i w_i alpha(z_i) as 4 dot products, T = exp(-k alpha).
-// Outside the map's x/y box there is no hair: alpha = 0.
+// Per fragment the uv is clip.xy / clip.w (exact for a spot's perspective map too; ortho: w = 1).
+// Outside the map's x/y box, or behind a spot (w <= 0), there is no hair: alpha = 0.
 #ifndef HP_OPACITY_LOOKUP_GLSL
 #define HP_OPACITY_LOOKUP_GLSL
 #include "shared/opacity.h"
 
 struct OpacityVertex {
-  vec2 uv;
+  vec3 uvw;  // uv = uvw.xy / uvw.z (shared/opacity.h: clip.xy / clip.w, y flipped)
   vec4 w0, w1, w2, w3;  // slices 1-4, 5-8, 9-12, 13-16
 };
 
@@ -16,7 +17,8 @@ struct OpacityVertex {
 OpacityVertex opacityVertex(LightSpace light, vec3 world, float bias, bool enabled) {
   vec4 clip = light.viewProj * vec4(world, 1.0);
   OpacityVertex o;
-  o.uv = vec2(clip.x * 0.5 + 0.5, 0.5 - clip.y * 0.5);  // the pass's viewport flips y (clip +Y is up)
+  // uv = (clip.xy / w) * (0.5, -0.5) + 0.5: the pass's viewport flips y (clip +Y is up).
+  o.uvw = vec3(clip.x * 0.5 + 0.5 * clip.w, 0.5 * clip.w - clip.y * 0.5, clip.w);
   // Behind z_far the last slice holds all the hair; in front of z_near (s <= 0) there is none.
   float s = clamp(clip.z * float(OPACITY_SLICES) - bias, 0.0, float(OPACITY_SLICES));
   const vec4 first = vec4(1.0, 2.0, 3.0, 4.0);
@@ -28,7 +30,9 @@ OpacityVertex opacityVertex(LightSpace light, vec3 world, float bias, bool enabl
   return o;
 }
 
-float opacityAlpha(sampler2DArray maps, vec2 uv, vec4 w0, vec4 w1, vec4 w2, vec4 w3) {
+float opacityAlpha(sampler2DArray maps, vec3 uvw, vec4 w0, vec4 w1, vec4 w2, vec4 w3) {
+  if (!(uvw.z > 0.0)) return 0.0;
+  vec2 uv = uvw.xy / uvw.z;
   if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) return 0.0;
   return dot(w0, texture(maps, vec3(uv, 0.0))) + dot(w1, texture(maps, vec3(uv, 1.0))) +
          dot(w2, texture(maps, vec3(uv, 2.0))) + dot(w3, texture(maps, vec3(uv, 3.0)));

@@ -1,5 +1,6 @@
 #version 460
 // Hair shading (REFERENCES.md §3-4): radiance = S(L, V, T) cos(theta_i) x light x transmittance, plus
+// (L and the light's cone/distance scale from light.glsl: per fragment for a spot)
 // a small ambient term, times the strand's lightness variation. The ribbon's pixel coverage becomes a
 // sample mask with MSAA (dithered per strand and pixel, see coverageMask), alpha without. Transmittance T = exp(-k alpha) from the opacity maps with the
 // per-vertex slice weights (opacity_lookup.glsl); the ambient term is not shadowed.
@@ -7,6 +8,7 @@
 #include "shared/marschner.h"
 #include "marschner.glsl"
 #include "opacity_lookup.glsl"
+#include "light.glsl"
 #include "shared/strands.h"
 
 layout(std140, binding = RENDER_BINDING_FRAME) uniform Frame { RenderFrame frame; };
@@ -20,7 +22,7 @@ layout(location = 0) in vec3 inWorld;
 layout(location = 1) in vec3 inTangent;
 layout(location = 2) in float inCoverage;
 layout(location = 3) in float inColorScale;
-layout(location = 4) in vec2 inLightUv;
+layout(location = 4) in vec3 inLightUvw;
 layout(location = 5) in vec4 inSliceWeights[4];
 layout(location = 9) flat in uint inStrand;
 layout(push_constant) uniform Push { StrandDrawPush push; };
@@ -41,15 +43,16 @@ uint coverageMask(float coverage, uint samples) {
 
 void main() {
   vec3 T = normalize(inTangent);
-  vec3 L = frame.lightDirection.xyz;
+  LightSample light = sampleLight(frame.lightDirection, frame.lightPosition, frame.lightSpot, inWorld);
+  vec3 L = light.L;
   vec3 V = normalize(frame.cameraPosition.xyz - inWorld);
   vec3 S = marschnerEvaluate(marschner.control.x, L, V, T, lutM, lutN0, lutN1, marschner);
   float sinThetaI = clamp(dot(L, T), -1.0, 1.0);
   float cosThetaI = sqrt(1.0 - sinThetaI * sinThetaI);
-  float alpha = opacityAlpha(opacityMaps, inLightUv, inSliceWeights[0], inSliceWeights[1], inSliceWeights[2],
+  float alpha = opacityAlpha(opacityMaps, inLightUvw, inSliceWeights[0], inSliceWeights[1], inSliceWeights[2],
                              inSliceWeights[3]);
   float transmittance = exp(-frame.strand.z * alpha);
-  vec3 direct = S * cosThetaI * frame.lightRadiance.rgb * transmittance;
+  vec3 direct = S * cosThetaI * frame.lightRadiance.rgb * (light.scale * transmittance);
   vec3 ambient = frame.hairColor.rgb * frame.hairColor.w;
   if (push.samples > 1u) {
     uint mask = coverageMask(inCoverage, push.samples);

@@ -20,7 +20,7 @@ layout(location = 0) out vec3 outWorld;
 layout(location = 1) out vec3 outTangent;
 layout(location = 2) out float outCoverage;
 layout(location = 3) out float outColorScale;
-layout(location = 4) out vec2 outLightUv;
+layout(location = 4) out vec3 outLightUvw;
 layout(location = 5) out vec4 outSliceWeights[4];
 layout(location = 9) flat out uint outStrand;  // global strand index: keys the coverage dither
 
@@ -57,7 +57,7 @@ void main() {
   outColorScale = attr.colorScale;
   outStrand = push.firstStrand + strand;
   OpacityVertex o = opacityVertex(light, p, frame.strand.w, frame.options.y != 0u);
-  outLightUv = o.uv;
+  outLightUvw = o.uvw;
   outSliceWeights = vec4[4](o.w0, o.w1, o.w2, o.w3);
   gl_Position = frame.proj * frame.view * vec4(p, 1.0);
 }

@@ -28,10 +28,22 @@ struct ModelSpec {
   bool keepStrands = false;     // .hair: keep the strands' own points instead of resampling
 };
 
+// One light. `direction` always points from the lit hair toward the light: for a directional light
+// that is all there is; for a spot it is minus the spot's axis (the spot shines along -direction from
+// `position`). makeSpot aims a spot from a position at a target.
 struct LightSpec {
+  enum class Type { Directional, Spot };
+  Type type = Type::Directional;
   glm::vec3 direction = glm::normalize(glm::vec3(0.5f, 0.8f, 0.6f));  // unit, from the hair toward the light
   glm::vec3 color{1.0f};  // linear RGB radiance colour
   float intensity = 3.0f;
+  glm::vec3 position{0.0f};  // spot: world position
+  float coneDeg = 30.0f;     // spot: cone half-angle in degrees, (0, 80]; the last 20% of it fades out
+  float range = 0.0f;        // spot: inverse-square falloff (range / distance)^2 normalised at this
+                             // distance (scene units); 0 = no distance falloff
+
+  static LightSpec makeSpot(const glm::vec3& position, const glm::vec3& target, float coneDeg);
+  void validate() const;  // throws hp::Error naming the field
 };
 
 struct CameraSpec {

@@ -110,18 +110,42 @@ void readMaterial(JsonObject& root, HairMaterial& m) {
   validateSection(m, *o, root.pointer("material"));
 }
 
+// "type": "directional" (default) reads direction; "spot" reads position (required), target and
+// coneDeg/range; a key of the other type is refused.
 void readLight(JsonObject& root, LightSpec& l) {
   auto o = root.object("light");
   if (!o) return;
+  std::string type = "directional";
+  o->read("type", type);
+  requireThat(type == "directional" || type == "spot", *o, "type",
+              "expected \"directional\" or \"spot\", got \"" + type + "\"");
+  const bool spot = type == "spot";
+  for (const char* key : {"position", "target", "coneDeg", "range"})
+    requireThat(spot || !o->has(key), *o, key, "is for a spot light only (\"type\": \"spot\")");
+  requireThat(!spot || !o->has("direction"), *o, "direction", "a spot light aims with \"target\", not \"direction\"");
+  requireThat(!spot || o->has("position"), *o, "position", "is required for a spot light");
+  glm::vec3 target{0.0f};
   o->read("direction", l.direction);
+  o->read("position", l.position);
+  o->read("target", target);
+  o->read("coneDeg", l.coneDeg);
+  o->read("range", l.range);
   o->read("color", l.color);
   o->read("intensity", l.intensity);
   o->finish();
+  if (spot) {
+    l.type = LightSpec::Type::Spot;
+    l.direction = l.position - target;
+    requireThat(glm::length(l.direction) > 1e-6f, *o, "target", "must differ from position");
+  }
   float len = glm::length(l.direction);
   requireThat(std::isfinite(len) && len > 1e-6f, *o, "direction", "must be a non-zero vector");
   l.direction /= len;
   requireThat(glm::all(glm::greaterThanEqual(l.color, glm::vec3(0.0f))), *o, "color", "components must be >= 0");
   requireThat(std::isfinite(l.intensity) && l.intensity >= 0.0f, *o, "intensity", "must be >= 0");
+  requireThat(l.coneDeg > 0.0f && l.coneDeg <= 80.0f, *o, "coneDeg", "must be in (0, 80], got " + std::to_string(l.coneDeg));
+  requireThat(std::isfinite(l.range) && l.range >= 0.0f, *o, "range", "must be >= 0 (0: no distance falloff)");
+  validateSection(l, *o, root.pointer("light"));
 }
 
 void readCamera(JsonObject& root, CameraSpec& c) {

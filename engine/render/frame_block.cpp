@@ -5,6 +5,10 @@
 #include "engine/error.h"
 
 namespace hp::render {
+namespace {
+constexpr float kSpotInnerFraction = 0.8f;  // full radiance inside 80% of the half-angle (shaders/light.glsl)
+}  // namespace
+
 void LookSettings::validate() const {
   auto positiveFinite = [](float v) { return std::isfinite(v) && v > 0.0f; };
   if (!positiveFinite(strandWidth) || strandWidth > 0.01f) throw Error("strand width must be in (0, 0.01] scene units");
@@ -25,6 +29,11 @@ gpu::RenderFrame makeRenderFrame(const CameraMatrices& camera, VkExtent2D extent
   f.cameraPosition = glm::vec4(camera.position, pixelAtUnitDepth);
   f.lightDirection = glm::vec4(glm::normalize(light.direction), 0.0f);
   f.lightRadiance = glm::vec4(light.color * light.intensity, 0.0f);
+  if (light.type == LightSpec::Type::Spot) {
+    const float cone = glm::radians(light.coneDeg);
+    f.lightPosition = glm::vec4(light.position, 1.0f);
+    f.lightSpot = glm::vec4(std::cos(cone), std::cos(kSpotInnerFraction * cone), light.range, 0.0f);
+  }
   // The colour of one straight pass through the fibre (absorptionFromColor's inverse) as ambient albedo.
   const glm::dvec3 albedo = glm::exp(-2.0 * material.absorption);
   f.hairColor = glm::vec4(glm::vec3(albedo), look.ambient);

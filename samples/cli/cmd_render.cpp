@@ -2,6 +2,7 @@
 // Marschner shading, opacity shadow maps), writes the PNG atomically and prints the GPU time of every
 // pass. --dump-opacity DIR also writes the 16 opacity slices (PFM), a contact sheet (PNG) and the
 // slice depths (JSON).
+#include <cmath>
 #include <iostream>
 
 #include <nlohmann/json.hpp>
@@ -20,7 +21,8 @@ struct RenderOptions {
   bool materialGiven = false;
   std::uint32_t frames = 90;
   std::optional<std::uint32_t> width, height, msaa, density;
-  std::optional<std::vector<float>> lightDir;
+  std::optional<std::vector<float>> lightDir, spot, spotTarget;
+  std::optional<float> spotAngle, spotRange;
   std::optional<float> orbit;
   std::string lutMode = "float";
   std::string animate = "none";
@@ -48,6 +50,36 @@ hp::render::OpacitySettings opacitySettings(const RenderOptions& o) {
   return s;
 }
 
+glm::vec3 vec3Option(const std::vector<float>& v, const char* name) {
+  if (v.size() != 3) throw hp::Error(std::string(name) + " takes X,Y,Z");
+  const glm::vec3 p{v[0], v[1], v[2]};
+  if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+    throw hp::Error(std::string(name) + " must be finite");
+  return p;
+}
+
+// --spot POS [--spot-target P] [--spot-angle DEG] [--spot-range R]: a spot light aimed at the
+// target (default: the camera's target); each bad value names its option.
+void applySpot(const RenderOptions& o, hp::Scene& scene) {
+  if (!o.spot) {
+    if (o.spotTarget || o.spotAngle || o.spotRange) throw hp::Error("--spot-target/--spot-angle/--spot-range need --spot");
+    return;
+  }
+  if (o.lightDir) throw hp::Error("--spot and --light-dir are exclusive");
+  const glm::vec3 position = vec3Option(*o.spot, "--spot");
+  const glm::vec3 target = o.spotTarget ? vec3Option(*o.spotTarget, "--spot-target") : scene.camera.target;
+  if (glm::length(position - target) < 1e-6f) throw hp::Error("--spot-target must differ from the --spot position");
+  const float angle = o.spotAngle.value_or(30.0f);
+  if (!(angle > 0.0f && angle <= 80.0f)) throw hp::Error("--spot-angle must be in (0, 80] degrees");
+  const float range = o.spotRange.value_or(0.0f);
+  if (!(std::isfinite(range) && range >= 0.0f)) throw hp::Error("--spot-range must be >= 0 (0: no distance falloff)");
+  hp::LightSpec light = hp::LightSpec::makeSpot(position, target, angle);
+  light.range = range;
+  light.color = scene.light.color;
+  light.intensity = scene.light.intensity;
+  scene.light = light;
+}
+
 hp::RenderRequest makeRequest(const RenderOptions& o, const CLI::App& cmd) {
   hp::RenderRequest r;
   r.scene = hp::cli::loadScene(o.scene);
@@ -65,8 +97,10 @@ hp::RenderRequest makeRequest(const RenderOptions& o, const CLI::App& cmd) {
     if (!(glm::length(r.scene.light.direction) > 1e-6f) || !std::isfinite(glm::length(r.scene.light.direction)))
       throw hp::Error("--light-dir must be a non-zero finite vector");
     r.scene.light.direction = glm::normalize(r.scene.light.direction);
+    r.scene.light.type = hp::LightSpec::Type::Directional;  // overrides a scene's spot
   }
   if (o.orbit) r.scene.camera.orbitDeg = *o.orbit;
+  applySpot(o, r.scene);
   if (cmd.count("--eta") + cmd.count("--absorption") + cmd.count("--color") + cmd.count("--alpha-r") +
           cmd.count("--beta-r") + cmd.count("--kg") + cmd.count("--wc") + cmd.count("--deta") + cmd.count("--dhm") > 0)
     r.scene.material = o.material;
@@ -125,6 +159,11 @@ void setupRender(CLI::App& app) {
   cmd->add_option("--msaa", o->msaa, "Samples per pixel: 1, 2, 4 or 8 (default: scene, 4)");
   cmd->add_option("--density", o->density, "Render strands in total (default: scene, 20000)");
   cmd->add_option("--light-dir", o->lightDir, "Direction toward the light, X,Y,Z")->delimiter(',')->expected(3);
+  cmd->add_option("--spot", o->spot, "Spot light at X,Y,Z instead of the directional light")->delimiter(',')->expected(3);
+  cmd->add_option("--spot-target", o->spotTarget, "Point the spot aims at, X,Y,Z (default: the camera target)")
+      ->delimiter(',')->expected(3);
+  cmd->add_option("--spot-angle", o->spotAngle, "Spot cone half-angle in degrees, (0, 80] (default 30)");
+  cmd->add_option("--spot-range", o->spotRange, "Spot inverse-square falloff, 1 at this distance (default 0: none)");
   cmd->add_option("--camera-orbit", o->orbit, "Camera orbit around the head in degrees (0: from the front)");
   cmd->add_option("--lut-mode", o->lutMode, "Marschner evaluation: float, paper or direct (default float)");
   cmd->add_option("--animate", o->animate, "Head motion while settling: none, nod, turn, shake, teleport");

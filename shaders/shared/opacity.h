@@ -38,9 +38,9 @@ HP_CONST(uint, OPACITY_BINDING_LIGHT, 2)      // LightSpace (read)
 
 // Light-space framing, written on the device by the bounds pass and read by every later pass.
 struct LightSpace {
-  mat4 viewProj;      // world -> light clip (orthographic); see the header comment
+  mat4 viewProj;      // world -> light clip (orthographic, or perspective for a spot); see the header comment
   vec4 depthRange;    // x = z_near, y = z_far (light depth d = -L.p), z = d_z = (z_far - z_near) / 16, w = 1 / d_z
-  vec4 extent;        // x, y = min light x, y; z, w = max light x, y (padded box the map covers)
+  vec4 extent;        // x, y = min light x, y; z, w = max light x, y (padded box the map covers; spot: x/d, y/d)
   uvec4 minBits;      // reduction accumulators: order-preserving uint encodings (orderedFromFloat) of
   uvec4 maxBits;      // min / max of (x, y, d); the finalize step re-arms them for the next frame
 };
@@ -54,9 +54,10 @@ struct BoundsPush {
   float marginWorld;  // x/y padding added on each side (half the widest strand), scene units
   float marginTexels; // extra x/y padding in texels of the opacity map
   uint resolution;    // opacity map size (texels per side)
-  uint pad0;
-  uint pad1;
-  uint pad2;
+  uint perspective;   // 1: spot light (perspective framing from `origin`), 0: directional
+  float tanCone;      // spot: tan of the cone half-angle, caps the angular box
+  float nearLimit;    // spot: vertices with d <= nearLimit (at or behind the spot) are left out
+  vec4 origin;        // spot: xyz = world position of the spot, w = 0; directional: 0
 };
 
 struct OpacityPush {
@@ -97,7 +98,8 @@ static_assert(hp::gpu::OPACITY_SLICES == 4 * hp::gpu::OPACITY_TARGETS);
 static_assert(sizeof(hp::gpu::LightSpace) == 128);
 static_assert(offsetof(hp::gpu::LightSpace, depthRange) == 64);
 static_assert(offsetof(hp::gpu::LightSpace, minBits) == 96);
-static_assert(sizeof(hp::gpu::BoundsPush) == 80);
+static_assert(sizeof(hp::gpu::BoundsPush) == 96);
+static_assert(offsetof(hp::gpu::BoundsPush, origin) == 80);
 static_assert(offsetof(hp::gpu::BoundsPush, vertexCount) == 48);
 static_assert(sizeof(hp::gpu::OpacityPush) == 80);
 static_assert(offsetof(hp::gpu::OpacityPush, opacity) == 64);

@@ -29,13 +29,16 @@ struct RenderFrame {
   mat4 view;
   mat4 proj;
   vec4 cameraPosition;   // xyz world; w = world size of one pixel at unit view depth
-  vec4 lightDirection;   // xyz unit, from the hair toward the light
+  vec4 lightDirection;   // xyz unit, from the hair toward the light (spot: minus its axis)
   vec4 lightRadiance;    // rgb linear radiance of the light
   vec4 hairColor;        // rgb ambient albedo of the hair (exp(-2 sigma_a)); w = ambient strength
   vec4 skinColor;        // rgb albedo of the head; w = wrap in [0, 1]
   vec4 strand;           // x = width at the root (scene units), y = width at the tip / root, z = shadow k
                          // (T = exp(-k alpha)), w = shadow bias in slices (lookups move this far toward the light)
   uvec4 options;         // x = vertices per strand Q, y = 1 when opacity shadows are on, zw = 0
+  vec4 lightPosition;    // xyz world position of a spot; w = 1 for a spot, 0 for a directional light
+  vec4 lightSpot;        // spot: x = cos(cone half-angle), y = cos(inner angle, full radiance inside),
+                         // z = range of the inverse-square falloff (0: none), w = 0 (shaders/light.glsl)
 };
 
 struct StrandDrawPush {
@@ -57,7 +60,8 @@ HP_END
 #include <cstddef>
 static_assert(offsetof(hp::gpu::RenderFrame, cameraPosition) == 128);
 static_assert(offsetof(hp::gpu::RenderFrame, options) == 224);
-static_assert(sizeof(hp::gpu::RenderFrame) == 240);
+static_assert(offsetof(hp::gpu::RenderFrame, lightPosition) == 240);
+static_assert(sizeof(hp::gpu::RenderFrame) == 272);
 static_assert(sizeof(hp::gpu::StrandDrawPush) == 16);
 static_assert(sizeof(hp::gpu::TonemapPush) == 16);
 #endif
