@@ -56,17 +56,17 @@ struct ShadowRig {
     opacity = std::make_unique<hp::render::OpacityPass>(ctx, *buffers, hp::HeadMesh{}, bounds->lightSpace(), settings);
   }
 
-  OpacityCapture run(const hp::vk::Context& ctx, const glm::vec3& towardLight, float marginTexels = 2.0f) {
+  OpacityCapture run(const hp::vk::Context& ctx, const hp::compute::ShadowLight& light, float marginTexels = 2.0f) {
     hp::compute::BoundsFraming framing;
     framing.resolution = opacity->settings().resolution;
     framing.marginTexels = marginTexels;
     hp::vk::submitAndWait(ctx, [&](VkCommandBuffer cmd) {
       // The uploads were transfers of an earlier submission; the bounds read them in compute.
       hp::vk::memoryBarrier(cmd, hp::vk::BufferUse::TransferDst, hp::vk::BufferUse::ComputeRead);
-      hp::recordShadowPasses(cmd, *bounds, *opacity, towardLight, framing, glm::mat4(1.0f));
+      hp::recordShadowPasses(cmd, *bounds, *opacity, light, framing, glm::mat4(1.0f));
     }, "shadow rig");
     return hp::render::captureOpacity(ctx, opacity->image(), bounds->lightSpace(), opacity->settings(),
-                                      glm::normalize(towardLight));
+                                      glm::normalize(light.towardLight));
   }
 };
 }  // namespace
@@ -88,6 +88,23 @@ StrandSet layeredScene() {
       const float y = -0.5f + float(j) / 39.0f;
       set.addStraight({-0.5f, y, z}, {0.5f, y, z});
     }
+  return set;
+}
+
+// The layers of layeredScene seen from a spot at (0, 0, 2) looking down -z: layer k at spot depth
+// d_k = 2, 2.3, 3 is scaled by d_k / 2, so all three project onto the same lines of the map
+// (x/d, y/d in [-0.25, 0.25]).
+constexpr float kSpotZ = 2.0f;
+StrandSet layeredSpotScene() {
+  StrandSet set;
+  set.q = 4;
+  for (float z : {0.0f, -0.3f, -1.0f}) {
+    const float scale = (kSpotZ - z) / kSpotZ;
+    for (int j = 0; j < 40; ++j) {
+      const float y = (-0.5f + float(j) / 39.0f) * scale;
+      set.addStraight({-0.5f * scale, y, z}, {0.5f * scale, y, z});
+    }
+  }
   return set;
 }
 
@@ -213,7 +230,7 @@ TEST_F(VulkanTest, OpacityOfParallelLayersIsExactPerTexel) {
   const StrandSet set = layeredScene();
   const float o = 0.25f;
   ShadowRig rig(*ctx, set, smallSettings(64, o));
-  const OpacityCapture c = rig.run(*ctx, {0.0f, 0.0f, 1.0f});
+  const OpacityCapture c = rig.run(*ctx, glm::vec3(0.0f, 0.0f, 1.0f));
   // Framing: x, y = world x, y padded by 2 texels of the extent; depth d = -z in [0, 1].
   const float pad = 1.0f * 2.0f / 64.0f;
   EXPECT_NEAR(c.light.extent.x, -0.5f - pad, 1e-6f);
@@ -255,6 +272,95 @@ TEST_F(VulkanTest, OpacityOfParallelLayersIsExactPerTexel) {
   EXPECT_NEAR(hp::test::lookupAlpha(c, x, y, 0.5), 0.5 * o, 1e-6);
   EXPECT_NEAR(hp::test::lookupAlpha(c, x, y, 4.5), 1.5 * o, 1e-6);
   EXPECT_NEAR(hp::test::lookupAlpha(c, x, y, 16.0), 3.0 * o, 1e-6);
+}
+
+// A spot light's perspective framing: x/d, y/d box padded by 2 texels, depths [2, 3] along its axis,
+// and alpha(z_i) exact per texel as for the directional layers (the layers project onto one grid).
+TEST_F(VulkanTest, SpotOpacityOfParallelLayersIsExactPerTexel) {
+  const StrandSet set = layeredSpotScene();
+  const float o = 0.25f;
+  ShadowRig rig(*ctx, set, smallSettings(64, o));
+  const auto spot = hp::compute::ShadowLight::makeSpot({0.0f, 0.0f, kSpotZ}, {0.0f, 0.0f, 1.0f}, glm::radians(30.0f));
+  const OpacityCapture c = rig.run(*ctx, spot);
+  const float pad = 0.5f * 2.0f / 64.0f;
+  EXPECT_NEAR(c.light.extent.x, -0.25f - pad, 1e-6f);
+  EXPECT_NEAR(c.light.extent.y, -0.25f - pad, 1e-6f);
+  EXPECT_NEAR(c.light.extent.z, 0.25f + pad, 1e-6f);
+  EXPECT_NEAR(c.light.extent.w, 0.25f + pad, 1e-6f);
+  EXPECT_NEAR(c.light.depthRange.x, 2.0f, 1e-6f);
+  EXPECT_NEAR(c.light.depthRange.y, 3.0f, 1e-6f);
+  for (std::uint32_t i = 1; i <= 16; ++i) EXPECT_NEAR(c.sliceDepth(i), 2.0f + i / 16.0f, 1e-6f);
+  // The perspective projection against the CPU: texel and slice of points at known spot coordinates.
+  for (const glm::dvec3 p : {glm::dvec3(0, 0, 0), glm::dvec3(0.2, -0.1, -0.5), glm::dvec3(-0.6, 0.3, -1.0)}) {
+    const double d = kSpotZ - p.z;
+    const double half = 0.25 + pad;
+    const glm::dvec3 got = hp::test::texelAndSlice(c.light, 64, p);
+    EXPECT_NEAR(got.x, (p.x / d + half) / (2 * half) * 64, 1e-4);
+    EXPECT_NEAR(got.y, (half - p.y / d) / (2 * half) * 64, 1e-4);
+    EXPECT_NEAR(got.z, 16.0 * (d - 2.0), 1e-4);
+  }
+
+  std::vector<int> count(64, 0);
+  std::vector<bool> ambiguous(64, false);
+  for (int j = 0; j < 40; ++j) {
+    const double v = hp::test::texelAndSlice(c.light, 64, {0.0, -0.5 + j / 39.0, 0.0}).y;
+    const int row = int(std::floor(v));
+    count[row] += 1;
+    const double f = v - row;
+    if (f < 0.05) ambiguous[std::max(row - 1, 0)] = ambiguous[row] = true;
+    if (f > 0.95) ambiguous[std::min(row + 1, 63)] = ambiguous[row] = true;
+  }
+  std::size_t checked = 0, wrong = 0, decreasing = 0, nonZeroFront = 0;
+  for (std::uint32_t y = 0; y < 64; ++y)
+    for (std::uint32_t x = 0; x < 64; ++x) {
+      for (std::uint32_t i = 1; i < 16; ++i) decreasing += c.at(i, x, y) < c.at(i - 1, x, y);
+      nonZeroFront += hp::test::lookupAlpha(c, x, y, 0.0) != 0.0;
+      if (ambiguous[y] || x < 5 || x >= 59) continue;
+      for (std::uint32_t i = 1; i <= 16; ++i) {
+        const float expected = o * count[y] * (1.0f + (i >= 5 ? 1.0f : 0.0f) + (i == 16 ? 1.0f : 0.0f));
+        ++checked;
+        if (std::abs(c.at(i - 1, x, y) - expected) > 1e-5f) ++wrong;
+      }
+    }
+  EXPECT_GT(checked, 16u * 54u * 40u);
+  EXPECT_EQ(wrong, 0u);
+  EXPECT_EQ(decreasing, 0u);
+  EXPECT_EQ(nonZeroFront, 0u);
+}
+
+// The cone caps the framing: a 10-degree spot maps only +-tan(10 deg) of the same hair, and a
+// tilted volume's framing matches the CPU reduction of (x/d, y/d, d).
+TEST_F(VulkanTest, SpotFramingIsCappedByTheConeAndMatchesTheCpuReduction) {
+  {
+    ShadowRig rig(*ctx, layeredSpotScene(), smallSettings(64, 0.25f));
+    const float cone = glm::radians(10.0f), t = std::tan(cone), pad = 2.0f * t * 2.0f / 64.0f;
+    const OpacityCapture c = rig.run(*ctx, hp::compute::ShadowLight::makeSpot({0, 0, kSpotZ}, {0, 0, 1}, cone));
+    EXPECT_NEAR(c.light.extent.x, -t - pad, 1e-6f);
+    EXPECT_NEAR(c.light.extent.w, t + pad, 1e-6f);
+  }
+  const StrandSet set = tiltedVolume();
+  const glm::vec3 position(1.2f, 2.0f, 1.5f), toward = glm::normalize(position);  // aimed at the origin
+  ShadowRig rig(*ctx, set, smallSettings(128, 0.1f), VkDeviceSize(100) * set.q * sizeof(glm::vec4));
+  const OpacityCapture c = rig.run(*ctx, hp::compute::ShadowLight::makeSpot(position, toward, glm::radians(40.0f)));
+  const hp::test::LightBox box = hp::test::spotBounds(set.positions, position, toward);
+  ASSERT_LT(std::max({-box.lo.x, -box.lo.y, box.hi.x, box.hi.y}), std::tan(glm::radians(40.0)));  // inside the cone
+  EXPECT_NEAR(c.light.depthRange.x, box.lo.z, 1e-5);
+  EXPECT_NEAR(c.light.depthRange.y, box.hi.z, 1e-5);
+  const double padX = (box.hi.x - box.lo.x) * 2.0 / 128.0, padY = (box.hi.y - box.lo.y) * 2.0 / 128.0;
+  EXPECT_NEAR(c.light.extent.x, box.lo.x - padX, 1e-5);
+  EXPECT_NEAR(c.light.extent.y, box.lo.y - padY, 1e-5);
+  EXPECT_NEAR(c.light.extent.z, box.hi.x + padX, 1e-5);
+  EXPECT_NEAR(c.light.extent.w, box.hi.y + padY, 1e-5);
+  // Every vertex lands inside the map, at a slice coordinate in [0, 16]; alpha never falls with i.
+  for (const glm::vec4& p : set.positions) {
+    const glm::dvec3 ts = hp::test::texelAndSlice(c.light, 128, glm::dvec3(p));
+    EXPECT_TRUE(ts.x > 0 && ts.x < 128 && ts.y > 0 && ts.y < 128 && ts.z > -1e-4 && ts.z < 16 + 1e-4);
+  }
+  std::size_t decreasing = 0;
+  for (std::uint32_t y = 0; y < 128; ++y)
+    for (std::uint32_t x = 0; x < 128; ++x)
+      for (std::uint32_t i = 1; i < 16; ++i) decreasing += c.at(i, x, y) < c.at(i - 1, x, y);
+  EXPECT_EQ(decreasing, 0u);
 }
 
 TEST_F(VulkanTest, OpacityOfATiltedVolumeMatchesTheCpuRasterizer) {

@@ -32,9 +32,23 @@ LightBox lightBounds(const std::vector<glm::vec4>& points, const glm::vec3& towa
   return box;
 }
 
+LightBox spotBounds(const std::vector<glm::vec4>& points, const glm::vec3& position, const glm::vec3& towardLight) {
+  const glm::dmat3 rows(compute::lightBasisRows(towardLight));
+  LightBox box;
+  for (const glm::vec4& p : points) {
+    const glm::dvec3 c = rows * (glm::dvec3(p) - glm::dvec3(position));
+    const double d = -c.z;
+    if (!(d > compute::kSpotNearLimit)) continue;
+    const glm::dvec3 l(c.x / d, c.y / d, d);
+    box.lo = glm::min(box.lo, l);
+    box.hi = glm::max(box.hi, l);
+  }
+  return box;
+}
+
 glm::dvec3 texelAndSlice(const gpu::LightSpace& light, std::uint32_t n, const glm::dvec3& world) {
   const glm::dvec4 clip = glm::dmat4(light.viewProj) * glm::dvec4(world, 1.0);
-  return {(clip.x * 0.5 + 0.5) * n, (0.5 - clip.y * 0.5) * n, clip.z * gpu::OPACITY_SLICES};
+  return {(clip.x / clip.w * 0.5 + 0.5) * n, (0.5 - clip.y / clip.w * 0.5) * n, clip.z * gpu::OPACITY_SLICES};
 }
 
 void rasterizeSegments(OpacityGrid& g, const gpu::LightSpace& light, const std::vector<glm::dvec3>& a,

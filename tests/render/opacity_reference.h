@@ -19,6 +19,8 @@ struct LightBox {
   glm::dvec3 lo{1e300}, hi{-1e300};  // light x, y, depth d = -L.p
 };
 LightBox lightBounds(const std::vector<glm::vec4>& points, const glm::vec3& towardLight);
+// Spot: the box of (x/d, y/d, d) measured from `position` over the points with d > kSpotNearLimit.
+LightBox spotBounds(const std::vector<glm::vec4>& points, const glm::vec3& position, const glm::vec3& towardLight);
 
 struct OpacityGrid {
   std::uint32_t resolution = 0;
@@ -28,7 +30,8 @@ struct OpacityGrid {
   }
 };
 
-// Texel coordinates (x right, y down, texel centres at +0.5) and slice coordinate s of a world point.
+// Texel coordinates (x right, y down, texel centres at +0.5) and slice coordinate s of a world point
+// (uv from clip.xy / clip.w, s = 16 clip.z: both light types, shared/opacity.h).
 glm::dvec3 texelAndSlice(const gpu::LightSpace& light, std::uint32_t resolution, const glm::dvec3& world);
 
 // Adds segments a-b (world space) with `opacity` each.

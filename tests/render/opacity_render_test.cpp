@@ -2,6 +2,7 @@
 // semantically against the same frame with shadows off: the half of the hair away from the light
 // darkens more than the lit half, and hair under other hair (light from above) darkens more than the
 // hair on top. The head mesh is left out of these frames so every non-background pixel is hair.
+// A spot lights the hair inside its cone only.
 // Also: two whole frames in one command buffer (bounds, opacity and shading of frame 1 followed by
 // frame 2's writes) are clean under synchronization validation.
 #include <gtest/gtest.h>
@@ -122,6 +123,32 @@ TEST_F(VulkanTest, HairUnderOtherHairIsDarkerThanHairOnTop) {
   ASSERT_GT(lower.pixels, 100u);
   EXPECT_LT(lower.ratio(), upper.ratio() - 0.1) << "under " << lower.ratio() << " on top " << upper.ratio();
   EXPECT_GT(upper.ratio(), 0.6) << "hair on top is mostly lit";
+}
+
+// A narrow spot at the camera, aimed at the camera's target (the back of the hair): its cone
+// projects onto a disc of radius tan(cone) / tan(fovY / 2) * H / 2 around the image centre. Against
+// the same spot with a wide cone, hair well outside the disc loses its direct light (ambient only)
+// and hair well inside it keeps it.
+TEST_F(VulkanTest, SpotLightsHairInsideItsConeOnly) {
+  const hp::HairAsset asset = hairOnly();
+  hp::RenderRequest r = request({0.0f, 0.0f, 1.0f}, 180.0f, true);
+  const hp::CameraMatrices cam = hp::orbitCamera(r.scene.camera, float(kWidth) / float(kHeight));
+  const float cone = 8.0f;
+  r.scene.light = hp::LightSpec::makeSpot(cam.position, r.scene.camera.target, cone);
+  const hp::RenderResult narrow = hp::renderStill(*ctx, asset, r);
+  r.scene.light.coneDeg = 60.0f;
+  const hp::RenderResult wide = hp::renderStill(*ctx, asset, r);
+  const double radius = std::tan(glm::radians(double(cone))) / std::tan(0.5 * double(cam.fovY)) * 0.5 * kHeight;
+  auto distance = [&](std::uint32_t x, std::uint32_t y) {
+    return std::hypot(x + 0.5 - 0.5 * kWidth, y + 0.5 - 0.5 * kHeight);
+  };
+  const Region inside = sumRegion(narrow, wide, [&](std::uint32_t x, std::uint32_t y) { return distance(x, y) < 0.6 * radius; });
+  const Region outside = sumRegion(narrow, wide, [&](std::uint32_t x, std::uint32_t y) { return distance(x, y) > 1.3 * radius; });
+  ASSERT_GT(inside.pixels, 200u);
+  ASSERT_GT(outside.pixels, 500u);
+  EXPECT_GT(inside.ratio(), 0.95) << "inside " << inside.ratio();
+  EXPECT_LT(outside.ratio(), 0.5) << "outside " << outside.ratio();
+  EXPECT_GT(inside.meanOn(), 2.0 * outside.meanOn()) << "inside " << inside.meanOn() << " outside " << outside.meanOn();
 }
 
 TEST_F(VulkanTest, TwoShadowedFramesInOneCommandBufferAreSyncClean) {

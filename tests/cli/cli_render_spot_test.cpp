@@ -1,0 +1,54 @@
+// `hairpipe render --spot`: a small spot-lit render is clean under validation, and bad spot options
+// exit 1 with a message naming the option, writing nothing.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "engine/render/png_file.h"
+#include "tests/support/cli_runner.h"
+
+using hp::test::runCli;
+
+namespace {
+std::filesystem::path temp(const std::string& name) {
+  auto p = std::filesystem::temp_directory_path() / name;
+  std::filesystem::remove(p);
+  return p;
+}
+}  // namespace
+
+TEST(CliRenderSpot, RendersASpotLitFrame) {
+  const auto png = temp("hairpipe_cli_render_spot.png");
+  auto r = runCli({"render", "--width", "96", "--height", "72", "--density", "1000", "--frames", "2", "--validation",
+                   "--spot", "0.3,0.5,0.8", "--spot-target", "0,-0.05,0", "--spot-angle", "20", "--spot-range", "1",
+                   "--opacity-resolution", "128", "--out", png.string()});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_EQ(hp::readPngRgba(png).width, 96u);
+  std::filesystem::remove(png);
+}
+
+TEST(CliRenderSpot, BadSpotOptionsExitWithAMessageNamingTheOption) {
+  struct Case {
+    std::vector<std::string> args;
+    std::string needle;
+  };
+  const std::vector<Case> cases = {
+      {{"--spot", "0,1"}, "--spot"},
+      {{"--spot", "0,1,x"}, "--spot"},
+      {{"--spot", "0,1,1", "--spot-angle", "0"}, "--spot-angle"},
+      {{"--spot", "0,1,1", "--spot-angle", "81"}, "--spot-angle"},
+      {{"--spot", "0,1,1", "--spot-range", "-2"}, "--spot-range"},
+      {{"--spot", "0,1,1", "--spot-target", "0,1,1"}, "--spot-target"},
+      {{"--spot-angle", "20"}, "need --spot"},
+      {{"--spot", "0,1,1", "--light-dir", "0,1,0"}, "--light-dir"},
+  };
+  const auto png = temp("hairpipe_cli_render_spot_bad.png");
+  for (const auto& c : cases) {
+    std::vector<std::string> args{"render", "--frames", "1", "--out", png.string()};
+    args.insert(args.end(), c.args.begin(), c.args.end());
+    auto r = runCli(args);
+    EXPECT_EQ(r.exitCode, 1) << c.args[0];
+    EXPECT_NE(r.err.find(c.needle), std::string::npos) << c.args[0] << ": " << r.err;
+    EXPECT_FALSE(std::filesystem::exists(png)) << c.args[0];
+  }
+}
