@@ -25,8 +25,7 @@ HairSystemSettings systemSettings(const RenderRequest& r, const render::Attachme
 void validate(const RenderRequest& r) {
   if (r.settleFrames > 100000) throw Error("settle frames must be at most 100000");
   if (!(r.exposure > 0.0f) || !std::isfinite(r.exposure)) throw Error("exposure must be a positive number");
-  if (!std::isfinite(glm::length(r.scene.light.direction)) || glm::length(r.scene.light.direction) < 1e-6f)
-    throw Error("the light direction must be a non-zero finite vector");
+  r.scene.light.validate();  // also catches a hand-built LightSpec that skipped the scene parser
 }
 }  // namespace
 
