@@ -141,13 +141,13 @@ void recordFrame(App& app, hp::HairSystem& hair, const hp::HeadMotion& motion, c
                        hp::vk::ImageUse::DepthAttachment);
   VkRenderingAttachmentInfo c{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
   c.imageView = color.view();
-  c.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+  c.imageLayout = hp::vk::imageLayout(hp::vk::ImageUse::ColorAttachment);
   c.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
   c.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
   c.clearValue.color = {{0.2f, 0.25f, 0.3f, 1.0f}};
   VkRenderingAttachmentInfo d{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
   d.imageView = depth.view();
-  d.imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
+  d.imageLayout = hp::vk::imageLayout(hp::vk::ImageUse::DepthAttachment);
   d.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
   d.storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
   d.clearValue.depthStencil = {1.0f, 0};

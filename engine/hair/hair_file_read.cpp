@@ -59,6 +59,11 @@ void checkHeader(std::span<const std::byte> bytes, const std::string& source) {
   if (flags & ~kKnownFlags) throw Error(source + ": unknown array flags " + std::to_string(flags));
   if (!(flags & hairflags::kPoints)) throw Error(source + ": the file has no points array");
   if (load<std::uint32_t>(bytes, 4) == 0) throw Error(source + ": zero strands");
+  // Every strand has at least 2 points, so more strands than half the points is impossible; checked
+  // here, before a loop over a hostile strand count (up to 4 billion) could begin.
+  if (std::uint64_t(load<std::uint32_t>(bytes, 4)) * 2 > load<std::uint32_t>(bytes, 8))
+    throw Error(source + ": " + std::to_string(load<std::uint32_t>(bytes, 4)) + " strands cannot share " +
+                std::to_string(load<std::uint32_t>(bytes, 8)) + " points (each strand needs at least 2)");
   std::uint64_t need = announcedArrayBytes(flags, load<std::uint32_t>(bytes, 4), load<std::uint32_t>(bytes, 8));
   std::uint64_t have = bytes.size() - kHeaderSize;
   if (have < need)
@@ -127,9 +132,13 @@ HairFileData decodeHair(std::span<const std::byte> bytes, const std::string& sou
 }
 
 HairFileData readHairFile(const std::filesystem::path& path) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) throw Error(path.string() + ": cannot open (not a regular file)");
   std::ifstream in(path, std::ios::binary | std::ios::ate);
   if (!in) throw Error(path.string() + ": cannot open");
-  auto size = static_cast<std::size_t>(in.tellg());
+  const std::streamoff end = in.tellg();
+  if (end < 0) throw Error(path.string() + ": cannot tell the file's size");
+  auto size = static_cast<std::size_t>(end);
   std::vector<std::byte> bytes(size);
   in.seekg(0);
   if (!in.read(reinterpret_cast<char*>(bytes.data()), static_cast<std::streamsize>(size)))

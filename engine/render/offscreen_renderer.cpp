@@ -48,9 +48,12 @@ void OffscreenRenderer::record(VkCommandBuffer cmd, const HairSystem& hair, cons
 void OffscreenRenderer::recordScene(VkCommandBuffer cmd, const HairSystem& hair, const DrawView& view,
                                     vk::GpuProfiler* profiler) const {
   const bool msaa = bool(targets_.resolved);
+  // Earlier frames recorded into the same images: their writes (and, without MSAA, the tonemap's reads
+  // of the HDR image) finish before the transitions discard the contents.
   vk::imageBarrier(cmd, targets_.hdr.handle(), VK_IMAGE_ASPECT_COLOR_BIT,
-                   msaa ? vk::ImageUse::Undefined : vk::ImageUse::FragmentSampledDiscard, vk::ImageUse::ColorAttachment);
-  vk::imageBarrier(cmd, targets_.depth.handle(), VK_IMAGE_ASPECT_DEPTH_BIT, vk::ImageUse::Undefined,
+                   msaa ? vk::ImageUse::ColorAttachmentDiscard : vk::ImageUse::FragmentSampledDiscard,
+                   vk::ImageUse::ColorAttachment);
+  vk::imageBarrier(cmd, targets_.depth.handle(), VK_IMAGE_ASPECT_DEPTH_BIT, vk::ImageUse::DepthAttachmentDiscard,
                    vk::ImageUse::DepthAttachment);
   // The previous frame's tonemap may still sample the HDR input: wait for it before discarding it.
   if (msaa)
@@ -78,7 +81,7 @@ void OffscreenRenderer::recordScene(VkCommandBuffer cmd, const HairSystem& hair,
 }
 
 void OffscreenRenderer::recordTonemap(VkCommandBuffer cmd, float exposure) const {
-  vk::imageBarrier(cmd, targets_.display.handle(), VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::Undefined,
+  vk::imageBarrier(cmd, targets_.display.handle(), VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::ColorAttachmentDiscard,
                    vk::ImageUse::ColorAttachment);
   VkRenderingAttachmentInfo color = colorAttachment(targets_.display.view(), {{0, 0, 0, 1}});
   VkRenderingInfo info = renderingInfo(extent(), &color, nullptr);

@@ -50,7 +50,7 @@ ImageScope imageScope(ImageUse use) {
     case ImageUse::DepthAttachment:
       return {VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT,
               VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT | VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
-              VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL};
+              VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL};  // DEPTH_ATTACHMENT_OPTIMAL needs separateDepthStencilLayouts
     case ImageUse::FragmentSampled:
       return {VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT,
               VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
@@ -66,6 +66,13 @@ ImageScope imageScope(ImageUse use) {
     case ImageUse::FragmentSampledDiscard:
       // Reads need only an execution dependency before the layout transition writes.
       return {VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_NONE, VK_IMAGE_LAYOUT_UNDEFINED};
+    case ImageUse::ColorAttachmentDiscard:
+      // Earlier writes (and MSAA resolves) must finish before the transition overwrites the image.
+      return {VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,
+              VK_IMAGE_LAYOUT_UNDEFINED};
+    case ImageUse::DepthAttachmentDiscard:
+      return {VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT,
+              VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT, VK_IMAGE_LAYOUT_UNDEFINED};
   }
   return {VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_MEMORY_READ_BIT | VK_ACCESS_2_MEMORY_WRITE_BIT,
           VK_IMAGE_LAYOUT_GENERAL};

@@ -30,6 +30,8 @@ enum class ImageUse {
   ComputeSampled,    // sampled in a compute shader
   GraphicsSampled,   // sampled in vertex and fragment shaders
   FragmentSampledDiscard,  // sampled in a fragment shader by earlier work, contents now discarded
+  ColorAttachmentDiscard,  // written as a colour attachment (or resolve target) by earlier work, now discarded
+  DepthAttachmentDiscard,  // written as a depth attachment by earlier work, now discarded
                            // (layout UNDEFINED): reusing a frame's image waits for those reads
 };
 

@@ -83,8 +83,27 @@ std::unique_ptr<Context> Context::adopt(const ExternalDevice& external) {
   ctx->queue_ = external.queue;
   ctx->queueFamily_ = external.queueFamily;
   ctx->debugUtils_ = external.debugUtilsEnabled;
+  ctx->checkAdopted();
   ctx->finishSetup();
   return ctx;
+}
+
+// An adopted device is the application's: it cannot be probed for enabled features, but what can be
+// checked is, so a wrong device fails here with a message instead of crashing in a later command.
+void Context::checkAdopted() const {
+  VkPhysicalDeviceProperties props;
+  vkGetPhysicalDeviceProperties(physical_, &props);
+  if (props.apiVersion < VK_API_VERSION_1_3)
+    throw Error(std::string("Context::adopt: ") + props.deviceName + " is not a Vulkan 1.3 device");
+  std::uint32_t count = 0;
+  vkGetPhysicalDeviceQueueFamilyProperties(physical_, &count, nullptr);
+  std::vector<VkQueueFamilyProperties> families(count);
+  vkGetPhysicalDeviceQueueFamilyProperties(physical_, &count, families.data());
+  const VkQueueFlags needed = VK_QUEUE_GRAPHICS_BIT | VK_QUEUE_COMPUTE_BIT;
+  if (queueFamily_ >= count || (families[queueFamily_].queueFlags & needed) != needed)
+    throw Error("Context::adopt: queue family " + std::to_string(queueFamily_) + " does not support graphics and compute");
+  if (!vkCmdPipelineBarrier2 || !vkCmdBeginRendering || !vkQueueSubmit2)
+    throw Error("Context::adopt: Vulkan 1.3 device functions did not load (was the device created with apiVersion 1.3?)");
 }
 
 void Context::createInstance(const ContextOptions& options) {
@@ -207,7 +226,10 @@ void Context::setName(VkObjectType type, std::uint64_t handle, const std::string
   HP_VK_CHECK(vkSetDebugUtilsObjectNameEXT(device_, &info));
 }
 
-void Context::waitIdle() const { HP_VK_CHECK(vkDeviceWaitIdle(device_)); }
+void Context::waitIdle() const {
+  if (!ownsInstanceAndDevice_) throw Error("Context::waitIdle: the device belongs to the application; hairpipe never waits idle on it");
+  HP_VK_CHECK(vkDeviceWaitIdle(device_));
+}
 
 VkDeviceSize Context::deviceLocalHeapBytes() const {
   VkDeviceSize best = 0;

@@ -23,7 +23,11 @@ struct ContextOptions {
   std::string appName = "hairpipe";
 };
 
-// Handles owned by an embedding application. hairpipe never destroys them.
+// Handles owned by an embedding application. hairpipe never destroys them and never waits idle on the
+// device. The device must have been created with apiVersion 1.3 and dynamicRendering + synchronization2
+// enabled (features adopt() cannot query: it checks the version, the queue family and the functions).
+// hairpipe's one-shot work outside the frame loop (construction uploads, setMaterial, reset) submits to
+// `queue` and waits on its own fence: the application must not use that queue from another thread then.
 struct ExternalDevice {
   PFN_vkGetInstanceProcAddr getInstanceProcAddr = nullptr;
   VkInstance instance = VK_NULL_HANDLE;
@@ -62,6 +66,7 @@ class Context {
                                VkMemoryPropertyFlags preferred = 0) const;
   // Debug name for any object (no-op when VK_EXT_debug_utils is off).
   void setName(VkObjectType type, std::uint64_t handle, const std::string& name) const;
+  // Only on a device hairpipe created; throws hp::Error on an adopted one.
   void waitIdle() const;
   // Size of the largest device-local heap: the budget that size checks of big allocations use.
   VkDeviceSize deviceLocalHeapBytes() const;
@@ -71,6 +76,7 @@ class Context {
   void createInstance(const ContextOptions& options);
   void createDevice(const ContextOptions& options);
   void finishSetup();
+  void checkAdopted() const;
 
   VkInstance instance_ = VK_NULL_HANDLE;
   VkDebugUtilsMessengerEXT messenger_ = VK_NULL_HANDLE;

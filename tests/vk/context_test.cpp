@@ -52,3 +52,23 @@ TEST(VulkanCheck, FailureNamesTheCallAndTheResult) {
   }
   EXPECT_NO_THROW(hp::vk::check(VK_SUCCESS, "vkFoo"));
 }
+
+// An application's device handed to hairpipe: adopt() checks what it can and never waits idle on it.
+TEST_F(VulkanTest, AdoptedDeviceIsCheckedAndNeverWaitedIdle) {
+  hp::vk::ExternalDevice ext{vkGetInstanceProcAddr, ctx->instance(), ctx->physicalDevice(), ctx->device(),
+                             ctx->queueFamily(), ctx->queue(), true};
+  {
+    auto adopted = hp::vk::Context::adopt(ext);
+    EXPECT_THROW(adopted->waitIdle(), hp::Error);
+  }
+  ext.queueFamily = 99;
+  try {
+    hp::vk::Context::adopt(ext);
+    FAIL() << "adopted a missing queue family";
+  } catch (const hp::Error& e) {
+    EXPECT_NE(std::string(e.what()).find("queue family 99"), std::string::npos) << e.what();
+  }
+  ext.queueFamily = ctx->queueFamily();
+  ext.device = VK_NULL_HANDLE;
+  EXPECT_THROW(hp::vk::Context::adopt(ext), hp::Error);
+}
