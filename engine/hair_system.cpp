@@ -1,6 +1,11 @@
 #include "engine/hair_system.h"
 
+#include <cmath>
+
+#include "engine/error.h"
+
 #include "engine/vk/barriers.h"
+#include "engine/vk/transfer.h"
 #include "engine/vk/context.h"
 
 namespace hp {
@@ -15,7 +20,19 @@ const HairSystemSettings& validated(const HairSystemSettings& s) {
   s.material.validate();
   s.look.validate();
   s.opacity.validate();
+  // The strand shader builds its coverage sample mask in 32 bits (and gl_SampleMask[0] holds 32).
+  if (s.formats.samples > VK_SAMPLE_COUNT_16_BIT) throw Error("HairSystemSettings.formats.samples must be at most 16");
   return s;
+}
+
+// The embedding path has no CLI in front of it: a bad view must fail here, not as NaN on the device.
+void validateView(const DrawView& view) {
+  view.light.validate();
+  if (view.extent.width == 0 || view.extent.height == 0) throw Error("DrawView.extent must be non-zero");
+  for (const glm::mat4* m : {&view.camera.view, &view.camera.proj, &view.headToWorld})
+    for (int c = 0; c < 4; ++c)
+      for (int r = 0; r < 4; ++r)
+        if (!std::isfinite((*m)[c][r])) throw Error("DrawView matrices must be finite");
 }
 }  // namespace
 
@@ -32,7 +49,14 @@ HairSystem::HairSystem(const vk::Context& ctx, const HairAsset& asset, const Hai
       bounds_(ctx, strands_),
       opacity_(ctx, strands_, asset.head, bounds_.lightSpace(), settings.opacity),
       head_(ctx, asset.head, frameBlock_, opacity_.shadowInputs(), settings.formats),
-      strandPass_(ctx, strands_, marschner_, frameBlock_, opacity_.shadowInputs(), settings.formats) {}
+      strandPass_(ctx, strands_, marschner_, frameBlock_, opacity_.shadowInputs(), settings.formats) {
+  // A valid frame block from the start, so a draw recorded before the first recordPrepareDraw reads
+  // sane values (vertex count, matrices) instead of uninitialised memory.
+  const gpu::RenderFrame initial =
+      render::makeRenderFrame(CameraMatrices{}, {1, 1}, LightSpec{}, settings_.material, settings_.look,
+                              strands_.layout().verticesPerStrand, settings_.opacity);
+  vk::upload<gpu::RenderFrame>(ctx, frameBlock_, std::span(&initial, 1), vk::BufferUse::GraphicsRead);
+}
 
 void HairSystem::recordUpdate(VkCommandBuffer cmd, const HeadMotion& motion, vk::GpuProfiler* profiler) {
   // The previous frame drew the strands and chained compute passes over the same buffers.
@@ -46,6 +70,7 @@ void HairSystem::recordUpdate(VkCommandBuffer cmd, const HeadMotion& motion, vk:
 }
 
 void HairSystem::recordPrepareDraw(VkCommandBuffer cmd, const DrawView& view, vk::GpuProfiler* profiler) {
+  validateView(view);
   gpu::RenderFrame frame = render::makeRenderFrame(view.camera, view.extent, view.light, settings_.material,
                                                    settings_.look, strands_.layout().verticesPerStrand,
                                                    settings_.opacity);

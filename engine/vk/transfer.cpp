@@ -8,7 +8,8 @@ namespace hp::vk {
 void uploadBytes(const Context& ctx, const Buffer& dst, const void* data, VkDeviceSize size, BufferUse after,
                  VkDeviceSize dstOffset) {
   if (size == 0) return;
-  if (dstOffset + size > dst.size())
+  // Written as subtractions: offset + size could wrap past the check.
+  if (dstOffset > dst.size() || size > dst.size() - dstOffset)
     throw Error("upload of " + std::to_string(size) + " bytes overruns buffer '" + dst.name() + "'");
   Buffer staging(ctx, size, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryKind::Upload, dst.name() + " staging");
   std::memcpy(staging.mapped(), data, size);
@@ -21,8 +22,9 @@ void uploadBytes(const Context& ctx, const Buffer& dst, const void* data, VkDevi
 
 std::vector<std::byte> readbackBytes(const Context& ctx, const Buffer& src, BufferUse before, VkDeviceSize offset,
                                      VkDeviceSize size) {
+  if (offset > src.size()) throw Error("readback offset " + std::to_string(offset) + " is past buffer '" + src.name() + "'");
   if (size == VK_WHOLE_SIZE) size = src.size() - offset;
-  if (offset + size > src.size())
+  if (size > src.size() - offset)
     throw Error("readback of " + std::to_string(size) + " bytes overruns buffer '" + src.name() + "'");
   std::vector<std::byte> out(size);
   if (size == 0) return out;
@@ -69,6 +71,8 @@ void uploadImage(const Context& ctx, const Image& image, std::span<const std::by
 std::vector<std::byte> readbackImage(const Context& ctx, const Image& image, ImageUse current, std::uint32_t layer) {
   if (image.desc().samples != VK_SAMPLE_COUNT_1_BIT)
     throw Error("readbackImage: '" + image.desc().name + "' is multisampled; resolve it first");
+  if (layer >= image.desc().layers)
+    throw Error("readbackImage: '" + image.desc().name + "' has no layer " + std::to_string(layer));
   const VkDeviceSize bytes = layerBytes(image);
   Buffer staging(ctx, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryKind::Readback, image.desc().name + " readback");
   submitAndWait(ctx, [&](VkCommandBuffer cmd) {

@@ -31,5 +31,8 @@ TEST_F(VulkanTest, OverrunningTransfersAreRefused) {
   std::vector<std::uint32_t> tooMuch(17, 1u);
   EXPECT_THROW(upload<std::uint32_t>(*ctx, buffer, tooMuch, BufferUse::TransferSrc), hp::Error);
   EXPECT_THROW(readbackBytes(*ctx, buffer, BufferUse::None, 32, 64), hp::Error);
+  EXPECT_THROW(readbackBytes(*ctx, buffer, BufferUse::None, 128), hp::Error);                  // offset past the end
+  EXPECT_THROW(readbackBytes(*ctx, buffer, BufferUse::None, 16, ~VkDeviceSize(0) - 8), hp::Error);  // would wrap
+  EXPECT_THROW(uploadBytes(*ctx, buffer, tooMuch.data(), 8, BufferUse::TransferSrc, ~VkDeviceSize(0) - 4), hp::Error);
   EXPECT_THROW(Buffer(*ctx, 0, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryKind::DeviceLocal, "empty"), hp::Error);
 }

@@ -1,0 +1,47 @@
+// The embedding facade refuses what an application could hand it wrongly, before anything reaches the device.
+#include <gtest/gtest.h>
+
+#include "engine/error.h"
+#include "engine/hair/default_head.h"
+#include "engine/hair_system.h"
+#include "engine/vk/submit.h"
+#include "tests/support/vk_fixture.h"
+
+using namespace hp;
+using hp::test::VulkanTest;
+
+namespace {
+HairAsset smallHead() {
+  DensityOptions density;
+  density.totalStrands = 500;
+  return buildDefaultHeadAsset(defaultHeadGrowth(), density);
+}
+}  // namespace
+
+TEST_F(VulkanTest, HairSystemRefusesSampleCountsItsCoverageMaskCannotHold) {
+  HairSystemSettings settings;
+  settings.formats.samples = VK_SAMPLE_COUNT_32_BIT;
+  try {
+    HairSystem hair(*ctx, smallHead(), settings);
+    FAIL() << "accepted 32 samples";
+  } catch (const hp::Error& e) {
+    EXPECT_NE(std::string(e.what()).find("samples"), std::string::npos) << e.what();
+  }
+}
+
+TEST_F(VulkanTest, HairSystemRefusesADegenerateView) {
+  HairSystem hair(*ctx, smallHead(), HairSystemSettings{});
+  DrawView view;
+  view.extent = {64, 64};
+  view.light.direction = {0.0f, 0.0f, 0.0f};
+  EXPECT_THROW(vk::submitAndWait(*ctx, [&](VkCommandBuffer cmd) { hair.recordPrepareDraw(cmd, view); }, "bad light"),
+               hp::Error);
+  view.light = LightSpec{};
+  view.extent = {0, 64};
+  EXPECT_THROW(vk::submitAndWait(*ctx, [&](VkCommandBuffer cmd) { hair.recordPrepareDraw(cmd, view); }, "bad extent"),
+               hp::Error);
+  view.extent = {64, 64};
+  view.camera.proj[0][0] = std::nanf("");
+  EXPECT_THROW(vk::submitAndWait(*ctx, [&](VkCommandBuffer cmd) { hair.recordPrepareDraw(cmd, view); }, "bad matrix"),
+               hp::Error);
+}
