@@ -59,11 +59,12 @@ void checkHeader(std::span<const std::byte> bytes, const std::string& source) {
   if (flags & ~kKnownFlags) throw Error(source + ": unknown array flags " + std::to_string(flags));
   if (!(flags & hairflags::kPoints)) throw Error(source + ": the file has no points array");
   if (load<std::uint32_t>(bytes, 4) == 0) throw Error(source + ": zero strands");
-  // Every strand has at least 2 points, so more strands than half the points is impossible; checked
-  // here, before a loop over a hostile strand count (up to 4 billion) could begin.
-  if (std::uint64_t(load<std::uint32_t>(bytes, 4)) * 2 > load<std::uint32_t>(bytes, 8))
-    throw Error(source + ": " + std::to_string(load<std::uint32_t>(bytes, 4)) + " strands cannot share " +
-                std::to_string(load<std::uint32_t>(bytes, 8)) + " points (each strand needs at least 2)");
+  // More strands than points is impossible; checked here, before a loop over a hostile strand count
+  // (up to 4 billion) could begin. The points array must be in the file, so this bounds the loop by
+  // the file size; the per-strand check then names a strand with too few points.
+  if (load<std::uint32_t>(bytes, 4) > load<std::uint32_t>(bytes, 8))
+    throw Error(source + ": " + std::to_string(load<std::uint32_t>(bytes, 4)) + " strands but only " +
+                std::to_string(load<std::uint32_t>(bytes, 8)) + " points");
   std::uint64_t need = announcedArrayBytes(flags, load<std::uint32_t>(bytes, 4), load<std::uint32_t>(bytes, 8));
   std::uint64_t have = bytes.size() - kHeaderSize;
   if (have < need)
