@@ -124,7 +124,14 @@ void HairSystem::recordDraw(VkCommandBuffer cmd, const DrawView& view, vk::GpuPr
 }
 
 void HairSystem::setMaterial(const HairMaterial& material, LutMode mode) {
-  if (!marschner_.rebuild(material, mode)) return;
+  try {
+    if (!marschner_.rebuild(material, mode)) return;
+  } catch (...) {
+    // A rebuild that failed part-way (out of memory) may have replaced some images: rebind so the
+    // strand pass never keeps descriptors to destroyed views, then report the failure.
+    strandPass_.bind(strands_, marschner_, frameBlock_, opacity_.shadowInputs());
+    throw;
+  }
   settings_.material = material;
   settings_.lutMode = mode;
   strandPass_.bind(strands_, marschner_, frameBlock_, opacity_.shadowInputs());

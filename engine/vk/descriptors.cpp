@@ -20,7 +20,6 @@ DescriptorSet::DescriptorSet(const Context& ctx, std::span<const Binding> bindin
   layoutInfo.bindingCount = static_cast<std::uint32_t>(layoutBindings.size());
   layoutInfo.pBindings = layoutBindings.data();
   HP_VK_CHECK(vkCreateDescriptorSetLayout(device_, &layoutInfo, nullptr, &layout_));
-  ctx.setName(VK_OBJECT_TYPE_DESCRIPTOR_SET_LAYOUT, reinterpret_cast<std::uint64_t>(layout_), name + " layout");
 
   std::vector<VkDescriptorPoolSize> sizes;
   for (auto [type, count] : typeCounts) sizes.push_back({type, count});
@@ -29,6 +28,7 @@ DescriptorSet::DescriptorSet(const Context& ctx, std::span<const Binding> bindin
   poolInfo.poolSizeCount = static_cast<std::uint32_t>(sizes.size());
   poolInfo.pPoolSizes = sizes.data();
   try {
+    ctx.setName(VK_OBJECT_TYPE_DESCRIPTOR_SET_LAYOUT, reinterpret_cast<std::uint64_t>(layout_), name + " layout");
     HP_VK_CHECK(vkCreateDescriptorPool(device_, &poolInfo, nullptr, &pool_));
     ctx.setName(VK_OBJECT_TYPE_DESCRIPTOR_POOL, reinterpret_cast<std::uint64_t>(pool_), name + " pool");
     VkDescriptorSetAllocateInfo alloc{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};

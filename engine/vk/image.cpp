@@ -51,8 +51,8 @@ Image::Image(const Context& ctx, const ImageDesc& desc) : device_(ctx.device()),
   info.usage = desc.usage;
   info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
   HP_VK_CHECK(vkCreateImage(device_, &info, nullptr, &image_));
-  ctx.setName(VK_OBJECT_TYPE_IMAGE, reinterpret_cast<std::uint64_t>(image_), desc.name);
   try {
+    ctx.setName(VK_OBJECT_TYPE_IMAGE, reinterpret_cast<std::uint64_t>(image_), desc.name);
     VkMemoryRequirements req;
     vkGetImageMemoryRequirements(device_, image_, &req);
     VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
