@@ -7,18 +7,11 @@
 #include "engine/render/png_file.h"
 #include "tests/support/cli_runner.h"
 
+using hp::test::freshTempPath;
 using hp::test::runCli;
 
-namespace {
-std::filesystem::path temp(const std::string& name) {
-  auto p = std::filesystem::temp_directory_path() / name;
-  std::filesystem::remove(p);
-  return p;
-}
-}  // namespace
-
 TEST(CliRenderSpot, RendersASpotLitFrame) {
-  const auto png = temp("hairpipe_cli_render_spot.png");
+  const auto png = freshTempPath("hairpipe_cli_render_spot.png");
   auto r = runCli({"render", "--width", "96", "--height", "72", "--density", "1000", "--frames", "2", "--validation",
                    "--spot", "0.3,0.5,0.8", "--spot-target", "0,-0.05,0", "--spot-angle", "20", "--spot-range", "1",
                    "--opacity-resolution", "128", "--out", png.string()});
@@ -42,7 +35,7 @@ TEST(CliRenderSpot, BadSpotOptionsExitWithAMessageNamingTheOption) {
       {{"--spot-angle", "20"}, "need --spot"},
       {{"--spot", "0,1,1", "--light-dir", "0,1,0"}, "--light-dir"},
   };
-  const auto png = temp("hairpipe_cli_render_spot_bad.png");
+  const auto png = freshTempPath("hairpipe_cli_render_spot_bad.png");
   for (const auto& c : cases) {
     std::vector<std::string> args{"render", "--frames", "1", "--out", png.string()};
     args.insert(args.end(), c.args.begin(), c.args.end());

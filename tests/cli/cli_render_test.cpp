@@ -7,19 +7,12 @@
 #include "engine/render/png_file.h"
 #include "tests/support/cli_runner.h"
 
+using hp::test::freshTempPath;
 using hp::test::runCli;
 
-namespace {
-std::filesystem::path temp(const std::string& name) {
-  auto p = std::filesystem::temp_directory_path() / name;
-  std::filesystem::remove(p);
-  return p;
-}
-}  // namespace
-
 TEST(CliRender, WritesThePngReportsEveryPassAndDumpsTheStrands) {
-  const auto png = temp("hairpipe_cli_render.png");
-  const auto strands = temp("hairpipe_cli_render.hair");
+  const auto png = freshTempPath("hairpipe_cli_render.png");
+  const auto strands = freshTempPath("hairpipe_cli_render.hair");
   auto r = runCli({"render", "--width", "128", "--height", "96", "--density", "2000", "--frames", "5", "--validation",
                    "--json", "--out", png.string(), "--dump-strands", strands.string()});
   ASSERT_EQ(r.exitCode, 0) << r.err;
@@ -48,7 +41,7 @@ TEST(CliRender, BadOptionsExitWithAMessageAndWriteNothing) {
       {{"--animate", "spin"}, "spin"},      {{"--density", "0"}, "total"},
       {{"--width", "16384", "--height", "16384"}, "device-local heap"},
   };
-  const auto png = temp("hairpipe_cli_render_bad.png");
+  const auto png = freshTempPath("hairpipe_cli_render_bad.png");
   for (const auto& c : cases) {
     std::vector<std::string> args{"render", "--frames", "1", "--out", png.string()};
     args.insert(args.end(), c.args.begin(), c.args.end());

@@ -58,4 +58,10 @@ CliResult runCli(const std::vector<std::string>& args) {
   if (rc != 0) throw std::runtime_error("runCli: cannot start " + all[0]);
   return result;
 }
+
+std::filesystem::path freshTempPath(const std::string& name) {
+  auto path = std::filesystem::temp_directory_path() / name;
+  std::filesystem::remove(path);
+  return path;
+}
 }  // namespace hp::test

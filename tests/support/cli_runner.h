@@ -1,6 +1,7 @@
 #pragma once
 // Contract: runs the built `hairpipe` tool with arguments and captures its exit code, stdout and stderr,
 // so CLI tests check what a user sees. Arguments are passed without a shell.
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -11,4 +12,6 @@ struct CliResult {
   std::string err;
 };
 CliResult runCli(const std::vector<std::string>& args);
+// A path in the temp directory with nothing at it yet (an earlier run's file is removed).
+std::filesystem::path freshTempPath(const std::string& name);
 }  // namespace hp::test
