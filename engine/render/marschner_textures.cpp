@@ -78,27 +78,18 @@ MarschnerTextures::MarschnerTextures(const vk::Context& ctx, const HairMaterial&
                                      const LutBuildOptions& options)
     : ctx_(ctx), options_(options) {
   MarschnerLut lut = buildLut(mode, material, options_);  // validates the material before any Vulkan work
-  sampler_ = vk::createLinearClampSampler(ctx, "Marschner LUT sampler");
-  try {
-    vk::ImageDesc dummy;
-    dummy.format = VK_FORMAT_R8G8B8A8_UNORM;
-    dummy.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
-    dummy.name = "Marschner LUT dummy 1x1";
-    dummy_ = vk::Image(ctx, dummy);
-    const std::byte zero[4] = {};
-    vk::uploadImage(ctx, dummy_, zero, vk::ImageUse::GraphicsSampled);
-    makeVisibleToComputeToo(ctx, {&dummy_});
-    paramsBuffer_ = vk::Buffer(ctx, sizeof(gpu::MarschnerParams), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
-                               vk::MemoryKind::Upload, "Marschner params UBO");
-    upload(lut);
-  } catch (...) {
-    vkDestroySampler(ctx.device(), sampler_, nullptr);
-    throw;
-  }
-}
-
-MarschnerTextures::~MarschnerTextures() {
-  if (sampler_) vkDestroySampler(ctx_.device(), sampler_, nullptr);
+  sampler_ = vk::Sampler(ctx, "Marschner LUT sampler");
+  vk::ImageDesc dummy;
+  dummy.format = VK_FORMAT_R8G8B8A8_UNORM;
+  dummy.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+  dummy.name = "Marschner LUT dummy 1x1";
+  dummy_ = vk::Image(ctx, dummy);
+  const std::byte zero[4] = {};
+  vk::uploadImage(ctx, dummy_, zero, vk::ImageUse::GraphicsSampled);
+  makeVisibleToComputeToo(ctx, {&dummy_});
+  paramsBuffer_ = vk::Buffer(ctx, sizeof(gpu::MarschnerParams), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
+                             vk::MemoryKind::Upload, "Marschner params UBO");
+  upload(lut);
 }
 
 bool MarschnerTextures::rebuild(const HairMaterial& material, LutMode mode) {
@@ -150,7 +141,7 @@ void MarschnerTextures::writeDescriptors(const vk::DescriptorSet& set, std::uint
   set.writeUniformBuffer(paramsBinding, paramsBuffer_.handle());
   const std::uint32_t bindings[3] = {mBinding, n0Binding, n1Binding};
   for (std::uint32_t slot = 0; slot < 3; ++slot)
-    set.writeSampledImage(bindings[slot], slotImage(slot).view(), sampler_,
+    set.writeSampledImage(bindings[slot], slotImage(slot).view(), sampler_.handle(),
                           vk::imageLayout(vk::ImageUse::FragmentSampled));
 }
 }  // namespace hp::render

@@ -40,7 +40,6 @@ class MarschnerTextures {
  public:
   MarschnerTextures(const vk::Context& ctx, const HairMaterial& material, LutMode mode,
                     const LutBuildOptions& options = {});
-  ~MarschnerTextures();
   MarschnerTextures(const MarschnerTextures&) = delete;
   MarschnerTextures& operator=(const MarschnerTextures&) = delete;
 
@@ -73,7 +72,7 @@ class MarschnerTextures {
   vk::Image images_[3];
   vk::Image dummy_;
   vk::Buffer paramsBuffer_;
-  VkSampler sampler_ = VK_NULL_HANDLE;
+  vk::Sampler sampler_;
   std::uint32_t buildCount_ = 0;
 };
 }  // namespace hp::render

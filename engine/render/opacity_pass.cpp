@@ -61,16 +61,12 @@ OpacityPass::OpacityPass(const vk::Context& ctx, const compute::StrandBuffers& s
                VK_IMAGE_USAGE_TRANSFER_DST_BIT;
   desc.name = "opacity maps";
   image_ = vk::Image(ctx, desc);
-  sampler_ = vk::createLinearClampSampler(ctx, "opacity sampler");
+  sampler_ = vk::Sampler(ctx, "opacity sampler");
   clearImage();
   uploadHead(head);
   bind(strands);
   strandPipeline_ = makePipeline(ctx, strandSets_.front().layout(), settings_.format, false);
   headPipeline_ = makePipeline(ctx, headSet_.layout(), settings_.format, true);
-}
-
-OpacityPass::~OpacityPass() {
-  if (sampler_) vkDestroySampler(ctx_.device(), sampler_, nullptr);
 }
 
 void OpacityPass::clearImage() {

@@ -33,7 +33,6 @@ class OpacityPass {
  public:
   OpacityPass(const vk::Context& ctx, const compute::StrandBuffers& strands, const HeadMesh& head,
               const vk::Buffer& lightSpace, const OpacitySettings& settings);
-  ~OpacityPass();
   OpacityPass(const OpacityPass&) = delete;
   OpacityPass& operator=(const OpacityPass&) = delete;
 
@@ -41,7 +40,7 @@ class OpacityPass {
   void record(VkCommandBuffer cmd, const glm::mat4& headToWorld) const;
 
   const vk::Image& image() const { return image_; }
-  ShadowInputs shadowInputs() const { return {image_.view(), sampler_, lightSpace_->handle()}; }
+  ShadowInputs shadowInputs() const { return {image_.view(), sampler_.handle(), lightSpace_->handle()}; }
   const OpacitySettings& settings() const { return settings_; }
 
  private:
@@ -53,7 +52,7 @@ class OpacityPass {
   const vk::Buffer* lightSpace_;
   const compute::StrandBuffers* strands_ = nullptr;
   vk::Image image_;
-  VkSampler sampler_ = VK_NULL_HANDLE;
+  vk::Sampler sampler_;
   vk::Buffer headPositions_, headIndices_;
   std::uint32_t headIndexCount_ = 0;
   vk::DescriptorSet headSet_;

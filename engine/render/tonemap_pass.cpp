@@ -11,7 +11,7 @@ const vk::Binding kBindings[] = {
 }
 
 TonemapPass::TonemapPass(const vk::Context& ctx, VkFormat displayFormat)
-    : ctx_(ctx), sampler_(vk::createLinearClampSampler(ctx, "tonemap sampler")) {
+    : sampler_(ctx, "tonemap sampler") {
   set_ = vk::DescriptorSet(ctx, kBindings, "tonemap");
   vk::GraphicsPipelineDesc desc;
   desc.vertexShader = "tonemap.vert";
@@ -23,9 +23,7 @@ TonemapPass::TonemapPass(const vk::Context& ctx, VkFormat displayFormat)
   pipeline_ = vk::GraphicsPipeline(ctx, desc);
 }
 
-TonemapPass::~TonemapPass() { vkDestroySampler(ctx_.device(), sampler_, nullptr); }
-
-void TonemapPass::setInput(VkImageView hdr) { set_.writeSampledImage(gpu::TONEMAP_BINDING_HDR, hdr, sampler_); }
+void TonemapPass::setInput(VkImageView hdr) { set_.writeSampledImage(gpu::TONEMAP_BINDING_HDR, hdr, sampler_.handle()); }
 
 void TonemapPass::draw(VkCommandBuffer cmd, VkExtent2D extent, float exposure) const {
   pipeline_.bind(cmd, set_.set(), extent);

@@ -4,21 +4,18 @@
 // dynamic rendering of a single-sample `displayFormat` attachment; the HDR input must be in
 // ImageUse::FragmentSampled.
 #include "engine/vk/descriptors.h"
+#include "engine/vk/image.h"
 #include "engine/vk/pipeline.h"
 
 namespace hp::render {
 class TonemapPass {
  public:
   TonemapPass(const vk::Context& ctx, VkFormat displayFormat);
-  ~TonemapPass();
-  TonemapPass(const TonemapPass&) = delete;
-  TonemapPass& operator=(const TonemapPass&) = delete;
   void setInput(VkImageView hdr);
   void draw(VkCommandBuffer cmd, VkExtent2D extent, float exposure) const;
 
  private:
-  const vk::Context& ctx_;
-  VkSampler sampler_ = VK_NULL_HANDLE;
+  vk::Sampler sampler_;
   vk::DescriptorSet set_;
   vk::GraphicsPipeline pipeline_;
 };

@@ -118,7 +118,7 @@ void Image::release() {
   memory_ = VK_NULL_HANDLE;
 }
 
-VkSampler createLinearClampSampler(const Context& ctx, const std::string& name) {
+Sampler::Sampler(const Context& ctx, const std::string& name) : device_(ctx.device()) {
   VkSamplerCreateInfo info{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
   info.magFilter = VK_FILTER_LINEAR;
   info.minFilter = VK_FILTER_LINEAR;
@@ -127,9 +127,27 @@ VkSampler createLinearClampSampler(const Context& ctx, const std::string& name) 
   info.addressModeV = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
   info.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
   info.maxLod = 0.0f;
-  VkSampler sampler = VK_NULL_HANDLE;
-  HP_VK_CHECK(vkCreateSampler(ctx.device(), &info, nullptr, &sampler));
-  ctx.setName(VK_OBJECT_TYPE_SAMPLER, reinterpret_cast<std::uint64_t>(sampler), name);
-  return sampler;
+  HP_VK_CHECK(vkCreateSampler(device_, &info, nullptr, &sampler_));
+  try {
+    ctx.setName(VK_OBJECT_TYPE_SAMPLER, reinterpret_cast<std::uint64_t>(sampler_), name);
+  } catch (...) {
+    vkDestroySampler(device_, sampler_, nullptr);
+    throw;
+  }
+}
+
+Sampler::~Sampler() {
+  if (sampler_) vkDestroySampler(device_, sampler_, nullptr);
+}
+
+Sampler::Sampler(Sampler&& other) noexcept { *this = std::move(other); }
+
+Sampler& Sampler::operator=(Sampler&& other) noexcept {
+  if (this != &other) {
+    if (sampler_) vkDestroySampler(device_, sampler_, nullptr);
+    device_ = std::exchange(other.device_, VK_NULL_HANDLE);
+    sampler_ = std::exchange(other.sampler_, VK_NULL_HANDLE);
+  }
+  return *this;
 }
 }  // namespace hp::vk

@@ -55,6 +55,21 @@ class Image {
 bool isDepthFormat(VkFormat format);
 std::uint32_t formatBytesPerPixel(VkFormat format);  // for the formats hairpipe reads back
 
-// A sampler with linear filtering and clamp-to-edge: what every LUT and shadow lookup uses.
-VkSampler createLinearClampSampler(const Context& ctx, const std::string& name);
+// A sampler with linear filtering and clamp-to-edge (what every LUT, shadow and tonemap lookup uses),
+// move-only and destroyed with its owner, so a constructor that throws after making one cannot leak it.
+class Sampler {
+ public:
+  Sampler() = default;
+  Sampler(const Context& ctx, const std::string& name);
+  ~Sampler();
+  Sampler(Sampler&& other) noexcept;
+  Sampler& operator=(Sampler&& other) noexcept;
+  Sampler(const Sampler&) = delete;
+  Sampler& operator=(const Sampler&) = delete;
+  VkSampler handle() const { return sampler_; }
+
+ private:
+  VkDevice device_ = VK_NULL_HANDLE;
+  VkSampler sampler_ = VK_NULL_HANDLE;
+};
 }  // namespace hp::vk
