@@ -8,6 +8,7 @@
 #include "tests/support/cli_runner.h"
 
 using hp::test::freshTempPath;
+using hp::test::expectRefused;
 using hp::test::runCli;
 
 TEST(CliRenderSpot, RendersASpotLitFrame) {
@@ -21,11 +22,8 @@ TEST(CliRenderSpot, RendersASpotLitFrame) {
 }
 
 TEST(CliRenderSpot, BadSpotOptionsExitWithAMessageNamingTheOption) {
-  struct Case {
-    std::vector<std::string> args;
-    std::string needle;
-  };
-  const std::vector<Case> cases = {
+  const auto png = freshTempPath("hairpipe_cli_render_spot_bad.png");
+  expectRefused({"render", "--frames", "1", "--out", png.string()}, {
       {{"--spot", "0,1"}, "--spot"},
       {{"--spot", "0,1,x"}, "--spot"},
       {{"--spot", "0,1,1", "--spot-angle", "0"}, "--spot-angle"},
@@ -34,14 +32,5 @@ TEST(CliRenderSpot, BadSpotOptionsExitWithAMessageNamingTheOption) {
       {{"--spot", "0,1,1", "--spot-target", "0,1,1"}, "--spot-target"},
       {{"--spot-angle", "20"}, "need --spot"},
       {{"--spot", "0,1,1", "--light-dir", "0,1,0"}, "--light-dir"},
-  };
-  const auto png = freshTempPath("hairpipe_cli_render_spot_bad.png");
-  for (const auto& c : cases) {
-    std::vector<std::string> args{"render", "--frames", "1", "--out", png.string()};
-    args.insert(args.end(), c.args.begin(), c.args.end());
-    auto r = runCli(args);
-    EXPECT_EQ(r.exitCode, 1) << c.args[0];
-    EXPECT_NE(r.err.find(c.needle), std::string::npos) << c.args[0] << ": " << r.err;
-    EXPECT_FALSE(std::filesystem::exists(png)) << c.args[0];
-  }
+  }, png);
 }

@@ -64,25 +64,13 @@ TEST(CliStrands, ReadsAHairModelAndPrintsASummary) {
 
 TEST(CliStrands, BadOptionsExitOneNamingTheOption) {
   fs::path out = tempPath("never.hair");
-  struct Case {
-    std::vector<std::string> args;
-    std::string expected;
-  };
-  const Case cases[] = {
+  hp::test::expectRefused({"strands", "--out", out.string()}, {
       {{"--density", "0"}, "--density"},
       {{"--density", "50000000"}, "--density"},
       {{"--vertices", "5"}, "--vertices"},    // fewer than the 7 particles per guide
       {{"--vertices", "300"}, "--vertices"},  // more than 256
       {{"--model", "head.txt"}, "--model"},
-  };
-  for (const Case& c : cases) {
-    std::vector<std::string> args{"strands", "--out", out.string()};
-    args.insert(args.end(), c.args.begin(), c.args.end());
-    auto r = runCli(args);
-    EXPECT_EQ(r.exitCode, 1) << c.args[0] << " " << c.args[1];
-    EXPECT_NE(r.err.find(c.expected), std::string::npos) << r.err;
-    EXPECT_FALSE(fs::exists(out)) << "no output on failure";
-  }
+  }, out);
 }
 
 TEST(CliStrands, OutIsRequired) {

@@ -8,6 +8,8 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+
+#include <gtest/gtest.h>
 #include <sstream>
 #include <stdexcept>
 
@@ -63,5 +65,19 @@ std::filesystem::path freshTempPath(const std::string& name) {
   auto path = std::filesystem::temp_directory_path() / name;
   std::filesystem::remove(path);
   return path;
+}
+
+void expectRefused(const std::vector<std::string>& command, const std::vector<RefusedCase>& cases,
+                   const std::filesystem::path& output) {
+  for (const auto& c : cases) {
+    std::vector<std::string> args = command;
+    args.insert(args.end(), c.args.begin(), c.args.end());
+    std::string shown;
+    for (const auto& a : c.args) shown += a + " ";
+    const CliResult r = runCli(args);
+    EXPECT_EQ(r.exitCode, 1) << shown;
+    EXPECT_NE(r.err.find(c.needle), std::string::npos) << shown << ": stderr: " << r.err;
+    if (!output.empty()) EXPECT_FALSE(std::filesystem::exists(output)) << shown << ": output written";
+  }
 }
 }  // namespace hp::test
