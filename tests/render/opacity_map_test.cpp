@@ -226,6 +226,24 @@ TEST_F(VulkanTest, HairSystemRefusesBadOpacitySettings) {
   }
 }
 
+namespace {
+// Which of the 64 map rows hold a strand of the 40 parallel strands at x = 0 (y from -0.5 to 0.5), and
+// which rows are ambiguous because a strand lies within 0.05 texel of a row boundary.
+std::pair<std::vector<int>, std::vector<bool>> strandRows(const hp::gpu::LightSpace& light) {
+  std::vector<int> count(64, 0);
+  std::vector<bool> ambiguous(64, false);
+  for (int j = 0; j < 40; ++j) {
+    const double v = hp::test::texelAndSlice(light, 64, {0.0, -0.5 + j / 39.0, 0.0}).y;
+    const int row = int(std::floor(v));
+    count[row] += 1;
+    const double f = v - row;
+    if (f < 0.05) ambiguous[std::max(row - 1, 0)] = ambiguous[row] = true;
+    if (f > 0.95) ambiguous[std::min(row + 1, 63)] = ambiguous[row] = true;
+  }
+  return {count, ambiguous};
+}
+}  // namespace
+
 TEST_F(VulkanTest, OpacityOfParallelLayersIsExactPerTexel) {
   const StrandSet set = layeredScene();
   const float o = 0.25f;
@@ -241,16 +259,7 @@ TEST_F(VulkanTest, OpacityOfParallelLayersIsExactPerTexel) {
   for (std::uint32_t i = 1; i <= 16; ++i) EXPECT_NEAR(c.sliceDepth(i), i / 16.0f, 1e-6f);
 
   // Rows holding a strand (skip rows whose strand lies within 0.05 texel of a row boundary).
-  std::vector<int> count(64, 0);
-  std::vector<bool> ambiguous(64, false);
-  for (int j = 0; j < 40; ++j) {
-    const double v = hp::test::texelAndSlice(c.light, 64, {0.0, -0.5 + j / 39.0, 0.0}).y;
-    const int row = int(std::floor(v));
-    count[row] += 1;
-    const double f = v - row;
-    if (f < 0.05) ambiguous[std::max(row - 1, 0)] = ambiguous[row] = true;
-    if (f > 0.95) ambiguous[std::min(row + 1, 63)] = ambiguous[row] = true;
-  }
+  const auto [count, ambiguous] = strandRows(c.light);
   // Layer at s = 0 reaches slices 1..16, at s = 4.8 slices 5..16, at s = 16 (z_far) slice 16.
   std::size_t checked = 0, wrong = 0;
   for (std::uint32_t y = 0; y < 64; ++y) {
@@ -300,16 +309,7 @@ TEST_F(VulkanTest, SpotOpacityOfParallelLayersIsExactPerTexel) {
     EXPECT_NEAR(got.z, 16.0 * (d - 2.0), 1e-4);
   }
 
-  std::vector<int> count(64, 0);
-  std::vector<bool> ambiguous(64, false);
-  for (int j = 0; j < 40; ++j) {
-    const double v = hp::test::texelAndSlice(c.light, 64, {0.0, -0.5 + j / 39.0, 0.0}).y;
-    const int row = int(std::floor(v));
-    count[row] += 1;
-    const double f = v - row;
-    if (f < 0.05) ambiguous[std::max(row - 1, 0)] = ambiguous[row] = true;
-    if (f > 0.95) ambiguous[std::min(row + 1, 63)] = ambiguous[row] = true;
-  }
+  const auto [count, ambiguous] = strandRows(c.light);
   std::size_t checked = 0, wrong = 0, decreasing = 0, nonZeroFront = 0;
   for (std::uint32_t y = 0; y < 64; ++y)
     for (std::uint32_t x = 0; x < 64; ++x) {
