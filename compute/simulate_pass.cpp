@@ -107,7 +107,6 @@ gpu::SimFrame SimulatePass::frameConstants(const HeadMotion& motion) const {
   f.gustFrequency = float(params_.windGustFrequency);
   f.teleport = motion.teleport ? 1u : 0u;
   f.guideCount = guideCount_;
-  f.particlesPerGuide = particlesPerGuide_;
   f.substeps = params_.substeps;
   f.iterations = params_.iterations;
   f.colliderCount = static_cast<std::uint32_t>(colliders_.size());

@@ -33,7 +33,7 @@ struct SimFrame {
   float gustFrequency;   // Hz
   uint teleport;         // 1: carry every particle rigidly with the head this frame
   uint guideCount;
-  uint particlesPerGuide;
+  uint pad3;             // particles per guide is the pipeline's specialization constant, not a field
   uint substeps;
   uint iterations;
   uint colliderCount;
