@@ -37,7 +37,7 @@ OffscreenRenderer::OffscreenRenderer(const vk::Context& ctx, std::uint32_t width
 
 AttachmentFormats OffscreenRenderer::formats() const { return {kHdrFormat, kDepthFormat, targets_.samples()}; }
 
-void OffscreenRenderer::record(VkCommandBuffer cmd, const HairSystem& hair, const DrawView& view, float exposure,
+void OffscreenRenderer::record(VkCommandBuffer cmd, HairSystem& hair, const DrawView& view, float exposure,
                                vk::GpuProfiler* profiler) const {
   recordScene(cmd, hair, view, profiler);
   if (profiler) profiler->begin(cmd, "tonemap");
@@ -45,7 +45,7 @@ void OffscreenRenderer::record(VkCommandBuffer cmd, const HairSystem& hair, cons
   if (profiler) profiler->end(cmd);
 }
 
-void OffscreenRenderer::recordScene(VkCommandBuffer cmd, const HairSystem& hair, const DrawView& view,
+void OffscreenRenderer::recordScene(VkCommandBuffer cmd, HairSystem& hair, const DrawView& view,
                                     vk::GpuProfiler* profiler) const {
   const bool msaa = bool(targets_.resolved);
   // Earlier frames recorded into the same images: their writes (and, without MSAA, the tonemap's reads

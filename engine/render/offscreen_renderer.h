@@ -16,13 +16,13 @@ class OffscreenRenderer {
   AttachmentFormats formats() const;
   VkExtent2D extent() const { return targets_.extent(); }
 
-  void record(VkCommandBuffer cmd, const HairSystem& hair, const DrawView& view, float exposure,
+  void record(VkCommandBuffer cmd, HairSystem& hair, const DrawView& view, float exposure,
               vk::GpuProfiler* profiler = nullptr) const;
   // RGBA8, sRGB-encoded, rows top to bottom. Waits for the queue through a one-shot readback.
   std::vector<std::uint8_t> readDisplay() const;
 
  private:
-  void recordScene(VkCommandBuffer cmd, const HairSystem& hair, const DrawView& view, vk::GpuProfiler* profiler) const;
+  void recordScene(VkCommandBuffer cmd, HairSystem& hair, const DrawView& view, vk::GpuProfiler* profiler) const;
   void recordTonemap(VkCommandBuffer cmd, float exposure) const;
   const vk::Image& hdrInput() const { return targets_.resolved ? targets_.resolved : targets_.hdr; }
 
