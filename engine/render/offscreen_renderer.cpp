@@ -39,14 +39,18 @@ AttachmentFormats OffscreenRenderer::formats() const { return {kHdrFormat, kDept
 
 void OffscreenRenderer::record(VkCommandBuffer cmd, HairSystem& hair, const DrawView& view, float exposure,
                                vk::GpuProfiler* profiler) const {
-  recordScene(cmd, hair, view, profiler);
+  record(cmd, [&](VkCommandBuffer c) { hair.recordDraw(c, view, profiler); }, exposure, profiler);
+}
+
+void OffscreenRenderer::record(VkCommandBuffer cmd, const std::function<void(VkCommandBuffer)>& draws,
+                               float exposure, vk::GpuProfiler* profiler) const {
+  recordScene(cmd, draws);
   if (profiler) profiler->begin(cmd, "tonemap");
   recordTonemap(cmd, exposure);
   if (profiler) profiler->end(cmd);
 }
 
-void OffscreenRenderer::recordScene(VkCommandBuffer cmd, HairSystem& hair, const DrawView& view,
-                                    vk::GpuProfiler* profiler) const {
+void OffscreenRenderer::recordScene(VkCommandBuffer cmd, const std::function<void(VkCommandBuffer)>& draws) const {
   const bool msaa = bool(targets_.resolved);
   // Earlier frames recorded into the same images: their writes (and, without MSAA, the tonemap's reads
   // of the HDR image) finish before the transitions discard the contents.
@@ -74,7 +78,7 @@ void OffscreenRenderer::recordScene(VkCommandBuffer cmd, HairSystem& hair, const
   depth.clearValue.depthStencil = {1.0f, 0};
   VkRenderingInfo info = renderingInfo(extent(), &color, &depth);
   vkCmdBeginRendering(cmd, &info);
-  hair.recordDraw(cmd, view, profiler);
+  draws(cmd);
   vkCmdEndRendering(cmd);
   vk::imageBarrier(cmd, hdrInput().handle(), VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::ColorAttachment,
                    vk::ImageUse::FragmentSampled);
