@@ -17,6 +17,10 @@ const vk::Binding kBindings[] = {
     {gpu::SIM_BINDING_POSITIONS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
     {gpu::SIM_BINDING_PREVIOUS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
     {gpu::SIM_BINDING_REST, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
+    {gpu::SIM_BINDING_ROOTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
+    {gpu::SIM_BINDING_ROOTS_PREV, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
+    {gpu::SIM_BINDING_BONES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
+    {gpu::SIM_BINDING_SKIN, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
 };
 
 VkDeviceSize particleBytes(const vk::Context& ctx, const GuideSet& guides) {
@@ -46,20 +50,15 @@ std::vector<glm::vec4> guideRestPose(const GuideSet& guides) {
 }
 
 SimulatePass::SimulatePass(const vk::Context& ctx, const HairAsset& asset, const SimulationParams& params,
-                           const glm::mat4& initialHead, vk::PipelineLibrary* library)
+                           const glm::mat4& initialHead, vk::PipelineLibrary* library, const ScalpInput& scalp)
     : ctx_(ctx),
       params_(params),
       guideCount_(asset.guides.guideCount()),
       particlesPerGuide_(asset.guides.particlesPerGuide),
       rest_(guideRestPose(asset.guides)),
-      colliders_(asset.colliders) {
+      scalp_(ctx, scalp, rest_, std::max(1u, asset.guides.particlesPerGuide), initialHead) {
   params_.validate();
-  if (colliders_.size() > gpu::SIM_MAX_COLLIDERS)
-    throw Error("simulation: " + std::to_string(colliders_.size()) + " colliders, at most " +
-                std::to_string(gpu::SIM_MAX_COLLIDERS) + " are supported");
-  for (const auto& c : colliders_)
-    if (!std::isfinite(c.radius) || c.radius < 0.0f || !std::isfinite(glm::length(c.center)))
-      throw Error("simulation: a collider has a negative or non-finite radius or center");
+  setColliders(asset.colliders);
   const VkDeviceSize bytes = particleBytes(ctx, asset.guides);
   positions_ = vk::Buffer(ctx, bytes, kParticleUsage, vk::MemoryKind::DeviceLocal, "guide positions");
   previous_ = vk::Buffer(ctx, bytes, kParticleUsage, vk::MemoryKind::DeviceLocal, "guide previous positions");
@@ -71,6 +70,7 @@ SimulatePass::SimulatePass(const vk::Context& ctx, const HairAsset& asset, const
   set_.writeStorageBuffer(gpu::SIM_BINDING_POSITIONS, positions_.handle());
   set_.writeStorageBuffer(gpu::SIM_BINDING_PREVIOUS, previous_.handle());
   set_.writeStorageBuffer(gpu::SIM_BINDING_REST, restBuffer_.handle());
+  scalp_.writeDescriptors(set_);
   static_assert(gpu::SIM_SPEC_PARTICLES == 0, "ComputePipeline numbers specialization constants from 0");
   pipeline_ = vk::makeComputePipeline(ctx, library, "simulate.comp", gpu::SIM_WORKGROUP_SIZE, {set_.layout()}, 0, "simulate",
                                   {particlesPerGuide_});
@@ -81,6 +81,24 @@ SimulatePass::SimulatePass(const vk::Context& ctx, const HairAsset& asset, const
 void SimulatePass::setParams(const SimulationParams& params) {
   params.validate();
   params_ = params;
+}
+
+void SimulatePass::setColliders(std::span<const SphereCollider> spheres, std::span<const CapsuleCollider> capsules) {
+  if (spheres.size() > gpu::SIM_MAX_COLLIDERS)
+    throw Error("simulation: " + std::to_string(spheres.size()) + " colliders, at most " +
+                std::to_string(gpu::SIM_MAX_COLLIDERS) + " are supported");
+  if (capsules.size() > gpu::SIM_MAX_CAPSULES)
+    throw Error("simulation: " + std::to_string(capsules.size()) + " capsule colliders, at most " +
+                std::to_string(gpu::SIM_MAX_CAPSULES) + " are supported");
+  for (const auto& c : spheres)
+    if (!std::isfinite(c.radius) || c.radius < 0.0f || !std::isfinite(glm::length(c.center)))
+      throw Error("simulation: a collider has a negative or non-finite radius or center");
+  for (const auto& c : capsules)
+    if (!std::isfinite(c.radius) || c.radius < 0.0f || !std::isfinite(glm::length(c.a)) ||
+        !std::isfinite(glm::length(c.b)))
+      throw Error("simulation: a capsule collider has a negative or non-finite radius or end");
+  colliders_.assign(spheres.begin(), spheres.end());
+  capsules_.assign(capsules.begin(), capsules.end());
 }
 
 void SimulatePass::reset(const glm::mat4& head) {
@@ -111,6 +129,13 @@ gpu::SimFrame SimulatePass::frameConstants(const HeadMotion& motion) const {
   f.iterations = params_.iterations;
   f.colliderCount = static_cast<std::uint32_t>(colliders_.size());
   for (std::size_t c = 0; c < colliders_.size(); ++c) f.colliders[c] = glm::vec4(colliders_[c].center, colliders_[c].radius);
+  f.capsuleCount = static_cast<std::uint32_t>(capsules_.size());
+  for (std::size_t c = 0; c < capsules_.size(); ++c) {
+    f.capsules[2 * c] = glm::vec4(capsules_[c].a, capsules_[c].radius);
+    f.capsules[2 * c + 1] = glm::vec4(capsules_[c].b, 0.0f);
+  }
+  f.scalpMode = scalp_.mode();
+  f.boneCount = scalp_.boneCount();
   return f;
 }
 
@@ -123,6 +148,7 @@ void SimulatePass::record(VkCommandBuffer cmd, const HeadMotion& motion, vk::Gpu
   vkCmdUpdateBuffer(cmd, frame_.handle(), 0, sizeof(f), &f);
   vk::bufferBarrier(cmd, frame_.handle(), vk::BufferUse::TransferDst, vk::BufferUse::ComputeRead);
   frameWritten_ = true;
+  scalp_.record(cmd);
   pipeline_->bind(cmd, set_.set());
   pipeline_->dispatch(cmd, guideCount_);
   if (profiler) profiler->end(cmd);

@@ -10,6 +10,7 @@
 #include <span>
 
 #include "engine/hair/hair_asset.h"
+#include "compute/scalp_input.h"
 #include "engine/hair/sim_params.h"
 #include "engine/vk/buffer.h"
 #include "engine/vk/descriptors.h"
@@ -31,9 +32,15 @@ class SimulatePass {
   // Guides start in their rest pose placed by `initialHead`. Throws hp::Error on invalid params or
   // an asset the pass cannot hold (too many colliders, buffers past maxStorageBufferRange).
   SimulatePass(const vk::Context& ctx, const HairAsset& asset, const SimulationParams& params,
-               const glm::mat4& initialHead = glm::mat4(1.0f), vk::PipelineLibrary* library = nullptr);
+               const glm::mat4& initialHead = glm::mat4(1.0f), vk::PipelineLibrary* library = nullptr,
+               const ScalpInput& scalp = {});
 
   void setParams(const SimulationParams& params);
+  // The colliders of the next frames, in head space (they move with HeadMotion): any time between frames.
+  // Throws hp::Error on too many, negative or non-finite ones.
+  void setColliders(std::span<const SphereCollider> spheres, std::span<const CapsuleCollider> capsules = {});
+  // Scalp input Bones: the bone matrices at the end of the next recorded frame (ScalpState::setBones).
+  void setBones(std::span<const glm::mat4> bones) { scalp_.setBones(bones); }
   const SimulationParams& params() const { return params_; }
   // Puts every guide back in its rest pose at `head` (one-shot upload, outside the frame loop).
   void reset(const glm::mat4& head);
@@ -46,6 +53,7 @@ class SimulatePass {
   // Rest pose in head space (xyz) and the rest length of the segment ending at each particle (w).
   const std::vector<glm::vec4>& rest() const { return rest_; }
   const std::vector<SphereCollider>& colliders() const { return colliders_; }
+  const std::vector<CapsuleCollider>& capsules() const { return capsules_; }
 
  private:
   gpu::SimFrame frameConstants(const HeadMotion& motion) const;
@@ -56,6 +64,8 @@ class SimulatePass {
   std::uint32_t particlesPerGuide_;
   std::vector<glm::vec4> rest_;
   std::vector<SphereCollider> colliders_;
+  std::vector<CapsuleCollider> capsules_;
+  ScalpState scalp_;
   vk::Buffer positions_;
   vk::Buffer previous_;
   vk::Buffer restBuffer_;

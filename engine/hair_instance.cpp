@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "engine/error.h"
+#include "engine/hair/finite.h"
 #include "engine/renderer.h"
 #include "engine/vk/context.h"
 
@@ -14,9 +15,7 @@ const InstanceSettings& validated(const InstanceSettings& s) {
 }
 
 void checkFinite(const glm::mat4& m, const char* what) {
-  for (int c = 0; c < 4; ++c)
-    for (int r = 0; r < 4; ++r)
-      if (!std::isfinite(m[c][r])) throw Error(std::string(what) + " must be finite");
+  if (!allFinite(m)) throw Error(std::string(what) + " must be finite");
 }
 
 std::uint32_t alignUp(std::size_t size, VkDeviceSize alignment) {
@@ -38,7 +37,7 @@ HairInstance::HairInstance(Renderer& renderer, const HairAsset& asset, const Ins
       settings_(validated(settings)),
       headMesh_(asset.head),
       motion_{initialHead, initialHead, 0.0, false},
-      simulate_(renderer.context(), asset, settings.simulation, initialHead, &renderer.pipelines()),
+      simulate_(renderer.context(), asset, settings.simulation, initialHead, &renderer.pipelines(), settings.scalp),
       geometry_(std::make_shared<Geometry>(renderer, simulate_, asset.topology, asset.head, settings_)),
       marschner_(renderer.marschner(settings.material, settings.lutMode)) {
   const vk::Context& ctx = renderer.context();

@@ -36,6 +36,12 @@ class HairInstance {
   void setMotion(const HeadMotion& motion);
   // Where the head is drawn and casts its shadow when it is not simulated this frame.
   void setHeadToWorld(const glm::mat4& headToWorld);
+  // Colliders for the next frames (head space, moving with the motion's head pair); scalp input Bones:
+  // the bone matrices at the end of the next frame. Both any time between frames.
+  void setColliders(std::span<const SphereCollider> spheres, std::span<const CapsuleCollider> capsules = {}) {
+    simulate_.setColliders(spheres, capsules);
+  }
+  void setBones(std::span<const glm::mat4> bones) { simulate_.setBones(bones); }
   void setMaterial(const HairMaterial& material, LutMode mode);
   void setLook(const render::LookSettings& look);
   void setSimulation(const SimulationParams& params);

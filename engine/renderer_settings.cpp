@@ -4,17 +4,9 @@
 #include <string>
 
 #include "engine/error.h"
+#include "engine/hair/finite.h"
 
 namespace hp {
-namespace {
-bool finite(const glm::mat4& m) {
-  for (int c = 0; c < 4; ++c)
-    for (int r = 0; r < 4; ++r)
-      if (!std::isfinite(m[c][r])) return false;
-  return true;
-}
-}  // namespace
-
 void RendererSettings::validate() const {
   opacity.validate();
   // The strand shader builds its coverage sample mask in 32 bits (and gl_SampleMask[0] holds 32).
@@ -33,7 +25,7 @@ void InstanceSettings::validate() const {
 
 void View::validate(std::uint32_t maxViews) const {
   if (extent.width == 0 || extent.height == 0) throw Error("View.extent must be non-zero");
-  if (!finite(camera.view) || !finite(camera.proj) || !std::isfinite(camera.fovY) ||
+  if (!allFinite(camera.view) || !allFinite(camera.proj) || !std::isfinite(camera.fovY) ||
       !std::isfinite(glm::length(camera.position)))
     throw Error("View.camera must be finite");
   if (index >= maxViews)

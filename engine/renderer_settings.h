@@ -6,6 +6,7 @@
 
 #include <cstdint>
 
+#include "compute/scalp_input.h"
 #include "compute/strand_buffers.h"
 #include "engine/hair/sim_params.h"
 #include "engine/render/attachment_formats.h"
@@ -33,6 +34,7 @@ struct InstanceSettings {
   LutMode lutMode = LutMode::Float;
   compute::StrandOptions strands;
   render::LookSettings look;
+  ScalpInput scalp;  // where the roots come from: rigid head (default), skinned root frames, or bones
   void validate() const;
 };
 

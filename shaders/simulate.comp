@@ -13,6 +13,10 @@ layout(std140, binding = SIM_BINDING_FRAME) uniform Frame { SimFrame frame; };
 layout(std430, binding = SIM_BINDING_POSITIONS) buffer Positions { vec4 positions[]; };
 layout(std430, binding = SIM_BINDING_PREVIOUS) buffer Previous { vec4 previous[]; };
 layout(std430, binding = SIM_BINDING_REST) readonly buffer Rest { vec4 rest[]; };
+layout(std430, binding = SIM_BINDING_ROOTS) readonly buffer Roots { vec4 roots[]; };
+layout(std430, binding = SIM_BINDING_ROOTS_PREV) buffer RootsPrev { vec4 rootsPrev[]; };
+layout(std430, binding = SIM_BINDING_BONES) readonly buffer Bones { mat4 bones[]; };
+layout(std430, binding = SIM_BINDING_SKIN) readonly buffer Skin { SkinWeights skin[]; };
 
 // Particles per guide, specialised to the asset's P when the pipeline is built, so the strand's arrays
 // have their exact size and constant-bound loops can be unrolled into registers.
@@ -28,6 +32,38 @@ float gustPhase(uint guide) {
 }
 
 vec3 transformPoint(mat4 m, vec3 p) { return (m * vec4(p, 1.0)).xyz; }
+
+// T(position) R(q) T(-restRoot): the rest pose carried by a root frame (q unit, xyzw).
+mat4 rootFrameMatrix(vec4 position, vec4 q, vec3 restRoot) {
+  vec3 x = vec3(1.0 - 2.0 * (q.y * q.y + q.z * q.z), 2.0 * (q.x * q.y + q.w * q.z), 2.0 * (q.x * q.z - q.w * q.y));
+  vec3 y = vec3(2.0 * (q.x * q.y - q.w * q.z), 1.0 - 2.0 * (q.x * q.x + q.z * q.z), 2.0 * (q.y * q.z + q.w * q.x));
+  vec3 z = vec3(2.0 * (q.x * q.z + q.w * q.y), 2.0 * (q.y * q.z - q.w * q.x), 1.0 - 2.0 * (q.x * q.x + q.y * q.y));
+  mat3 r = mat3(x, y, z);
+  return mat4(vec4(x, 0.0), vec4(y, 0.0), vec4(z, 0.0), vec4(position.xyz - r * restRoot, 1.0));
+}
+
+mat4 skinned(uint guide, uint first) {
+  SkinWeights s = skin[guide];
+  return bones[first + s.bones.x] * s.weights.x + bones[first + s.bones.y] * s.weights.y +
+         bones[first + s.bones.z] * s.weights.z + bones[first + s.bones.w] * s.weights.w;
+}
+
+// The guide's root matrix at the start and at the end of the frame (see shared/simulate.h).
+void rootMatrices(uint guide, uint base, out mat4 from, out mat4 to) {
+  if (frame.scalpMode == SIM_SCALP_ROOT_FRAMES) {
+    vec3 restRoot = rest[base].xyz;
+    from = rootFrameMatrix(rootsPrev[2u * guide], rootsPrev[2u * guide + 1u], restRoot);
+    to = rootFrameMatrix(roots[2u * guide], roots[2u * guide + 1u], restRoot);
+    rootsPrev[2u * guide] = roots[2u * guide];  // this invocation alone owns its guide's entries
+    rootsPrev[2u * guide + 1u] = roots[2u * guide + 1u];
+  } else if (frame.scalpMode == SIM_SCALP_BONES) {
+    from = skinned(guide, 0u);
+    to = skinned(guide, frame.boneCount);
+  } else {
+    from = frame.headFrom;
+    to = frame.headTo;
+  }
+}
 
 void integrate(uint base, uint n, mat4 head, vec3 accel, float h) {
   x[0] = transformPoint(head, rest[base].xyz);  // the root is pinned to the scalp
@@ -89,6 +125,14 @@ vec3 resolvePearl(vec3 p, vec3 parent, float restLength, vec3 center, float reac
 
 // Colliders overlap (cranium, face, neck, shoulders): leaving one can enter another, so the colliders
 // are visited again, up to SIM_COLLISION_PASSES times, while the last visit moved a pearl.
+// A capsule acts on a pearl as the sphere around the nearest point of its axis.
+vec3 nearestOnSegment(vec3 p, vec3 a, vec3 b) {
+  vec3 ab = b - a;
+  float len2 = dot(ab, ab);
+  float t = len2 > 1e-20 ? clamp(dot(p - a, ab) / len2, 0.0, 1.0) : 0.0;
+  return a + t * ab;
+}
+
 void collide(uint base, uint n, mat4 head) {
   bool moved = true;
   for (uint pass = 0u; pass < SIM_COLLISION_PASSES && moved; ++pass) {
@@ -97,6 +141,17 @@ void collide(uint base, uint n, mat4 head) {
       vec3 center = transformPoint(head, frame.colliders[c].xyz);
       float reach = frame.colliders[c].w + frame.pearlRadius;
       for (uint i = 1u; i < n; ++i) {
+        if (length(x[i] - center) >= reach) continue;
+        x[i] = resolvePearl(x[i], x[i - 1u], rest[base + i].w, center, reach);
+        moved = true;
+      }
+    }
+    for (uint c = 0u; c < frame.capsuleCount; ++c) {
+      vec3 a = transformPoint(head, frame.capsules[2u * c].xyz);
+      vec3 b = transformPoint(head, frame.capsules[2u * c + 1u].xyz);
+      float reach = frame.capsules[2u * c].w + frame.pearlRadius;
+      for (uint i = 1u; i < n; ++i) {
+        vec3 center = nearestOnSegment(x[i], a, b);
         if (length(x[i] - center) >= reach) continue;
         x[i] = resolvePearl(x[i], x[i - 1u], rest[base + i].w, center, reach);
         moved = true;
@@ -114,8 +169,10 @@ void main() {
     x[i] = positions[base + i].xyz;
     xPrev[i] = previous[base + i].xyz;
   }
+  mat4 rootFrom, rootTo;
+  rootMatrices(guide, base, rootFrom, rootTo);
   if (frame.teleport != 0u) {
-    mat4 carry = frame.headTo * inverse(frame.headFrom);
+    mat4 carry = rootTo * inverse(rootFrom);
     for (uint i = 0u; i < n; ++i) {
       x[i] = transformPoint(carry, x[i]);
       xPrev[i] = transformPoint(carry, xPrev[i]);
@@ -126,10 +183,11 @@ void main() {
   for (uint s = 0u; s < frame.substeps; ++s) {
     float t = float(s + 1u) / float(frame.substeps);
     mat4 head = frame.teleport != 0u ? frame.headTo : frame.headFrom * (1.0 - t) + frame.headTo * t;
+    mat4 root = frame.teleport != 0u ? rootTo : rootFrom * (1.0 - t) + rootTo * t;
     float gust = 1.0 + frame.wind.w * sin(6.28318530718 * frame.gustFrequency * (frame.time + h * float(s + 1u)) + phase);
     vec3 accel = frame.gravity.xyz + frame.wind.xyz * gust;
-    integrate(base, n, head, accel, h);
-    pullTowardRest(base, n, head);
+    integrate(base, n, root, accel, h);
+    pullTowardRest(base, n, root);
     for (uint it = 0u; it < frame.iterations; ++it) {
       // Symmetric sweeps converge slowly for a chain hanging from a pinned root; the last sweep is
       // follow-the-leader so lengths are exact before the final collision push.

@@ -10,3 +10,13 @@ struct SphereCollider {
   bool operator==(const SphereCollider&) const = default;
 };
 }  // namespace hp
+
+namespace hp {
+// A capsule collider in head space: the points within `radius` of the segment a-b (a limb, the neck).
+struct CapsuleCollider {
+  glm::vec3 a{0.0f};
+  glm::vec3 b{0.0f};
+  float radius = 0.0f;
+  bool operator==(const CapsuleCollider&) const = default;
+};
+}  // namespace hp
