@@ -27,6 +27,7 @@
 #include "engine/vk/context.h"
 #include "samples/cli/command.h"
 #include "samples/cli/material_options.h"
+#include "samples/cli/output_paths.h"
 
 namespace {
 constexpr int kColumns = 9;
@@ -138,6 +139,7 @@ void runBrdf(const BrdfOptions& o) {
     throw hp::Error("--mode " + o.mode + ": expected paper, float or direct");
   const hp::LutMode mode = hp::parseLutMode(o.mode);
   o.material.validate();
+  hp::cli::prepareOutputFile({"--out", o.out}, {{"--in", o.in}});
   std::vector<hp::render::BrdfQuery> queries = readQueries(o.in);
   hp::vk::ContextOptions ctxOptions;
   ctxOptions.device = o.device;
