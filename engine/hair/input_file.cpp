@@ -16,7 +16,7 @@ std::string sizeText(std::uint64_t bytes) {
 std::uint64_t checkedSize(const std::filesystem::path& path, std::uint64_t maxBytes) {
   std::error_code ec;
   const auto status = std::filesystem::status(path, ec);
-  if (ec || !std::filesystem::exists(status)) throw Error(path.string() + ": cannot open (no such file)");
+  if (ec || !std::filesystem::exists(status)) throw Error(path.string() + ": cannot open (no such input file)");
   if (std::filesystem::is_directory(status)) throw Error(path.string() + ": cannot open (not a regular file: a directory)");
   if (!std::filesystem::is_regular_file(status)) throw Error(path.string() + ": cannot open (not a regular file)");
   const std::uint64_t size = std::filesystem::file_size(path, ec);
