@@ -13,7 +13,7 @@
 #include "engine/error.h"
 #include "engine/hair/default_head.h"
 #include "engine/hair_system.h"
-#include "engine/render/png_file.h"
+#include "tools/png_file.h"
 #include "engine/sim/head_animation.h"
 #include "engine/vk/barriers.h"
 #include "engine/vk/check.h"

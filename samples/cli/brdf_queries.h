@@ -9,7 +9,7 @@
 #include <string_view>
 #include <vector>
 
-#include "engine/render/brdf_evaluator.h"
+#include "tools/brdf_evaluator.h"
 
 namespace hp::cli {
 inline constexpr const char* kBrdfRowFormat = "lx,ly,lz,vx,vy,vz,tx,ty,tz";

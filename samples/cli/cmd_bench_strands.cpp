@@ -17,7 +17,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "compute/strand_dump.h"
+#include "tools/strand_dump.h"
 #include "engine/error.h"
 #include "engine/hair/default_head.h"
 #include "engine/vk/barriers.h"

@@ -8,8 +8,8 @@
 #include <nlohmann/json.hpp>
 
 #include "engine/error.h"
-#include "engine/render/png_file.h"
-#include "engine/render/render_job.h"
+#include "tools/png_file.h"
+#include "tools/render_job.h"
 #include "samples/cli/command.h"
 #include "samples/cli/material_options.h"
 #include "samples/cli/scene_options.h"

@@ -2,7 +2,7 @@
 // [--guides-only] --out FILE.hair [--json] [--device D] [--validation]`: builds the asset, uploads
 // its rest-pose guides, runs tessellate + interpolate on the device once, reads the render strands
 // back and writes them as .hair (Q points per strand), atomically. The dump itself is
-// hp::compute::computeRenderStrands / renderStrandsToHairData (compute/strand_dump.h), which
+// hp::compute::computeRenderStrands / renderStrandsToHairData (tools/strand_dump.h), which
 // `hairpipe render --dump-strands` reuses.
 #include <cstdint>
 #include <filesystem>
@@ -11,7 +11,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "compute/strand_dump.h"
+#include "tools/strand_dump.h"
 #include "engine/error.h"
 #include "engine/hair/scene.h"
 #include "engine/vk/context.h"

@@ -7,7 +7,7 @@
 //     bound in every mode because the mode is a run-time branch: bind any 1x1 texture to the unused.
 //   push constant BrdfEvalPush: control.x = row count, control.y = MARSCHNER_MODE_*.
 // Dispatch with ComputePipeline::dispatch(count) (the grid may fold into 2D; the kernel uses
-// hpThreadId). Host side: engine/render/brdf_evaluator.h.
+// hpThreadId). Host side: tools/brdf_evaluator.h.
 #ifndef HP_SHARED_BRDF_EVAL_H
 #define HP_SHARED_BRDF_EVAL_H
 

@@ -11,7 +11,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "engine/render/png_file.h"
+#include "tools/png_file.h"
 #include "tests/support/cli_runner.h"
 
 using hp::test::runCli;

@@ -4,7 +4,7 @@
 
 #include <filesystem>
 
-#include "engine/render/png_file.h"
+#include "tools/png_file.h"
 #include "tests/support/cli_runner.h"
 
 using hp::test::freshTempPath;

@@ -9,7 +9,7 @@
 #include <numeric>
 
 #include "compute/interpolate_pass.h"
-#include "compute/strand_dump.h"
+#include "tools/strand_dump.h"
 #include "compute/tessellate_pass.h"
 #include "engine/error.h"
 #include "engine/hair/default_head.h"

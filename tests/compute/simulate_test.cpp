@@ -2,7 +2,7 @@
 // the issue asks for (lengths, clearance, no NaN under violent motion, teleport, energy decay).
 #include <gtest/gtest.h>
 
-#include "compute/simulation_driver.h"
+#include "tools/simulation_driver.h"
 #include "engine/error.h"
 #include "engine/hair/default_head.h"
 #include "tests/compute/sim_reference.h"

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "compute/strand_dump.h"
+#include "tools/strand_dump.h"
 #include "engine/vk/barriers.h"
 #include "engine/vk/submit.h"
 

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "engine/render/brdf_evaluator.h"
+#include "tools/brdf_evaluator.h"
 #include "tests/shading/random_directions.h"
 
 namespace hp::test {

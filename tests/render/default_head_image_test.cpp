@@ -8,8 +8,8 @@
 #include <filesystem>
 #include <iostream>
 
-#include "engine/render/png_file.h"
-#include "engine/render/render_job.h"
+#include "tools/png_file.h"
+#include "tools/render_job.h"
 #include "tests/support/vk_fixture.h"
 
 using namespace hp;

@@ -12,7 +12,7 @@
 #include <array>
 #include <vector>
 
-#include "engine/render/opacity_capture.h"
+#include "tools/opacity_capture.h"
 
 namespace hp::test {
 struct LightBox {

@@ -9,10 +9,10 @@
 
 #include <cmath>
 
-#include "compute/simulation_driver.h"
+#include "tools/simulation_driver.h"
 #include "engine/hair/default_head.h"
-#include "engine/render/offscreen_renderer.h"
-#include "engine/render/render_job.h"
+#include "tools/offscreen_renderer.h"
+#include "tools/render_job.h"
 #include "engine/vk/submit.h"
 #include "tests/support/vk_fixture.h"
 

@@ -1,4 +1,4 @@
-#include "engine/render/brdf_evaluator.h"
+#include "tools/brdf_evaluator.h"
 
 #include <algorithm>
 #include <string>

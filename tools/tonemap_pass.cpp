@@ -1,4 +1,4 @@
-#include "engine/render/tonemap_pass.h"
+#include "tools/tonemap_pass.h"
 
 #include "engine/vk/context.h"
 #include "engine/vk/image.h"

@@ -1,4 +1,4 @@
-#include "engine/render/png_file.h"
+#include "tools/png_file.h"
 
 #include <png.h>
 

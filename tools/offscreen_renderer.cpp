@@ -1,4 +1,4 @@
-#include "engine/render/offscreen_renderer.h"
+#include "tools/offscreen_renderer.h"
 
 #include "engine/vk/barriers.h"
 #include "engine/vk/transfer.h"

@@ -1,4 +1,4 @@
-#include "engine/render/render_targets.h"
+#include "tools/render_targets.h"
 
 #include "engine/error.h"
 #include "engine/vk/context.h"

@@ -1,4 +1,4 @@
-#include "compute/strand_dump.h"
+#include "tools/strand_dump.h"
 
 #include <algorithm>
 

@@ -7,8 +7,8 @@
 #include <vector>
 
 #include "engine/hair_system.h"
-#include "engine/render/render_targets.h"
-#include "engine/render/tonemap_pass.h"
+#include "tools/render_targets.h"
+#include "tools/tonemap_pass.h"
 
 namespace hp::render {
 class OffscreenRenderer {

@@ -1,10 +1,10 @@
-#include "engine/render/render_job.h"
+#include "tools/render_job.h"
 
-#include "compute/strand_dump.h"
+#include "tools/strand_dump.h"
 
-#include "compute/simulation_driver.h"
+#include "tools/simulation_driver.h"
 #include "engine/error.h"
-#include "engine/render/offscreen_renderer.h"
+#include "tools/offscreen_renderer.h"
 #include "engine/vk/context.h"
 #include "engine/vk/submit.h"
 

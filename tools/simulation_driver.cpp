@@ -1,4 +1,4 @@
-#include "compute/simulation_driver.h"
+#include "tools/simulation_driver.h"
 
 #include <algorithm>
 
