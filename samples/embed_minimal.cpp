@@ -1,18 +1,26 @@
 // A minimal embedding of hairpipe in an application that owns its Vulkan instance, device, queue,
 // attachments and command buffers (ARCHITECTURE.md "Embedding contract"). The application:
 //   1. creates its Vulkan 1.3 device with dynamicRendering + synchronization2 and a graphics+compute queue,
-//   2. hands the handles to hp::vk::Context::adopt,
-//   3. each frame records hairpipe's update and draw into ITS command buffer and ITS rendering,
-//   4. waits on ITS fence before reusing the command buffer, and destroys hairpipe before its device.
+//   2. hands the handles to hp::vk::Context::adopt and creates one hp::Renderer for its attachment formats,
+//   3. creates two hair instances: one whose lower scalp is skinned to a jaw/neck bone, one rigid head,
+//   4. each frame records hairpipe's update, shadows and draw into ITS command buffer and ITS rendering,
+//      with two frames in flight (a command buffer and fence per slot),
+//   5. destroys hairpipe before its device.
 // Usage: hairpipe_embed_minimal [--validation] [--frames N] [--out FILE.png]
+#include <algorithm>
+#include <cmath>
 #include <cstring>
+#include <span>
 #include <iostream>
 #include <string>
 #include <vector>
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include "engine/error.h"
 #include "engine/hair/default_head.h"
-#include "engine/hair_system.h"
+#include "engine/renderer.h"
+#include "engine/shading/material_color.h"
 #include "tools/png_file.h"
 #include "engine/sim/head_animation.h"
 #include "engine/vk/barriers.h"
@@ -25,6 +33,7 @@ namespace {
 constexpr std::uint32_t kWidth = 320, kHeight = 240;
 constexpr VkFormat kColor = VK_FORMAT_R8G8B8A8_UNORM;  // the app's own choice of formats
 constexpr VkFormat kDepth = VK_FORMAT_D32_SFLOAT;
+constexpr std::uint32_t kFramesInFlight = 2;
 
 std::uint32_t validationMessages = 0;
 VKAPI_ATTR VkBool32 VKAPI_CALL onMessage(VkDebugUtilsMessageSeverityFlagBitsEXT, VkDebugUtilsMessageTypeFlagsEXT,
@@ -43,8 +52,9 @@ struct App {
   std::uint32_t family = 0;
   VkQueue queue = VK_NULL_HANDLE;
   VkCommandPool pool = VK_NULL_HANDLE;
-  VkCommandBuffer cmd = VK_NULL_HANDLE;
-  VkFence fence = VK_NULL_HANDLE;
+  VkCommandBuffer cmds[kFramesInFlight] = {};
+  VkFence fences[kFramesInFlight] = {};
+  bool pending[kFramesInFlight] = {};
 
   void create(bool validation) {
     HP_VK_CHECK(volkInitialize());
@@ -99,26 +109,34 @@ struct App {
     HP_VK_CHECK(vkCreateCommandPool(device, &pi, nullptr, &pool));
     VkCommandBufferAllocateInfo ai{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
     ai.commandPool = pool;
-    ai.commandBufferCount = 1;
-    HP_VK_CHECK(vkAllocateCommandBuffers(device, &ai, &cmd));
+    ai.commandBufferCount = kFramesInFlight;
+    HP_VK_CHECK(vkAllocateCommandBuffers(device, &ai, cmds));
     VkFenceCreateInfo fi{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
-    HP_VK_CHECK(vkCreateFence(device, &fi, nullptr, &fence));
+    for (VkFence& f : fences) HP_VK_CHECK(vkCreateFence(device, &fi, nullptr, &f));
   }
 
-  void submitAndWait() {
+  // The slot's previous frame (frame - kFramesInFlight) is done: its command buffer is free again.
+  void waitSlot(std::uint32_t slot) {
+    if (!pending[slot]) return;
+    HP_VK_CHECK(vkWaitForFences(device, 1, &fences[slot], VK_TRUE, UINT64_MAX));
+    HP_VK_CHECK(vkResetFences(device, 1, &fences[slot]));
+    pending[slot] = false;
+  }
+
+  void submit(std::uint32_t slot) {
     VkCommandBufferSubmitInfo ci{VK_STRUCTURE_TYPE_COMMAND_BUFFER_SUBMIT_INFO};
-    ci.commandBuffer = cmd;
+    ci.commandBuffer = cmds[slot];
     VkSubmitInfo2 si{VK_STRUCTURE_TYPE_SUBMIT_INFO_2};
     si.commandBufferInfoCount = 1;
     si.pCommandBufferInfos = &ci;
-    HP_VK_CHECK(vkQueueSubmit2(queue, 1, &si, fence));
-    HP_VK_CHECK(vkWaitForFences(device, 1, &fence, VK_TRUE, UINT64_MAX));
-    HP_VK_CHECK(vkResetFences(device, 1, &fence));
+    HP_VK_CHECK(vkQueueSubmit2(queue, 1, &si, fences[slot]));
+    pending[slot] = true;
   }
 
   void destroy() {
     if (device) vkDeviceWaitIdle(device);
-    if (fence) vkDestroyFence(device, fence, nullptr);
+    for (VkFence f : fences)
+      if (f) vkDestroyFence(device, f, nullptr);
     if (pool) vkDestroyCommandPool(device, pool, nullptr);
     if (device) vkDestroyDevice(device, nullptr);
     if (messenger) vkDestroyDebugUtilsMessengerEXT(instance, messenger, nullptr);
@@ -126,18 +144,20 @@ struct App {
   }
 };
 
-// One frame of the application: hairpipe's compute and prepare steps, then the app's own rendering
-// with hairpipe's draw inside it.
-void recordFrame(App& app, hp::HairSystem& hair, const hp::HeadMotion& motion, const hp::DrawView& view,
+// One frame of the application: hairpipe's update and shadows, then the app's own rendering with
+// hairpipe's draw inside it. Both frames in flight render into the same attachments, so each frame's
+// transitions wait for the previous frame's writes (the *Discard uses) before discarding them.
+void recordFrame(VkCommandBuffer cmd, hp::Renderer& renderer, std::uint64_t frame,
+                 std::span<hp::HairInstance* const> heads, const hp::LightSpec& light, const hp::View& view,
                  const hp::vk::Image& color, const hp::vk::Image& depth) {
   VkCommandBufferBeginInfo bi{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
   bi.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
-  HP_VK_CHECK(vkBeginCommandBuffer(app.cmd, &bi));
-  hair.recordUpdate(app.cmd, motion);
-  hair.recordPrepareDraw(app.cmd, view);
-  hp::vk::imageBarrier(app.cmd, color.handle(), VK_IMAGE_ASPECT_COLOR_BIT, hp::vk::ImageUse::Undefined,
+  HP_VK_CHECK(vkBeginCommandBuffer(cmd, &bi));
+  renderer.recordUpdate(cmd, frame, heads);
+  renderer.recordShadows(cmd, frame, light, heads);
+  hp::vk::imageBarrier(cmd, color.handle(), VK_IMAGE_ASPECT_COLOR_BIT, hp::vk::ImageUse::ColorAttachmentDiscard,
                        hp::vk::ImageUse::ColorAttachment);
-  hp::vk::imageBarrier(app.cmd, depth.handle(), VK_IMAGE_ASPECT_DEPTH_BIT, hp::vk::ImageUse::Undefined,
+  hp::vk::imageBarrier(cmd, depth.handle(), VK_IMAGE_ASPECT_DEPTH_BIT, hp::vk::ImageUse::DepthAttachmentDiscard,
                        hp::vk::ImageUse::DepthAttachment);
   VkRenderingAttachmentInfo c{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
   c.imageView = color.view();
@@ -157,10 +177,30 @@ void recordFrame(App& app, hp::HairSystem& hair, const hp::HeadMotion& motion, c
   ri.colorAttachmentCount = 1;
   ri.pColorAttachments = &c;
   ri.pDepthAttachment = &d;
-  vkCmdBeginRendering(app.cmd, &ri);
-  hair.recordDraw(app.cmd, view);
-  vkCmdEndRendering(app.cmd);
-  HP_VK_CHECK(vkEndCommandBuffer(app.cmd));
+  vkCmdBeginRendering(cmd, &ri);
+  renderer.recordDraw(cmd, frame, view, heads);
+  vkCmdEndRendering(cmd);
+  HP_VK_CHECK(vkEndCommandBuffer(cmd));
+}
+
+// The jaw/neck bone: pitches the lower scalp around the cranium's centre, +-0.25 rad at 1 Hz.
+glm::mat4 jawBone(const glm::vec3& pivot, double t) {
+  const float angle = 0.25f * float(std::sin(2.0 * 3.14159265358979 * t));
+  return glm::translate(glm::mat4(1.0f), pivot) * glm::rotate(glm::mat4(1.0f), angle, {1, 0, 0}) *
+         glm::translate(glm::mat4(1.0f), -pivot);
+}
+
+// Skinning data as an application's exporter would give it: roots below the cranium's centre follow the
+// jaw bone (1), those well above the cranium (0), blended in between.
+hp::ScalpInput jawSkin(const hp::HairAsset& asset, const glm::vec3& pivot) {
+  hp::ScalpInput scalp;
+  scalp.kind = hp::ScalpInput::Kind::Bones;
+  scalp.boneCount = 2;
+  for (std::uint32_t g = 0; g < asset.guides.guideCount(); ++g) {
+    const float w = std::clamp((pivot.y + 0.04f - asset.guides.guide(g)[0].y) / 0.04f, 0.0f, 1.0f);
+    scalp.skin.push_back({glm::uvec4(0, 1, 0, 0), glm::vec4(1.0f - w, w, 0.0f, 0.0f)});
+  }
+  return scalp;
 }
 
 int run(bool validation, std::uint32_t frames, const std::string& out) {
@@ -170,28 +210,46 @@ int run(bool validation, std::uint32_t frames, const std::string& out) {
     {
       auto ctx = hp::vk::Context::adopt({vkGetInstanceProcAddr, app.instance, app.physical, app.device, app.family,
                                          app.queue, true});
-      const hp::HairAsset asset = hp::buildDefaultHeadAsset(hp::defaultHeadGrowth(), {hp::DensityOptions::Mode::Total, 8, 4000, 7});
-      hp::HairSystemSettings settings;
-      settings.formats = {kColor, kDepth, VK_SAMPLE_COUNT_1_BIT};
-      hp::HairSystem hair(*ctx, asset, settings);
+      hp::RendererSettings rs;
+      rs.formats = {kColor, kDepth, VK_SAMPLE_COUNT_1_BIT};
+      rs.framesInFlight = kFramesInFlight;
+      hp::Renderer renderer(*ctx, rs);
+      const hp::HairAsset skinnedAsset =
+          hp::buildDefaultHeadAsset(hp::defaultHeadGrowth(), {hp::DensityOptions::Mode::Total, 8, 4000, 7});
+      const hp::HairAsset rigidAsset =
+          hp::buildDefaultHeadAsset(hp::defaultHeadGrowth(), {hp::DensityOptions::Mode::Total, 8, 2500, 11});
+      const glm::vec3 pivot = std::max_element(skinnedAsset.colliders.begin(), skinnedAsset.colliders.end(),
+                                               [](const auto& a, const auto& b) { return a.radius < b.radius; })
+                                  ->center;  // the cranium: the largest collider
+      hp::InstanceSettings skinned;
+      skinned.scalp = jawSkin(skinnedAsset, pivot);
+      hp::InstanceSettings rigid;
+      rigid.material.absorption = hp::absorptionFromColor({0.85, 0.7, 0.45});  // blonde
+      const glm::mat4 rigidPlace = glm::translate(glm::mat4(1.0f), {0.32f, 0.0f, -0.1f});
+      auto jaw = renderer.createInstance(skinnedAsset, skinned);
+      auto other = renderer.createInstance(rigidAsset, rigid, rigidPlace);
+      hp::HairInstance* heads[] = {jaw.get(), other.get()};
       hp::vk::Image color(*ctx, {kWidth, kHeight, 1, kColor,
                                  VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
                                  VK_SAMPLE_COUNT_1_BIT, "app colour"});
       hp::vk::Image depth(*ctx, {kWidth, kHeight, 1, kDepth, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT,
                                  VK_SAMPLE_COUNT_1_BIT, "app depth"});
       hp::Scene scene;
-      hp::DrawView view;
-      view.extent = {kWidth, kHeight};
-      view.camera = hp::orbitCamera(scene.camera, float(kWidth) / kHeight);
-      view.light = scene.light;
+      scene.camera.target.x = 0.16f;
+      scene.camera.distance = 1.2f;
+      const hp::View view{hp::orbitCamera(scene.camera, float(kWidth) / kHeight), {kWidth, kHeight}, false, 0};
       for (std::uint32_t f = 0; f < frames; ++f) {
+        const std::uint32_t slot = f % kFramesInFlight;
+        app.waitSlot(slot);  // frame f - kFramesInFlight is done
         const double t0 = f / 60.0, t1 = (f + 1) / 60.0;
-        const hp::HeadMotion motion{hp::headTransformAt(hp::HeadAnimation::Nod, t0, 0.1f),
-                                    hp::headTransformAt(hp::HeadAnimation::Nod, t1, 0.1f), t0, false};
-        view.headToWorld = motion.to;
-        recordFrame(app, hair, motion, view, color, depth);
-        app.submitAndWait();  // the app's fence: the command buffer is free again
+        const glm::mat4 bones[] = {glm::mat4(1.0f), jawBone(pivot, t1)};
+        jaw->setBones(bones);
+        other->setMotion({rigidPlace * hp::headTransformAt(hp::HeadAnimation::Nod, t0, 0.1f),
+                          rigidPlace * hp::headTransformAt(hp::HeadAnimation::Nod, t1, 0.1f), t0, false});
+        recordFrame(app.cmds[slot], renderer, f, heads, scene.light, view, color, depth);
+        app.submit(slot);
       }
+      for (std::uint32_t slot = 0; slot < kFramesInFlight; ++slot) app.waitSlot(slot);
       auto bytes = hp::vk::readbackImage(*ctx, color, hp::vk::ImageUse::ColorAttachment);
       std::vector<std::uint8_t> rgba(bytes.size());
       std::memcpy(rgba.data(), bytes.data(), bytes.size());
@@ -207,7 +265,8 @@ int run(bool validation, std::uint32_t frames, const std::string& out) {
     std::cerr << "embed_minimal: " << validationMessages << " validation message(s)\n";
     return 1;
   }
-  std::cout << "embed_minimal: rendered " << frames << " frames into the application's attachments; wrote " << out << "\n";
+  std::cout << "embed_minimal: rendered " << frames << " frames of two heads (" << kFramesInFlight
+            << " in flight) into the application's attachments; wrote " << out << "\n";
   return 0;
 }
 }  // namespace

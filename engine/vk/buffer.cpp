@@ -38,6 +38,9 @@ Buffer::Buffer(const Context& ctx, VkDeviceSize size, VkBufferUsageFlags usage, 
     alloc.allocationSize = req.size;
     alloc.memoryTypeIndex = ctx.findMemoryType(req.memoryTypeBits, requiredFlags(kind), preferredFlags(kind));
     HP_VK_CHECK(vkAllocateMemory(device_, &alloc, nullptr, &memory_));
+    tally_ = ctx.allocationTally();
+    allocated_ = req.size;
+    *tally_ += std::int64_t(allocated_);
     ctx.setName(VK_OBJECT_TYPE_DEVICE_MEMORY, reinterpret_cast<std::uint64_t>(memory_), name + " memory");
     HP_VK_CHECK(vkBindBufferMemory(device_, buffer_, memory_, 0));
     if (kind != MemoryKind::DeviceLocal) HP_VK_CHECK(vkMapMemory(device_, memory_, 0, VK_WHOLE_SIZE, 0, &mapped_));
@@ -57,6 +60,8 @@ Buffer& Buffer::operator=(Buffer&& other) noexcept {
     device_ = std::exchange(other.device_, VK_NULL_HANDLE);
     buffer_ = std::exchange(other.buffer_, VK_NULL_HANDLE);
     memory_ = std::exchange(other.memory_, VK_NULL_HANDLE);
+    tally_ = std::move(other.tally_);
+    allocated_ = std::exchange(other.allocated_, 0);
     size_ = std::exchange(other.size_, 0);
     mapped_ = std::exchange(other.mapped_, nullptr);
     name_ = std::move(other.name_);
@@ -75,6 +80,9 @@ void Buffer::invalidate() const {
 void Buffer::release() {
   if (buffer_) vkDestroyBuffer(device_, buffer_, nullptr);
   if (memory_) vkFreeMemory(device_, memory_, nullptr);
+  if (tally_) *tally_ -= std::int64_t(allocated_);
+  tally_.reset();
+  allocated_ = 0;
   buffer_ = VK_NULL_HANDLE;
   memory_ = VK_NULL_HANDLE;
   mapped_ = nullptr;

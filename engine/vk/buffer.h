@@ -6,6 +6,8 @@
 
 #include <cstdint>
 
+#include <atomic>
+#include <memory>
 #include <string>
 
 namespace hp::vk {
@@ -40,6 +42,8 @@ class Buffer {
   VkDevice device_ = VK_NULL_HANDLE;
   VkBuffer buffer_ = VK_NULL_HANDLE;
   VkDeviceMemory memory_ = VK_NULL_HANDLE;
+  std::shared_ptr<std::atomic<std::int64_t>> tally_;  // Context::allocatedBytes
+  VkDeviceSize allocated_ = 0;
   VkDeviceSize size_ = 0;
   void* mapped_ = nullptr;
   std::string name_;

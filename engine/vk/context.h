@@ -9,6 +9,7 @@
 
 #include <cstdint>
 
+#include <atomic>
 #include <memory>
 #include <string>
 #include <vector>
@@ -70,6 +71,10 @@ class Context {
   void waitIdle() const;
   // Size of the largest device-local heap: the budget that size checks of big allocations use.
   VkDeviceSize deviceLocalHeapBytes() const;
+  // Bytes of device memory hairpipe's buffers and images hold now (what `hairpipe bench-instances` reports).
+  std::uint64_t allocatedBytes() const { return allocated_->load(); }
+  // Shared with every buffer and image, which add their allocation and take it back when freed.
+  const std::shared_ptr<std::atomic<std::int64_t>>& allocationTally() const { return allocated_; }
 
  private:
   Context() = default;
@@ -92,6 +97,7 @@ class Context {
   bool validation_ = false;
   bool timestampsSupported_ = false;
   std::shared_ptr<ValidationLog> log_ = std::make_shared<ValidationLog>();
+  std::shared_ptr<std::atomic<std::int64_t>> allocated_ = std::make_shared<std::atomic<std::int64_t>>(0);
   DeviceChoice choice_;
 };
 

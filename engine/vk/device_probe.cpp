@@ -45,26 +45,32 @@ std::vector<DeviceReport> probeDevices(VkInstance instance) {
   std::vector<VkPhysicalDevice> handles(count);
   HP_VK_CHECK(vkEnumeratePhysicalDevices(instance, &count, handles.data()));
   std::vector<DeviceReport> reports;
-  for (std::uint32_t i = 0; i < count; ++i) {
-    DeviceReport r;
-    r.handle = handles[i];
-    r.driver.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DRIVER_PROPERTIES;
-    VkPhysicalDeviceProperties2 props{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2, &r.driver};
-    vkGetPhysicalDeviceProperties2(r.handle, &props);
-    r.properties = props.properties;
-    vkGetPhysicalDeviceMemoryProperties(r.handle, &r.memory);
-    r.candidate.index = i;
-    r.candidate.name = r.properties.deviceName;
-    r.candidate.kind = deviceKind(r.properties.deviceType);
-    r.candidate.apiVersion = r.properties.apiVersion;
-    if (r.properties.apiVersion < VK_API_VERSION_1_3) {
-      r.candidate.missing.push_back("Vulkan 1.3");
-    } else {
-      probeFeatures(r);
-    }
-    probeQueues(r);
-    reports.push_back(std::move(r));
-  }
+  for (std::uint32_t i = 0; i < count; ++i) reports.push_back(probeDevice(handles[i], i));
   return reports;
+}
+
+DeviceRequirements requirements() { return {}; }
+
+std::vector<std::string> unfitReasons(VkPhysicalDevice device) { return probeDevice(device, 0).candidate.missing; }
+
+DeviceReport probeDevice(VkPhysicalDevice device, std::uint32_t i) {
+  DeviceReport r;
+  r.handle = device;
+  r.driver.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DRIVER_PROPERTIES;
+  VkPhysicalDeviceProperties2 props{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2, &r.driver};
+  vkGetPhysicalDeviceProperties2(r.handle, &props);
+  r.properties = props.properties;
+  vkGetPhysicalDeviceMemoryProperties(r.handle, &r.memory);
+  r.candidate.index = i;
+  r.candidate.name = r.properties.deviceName;
+  r.candidate.kind = deviceKind(r.properties.deviceType);
+  r.candidate.apiVersion = r.properties.apiVersion;
+  if (r.properties.apiVersion < VK_API_VERSION_1_3) {
+    r.candidate.missing.push_back("Vulkan 1.3");
+  } else {
+    probeFeatures(r);
+  }
+  probeQueues(r);
+  return r;
 }
 }  // namespace hp::vk

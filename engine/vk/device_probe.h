@@ -5,6 +5,7 @@
 
 #include <cstdint>
 
+#include <string>
 #include <vector>
 
 #include "engine/vk/device_selection.h"
@@ -21,5 +22,18 @@ struct DeviceReport {
 };
 
 std::vector<DeviceReport> probeDevices(VkInstance instance);
+DeviceReport probeDevice(VkPhysicalDevice device, std::uint32_t index);
+
+// What an application must create its device with to hand it to hairpipe (Context::adopt).
+struct DeviceRequirements {
+  std::uint32_t apiVersion = VK_API_VERSION_1_3;
+  std::vector<std::string> features{"VkPhysicalDeviceVulkan13Features::dynamicRendering",
+                                    "VkPhysicalDeviceVulkan13Features::synchronization2"};
+  std::vector<std::string> extensions;  // none required; VK_EXT_debug_utils is used for names when enabled
+  std::string queue = "one queue family with VK_QUEUE_GRAPHICS_BIT and VK_QUEUE_COMPUTE_BIT";
+};
+DeviceRequirements requirements();
+// Why `device` cannot run hairpipe (e.g. "Vulkan 1.3", "feature synchronization2"); empty when it can.
+std::vector<std::string> unfitReasons(VkPhysicalDevice device);
 DeviceKind deviceKind(VkPhysicalDeviceType type);
 }  // namespace hp::vk

@@ -59,6 +59,9 @@ Image::Image(const Context& ctx, const ImageDesc& desc) : device_(ctx.device()),
     alloc.allocationSize = req.size;
     alloc.memoryTypeIndex = ctx.findMemoryType(req.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
     HP_VK_CHECK(vkAllocateMemory(device_, &alloc, nullptr, &memory_));
+    tally_ = ctx.allocationTally();
+    allocated_ = req.size;
+    *tally_ += std::int64_t(allocated_);
     ctx.setName(VK_OBJECT_TYPE_DEVICE_MEMORY, reinterpret_cast<std::uint64_t>(memory_), desc.name + " memory");
     HP_VK_CHECK(vkBindImageMemory(device_, image_, memory_, 0));
     VkImageViewType type = desc.layers > 1 ? VK_IMAGE_VIEW_TYPE_2D_ARRAY : VK_IMAGE_VIEW_TYPE_2D;
@@ -97,6 +100,8 @@ Image& Image::operator=(Image&& other) noexcept {
     device_ = std::exchange(other.device_, VK_NULL_HANDLE);
     image_ = std::exchange(other.image_, VK_NULL_HANDLE);
     memory_ = std::exchange(other.memory_, VK_NULL_HANDLE);
+    tally_ = std::move(other.tally_);
+    allocated_ = std::exchange(other.allocated_, 0);
     view_ = std::exchange(other.view_, VK_NULL_HANDLE);
     layerViews_ = std::move(other.layerViews_);
     other.layerViews_.clear();
@@ -113,6 +118,9 @@ void Image::release() {
   if (view_) vkDestroyImageView(device_, view_, nullptr);
   if (image_) vkDestroyImage(device_, image_, nullptr);
   if (memory_) vkFreeMemory(device_, memory_, nullptr);
+  if (tally_) *tally_ -= std::int64_t(allocated_);
+  tally_.reset();
+  allocated_ = 0;
   view_ = VK_NULL_HANDLE;
   image_ = VK_NULL_HANDLE;
   memory_ = VK_NULL_HANDLE;

@@ -6,6 +6,8 @@
 
 #include <cstdint>
 
+#include <atomic>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -47,6 +49,8 @@ class Image {
   VkDevice device_ = VK_NULL_HANDLE;
   VkImage image_ = VK_NULL_HANDLE;
   VkDeviceMemory memory_ = VK_NULL_HANDLE;
+  std::shared_ptr<std::atomic<std::int64_t>> tally_;  // Context::allocatedBytes
+  VkDeviceSize allocated_ = 0;
   VkImageView view_ = VK_NULL_HANDLE;
   std::vector<VkImageView> layerViews_;
   ImageDesc desc_;

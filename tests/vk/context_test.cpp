@@ -1,8 +1,10 @@
 #include <gtest/gtest.h>
 
 #include "engine/error.h"
+#include "engine/vk/buffer.h"
 #include "engine/vk/check.h"
 #include "engine/vk/context.h"
+#include "engine/vk/device_probe.h"
 #include "tests/support/vk_fixture.h"
 
 using hp::test::VulkanTest;
@@ -71,4 +73,24 @@ TEST_F(VulkanTest, AdoptedDeviceIsCheckedAndNeverWaitedIdle) {
   ext.queueFamily = ctx->queueFamily();
   ext.device = VK_NULL_HANDLE;
   EXPECT_THROW(hp::vk::Context::adopt(ext), hp::Error);
+}
+
+TEST_F(VulkanTest, RequirementsNameWhatTheApplicationEnablesAndTheDeviceMeetsThem) {
+  const hp::vk::DeviceRequirements r = hp::vk::requirements();
+  EXPECT_EQ(r.apiVersion, VK_API_VERSION_1_3);
+  ASSERT_EQ(r.features.size(), 2u);
+  EXPECT_NE(r.features[0].find("dynamicRendering"), std::string::npos);
+  EXPECT_NE(r.features[1].find("synchronization2"), std::string::npos);
+  EXPECT_TRUE(hp::vk::unfitReasons(ctx->physicalDevice()).empty());
+}
+
+TEST_F(VulkanTest, DeviceMemoryHeldIsCountedAndGivenBack) {
+  const std::uint64_t before = ctx->allocatedBytes();
+  {
+    hp::vk::Buffer b(*ctx, 1 << 20, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, hp::vk::MemoryKind::DeviceLocal, "counted");
+    EXPECT_GE(ctx->allocatedBytes(), before + (1u << 20));
+    hp::vk::Buffer moved = std::move(b);
+    EXPECT_GE(ctx->allocatedBytes(), before + (1u << 20));
+  }
+  EXPECT_EQ(ctx->allocatedBytes(), before);
 }

@@ -1,0 +1,127 @@
+// `hairpipe bench-instances [--instances 1,4,16] [--strands N] [--frames F] [--json]`: the cost of many heads
+// on one hp::Renderer: host time to create the renderer and each instance, device memory held per instance
+// and shared (Context::allocatedBytes before and after), and the CPU time to record one frame (update,
+// shadows and one view's draw of every instance; median of F frames after one warm-up) for each instance
+// count. Every frame is submitted and waited on; only the record calls are timed (host clock: this is CPU
+// work). Heads are the default head at `--strands`, side by side.
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <nlohmann/json.hpp>
+
+#include "engine/error.h"
+#include "engine/hair/default_head.h"
+#include "engine/renderer.h"
+#include "engine/vk/context.h"
+#include "engine/vk/profiler.h"
+#include "engine/vk/submit.h"
+#include "samples/cli/bench_context.h"
+#include "samples/cli/command.h"
+#include "tools/offscreen_renderer.h"
+
+namespace {
+using Clock = std::chrono::steady_clock;
+
+struct BenchOptions {
+  std::vector<std::uint32_t> instances{1, 4, 16};
+  std::uint32_t strands = 2000;
+  std::uint32_t frames = 5;
+  bool json = false;
+  std::string device;
+};
+
+double msSince(Clock::time_point t0) { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
+
+nlohmann::json benchCount(const hp::vk::Context& ctx, const hp::HairAsset& asset, std::uint32_t count,
+                          const BenchOptions& o) {
+  hp::render::OffscreenRenderer target(ctx, 320, 180, 1);
+  hp::RendererSettings settings;
+  settings.formats = target.formats();
+  const std::uint64_t before = ctx.allocatedBytes();
+  auto t0 = Clock::now();
+  hp::Renderer renderer(ctx, settings);
+  const double rendererMs = msSince(t0);
+  const std::uint64_t shared = ctx.allocatedBytes() - before;
+  std::vector<std::unique_ptr<hp::HairInstance>> heads;
+  std::vector<double> instanceMs;
+  for (std::uint32_t i = 0; i < count; ++i) {
+    t0 = Clock::now();
+    heads.push_back(renderer.createInstance(asset, {}, glm::translate(glm::mat4(1.0f), {0.3f * float(i), 0, 0})));
+    instanceMs.push_back(msSince(t0));
+  }
+  const std::uint64_t all = ctx.allocatedBytes() - before;
+  std::vector<hp::HairInstance*> span;
+  for (auto& h : heads) span.push_back(h.get());
+  hp::CameraSpec cam;
+  cam.distance = 1.0f + 0.3f * float(count);
+  const hp::View view{hp::orbitCamera(cam, 320.0f / 180.0f), {320, 180}, false, 0};
+  std::vector<double> recordUs;
+  for (std::uint32_t f = 0; f <= o.frames; ++f) {
+    double us = 0.0;
+    hp::vk::submitAndWait(ctx, [&](VkCommandBuffer cmd) {
+      auto t = Clock::now();
+      renderer.recordUpdate(cmd, f, span);
+      renderer.recordShadows(cmd, f, hp::LightSpec{}, span);
+      us += msSince(t) * 1000.0;
+      target.record(cmd, [&](VkCommandBuffer c) {
+        auto td = Clock::now();
+        renderer.recordDraw(c, f, view, span);
+        us += msSince(td) * 1000.0;
+      }, 1.0f);
+    }, "bench instances frame");
+    if (f > 0) recordUs.push_back(us);  // frame 0 is the warm-up
+  }
+  const double later = count > 1 ? hp::vk::median(std::vector<double>(instanceMs.begin() + 1, instanceMs.end())) : 0.0;
+  return {{"instances", count},
+          {"renderer_create_ms", rendererMs},
+          {"first_instance_ms", instanceMs.front()},
+          {"later_instance_ms_median", later},
+          {"shared_bytes", shared},
+          {"per_instance_bytes", (all - shared) / count},
+          {"record_us_median", hp::vk::median(recordUs)}};
+}
+
+void run(const BenchOptions& o) {
+  if (o.frames == 0 || o.frames > 100) throw hp::Error("bench-instances: --frames must be in [1, 100]");
+  if (o.strands == 0 || o.strands > 1'000'000) throw hp::Error("bench-instances: --strands must be in [1, 1000000]");
+  for (std::uint32_t n : o.instances)
+    if (n == 0 || n > 64) throw hp::Error("bench-instances: --instances values must be in [1, 64]");
+  auto ctx = hp::cli::createBenchContext(o.device, "bench-instances");
+  hp::DensityOptions density;
+  density.totalStrands = o.strands;
+  const hp::HairAsset asset = hp::buildDefaultHeadAsset(hp::defaultHeadGrowth(), density);
+  nlohmann::json report = {{"device", ctx->properties().deviceName}, {"strands", o.strands}, {"frames", o.frames},
+                           {"results", nlohmann::json::array()}};
+  for (std::uint32_t n : o.instances) {
+    nlohmann::json row = benchCount(*ctx, asset, n, o);
+    if (!o.json)
+      std::printf("%3u instances  renderer %7.1f ms  1st instance %7.1f ms  later %7.1f ms  shared %6.2f MiB  "
+                  "per instance %6.2f MiB  record %8.1f us\n",
+                  n, row["renderer_create_ms"].get<double>(), row["first_instance_ms"].get<double>(),
+                  row["later_instance_ms_median"].get<double>(), row["shared_bytes"].get<double>() / 1048576.0,
+                  row["per_instance_bytes"].get<double>() / 1048576.0, row["record_us_median"].get<double>());
+    std::fflush(stdout);
+    report["results"].push_back(row);
+  }
+  if (o.json) std::cout << report.dump(2) << "\n";
+}
+
+void setup(CLI::App& app) {
+  auto o = std::make_shared<BenchOptions>();
+  CLI::App* cmd = app.add_subcommand("bench-instances", "Time renderer/instance creation and frame recording for many heads");
+  cmd->add_option("--instances", o->instances, "Instance counts, comma separated")->delimiter(',')->capture_default_str();
+  cmd->add_option("--strands", o->strands, "Render strands per head")->capture_default_str();
+  cmd->add_option("--frames", o->frames, "Timed frames per count (median), after one warm-up")->capture_default_str();
+  cmd->add_flag("--json", o->json, "Print JSON");
+  cmd->add_option("--device", o->device, "Vulkan device: index or name substring (env HAIRPIPE_DEVICE)");
+  cmd->callback([o] { run(*o); });
+}
+}  // namespace
+
+HP_CLI_COMMAND(setup);
