@@ -8,7 +8,12 @@
 //                                    latter in hairpipe's own vkCmdBeginRendering on its own images);
 //                                    makes strands and maps visible to the draw
 // and inside the application's vkCmdBeginRendering (attachments matching settings.formats):
-//   recordDraw(cmd, view)            head mesh, then hair ribbons (depth test/write, coverage as a dithered sample mask)
+//   recordDraw(cmd, view)            head mesh, then (graphics raster) hair ribbons (depth test/write,
+//                                    coverage as a dithered sample mask)
+// With the compute raster (raster() == RasterMode::Compute), after setRasterTarget(extent, depth) once:
+//   recordDraw(cmd, view)            head mesh only; end the rendering, depth -> ImageUse::ComputeSampled
+//   recordRaster(cmd)                outside rendering: the compute rasterizer into rasterImage()
+//   recordComposite(cmd, extent)     inside a rendering of the same attachments: hair over the colour
 // Stages it touches: COMPUTE_SHADER, COPY/CLEAR (vkCmdUpdateBuffer), VERTEX_SHADER, FRAGMENT_SHADER,
 // early/late fragment tests and colour output; in the application's attachments only colour and depth. It never waits on a queue; the application keeps the
 // HairSystem alive until the GPU has finished every command buffer it recorded into.
@@ -18,10 +23,12 @@
 #include "compute/interpolate_pass.h"
 #include "compute/simulate_pass.h"
 #include "compute/strand_buffers.h"
+#include "compute/strand_raster_pass.h"
 #include "compute/tessellate_pass.h"
 #include "engine/hair/hair_asset.h"
 #include "engine/hair/scene.h"
 #include "engine/render/camera.h"
+#include "engine/render/composite_pass.h"
 #include "engine/render/frame_block.h"
 #include "engine/render/head_pass.h"
 #include "engine/render/marschner_textures.h"
@@ -38,7 +45,12 @@ struct HairSystemSettings {
   render::AttachmentFormats formats;
   render::LookSettings look;
   render::OpacitySettings opacity;
+  RasterMode raster = RasterMode::Auto;
+  compute::RasterSettings rasterSettings;
 };
+
+// Auto -> the path measured faster on this device type (docs/PERFORMANCE.md "Compute rasterizer").
+RasterMode resolveRasterMode(RasterMode mode, VkPhysicalDeviceType type);
 
 struct DrawView {
   CameraMatrices camera;
@@ -57,6 +69,17 @@ class HairSystem {
   void recordPrepareDraw(VkCommandBuffer cmd, const DrawView& view, vk::GpuProfiler* profiler = nullptr);
   void recordDraw(VkCommandBuffer cmd, const DrawView& view, vk::GpuProfiler* profiler = nullptr) const;
 
+  // Compute raster only. Outside the frame loop: (re)builds the rasterizer for this extent (when it
+  // changed) and binds the head's single-sample depth image view.
+  void setRasterTarget(VkExtent2D extent, VkImageView depth);
+  // After recordPrepareDraw and the head's recordDraw; the depth image in ImageUse::ComputeSampled.
+  // Leaves rasterImage() in ImageUse::FragmentSampled.
+  void recordRaster(VkCommandBuffer cmd, vk::GpuProfiler* profiler = nullptr) const;
+  void recordComposite(VkCommandBuffer cmd, VkExtent2D extent, vk::GpuProfiler* profiler = nullptr) const;
+  RasterMode raster() const { return raster_; }
+  const vk::Image& rasterImage() const;
+  compute::RasterStats rasterStats() const;  // blocking readback of the last frame's list statistics
+
   // Outside the frame loop, with the GPU done with this system: new material or LUT mode.
   void setMaterial(const HairMaterial& material, LutMode mode);
 
@@ -68,6 +91,9 @@ class HairSystem {
   const HairSystemSettings& settings() const { return settings_; }
 
  private:
+  compute::ShadingWriter shadingWriter() const;
+  void rebindShading();
+
   const vk::Context& ctx_;
   HairSystemSettings settings_;
   SimulatePass simulate_;
@@ -80,6 +106,9 @@ class HairSystem {
   render::OpacityPass opacity_;
   render::HeadPass head_;
   render::StrandPass strandPass_;
+  RasterMode raster_;
+  std::unique_ptr<compute::StrandRasterPass> rasterPass_;  // compute raster, after setRasterTarget
+  std::unique_ptr<render::CompositePass> composite_;
 
 };
 
