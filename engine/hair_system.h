@@ -45,7 +45,9 @@ struct HairSystemSettings {
   render::AttachmentFormats formats;
   render::LookSettings look;
   render::OpacitySettings opacity;
-  RasterMode raster = RasterMode::Auto;
+  // Graphics by default here: an embedding that only calls recordDraw keeps drawing hair. The compute
+  // path (RenderSpec::raster Auto resolves to it for the CLI) needs setRasterTarget/recordRaster/recordComposite.
+  RasterMode raster = RasterMode::Graphics;
   compute::RasterSettings rasterSettings;
 };
 
