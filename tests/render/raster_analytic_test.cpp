@@ -28,14 +28,9 @@ struct PixelStrand {
   float colorScale = 1.0f;
 };
 
-// Strand buffers (guides only, Q = 4) holding the given strands, uploaded.
-std::unique_ptr<hp::compute::StrandBuffers> makeStrands(const hp::vk::Context& ctx, const hp::CameraMatrices& camera,
-                                                        const std::vector<PixelStrand>& strands) {
-  hp::compute::StrandOptions options;
-  options.verticesPerStrand = kQ;
-  options.guidesOnly = true;
-  auto buffers = std::make_unique<hp::compute::StrandBuffers>(ctx, std::uint32_t(strands.size()), 2,
-                                                               hp::InterpolationTopology{}, options);
+// Writes the strands into buffers made for that many strands (guides only, Q = 4).
+void uploadStrands(const hp::vk::Context& ctx, const hp::compute::StrandBuffers& buffers,
+                   const hp::CameraMatrices& camera, const std::vector<PixelStrand>& strands) {
   std::vector<glm::vec4> positions, tangents;
   std::vector<hp::gpu::StrandAttributes> attributes;
   for (std::size_t s = 0; s < strands.size(); ++s) {
@@ -50,10 +45,20 @@ std::unique_ptr<hp::compute::StrandBuffers> makeStrands(const hp::vk::Context& c
     // The rig's root width is one pixel at unit depth: the scale makes it widthPixels at this depth.
     attributes.push_back({0.5f, p.widthPixels * p.depth, p.colorScale, std::uint32_t(s)});
   }
-  const auto& chunk = buffers->chunks().front();
+  const auto& chunk = buffers.chunks().front();
   hp::vk::upload<glm::vec4>(ctx, chunk.positions, positions, hp::vk::BufferUse::ComputeRead);
   hp::vk::upload<glm::vec4>(ctx, chunk.tangents, tangents, hp::vk::BufferUse::ComputeRead);
   hp::vk::upload<hp::gpu::StrandAttributes>(ctx, chunk.attributes, attributes, hp::vk::BufferUse::ComputeRead);
+}
+
+std::unique_ptr<hp::compute::StrandBuffers> makeStrands(const hp::vk::Context& ctx, const hp::CameraMatrices& camera,
+                                                        const std::vector<PixelStrand>& strands) {
+  hp::compute::StrandOptions options;
+  options.verticesPerStrand = kQ;
+  options.guidesOnly = true;
+  auto buffers = std::make_unique<hp::compute::StrandBuffers>(ctx, std::uint32_t(strands.size()), 2,
+                                                               hp::InterpolationTopology{}, options);
+  uploadStrands(ctx, *buffers, camera, strands);
   return buffers;
 }
 
@@ -113,13 +118,15 @@ TEST(RasterCoverage, BandCoverageIsTheExactPixelAreaAtAnyAngle) {
 TEST_F(VulkanTest, OneStrandCoversEachPixelByItsAreaWithinTwoPercent) {
   const hp::CameraMatrices camera = hp::test::rigCamera(kExtent, kFov);
   const glm::vec2 centre(31.3f, 23.6f);
+  // One rig; each case rewrites its one strand.
+  auto buffers = makeStrands(*ctx, camera, {PixelStrand{{0.0f, 0.0f}, {1.0f, 1.0f}}});
+  hp::test::RasterRig rig(*ctx, *buffers, kExtent, camera, rigLook(camera), darkLight());
   for (float deg : {0.0f, 17.0f, 30.0f, 45.0f, 63.0f, 90.0f, 124.0f})
     for (float width : {0.35f, 1.0f, 2.6f}) {
       const float rad = glm::radians(deg);
       const glm::vec2 dir(std::cos(rad), std::sin(rad));
       PixelStrand strand{centre - 60.0f * dir, centre + 60.0f * dir, 1.0f, width, 1.0f};
-      auto buffers = makeStrands(*ctx, camera, {strand});
-      hp::test::RasterRig rig(*ctx, *buffers, kExtent, camera, rigLook(camera), darkLight());
+      uploadStrands(*ctx, *buffers, camera, {strand});
       rig.run();
       const auto image = rig.image();
       double worst = 0.0;
