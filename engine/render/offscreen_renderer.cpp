@@ -63,20 +63,58 @@ void OffscreenRenderer::attach(HairSystem& hair) const {
 
 AttachmentFormats OffscreenRenderer::formats() const { return {kHdrFormat, kDepthFormat, targets_.samples()}; }
 
-void OffscreenRenderer::record(VkCommandBuffer cmd, const HairSystem& hair, const DrawView& view, float exposure,
+void OffscreenRenderer::record(VkCommandBuffer cmd, HairSystem& hair, const DrawView& view, float exposure,
                                vk::GpuProfiler* profiler) const {
   if (hair.raster() != raster_) throw Error("OffscreenRenderer: the hair system's raster mode differs from the renderer's");
-  if (raster_ == RasterMode::Compute)
-    recordComputeScene(cmd, hair, view, profiler);
-  else
-    recordScene(cmd, hair, view, profiler);
+  if (raster_ != RasterMode::Compute) {
+    record(cmd, [&](VkCommandBuffer c) { hair.recordDraw(c, view, profiler); }, exposure, profiler);
+    return;
+  }
+  recordComputeScene(cmd, hair, view, profiler);
   if (profiler) profiler->begin(cmd, "tonemap");
   recordTonemap(cmd, exposure);
   if (profiler) profiler->end(cmd);
 }
 
-void OffscreenRenderer::recordScene(VkCommandBuffer cmd, const HairSystem& hair, const DrawView& view,
-                                    vk::GpuProfiler* profiler) const {
+// Single sample: head (depth stored), the rasterizer reads the depth, then the composite over the colour.
+void OffscreenRenderer::recordComputeScene(VkCommandBuffer cmd, HairSystem& hair, const DrawView& view,
+                                           vk::GpuProfiler* profiler) const {
+  const VkImage hdr = targets_.hdr.handle(), depthImage = targets_.depth.handle();
+  vk::imageBarrier(cmd, hdr, VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::FragmentSampledDiscard,
+                   vk::ImageUse::ColorAttachment);
+  vk::imageBarrier(cmd, depthImage, VK_IMAGE_ASPECT_DEPTH_BIT, vk::ImageUse::DepthAttachmentDiscard,
+                   vk::ImageUse::DepthAttachment);
+  VkRenderingAttachmentInfo color = colorAttachment(targets_.hdr.view(), kBackground);
+  VkRenderingAttachmentInfo depth = depthAttachment(targets_.depth.view(), VK_ATTACHMENT_LOAD_OP_CLEAR,
+                                                    VK_ATTACHMENT_STORE_OP_STORE);
+  VkRenderingInfo info = renderingInfo(extent(), &color, &depth);
+  vkCmdBeginRendering(cmd, &info);
+  hair.recordDraw(cmd, view, profiler);  // the head only
+  vkCmdEndRendering(cmd);
+  vk::imageBarrier(cmd, depthImage, VK_IMAGE_ASPECT_DEPTH_BIT, vk::ImageUse::DepthAttachment,
+                   vk::ImageUse::ComputeSampled);
+  hair.recordRaster(cmd, view, profiler);
+  vk::imageBarrier(cmd, depthImage, VK_IMAGE_ASPECT_DEPTH_BIT, vk::ImageUse::ComputeSampled,
+                   vk::ImageUse::DepthAttachment);
+  // The head's colour writes before the composite's blend reads them (separate rendering instances).
+  vk::imageBarrier(cmd, hdr, VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::ColorAttachment, vk::ImageUse::ColorAttachment);
+  color.loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;
+  depth = depthAttachment(targets_.depth.view(), VK_ATTACHMENT_LOAD_OP_LOAD, VK_ATTACHMENT_STORE_OP_DONT_CARE);
+  vkCmdBeginRendering(cmd, &info);
+  hair.recordComposite(cmd, extent(), profiler);
+  vkCmdEndRendering(cmd);
+  vk::imageBarrier(cmd, hdr, VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::ColorAttachment, vk::ImageUse::FragmentSampled);
+}
+
+void OffscreenRenderer::record(VkCommandBuffer cmd, const std::function<void(VkCommandBuffer)>& draws,
+                               float exposure, vk::GpuProfiler* profiler) const {
+  recordScene(cmd, draws);
+  if (profiler) profiler->begin(cmd, "tonemap");
+  recordTonemap(cmd, exposure);
+  if (profiler) profiler->end(cmd);
+}
+
+void OffscreenRenderer::recordScene(VkCommandBuffer cmd, const std::function<void(VkCommandBuffer)>& draws) const {
   const bool msaa = bool(targets_.resolved);
   // Earlier frames recorded into the same images: their writes (and, without MSAA, the tonemap's reads
   // of the HDR image) finish before the transitions discard the contents.
@@ -100,40 +138,10 @@ void OffscreenRenderer::recordScene(VkCommandBuffer cmd, const HairSystem& hair,
       depthAttachment(targets_.depth.view(), VK_ATTACHMENT_LOAD_OP_CLEAR, VK_ATTACHMENT_STORE_OP_DONT_CARE);
   VkRenderingInfo info = renderingInfo(extent(), &color, &depth);
   vkCmdBeginRendering(cmd, &info);
-  hair.recordDraw(cmd, view, profiler);
+  draws(cmd);
   vkCmdEndRendering(cmd);
   vk::imageBarrier(cmd, hdrInput().handle(), VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::ColorAttachment,
                    vk::ImageUse::FragmentSampled);
-}
-
-// Single sample: head (depth stored), the rasterizer reads the depth, then the composite over the colour.
-void OffscreenRenderer::recordComputeScene(VkCommandBuffer cmd, const HairSystem& hair, const DrawView& view,
-                                           vk::GpuProfiler* profiler) const {
-  const VkImage hdr = targets_.hdr.handle(), depthImage = targets_.depth.handle();
-  vk::imageBarrier(cmd, hdr, VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::FragmentSampledDiscard,
-                   vk::ImageUse::ColorAttachment);
-  vk::imageBarrier(cmd, depthImage, VK_IMAGE_ASPECT_DEPTH_BIT, vk::ImageUse::DepthAttachmentDiscard,
-                   vk::ImageUse::DepthAttachment);
-  VkRenderingAttachmentInfo color = colorAttachment(targets_.hdr.view(), kBackground);
-  VkRenderingAttachmentInfo depth = depthAttachment(targets_.depth.view(), VK_ATTACHMENT_LOAD_OP_CLEAR,
-                                                    VK_ATTACHMENT_STORE_OP_STORE);
-  VkRenderingInfo info = renderingInfo(extent(), &color, &depth);
-  vkCmdBeginRendering(cmd, &info);
-  hair.recordDraw(cmd, view, profiler);  // the head only
-  vkCmdEndRendering(cmd);
-  vk::imageBarrier(cmd, depthImage, VK_IMAGE_ASPECT_DEPTH_BIT, vk::ImageUse::DepthAttachment,
-                   vk::ImageUse::ComputeSampled);
-  hair.recordRaster(cmd, profiler);
-  vk::imageBarrier(cmd, depthImage, VK_IMAGE_ASPECT_DEPTH_BIT, vk::ImageUse::ComputeSampled,
-                   vk::ImageUse::DepthAttachment);
-  // The head's colour writes before the composite's blend reads them (separate rendering instances).
-  vk::imageBarrier(cmd, hdr, VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::ColorAttachment, vk::ImageUse::ColorAttachment);
-  color.loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;
-  depth = depthAttachment(targets_.depth.view(), VK_ATTACHMENT_LOAD_OP_LOAD, VK_ATTACHMENT_STORE_OP_DONT_CARE);
-  vkCmdBeginRendering(cmd, &info);
-  hair.recordComposite(cmd, extent(), profiler);
-  vkCmdEndRendering(cmd);
-  vk::imageBarrier(cmd, hdr, VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::ColorAttachment, vk::ImageUse::FragmentSampled);
 }
 
 void OffscreenRenderer::recordTonemap(VkCommandBuffer cmd, float exposure) const {

@@ -4,8 +4,9 @@
 // buffer after HairSystem::recordPrepareDraw: clear, head + hair with MSAA into linear HDR, resolve,
 // tonemap to sRGB. readDisplay() then returns the image (blocking; outside the frame loop).
 // With RasterMode::Compute the targets are single-sample (hair coverage is analytic; the head's edges
-// are not anti-aliased) and the frame is: head, the compute rasterizer reading the head's depth, the
-// composite of the hair image over the colour, tonemap. attach(hair) once binds the rasterizer's target.
+// are not anti-aliased) and a HairSystem frame is: head, the compute rasterizer reading the head's depth,
+// the composite of the hair image over the colour, tonemap. attach(hair) once binds the rasterizer's target.
+#include <functional>
 #include <vector>
 
 #include "engine/hair_system.h"
@@ -23,14 +24,17 @@ class OffscreenRenderer {
   AttachmentFormats formats() const;
   VkExtent2D extent() const { return targets_.extent(); }
 
-  void record(VkCommandBuffer cmd, const HairSystem& hair, const DrawView& view, float exposure,
+  void record(VkCommandBuffer cmd, HairSystem& hair, const DrawView& view, float exposure,
+              vk::GpuProfiler* profiler = nullptr) const;
+  // The same frame with any draws (a Renderer's instances) inside the rendering.
+  void record(VkCommandBuffer cmd, const std::function<void(VkCommandBuffer)>& draws, float exposure,
               vk::GpuProfiler* profiler = nullptr) const;
   // RGBA8, sRGB-encoded, rows top to bottom. Waits for the queue through a one-shot readback.
   std::vector<std::uint8_t> readDisplay() const;
 
  private:
-  void recordScene(VkCommandBuffer cmd, const HairSystem& hair, const DrawView& view, vk::GpuProfiler* profiler) const;
-  void recordComputeScene(VkCommandBuffer cmd, const HairSystem& hair, const DrawView& view,
+  void recordScene(VkCommandBuffer cmd, const std::function<void(VkCommandBuffer)>& draws) const;
+  void recordComputeScene(VkCommandBuffer cmd, HairSystem& hair, const DrawView& view,
                           vk::GpuProfiler* profiler) const;
   void recordTonemap(VkCommandBuffer cmd, float exposure) const;
   const vk::Image& hdrInput() const { return targets_.resolved ? targets_.resolved : targets_.hdr; }

@@ -49,8 +49,7 @@ RasterRig::RasterRig(const vk::Context& c, const compute::StrandBuffers& strands
       marschner(c, HairMaterial{}, LutMode::Float),
       frameBlock(c, sizeof(gpu::RenderFrame), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                  vk::MemoryKind::DeviceLocal, "rig frame"),
-      bounds(c, strands),
-      opacity(c, strands, HeadMesh{}, bounds.lightSpace(), shadowsOff()),
+      shadows(c, shadowsOff()),
       depth(c, {e.width, e.height, 1, VK_FORMAT_D32_SFLOAT,
                 VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
                 VK_SAMPLE_COUNT_1_BIT, "rig head depth"}) {
@@ -59,9 +58,9 @@ RasterRig::RasterRig(const vk::Context& c, const compute::StrandBuffers& strands
     set.writeUniformBuffer(gpu::RENDER_BINDING_FRAME, frameBlock.handle());
     marschner.writeDescriptors(set, gpu::RENDER_BINDING_MARSCHNER, gpu::RENDER_BINDING_LUT_M,
                                gpu::RENDER_BINDING_LUT_N0, gpu::RENDER_BINDING_LUT_N1);
-    const render::ShadowInputs shadows = opacity.shadowInputs();
-    set.writeSampledImage(gpu::RENDER_BINDING_OPACITY, shadows.opacityView, shadows.sampler);
-    set.writeStorageBuffer(gpu::RENDER_BINDING_LIGHT, shadows.lightSpace);
+    const render::ShadowInputs inputs = shadows.inputs();
+    set.writeSampledImage(gpu::RENDER_BINDING_OPACITY, inputs.opacityView, inputs.sampler);
+    set.writeStorageBuffer(gpu::RENDER_BINDING_LIGHT, inputs.lightSpace);
   };
   pass = std::make_unique<compute::StrandRasterPass>(c, strands, shading, e, settings);
   pass->setDepth(depth.view());
@@ -71,7 +70,7 @@ void RasterRig::run(float headNdcDepth, bool binOnly) {
   vk::submitAndWait(ctx, [&](VkCommandBuffer cmd) {
     // Uploads were transfers of earlier submissions; the rasterizer reads them in compute.
     vk::memoryBarrier(cmd, vk::BufferUse::TransferDst, vk::BufferUse::ComputeRead);
-    vk::imageBarrier(cmd, opacity.image().handle(), VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::FragmentSampled,
+    vk::imageBarrier(cmd, shadows.image().handle(), VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::FragmentSampled,
                      vk::ImageUse::ComputeSampled, gpu::OPACITY_TARGETS);
     vk::imageBarrier(cmd, depth.handle(), VK_IMAGE_ASPECT_DEPTH_BIT, vk::ImageUse::Undefined,
                      vk::ImageUse::TransferDst);
@@ -84,7 +83,7 @@ void RasterRig::run(float headNdcDepth, bool binOnly) {
       pass->recordBinning(cmd);
     else
       pass->record(cmd);
-    vk::imageBarrier(cmd, opacity.image().handle(), VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::ComputeSampled,
+    vk::imageBarrier(cmd, shadows.image().handle(), VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::ComputeSampled,
                      vk::ImageUse::FragmentSampled, gpu::OPACITY_TARGETS);
   }, "raster rig");
 }

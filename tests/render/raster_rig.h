@@ -5,11 +5,10 @@
 #include <memory>
 #include <vector>
 
-#include "compute/bounds_pass.h"
 #include "compute/strand_raster_pass.h"
 #include "engine/render/frame_block.h"
 #include "engine/render/marschner_textures.h"
-#include "engine/render/opacity_pass.h"
+#include "engine/render/shadow_maps.h"
 
 namespace hp::test {
 struct RasterRig {
@@ -26,8 +25,7 @@ struct RasterRig {
   gpu::RenderFrame frame;
   render::MarschnerTextures marschner;
   vk::Buffer frameBlock;
-  compute::BoundsPass bounds;
-  render::OpacityPass opacity;
+  render::ShadowMaps shadows;  // off: bound for the layout, never looked up
   vk::Image depth;
   std::unique_ptr<compute::StrandRasterPass> pass;
 };

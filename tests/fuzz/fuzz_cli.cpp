@@ -1,0 +1,60 @@
+// The `hairpipe` command line: every registered subcommand's options, as main() builds them, fed
+// fuzzed argument lists (NUL-separated). Callbacks are parked so nothing runs or writes; what is
+// fuzzed is option parsing and the option validators. A parse may only end in CLI11's usage errors
+// or hp::Error; anything else escapes and libFuzzer records it.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "engine/error.h"
+#include "samples/cli/command.h"
+
+namespace {
+std::vector<std::string> splitArgs(const std::uint8_t* data, std::size_t size) {
+  std::vector<std::string> args{"hairpipe"};
+  std::string current;
+  for (std::size_t i = 0; i < size && args.size() < 48; ++i) {
+    if (data[i] == 0) {
+      args.push_back(current);
+      current.clear();
+    } else if (current.size() < 256) {
+      current += static_cast<char>(data[i]);
+    }
+  }
+  if (!current.empty()) args.push_back(current);
+  return args;
+}
+
+// A subcommand's callback owns (through a shared_ptr) the options its CLI::Options write into, so it
+// must outlive the parse: it is moved out into `parked` rather than destroyed. The final callback is a
+// protected member of CLI::App; naming it through a derived class gives a pointer to that member.
+struct CallbackAccess : CLI::App {
+  static constexpr std::function<void()> CLI::App::*kFinal = &CallbackAccess::final_callback_;
+};
+
+void parkCallbacks(CLI::App& app, std::vector<std::function<void()>>& parked) {
+  for (CLI::App* sub : app.get_subcommands([](CLI::App*) { return true; })) {
+    parked.push_back(std::move(sub->*CallbackAccess::kFinal));
+    sub->*CallbackAccess::kFinal = nullptr;
+    parkCallbacks(*sub, parked);
+  }
+}
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  std::vector<std::function<void()>> parked;  // declared first: outlives the app that points into them
+  CLI::App app{"hairpipe"};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", "hairpipe");
+  for (const auto& setup : hp::cli::commandRegistry()) setup(app);
+  parkCallbacks(app, parked);
+  std::vector<std::string> args = splitArgs(data, size);
+  std::vector<char*> argv;
+  for (auto& a : args) argv.push_back(a.data());
+  try {
+    app.parse(static_cast<int>(argv.size()), argv.data());
+  } catch (const CLI::Error&) {
+  } catch (const hp::Error&) {
+  }
+  return 0;
+}
