@@ -5,13 +5,19 @@
 //   recordPrepareDraw(cmd, view)     outside rendering: starts a new frame; bounds and the opacity shadow
 //                                    maps (in hairpipe's own vkCmdBeginRendering on its own images)
 //   recordDraw(cmd, view)            inside the application's vkCmdBeginRendering (attachments matching
-//                                    settings.formats): head mesh, then hair ribbons
+//                                    settings.formats): head mesh, then (graphics raster) hair ribbons
+// With the compute raster (settings.raster == Compute), after setRasterTarget(extent, depth) once:
+//   recordDraw(cmd, view)            head mesh only; end the rendering, depth -> ImageUse::ComputeSampled
+//   recordRaster(cmd, view)          outside rendering: the compute rasterizer into rasterImage()
+//   recordComposite(cmd, extent)     inside a rendering of the same attachments: hair over the colour
 // Frames in flight: at most settings.framesInFlight frames (counted by recordPrepareDraw) may be pending
 // on the GPU when a new one is prepared. Errors as Renderer's: construction, setMaterial and an invalid
 // view or motion throw hp::Error.
 #include <memory>
 
+#include "compute/strand_raster_pass.h"
 #include "engine/hair_instance.h"
+#include "engine/render/composite_pass.h"
 #include "engine/renderer.h"
 
 namespace hp {
@@ -24,7 +30,14 @@ struct HairSystemSettings {
   render::LookSettings look;
   render::OpacitySettings opacity;
   std::uint32_t framesInFlight = 2;
+  // Graphics by default here: an embedding that only calls recordDraw keeps drawing hair. The compute
+  // path (RenderSpec::raster auto resolves to it for the CLI) needs setRasterTarget/recordRaster/recordComposite.
+  RasterMode raster = RasterMode::Graphics;
+  compute::RasterSettings rasterSettings;
 };
+
+// Auto -> the path measured faster on this device type (docs/PERFORMANCE.md "Compute rasterizer").
+RasterMode resolveRasterMode(RasterMode mode, VkPhysicalDeviceType type);
 
 struct DrawView {
   CameraMatrices camera;
@@ -43,8 +56,19 @@ class HairSystem {
   void recordPrepareDraw(VkCommandBuffer cmd, const DrawView& view, vk::GpuProfiler* profiler = nullptr);
   void recordDraw(VkCommandBuffer cmd, const DrawView& view, vk::GpuProfiler* profiler = nullptr);
 
+  // Compute raster only. Outside the frame loop: (re)builds the rasterizer for this extent (when it
+  // changed) and binds the head's single-sample depth image view.
+  void setRasterTarget(VkExtent2D extent, VkImageView depth);
+  // After the head's recordDraw; the depth image in ImageUse::ComputeSampled. Leaves rasterImage() in
+  // ImageUse::FragmentSampled.
+  void recordRaster(VkCommandBuffer cmd, const DrawView& view, vk::GpuProfiler* profiler = nullptr);
+  void recordComposite(VkCommandBuffer cmd, VkExtent2D extent, vk::GpuProfiler* profiler = nullptr) const;
+  RasterMode raster() const { return raster_; }
+  const vk::Image& rasterImage() const;
+  compute::RasterStats rasterStats() const;  // blocking readback of the last frame's list statistics
+
   // Between frames, with earlier frames possibly in flight: the old textures are retired, not idled on.
-  void setMaterial(const HairMaterial& material, LutMode mode) { instance_->setMaterial(material, mode); }
+  void setMaterial(const HairMaterial& material, LutMode mode);
 
   SimulatePass& simulation() { return instance_->simulationForTools(); }
   const compute::StrandBuffers& strands() const { return instance_->strands(); }
@@ -54,8 +78,17 @@ class HairSystem {
   HairInstance& instance() { return *instance_; }
 
  private:
+  compute::ShadingWriter shadingWriter() const;
+  void rebuildRaster(VkExtent2D extent);
+
   Renderer renderer_;
   std::unique_ptr<HairInstance> instance_;
   std::uint64_t frame_ = 0;
+  HairSystemSettings settings_;
+  RasterMode raster_;
+  vk::Buffer rasterFrame_;  // the compute raster's gpu::RenderFrame, written with vkCmdUpdateBuffer per frame
+  std::shared_ptr<compute::StrandRasterPass> rasterPass_;  // retired through the Renderer when replaced
+  std::unique_ptr<render::CompositePass> composite_;
+  VkImageView rasterDepth_ = VK_NULL_HANDLE;
 };
 }  // namespace hp

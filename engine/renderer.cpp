@@ -106,6 +106,7 @@ void Renderer::recordDraw(VkCommandBuffer cmd, std::uint64_t frame, const View& 
     if (profiler) profiler->begin(cmd, "head");
     i->head_->draw(cmd, view.extent, i->headToWorld(), offset);
     if (profiler) profiler->end(cmd);
+    if (!view.ribbons) continue;
     if (profiler) profiler->begin(cmd, "shade");
     i->strandPass_->draw(cmd, view.extent, view.lines, offset);
     if (profiler) profiler->end(cmd);

@@ -45,6 +45,7 @@ struct View {
   VkExtent2D extent{1, 1};
   bool lines = false;       // strands as 1-pixel lines instead of ribbons (debugging)
   std::uint32_t index = 0;  // which of the frame's views
+  bool ribbons = true;      // false: heads only (the hair comes from the compute rasterizer)
   void validate(std::uint32_t maxViews) const;
 };
 }  // namespace hp

@@ -2,6 +2,7 @@
 // Per vertex: the light clip (x, y, w) and the 16 interpolation weights w_i = max(0, 1 - |s - i|) of the slice
 // coordinate s (shared/opacity.h), moved `bias` slices toward the light so a strand does not shadow
 // itself. Per fragment: alpha = sum_i w_i alpha(z_i) as 4 dot products, T = exp(-k alpha).
+// textureLod (the maps have one mip) so compute shaders can look up too.
 // Per fragment the uv is clip.xy / clip.w (exact for a spot's perspective map too; ortho: w = 1).
 // Outside the map's x/y box, or behind a spot (w <= 0), there is no hair: alpha = 0.
 #ifndef HP_OPACITY_LOOKUP_GLSL
@@ -34,7 +35,7 @@ float opacityAlpha(sampler2DArray maps, vec3 uvw, vec4 w0, vec4 w1, vec4 w2, vec
   if (!(uvw.z > 0.0)) return 0.0;
   vec2 uv = uvw.xy / uvw.z;
   if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) return 0.0;
-  return dot(w0, texture(maps, vec3(uv, 0.0))) + dot(w1, texture(maps, vec3(uv, 1.0))) +
-         dot(w2, texture(maps, vec3(uv, 2.0))) + dot(w3, texture(maps, vec3(uv, 3.0)));
+  return dot(w0, textureLod(maps, vec3(uv, 0.0), 0.0)) + dot(w1, textureLod(maps, vec3(uv, 1.0), 0.0)) +
+         dot(w2, textureLod(maps, vec3(uv, 2.0), 0.0)) + dot(w3, textureLod(maps, vec3(uv, 3.0), 0.0));
 }
 #endif

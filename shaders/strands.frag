@@ -1,14 +1,12 @@
 #version 460
-// Hair shading (REFERENCES.md §3-4): radiance = S(L, V, T) cos(theta_i) x light x transmittance, plus
-// (L and the light's cone/distance scale from light.glsl: per fragment for a spot)
-// a small ambient term, times the strand's lightness variation. The ribbon's pixel coverage becomes a
+// Hair shading per fragment: hairRadiance (hair_shading.glsl, the same entry point as the compute
+// rasterizer's), L and the light's cone/distance scale per fragment for a spot. The ribbon's pixel coverage becomes a
 // sample mask with MSAA (dithered per strand and pixel, see coverageMask), alpha without. Transmittance T = exp(-k alpha) from the opacity maps with the
 // per-vertex slice weights (opacity_lookup.glsl); the ambient term is not shadowed.
 #include "shared/render.h"
 #include "shared/marschner.h"
 #include "marschner.glsl"
 #include "opacity_lookup.glsl"
-#include "light.glsl"
 #include "shared/strands.h"
 
 layout(std140, binding = RENDER_BINDING_FRAME) uniform Frame { RenderFrame frame; };
@@ -27,6 +25,7 @@ layout(location = 5) in vec4 inSliceWeights[4];
 layout(location = 9) flat in uint inStrand;
 layout(push_constant) uniform Push { StrandDrawPush push; };
 layout(location = 0) out vec4 outColor;
+#include "hair_shading.glsl"
 
 // Coverage c of n samples as a mask of round(c n + dither) bits, rotated by a hash of the strand and
 // the pixel. Plain alpha-to-coverage gives every strand with the same alpha the same mask, so stacked
@@ -42,26 +41,17 @@ uint coverageMask(float coverage, uint samples) {
 }
 
 void main() {
-  vec3 T = normalize(inTangent);
-  LightSample light = sampleLight(frame.lightDirection, frame.lightPosition, frame.lightSpot, inWorld);
-  vec3 L = light.L;
-  vec3 V = normalize(frame.cameraPosition.xyz - inWorld);
-  vec3 S = marschnerEvaluate(marschner.control.x, L, V, T, lutM, lutN0, lutN1, marschner);
-  float sinThetaI = clamp(dot(L, T), -1.0, 1.0);
-  float cosThetaI = sqrt(1.0 - sinThetaI * sinThetaI);
   float alpha = opacityAlpha(opacityMaps, inLightUvw, inSliceWeights[0], inSliceWeights[1], inSliceWeights[2],
                              inSliceWeights[3]);
-  float transmittance = exp(-frame.strand.z * alpha);
-  vec3 direct = S * cosThetaI * frame.lightRadiance.rgb * (light.scale * transmittance);
-  vec3 ambient = frame.hairColor.rgb * frame.hairColor.w;
+  vec3 radiance = hairRadiance(inWorld, inTangent, inColorScale, alpha);
   if (push.samples > 1u) {
     uint mask = coverageMask(inCoverage, push.samples);
     if (mask == 0u) discard;
     gl_SampleMask[0] = int(mask);
-    outColor = vec4((direct + ambient) * inColorScale, 1.0);
+    outColor = vec4(radiance, 1.0);
   } else {
     // A shader that writes the sample mask on one path must write it on all: left unwritten it is undefined.
     gl_SampleMask[0] = -1;
-    outColor = vec4((direct + ambient) * inColorScale, inCoverage);
+    outColor = vec4(radiance, inCoverage);
   }
 }

@@ -1,5 +1,6 @@
 #include "tools/offscreen_renderer.h"
 
+#include "engine/error.h"
 #include "engine/vk/barriers.h"
 #include "engine/vk/transfer.h"
 
@@ -17,6 +18,22 @@ VkRenderingAttachmentInfo colorAttachment(VkImageView view, VkClearColorValue cl
   return a;
 }
 
+// The compute path draws one sample; a bad --msaa is still refused there.
+std::uint32_t targetSamples(std::uint32_t msaa, RasterMode raster) {
+  (void)sampleCountFlag(msaa);
+  return raster == RasterMode::Compute ? 1 : msaa;
+}
+
+VkRenderingAttachmentInfo depthAttachment(VkImageView view, VkAttachmentLoadOp load, VkAttachmentStoreOp store) {
+  VkRenderingAttachmentInfo a{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+  a.imageView = view;
+  a.imageLayout = vk::imageLayout(vk::ImageUse::DepthAttachment);
+  a.loadOp = load;
+  a.storeOp = store;
+  a.clearValue.depthStencil = {1.0f, 0};
+  return a;
+}
+
 VkRenderingInfo renderingInfo(VkExtent2D extent, const VkRenderingAttachmentInfo* color,
                               const VkRenderingAttachmentInfo* depth) {
   VkRenderingInfo info{VK_STRUCTURE_TYPE_RENDERING_INFO};
@@ -30,16 +47,63 @@ VkRenderingInfo renderingInfo(VkExtent2D extent, const VkRenderingAttachmentInfo
 }  // namespace
 
 OffscreenRenderer::OffscreenRenderer(const vk::Context& ctx, std::uint32_t width, std::uint32_t height,
-                                     std::uint32_t msaa)
-    : ctx_(ctx), targets_(ctx, width, height, msaa), tonemap_(ctx, kDisplayFormat) {
+                                     std::uint32_t msaa, RasterMode raster)
+    : ctx_(ctx),
+      raster_(raster),
+      targets_(ctx, width, height, targetSamples(msaa, raster), raster == RasterMode::Compute),
+      tonemap_(ctx, kDisplayFormat) {
+  if (raster == RasterMode::Auto) throw Error("OffscreenRenderer: resolve RasterMode::Auto first (resolveRasterMode)");
   tonemap_.setInput(hdrInput().view());
+}
+
+void OffscreenRenderer::attach(HairSystem& hair) const {
+  if (hair.raster() != raster_) throw Error("OffscreenRenderer: the hair system's raster mode differs from the renderer's");
+  if (raster_ == RasterMode::Compute) hair.setRasterTarget(extent(), targets_.depth.view());
 }
 
 AttachmentFormats OffscreenRenderer::formats() const { return {kHdrFormat, kDepthFormat, targets_.samples()}; }
 
 void OffscreenRenderer::record(VkCommandBuffer cmd, HairSystem& hair, const DrawView& view, float exposure,
                                vk::GpuProfiler* profiler) const {
-  record(cmd, [&](VkCommandBuffer c) { hair.recordDraw(c, view, profiler); }, exposure, profiler);
+  if (hair.raster() != raster_) throw Error("OffscreenRenderer: the hair system's raster mode differs from the renderer's");
+  if (raster_ != RasterMode::Compute) {
+    record(cmd, [&](VkCommandBuffer c) { hair.recordDraw(c, view, profiler); }, exposure, profiler);
+    return;
+  }
+  recordComputeScene(cmd, hair, view, profiler);
+  if (profiler) profiler->begin(cmd, "tonemap");
+  recordTonemap(cmd, exposure);
+  if (profiler) profiler->end(cmd);
+}
+
+// Single sample: head (depth stored), the rasterizer reads the depth, then the composite over the colour.
+void OffscreenRenderer::recordComputeScene(VkCommandBuffer cmd, HairSystem& hair, const DrawView& view,
+                                           vk::GpuProfiler* profiler) const {
+  const VkImage hdr = targets_.hdr.handle(), depthImage = targets_.depth.handle();
+  vk::imageBarrier(cmd, hdr, VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::FragmentSampledDiscard,
+                   vk::ImageUse::ColorAttachment);
+  vk::imageBarrier(cmd, depthImage, VK_IMAGE_ASPECT_DEPTH_BIT, vk::ImageUse::DepthAttachmentDiscard,
+                   vk::ImageUse::DepthAttachment);
+  VkRenderingAttachmentInfo color = colorAttachment(targets_.hdr.view(), kBackground);
+  VkRenderingAttachmentInfo depth = depthAttachment(targets_.depth.view(), VK_ATTACHMENT_LOAD_OP_CLEAR,
+                                                    VK_ATTACHMENT_STORE_OP_STORE);
+  VkRenderingInfo info = renderingInfo(extent(), &color, &depth);
+  vkCmdBeginRendering(cmd, &info);
+  hair.recordDraw(cmd, view, profiler);  // the head only
+  vkCmdEndRendering(cmd);
+  vk::imageBarrier(cmd, depthImage, VK_IMAGE_ASPECT_DEPTH_BIT, vk::ImageUse::DepthAttachment,
+                   vk::ImageUse::ComputeSampled);
+  hair.recordRaster(cmd, view, profiler);
+  vk::imageBarrier(cmd, depthImage, VK_IMAGE_ASPECT_DEPTH_BIT, vk::ImageUse::ComputeSampled,
+                   vk::ImageUse::DepthAttachment);
+  // The head's colour writes before the composite's blend reads them (separate rendering instances).
+  vk::imageBarrier(cmd, hdr, VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::ColorAttachment, vk::ImageUse::ColorAttachment);
+  color.loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;
+  depth = depthAttachment(targets_.depth.view(), VK_ATTACHMENT_LOAD_OP_LOAD, VK_ATTACHMENT_STORE_OP_DONT_CARE);
+  vkCmdBeginRendering(cmd, &info);
+  hair.recordComposite(cmd, extent(), profiler);
+  vkCmdEndRendering(cmd);
+  vk::imageBarrier(cmd, hdr, VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::ColorAttachment, vk::ImageUse::FragmentSampled);
 }
 
 void OffscreenRenderer::record(VkCommandBuffer cmd, const std::function<void(VkCommandBuffer)>& draws,
@@ -70,12 +134,8 @@ void OffscreenRenderer::recordScene(VkCommandBuffer cmd, const std::function<voi
     color.resolveImageLayout = vk::imageLayout(vk::ImageUse::ColorAttachment);
     color.storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;  // only the resolve is kept
   }
-  VkRenderingAttachmentInfo depth{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
-  depth.imageView = targets_.depth.view();
-  depth.imageLayout = vk::imageLayout(vk::ImageUse::DepthAttachment);
-  depth.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
-  depth.storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
-  depth.clearValue.depthStencil = {1.0f, 0};
+  VkRenderingAttachmentInfo depth =
+      depthAttachment(targets_.depth.view(), VK_ATTACHMENT_LOAD_OP_CLEAR, VK_ATTACHMENT_STORE_OP_DONT_CARE);
   VkRenderingInfo info = renderingInfo(extent(), &color, &depth);
   vkCmdBeginRendering(cmd, &info);
   draws(cmd);

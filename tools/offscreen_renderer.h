@@ -3,6 +3,9 @@
 // offscreen targets (RenderTargets) and the tonemap pass, and records, into the caller's command
 // buffer after HairSystem::recordPrepareDraw: clear, head + hair with MSAA into linear HDR, resolve,
 // tonemap to sRGB. readDisplay() then returns the image (blocking; outside the frame loop).
+// With RasterMode::Compute the targets are single-sample (hair coverage is analytic; the head's edges
+// are not anti-aliased) and a HairSystem frame is: head, the compute rasterizer reading the head's depth,
+// the composite of the hair image over the colour, tonemap. attach(hair) once binds the rasterizer's target.
 #include <functional>
 #include <vector>
 
@@ -13,7 +16,11 @@
 namespace hp::render {
 class OffscreenRenderer {
  public:
-  OffscreenRenderer(const vk::Context& ctx, std::uint32_t width, std::uint32_t height, std::uint32_t msaa);
+  OffscreenRenderer(const vk::Context& ctx, std::uint32_t width, std::uint32_t height, std::uint32_t msaa,
+                    RasterMode raster = RasterMode::Graphics);
+  RasterMode raster() const { return raster_; }
+  // Compute raster: binds this renderer's extent and depth to the hair's rasterizer (outside the frame loop).
+  void attach(HairSystem& hair) const;
   AttachmentFormats formats() const;
   VkExtent2D extent() const { return targets_.extent(); }
 
@@ -27,10 +34,13 @@ class OffscreenRenderer {
 
  private:
   void recordScene(VkCommandBuffer cmd, const std::function<void(VkCommandBuffer)>& draws) const;
+  void recordComputeScene(VkCommandBuffer cmd, HairSystem& hair, const DrawView& view,
+                          vk::GpuProfiler* profiler) const;
   void recordTonemap(VkCommandBuffer cmd, float exposure) const;
   const vk::Image& hdrInput() const { return targets_.resolved ? targets_.resolved : targets_.hdr; }
 
   const vk::Context& ctx_;
+  RasterMode raster_;
   RenderTargets targets_;
   TonemapPass tonemap_;
 };

@@ -19,6 +19,8 @@ HairSystemSettings systemSettings(const RenderRequest& r, const render::Attachme
   s.formats = formats;
   s.look = r.look;
   s.opacity = r.opacity;
+  s.raster = r.scene.render.raster;
+  s.rasterSettings = r.rasterSettings;
   return s;
 }
 
@@ -32,8 +34,11 @@ void validate(const RenderRequest& r) {
 RenderResult renderStill(const vk::Context& ctx, const HairAsset& asset, const RenderRequest& request) {
   validate(request);
   const RenderSpec& size = request.scene.render;
-  render::OffscreenRenderer renderer(ctx, size.width, size.height, size.msaa);
-  HairSystem hair(ctx, asset, systemSettings(request, renderer.formats()));
+  RenderRequest resolved = request;
+  resolved.scene.render.raster = resolveRasterMode(request.scene.render.raster, ctx.properties().deviceType);
+  render::OffscreenRenderer renderer(ctx, size.width, size.height, size.msaa, resolved.scene.render.raster);
+  HairSystem hair(ctx, asset, systemSettings(resolved, renderer.formats()));
+  renderer.attach(hair);
   SimulationDriver driver(ctx, hair.simulation(), request.animation, assetHeadRadius(asset));
   if (request.settleFrames > 0) driver.runFrames(request.settleFrames);
 
@@ -60,6 +65,8 @@ RenderResult renderStill(const vk::Context& ctx, const HairAsset& asset, const R
   result.guides = hair.simulation().guideCount();
   result.strands = hair.strands().layout().strandCount;
   result.verticesPerStrand = hair.strands().layout().verticesPerStrand;
+  result.raster = hair.raster();
+  if (hair.raster() == RasterMode::Compute) result.rasterStats = hair.rasterStats();
   if (request.captureStrands)
     result.strandDump = compute::renderStrandsToHairData(ctx, hair.strands(), vk::BufferUse::VertexRead,
                                                          "hairpipe render: render strands of the drawn frame");

@@ -23,6 +23,7 @@ struct RenderRequest {
   float exposure = 1.0f;
   render::LookSettings look;
   render::OpacitySettings opacity;
+  compute::RasterSettings rasterSettings;  // the compute raster's tile budget (scene.render.raster picks the path)
   bool captureOpacity = false;      // read the opacity maps and light framing back (RenderResult::opacity)
   bool captureStrands = false;      // read the rendered frame's render strands back (RenderResult::strands)
 };
@@ -35,6 +36,8 @@ struct RenderResult {
   std::uint32_t guides = 0;
   std::uint32_t strands = 0;
   std::uint32_t verticesPerStrand = 0;
+  RasterMode raster = RasterMode::Graphics;          // the path that drew the hair (Auto resolved)
+  std::optional<compute::RasterStats> rasterStats;   // compute raster: tile-list entries and overflow
   std::optional<render::OpacityCapture> opacity;  // with captureOpacity and shadows on
   std::optional<HairFileData> strandDump;         // with captureStrands: Q points per render strand
 };

@@ -28,7 +28,8 @@ void checkFits(const vk::Context& ctx, std::uint32_t width, std::uint32_t height
 }
 }  // namespace
 
-RenderTargets::RenderTargets(const vk::Context& ctx, std::uint32_t width, std::uint32_t height, std::uint32_t msaa) {
+RenderTargets::RenderTargets(const vk::Context& ctx, std::uint32_t width, std::uint32_t height, std::uint32_t msaa,
+                             bool sampledDepth) {
   const VkSampleCountFlagBits samples = sampleCountFlag(msaa);
   checkFits(ctx, width, height, msaa);
   const auto& limits = ctx.properties().limits;
@@ -38,7 +39,9 @@ RenderTargets::RenderTargets(const vk::Context& ctx, std::uint32_t width, std::u
   hdr = vk::Image(ctx, {width, height, 1, kHdrFormat,
                         VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | (samples == VK_SAMPLE_COUNT_1_BIT ? resolveUsage : 0),
                         samples, "hdr colour"});
-  depth = vk::Image(ctx, {width, height, 1, kDepthFormat, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT, samples, "depth"});
+  const VkImageUsageFlags depthUsage =
+      VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | (sampledDepth ? VK_IMAGE_USAGE_SAMPLED_BIT : 0);
+  depth = vk::Image(ctx, {width, height, 1, kDepthFormat, depthUsage, samples, "depth"});
   if (samples != VK_SAMPLE_COUNT_1_BIT)
     resolved = vk::Image(ctx, {width, height, 1, kHdrFormat, resolveUsage, VK_SAMPLE_COUNT_1_BIT, "hdr resolved"});
   display = vk::Image(ctx, {width, height, 1, kDisplayFormat,

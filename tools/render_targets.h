@@ -10,8 +10,10 @@ inline constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
 inline constexpr VkFormat kDisplayFormat = VK_FORMAT_R8G8B8A8_SRGB;
 
 struct RenderTargets {
-  // Throws hp::Error for a size past the device's limits or an unsupported sample count.
-  RenderTargets(const vk::Context& ctx, std::uint32_t width, std::uint32_t height, std::uint32_t msaa);
+  // Throws hp::Error for a size past the device's limits or an unsupported sample count. With
+  // sampledDepth the depth image can also be sampled (the compute rasterizer reads the head's depth).
+  RenderTargets(const vk::Context& ctx, std::uint32_t width, std::uint32_t height, std::uint32_t msaa,
+                bool sampledDepth = false);
 
   VkExtent2D extent() const { return display.extent(); }
   VkSampleCountFlagBits samples() const { return hdr.desc().samples; }

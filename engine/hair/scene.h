@@ -54,10 +54,18 @@ struct CameraSpec {
   glm::vec3 target{0.0f, -0.08f, 0.0f};
 };
 
+// How the hair is drawn for the camera: the compute rasterizer (analytic coverage, front-to-back
+// transparency; compute/strand_raster_pass.h) or graphics ribbons (MSAA sample masks). Auto resolves
+// per device type to the path measured faster (resolveRasterMode in engine/hair_system.h).
+enum class RasterMode { Auto, Compute, Graphics };
+RasterMode parseRasterMode(const std::string& text);  // "auto", "compute", "graphics"; else hp::Error
+const char* rasterModeName(RasterMode mode);
+
 struct RenderSpec {
   std::uint32_t width = 1280;
   std::uint32_t height = 720;
-  std::uint32_t msaa = 4;  // 1, 2, 4 or 8
+  std::uint32_t msaa = 4;  // 1, 2, 4 or 8; the graphics path's samples (the compute path draws 1)
+  RasterMode raster = RasterMode::Auto;
 };
 
 struct Scene {

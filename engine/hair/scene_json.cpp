@@ -167,7 +167,14 @@ void readRender(JsonObject& root, RenderSpec& r) {
   o->read("width", r.width);
   o->read("height", r.height);
   o->read("msaa", r.msaa);
+  std::string raster = rasterModeName(r.raster);
+  o->read("raster", raster);
   o->finish();
+  try {
+    r.raster = parseRasterMode(raster);
+  } catch (const Error& e) {
+    requireThat(false, *o, "raster", e.what());
+  }
   requireThat(r.width >= 1 && r.width <= 16384, *o, "width", "must be in [1, 16384], got " + std::to_string(r.width));
   requireThat(r.height >= 1 && r.height <= 16384, *o, "height", "must be in [1, 16384], got " + std::to_string(r.height));
   requireThat(r.msaa == 1 || r.msaa == 2 || r.msaa == 4 || r.msaa == 8, *o, "msaa",

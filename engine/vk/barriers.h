@@ -29,6 +29,7 @@ enum class ImageUse {
   VertexSampled,     // sampled in a vertex shader
   ComputeSampled,    // sampled in a compute shader
   GraphicsSampled,   // sampled in vertex and fragment shaders
+  ComputeStorageWrite,     // written as a storage image in a compute shader (layout GENERAL)
   FragmentSampledDiscard,  // sampled in a fragment shader by earlier work, contents now discarded
   ColorAttachmentDiscard,  // written as a colour attachment (or resolve target) by earlier work, now discarded
   DepthAttachmentDiscard,  // written as a depth attachment by earlier work, now discarded

@@ -89,4 +89,15 @@ void DescriptorSet::writeSampledImage(std::uint32_t binding, VkImageView view, V
   write.pImageInfo = &info;
   vkUpdateDescriptorSets(device_, 1, &write, 0, nullptr);
 }
+
+void DescriptorSet::writeStorageImage(std::uint32_t binding, VkImageView view) const {
+  VkDescriptorImageInfo info{VK_NULL_HANDLE, view, VK_IMAGE_LAYOUT_GENERAL};
+  VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+  write.dstSet = set_;
+  write.dstBinding = binding;
+  write.descriptorCount = 1;
+  write.descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
+  write.pImageInfo = &info;
+  vkUpdateDescriptorSets(device_, 1, &write, 0, nullptr);
+}
 }  // namespace hp::vk

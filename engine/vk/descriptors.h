@@ -41,6 +41,8 @@ class DescriptorSet {
   }
   void writeSampledImage(std::uint32_t binding, VkImageView view, VkSampler sampler,
                          VkImageLayout layout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL) const;
+  // A storage image, used in VK_IMAGE_LAYOUT_GENERAL (ImageUse::ComputeStorageWrite).
+  void writeStorageImage(std::uint32_t binding, VkImageView view) const;
 
  private:
   void release();

@@ -126,10 +126,10 @@ void Image::release() {
   memory_ = VK_NULL_HANDLE;
 }
 
-Sampler::Sampler(const Context& ctx, const std::string& name) : device_(ctx.device()) {
+Sampler::Sampler(const Context& ctx, const std::string& name, VkFilter filter) : device_(ctx.device()) {
   VkSamplerCreateInfo info{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
-  info.magFilter = VK_FILTER_LINEAR;
-  info.minFilter = VK_FILTER_LINEAR;
+  info.magFilter = filter;
+  info.minFilter = filter;
   info.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
   info.addressModeU = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
   info.addressModeV = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;

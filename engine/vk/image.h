@@ -59,12 +59,13 @@ class Image {
 bool isDepthFormat(VkFormat format);
 std::uint32_t formatBytesPerPixel(VkFormat format);  // for the formats hairpipe reads back
 
-// A sampler with linear filtering and clamp-to-edge (what every LUT, shadow and tonemap lookup uses),
-// move-only and destroyed with its owner, so a constructor that throws after making one cannot leak it.
+// A sampler with linear filtering (or `filter`: nearest for formats that cannot filter, e.g. depth) and
+// clamp-to-edge (what every LUT, shadow and tonemap lookup uses), move-only and destroyed with its
+// owner, so a constructor that throws after making one cannot leak it.
 class Sampler {
  public:
   Sampler() = default;
-  Sampler(const Context& ctx, const std::string& name);
+  Sampler(const Context& ctx, const std::string& name, VkFilter filter = VK_FILTER_LINEAR);
   ~Sampler();
   Sampler(Sampler&& other) noexcept;
   Sampler& operator=(Sampler&& other) noexcept;

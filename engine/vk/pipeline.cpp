@@ -45,6 +45,9 @@ VkPipelineColorBlendAttachmentState blendState(BlendMode mode) {
   if (mode == BlendMode::Additive) {
     s.srcColorBlendFactor = s.dstColorBlendFactor = VK_BLEND_FACTOR_ONE;
     s.srcAlphaBlendFactor = s.dstAlphaBlendFactor = VK_BLEND_FACTOR_ONE;
+  } else if (mode == BlendMode::Premultiplied) {
+    s.srcColorBlendFactor = s.srcAlphaBlendFactor = VK_BLEND_FACTOR_ONE;
+    s.dstColorBlendFactor = s.dstAlphaBlendFactor = VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA;
   } else {
     s.srcColorBlendFactor = VK_BLEND_FACTOR_SRC_ALPHA;
     s.dstColorBlendFactor = VK_BLEND_FACTOR_ONE_MINUS_SRC_ALPHA;

@@ -61,7 +61,8 @@ class ComputePipeline : public PipelineBase {
   std::uint32_t maxGroupsX_ = 65535;
 };
 
-enum class BlendMode { None, Alpha, Additive };
+// Premultiplied: src + (1 - src.a) dst (a compositor's "over" for premultiplied colour).
+enum class BlendMode { None, Alpha, Additive, Premultiplied };
 
 struct GraphicsPipelineDesc {
   std::string vertexShader;    // embedded shader names, e.g. "strands.vert"

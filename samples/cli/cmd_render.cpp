@@ -37,7 +37,22 @@ struct RenderOptions {
   std::optional<float> strandOpacity, shadowK, shadowBias;
   std::string dumpOpacity;
   std::string dumpStrands;
+  std::optional<std::string> raster;
+  std::optional<std::uint32_t> tileBudget;
 };
+
+// --raster overrides the scene's; --lines are graphics lines, so they pick the graphics path unless
+// the compute one was asked for by name (refused).
+void applyRaster(const RenderOptions& o, hp::RenderRequest& r) {
+  if (o.raster) r.scene.render.raster = hp::parseRasterMode(*o.raster);
+  if (o.lines) {
+    if (r.scene.render.raster == hp::RasterMode::Compute)
+      throw hp::Error("--lines draws graphics lines: use --raster graphics (or auto) with it");
+    r.scene.render.raster = hp::RasterMode::Graphics;
+  }
+  if (o.tileBudget) r.rasterSettings.tileBudget = *o.tileBudget;
+  r.rasterSettings.validate();
+}
 
 hp::render::OpacitySettings opacitySettings(const RenderOptions& o) {
   hp::render::OpacitySettings s;
@@ -117,6 +132,7 @@ hp::RenderRequest makeRequest(const RenderOptions& o, const CLI::App& cmd) {
   r.opacity = opacitySettings(o);
   r.captureOpacity = !o.dumpOpacity.empty();
   r.captureStrands = !o.dumpStrands.empty();
+  applyRaster(o, r);
   return r;
 }
 
@@ -144,7 +160,13 @@ void runRender(const RenderOptions& o, const CLI::App& cmd) {
                            {"guides", result.guides}, {"strands", result.strands},
                            {"vertices_per_strand", result.verticesPerStrand},
                            {"lut_mode", o.lutMode}, {"device", ctx->properties().deviceName},
-                           {"gpu_ms", passes}};
+                           {"gpu_ms", passes}, {"raster", hp::rasterModeName(result.raster)}};
+  if (result.rasterStats) {
+    const auto& s = *result.rasterStats;
+    report["raster_lists"] = {{"requested", s.requested}, {"kept", s.kept},
+                              {"dropped_tile_budget", s.droppedByTileBudget},
+                              {"dropped_capacity", s.droppedByCapacity}, {"overflow", s.overflow()}};
+  }
   if (result.opacity) report["opacity_dump"] = o.dumpOpacity;
   if (result.strandDump) report["strands_dump"] = o.dumpStrands;
   if (o.json) {
@@ -153,6 +175,12 @@ void runRender(const RenderOptions& o, const CLI::App& cmd) {
   }
   std::cout << "wrote " << o.out << " (" << result.width << "x" << result.height << ", " << result.strands
             << " strands from " << result.guides << " guides) on " << ctx->properties().deviceName << "\n";
+  std::cout << "  raster: " << hp::rasterModeName(result.raster) << "\n";
+  if (result.rasterStats)
+    std::cout << "  tile lists: " << result.rasterStats->kept << " entries kept of " << result.rasterStats->requested
+              << ", overflow " << result.rasterStats->overflow() << " (tile budget "
+              << result.rasterStats->droppedByTileBudget << ", capacity " << result.rasterStats->droppedByCapacity
+              << ")\n";
   for (const auto& t : result.passTimes) std::cout << "  " << t.name << ": " << t.milliseconds << " ms\n";
 }
 
@@ -164,7 +192,11 @@ void setupRender(CLI::App& app) {
   cmd->add_option("--frames", o->frames, "Frames simulated before the rendered one (default 90)");
   cmd->add_option("--width", o->width, "Image width (default: scene, 1280)");
   cmd->add_option("--height", o->height, "Image height (default: scene, 720)");
-  cmd->add_option("--msaa", o->msaa, "Samples per pixel: 1, 2, 4 or 8 (default: scene, 4)");
+  cmd->add_option("--msaa", o->msaa, "Samples per pixel of the graphics raster: 1, 2, 4 or 8 (default: scene, 4)");
+  cmd->add_option("--raster", o->raster,
+                  "Hair drawing: compute (tile rasterizer, analytic coverage), graphics (MSAA ribbons) or auto "
+                  "(default: scene, auto = compute)");
+  cmd->add_option("--tile-budget", o->tileBudget, "Compute raster: list entries kept per 8x8 tile (default 16384)");
   cmd->add_option("--density", o->density, "Render strands in total (default: scene, 20000)");
   cmd->add_option("--light-dir", o->lightDir, "Direction toward the light, X,Y,Z")->delimiter(',')->expected(3);
   cmd->add_option("--spot", o->spot, "Spot light at X,Y,Z instead of the directional light")->delimiter(',')->expected(3);

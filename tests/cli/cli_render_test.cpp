@@ -18,8 +18,12 @@ TEST(CliRender, WritesThePngReportsEveryPassAndDumpsTheStrands) {
                    "--json", "--out", png.string(), "--dump-strands", strands.string()});
   ASSERT_EQ(r.exitCode, 0) << r.err;
   auto j = nlohmann::json::parse(r.out);
-  for (const char* pass : {"simulate", "tessellate", "interpolate", "bounds", "opacity", "head", "shade", "tonemap"})
+  EXPECT_EQ(j["raster"], "compute");  // auto on lavapipe
+  for (const char* pass : {"simulate", "tessellate", "interpolate", "bounds", "opacity", "head", "raster shade",
+                           "raster bin", "raster fine", "composite", "tonemap"})
     EXPECT_GT(j["gpu_ms"][pass].get<double>(), 0.0) << pass;
+  EXPECT_GT(j["raster_lists"]["kept"].get<double>(), 0.0);
+  EXPECT_EQ(j["raster_lists"]["overflow"], 0);
   EXPECT_EQ(j["strands"], 2000);
   hp::RgbaImage image = hp::readPngRgba(png);
   EXPECT_EQ(image.width, 128u);
@@ -30,10 +34,24 @@ TEST(CliRender, WritesThePngReportsEveryPassAndDumpsTheStrands) {
   std::filesystem::remove(strands);
 }
 
+TEST(CliRender, TheGraphicsRasterStaysSelectable) {
+  const auto png = freshTempPath("hairpipe_cli_render_graphics.png");
+  auto r = runCli({"render", "--width", "96", "--height", "64", "--density", "1000", "--frames", "2", "--validation",
+                   "--json", "--raster", "graphics", "--out", png.string()});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["raster"], "graphics");
+  EXPECT_GT(j["gpu_ms"]["shade"].get<double>(), 0.0);
+  EXPECT_FALSE(j.contains("raster_lists"));
+  std::filesystem::remove(png);
+}
+
 TEST(CliRender, BadOptionsExitWithAMessageAndWriteNothing) {
   const auto png = freshTempPath("hairpipe_cli_render_bad.png");
   expectRefused({"render", "--frames", "1", "--out", png.string()}, {
       {{"--width", "0"}, "width"},          {{"--msaa", "3"}, "msaa"},
+      {{"--raster", "bogus"}, "bogus"},     {{"--tile-budget", "0"}, "tileBudget"},
+      {{"--lines", "--raster", "compute"}, "--lines"},
       {{"--lut-mode", "bogus"}, "bogus"},   {{"--light-dir", "0,0,0"}, "light-dir"},
       {{"--exposure", "-1"}, "exposure"},   {{"--eta", "0.5"}, "eta"},
       {{"--animate", "spin"}, "spin"},      {{"--density", "0"}, "total"},

@@ -26,6 +26,7 @@ TEST(Scene, EmptyObjectIsTheDefaultScene) {
   EXPECT_FALSE(s.colliders.has_value());
   EXPECT_EQ(s.material, HairMaterial{});
   EXPECT_EQ(s.render.msaa, 4u);
+  EXPECT_EQ(s.render.raster, RasterMode::Auto);
   EXPECT_EQ(s.simulation.iterations, SimulationParams{}.iterations);
 }
 
@@ -40,11 +41,12 @@ TEST(Scene, ReadsEverySection) {
                  "wcDeg": 10, "dEta": 0.25, "dhM": 0.4},
     "light": {"direction": [0, 2, 0], "color": [1, 0.9, 0.8], "intensity": 2.5},
     "camera": {"orbitDeg": 45, "elevationDeg": 20, "distance": 1.2, "fovDeg": 40, "target": [0, 0.1, 0]},
-    "render": {"width": 640, "height": 480, "msaa": 8},
+    "render": {"width": 640, "height": 480, "msaa": 8, "raster": "graphics"},
     "simulation": {"dt": 0.01, "substeps": 3, "iterations": 12, "gravity": [0, -9.8, 0], "damping": 0.1,
                    "pearlRadius": 0.003, "stiffness": 0.2, "stiffnessFalloff": 0.5, "maxSpeed": 5,
                    "windDirection": [0, 0, 1], "windStrength": 2, "windGust": 0.5, "windGustFrequency": 1}
   })");
+  EXPECT_EQ(s.render.raster, RasterMode::Graphics);
   EXPECT_EQ(s.model.kind, ModelSpec::Kind::Hair);
   EXPECT_EQ(s.model.path, std::filesystem::path("/base/models/curly.hair"));
   EXPECT_EQ(s.model.transform.scale, 0.01f);
@@ -109,6 +111,8 @@ TEST(Scene, OutOfRangeValuesNameThePath) {
   EXPECT_THAT_ERROR_CONTAINS_IMPL(parseError(R"({"render": {"msaa": 3}})"),
                                   "scene.json: /render/msaa: must be 1, 2, 4 or 8, got 3");
   EXPECT_THAT_ERROR_CONTAINS_IMPL(parseError(R"({"render": {"width": 0}})"), "/render/width: must be in [1, 16384]");
+  EXPECT_THAT_ERROR_CONTAINS_IMPL(parseError(R"({"render": {"raster": "cuda"}})"),
+                                  "/render/raster: raster must be auto, compute or graphics, got 'cuda'");
   EXPECT_THAT_ERROR_CONTAINS_IMPL(parseError(R"({"camera": {"fovDeg": 180}})"), "/camera/fovDeg: must be in (0, 180)");
   EXPECT_THAT_ERROR_CONTAINS_IMPL(parseError(R"({"camera": {"distance": 0}})"), "/camera/distance: must be > 0");
   EXPECT_THAT_ERROR_CONTAINS_IMPL(parseError(R"({"light": {"direction": [0, 0, 0]}})"),

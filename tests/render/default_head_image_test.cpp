@@ -20,7 +20,7 @@ const std::filesystem::path kGolden = std::filesystem::path(HAIRPIPE_TEST_DATA_D
 
 RenderRequest demoRequest() {
   RenderRequest r;
-  r.scene.render = {192, 108, 4};
+  r.scene.render = {192, 108, 4, RasterMode::Graphics};  // the MSAA ribbons; compute: raster_image_test
   r.scene.camera.orbitDeg = 145.0f;
   r.scene.density.totalStrands = 6000;
   r.settleFrames = 30;

@@ -155,31 +155,38 @@ TEST_F(VulkanTest, TwoShadowedFramesInOneCommandBufferAreSyncClean) {
   hp::DensityOptions density;
   density.totalStrands = 1000;
   const hp::HairAsset asset = hp::buildDefaultHeadAsset(hp::defaultHeadGrowth(), density);
-  hp::render::OffscreenRenderer renderer(*ctx, 64, 48, 4);
-  hp::HairSystemSettings settings;
-  settings.formats = renderer.formats();
-  settings.opacity.resolution = 64;
-  hp::HairSystem hair(*ctx, asset, settings);
-  hp::DrawView view;
-  view.extent = renderer.extent();
-  view.camera = hp::orbitCamera(hp::CameraSpec{}, 64.0f / 48.0f);
-  hp::vk::GpuProfiler profiler(*ctx, 32, "two frames");
-  hp::vk::submitAndWait(*ctx, [&](VkCommandBuffer cmd) {
-    profiler.reset(cmd);
-    for (int frame = 0; frame < 2; ++frame) {
-      hair.recordUpdate(cmd, hp::HeadMotion{}, &profiler);
-      hair.recordPrepareDraw(cmd, view, &profiler);
-      renderer.record(cmd, hair, view, 1.0f, &profiler);
+  // Both raster paths: the compute one adds its own passes and barriers between the frames.
+  for (hp::RasterMode raster : {hp::RasterMode::Graphics, hp::RasterMode::Compute}) {
+    hp::render::OffscreenRenderer renderer(*ctx, 64, 48, 4, raster);
+    hp::HairSystemSettings settings;
+    settings.formats = renderer.formats();
+    settings.opacity.resolution = 64;
+    settings.raster = raster;
+    hp::HairSystem hair(*ctx, asset, settings);
+    renderer.attach(hair);
+    hp::DrawView view;
+    view.extent = renderer.extent();
+    view.camera = hp::orbitCamera(hp::CameraSpec{}, 64.0f / 48.0f);
+    hp::vk::GpuProfiler profiler(*ctx, 32, "two frames");
+    hp::vk::submitAndWait(*ctx, [&](VkCommandBuffer cmd) {
+      profiler.reset(cmd);
+      for (int frame = 0; frame < 2; ++frame) {
+        hair.recordUpdate(cmd, hp::HeadMotion{}, &profiler);
+        hair.recordPrepareDraw(cmd, view, &profiler);
+        renderer.record(cmd, hair, view, 1.0f, &profiler);
+      }
+    }, "two frames");
+    std::size_t bounds = 0, opacity = 0, fine = 0;
+    for (const auto& t : profiler.results()) {
+      bounds += t.name == "bounds";
+      opacity += t.name == "opacity";
+      fine += t.name == "raster fine";
     }
-  }, "two frames");
-  std::size_t bounds = 0, opacity = 0;
-  for (const auto& t : profiler.results()) {
-    bounds += t.name == "bounds";
-    opacity += t.name == "opacity";
+    if (profiler.supported()) {
+      EXPECT_EQ(bounds, 2u);
+      EXPECT_EQ(opacity, 2u);
+      EXPECT_EQ(fine, raster == hp::RasterMode::Compute ? 2u : 0u);
+    }
+    EXPECT_EQ(renderer.readDisplay().size(), 64u * 48u * 4u);
   }
-  if (profiler.supported()) {
-    EXPECT_EQ(bounds, 2u);
-    EXPECT_EQ(opacity, 2u);
-  }
-  EXPECT_EQ(renderer.readDisplay().size(), 64u * 48u * 4u);
 }

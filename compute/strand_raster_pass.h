@@ -1,0 +1,97 @@
+#pragma once
+// Contract: the compute strand rasterizer for the camera view (REFERENCES.md §8; layouts and the coverage
+// formula in shaders/shared/raster.h). Over the render strands of every chunk it
+//   shade    per vertex: radiance by the graphics path's hairRadiance (opacity maps looked up at the
+//            vertex: strand-space shading) and the projection to pixels, NDC depth and width;
+//   bin      per segment: count its (8x8 tile, depth bin) keys, scan the tiles (tile budget: nearest bins
+//            kept first), scatter the segment ids into per-tile lists ordered near to far by depth bin;
+//   fine     per pixel: exact band coverage, hidden at or behind the head's depth, composited front to
+//            back until T < 1/255, into output(): RGBA16F, premultiplied radiance, alpha = 1 - T.
+// The pass owns every buffer and image it writes and the barriers between its own steps. The frame
+// recorder guarantees before record(): strand buffers, the frame block, LightSpace and the opacity maps
+// visible to compute reads (maps in ImageUse::ComputeSampled), the depth image given to setDepth() in
+// ImageUse::ComputeSampled. After record(): output() in ImageUse::FragmentSampled, every own buffer's
+// last use ComputeWrite. List overflow is never silent: readStats() reports entries dropped by the tile
+// budget and past the list capacity (capacity derived from the segment count and the frame size).
+#include <volk.h>
+
+#include <functional>
+#include <vector>
+
+#include "compute/strand_buffers.h"
+#include "engine/vk/buffer.h"
+#include "engine/vk/descriptors.h"
+#include "engine/vk/image.h"
+#include "engine/vk/pipeline.h"
+#include "engine/vk/profiler.h"
+
+namespace hp::compute {
+struct RasterSettings {
+  std::uint32_t tileBudget = 16384;  // list entries kept per 8x8 tile, [1, 1<<24]
+  void validate() const;
+};
+
+struct RasterStats {
+  std::uint64_t requested = 0;           // (segment, tile) entries the segments asked for
+  std::uint64_t droppedByTileBudget = 0;
+  std::uint64_t droppedByCapacity = 0;
+  std::uint64_t kept = 0;
+  std::uint64_t overflow() const { return droppedByTileBudget + droppedByCapacity; }
+};
+
+// Writes the shading bindings 0-6 of shaders/shared/render.h (frame block, Marschner UBO and LUTs,
+// opacity maps, LightSpace) into a raster descriptor set: what the shade step's hairRadiance reads.
+using ShadingWriter = std::function<void(const vk::DescriptorSet&)>;
+
+class StrandRasterPass {
+ public:
+  // Throws hp::Error for a zero extent, bad settings or strand buffers past maxStorageBufferRange.
+  StrandRasterPass(const vk::Context& ctx, const StrandBuffers& strands, const ShadingWriter& shading,
+                   VkExtent2D extent, const RasterSettings& settings);
+  // Outside the frame loop: rewrite descriptors after the strands or shading resources changed.
+  void bind(const StrandBuffers& strands, const ShadingWriter& shading);
+  // The head's depth (single sample, D32); 1.0 where nothing was drawn. Must be set before record().
+  void setDepth(VkImageView depth);
+
+  void record(VkCommandBuffer cmd, vk::GpuProfiler* profiler = nullptr) const {
+    recordBinning(cmd, profiler);
+    recordFine(cmd, profiler);
+  }
+  // record() in two halves: shade + bin (readStats() is complete after it), then the fine raster.
+  void recordBinning(VkCommandBuffer cmd, vk::GpuProfiler* profiler = nullptr) const;
+  void recordFine(VkCommandBuffer cmd, vk::GpuProfiler* profiler = nullptr) const;
+
+  const vk::Image& output() const { return output_; }
+  VkExtent2D extent() const { return extent_; }
+  std::uint32_t capacity() const { return capacity_; }
+  // Blocking readback of the last recorded frame's statistics (outside the frame loop).
+  RasterStats readStats() const;
+
+ private:
+  struct Chunk {
+    vk::DescriptorSet set;
+    std::uint32_t firstStrand;
+    std::uint32_t strandCount;
+  };
+  void recordArm(VkCommandBuffer cmd) const;
+  void recordPerChunk(VkCommandBuffer cmd, const vk::ComputePipeline& pipeline, std::uint32_t mode,
+                      std::uint32_t perStrand) const;
+  void recordOnce(VkCommandBuffer cmd, const vk::ComputePipeline& pipeline, std::uint32_t threads) const;
+
+  const vk::Context& ctx_;
+  VkExtent2D extent_;
+  RasterSettings settings_;
+  std::uint32_t tilesX_, tilesY_, q_ = 0, capacity_ = 0;
+  vk::Buffer screen_, colors_, state_, counts_, keys_, tiles_, blocks_, list_;
+  vk::Image output_;
+  vk::Sampler sampler_;
+  VkImageView depth_ = VK_NULL_HANDLE;
+  std::vector<Chunk> chunks_;
+  vk::ComputePipeline shade_, bin_, scanTiles_, scanBlocks_, fine_;
+};
+
+// List entries reserved for a frame: every segment in 8 tiles plus 16 per tile (the default head at
+// 3840x2160 asks for 5.1M of 7.7M), within the device's
+// storage buffer range (pure arithmetic, for tests and the docs).
+std::uint32_t rasterListCapacity(std::uint64_t segments, std::uint64_t tiles, std::uint64_t maxRangeBytes);
+}  // namespace hp::compute

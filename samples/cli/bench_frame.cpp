@@ -1,0 +1,91 @@
+#include "samples/cli/bench_frame.h"
+
+#include <algorithm>
+
+#include "engine/hair/default_head.h"
+#include "engine/hair_system.h"
+#include "engine/render/offscreen_renderer.h"
+#include "engine/vk/copy_reference.h"
+#include "engine/vk/submit.h"
+#include "shaders/shared/raster.h"
+
+namespace hp::cli {
+namespace {
+constexpr VkDeviceSize kCopyBytes = 64ull << 20;
+
+PassTiming summarize(std::vector<double> ms) {
+  PassTiming t;
+  t.medianMs = vk::median(ms);
+  t.minMs = *std::min_element(ms.begin(), ms.end());
+  t.maxMs = *std::max_element(ms.begin(), ms.end());
+  return t;
+}
+
+// Compulsory bytes per frame of the compute passes: every input read once, every output written once
+// (formulas as bench-strands / bench-sim; raster: vertex records 16 + 8 bytes, list entries 4 bytes).
+void countBytes(FrameResult& r, const compute::StrandLayout& l) {
+  const double g = l.guideCount, p = l.particlesPerGuide, q = l.verticesPerStrand, s = l.strandCount;
+  const double v = s * q, e = double(r.rasterEntries);
+  const double tiles = double((r.c.width + 7) / 8) * double((r.c.height + 7) / 8);
+  const double pixels = double(r.c.width) * r.c.height;
+  const std::map<std::string, double> bytes = {
+      {"simulate", g * p * 16 * 5},
+      {"tessellate", g * p * 16 + g * q * 32},
+      {"interpolate", s * 16 + l.triangleCount * 16.0 + g * q * 32 + s * (q * 32 + 16)},
+      {"bounds", v * 16},
+      {"raster shade", v * 32 + s * 16 + v * 24},
+      {"raster bin", 2 * v * 16 + tiles * gpu::RASTER_DEPTH_BINS * 16 + e * 4},
+      {"raster fine", e * 4 + e * 2 * 16 + pixels * (4 + 8)},
+  };
+  for (auto& [name, t] : r.passes)
+    if (auto it = bytes.find(name); it != bytes.end()) t.bytes = it->second;
+}
+}  // namespace
+
+FrameResult benchFrame(const vk::Context& ctx, const FrameCase& c) {
+  DensityOptions density;
+  density.totalStrands = c.strands;
+  const HairAsset asset = buildDefaultHeadAsset(defaultHeadGrowth(), density);
+  const Scene scene;
+  render::OffscreenRenderer renderer(ctx, c.width, c.height, c.msaa, c.raster);
+  HairSystemSettings settings;
+  settings.formats = renderer.formats();
+  settings.raster = c.raster;
+  HairSystem hair(ctx, asset, settings);
+  renderer.attach(hair);
+  DrawView view;
+  view.extent = renderer.extent();
+  view.camera = orbitCamera(scene.camera, float(c.width) / float(c.height));
+  view.light = scene.light;
+  vk::CopyReference copy(ctx, kCopyBytes);
+  std::map<std::string, std::vector<double>> times;
+  for (std::uint32_t f = 0; f <= c.frames; ++f) {  // frame 0 warms up
+    vk::GpuProfiler profiler(ctx, 24, "bench frame");
+    vk::submitAndWait(ctx, [&](VkCommandBuffer cmd) {
+      profiler.reset(cmd);
+      copy.record(cmd, profiler);  // first: lavapipe stamps scopes after graphics work late (docs/PERFORMANCE.md)
+      hair.recordUpdate(cmd, HeadMotion{}, &profiler);
+      hair.recordPrepareDraw(cmd, view, &profiler);
+      renderer.record(cmd, hair, view, 1.0f, &profiler);
+    }, "bench frame");
+    if (f == 0) continue;
+    double frameMs = 0.0;  // every top-level scope but the reference copy
+    for (const auto& t : profiler.results()) {
+      times[t.name].push_back(t.milliseconds);
+      if (t.depth == 0 && t.name != "copy") frameMs += t.milliseconds;
+    }
+    times["frame"].push_back(frameMs);
+  }
+  FrameResult r;
+  r.c = c;
+  for (auto& [name, ms] : times) r.passes[name] = summarize(ms);
+  if (hair.raster() == RasterMode::Compute) {
+    const compute::RasterStats stats = hair.rasterStats();
+    r.rasterEntries = stats.kept;
+    r.rasterOverflow = stats.overflow();
+  }
+  r.copyBytes = copy.bytesMoved();
+  countBytes(r, hair.strands().layout());
+  return r;
+}
+}  // namespace hp::cli

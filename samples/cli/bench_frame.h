@@ -1,0 +1,36 @@
+#pragma once
+// Contract: the whole-frame benchmark behind `hairpipe bench`: the default head at one strand count,
+// resolution and raster path, every frame recorded as `hairpipe render` records it (simulate,
+// tessellate, interpolate, bounds, opacity, head, hair raster/shade, composite, tonemap) plus a
+// vkCmdCopyBuffer reference in the same submission; one warm-up frame, then `frames` timed frames.
+// Per pass: GPU-timestamp median/min/max and, for compute passes, the compulsory bytes moved.
+#include <map>
+#include <string>
+#include <vector>
+
+#include "engine/hair/scene.h"
+#include "engine/vk/context.h"
+
+namespace hp::cli {
+struct FrameCase {
+  std::uint32_t strands = 20000;
+  std::uint32_t width = 640, height = 480;
+  RasterMode raster = RasterMode::Compute;
+  std::uint32_t msaa = 4;  // graphics only
+  std::uint32_t frames = 3;
+};
+
+struct PassTiming {
+  double medianMs = 0, minMs = 0, maxMs = 0;
+  double bytes = 0;  // compulsory traffic per frame (compute passes), 0 when not counted
+};
+
+struct FrameResult {
+  FrameCase c;
+  std::map<std::string, PassTiming> passes;  // "frame" is the whole frame; "copy" the reference
+  std::uint64_t rasterEntries = 0, rasterOverflow = 0;
+  double copyBytes = 0;
+};
+
+FrameResult benchFrame(const vk::Context& ctx, const FrameCase& c);
+}  // namespace hp::cli

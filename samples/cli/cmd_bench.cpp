@@ -1,0 +1,150 @@
+// `hairpipe bench [--strands LIST] [--resolution WxH] [--frames N] [--raster LIST] [--msaa LIST] [--json F]
+// [--plot F.svg]`: the whole frame on the default head (bench_frame.h) for each strand count and raster
+// path (graphics once per --msaa value), after one warm-up frame: per pass the GPU-timestamp median
+// (min/max) of N frames, the frame total, each compute pass's achieved bytes/s as a fraction of a
+// vkCmdCopyBuffer timed in the same frames, the device and driver. --json writes the report to F,
+// --plot an SVG of ms per pass against strand count. Pass-level benchmarks over other axes stay in
+// bench-strands (tessellate/interpolate to 1M strands), bench-opacity (map sizes), bench-sim (guide
+// counts) and bench-assets (host asset path).
+#include <cstdio>
+#include <iostream>
+
+#include <nlohmann/json.hpp>
+
+#include "engine/error.h"
+#include "engine/hair/atomic_write.h"
+#include "engine/vk/copy_reference.h"
+#include "samples/cli/bench_context.h"
+#include "samples/cli/bench_frame.h"
+#include "samples/cli/bench_plot.h"
+#include "samples/cli/command.h"
+
+namespace {
+struct BenchOptions {
+  std::vector<std::uint32_t> strands{20000};
+  std::string resolution = "640x480";
+  std::uint32_t frames = 3;
+  std::vector<std::string> raster{"compute", "graphics"};
+  std::vector<std::uint32_t> msaa{4};
+  std::string json, plot, device;
+};
+
+void parseResolution(const std::string& text, std::uint32_t& w, std::uint32_t& h) {
+  unsigned a = 0, b = 0;
+  char x = 0, extra = 0;
+  if (std::sscanf(text.c_str(), "%u%c%u%c", &a, &x, &b, &extra) != 3 || x != 'x' || a == 0 || b == 0 || a > 16384 ||
+      b > 16384)
+    throw hp::Error("bench: --resolution must be WxH with each in [1, 16384], got '" + text + "'");
+  w = a;
+  h = b;
+}
+
+std::vector<hp::cli::FrameCase> cases(const BenchOptions& o) {
+  if (o.frames == 0 || o.frames > 1000) throw hp::Error("bench: --frames must be in [1, 1000]");
+  hp::cli::FrameCase base;
+  base.frames = o.frames;
+  parseResolution(o.resolution, base.width, base.height);
+  std::vector<hp::cli::FrameCase> out;
+  for (std::uint32_t s : o.strands) {
+    if (s == 0 || s > 4'000'000) throw hp::Error("bench: --strands values must be in [1, 4000000]");
+    for (const std::string& r : o.raster) {
+      const hp::RasterMode mode = hp::parseRasterMode(r);
+      if (mode == hp::RasterMode::Auto) throw hp::Error("bench: --raster takes compute and/or graphics");
+      hp::cli::FrameCase c = base;
+      c.strands = s;
+      c.raster = mode;
+      if (mode == hp::RasterMode::Compute) {
+        out.push_back(c);
+        continue;
+      }
+      for (std::uint32_t m : o.msaa) {
+        c.msaa = m;
+        out.push_back(c);
+      }
+    }
+  }
+  return out;
+}
+
+nlohmann::json toJson(const hp::cli::FrameResult& r) {
+  const hp::cli::PassTiming& copy = r.passes.at("copy");
+  const double copyGbs = hp::vk::gigabytesPerSecond(r.copyBytes, copy.medianMs);
+  nlohmann::json passes = nlohmann::json::object();
+  for (const auto& [name, t] : r.passes) {
+    nlohmann::json p = {{"median_ms", t.medianMs}, {"min_ms", t.minMs}, {"max_ms", t.maxMs}};
+    if (t.bytes > 0) {
+      const double gbs = hp::vk::gigabytesPerSecond(t.bytes, t.medianMs);
+      p["bytes"] = t.bytes;
+      p["gb_per_s"] = gbs;
+      p["fraction_of_copy"] = gbs / copyGbs;
+    }
+    passes[name] = p;
+  }
+  return {{"strands", r.c.strands},      {"width", r.c.width},
+          {"height", r.c.height},        {"raster", hp::cli::frameCaseName(r.c)},
+          {"frame_ms", r.passes.at("frame").medianMs}, {"copy_gb_per_s", copyGbs},
+          {"raster_entries", r.rasterEntries},         {"raster_overflow", r.rasterOverflow},
+          {"passes", passes}};
+}
+
+void printText(const nlohmann::json& row) {
+  std::printf("%u strands, %ux%u, %s: frame %.1f ms (copy %.2f GB/s)\n", row["strands"].get<unsigned>(),
+              row["width"].get<unsigned>(), row["height"].get<unsigned>(), row["raster"].get<std::string>().c_str(),
+              row["frame_ms"].get<double>(), row["copy_gb_per_s"].get<double>());
+  for (const auto& [name, p] : row["passes"].items()) {
+    if (name == "frame") continue;
+    std::printf("  %-14s %10.2f ms  (%.2f - %.2f)", name.c_str(), p["median_ms"].get<double>(),
+                p["min_ms"].get<double>(), p["max_ms"].get<double>());
+    if (p.contains("gb_per_s"))
+      std::printf("  %7.2f GB/s  %5.1f%% of copy", p["gb_per_s"].get<double>(),
+                  100.0 * p["fraction_of_copy"].get<double>());
+    std::printf("\n");
+  }
+  std::fflush(stdout);
+}
+
+void writeText(const std::string& path, const std::string& text) {
+  hp::writeFileAtomically(path, std::as_bytes(std::span(text.data(), text.size())));
+}
+
+void run(const BenchOptions& o) {
+  const auto list = cases(o);  // validate everything before touching the device
+  auto ctx = hp::cli::createBenchContext(o.device, "bench");
+  const auto& props = ctx->properties();
+  nlohmann::json report = {{"device", props.deviceName},
+                           {"driver_version", props.driverVersion},
+                           {"api_version", std::to_string(VK_API_VERSION_MAJOR(props.apiVersion)) + "." +
+                                               std::to_string(VK_API_VERSION_MINOR(props.apiVersion)) + "." +
+                                               std::to_string(VK_API_VERSION_PATCH(props.apiVersion))},
+                           {"frames", o.frames},
+                           {"results", nlohmann::json::array()}};
+  std::printf("device: %s (driver %u), median of %u frames after one warm-up\n", props.deviceName,
+              props.driverVersion, o.frames);
+  std::vector<hp::cli::FrameResult> results;
+  for (const hp::cli::FrameCase& c : list) {
+    results.push_back(hp::cli::benchFrame(*ctx, c));
+    report["results"].push_back(toJson(results.back()));
+    printText(report["results"].back());
+  }
+  if (!o.json.empty()) writeText(o.json, report.dump(2) + "\n");
+  if (!o.plot.empty()) writeText(o.plot, hp::cli::benchPlotSvg(results));
+}
+
+void setup(CLI::App& app) {
+  auto o = std::make_shared<BenchOptions>();
+  CLI::App* cmd = app.add_subcommand("bench", "Time the whole frame per pass on the device (default head)");
+  cmd->add_option("--strands", o->strands, "Render strand counts, comma separated")->delimiter(',')->capture_default_str();
+  cmd->add_option("--resolution", o->resolution, "Frame size WxH")->capture_default_str();
+  cmd->add_option("--frames", o->frames, "Timed frames per case (median), after one warm-up")->capture_default_str();
+  cmd->add_option("--raster", o->raster, "Raster paths: compute, graphics (comma separated)")->delimiter(',')
+      ->capture_default_str();
+  cmd->add_option("--msaa", o->msaa, "Sample counts for the graphics path (comma separated)")->delimiter(',')
+      ->capture_default_str();
+  cmd->add_option("--json", o->json, "Write the report as JSON to this file");
+  cmd->add_option("--plot", o->plot, "Write an SVG of ms per pass against strand count to this file");
+  cmd->add_option("--device", o->device, "Vulkan device: index or name substring (env HAIRPIPE_DEVICE)");
+  cmd->callback([o] { run(*o); });
+}
+}  // namespace
+
+HP_CLI_COMMAND(setup);

@@ -1,0 +1,23 @@
+// The radiance a hair fibre sends toward the camera (REFERENCES.md §3-4), GLSL only, shared by the graphics
+// strand shader (strands.frag, per fragment) and the compute rasterizer (raster_shade.comp, per vertex):
+// S(L, V, T) cos(theta_i) x light x transmittance + ambient, times the strand's lightness variation.
+// The includer declares `frame` (RenderFrame), `marschner` (MarschnerParams) and the LUT samplers
+// lutM, lutN0, lutN1 before including this file; `alpha` is the opacity-map lookup at the point.
+#ifndef HP_HAIR_SHADING_GLSL
+#define HP_HAIR_SHADING_GLSL
+#include "light.glsl"
+
+vec3 hairRadiance(vec3 world, vec3 tangent, float colorScale, float alpha) {
+  vec3 T = normalize(tangent);
+  LightSample light = sampleLight(frame.lightDirection, frame.lightPosition, frame.lightSpot, world);
+  vec3 L = light.L;
+  vec3 V = normalize(frame.cameraPosition.xyz - world);
+  vec3 S = marschnerEvaluate(marschner.control.x, L, V, T, lutM, lutN0, lutN1, marschner);
+  float sinThetaI = clamp(dot(L, T), -1.0, 1.0);
+  float cosThetaI = sqrt(1.0 - sinThetaI * sinThetaI);
+  float transmittance = exp(-frame.strand.z * alpha);
+  vec3 direct = S * cosThetaI * frame.lightRadiance.rgb * (light.scale * transmittance);
+  vec3 ambient = frame.hairColor.rgb * frame.hairColor.w;
+  return (direct + ambient) * colorScale;
+}
+#endif

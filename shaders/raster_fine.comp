@@ -1,0 +1,59 @@
+#version 460
+// Compute rasterizer, one workgroup per 8x8 tile, one invocation per pixel: walks the tile's list (depth
+// bins near to far) and composites front to back, C += T a c, T *= 1 - a, until T < 1/255. a is the
+// exact area of the pixel covered by the segment's band (rasterBandCoverage, shared/raster.h) at the
+// width interpolated along it (the tip taper); a pixel centre belongs to the segment it projects onto
+// within [0, 1), so the segments of a strand neither overlap nor leave gaps. Fragments at or behind the
+// head's depth are hidden. Output: premultiplied radiance C and alpha 1 - T.
+#include "shared/raster.h"
+#include "common.glsl"
+
+layout(local_size_x = RASTER_FINE_SIZE) in;
+layout(std430, binding = RASTER_BINDING_SCREEN) readonly buffer Screen { vec4 screen[]; };
+layout(std430, binding = RASTER_BINDING_COLORS) readonly buffer Colors { uvec2 colors[]; };
+layout(std430, binding = RASTER_BINDING_TILES) readonly buffer Tiles { uvec2 tiles[]; };
+layout(std430, binding = RASTER_BINDING_BLOCKS) readonly buffer Blocks { uint blocks[]; };
+layout(std430, binding = RASTER_BINDING_LIST) readonly buffer List { uint list[]; };
+layout(binding = RASTER_BINDING_DEPTH) uniform sampler2D headDepth;
+layout(binding = RASTER_BINDING_OUTPUT, rgba16f) uniform writeonly image2D outImage;
+layout(push_constant) uniform Push { RasterPush push; };
+
+vec3 radianceOf(uvec2 c) { return vec3(unpackHalf2x16(c.x), unpackHalf2x16(c.y).x); }
+
+void main() {
+  uint invocation = hpThreadId(RASTER_FINE_SIZE);
+  uint tile = invocation / RASTER_FINE_SIZE;
+  uint lane = invocation % RASTER_FINE_SIZE;
+  if (tile >= push.tilesX * push.tilesY) return;
+  uvec2 pixel = uvec2(tile % push.tilesX, tile / push.tilesX) * RASTER_TILE_SIZE +
+                uvec2(lane % RASTER_TILE_SIZE, lane / RASTER_TILE_SIZE);
+  if (pixel.x >= push.width || pixel.y >= push.height) return;
+  vec2 centre = vec2(pixel) + 0.5;
+  float occluder = texelFetch(headDepth, ivec2(pixel), 0).r;
+  uint start = tiles[tile].x + blocks[tile / RASTER_SCAN_SIZE];
+  uint end = min(start + tiles[tile].y, push.capacity);
+  vec3 color = vec3(0.0);
+  float T = 1.0;
+  for (uint e = start; e < end && T >= RASTER_OPAQUE_T; ++e) {
+    uint entry = list[e];
+    uint v = entry & ~RASTER_LAST_SEGMENT;
+    vec4 a = screen[v];
+    vec4 b = screen[v + 1u];
+    vec2 ab = b.xy - a.xy;
+    float len2 = dot(ab, ab);
+    if (len2 < 1e-12) continue;
+    float t = dot(centre - a.xy, ab) / len2;
+    if (t < 0.0 || t > 1.0 || (t == 1.0 && entry < RASTER_LAST_SEGMENT)) continue;
+    vec2 n = vec2(-ab.y, ab.x) * inversesqrt(len2);
+    float d = dot(centre - a.xy, n);
+    float w = mix(a.w, b.w, t);
+    if (abs(d) > 0.5 * w + 0.75) continue;
+    if (mix(a.z, b.z, t) >= occluder) continue;
+    float coverage = rasterBandCoverage(d, w, n.x, n.y);
+    if (coverage <= 0.0) continue;
+    vec3 c = mix(radianceOf(colors[v]), radianceOf(colors[v + 1u]), t);
+    color += T * coverage * c;
+    T *= 1.0 - coverage;
+  }
+  imageStore(outImage, ivec2(pixel), vec4(color, 1.0 - T));
+}

@@ -1,0 +1,43 @@
+#version 460
+// Compute rasterizer, one workgroup: exclusive scan of the block totals of raster_scan_tiles in place
+// (each invocation sums a run of blocks, a shared scan of the runs, then each run is written out), and
+// the list statistics: entries kept within the capacity, entries past it (dropped by the scatter).
+#include "shared/raster.h"
+
+layout(local_size_x = RASTER_SCAN_SIZE) in;
+layout(std430, binding = RASTER_BINDING_STATE) buffer State { RasterState state; };
+layout(std430, binding = RASTER_BINDING_BLOCKS) buffer Blocks { uint blocks[]; };
+layout(push_constant) uniform Push { RasterPush push; };
+
+shared uint rows[2][RASTER_SCAN_SIZE];
+
+void main() {
+  uint lane = gl_LocalInvocationID.x;
+  uint blockCount = (push.tilesX * push.tilesY + RASTER_SCAN_SIZE - 1u) / RASTER_SCAN_SIZE;
+  uint run = (blockCount + RASTER_SCAN_SIZE - 1u) / RASTER_SCAN_SIZE;
+  uint first = min(lane * run, blockCount);
+  uint last = min(first + run, blockCount);
+  uint sum = 0u;
+  for (uint i = first; i < last; ++i) sum += blocks[i];
+  rows[0][lane] = sum;
+  barrier();
+  uint src = 0u;
+  for (uint offset = 1u; offset < RASTER_SCAN_SIZE; offset <<= 1u) {
+    uint value = rows[src][lane];
+    if (lane >= offset) value += rows[src][lane - offset];
+    rows[1u - src][lane] = value;
+    src = 1u - src;
+    barrier();
+  }
+  uint offset = rows[src][lane] - sum;
+  for (uint i = first; i < last; ++i) {
+    uint total = blocks[i];
+    blocks[i] = offset;
+    offset += total;
+  }
+  if (lane == RASTER_SCAN_SIZE - 1u) {
+    uint total = rows[src][lane];
+    state.entries.z = total > push.capacity ? total - push.capacity : 0u;
+    state.entries.w = min(total, push.capacity);
+  }
+}

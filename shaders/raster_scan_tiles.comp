@@ -1,0 +1,50 @@
+#version 460
+// Compute rasterizer, one invocation per tile: walks the tile's depth bins near to far, keeps at most
+// `tileBudget` entries (the farthest bins lose theirs first, counted in RasterState.entries.y), writes
+// each key's offset within the tile and re-arms its counter as the scatter cursor; then an exclusive
+// scan of the kept totals within each block of RASTER_SCAN_SIZE tiles (block totals to `blocks`).
+#include "shared/raster.h"
+#include "common.glsl"
+
+layout(local_size_x = RASTER_SCAN_SIZE) in;
+layout(std430, binding = RASTER_BINDING_STATE) buffer State { RasterState state; };
+layout(std430, binding = RASTER_BINDING_COUNTS) buffer Counts { uint counts[]; };
+layout(std430, binding = RASTER_BINDING_KEYS) writeonly buffer Keys { uvec2 keys[]; };
+layout(std430, binding = RASTER_BINDING_TILES) writeonly buffer Tiles { uvec2 tiles[]; };
+layout(std430, binding = RASTER_BINDING_BLOCKS) writeonly buffer Blocks { uint blocks[]; };
+layout(push_constant) uniform Push { RasterPush push; };
+
+// Hillis-Steele with ping-pong rows, one barrier per round (as the prefix-sum self test).
+shared uint rows[2][RASTER_SCAN_SIZE];
+
+void main() {
+  uint t = hpThreadId(RASTER_SCAN_SIZE);
+  uint lane = gl_LocalInvocationID.x;
+  uint kept = 0u;
+  if (t < push.tilesX * push.tilesY) {
+    uint requested = 0u;
+    for (uint b = 0u; b < RASTER_DEPTH_BINS; ++b) {
+      uint key = t * RASTER_DEPTH_BINS + b;
+      uint c = counts[key];
+      uint k = min(c, push.tileBudget - kept);
+      keys[key] = uvec2(kept, k);
+      counts[key] = 0u;
+      kept += k;
+      requested += c;
+    }
+    if (requested > 0u) atomicAdd(state.entries.x, requested);
+    if (requested > kept) atomicAdd(state.entries.y, requested - kept);
+  }
+  rows[0][lane] = kept;
+  barrier();
+  uint src = 0u;
+  for (uint offset = 1u; offset < RASTER_SCAN_SIZE; offset <<= 1u) {
+    uint value = rows[src][lane];
+    if (lane >= offset) value += rows[src][lane - offset];
+    rows[1u - src][lane] = value;
+    src = 1u - src;
+    barrier();
+  }
+  if (t < push.tilesX * push.tilesY) tiles[t] = uvec2(rows[src][lane] - kept, kept);
+  if (lane == RASTER_SCAN_SIZE - 1u) blocks[t / RASTER_SCAN_SIZE] = rows[src][lane];
+}

@@ -1,0 +1,120 @@
+// Shared by GLSL and C++: the compute strand rasterizer (compute/strand_raster_pass.h, shaders/raster_*.comp;
+// REFERENCES.md §8). One source of truth for bindings, tile and bin sizes, the per-frame state, the push
+// constants and the coverage formula (plain arithmetic, compiled for both languages and tested on the CPU).
+//
+// Buffers (std430; V = S*Q render vertices, E = S*(Q-1) segments, K = tiles * RASTER_DEPTH_BINS keys):
+//   screen     vec4[V]   x, y pixel position (origin top left, pixel centres at +0.5), z = NDC depth,
+//                        w = projected width in pixels (< 0: the vertex is behind the camera)
+//   colors     uvec2[V]  packHalf2x16(r, g), packHalf2x16(b, view depth): the shaded radiance
+//   state      RasterState
+//   counts     uint[K]   segments per (tile, depth bin); the scan turns them into scatter cursors
+//   keys       uvec2[K]  x = offset of the key within its tile's list, y = entries kept (tile budget)
+//   tiles      uvec2[T]  x = offset of the tile's list within its scan block, y = entries kept
+//   blocks     uint[ceil(T / RASTER_SCAN_SIZE)]  offset of each scan block in the list
+//   list       uint[capacity]  per tile, depth bins near to far: the global index of the segment's first
+//                              vertex (strand * Q + k), | RASTER_LAST_SEGMENT for the strand's last segment
+//                              (no integer division in the fine loop: CPU SIMD has none)
+// Key of tile t and bin b: t * RASTER_DEPTH_BINS + b. Tile t covers pixels [tx*8, tx*8+8) x [ty*8, ty*8+8).
+#ifndef HP_SHARED_RASTER_H
+#define HP_SHARED_RASTER_H
+#include "common.h"
+
+#ifdef __cplusplus
+#include <cmath>
+
+#include <glm/glm.hpp>
+#define HP_RASTER_FN inline
+namespace hp::gpu {  // the GLSL built-ins, as shared/marschner.h declares them
+using glm::clamp;
+using glm::max;
+using glm::min;
+using std::abs;
+}  // namespace hp::gpu
+#else
+#define HP_RASTER_FN
+#endif
+
+HP_BEGIN
+HP_CONST(uint, RASTER_TILE_SIZE, 8)             // pixels per tile side; one fine workgroup per tile
+HP_CONST(uint, RASTER_FINE_SIZE, 64)            // = RASTER_TILE_SIZE^2 invocations, one per pixel
+HP_CONST(uint, RASTER_DEPTH_BINS, 32)           // depth bins per tile across the hair's view-depth range
+HP_CONST(uint, RASTER_WORKGROUP_SIZE, 64)       // vertex and segment passes
+HP_CONST(uint, RASTER_SCAN_SIZE, 256)           // tiles per scan block; the block scan is one workgroup
+HP_CONST(float, RASTER_OPAQUE_T, 1.0f / 255.0f) // a pixel stops compositing below this transmittance
+HP_CONST(uint, RASTER_LAST_SEGMENT, 0x80000000u) // list entry flag: the segment ends at the strand's tip
+
+// Set 0 of every raster pipeline; 0-9 are the strand shading bindings (shared/render.h), same numbers.
+HP_CONST(uint, RASTER_BINDING_SCREEN, 10)
+HP_CONST(uint, RASTER_BINDING_COLORS, 11)
+HP_CONST(uint, RASTER_BINDING_STATE, 12)
+HP_CONST(uint, RASTER_BINDING_COUNTS, 13)
+HP_CONST(uint, RASTER_BINDING_KEYS, 14)
+HP_CONST(uint, RASTER_BINDING_TILES, 15)
+HP_CONST(uint, RASTER_BINDING_BLOCKS, 16)
+HP_CONST(uint, RASTER_BINDING_LIST, 17)
+HP_CONST(uint, RASTER_BINDING_DEPTH, 18)   // sampler2D: the head's depth (single sample), 1 = nothing
+HP_CONST(uint, RASTER_BINDING_OUTPUT, 19)  // storage image rgba16f: premultiplied hair radiance, a = 1 - T
+
+// The composite pass (composite.frag) samples the output image.
+HP_CONST(uint, COMPOSITE_BINDING_HAIR, 0)
+
+HP_CONST(uint, RASTER_MODE_SHADE, 0)    // per vertex: shade + project (+ view-depth range)
+HP_CONST(uint, RASTER_MODE_COUNT, 1)    // per segment: count into (tile, bin) keys
+HP_CONST(uint, RASTER_MODE_SCATTER, 2)  // per segment: write ids into the tile lists
+
+// Written by the passes each frame; the frame recorder re-arms it with vkCmdUpdateBuffer.
+struct RasterState {
+  uvec4 depthBits;  // x, y = orderedFromFloat of the min / max view depth of the visible vertices
+  uvec4 entries;    // x = (segment, tile) entries requested, y = dropped by the tile budget,
+                    // z = dropped past the list capacity, w = entries kept
+};
+
+struct RasterPush {
+  uint firstStrand;   // global index of the chunk's first strand
+  uint strandCount;   // strands in the chunk
+  uint mode;          // RASTER_MODE_*
+  uint tilesX;
+  uint tilesY;
+  uint tileBudget;    // entries kept per tile (the nearest bins first)
+  uint capacity;      // list entries
+  uint width;         // output pixels
+  uint height;
+  uint verticesPerStrand;  // Q
+  uint pad0;
+  uint pad1;
+};
+HP_END
+
+// Coverage of a pixel (unit square centred on its centre) by a straight band of width w (pixels) whose
+// centre line passes at signed distance d (pixels) from the centre, with unit normal n: the exact area
+// of the intersection. The square's projection onto n is the sum of two uniform variables of
+// half-widths a = |n.x|/2 and b = |n.y|/2; its CDF is (R(x+a+b) - R(x+a-b) - R(x-a+b) + R(x-a-b)) / 4ab
+// with R(x) = max(x, 0)^2 / 2 (linear when the band is axis-aligned), and the band covers
+// CDF(d + w/2) - CDF(d - w/2). The 1D box estimate of REFERENCES §8 is the axis-aligned case.
+HP_BEGIN
+HP_RASTER_FN float rasterRamp(float x) {
+  float m = max(x, 0.0f);
+  return 0.5f * m * m;
+}
+
+HP_RASTER_FN float rasterSquareCdf(float x, float a, float b) {
+  float hi = max(a, b);
+  float lo = min(a, b);
+  if (lo < 1.0e-3f) return clamp((x + hi) / (2.0f * hi), 0.0f, 1.0f);
+  float s = rasterRamp(x + hi + lo) - rasterRamp(x + hi - lo) - rasterRamp(x - hi + lo) + rasterRamp(x - hi - lo);
+  return clamp(s / (4.0f * hi * lo), 0.0f, 1.0f);
+}
+
+HP_RASTER_FN float rasterBandCoverage(float d, float w, float nx, float ny) {
+  float a = 0.5f * abs(nx);
+  float b = 0.5f * abs(ny);
+  return max(rasterSquareCdf(d + 0.5f * w, a, b) - rasterSquareCdf(d - 0.5f * w, a, b), 0.0f);
+}
+HP_END
+
+#ifdef __cplusplus
+static_assert(sizeof(hp::gpu::RasterState) == 32);
+static_assert(sizeof(hp::gpu::RasterPush) == 48);
+static_assert(hp::gpu::RASTER_FINE_SIZE == hp::gpu::RASTER_TILE_SIZE * hp::gpu::RASTER_TILE_SIZE);
+#endif
+#endif
