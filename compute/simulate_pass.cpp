@@ -17,6 +17,7 @@ const vk::Binding kBindings[] = {
     {gpu::SIM_BINDING_POSITIONS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
     {gpu::SIM_BINDING_PREVIOUS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
     {gpu::SIM_BINDING_REST, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
+    {gpu::SIM_BINDING_SDF, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
 };
 
 VkDeviceSize particleBytes(const vk::Context& ctx, const GuideSet& guides) {
@@ -52,7 +53,8 @@ SimulatePass::SimulatePass(const vk::Context& ctx, const HairAsset& asset, const
       guideCount_(asset.guides.guideCount()),
       particlesPerGuide_(asset.guides.particlesPerGuide),
       rest_(guideRestPose(asset.guides)),
-      colliders_(asset.colliders) {
+      colliders_(asset.colliders),
+      sdf_(ctx, asset.sdf) {
   params_.validate();
   if (colliders_.size() > gpu::SIM_MAX_COLLIDERS)
     throw Error("simulation: " + std::to_string(colliders_.size()) + " colliders, at most " +
@@ -71,6 +73,7 @@ SimulatePass::SimulatePass(const vk::Context& ctx, const HairAsset& asset, const
   set_.writeStorageBuffer(gpu::SIM_BINDING_POSITIONS, positions_.handle());
   set_.writeStorageBuffer(gpu::SIM_BINDING_PREVIOUS, previous_.handle());
   set_.writeStorageBuffer(gpu::SIM_BINDING_REST, restBuffer_.handle());
+  set_.writeStorageBuffer(gpu::SIM_BINDING_SDF, sdf_.buffer().handle());
   static_assert(gpu::SIM_SPEC_PARTICLES == 0, "ComputePipeline numbers specialization constants from 0");
   pipeline_ = vk::ComputePipeline(ctx, "simulate.comp", gpu::SIM_WORKGROUP_SIZE, {set_.layout()}, 0, "simulate",
                                   {particlesPerGuide_});

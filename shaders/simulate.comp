@@ -3,7 +3,7 @@
 // the moving scalp, Verlet-integrate the free particles (gravity, wind, damping, speed clamp), pull
 // mildly toward the rest pose, then iterate length constraints (Gauss-Seidel, root to tip; the last
 // sweep follow-the-leader) and pearl collisions, collisions last so the final state is outside every
-// collider.
+// collider, then the distance grid (sdf_collide.glsl), so the final state is outside the head mesh.
 // tests/compute/sim_reference.cpp is the same algorithm in double precision; keep them in step.
 #include "shared/simulate.h"
 #include "common.glsl"
@@ -13,6 +13,8 @@ layout(std140, binding = SIM_BINDING_FRAME) uniform Frame { SimFrame frame; };
 layout(std430, binding = SIM_BINDING_POSITIONS) buffer Positions { vec4 positions[]; };
 layout(std430, binding = SIM_BINDING_PREVIOUS) buffer Previous { vec4 previous[]; };
 layout(std430, binding = SIM_BINDING_REST) readonly buffer Rest { vec4 rest[]; };
+#define SDF_BINDING SIM_BINDING_SDF
+#include "sdf_collide.glsl"
 
 // Particles per guide, specialised to the asset's P when the pipeline is built, so the strand's arrays
 // have their exact size and constant-bound loops can be unrolled into registers.
@@ -105,6 +107,11 @@ void collide(uint base, uint n, mat4 head) {
   }
 }
 
+// The distance-grid collider after the spheres: the grid is the head's own surface.
+void collideSdf(uint n, mat4 head, mat4 headInverse) {
+  for (uint i = 1u; i < n; ++i) x[i] = sdfKeepOutside(x[i], head, headInverse, frame.pearlRadius);
+}
+
 void main() {
   uint guide = hpThreadId(SIM_WORKGROUP_SIZE);
   if (guide >= frame.guideCount) return;
@@ -128,6 +135,7 @@ void main() {
     mat4 head = frame.teleport != 0u ? frame.headTo : frame.headFrom * (1.0 - t) + frame.headTo * t;
     float gust = 1.0 + frame.wind.w * sin(6.28318530718 * frame.gustFrequency * (frame.time + h * float(s + 1u)) + phase);
     vec3 accel = frame.gravity.xyz + frame.wind.xyz * gust;
+    mat4 headInverse = inverse(head);
     integrate(base, n, head, accel, h);
     pullTowardRest(base, n, head);
     for (uint it = 0u; it < frame.iterations; ++it) {
@@ -135,6 +143,7 @@ void main() {
       // follow-the-leader so lengths are exact before the final collision push.
       satisfyLengths(base, n, it + 1u == frame.iterations);
       collide(base, n, head);
+      collideSdf(n, head, headInverse);
     }
   }
   for (uint i = 0u; i < n; ++i) {

@@ -60,12 +60,21 @@ struct RenderSpec {
   std::uint32_t msaa = 4;  // 1, 2, 4 or 8
 };
 
+// A closed OBJ mesh the hair is kept outside of, through a distance grid built at load time.
+struct MeshColliderSpec {
+  std::filesystem::path path;
+  float cell = 0.0f;  // grid spacing (scene units); 0: 1/64 of the mesh's longest side
+};
+
 struct Scene {
   std::string source = "<defaults>";  // where the scene came from, for messages
   ModelSpec model;
   GrowthOptions growth;  // defaults to defaultHeadGrowth()
   DensityOptions density;
-  std::optional<std::vector<SphereCollider>> colliders;  // absent: the model's own (default head, fitted)
+  // Present: replaces the model's colliders (the default head's field included) with these spheres
+  // and one distance grid built from colliderMeshes (if any). Absent: the model's own.
+  std::optional<std::vector<SphereCollider>> colliders;
+  std::vector<MeshColliderSpec> colliderMeshes;
   HairMaterial material;
   LightSpec light;
   CameraSpec camera;

@@ -18,6 +18,7 @@ HP_CONST(uint, SIM_BINDING_FRAME, 0)
 HP_CONST(uint, SIM_BINDING_POSITIONS, 1)
 HP_CONST(uint, SIM_BINDING_PREVIOUS, 2)
 HP_CONST(uint, SIM_BINDING_REST, 3)
+HP_CONST(uint, SIM_BINDING_SDF, 4)           // the head's distance grid (shared/sdf.h), read only
 
 struct SimFrame {
   mat4 headFrom;         // head-to-world transform at the start of the frame
