@@ -80,6 +80,10 @@ struct Scene {
   CameraSpec camera;
   RenderSpec render;
   SimulationParams simulation;
+  // Set when a model is loaded without a scene: what was guessed (units, up axis; empty: nothing)
+  // and whether the camera should be framed on the hair once it is built.
+  std::string guessed;
+  bool fitCamera = false;
 
   Scene();
 };

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "engine/error.h"
+#include "engine/hair/camera_fit.h"
 #include "engine/render/png_file.h"
 #include "engine/render/render_job.h"
 #include "samples/cli/command.h"
@@ -119,9 +120,34 @@ hp::RenderRequest makeRequest(const RenderOptions& o, const CLI::App& cmd) {
   return r;
 }
 
+// A model loaded without a scene: frame the camera on its hair (the orbit and elevation stay). Any
+// frame: refuse one in which no guide particle falls inside the view, naming why.
+nlohmann::json frameCamera(hp::Scene& scene, const hp::HairAsset& asset) {
+  nlohmann::json guessed = nlohmann::json::object();
+  if (scene.fitCamera) {
+    hp::fitCameraToPoints(scene.camera, asset.guides.positions);
+    const auto& c = scene.camera;
+    guessed = {{"model", scene.guessed},
+               {"camera", {{"target", {c.target.x, c.target.y, c.target.z}}, {"distance", c.distance}}}};
+    std::cerr << "hairpipe: guessed " << scene.guessed << "; camera framed on the hair (target " << c.target.x
+              << ", " << c.target.y << ", " << c.target.z << ", distance " << c.distance << ")\n";
+  }
+  const float aspect = float(scene.render.width) / float(scene.render.height);
+  if (hp::pointsInView(scene.camera, aspect, asset.guides.positions) == 0) {
+    const auto& c = scene.camera;
+    throw hp::Error("no hair is visible: all " + std::to_string(asset.guides.positions.size()) +
+                    " guide particles of " + asset.name + " are outside the camera's view (target " +
+                    std::to_string(c.target.x) + ", " + std::to_string(c.target.y) + ", " + std::to_string(c.target.z) +
+                    ", distance " + std::to_string(c.distance) + ", orbit " + std::to_string(c.orbitDeg) +
+                    "); check the model's units/up axis or the camera");
+  }
+  return guessed;
+}
+
 void runRender(const RenderOptions& o, const CLI::App& cmd) {
   hp::RenderRequest request = makeRequest(o, cmd);
   hp::HairAsset asset = hp::buildSceneAsset(request.scene);
+  const nlohmann::json guessed = frameCamera(request.scene, asset);
   auto ctx = hp::cli::createContext(o.scene);
   hp::RenderResult result = hp::renderStill(*ctx, asset, request);
   hp::cli::checkValidation(*ctx);
@@ -137,6 +163,7 @@ void runRender(const RenderOptions& o, const CLI::App& cmd) {
                            {"vertices_per_strand", result.verticesPerStrand},
                            {"lut_mode", o.lutMode}, {"device", ctx->properties().deviceName},
                            {"gpu_ms", passes}};
+  if (!guessed.empty()) report["guessed"] = guessed;
   if (result.opacity) report["opacity_dump"] = o.dumpOpacity;
   if (result.strandDump) report["strands_dump"] = o.dumpStrands;
   if (o.json) {
