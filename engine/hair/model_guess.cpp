@@ -7,6 +7,7 @@
 #include "engine/hair/fit_sphere.h"
 #include "engine/hair/hair_file.h"
 #include "engine/hair/obj_import.h"
+#include "engine/hair/tfx_file.h"
 
 namespace hp {
 float unitScale(const std::string& units) {
@@ -81,7 +82,7 @@ ModelGuess guessModelFileTransform(const std::filesystem::path& path, std::optio
   if (ext == ".obj") {
     roots = loadObjScalp(path).positions;
   } else {
-    const HairFileData d = readHairFile(path);
+    const HairFileData d = ext == ".tfx" ? tfxToHair(readTfxFile(path)) : readHairFile(path);
     const auto offsets = d.strandOffsets();
     for (std::uint32_t s = 0; s < d.strandCount; ++s) {
       roots.push_back(d.points[offsets[s]]);

@@ -29,7 +29,7 @@ struct ModelGuess {
 ModelGuess guessModelTransform(std::span<const glm::vec3> roots, std::span<const glm::vec3> tips,
                                std::optional<std::string> units = {}, std::optional<UpAxis> up = {});
 
-// The same for a model file (.hair: roots and tips of its strands; .obj: the scalp's vertices).
+// The same for a model file (.hair/.tfx: roots and tips of its strands; .obj: the scalp's vertices).
 ModelGuess guessModelFileTransform(const std::filesystem::path& path, std::optional<std::string> units = {},
                                    std::optional<UpAxis> up = {});
 

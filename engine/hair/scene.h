@@ -21,11 +21,11 @@
 
 namespace hp {
 struct ModelSpec {
-  enum class Kind { Default, Hair, Obj };
+  enum class Kind { Default, Hair, Tfx, Obj };
   Kind kind = Kind::Default;
   std::filesystem::path path;   // absolute, or relative to the working directory
   ModelTransform transform;     // for .hair and .obj models
-  bool keepStrands = false;     // .hair: keep the strands' own points instead of resampling
+  bool keepStrands = false;     // .hair/.tfx: keep the strands' own points instead of resampling
 };
 
 // One light. `direction` always points from the lit hair toward the light: for a directional light

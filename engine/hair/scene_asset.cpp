@@ -7,6 +7,7 @@
 #include "engine/hair/obj_import.h"
 #include "engine/hair/scene.h"
 #include "engine/hair/sdf_mesh.h"
+#include "engine/hair/tfx_file.h"
 
 namespace hp {
 namespace {
@@ -62,6 +63,8 @@ HairAsset modelAsset(const Scene& scene, const std::shared_ptr<const SdfGrid>& g
   switch (scene.model.kind) {
     case ModelSpec::Kind::Hair:
       return importHairAsset(readHairFile(scene.model.path), importOptions(scene), scene.model.path.string());
+    case ModelSpec::Kind::Tfx:
+      return importHairAsset(tfxToHair(readTfxFile(scene.model.path)), importOptions(scene), scene.model.path.string());
     case ModelSpec::Kind::Obj:
       return objAsset(scene, grid);
     case ModelSpec::Kind::Default:

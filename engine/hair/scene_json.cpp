@@ -29,8 +29,9 @@ ModelSpec::Kind kindOf(const std::string& source, JsonObject& o) {
   std::string ext = std::filesystem::path(source).extension().string();
   for (auto& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   if (ext == ".hair") return ModelSpec::Kind::Hair;
+  if (ext == ".tfx") return ModelSpec::Kind::Tfx;
   if (ext == ".obj") return ModelSpec::Kind::Obj;
-  o.fail("source", "expected \"default\" or a path ending in .hair or .obj, got \"" + source + "\"");
+  o.fail("source", "expected \"default\" or a path ending in .hair, .tfx or .obj, got \"" + source + "\"");
 }
 
 void readModel(JsonObject& root, ModelSpec& model, const std::filesystem::path& baseDir) {

@@ -8,7 +8,7 @@
 namespace hp::cli {
 void addSceneOptions(CLI::App& cmd, SceneOptions& options) {
   auto* scene = cmd.add_option("--scene", options.scenePath, "Scene file (JSON; schema in engine/hair/README.md)");
-  cmd.add_option("--model", options.model, "Model when no scene is given: default, FILE.hair or FILE.obj")
+  cmd.add_option("--model", options.model, "Model when no scene is given: default, FILE.hair, FILE.tfx or FILE.obj")
       ->excludes(scene);
   cmd.add_option("--units", options.units, "Model units: m, cm or mm (default: the scene's, else guessed)");
   cmd.add_option("--up", options.up, "Model up axis: y or z (default: the scene's, else guessed)");
@@ -41,10 +41,12 @@ Scene loadScene(const SceneOptions& options) {
   const std::string ext = path.extension().string();
   if (ext == ".hair")
     scene.model.kind = ModelSpec::Kind::Hair;
+  else if (ext == ".tfx")
+    scene.model.kind = ModelSpec::Kind::Tfx;
   else if (ext == ".obj")
     scene.model.kind = ModelSpec::Kind::Obj;
   else
-    throw Error("--model " + options.model + ": expected 'default', a .hair file or an .obj file");
+    throw Error("--model " + options.model + ": expected 'default', a .hair, .tfx or .obj file");
   scene.model.path = path;
   scene.source = options.model;
   const ModelGuess guess = guessModelFileTransform(

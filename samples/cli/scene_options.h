@@ -1,6 +1,6 @@
 #pragma once
 // Contract: the options every device command shares to say what to load and where to run it:
-//   --scene FILE.json | --model default|FILE.hair|FILE.obj, --units m|cm|mm, --up y|z,
+//   --scene FILE.json | --model default|FILE.hair|FILE.tfx|FILE.obj, --units m|cm|mm, --up y|z,
 //   --device NAME|INDEX, --validation.
 // loadScene() returns the scene file's content, or the default scene with the chosen model; a model
 // without a scene gets its units and up axis guessed (--units/--up override) and a camera framed on
