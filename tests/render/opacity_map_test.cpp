@@ -11,6 +11,7 @@
 #include "compute/bounds_pass.h"
 #include "engine/error.h"
 #include "engine/hair/default_head.h"
+#include "engine/frame_recorder.h"
 #include "engine/hair_system.h"
 #include "engine/render/opacity_capture.h"
 #include "engine/render/opacity_pass.h"
@@ -36,9 +37,10 @@ struct StrandSet {
   }
 };
 
-// Bounds + opacity passes over hand-made strands, recorded as HairSystem records them.
+// Bounds + opacity passes over hand-made strands, recorded as the Renderer records them.
 struct ShadowRig {
   std::unique_ptr<hp::compute::StrandBuffers> buffers;
+  std::unique_ptr<hp::render::ShadowMaps> maps;
   std::unique_ptr<hp::compute::BoundsPass> bounds;
   std::unique_ptr<hp::render::OpacityPass> opacity;
 
@@ -52,20 +54,22 @@ struct ShadowRig {
     for (const auto& chunk : buffers->chunks())
       hp::vk::uploadBytes(ctx, chunk.positions, set.positions.data() + std::size_t(chunk.range.firstStrand) * set.q,
                           VkDeviceSize(chunk.range.strandCount) * set.q * sizeof(glm::vec4), hp::vk::BufferUse::VertexRead);
-    bounds = std::make_unique<hp::compute::BoundsPass>(ctx, *buffers);
-    opacity = std::make_unique<hp::render::OpacityPass>(ctx, *buffers, hp::HeadMesh{}, bounds->lightSpace(), settings);
+    maps = std::make_unique<hp::render::ShadowMaps>(ctx, settings);
+    bounds = std::make_unique<hp::compute::BoundsPass>(ctx, *buffers, maps->lightSpace());
+    opacity = std::make_unique<hp::render::OpacityPass>(ctx, *buffers, hp::HeadMesh{}, *maps);
   }
 
   OpacityCapture run(const hp::vk::Context& ctx, const hp::compute::ShadowLight& light, float marginTexels = 2.0f) {
     hp::compute::BoundsFraming framing;
-    framing.resolution = opacity->settings().resolution;
+    framing.resolution = maps->settings().resolution;
     framing.marginTexels = marginTexels;
     hp::vk::submitAndWait(ctx, [&](VkCommandBuffer cmd) {
       // The uploads were transfers of an earlier submission; the bounds read them in compute.
       hp::vk::memoryBarrier(cmd, hp::vk::BufferUse::TransferDst, hp::vk::BufferUse::ComputeRead);
-      hp::recordShadowPasses(cmd, *bounds, *opacity, light, framing, glm::mat4(1.0f));
+      const hp::ShadowCaster caster{bounds.get(), opacity.get(), glm::mat4(1.0f)};
+      hp::recordShadowPasses(cmd, *maps, std::span(&caster, 1), light, framing);
     }, "shadow rig");
-    return hp::render::captureOpacity(ctx, opacity->image(), bounds->lightSpace(), opacity->settings(),
+    return hp::render::captureOpacity(ctx, maps->image(), maps->lightSpace(), maps->settings(),
                                       glm::normalize(light.towardLight));
   }
 };
@@ -428,7 +432,7 @@ TEST_F(VulkanTest, OpacityOfASmallHeadSceneMatchesTheCpuReference) {
     hair.recordUpdate(cmd, hp::HeadMotion{});
     hair.recordPrepareDraw(cmd, view);
   }, "head scene frame");
-  const OpacityCapture c = hp::render::captureOpacity(*ctx, hair.opacity().image(), hair.bounds().lightSpace(),
+  const OpacityCapture c = hp::render::captureOpacity(*ctx, hair.shadows().image(), hair.shadows().lightSpace(),
                                                       settings.opacity, view.light.direction);
   const hp::compute::StrandData strands = hp::compute::readRenderStrands(*ctx, hair.strands(), hp::vk::BufferUse::VertexRead);
 
