@@ -21,6 +21,7 @@ const vk::Binding kBindings[] = {
     {gpu::SIM_BINDING_ROOTS_PREV, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
     {gpu::SIM_BINDING_BONES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
     {gpu::SIM_BINDING_SKIN, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
+    {gpu::SIM_BINDING_SDF, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
 };
 
 VkDeviceSize particleBytes(const vk::Context& ctx, const GuideSet& guides) {
@@ -56,7 +57,8 @@ SimulatePass::SimulatePass(const vk::Context& ctx, const HairAsset& asset, const
       guideCount_(asset.guides.guideCount()),
       particlesPerGuide_(asset.guides.particlesPerGuide),
       rest_(guideRestPose(asset.guides)),
-      scalp_(ctx, scalp, rest_, std::max(1u, asset.guides.particlesPerGuide), initialHead) {
+      scalp_(ctx, scalp, rest_, std::max(1u, asset.guides.particlesPerGuide), initialHead),
+      sdf_(ctx, asset.sdf) {
   params_.validate();
   setColliders(asset.colliders);
   const VkDeviceSize bytes = particleBytes(ctx, asset.guides);
@@ -71,6 +73,7 @@ SimulatePass::SimulatePass(const vk::Context& ctx, const HairAsset& asset, const
   set_.writeStorageBuffer(gpu::SIM_BINDING_PREVIOUS, previous_.handle());
   set_.writeStorageBuffer(gpu::SIM_BINDING_REST, restBuffer_.handle());
   scalp_.writeDescriptors(set_);
+  set_.writeStorageBuffer(gpu::SIM_BINDING_SDF, sdf_.buffer().handle());
   static_assert(gpu::SIM_SPEC_PARTICLES == 0, "ComputePipeline numbers specialization constants from 0");
   pipeline_ = vk::makeComputePipeline(ctx, library, "simulate.comp", gpu::SIM_WORKGROUP_SIZE, {set_.layout()}, 0, "simulate",
                                   {particlesPerGuide_});

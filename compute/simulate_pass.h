@@ -2,13 +2,15 @@
 // Contract: the guide simulation on the device (REFERENCES.md §2). Owns the guide particle buffers
 // (positions, previous, rest; layout in shaders/shared/simulate.h), its frame uniform block, pipeline
 // and descriptor set. record() writes this frame's constants into the command buffer and dispatches
-// one invocation per guide; nothing is read back. positions() is what tessellation reads.
+// one invocation per guide; nothing is read back. positions() is what tessellation reads. The asset's
+// distance grid (if any) is a separate read-only binding (SdfBuffer), uploaded once.
 // Barriers: record() guards its own uniform block; the caller orders positions()/previous() between
 // passes and frames (before: any earlier ComputeWrite/reads finished; after: BufferUse::ComputeWrite).
 #include <glm/glm.hpp>
 
 #include <span>
 
+#include "compute/sdf_buffer.h"
 #include "engine/hair/hair_asset.h"
 #include "compute/scalp_input.h"
 #include "engine/hair/sim_params.h"
@@ -54,6 +56,7 @@ class SimulatePass {
   const std::vector<glm::vec4>& rest() const { return rest_; }
   const std::vector<SphereCollider>& colliders() const { return colliders_; }
   const std::vector<CapsuleCollider>& capsules() const { return capsules_; }
+  const std::shared_ptr<const SdfGrid>& sdf() const { return sdf_.grid(); }
 
  private:
   gpu::SimFrame frameConstants(const HeadMotion& motion) const;
@@ -70,6 +73,7 @@ class SimulatePass {
   vk::Buffer previous_;
   vk::Buffer restBuffer_;
   vk::Buffer frame_;
+  SdfBuffer sdf_;
   vk::DescriptorSet set_;
   std::shared_ptr<const vk::ComputePipeline> pipeline_;
   bool frameWritten_ = false;

@@ -19,6 +19,7 @@
 
 #include "engine/error.h"
 #include "engine/hair/default_head.h"
+#include "engine/hair/head_sdf.h"
 #include "engine/renderer.h"
 #include "engine/shading/material_color.h"
 #include "tools/png_file.h"
@@ -218,9 +219,7 @@ int run(bool validation, std::uint32_t frames, const std::string& out) {
           hp::buildDefaultHeadAsset(hp::defaultHeadGrowth(), {hp::DensityOptions::Mode::Total, 8, 4000, 7});
       const hp::HairAsset rigidAsset =
           hp::buildDefaultHeadAsset(hp::defaultHeadGrowth(), {hp::DensityOptions::Mode::Total, 8, 2500, 11});
-      const glm::vec3 pivot = std::max_element(skinnedAsset.colliders.begin(), skinnedAsset.colliders.end(),
-                                               [](const auto& a, const auto& b) { return a.radius < b.radius; })
-                                  ->center;  // the cranium: the largest collider
+      const glm::vec3 pivot = hp::kCraniumCenter;  // the jaw bone turns about the cranium's center
       hp::InstanceSettings skinned;
       skinned.scalp = jawSkin(skinnedAsset, pivot);
       hp::InstanceSettings rigid;

@@ -3,7 +3,7 @@
 // the moving scalp, Verlet-integrate the free particles (gravity, wind, damping, speed clamp), pull
 // mildly toward the rest pose, then iterate length constraints (Gauss-Seidel, root to tip; the last
 // sweep follow-the-leader) and pearl collisions, collisions last so the final state is outside every
-// collider.
+// collider, then the distance grid (sdf_collide.glsl), so the final state is outside the head mesh.
 // tests/compute/sim_reference.cpp is the same algorithm in double precision; keep them in step.
 #include "shared/simulate.h"
 #include "common.glsl"
@@ -17,6 +17,8 @@ layout(std430, binding = SIM_BINDING_ROOTS) readonly buffer Roots { vec4 roots[]
 layout(std430, binding = SIM_BINDING_ROOTS_PREV) buffer RootsPrev { vec4 rootsPrev[]; };
 layout(std430, binding = SIM_BINDING_BONES) readonly buffer Bones { mat4 bones[]; };
 layout(std430, binding = SIM_BINDING_SKIN) readonly buffer Skin { SkinWeights skin[]; };
+#define SDF_BINDING SIM_BINDING_SDF
+#include "sdf_collide.glsl"
 
 // Particles per guide, specialised to the asset's P when the pipeline is built, so the strand's arrays
 // have their exact size and constant-bound loops can be unrolled into registers.
@@ -160,6 +162,11 @@ void collide(uint base, uint n, mat4 head) {
   }
 }
 
+// The distance-grid collider after the spheres: the grid is the head's own surface.
+void collideSdf(uint n, mat4 head, mat4 headInverse) {
+  for (uint i = 1u; i < n; ++i) x[i] = sdfKeepOutside(x[i], head, headInverse, frame.pearlRadius);
+}
+
 void main() {
   uint guide = hpThreadId(SIM_WORKGROUP_SIZE);
   if (guide >= frame.guideCount) return;
@@ -186,6 +193,7 @@ void main() {
     mat4 root = frame.teleport != 0u ? rootTo : rootFrom * (1.0 - t) + rootTo * t;
     float gust = 1.0 + frame.wind.w * sin(6.28318530718 * frame.gustFrequency * (frame.time + h * float(s + 1u)) + phase);
     vec3 accel = frame.gravity.xyz + frame.wind.xyz * gust;
+    mat4 headInverse = inverse(head);
     integrate(base, n, root, accel, h);
     pullTowardRest(base, n, root);
     for (uint it = 0u; it < frame.iterations; ++it) {
@@ -193,6 +201,7 @@ void main() {
       // follow-the-leader so lengths are exact before the final collision push.
       satisfyLengths(base, n, it + 1u == frame.iterations);
       collide(base, n, head);
+      collideSdf(n, head, headInverse);
     }
   }
   for (uint i = 0u; i < n; ++i) {

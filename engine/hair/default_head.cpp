@@ -4,29 +4,11 @@
 
 #include "engine/hair/convex_hull.h"
 #include "engine/hair/head_mesh.h"
+#include "engine/hair/head_sdf.h"
+#include "engine/hair/level_set_mesh.h"
 
 namespace hp {
 namespace {
-const glm::vec3 kCraniumRadii{0.088f, 0.098f, 0.098f};  // inside the 0.1 m cranium collider
-
-struct Part {
-  SphereCollider collider;
-  glm::vec3 renderRadii;  // each <= collider.radius
-};
-
-const Part kParts[] = {
-    {{{0.0f, 0.0f, 0.0f}, 0.100f}, kCraniumRadii},                 // cranium
-    {{{0.0f, -0.055f, 0.025f}, 0.068f}, {0.062f, 0.068f, 0.066f}},  // face and jaw
-    {{{0.0f, -0.140f, -0.010f}, 0.055f}, {0.048f, 0.055f, 0.050f}}, // neck, upper
-    {{{0.0f, -0.190f, -0.010f}, 0.055f}, {0.050f, 0.055f, 0.050f}}, // neck, lower
-    {{{0.0f, -0.280f, -0.010f}, 0.100f}, {0.100f, 0.070f, 0.080f}}, // upper back and chest
-    {{{0.120f, -0.260f, -0.010f}, 0.090f}, {0.090f, 0.055f, 0.075f}},  // right shoulder
-    {{{-0.120f, -0.260f, -0.010f}, 0.090f}, {0.090f, 0.055f, 0.075f}}, // left shoulder
-};
-
-// Hairline: a tilted plane through the unit sphere, high at the forehead (+Z), low at the nape.
-bool onScalp(const glm::dvec3& u) { return u.y > -0.1 + 0.6 * u.z; }
-
 // Evenly spread directions (Fibonacci sphere), deterministic.
 std::vector<glm::dvec3> fibonacciSphere(std::uint32_t n) {
   std::vector<glm::dvec3> dirs(n);
@@ -38,20 +20,50 @@ std::vector<glm::dvec3> fibonacciSphere(std::uint32_t n) {
   return dirs;
 }
 
-// Near the cranium hair lies along it: turn toward the downhill tangent (gravity minus its normal
-// part, plus a slight pull inward that the collider turns into sliding), with a backward comb that
-// grows toward the forehead so no strand falls over the face. Away from the head: plain gravity.
-glm::vec3 combDirection(const glm::vec3& position, const glm::vec3& gravity) {
-  const SphereCollider& cranium = kParts[0].collider;
-  glm::vec3 offset = position - cranium.center;
-  float distance = glm::length(offset);
-  glm::vec3 down = glm::normalize(gravity);
-  if (distance > cranium.radius * 1.3f || offset.y < -0.02f) return down;
-  glm::vec3 n = offset / distance;
-  glm::vec3 pull = down + glm::vec3(0.0f, 0.0f, -(0.3f + 3.0f * std::max(0.0f, n.z)));
+constexpr float kPartX = 0.012f;  // the side parting runs front to back at this x, on the crown
+
+// Hair on either side of the parting falls to opposite sides, so no render strand may be interpolated
+// across it (it would cut through the head): scalp triangles on the crown that straddle it are dropped.
+bool straddlesPart(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c) {
+  const bool top = a.y > 0.0f && b.y > 0.0f && c.y > 0.0f;
+  const bool left = a.x < kPartX || b.x < kPartX || c.x < kPartX;
+  const bool right = a.x >= kPartX || b.x >= kPartX || c.x >= kPartX;
+  return top && left && right;
+}
+
+// Near the head hair lies along it: the downhill tangent of gravity plus, on the cranium, a push away
+// from the parting and backward (strongest at the forehead and the temples) so it falls behind the
+// ears and shoulders, never over the face. A slight pull into the head makes the growth slide along
+// the field. Away from the head: gravity, slightly backward.
+glm::vec3 combDirection(const glm::vec3& p, const glm::vec3& gravity) {
+  const glm::vec3 down = glm::normalize(gravity);
+  const glm::vec3 back(0.0f, 0.0f, -1.0f);
+  if (headDistance(p) > 0.025f) return glm::normalize(down + 0.3f * back);
+  const glm::vec3 n = glm::normalize(headGradient(p));
+  glm::vec3 pull = down + back * (0.5f + 3.0f * std::max(0.0f, n.z));
+  if (p.y > -0.02f) pull += glm::vec3(p.x > kPartX ? 1.0f : -1.0f, 0.0f, 0.0f) * 1.5f * std::max(0.0f, n.y);
   glm::vec3 tangent = pull - glm::dot(pull, n) * n;
-  if (glm::length(tangent) < 1e-4f) tangent = glm::vec3(0.0f, 0.0f, -1.0f);
+  if (glm::length(tangent) < 1e-4f) tangent = back;
   return glm::normalize(tangent) - 0.2f * n;
+}
+
+struct Geometry {
+  std::shared_ptr<const SdfGrid> grid;
+  ScalpMesh scalp;
+  HeadMesh mesh;  // scalp marked
+};
+
+const Geometry& geometry() {
+  static const Geometry g = [] {
+    Geometry out;
+    auto grid = std::make_shared<SdfGrid>(makeDefaultHeadGrid());
+    out.scalp = makeDefaultScalp();
+    out.mesh = makeDefaultHeadMesh(*grid);
+    markScalp(out.mesh, out.scalp.positions);
+    out.grid = std::move(grid);
+    return out;
+  }();
+  return g;
 }
 }  // namespace
 
@@ -73,41 +85,34 @@ ScalpMesh makeDefaultScalp(std::uint32_t sphereSamples) {
   auto vertex = [&](std::uint32_t i) {
     if (remap[i] < 0) {
       remap[i] = static_cast<std::int64_t>(positions.size());
-      glm::vec3 u(dirs[i]);
-      positions.push_back(u * kCraniumRadii);
-      normals.push_back(glm::normalize(u / kCraniumRadii));
+      positions.push_back(headSurfaceAlong(glm::vec3(dirs[i])));
+      normals.push_back(glm::normalize(headGradient(positions.back())));
     }
     return static_cast<std::uint32_t>(remap[i]);
   };
-  for (const auto& t : convexHull(dirs))
-    if (onScalp(dirs[t.x]) && onScalp(dirs[t.y]) && onScalp(dirs[t.z]))
-      triangles.emplace_back(vertex(t.x), vertex(t.y), vertex(t.z));
+  auto onScalp = [&](std::uint32_t i) { return aboveHairline(glm::vec3(dirs[i])); };
+  for (const auto& t : convexHull(dirs)) {
+    if (!onScalp(t.x) || !onScalp(t.y) || !onScalp(t.z)) continue;
+    const glm::uvec3 tri(vertex(t.x), vertex(t.y), vertex(t.z));
+    if (!straddlesPart(positions[tri.x], positions[tri.y], positions[tri.z])) triangles.push_back(tri);
+  }
   return buildScalpMesh(std::move(positions), std::move(triangles), std::move(normals), "default scalp");
 }
 
-std::vector<SphereCollider> defaultHeadColliders() {
-  std::vector<SphereCollider> out;
-  for (const auto& part : kParts) out.push_back(part.collider);
-  return out;
-}
+SdfGrid makeDefaultHeadGrid() { return sampleField(headDistance, kHeadFieldLow, kHeadFieldHigh, kDefaultHeadCell); }
 
-HeadMesh makeDefaultHeadMesh() {
-  HeadMesh mesh;
-  for (const auto& part : kParts) appendMesh(mesh, makeEllipsoidMesh(part.collider.center, part.renderRadii));
-  return mesh;
-}
+HeadMesh makeDefaultHeadMesh(const SdfGrid& grid) { return meshZeroLevel(grid, headDistance); }
 
 HairAsset buildDefaultHeadAsset(const GrowthOptions& growth, const DensityOptions& density) {
   growth.validate();
-  ScalpMesh scalp = makeDefaultScalp();
+  const Geometry& geo = geometry();
   HairAsset asset;
   asset.name = "default head";
-  asset.colliders = defaultHeadColliders();
+  asset.sdf = geo.grid;
   auto comb = [&](const glm::vec3& p, std::uint32_t) { return combDirection(p, growth.bendDirection); };
-  asset.guides = growGuides(scalp, growth, asset.colliders, comb);
-  asset.topology = buildInterpolationTopology(asset.guides.roots(), scalp.triangles, density);
-  asset.head = makeDefaultHeadMesh();
-  markScalp(asset.head, asset.guides.roots());
+  asset.guides = growGuides(geo.scalp, growth, {}, comb, headDistance);
+  asset.topology = buildInterpolationTopology(asset.guides.roots(), geo.scalp.triangles, density);
+  asset.head = geo.mesh;
   return asset;
 }
 }  // namespace hp

@@ -1,26 +1,31 @@
 #pragma once
 // Contract: the procedural default head that `make demo` renders, in metres, Y up, face toward +Z,
-// origin at the center of the cranium. The scalp is the part of the cranium ellipsoid behind a
-// hairline (crown, back and sides; not the face), 1,000-4,000 vertices, one guide each. Guides are
-// long and grown with a downward/backward bend (combed back from the forehead) and slid over the
-// colliders, so the rest pose already reads as a head of hair; the simulation settles it further.
-// Colliders: cranium, face, neck (2), upper back and shoulders (2). The head render mesh is one
-// ellipsoid inside each collider, so strands kept outside the colliders stay outside the mesh.
+// origin at the center of the cranium: one signed distance field (head_sdf.h) meshed at load time by
+// marching tetrahedra (render mesh) and kept as a grid (the hair's collider). The scalp is the field's
+// surface above the hairline (crown, back and sides; not the face or the ears), 1,000-4,000
+// vertices, one guide each. Guides are long, parted on the crown, laid along the head, combed back
+// from the forehead and behind the ears, and slid over the field, so the rest pose already reads
+// as a head of hair and stays off the face. The geometry is built once per process (deterministic).
 #include <cstdint>
+#include <memory>
 
 #include "engine/hair/guide_growth.h"
 #include "engine/hair/hair_asset.h"
 #include "engine/hair/scalp_mesh.h"
+#include "engine/hair/sdf_grid.h"
 #include "engine/hair/strand_topology.h"
 
 namespace hp {
+inline constexpr float kDefaultHeadCell = 0.004f;  // grid spacing of the head's field (m)
+
 // The growth options the default head uses unless a scene overrides them.
 GrowthOptions defaultHeadGrowth();
 
 // The scalp alone (vertex count grows with `sphereSamples`: about half of them are on the scalp).
 ScalpMesh makeDefaultScalp(std::uint32_t sphereSamples = 5000);
-std::vector<SphereCollider> defaultHeadColliders();
-HeadMesh makeDefaultHeadMesh();
+// The head's field on a kDefaultHeadCell grid, and the marching-tetrahedra mesh of it (scalp not marked).
+SdfGrid makeDefaultHeadGrid();
+HeadMesh makeDefaultHeadMesh(const SdfGrid& grid);
 
 HairAsset buildDefaultHeadAsset(const GrowthOptions& growth = defaultHeadGrowth(),
                                 const DensityOptions& density = {});

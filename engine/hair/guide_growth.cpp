@@ -70,6 +70,25 @@ glm::vec3 slideOutside(const glm::vec3& prev, const glm::vec3& dir, float len,
   dirOut = glm::normalize(p - prev);
   return p;
 }
+
+// Keeps |p - prev| = len while pushing p out of the field along its gradient.
+glm::vec3 slideOutsideField(const glm::vec3& prev, const glm::vec3& p0, float len, const DistanceFunction& field,
+                            glm::vec3& dirOut) {
+  glm::vec3 p = p0;
+  const float h = 2e-4f;
+  for (int round = 0; round < 8; ++round) {
+    const float d = field(p);
+    if (d >= kGrowthClearance) break;
+    glm::vec3 grad(field(p + glm::vec3(h, 0, 0)) - field(p - glm::vec3(h, 0, 0)),
+                   field(p + glm::vec3(0, h, 0)) - field(p - glm::vec3(0, h, 0)),
+                   field(p + glm::vec3(0, 0, h)) - field(p - glm::vec3(0, 0, h)));
+    if (glm::length(grad) < 1e-12f) break;
+    p += glm::normalize(grad) * (kGrowthClearance * 1.01f - d);
+    p = prev + glm::normalize(p - prev) * len;
+  }
+  dirOut = glm::normalize(p - prev);
+  return p;
+}
 }  // namespace
 
 void GrowthOptions::validate() const {
@@ -90,7 +109,8 @@ float grownGuideLength(const GrowthOptions& options, std::uint32_t guide) {
 }
 
 GuideSet growGuides(const ScalpMesh& scalp, const GrowthOptions& options,
-                    std::span<const SphereCollider> colliders, const BendField& bendField) {
+                    std::span<const SphereCollider> colliders, const BendField& bendField,
+                    const DistanceFunction& field) {
   options.validate();
   const glm::vec3 constantTarget = glm::normalize(options.bendDirection);
   const std::uint32_t P = options.particlesPerGuide;
@@ -107,6 +127,7 @@ GuideSet growGuides(const ScalpMesh& scalp, const GrowthOptions& options,
         dir = turnToward(dir, bendField ? glm::normalize(bendField(guide[k - 1], g)) : constantTarget, options.bend);
       guide[k] = colliders.empty() ? guide[k - 1] + dir * lengths[k - 1]
                                    : slideOutside(guide[k - 1], dir, lengths[k - 1], colliders, dir);
+      if (field) guide[k] = slideOutsideField(guide[k - 1], guide[k], lengths[k - 1], field, dir);
     }
   }
   return guides;

@@ -5,7 +5,9 @@
 // bend = 0 the guide is straight along the normal. With bend > 0 each further segment turns by that
 // fraction of its remaining angle toward bendDirection (gravity, say), so the rest pose already looks
 // like hair rather than a hedgehog. With colliders given, a particle that would land inside one is
-// slid along its surface, keeping the segment length. The result is deterministic.
+// slid along its surface, keeping the segment length; with a distance field given, a particle closer
+// than kGrowthClearance to its zero level is pushed out along its gradient, keeping the segment
+// length. The result is deterministic.
 #include <glm/glm.hpp>
 
 #include <cstdint>
@@ -15,6 +17,7 @@
 #include "engine/hair/collider.h"
 #include "engine/hair/guide_set.h"
 #include "engine/hair/scalp_mesh.h"
+#include "engine/hair/sdf_grid.h"
 
 namespace hp {
 struct GrowthOptions {
@@ -35,8 +38,12 @@ using BendField = std::function<glm::vec3(const glm::vec3& position, std::uint32
 
 // bendField, when set, replaces the constant options.bendDirection; the default head uses it to lay
 // hair along the scalp and comb it back from the forehead.
+// Growth keeps particles this far outside a distance field (a little more than the default pearl).
+inline constexpr float kGrowthClearance = 0.0025f;
+
 GuideSet growGuides(const ScalpMesh& scalp, const GrowthOptions& options,
-                    std::span<const SphereCollider> colliders = {}, const BendField& bendField = {});
+                    std::span<const SphereCollider> colliders = {}, const BendField& bendField = {},
+                    const DistanceFunction& field = {});
 
 // The length guide g gets (before any collider sliding, which keeps it).
 float grownGuideLength(const GrowthOptions& options, std::uint32_t guide);

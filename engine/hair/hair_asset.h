@@ -1,17 +1,20 @@
 #pragma once
 // Contract: everything the GPU side needs to simulate and draw one head of hair, in head space:
 // guides (P particles each, root first, the rest pose), the interpolation topology (triangles of
-// guide indices and one binding per render strand), sphere colliders, and an opaque head mesh to
-// draw. Host-only data; nothing here touches Vulkan. Produced by buildDefaultHeadAsset,
+// guide indices and one binding per render strand), sphere colliders, an optional signed distance
+// grid the hair is kept outside of (the default head's field, or one built from collider meshes),
+// and an opaque head mesh to draw. Host-only data; nothing here touches Vulkan. Produced by buildDefaultHeadAsset,
 // buildSceneAsset or the importers.
 #include <glm/glm.hpp>
 
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "engine/hair/collider.h"
 #include "engine/hair/guide_set.h"
+#include "engine/hair/sdf_grid.h"
 #include "engine/hair/strand_topology.h"
 
 namespace hp {
@@ -29,6 +32,7 @@ struct HairAsset {
   GuideSet guides;
   InterpolationTopology topology;
   std::vector<SphereCollider> colliders;
+  std::shared_ptr<const SdfGrid> sdf;  // null: no distance-field collider (shared: grids are large)
   HeadMesh head;
 };
 }  // namespace hp

@@ -21,11 +21,11 @@
 
 namespace hp {
 struct ModelSpec {
-  enum class Kind { Default, Hair, Obj };
+  enum class Kind { Default, Hair, Tfx, Obj };
   Kind kind = Kind::Default;
   std::filesystem::path path;   // absolute, or relative to the working directory
   ModelTransform transform;     // for .hair and .obj models
-  bool keepStrands = false;     // .hair: keep the strands' own points instead of resampling
+  bool keepStrands = false;     // .hair/.tfx: keep the strands' own points instead of resampling
 };
 
 // One light. `direction` always points from the lit hair toward the light: for a directional light
@@ -68,17 +68,30 @@ struct RenderSpec {
   RasterMode raster = RasterMode::Auto;
 };
 
+// A closed OBJ mesh the hair is kept outside of, through a distance grid built at load time.
+struct MeshColliderSpec {
+  std::filesystem::path path;
+  float cell = 0.0f;  // grid spacing (scene units); 0: 1/64 of the mesh's longest side
+};
+
 struct Scene {
   std::string source = "<defaults>";  // where the scene came from, for messages
   ModelSpec model;
   GrowthOptions growth;  // defaults to defaultHeadGrowth()
   DensityOptions density;
-  std::optional<std::vector<SphereCollider>> colliders;  // absent: the model's own (default head, fitted)
+  // Present: replaces the model's colliders (the default head's field included) with these spheres
+  // and one distance grid built from colliderMeshes (if any). Absent: the model's own.
+  std::optional<std::vector<SphereCollider>> colliders;
+  std::vector<MeshColliderSpec> colliderMeshes;
   HairMaterial material;
   LightSpec light;
   CameraSpec camera;
   RenderSpec render;
   SimulationParams simulation;
+  // Set when a model is loaded without a scene: what was guessed (units, up axis; empty: nothing)
+  // and whether the camera should be framed on the hair once it is built.
+  std::string guessed;
+  bool fitCamera = false;
 
   Scene();
 };

@@ -6,6 +6,8 @@
 #include "engine/hair/hair_import.h"
 #include "engine/hair/obj_import.h"
 #include "engine/hair/scene.h"
+#include "engine/hair/sdf_mesh.h"
+#include "engine/hair/tfx_file.h"
 
 namespace hp {
 namespace {
@@ -20,37 +22,65 @@ HairImportOptions importOptions(const Scene& scene) {
   return o;
 }
 
+// The scene's collider meshes, merged, as one distance grid (null when there are none).
+std::shared_ptr<const SdfGrid> colliderGrid(const Scene& scene) {
+  if (scene.colliderMeshes.empty()) return nullptr;
+  std::vector<glm::vec3> positions;
+  std::vector<glm::uvec3> triangles;
+  float cell = 0.0f;
+  for (const auto& m : scene.colliderMeshes) {
+    const ScalpMesh mesh = loadObjScalp(m.path);
+    const auto base = static_cast<std::uint32_t>(positions.size());
+    positions.insert(positions.end(), mesh.positions.begin(), mesh.positions.end());
+    for (const auto& t : mesh.triangles) triangles.push_back(t + base);
+    if (m.cell > 0.0f) cell = cell > 0.0f ? std::min(cell, m.cell) : m.cell;
+  }
+  try {
+    return std::make_shared<SdfGrid>(meshSdf(positions, triangles, cell));
+  } catch (const Error& e) {
+    throw Error(scene.source + ": /colliders: " + e.what());
+  }
+}
+
 // An OBJ scalp grows guides; without scene colliders a sphere fitted to the scalp keeps hair out.
-HairAsset objAsset(const Scene& scene) {
+// Scene collider meshes also shape the growth (guides slide over their grid).
+HairAsset objAsset(const Scene& scene, const std::shared_ptr<const SdfGrid>& grid) {
   ScalpMesh scalp = loadObjScalp(scene.model.path, scene.model.transform);
   HairImportOptions o = importOptions(scene);
   if (!o.colliders) {
     SphereCollider fitted = fitSphere(scalp.positions).sphere;
     o.colliders = std::vector<SphereCollider>{fitted};
   }
-  GuideSet guides = growGuides(scalp, scene.growth, *o.colliders);
+  DistanceFunction field;
+  if (grid) field = [&](const glm::vec3& p) { return grid->sample(p); };
+  GuideSet guides = growGuides(scalp, scene.growth, *o.colliders, {}, field);
   return assembleImportedAsset(std::move(guides), scalp.triangles, o, scene.model.path.string());
 }
 }  // namespace
 
 namespace {
-HairAsset modelAsset(const Scene& scene) {
+HairAsset modelAsset(const Scene& scene, const std::shared_ptr<const SdfGrid>& grid) {
   switch (scene.model.kind) {
     case ModelSpec::Kind::Hair:
       return importHairAsset(readHairFile(scene.model.path), importOptions(scene), scene.model.path.string());
+    case ModelSpec::Kind::Tfx:
+      return importHairAsset(tfxToHair(readTfxFile(scene.model.path)), importOptions(scene), scene.model.path.string());
     case ModelSpec::Kind::Obj:
-      return objAsset(scene);
+      return objAsset(scene, grid);
     case ModelSpec::Kind::Default:
       break;
   }
-  HairAsset asset = buildDefaultHeadAsset(scene.growth, scene.density);
-  if (scene.colliders) asset.colliders = *scene.colliders;
-  return asset;
+  return buildDefaultHeadAsset(scene.growth, scene.density);
 }
 }  // namespace
 
 HairAsset buildSceneAsset(const Scene& scene) {
-  HairAsset asset = modelAsset(scene);
+  const std::shared_ptr<const SdfGrid> grid = colliderGrid(scene);
+  HairAsset asset = modelAsset(scene, grid);
+  if (scene.colliders) {
+    asset.colliders = *scene.colliders;
+    asset.sdf = grid;
+  }
   if (asset.head.scalp.empty()) markScalp(asset.head, asset.guides.roots());
   return asset;
 }

@@ -28,8 +28,9 @@ ModelSpec::Kind kindOf(const std::string& source, JsonObject& o) {
   std::string ext = std::filesystem::path(source).extension().string();
   for (auto& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   if (ext == ".hair") return ModelSpec::Kind::Hair;
+  if (ext == ".tfx") return ModelSpec::Kind::Tfx;
   if (ext == ".obj") return ModelSpec::Kind::Obj;
-  o.fail("source", "expected \"default\" or a path ending in .hair or .obj, got \"" + excerpt(source) + "\"");
+  o.fail("source", "expected \"default\" or a path ending in .hair, .tfx or .obj, got \"" + excerpt(source) + "\"");
 }
 
 void readModel(JsonObject& root, ModelSpec& model, const std::filesystem::path& baseDir) {
@@ -78,19 +79,33 @@ void readDensity(JsonObject& root, DensityOptions& d) {
   validateSection(d, *o, root.pointer("density"));
 }
 
-void readColliders(JsonObject& root, std::optional<std::vector<SphereCollider>>& colliders) {
+// Each entry is a sphere {"center", "radius"} or a closed OBJ mesh {"mesh", "cell"} (head space,
+// scene units; cell: the distance grid's spacing, default: 1/64 of the mesh's longest side).
+void readColliders(JsonObject& root, Scene& scene, const std::filesystem::path& baseDir) {
   const nlohmann::json* list = root.array("colliders");
   if (!list) return;
-  colliders.emplace();
+  scene.colliders.emplace();
   for (std::size_t i = 0; i < list->size(); ++i) {
     JsonObject c((*list)[i], root.pointer("colliders") + "/" + std::to_string(i), root.file());
+    if (c.has("mesh")) {
+      MeshColliderSpec m;
+      std::string path;
+      c.read("mesh", path);
+      c.read("cell", m.cell);
+      c.finish();
+      requireThat(!path.empty(), c, "mesh", "must name an .obj file");
+      requireThat(std::isfinite(m.cell) && m.cell >= 0.0f, c, "cell", "must be > 0 (or 0: automatic)");
+      m.path = baseDir / path;
+      scene.colliderMeshes.push_back(m);
+      continue;
+    }
     SphereCollider s;
-    if (!c.has("center") || !c.has("radius")) c.fail(c.has("center") ? "radius" : "center", "is required");
+    if (!c.has("center") || !c.has("radius")) c.fail(c.has("center") ? "radius" : "center", "is required (or \"mesh\")");
     c.read("center", s.center);
     c.read("radius", s.radius);
     c.finish();
     requireThat(std::isfinite(s.radius) && s.radius > 0.0f, c, "radius", "must be > 0");
-    colliders->push_back(s);
+    scene.colliders->push_back(s);
   }
 }
 
@@ -212,7 +227,7 @@ Scene parseScene(const std::string& jsonText, const std::string& source, const s
   readModel(root, scene.model, baseDir);
   readGrowth(root, scene.growth);
   readDensity(root, scene.density);
-  readColliders(root, scene.colliders);
+  readColliders(root, scene, baseDir);
   readMaterial(root, scene.material);
   readLight(root, scene.light);
   readCamera(root, scene.camera);

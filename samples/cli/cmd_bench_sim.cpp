@@ -1,6 +1,8 @@
 // `hairpipe bench-sim`: GPU ms per frame of the simulation pass for 1k / 10k / 100k guides (the default
 // head's guides repeated), and its achieved bytes/s as a fraction of vkCmdCopyBuffer bandwidth measured
 // in the same run. Bytes counted per frame: positions and previous read + written, rest pose read.
+// --colliders picks what the hair collides with: the default head's distance grid (sdf, default),
+// seven spheres roughly covering the same head and shoulders (spheres), or nothing (none).
 #include <algorithm>
 #include <iostream>
 
@@ -21,12 +23,21 @@ struct BenchOptions {
   std::string device;
   std::vector<std::uint32_t> guides{1000, 10000, 100000};
   std::uint32_t frames = 20;
+  std::string colliders = "sdf";
   bool json = false;
 };
 
-hp::HairAsset repeatedGuides(const hp::HairAsset& head, std::uint32_t count) {
+// Cranium, face, neck (2), chest and shoulders (2): the cheap stand-in for the head's field.
+const std::vector<hp::SphereCollider> kHeadSpheres = {
+    {{0.0f, 0.0f, -0.01f}, 0.090f},    {{0.0f, -0.055f, 0.025f}, 0.065f}, {{0.0f, -0.140f, -0.02f}, 0.052f},
+    {{0.0f, -0.200f, -0.02f}, 0.055f}, {{0.0f, -0.330f, -0.02f}, 0.100f}, {{0.12f, -0.28f, -0.02f}, 0.07f},
+    {{-0.12f, -0.28f, -0.02f}, 0.07f}};
+
+hp::HairAsset repeatedGuides(const hp::HairAsset& head, std::uint32_t count, const std::string& colliders) {
   hp::HairAsset asset;
-  asset.colliders = head.colliders;
+  if (colliders == "sdf") asset.sdf = head.sdf;
+  else if (colliders == "spheres") asset.colliders = kHeadSpheres;
+  else if (colliders != "none") throw hp::Error("--colliders must be sdf, spheres or none, got '" + colliders + "'");
   asset.guides.particlesPerGuide = head.guides.particlesPerGuide;
   for (std::uint32_t g = 0; g < count; ++g)
     for (const auto& p : head.guides.guide(g % head.guides.guideCount())) asset.guides.positions.push_back(p);
@@ -66,16 +77,18 @@ void runBench(const BenchOptions& o) {
   nlohmann::json report = {{"device", ctx->properties().deviceName},
                            {"iterations", hp::SimulationParams{}.iterations},
                            {"substeps", hp::SimulationParams{}.substeps},
+                           {"colliders", o.colliders},
                            {"results", nlohmann::json::array()}};
   for (std::uint32_t g : o.guides) {
     if (g == 0 || g > 4000000) throw hp::Error("--guides values must be in [1, 4000000]");
-    report["results"].push_back(benchOne(*ctx, repeatedGuides(head, g), o.frames, copy));
+    report["results"].push_back(benchOne(*ctx, repeatedGuides(head, g, o.colliders), o.frames, copy));
   }
   if (o.json) {
     std::cout << report.dump(2) << "\n";
     return;
   }
-  std::cout << "simulation on " << report["device"].get<std::string>() << " (median of " << o.frames << " frames)\n"
+  std::cout << "simulation on " << report["device"].get<std::string>() << " (median of " << o.frames
+            << " frames, colliders: " << o.colliders << ")\n"
             << "guides    ms/frame   GB/s   copy GB/s  of copy\n";
   for (const auto& r : report["results"])
     std::printf("%-9u %-10.3f %-6.3f %-10.2f %.1f%%\n", r["guides"].get<unsigned>(), r["ms"].get<double>(),
@@ -89,6 +102,7 @@ void setupBench(CLI::App& app) {
   cmd->add_option("--device", o->device, "Vulkan device: index or name substring (env HAIRPIPE_DEVICE)");
   cmd->add_option("--guides", o->guides, "Guide counts to measure (default 1000 10000 100000)");
   cmd->add_option("--frames", o->frames, "Frames per measurement (median is reported)");
+  cmd->add_option("--colliders", o->colliders, "sdf (the default head's distance grid), spheres or none (default sdf)");
   cmd->add_flag("--json", o->json, "Print JSON");
   cmd->callback([o] { runBench(*o); });
 }

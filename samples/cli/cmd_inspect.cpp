@@ -1,5 +1,6 @@
 // `hairpipe inspect FILE [--json]`: what is in a .hair model (strands, points, points per strand,
-// bounding box, arrays present, the head sphere fitted to the roots) or an OBJ scalp (vertices,
+// bounding box, arrays present, the head sphere fitted to the roots), a TressFX .tfx model (version,
+// strands, vertices per strand, arrays, bounds, head sphere) or an OBJ scalp (vertices,
 // triangles, dropped degenerate faces, bounding box, fitted sphere). Bad files exit 1 with a message.
 #include <algorithm>
 #include <cstdio>
@@ -13,6 +14,7 @@
 #include "engine/hair/fit_sphere.h"
 #include "engine/hair/hair_file.h"
 #include "engine/hair/obj_import.h"
+#include "engine/hair/tfx_file.h"
 #include "samples/cli/command.h"
 
 namespace {
@@ -55,6 +57,25 @@ nlohmann::json inspectHair(const std::filesystem::path& path) {
   return j;
 }
 
+nlohmann::json inspectTfx(const std::filesystem::path& path) {
+  const hp::TfxData d = hp::readTfxFile(path);
+  std::vector<glm::vec3> points, roots;
+  for (std::size_t i = 0; i < d.positions.size(); ++i) {
+    points.emplace_back(d.positions[i]);
+    if (i % d.verticesPerStrand == 0) roots.emplace_back(d.positions[i]);
+  }
+  nlohmann::json arrays = nlohmann::json::array({"positions"});
+  if (!d.strandUVs.empty()) arrays.push_back("strand_uvs");
+  if (!d.vertexUVs.empty()) arrays.push_back("vertex_uvs");
+  if (!d.strandThickness.empty()) arrays.push_back("strand_thickness");
+  if (!d.vertexColors.empty()) arrays.push_back("vertex_colors");
+  nlohmann::json j = {{"file", path.string()}, {"format", "tfx"}, {"version", d.version},
+                      {"strands", d.strandCount}, {"vertices_per_strand", d.verticesPerStrand},
+                      {"points", points.size()}, {"arrays", arrays}};
+  j.update(boundsAndSphere(points, roots));
+  return j;
+}
+
 nlohmann::json inspectObj(const std::filesystem::path& path) {
   hp::ScalpMesh m = hp::loadObjScalp(path);
   nlohmann::json j = {{"file", path.string()}, {"format", "obj"}, {"vertices", m.vertexCount()},
@@ -77,6 +98,11 @@ void printText(const nlohmann::json& j) {
               << j["min_points_per_strand"] << ", max " << j["max_points_per_strand"] << "\narrays:";
     for (const auto& a : j["arrays"]) std::cout << " " << a.get<std::string>();
     std::cout << "\ninfo: \"" << j["info"].get<std::string>() << "\"\n";
+  } else if (j["format"] == "tfx") {
+    std::cout << "TressFX version: " << j["version"].get<double>() << "\nstrands: " << j["strands"]
+              << "\nvertices per strand: " << j["vertices_per_strand"] << "\npoints: " << j["points"] << "\narrays:";
+    for (const auto& a : j["arrays"]) std::cout << " " << a.get<std::string>();
+    std::cout << "\n";
   } else {
     std::cout << "vertices: " << j["vertices"] << "\ntriangles: " << j["triangles"]
               << "\ndropped degenerate triangles: " << j["dropped_degenerate_triangles"] << "\n";
@@ -93,16 +119,17 @@ void run(const InspectOptions& o) {
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
   nlohmann::json j;
   if (ext == ".hair") j = inspectHair(path);
+  else if (ext == ".tfx") j = inspectTfx(path);
   else if (ext == ".obj") j = inspectObj(path);
-  else throw hp::Error(o.file + ": unknown file type (expected .hair or .obj)");
+  else throw hp::Error(o.file + ": unknown file type (expected .hair, .tfx or .obj)");
   if (o.json) std::cout << j.dump(2) << "\n";
   else printText(j);
 }
 
 void setup(CLI::App& app) {
   auto opts = std::make_shared<InspectOptions>();
-  auto* cmd = app.add_subcommand("inspect", "Describe a .hair model or an OBJ scalp");
-  cmd->add_option("file", opts->file, "a .hair or .obj file")->required();
+  auto* cmd = app.add_subcommand("inspect", "Describe a .hair or TressFX .tfx model or an OBJ scalp");
+  cmd->add_option("file", opts->file, "a .hair, .tfx or .obj file")->required();
   cmd->add_flag("--json", opts->json, "print JSON instead of text");
   cmd->callback([opts] { run(*opts); });
 }

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "engine/error.h"
+#include "engine/hair/camera_fit.h"
 #include "tools/png_file.h"
 #include "tools/render_job.h"
 #include "samples/cli/command.h"
@@ -136,6 +137,30 @@ hp::RenderRequest makeRequest(const RenderOptions& o, const CLI::App& cmd) {
   return r;
 }
 
+// A model loaded without a scene: frame the camera on its hair (the orbit and elevation stay). Any
+// frame: refuse one in which no guide particle falls inside the view, naming why.
+nlohmann::json frameCamera(hp::Scene& scene, const hp::HairAsset& asset) {
+  nlohmann::json guessed = nlohmann::json::object();
+  if (scene.fitCamera) {
+    hp::fitCameraToPoints(scene.camera, asset.guides.positions);
+    const auto& c = scene.camera;
+    guessed = {{"model", scene.guessed},
+               {"camera", {{"target", {c.target.x, c.target.y, c.target.z}}, {"distance", c.distance}}}};
+    std::cerr << "hairpipe: guessed " << scene.guessed << "; camera framed on the hair (target " << c.target.x
+              << ", " << c.target.y << ", " << c.target.z << ", distance " << c.distance << ")\n";
+  }
+  const float aspect = float(scene.render.width) / float(scene.render.height);
+  if (hp::pointsInView(scene.camera, aspect, asset.guides.positions) == 0) {
+    const auto& c = scene.camera;
+    throw hp::Error("no hair is visible: all " + std::to_string(asset.guides.positions.size()) +
+                    " guide particles of " + asset.name + " are outside the camera's view (target " +
+                    std::to_string(c.target.x) + ", " + std::to_string(c.target.y) + ", " + std::to_string(c.target.z) +
+                    ", distance " + std::to_string(c.distance) + ", orbit " + std::to_string(c.orbitDeg) +
+                    "); check the model's units/up axis or the camera");
+  }
+  return guessed;
+}
+
 // Every output checked (not an input, folder writable) before the simulation starts.
 void prepareOutputs(const RenderOptions& o, const hp::Scene& scene) {
   const std::vector<hp::cli::CommandPath> inputs = hp::cli::sceneInputs(o.scene, scene);
@@ -148,6 +173,7 @@ void runRender(const RenderOptions& o, const CLI::App& cmd) {
   hp::RenderRequest request = makeRequest(o, cmd);
   prepareOutputs(o, request.scene);
   hp::HairAsset asset = hp::buildSceneAsset(request.scene);
+  const nlohmann::json guessed = frameCamera(request.scene, asset);
   auto ctx = hp::cli::createContext(o.scene);
   hp::RenderResult result = hp::renderStill(*ctx, asset, request);
   hp::cli::checkValidation(*ctx);
@@ -161,6 +187,7 @@ void runRender(const RenderOptions& o, const CLI::App& cmd) {
                            {"vertices_per_strand", result.verticesPerStrand},
                            {"lut_mode", o.lutMode}, {"device", ctx->properties().deviceName},
                            {"gpu_ms", passes}, {"raster", hp::rasterModeName(result.raster)}};
+  if (!guessed.empty()) report["guessed"] = guessed;
   if (result.rasterStats) {
     const auto& s = *result.rasterStats;
     report["raster_lists"] = {{"requested", s.requested}, {"kept", s.kept},

@@ -53,6 +53,7 @@ std::vector<CommandPath> sceneInputs(const SceneOptions& options, const Scene& s
   std::vector<CommandPath> inputs;
   if (!options.scenePath.empty()) inputs.push_back({"--scene", options.scenePath});
   if (!scene.model.path.empty()) inputs.push_back({options.scenePath.empty() ? "--model" : "the scene's model", scene.model.path});
+  for (const auto& m : scene.colliderMeshes) inputs.push_back({"the scene's collider mesh", m.path});
   return inputs;
 }
 }  // namespace hp::cli

@@ -3,30 +3,58 @@
 #include <iostream>
 
 #include "engine/error.h"
+#include "engine/hair/model_guess.h"
 
 namespace hp::cli {
 void addSceneOptions(CLI::App& cmd, SceneOptions& options) {
   auto* scene = cmd.add_option("--scene", options.scenePath, "Scene file (JSON; schema in engine/hair/README.md)");
-  cmd.add_option("--model", options.model, "Model when no scene is given: default, FILE.hair or FILE.obj")
+  cmd.add_option("--model", options.model, "Model when no scene is given: default, FILE.hair, FILE.tfx or FILE.obj")
       ->excludes(scene);
+  cmd.add_option("--units", options.units, "Model units: m, cm or mm (default: the scene's, else guessed)");
+  cmd.add_option("--up", options.up, "Model up axis: y or z (default: the scene's, else guessed)");
   cmd.add_option("--device", options.device, "Vulkan device: index or name substring (env HAIRPIPE_DEVICE)");
   cmd.add_flag("--validation", options.validation, "Run with the Khronos validation layer; fail on any message");
 }
 
+namespace {
+// --units/--up on top of whatever the scene says.
+void applyOverrides(const SceneOptions& options, Scene& scene) {
+  if (!options.units.empty()) scene.model.transform.scale = unitScale(options.units);
+  if (!options.up.empty()) scene.model.transform.up = parseUpAxis(options.up);
+}
+}  // namespace
+
 Scene loadScene(const SceneOptions& options) {
-  if (!options.scenePath.empty()) return loadSceneFile(options.scenePath);
+  if (!options.units.empty()) unitScale(options.units);  // refuse a bad value before any work
+  if (!options.up.empty()) parseUpAxis(options.up);
+  if (!options.scenePath.empty()) {
+    Scene scene = loadSceneFile(options.scenePath);
+    applyOverrides(options, scene);
+    return scene;
+  }
   Scene scene;
-  if (options.model == "default") return scene;
+  if (options.model == "default") {
+    if (!options.units.empty() || !options.up.empty()) throw Error("--units/--up apply to a --model file");
+    return scene;
+  }
   std::filesystem::path path(options.model);
   const std::string ext = path.extension().string();
   if (ext == ".hair")
     scene.model.kind = ModelSpec::Kind::Hair;
+  else if (ext == ".tfx")
+    scene.model.kind = ModelSpec::Kind::Tfx;
   else if (ext == ".obj")
     scene.model.kind = ModelSpec::Kind::Obj;
   else
-    throw Error("--model " + options.model + ": expected 'default', a .hair file or an .obj file");
+    throw Error("--model " + options.model + ": expected 'default', a .hair, .tfx or .obj file");
   scene.model.path = path;
   scene.source = options.model;
+  const ModelGuess guess = guessModelFileTransform(
+      path, options.units.empty() ? std::nullopt : std::optional<std::string>(options.units),
+      options.up.empty() ? std::nullopt : std::optional<UpAxis>(parseUpAxis(options.up)));
+  scene.model.transform = guess.transform;
+  scene.guessed = guess.reason;
+  scene.fitCamera = true;
   return scene;
 }
 

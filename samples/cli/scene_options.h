@@ -1,7 +1,10 @@
 #pragma once
 // Contract: the options every device command shares to say what to load and where to run it:
-//   --scene FILE.json | --model default|FILE.hair|FILE.obj, --device NAME|INDEX, --validation.
-// loadScene() returns the scene file's content, or the default scene with the chosen model.
+//   --scene FILE.json | --model default|FILE.hair|FILE.tfx|FILE.obj, --units m|cm|mm, --up y|z,
+//   --device NAME|INDEX, --validation.
+// loadScene() returns the scene file's content, or the default scene with the chosen model; a model
+// without a scene gets its units and up axis guessed (--units/--up override) and a camera framed on
+// it (Scene::guessed, Scene::fitCamera). --units/--up also override a scene's model keys.
 #include <CLI/CLI.hpp>
 
 #include <memory>
@@ -14,6 +17,8 @@ namespace hp::cli {
 struct SceneOptions {
   std::string scenePath;
   std::string model = "default";
+  std::string units;  // empty: from the scene, or guessed
+  std::string up;
   std::string device;
   bool validation = false;
 };

@@ -43,6 +43,7 @@ struct SkinWeights {
   uvec4 bones;   // bone indices
   vec4 weights;  // summing to 1
 };
+HP_CONST(uint, SIM_BINDING_SDF, 8)           // the head's distance grid (shared/sdf.h), read only
 
 struct SimFrame {
   mat4 headFrom;         // head-to-world transform at the start of the frame

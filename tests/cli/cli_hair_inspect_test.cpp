@@ -131,7 +131,7 @@ TEST(CliHairInspect, BadObjAndUnknownTypesExitOne) {
       << r.err;
   r = runCli({"inspect", (dir / "model.fbx").string()});
   EXPECT_EQ(r.exitCode, 1);
-  EXPECT_NE(r.err.find("model.fbx: unknown file type (expected .hair or .obj)"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("model.fbx: unknown file type (expected .hair, .tfx or .obj)"), std::string::npos) << r.err;
   r = runCli({"inspect", (dir / "missing.hair").string()});
   EXPECT_EQ(r.exitCode, 1);
   EXPECT_NE(r.err.find("missing.hair: cannot open"), std::string::npos) << r.err;

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "shaders/shared/sdf.h"
+
 namespace hp::test {
 namespace {
 constexpr double kTwoPi = 6.28318530718;
@@ -31,10 +33,42 @@ glm::dvec3 resolvePearl(const glm::dvec3& p, const glm::dvec3& parent, double re
   if (inPlaneLength < 1e-12) return radial;
   return center + along * axis + (ringRadius / inPlaneLength) * inPlane;
 }
+// sdf_collide.glsl in double: trilinear sample (plus the distance to the box outside it), central
+// differences at half a cell, up to SDF_COLLISION_STEPS pushes to the clearance.
+double sampleGrid(const SdfGrid& g, const glm::dvec3& p) {
+  const glm::dvec3 lo(g.origin), hi(g.upper());
+  const glm::dvec3 clamped = glm::clamp(p, lo, hi);
+  const double outside = glm::length(p - clamped);
+  const glm::dvec3 f = (clamped - lo) / double(g.cell);
+  const glm::uvec3 i0 = glm::min(glm::uvec3(f), g.dims - 2u);
+  const glm::dvec3 t = f - glm::dvec3(i0);
+  auto v = [&](std::uint32_t dx, std::uint32_t dy, std::uint32_t dz) { return double(g.at(i0.x + dx, i0.y + dy, i0.z + dz)); };
+  const double x00 = glm::mix(v(0, 0, 0), v(1, 0, 0), t.x), x10 = glm::mix(v(0, 1, 0), v(1, 1, 0), t.x);
+  const double x01 = glm::mix(v(0, 0, 1), v(1, 0, 1), t.x), x11 = glm::mix(v(0, 1, 1), v(1, 1, 1), t.x);
+  return glm::mix(glm::mix(x00, x10, t.y), glm::mix(x01, x11, t.y), t.z) + outside;
+}
+
+glm::dvec3 keepOutsideGrid(const SdfGrid& g, const glm::dvec3& p, const glm::dmat4& head, double clearance) {
+  glm::dvec3 q = apply(glm::inverse(head), p);
+  bool moved = false;
+  const double h = 0.5 * g.cell;
+  for (std::uint32_t step = 0; step < gpu::SDF_COLLISION_STEPS; ++step) {
+    const double depth = clearance - sampleGrid(g, q);
+    if (depth <= 0.0) break;
+    const glm::dvec3 grad(sampleGrid(g, q + glm::dvec3(h, 0, 0)) - sampleGrid(g, q - glm::dvec3(h, 0, 0)),
+                          sampleGrid(g, q + glm::dvec3(0, h, 0)) - sampleGrid(g, q - glm::dvec3(0, h, 0)),
+                          sampleGrid(g, q + glm::dvec3(0, 0, h)) - sampleGrid(g, q - glm::dvec3(0, 0, h)));
+    const double len = glm::length(grad) / (2.0 * h);
+    if (len < 1e-6) break;
+    q += grad / (2.0 * h) * (depth / len);
+    moved = true;
+  }
+  return moved ? apply(head, q) : p;
+}
 }  // namespace
 
 SimReference::SimReference(const SimulatePass& pass, const SimulationParams& params, const glm::mat4& initialHead)
-    : params_(params), n_(pass.particlesPerGuide()), colliders_(pass.colliders()) {
+    : params_(params), n_(pass.particlesPerGuide()), colliders_(pass.colliders()), sdf_(pass.sdf()) {
   for (const auto& r : pass.rest()) {
     rest_.push_back(glm::dvec4(r));
     x_.push_back(apply(glm::dmat4(initialHead), glm::dvec3(r)));
@@ -105,6 +139,8 @@ void SimReference::simulateGuide(std::size_t base, const HeadMotion& motion, std
           }
         }
       }
+      if (sdf_)
+        for (std::uint32_t i = 1; i < n_; ++i) x[i] = keepOutsideGrid(*sdf_, x[i], head, params_.pearlRadius);
     }
   }
 }

@@ -21,6 +21,7 @@ class SimReference {
   std::uint32_t n_;
   std::vector<glm::dvec4> rest_;
   std::vector<SphereCollider> colliders_;
+  std::shared_ptr<const SdfGrid> sdf_;
   std::vector<glm::dvec3> x_, xPrev_;
 };
 }  // namespace hp::test

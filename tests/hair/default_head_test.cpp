@@ -1,8 +1,9 @@
-// The procedural default head: scalp size, colliders enclosing the head mesh, a rest pose that
+// The procedural default head: scalp size and place, the field as the collider, a rest pose that
 // hangs like hair, and a usable interpolation topology.
 #include <gtest/gtest.h>
 
 #include "engine/hair/default_head.h"
+#include "engine/hair/head_sdf.h"
 #include "tests/hair/hair_test_util.h"
 
 namespace hp {
@@ -12,11 +13,8 @@ const HairAsset& asset() {
   return a;
 }
 
-float insideDepth(const glm::vec3& p, const std::vector<SphereCollider>& colliders) {
-  float depth = -1e9f;
-  for (const auto& c : colliders) depth = std::max(depth, c.radius - glm::distance(p, c.center));
-  return depth;  // > 0: inside some collider
-}
+// > 0: inside the head's field (the analytic one, not the grid).
+float insideDepth(const glm::vec3& p) { return -headDistance(p); }
 
 TEST(DefaultHead, ScalpHasOneToFourThousandVerticesAndOneGuideEach) {
   ScalpMesh scalp = makeDefaultScalp();
@@ -32,22 +30,32 @@ TEST(DefaultHead, ScalpCoversCrownBackAndSidesButNotTheFace) {
   ScalpMesh scalp = makeDefaultScalp();
   bool crown = false, back = false, left = false, right = false;
   for (const auto& p : scalp.positions) {
-    crown |= p.y > 0.095f;
-    back |= p.z < -0.09f;
-    left |= p.x < -0.085f;
-    right |= p.x > 0.085f;
+    crown |= p.y > 0.085f;
+    back |= p.z < -0.10f;
+    left |= p.x < -0.068f;
+    right |= p.x > 0.068f;
     EXPECT_FALSE(p.z > 0.05f && p.y < 0.02f) << "scalp vertex on the face at " << p.x << " " << p.y << " " << p.z;
   }
   EXPECT_TRUE(crown && back && left && right);
 }
 
-TEST(DefaultHead, CollidersEncloseTheHeadMesh) {
+TEST(DefaultHead, TheFieldIsTheColliderAndTheMeshIsItsSurface) {
   const auto& a = asset();
-  ASSERT_EQ(a.colliders.size(), 7u);
+  EXPECT_TRUE(a.colliders.empty());
+  ASSERT_TRUE(a.sdf);
+  EXPECT_EQ(a.sdf->cell, kDefaultHeadCell);
   ASSERT_EQ(a.head.positions.size(), a.head.normals.size());
   ASSERT_EQ(a.head.indices.size() % 3, 0u);
   for (std::uint32_t i : a.head.indices) ASSERT_LT(i, a.head.positions.size());
-  for (const auto& p : a.head.positions) EXPECT_GE(insideDepth(p, a.colliders), -1e-6f);
+  for (const auto& p : a.head.positions) ASSERT_LT(std::abs(a.sdf->sample(p)), kDefaultHeadCell);
+}
+
+TEST(DefaultHead, ScalpRootsSitOnTheFieldAboveTheEars) {
+  for (const auto& p : makeDefaultScalp().positions) {
+    ASSERT_LT(std::abs(headDistance(p)), 1e-4f);
+    // No root on the ears (they stand out at |x| > 0.07 around y = -0.02).
+    EXPECT_FALSE(std::abs(p.x) > 0.062f && p.y < 0.0f && p.z > -0.04f) << p.x << " " << p.y << " " << p.z;
+  }
 }
 
 TEST(DefaultHead, RestPoseHangsLikeHairOutsideTheColliders) {
@@ -56,7 +64,7 @@ TEST(DefaultHead, RestPoseHangsLikeHairOutsideTheColliders) {
   glm::vec3 meanTipDir(0.0f);
   for (std::uint32_t i = 0; i < g.guideCount(); ++i) {
     auto guide = g.guide(i);
-    for (std::uint32_t k = 1; k < 7; ++k) EXPECT_LE(insideDepth(guide[k], asset().colliders), 1e-4f);
+    for (std::uint32_t k = 1; k < 7; ++k) EXPECT_LE(insideDepth(guide[k]), 1e-4f);
     glm::vec3 tipDir = glm::normalize(guide[6] - guide[5]);
     meanTipDir += tipDir;
     hanging += tipDir.y < -0.3f;

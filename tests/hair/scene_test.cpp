@@ -127,7 +127,7 @@ TEST(Scene, OutOfRangeValuesNameThePath) {
   EXPECT_THAT_ERROR_CONTAINS_IMPL(parseError(R"({"density": {"strandsPerTriangle": 4, "totalStrands": 9}})"),
                                   "/density/totalStrands: give either strandsPerTriangle or totalStrands, not both");
   EXPECT_THAT_ERROR_CONTAINS_IMPL(parseError(R"({"model": {"source": "head.fbx"}})"),
-                                  "/model/source: expected \"default\" or a path ending in .hair or .obj, got \"head.fbx\"");
+                                  "/model/source: expected \"default\" or a path ending in .hair, .tfx or .obj, got \"head.fbx\"");
   EXPECT_THAT_ERROR_CONTAINS_IMPL(parseError(R"({"model": {"up": "x"}})"), "/model/up: expected \"y\" or \"z\", got \"x\"");
   EXPECT_THAT_ERROR_CONTAINS_IMPL(parseError(R"({"model": {"scale": 0}})"), "/model: model transform: scale must be positive");
   EXPECT_THAT_ERROR_CONTAINS_IMPL(parseError(R"({"simulation": {"iterations": 0}})"),

@@ -99,26 +99,33 @@ TEST_F(VulkanTest, HairAwayFromTheLightIsDarkerThanTheLitSide) {
 
 TEST_F(VulkanTest, HairUnderOtherHairIsDarkerThanHairOnTop) {
   const hp::HairAsset asset = hairOnly();
-  // Light from (almost) straight above, seen from the side: the crown is on top, the hair hanging
-  // below it is under it. Twice the opacity of the other test makes the layering of only 3,000
-  // strands measurable.
-  const glm::vec3 light(0.0f, 1.0f, 0.1f);
-  const hp::RenderResult on = hp::renderStill(*ctx, asset, request(light, 90.0f, true, 0.6f));
-  const hp::RenderResult off = hp::renderStill(*ctx, asset, request(light, 90.0f, false, 0.6f));
-  // Rows of the hair in the image, by pixel count: the top quarter of the hair pixels (on top) against
-  // the bottom quarter (under).
-  std::vector<std::size_t> perRow(kHeight, 0);
+  // Light from the side, seen from behind: the groom hangs down the back of the head, so the strands
+  // nearest the light are on top and the ones across the hair volume from it are under it. (A light
+  // from above ran along the hanging strands of the combed-back groom and lit neither.) Twice the
+  // opacity of the other test makes the layering of only 3,000 strands measurable.
+  const glm::vec3 light(1.0f, 0.1f, 0.0f);
+  const hp::RenderRequest onRequest = request(light, 180.0f, true, 0.6f);
+  const hp::RenderResult on = hp::renderStill(*ctx, asset, onRequest);
+  const hp::RenderResult off = hp::renderStill(*ctx, asset, request(light, 180.0f, false, 0.6f));
+  // The image side the light comes from, from the light direction in view space.
+  const hp::CameraMatrices cam = hp::orbitCamera(onRequest.scene.camera, float(kWidth) / float(kHeight));
+  const bool lightFromRight = (cam.view * glm::vec4(light, 0.0f)).x > 0.0f;
+  // Columns of the hair in the image, by pixel count: the quarter of the hair pixels nearest the light
+  // (on top) against the quarter farthest from it (under).
+  std::vector<std::size_t> perColumn(kWidth, 0);
   std::size_t total = 0;
   const double background = luminance(off.rgba, 0);
   for (std::uint32_t y = 0; y < kHeight; ++y)
     for (std::uint32_t x = 0; x < kWidth; ++x)
-      if (luminance(off.rgba, std::size_t(y) * kWidth + x) >= background + 0.004) ++perRow[y], ++total;
-  std::uint32_t top = 0, bottom = kHeight - 1;
-  for (std::size_t seen = 0; seen + perRow[top] < total / 4; ++top) seen += perRow[top];
-  for (std::size_t seen = 0; seen + perRow[bottom] < total / 4; --bottom) seen += perRow[bottom];
-  ASSERT_LT(top + 10, bottom);
-  const Region upper = sumRegion(on, off, [&](std::uint32_t, std::uint32_t y) { return y <= top; });
-  const Region lower = sumRegion(on, off, [&](std::uint32_t, std::uint32_t y) { return y >= bottom; });
+      if (luminance(off.rgba, std::size_t(y) * kWidth + x) >= background + 0.004) ++perColumn[x], ++total;
+  std::uint32_t left = 0, right = kWidth - 1;
+  for (std::size_t seen = 0; seen + perColumn[left] < total / 4; ++left) seen += perColumn[left];
+  for (std::size_t seen = 0; seen + perColumn[right] < total / 4; --right) seen += perColumn[right];
+  ASSERT_LT(left + 10, right);
+  const auto nearLight = [&](std::uint32_t x, std::uint32_t) { return lightFromRight ? x >= right : x <= left; };
+  const auto farFromLight = [&](std::uint32_t x, std::uint32_t) { return lightFromRight ? x <= left : x >= right; };
+  const Region upper = sumRegion(on, off, nearLight);
+  const Region lower = sumRegion(on, off, farFromLight);
   ASSERT_GT(upper.pixels, 100u);
   ASSERT_GT(lower.pixels, 100u);
   EXPECT_LT(lower.ratio(), upper.ratio() - 0.1) << "under " << lower.ratio() << " on top " << upper.ratio();

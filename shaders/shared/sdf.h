@@ -1,0 +1,20 @@
+// Shared by GLSL and C++: a signed distance grid on the device (engine/hair/sdf_grid.h), one storage
+// buffer: this header, then the node values as floats (x fastest, then y, then z), read by
+// shaders/sdf_collide.glsl. An absent grid is a header with present = 0 and one padding value.
+#ifndef HP_SHARED_SDF_H
+#define HP_SHARED_SDF_H
+#include "common.h"
+
+HP_BEGIN
+HP_CONST(uint, SDF_COLLISION_STEPS, 3)  // pushes along the gradient per particle per constraint iteration
+
+struct SdfHeader {
+  vec4 originCell;  // xyz position of node (0, 0, 0) in head space, w node spacing
+  uvec4 dims;       // xyz nodes per axis (each >= 2), w = 1 when a grid is present
+};
+HP_END
+
+#ifdef __cplusplus
+static_assert(sizeof(hp::gpu::SdfHeader) == 32);  // the values start at byte 32 (std430)
+#endif
+#endif

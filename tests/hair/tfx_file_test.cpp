@@ -1,0 +1,127 @@
+// TressFX .tfx import (REFERENCES.md §9): a synthetic file round-trips and imports to the same guides
+// as the equivalent .hair data; every corruption is refused with a message naming the field.
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+
+#include "engine/error.h"
+#include "engine/hair/hair_import.h"
+#include "engine/hair/scene.h"
+#include "engine/hair/tfx_file.h"
+
+namespace hp {
+namespace {
+// 300 strands x 16 vertices on the top of a 10 cm sphere, hanging down; UVs and thickness present.
+TfxData syntheticTfx() {
+  TfxData d;
+  d.strandCount = 300;
+  d.verticesPerStrand = 16;
+  for (std::uint32_t s = 0; s < d.strandCount; ++s) {
+    const float a = 0.7f * float(s), y = 1.0f - 0.8f * float(s) / float(d.strandCount), r = std::sqrt(1.0f - y * y);
+    const glm::vec3 root(10.0f * r * std::cos(a), 10.0f * y, 10.0f * r * std::sin(a));
+    for (std::uint32_t k = 0; k < d.verticesPerStrand; ++k)
+      d.positions.emplace_back(root + glm::vec3(0.1f * float(k), -2.0f * float(k), 0.0f), k < 2 ? 0.0f : 1.0f);
+    d.strandUVs.emplace_back(float(s) / 300.0f, 0.5f);
+    d.strandThickness.push_back(0.5f + 0.001f * float(s));
+  }
+  return d;
+}
+
+void putU32(std::vector<std::byte>& b, std::size_t at, std::uint32_t v) { std::memcpy(b.data() + at, &v, 4); }
+
+void expectRefused(const std::vector<std::byte>& bytes, const std::string& needle) {
+  try {
+    decodeTfx(bytes, "bad.tfx");
+    ADD_FAILURE() << "accepted; expected an error mentioning " << needle;
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find(needle), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("bad.tfx"), std::string::npos) << e.what();
+  }
+}
+}  // namespace
+
+TEST(TfxFile, SyntheticFileRoundTripsByteForByte) {
+  const TfxData d = syntheticTfx();
+  const auto bytes = encodeTfx(d);
+  EXPECT_EQ(bytes.size(), 160u + 300u * 16u * 16u + 300u * 8u + 300u * 4u);
+  const TfxData back = decodeTfx(bytes, "synthetic.tfx");
+  EXPECT_EQ(back.strandCount, 300u);
+  EXPECT_EQ(back.verticesPerStrand, 16u);
+  EXPECT_EQ(back.positions, d.positions);
+  EXPECT_EQ(back.strandUVs, d.strandUVs);
+  EXPECT_EQ(back.strandThickness, d.strandThickness);
+  EXPECT_TRUE(back.vertexUVs.empty() && back.vertexColors.empty());
+  EXPECT_EQ(encodeTfx(back), bytes);
+}
+
+TEST(TfxFile, ImportGivesTheGuidesOfTheSameStrandsAsHair) {
+  const auto dir = std::filesystem::temp_directory_path() / "hairpipe_tfx_test";
+  std::filesystem::create_directories(dir);
+  const TfxData d = syntheticTfx();
+  const auto bytes = encodeTfx(d);
+  std::ofstream(dir / "model.tfx", std::ios::binary).write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
+  // The scene path: one guide per strand, roots exact, topology over the roots.
+  Scene s = parseScene(R"({"model": {"source": "model.tfx", "scale": 0.01}, "density": {"totalStrands": 2000}})", "s.json", dir);
+  EXPECT_EQ(s.model.kind, ModelSpec::Kind::Tfx);
+  const HairAsset a = buildSceneAsset(s);
+  ASSERT_EQ(a.guides.guideCount(), 300u);
+  for (std::uint32_t g = 0; g < 300; ++g) EXPECT_EQ(a.guides.root(g), 0.01f * glm::vec3(d.positions[g * 16]));
+  EXPECT_FALSE(a.topology.triangles.empty());
+  // The same guides as the .hair import of the same points.
+  HairImportOptions o;
+  o.transform.scale = 0.01f;
+  o.particlesPerGuide = s.growth.particlesPerGuide;
+  o.segmentRatio = s.growth.segmentRatio;
+  o.density.totalStrands = 2000;
+  EXPECT_EQ(importHairAsset(tfxToHair(d), o, "x").guides.positions, a.guides.positions);
+  std::filesystem::remove_all(dir);
+}
+
+TEST(TfxFile, CorruptTruncatedAndHostileFilesAreRefusedNamingTheField) {
+  const auto good = encodeTfx(syntheticTfx());
+  expectRefused(std::vector<std::byte>(good.begin(), good.begin() + 100), "short header");
+  auto b = good;
+  putU32(b, 4, 0);
+  expectRefused(b, "numHairStrands is 0");
+  for (std::uint32_t vps : {0u, 1u, 65u, 0xffffffffu}) {
+    b = good;
+    putU32(b, 8, vps);
+    expectRefused(b, "numVerticesPerStrand");
+  }
+  b = good;
+  putU32(b, 4, 0xffffffffu);  // 4G strands x 16 vertices: far past the file, no overflow, no allocation
+  expectRefused(b, "offsetVertexPosition");
+  b = good;
+  putU32(b, 12, 0);
+  expectRefused(b, "offsetVertexPosition is 0");
+  b = good;
+  putU32(b, 12, 0xfffffff0u);
+  expectRefused(b, "offsetVertexPosition 4294967280");
+  b = good;
+  putU32(b, 12, 8);
+  expectRefused(b, "points into the 160-byte header");
+  b = good;
+  putU32(b, 16, std::uint32_t(good.size()) - 4);
+  expectRefused(b, "offsetStrandUV");
+  b = good;
+  putU32(b, 20, std::uint32_t(good.size()) - 100);  // 300 x 16 vertex UVs do not fit in 100 bytes
+  expectRefused(b, "offsetVertexUV");
+  b = good;
+  putU32(b, 24, 0xffffffffu);
+  expectRefused(b, "offsetStrandThickness");
+  b = good;
+  putU32(b, 28, std::uint32_t(good.size()) - 100);
+  expectRefused(b, "offsetVertexColor");
+  expectRefused(std::vector<std::byte>(good.begin(), good.end() - 1), "past the end of the file");
+  b = good;
+  const float nan = std::nanf("");
+  std::memcpy(b.data() + 160 + 16 * 37 + 4, &nan, 4);  // strand 2, vertex 5, y
+  expectRefused(b, "positions: vertex 5 of strand 2 is not finite");
+  b = good;
+  const float inf = INFINITY;
+  std::memcpy(b.data(), &inf, 4);
+  expectRefused(b, "version");
+}
+}  // namespace hp

@@ -1,0 +1,104 @@
+// Real models out of the box: synthetic .hair heads in millimetres, centimetres and metres, Y or Z up,
+// get their units and up axis guessed and a camera framed on them, and render with hair covering
+// 5-80% of the frame without a scene.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+
+#include "engine/error.h"
+#include "engine/hair/camera_fit.h"
+#include "engine/hair/hair_file.h"
+#include "engine/hair/model_guess.h"
+#include "tools/render_job.h"
+#include "tests/support/vk_fixture.h"
+
+using namespace hp;
+using hp::test::VulkanTest;
+
+namespace {
+constexpr std::uint32_t kWidth = 160, kHeight = 120;
+
+// A head of radius 0.09 m (times 1/scale model units): 600 strands from the upper half of a sphere,
+// out and then down 0.3 m, in 8 points. Z up maps model (x, y, z) so that z is up.
+HairFileData syntheticHead(float unitsPerMetre, bool zUp) {
+  HairFileData d;
+  d.strandCount = 600;
+  d.defaultSegments = 7;
+  const float golden = 3.14159265f * (3.0f - std::sqrt(5.0f));
+  for (std::uint32_t s = 0; s < d.strandCount; ++s) {
+    const float y = 1.0f - float(s + 0.5f) / float(d.strandCount), r = std::sqrt(1.0f - y * y);
+    const glm::vec3 n(r * std::sin(golden * s), y, r * std::cos(golden * s));
+    glm::vec3 p = 0.09f * n;
+    for (int k = 0; k < 8; ++k) {
+      const glm::vec3 q = (zUp ? glm::vec3(p.x, -p.z, p.y) : p) * unitsPerMetre;
+      d.points.push_back(q);
+      p += 0.3f / 7.0f * glm::normalize(0.4f * n + glm::vec3(0.0f, -1.0f, 0.0f));
+    }
+  }
+  return d;
+}
+
+double hairFraction(const RenderResult& img) {
+  std::size_t hair = 0;
+  for (std::size_t p = 0; p < img.rgba.size(); p += 4)
+    for (int c = 0; c < 3; ++c)
+      if (std::abs(int(img.rgba[p + c]) - int(img.rgba[c])) > 8) {
+        ++hair;
+        break;
+      }
+  return double(hair) / double(img.rgba.size() / 4);
+}
+}  // namespace
+
+TEST_F(VulkanTest, ModelsInAnyUnitsAndUpAxisAreGuessedAndFramed) {
+  const auto dir = std::filesystem::temp_directory_path() / "hairpipe_framing_test";
+  std::filesystem::create_directories(dir);
+  struct Case {
+    const char* units;
+    float perMetre;
+  };
+  for (const Case c : {Case{"mm", 1000.0f}, Case{"cm", 100.0f}, Case{"m", 1.0f}})
+    for (bool zUp : {false, true}) {
+      const std::string name = std::string(c.units) + (zUp ? "_z" : "_y");
+      const auto path = dir / (name + ".hair");
+      writeHairFile(path, syntheticHead(c.perMetre, zUp));
+      const ModelGuess guess = guessModelFileTransform(path);
+      EXPECT_EQ(guess.units, c.units) << name << ": " << guess.reason;
+      EXPECT_EQ(guess.transform.up, zUp ? UpAxis::Z : UpAxis::Y) << name << ": " << guess.reason;
+      EXPECT_TRUE(guess.unitsGuessed && guess.upGuessed);
+      RenderRequest r;
+      r.scene.model.kind = ModelSpec::Kind::Hair;
+      r.scene.model.path = path;
+      r.scene.model.transform = guess.transform;
+      r.scene.density.totalStrands = 3000;
+      r.scene.render = {kWidth, kHeight, 1};
+      r.settleFrames = 0;
+      r.opacity.enabled = false;
+      HairAsset asset = buildSceneAsset(r.scene);
+      asset.head = {};  // count hair only
+      fitCameraToPoints(r.scene.camera, asset.guides.positions);
+      ASSERT_GT(pointsInView(r.scene.camera, float(kWidth) / kHeight, asset.guides.positions), 0u);
+      const double fraction = hairFraction(renderStill(*ctx, asset, r));
+      EXPECT_GT(fraction, 0.05) << name;
+      EXPECT_LT(fraction, 0.80) << name;
+    }
+  // A camera looking away sees no hair.
+  CameraSpec away;
+  away.target = {100.0f, 0.0f, 0.0f};
+  const HairFileData d = syntheticHead(1.0f, false);
+  EXPECT_EQ(pointsInView(away, 4.0f / 3.0f, d.points), 0u);
+  std::filesystem::remove_all(dir);
+}
+
+TEST(ModelGuess, GivenUnitsAndUpAreKeptAndBadUnitsRefused) {
+  const HairFileData d = syntheticHead(100.0f, true);
+  std::vector<glm::vec3> roots, tips;
+  for (std::uint32_t s = 0; s < d.strandCount; ++s) roots.push_back(d.points[s * 8]), tips.push_back(d.points[s * 8 + 7]);
+  const ModelGuess g = guessModelTransform(roots, tips, std::string("mm"), UpAxis::Y);
+  EXPECT_EQ(g.transform.scale, 0.001f);
+  EXPECT_EQ(g.transform.up, UpAxis::Y);
+  EXPECT_FALSE(g.unitsGuessed || g.upGuessed);
+  EXPECT_THROW(unitScale("inch"), Error);
+  EXPECT_THROW(guessModelTransform({}, {}), Error);
+}
