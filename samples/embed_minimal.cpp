@@ -22,7 +22,7 @@
 #include "engine/hair/head_sdf.h"
 #include "engine/renderer.h"
 #include "engine/shading/material_color.h"
-#include "tools/png_file.h"
+#include "samples/tools/png_file.h"
 #include "engine/sim/head_animation.h"
 #include "engine/vk/barriers.h"
 #include "engine/vk/check.h"

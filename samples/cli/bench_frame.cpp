@@ -4,7 +4,7 @@
 
 #include "engine/hair/default_head.h"
 #include "engine/hair_system.h"
-#include "tools/offscreen_renderer.h"
+#include "samples/tools/offscreen_renderer.h"
 #include "engine/vk/copy_reference.h"
 #include "engine/vk/submit.h"
 #include "shaders/shared/raster.h"

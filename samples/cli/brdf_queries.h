@@ -9,7 +9,7 @@
 #include <string_view>
 #include <vector>
 
-#include "tools/brdf_evaluator.h"
+#include "samples/tools/brdf_evaluator.h"
 
 namespace hp::cli {
 inline constexpr const char* kBrdfRowFormat = "lx,ly,lz,vx,vy,vz,tx,ty,tz";

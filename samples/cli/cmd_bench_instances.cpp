@@ -23,7 +23,7 @@
 #include "engine/vk/submit.h"
 #include "samples/cli/bench_context.h"
 #include "samples/cli/command.h"
-#include "tools/offscreen_renderer.h"
+#include "samples/tools/offscreen_renderer.h"
 
 namespace {
 using Clock = std::chrono::steady_clock;

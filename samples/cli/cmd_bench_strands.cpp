@@ -17,7 +17,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "tools/strand_dump.h"
+#include "samples/tools/strand_dump.h"
 #include "engine/error.h"
 #include "engine/hair/default_head.h"
 #include "engine/vk/barriers.h"

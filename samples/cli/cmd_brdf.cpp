@@ -16,7 +16,7 @@
 
 #include "engine/error.h"
 #include "engine/hair/atomic_write.h"
-#include "tools/brdf_evaluator.h"
+#include "samples/tools/brdf_evaluator.h"
 #include "engine/render/marschner_textures.h"
 #include "engine/shading/lut.h"
 #include "engine/vk/context.h"

@@ -12,7 +12,7 @@
 
 #include "engine/error.h"
 #include "engine/hair/atomic_write.h"
-#include "tools/png_file.h"
+#include "samples/tools/png_file.h"
 #include "engine/shading/lut.h"
 #include "engine/shading/lut_export.h"
 #include "samples/cli/command.h"

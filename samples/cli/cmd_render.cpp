@@ -9,8 +9,8 @@
 
 #include "engine/error.h"
 #include "engine/hair/camera_fit.h"
-#include "tools/png_file.h"
-#include "tools/render_job.h"
+#include "samples/tools/png_file.h"
+#include "samples/tools/render_job.h"
 #include "samples/cli/command.h"
 #include "samples/cli/material_options.h"
 #include "samples/cli/scene_options.h"

@@ -4,7 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "tools/simulation_driver.h"
+#include "samples/tools/simulation_driver.h"
 #include "engine/error.h"
 #include "engine/hair/hair_export.h"
 #include "engine/hair/hair_file.h"

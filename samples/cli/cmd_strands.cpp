@@ -11,7 +11,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "tools/strand_dump.h"
+#include "samples/tools/strand_dump.h"
 #include "engine/error.h"
 #include "engine/hair/scene.h"
 #include "engine/vk/context.h"

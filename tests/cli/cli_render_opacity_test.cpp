@@ -11,7 +11,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "tools/png_file.h"
+#include "samples/tools/png_file.h"
 #include "tests/support/cli_runner.h"
 
 using hp::test::runCli;

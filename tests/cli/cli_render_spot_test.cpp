@@ -4,7 +4,7 @@
 
 #include <filesystem>
 
-#include "tools/png_file.h"
+#include "samples/tools/png_file.h"
 #include "tests/support/cli_runner.h"
 
 using hp::test::freshTempPath;

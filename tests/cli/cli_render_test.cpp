@@ -4,7 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include "engine/hair/hair_file.h"
-#include "tools/png_file.h"
+#include "samples/tools/png_file.h"
 #include "tests/support/cli_runner.h"
 
 using hp::test::freshTempPath;

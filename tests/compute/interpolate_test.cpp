@@ -9,7 +9,7 @@
 #include <numeric>
 
 #include "compute/interpolate_pass.h"
-#include "tools/strand_dump.h"
+#include "samples/tools/strand_dump.h"
 #include "compute/tessellate_pass.h"
 #include "engine/error.h"
 #include "engine/hair/default_head.h"

@@ -3,7 +3,7 @@
 // violent motion, teleport, energy decay).
 #include <gtest/gtest.h>
 
-#include "tools/simulation_driver.h"
+#include "samples/tools/simulation_driver.h"
 #include "engine/error.h"
 #include "engine/hair/default_head.h"
 #include "engine/hair/head_sdf.h"

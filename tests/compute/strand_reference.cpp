@@ -3,7 +3,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "tools/strand_dump.h"
+#include "samples/tools/strand_dump.h"
 #include "engine/vk/barriers.h"
 #include "engine/vk/submit.h"
 

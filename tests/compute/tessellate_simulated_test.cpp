@@ -3,8 +3,8 @@
 // exactly and match the double-precision reference of the simulated pose.
 #include <gtest/gtest.h>
 
-#include "tools/simulation_driver.h"
-#include "tools/strand_dump.h"
+#include "samples/tools/simulation_driver.h"
+#include "samples/tools/strand_dump.h"
 #include "engine/hair/default_head.h"
 #include "engine/vk/submit.h"
 #include "tests/compute/strand_reference.h"

@@ -5,7 +5,7 @@
 
 #include <iostream>
 
-#include "tools/brdf_evaluator.h"
+#include "samples/tools/brdf_evaluator.h"
 #include "engine/render/marschner_textures.h"
 #include "engine/shading/marschner.h"
 #include "tests/render/brdf_test_util.h"

@@ -6,7 +6,7 @@
 #include <iostream>
 
 #include "engine/error.h"
-#include "tools/brdf_evaluator.h"
+#include "samples/tools/brdf_evaluator.h"
 #include "engine/render/marschner_textures.h"
 #include "engine/shading/lut_sampler.h"
 #include "engine/shading/marschner.h"

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "tools/brdf_evaluator.h"
+#include "samples/tools/brdf_evaluator.h"
 #include "tests/shading/random_directions.h"
 
 namespace hp::test {

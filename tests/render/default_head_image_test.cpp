@@ -8,8 +8,8 @@
 #include <filesystem>
 #include <iostream>
 
-#include "tools/png_file.h"
-#include "tools/render_job.h"
+#include "samples/tools/png_file.h"
+#include "samples/tools/render_job.h"
 #include "tests/support/vk_fixture.h"
 
 using namespace hp;

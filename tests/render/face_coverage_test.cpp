@@ -8,7 +8,7 @@
 
 #include "engine/hair/head_sdf.h"
 #include "engine/render/camera.h"
-#include "tools/render_job.h"
+#include "samples/tools/render_job.h"
 #include "tests/support/vk_fixture.h"
 
 using namespace hp;

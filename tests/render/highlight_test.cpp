@@ -11,7 +11,7 @@
 #include <cmath>
 
 #include "engine/render/camera.h"
-#include "tools/render_job.h"
+#include "samples/tools/render_job.h"
 #include "tests/support/vk_fixture.h"
 
 using namespace hp;

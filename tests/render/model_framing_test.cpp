@@ -10,7 +10,7 @@
 #include "engine/hair/camera_fit.h"
 #include "engine/hair/hair_file.h"
 #include "engine/hair/model_guess.h"
-#include "tools/render_job.h"
+#include "samples/tools/render_job.h"
 #include "tests/support/vk_fixture.h"
 
 using namespace hp;

@@ -13,7 +13,7 @@
 #include "engine/hair/default_head.h"
 #include "engine/frame_recorder.h"
 #include "engine/hair_system.h"
-#include "tools/opacity_capture.h"
+#include "samples/tools/opacity_capture.h"
 #include "engine/render/opacity_pass.h"
 #include "engine/vk/submit.h"
 #include "engine/vk/transfer.h"

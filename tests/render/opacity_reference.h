@@ -12,7 +12,7 @@
 #include <array>
 #include <vector>
 
-#include "tools/opacity_capture.h"
+#include "samples/tools/opacity_capture.h"
 
 namespace hp::test {
 struct LightBox {

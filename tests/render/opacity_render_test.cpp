@@ -9,10 +9,10 @@
 
 #include <cmath>
 
-#include "tools/simulation_driver.h"
+#include "samples/tools/simulation_driver.h"
 #include "engine/hair/default_head.h"
-#include "tools/offscreen_renderer.h"
-#include "tools/render_job.h"
+#include "samples/tools/offscreen_renderer.h"
+#include "samples/tools/render_job.h"
 #include "engine/vk/submit.h"
 #include "tests/support/vk_fixture.h"
 

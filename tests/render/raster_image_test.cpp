@@ -7,10 +7,10 @@
 #include <iostream>
 
 #include "compute/interpolate_pass.h"
-#include "tools/strand_dump.h"
+#include "samples/tools/strand_dump.h"
 #include "compute/tessellate_pass.h"
 #include "engine/hair/default_head.h"
-#include "tools/render_job.h"
+#include "samples/tools/render_job.h"
 #include "engine/vk/submit.h"
 #include "tests/render/raster_rig.h"
 #include "tests/support/vk_fixture.h"

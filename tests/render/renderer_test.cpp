@@ -13,7 +13,7 @@
 
 #include "engine/error.h"
 #include "engine/hair/default_head.h"
-#include "tools/offscreen_renderer.h"
+#include "samples/tools/offscreen_renderer.h"
 #include "engine/renderer.h"
 #include "engine/shading/material_color.h"
 #include "engine/vk/check.h"

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Fails if a layer includes a layer above it. Bottom to top: engine/{hair,shading,sim} (no Vulkan),
 # engine/vk, compute/, engine/render/, the facade (engine/*.h: Renderer, HairInstance, HairSystem),
-# tools/, samples/. Usage: check_layers.sh SOURCE_DIR
+# samples/tools/, samples/ (the CLI and the embedding sample). Usage: check_layers.sh SOURCE_DIR
 set -euo pipefail
 cd "$1"
 status=0
@@ -15,11 +15,11 @@ check() {  # check DIRS... -- PATTERN: no file under DIRS includes a header matc
     status=1
   fi
 }
-check engine/hair engine/shading engine/sim -- 'engine/vk/|engine/render/|compute/|tools/|samples/|engine/(hair_system|hair_instance|renderer|renderer_settings|frame_recorder)\.h'
-check engine/vk -- 'engine/render/|compute/|tools/|samples/|engine/(hair_system|hair_instance|renderer|renderer_settings|frame_recorder)\.h'
-check compute -- 'engine/render/|tools/|samples/|engine/(hair_system|hair_instance|renderer|renderer_settings|frame_recorder)\.h'
-check engine/render -- 'tools/|samples/|engine/(hair_system|hair_instance|renderer|renderer_settings|frame_recorder)\.h'
-check engine/*.h engine/*.cpp -- 'tools/|samples/'
-check tools -- 'samples/'
+check engine/hair engine/shading engine/sim -- 'engine/vk/|engine/render/|compute/|samples/|engine/(hair_system|hair_instance|renderer|renderer_settings|frame_recorder)\.h'
+check engine/vk -- 'engine/render/|compute/|samples/|engine/(hair_system|hair_instance|renderer|renderer_settings|frame_recorder)\.h'
+check compute -- 'engine/render/|samples/|engine/(hair_system|hair_instance|renderer|renderer_settings|frame_recorder)\.h'
+check engine/render -- 'samples/|engine/(hair_system|hair_instance|renderer|renderer_settings|frame_recorder)\.h'
+check engine/*.h engine/*.cpp -- 'samples/'
+check samples/tools -- 'samples/(cli|embed)'
 [ $status -eq 0 ] && echo "no layer includes a layer above it"
 exit $status

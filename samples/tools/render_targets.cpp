@@ -1,4 +1,4 @@
-#include "tools/render_targets.h"
+#include "samples/tools/render_targets.h"
 
 #include "engine/error.h"
 #include "engine/vk/context.h"

@@ -1,4 +1,4 @@
-#include "tools/tonemap_pass.h"
+#include "samples/tools/tonemap_pass.h"
 
 #include "engine/vk/context.h"
 #include "engine/vk/image.h"

@@ -1,4 +1,4 @@
-#include "tools/offscreen_renderer.h"
+#include "samples/tools/offscreen_renderer.h"
 
 #include "engine/error.h"
 #include "engine/vk/barriers.h"

@@ -1,4 +1,4 @@
-#include "tools/brdf_evaluator.h"
+#include "samples/tools/brdf_evaluator.h"
 
 #include <algorithm>
 #include <string>

@@ -1,10 +1,10 @@
-#include "tools/render_job.h"
+#include "samples/tools/render_job.h"
 
-#include "tools/strand_dump.h"
+#include "samples/tools/strand_dump.h"
 
-#include "tools/simulation_driver.h"
+#include "samples/tools/simulation_driver.h"
 #include "engine/error.h"
-#include "tools/offscreen_renderer.h"
+#include "samples/tools/offscreen_renderer.h"
 #include "engine/vk/context.h"
 #include "engine/vk/submit.h"
 

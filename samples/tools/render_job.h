@@ -8,7 +8,7 @@
 
 #include "engine/hair/hair_file.h"
 #include "engine/hair_system.h"
-#include "tools/opacity_capture.h"
+#include "samples/tools/opacity_capture.h"
 #include "engine/sim/head_animation.h"
 #include "engine/vk/profiler.h"
 

@@ -1,4 +1,4 @@
-#include "tools/strand_dump.h"
+#include "samples/tools/strand_dump.h"
 
 #include <algorithm>
 

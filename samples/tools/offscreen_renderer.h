@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "engine/hair_system.h"
-#include "tools/render_targets.h"
-#include "tools/tonemap_pass.h"
+#include "samples/tools/render_targets.h"
+#include "samples/tools/tonemap_pass.h"
 
 namespace hp::render {
 class OffscreenRenderer {

@@ -1,4 +1,4 @@
-#include "tools/simulation_driver.h"
+#include "samples/tools/simulation_driver.h"
 
 #include <algorithm>
 

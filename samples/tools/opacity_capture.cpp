@@ -1,4 +1,4 @@
-#include "tools/opacity_capture.h"
+#include "samples/tools/opacity_capture.h"
 
 #include <algorithm>
 #include <cmath>
@@ -9,7 +9,7 @@
 
 #include "engine/error.h"
 #include "engine/hair/atomic_write.h"
-#include "tools/png_file.h"
+#include "samples/tools/png_file.h"
 #include "engine/shading/half_float.h"
 #include "engine/shading/lut_export.h"
 #include "engine/vk/transfer.h"
