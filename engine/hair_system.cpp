@@ -25,6 +25,14 @@ const HairSystemSettings& validated(const HairSystemSettings& s) {
   return s;
 }
 
+// The opacity map's strand footprint is the width the strands are drawn with (one source: LookSettings).
+render::OpacitySettings opacityFor(const HairSystemSettings& s) {
+  render::OpacitySettings o = s.opacity;
+  o.strandWidth = s.look.strandWidth;
+  o.tipWidthFraction = s.look.tipWidthFraction;
+  return o;
+}
+
 // The embedding path has no CLI in front of it: a bad view must fail here, not as NaN on the device.
 void validateView(const DrawView& view) {
   view.light.validate();
@@ -47,7 +55,7 @@ HairSystem::HairSystem(const vk::Context& ctx, const HairAsset& asset, const Hai
       marschner_(ctx, settings.material, settings.lutMode),
       frameBlock_(makeFrameBlock(ctx)),
       bounds_(ctx, strands_),
-      opacity_(ctx, strands_, asset.head, bounds_.lightSpace(), settings.opacity),
+      opacity_(ctx, strands_, asset.head, bounds_.lightSpace(), opacityFor(settings)),
       head_(ctx, asset.head, frameBlock_, opacity_.shadowInputs(), settings.formats),
       strandPass_(ctx, strands_, marschner_, frameBlock_, opacity_.shadowInputs(), settings.formats) {
   // A valid frame block from the start, so a draw recorded before the first recordPrepareDraw reads

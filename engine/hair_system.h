@@ -33,7 +33,7 @@ namespace hp {
 struct HairSystemSettings {
   SimulationParams simulation;
   HairMaterial material;
-  LutMode lutMode = LutMode::Float;
+  LutMode lutMode = LutMode::Physical;
   compute::StrandOptions strands;
   render::AttachmentFormats formats;
   render::LookSettings look;
@@ -68,6 +68,7 @@ class HairSystem {
   const HairSystemSettings& settings() const { return settings_; }
 
  private:
+
   const vk::Context& ctx_;
   HairSystemSettings settings_;
   SimulatePass simulate_;

@@ -127,8 +127,10 @@ void OpacityPass::record(VkCommandBuffer cmd, const glm::mat4& headToWorld) cons
 
   const std::uint32_t q = strands_->layout().verticesPerStrand;
   gpu::OpacityPush push{};
-  push.opacity = settings_.strandOpacity;
+  push.opacity = settings_.footprint ? 1.0f : settings_.strandOpacity;
   push.verticesPerStrand = q;
+  push.footprint = glm::vec4(settings_.strandWidth, settings_.tipWidthFraction, 1.0f / float(settings_.resolution),
+                             settings_.footprint ? 1.0f : 0.0f);
   for (std::size_t c = 0; c < strandSets_.size(); ++c) {
     strandPipeline_.bind(cmd, strandSets_[c].set(), image_.extent());
     strandPipeline_.push(cmd, push);
