@@ -1,18 +1,22 @@
 # Thin driver (as neovim does): install what is missing, configure, build, run.
 #   make demo   installs, builds (Release) and renders the default head to out/hair.png
 #   make test   installs, builds and runs the whole CTest suite on lavapipe
+#   make fuzz   builds the libFuzzer targets (clang, ASan+UBSan) and runs each for FUZZ_SECONDS
+#   make test-asan  builds everything with ASan+UBSan (clang) and runs the sanitizer suite
 BUILD ?= build
 BUILD_TYPE ?= Release
 JOBS ?= $(shell nproc)
+SAN_BUILD ?= build-asan
+FUZZ_SECONDS ?= 60
 
 # Debian 12 packages the build, the tests and the demo need.
 PACKAGES := cmake make g++ pkg-config libvulkan-dev libvulkan-volk-dev glslc libshaderc-dev \
 	libglm-dev mesa-vulkan-drivers vulkan-validationlayers libcli11-dev nlohmann-json3-dev \
-	libtinyobjloader-dev libpng-dev libgtest-dev
+	libtinyobjloader-dev libpng-dev libgtest-dev clang-14 libclang-rt-14-dev
 
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
-.PHONY: deps configure build demo test clean
+.PHONY: deps configure build demo test clean configure-asan fuzz test-asan
 
 deps:
 	@missing=$$(for p in $(PACKAGES); do \
@@ -36,5 +40,35 @@ demo: build
 test: build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS) --timeout 900
 
+# One clang build with AddressSanitizer + UndefinedBehaviorSanitizer and libFuzzer instrumentation
+# serves both the fuzzers and the sanitizer test run. SAN_SCOPE=host (what CI runs) builds and tests
+# only the device-free code: the asset parsers, shading, and the parser fuzzers; SAN_SCOPE=all adds
+# the Vulkan library, the tool, every suite and the CLI fuzzer (a second full build: too slow for CI).
+SAN_SCOPE ?= all
+HOST_FUZZERS := fuzz_hair fuzz_obj fuzz_scene fuzz_brdf_csv
+ifeq ($(SAN_SCOPE),host)
+SAN_TARGETS := hair_tests shading_tests $(HOST_FUZZERS)
+SAN_LABEL := -L host
+FUZZERS ?= $(HOST_FUZZERS)
+else
+SAN_TARGETS := all hairpipe_fuzzers
+SAN_LABEL :=
+FUZZERS ?= $(HOST_FUZZERS) fuzz_cli
+endif
+
+configure-asan: deps
+	CC=clang-14 CXX=clang++-14 cmake -S . -B $(SAN_BUILD) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DHAIRPIPE_FUZZ=ON
+
+fuzz: configure-asan
+	cmake --build $(SAN_BUILD) -j $(JOBS) --target $(FUZZERS)
+	tests/fuzz/run_fuzzers.sh $(SAN_BUILD) $(FUZZ_SECONDS) $(FUZZERS)
+
+test-asan: configure-asan
+	cmake --build $(SAN_BUILD) -j $(JOBS) --target $(SAN_TARGETS)
+	cd $(SAN_BUILD) && ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 \
+		LSAN_OPTIONS=suppressions=$(CURDIR)/tests/sanitizer/lsan.supp:print_suppressions=0 \
+		UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
+		ctest --output-on-failure -j $(JOBS) --timeout 900 $(SAN_LABEL)
+
 clean:
-	rm -rf $(BUILD)
+	rm -rf $(BUILD) $(SAN_BUILD)

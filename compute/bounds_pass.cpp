@@ -3,7 +3,6 @@
 #include <cmath>
 #include <string>
 
-#include "engine/vk/transfer.h"
 
 namespace hp::compute {
 namespace {
@@ -42,16 +41,13 @@ gpu::LightSpace initialLightSpace() {
   return l;
 }
 
-BoundsPass::BoundsPass(const vk::Context& ctx, const StrandBuffers& strands)
+BoundsPass::BoundsPass(const vk::Context& ctx, const StrandBuffers& strands, const vk::Buffer& lightSpace,
+                       vk::PipelineLibrary* library)
     : ctx_(&ctx),
-      lightSpace_(ctx, sizeof(gpu::LightSpace), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT |
-                                                   VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
-                  vk::MemoryKind::DeviceLocal, "light space"),
+      lightSpace_(&lightSpace),
       layoutSet_(ctx, kBindings, "bounds layout"),
-      pipeline_(ctx, "bounds.comp", gpu::BOUNDS_WORKGROUP_SIZE, {layoutSet_.layout()}, sizeof(gpu::BoundsPush),
-                "bounds") {
-  const gpu::LightSpace initial = initialLightSpace();
-  vk::uploadBytes(ctx, lightSpace_, &initial, sizeof(initial), vk::BufferUse::VertexRead);
+      pipeline_(vk::makeComputePipeline(ctx, library, "bounds.comp", gpu::BOUNDS_WORKGROUP_SIZE,
+                                        {layoutSet_.layout()}, sizeof(gpu::BoundsPush), "bounds")) {
   bind(strands);
 }
 
@@ -61,7 +57,7 @@ void BoundsPass::bind(const StrandBuffers& strands) {
     Chunk chunk{vk::DescriptorSet(*ctx_, kBindings, "bounds [chunk " + std::to_string(chunks.size()) + "]"),
                 c.range.strandCount * strands.layout().verticesPerStrand};
     chunk.set.writeStorageBuffer(gpu::BOUNDS_BINDING_POSITIONS, c.positions.handle());
-    chunk.set.writeStorageBuffer(gpu::BOUNDS_BINDING_LIGHT, lightSpace_.handle());
+    chunk.set.writeStorageBuffer(gpu::BOUNDS_BINDING_LIGHT, lightSpace_->handle());
     chunks.push_back(std::move(chunk));
   }
   chunks_ = std::move(chunks);
@@ -87,9 +83,9 @@ void BoundsPass::recordReduce(VkCommandBuffer cmd, const ShadowLight& light) con
   p.mode = gpu::BOUNDS_MODE_REDUCE;
   for (const Chunk& c : chunks_) {
     p.vertexCount = c.vertexCount;
-    pipeline_.bind(cmd, c.set.set());
-    pipeline_.push(cmd, p);
-    pipeline_.dispatch(cmd, (c.vertexCount + gpu::BOUNDS_VERTICES_PER_THREAD - 1) / gpu::BOUNDS_VERTICES_PER_THREAD);
+    pipeline_->bind(cmd, c.set.set());
+    pipeline_->push(cmd, p);
+    pipeline_->dispatch(cmd, (c.vertexCount + gpu::BOUNDS_VERTICES_PER_THREAD - 1) / gpu::BOUNDS_VERTICES_PER_THREAD);
   }
 }
 
@@ -99,8 +95,8 @@ void BoundsPass::recordFinalize(VkCommandBuffer cmd, const ShadowLight& light, c
   p.marginWorld = f.marginWorld;
   p.marginTexels = f.marginTexels;
   p.resolution = f.resolution;
-  pipeline_.bind(cmd, chunks_.front().set.set());
-  pipeline_.push(cmd, p);
-  pipeline_.dispatch(cmd, 1);
+  pipeline_->bind(cmd, chunks_.front().set.set());
+  pipeline_->push(cmd, p);
+  pipeline_->dispatch(cmd, 1);
 }
 }  // namespace hp::compute

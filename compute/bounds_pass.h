@@ -1,19 +1,21 @@
 #pragma once
 // Contract: the bounds pass (shaders/bounds.comp, shaders/shared/opacity.h). It reduces the light-space
 // extent of every render strand vertex (all chunks) on the device and writes gpu::LightSpace into
-// its own device buffer: the orthographic light viewProj over the padded x/y box and the 16 slice
+// a device buffer it is given (render::ShadowMaps owns it; several instances' bounds passes reduce into
+// the same one, so one framing covers all of them): the orthographic light viewProj over the padded x/y box and the 16 slice
 // depths z_i = z_near + i d_z. The host never reads it back in the frame loop; later passes bind
 // lightSpace() as a storage buffer. A directional light gets an orthographic framing, a spot light a
 // perspective one from its position, capped by its cone (shared/opacity.h has the conventions).
 //
 // Recording, in the frame recorder, with barriers between the steps (the pass inserts none):
 //   recordReduce(cmd, light)  one dispatch per chunk: atomicMin/Max into LightSpace.minBits/maxBits
-//   recordFinalize(cmd)       one dispatch: reads the accumulators, writes the matrices and depths,
-//                             and re-arms the accumulators, so every frame starts armed.
+//                             (every instance sharing the buffer, one after the other: atomics)
+//   recordFinalize(cmd)       one dispatch (of any one of them): reads the accumulators, writes the
+//                             matrices and depths, and re-arms the accumulators, so every frame starts armed.
 // The frame recorder guarantees: before recordReduce, the strand positions' ComputeWrite is visible
 // to ComputeRead and the previous frame's reads of lightSpace() are done (-> ComputeWrite); between
 // the steps, lightSpace() ComputeWrite -> ComputeWrite; after recordFinalize, ComputeWrite -> the
-// readers' use. Construction uploads an armed buffer with a unit box, left in BufferUse::VertexRead.
+// readers' use. The buffer starts armed: initialLightSpace() (ShadowMaps uploads it).
 #include <volk.h>
 
 #include <glm/glm.hpp>
@@ -23,7 +25,7 @@
 #include "compute/strand_buffers.h"
 #include "engine/vk/buffer.h"
 #include "engine/vk/descriptors.h"
-#include "engine/vk/pipeline.h"
+#include "engine/vk/pipeline_library.h"
 #include "shaders/shared/opacity.h"
 
 namespace hp::compute {
@@ -53,12 +55,13 @@ struct BoundsFraming {
 
 class BoundsPass {
  public:
-  BoundsPass(const vk::Context& ctx, const StrandBuffers& strands);
-  void bind(const StrandBuffers& strands);  // outside the frame loop, after StrandBuffers changed
+  // lightSpace: gpu::LightSpace, storage usage, armed (initialLightSpace); it outlives the pass.
+  BoundsPass(const vk::Context& ctx, const StrandBuffers& strands, const vk::Buffer& lightSpace,
+             vk::PipelineLibrary* library = nullptr);
 
   void recordReduce(VkCommandBuffer cmd, const ShadowLight& light) const;
   void recordFinalize(VkCommandBuffer cmd, const ShadowLight& light, const BoundsFraming& framing) const;
-  const vk::Buffer& lightSpace() const { return lightSpace_; }
+  const vk::Buffer& lightSpace() const { return *lightSpace_; }
 
  private:
   struct Chunk {
@@ -66,11 +69,12 @@ class BoundsPass {
     std::uint32_t vertexCount;
   };
   gpu::BoundsPush push(const ShadowLight& light) const;
+  void bind(const StrandBuffers& strands);
 
   const vk::Context* ctx_;
-  vk::Buffer lightSpace_;
+  const vk::Buffer* lightSpace_;
   vk::DescriptorSet layoutSet_;
-  vk::ComputePipeline pipeline_;
+  std::shared_ptr<const vk::ComputePipeline> pipeline_;
   std::vector<Chunk> chunks_;
 };
 

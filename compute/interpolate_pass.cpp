@@ -17,11 +17,11 @@ const vk::Binding kBindings[] = {
 };
 }  // namespace
 
-InterpolatePass::InterpolatePass(const vk::Context& ctx, const StrandBuffers& buffers)
+InterpolatePass::InterpolatePass(const vk::Context& ctx, const StrandBuffers& buffers, vk::PipelineLibrary* library)
     : ctx_(&ctx),
       layoutSet_(ctx, kBindings, "interpolate layout"),
-      pipeline_(ctx, "interpolate.comp", gpu::INTERPOLATE_WORKGROUP_SIZE, {layoutSet_.layout()},
-                sizeof(gpu::InterpolatePush), "interpolate") {
+      pipeline_(vk::makeComputePipeline(ctx, library, "interpolate.comp", gpu::INTERPOLATE_WORKGROUP_SIZE, {layoutSet_.layout()},
+                sizeof(gpu::InterpolatePush), "interpolate")) {
   bind(buffers);
 }
 
@@ -48,9 +48,9 @@ void InterpolatePass::bind(const StrandBuffers& buffers) {
 void InterpolatePass::record(VkCommandBuffer cmd, vk::GpuProfiler* profiler) const {
   if (profiler) profiler->begin(cmd, "interpolate");
   for (const Chunk& c : chunks_) {
-    pipeline_.bind(cmd, c.set.set());
-    pipeline_.push(cmd, c.push);
-    pipeline_.dispatch(cmd, c.push.strandCount);
+    pipeline_->bind(cmd, c.set.set());
+    pipeline_->push(cmd, c.push);
+    pipeline_->dispatch(cmd, c.push.strandCount);
   }
   if (profiler) profiler->end(cmd);
 }

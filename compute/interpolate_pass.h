@@ -17,14 +17,14 @@
 
 #include "compute/strand_buffers.h"
 #include "engine/vk/descriptors.h"
-#include "engine/vk/pipeline.h"
+#include "engine/vk/pipeline_library.h"
 #include "engine/vk/profiler.h"
 #include "shaders/shared/strands.h"
 
 namespace hp::compute {
 class InterpolatePass {
  public:
-  InterpolatePass(const vk::Context& ctx, const StrandBuffers& buffers);
+  InterpolatePass(const vk::Context& ctx, const StrandBuffers& buffers, vk::PipelineLibrary* library = nullptr);
 
   // After StrandBuffers was re-allocated (density, Q, guides-only change); outside the frame loop only.
   void bind(const StrandBuffers& buffers);
@@ -39,7 +39,7 @@ class InterpolatePass {
   // The pipeline layout is made from this set's layout; chunk sets have identical layouts, so they
   // are compatible, and chunk sets can be rebuilt without touching the pipeline.
   vk::DescriptorSet layoutSet_;
-  vk::ComputePipeline pipeline_;
+  std::shared_ptr<const vk::ComputePipeline> pipeline_;
   std::vector<Chunk> chunks_;
 };
 }  // namespace hp::compute

@@ -46,7 +46,7 @@ std::vector<glm::vec4> guideRestPose(const GuideSet& guides) {
 }
 
 SimulatePass::SimulatePass(const vk::Context& ctx, const HairAsset& asset, const SimulationParams& params,
-                           const glm::mat4& initialHead)
+                           const glm::mat4& initialHead, vk::PipelineLibrary* library)
     : ctx_(ctx),
       params_(params),
       guideCount_(asset.guides.guideCount()),
@@ -72,7 +72,7 @@ SimulatePass::SimulatePass(const vk::Context& ctx, const HairAsset& asset, const
   set_.writeStorageBuffer(gpu::SIM_BINDING_PREVIOUS, previous_.handle());
   set_.writeStorageBuffer(gpu::SIM_BINDING_REST, restBuffer_.handle());
   static_assert(gpu::SIM_SPEC_PARTICLES == 0, "ComputePipeline numbers specialization constants from 0");
-  pipeline_ = vk::ComputePipeline(ctx, "simulate.comp", gpu::SIM_WORKGROUP_SIZE, {set_.layout()}, 0, "simulate",
+  pipeline_ = vk::makeComputePipeline(ctx, library, "simulate.comp", gpu::SIM_WORKGROUP_SIZE, {set_.layout()}, 0, "simulate",
                                   {particlesPerGuide_});
   vk::upload<glm::vec4>(ctx, restBuffer_, rest_, vk::BufferUse::ComputeRead);
   reset(initialHead);
@@ -123,8 +123,8 @@ void SimulatePass::record(VkCommandBuffer cmd, const HeadMotion& motion, vk::Gpu
   vkCmdUpdateBuffer(cmd, frame_.handle(), 0, sizeof(f), &f);
   vk::bufferBarrier(cmd, frame_.handle(), vk::BufferUse::TransferDst, vk::BufferUse::ComputeRead);
   frameWritten_ = true;
-  pipeline_.bind(cmd, set_.set());
-  pipeline_.dispatch(cmd, guideCount_);
+  pipeline_->bind(cmd, set_.set());
+  pipeline_->dispatch(cmd, guideCount_);
   if (profiler) profiler->end(cmd);
 }
 }  // namespace hp

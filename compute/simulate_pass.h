@@ -13,7 +13,7 @@
 #include "engine/hair/sim_params.h"
 #include "engine/vk/buffer.h"
 #include "engine/vk/descriptors.h"
-#include "engine/vk/pipeline.h"
+#include "engine/vk/pipeline_library.h"
 #include "engine/vk/profiler.h"
 #include "shaders/shared/simulate.h"
 
@@ -31,7 +31,7 @@ class SimulatePass {
   // Guides start in their rest pose placed by `initialHead`. Throws hp::Error on invalid params or
   // an asset the pass cannot hold (too many colliders, buffers past maxStorageBufferRange).
   SimulatePass(const vk::Context& ctx, const HairAsset& asset, const SimulationParams& params,
-               const glm::mat4& initialHead = glm::mat4(1.0f));
+               const glm::mat4& initialHead = glm::mat4(1.0f), vk::PipelineLibrary* library = nullptr);
 
   void setParams(const SimulationParams& params);
   const SimulationParams& params() const { return params_; }
@@ -61,7 +61,7 @@ class SimulatePass {
   vk::Buffer restBuffer_;
   vk::Buffer frame_;
   vk::DescriptorSet set_;
-  vk::ComputePipeline pipeline_;
+  std::shared_ptr<const vk::ComputePipeline> pipeline_;
   bool frameWritten_ = false;
 };
 

@@ -15,10 +15,11 @@ const vk::Binding kBindings[] = {
 };
 }  // namespace
 
-TessellatePass::TessellatePass(const vk::Context& ctx, const vk::Buffer& particles, const StrandBuffers& buffers)
+TessellatePass::TessellatePass(const vk::Context& ctx, const vk::Buffer& particles, const StrandBuffers& buffers,
+                               vk::PipelineLibrary* library)
     : set_(ctx, kBindings, "tessellate"),
-      pipeline_(ctx, "tessellate.comp", gpu::TESSELLATE_WORKGROUP_SIZE, {set_.layout()},
-                sizeof(gpu::TessellatePush), "tessellate") {
+      pipeline_(vk::makeComputePipeline(ctx, library, "tessellate.comp", gpu::TESSELLATE_WORKGROUP_SIZE, {set_.layout()},
+                sizeof(gpu::TessellatePush), "tessellate")) {
   bind(particles, buffers);
 }
 
@@ -36,9 +37,9 @@ void TessellatePass::bind(const vk::Buffer& particles, const StrandBuffers& buff
 
 void TessellatePass::record(VkCommandBuffer cmd, vk::GpuProfiler* profiler) const {
   if (profiler) profiler->begin(cmd, "tessellate");
-  pipeline_.bind(cmd, set_.set());
-  pipeline_.push(cmd, push_);
-  pipeline_.dispatch(cmd, push_.guideCount * push_.vertices);
+  pipeline_->bind(cmd, set_.set());
+  pipeline_->push(cmd, push_);
+  pipeline_->dispatch(cmd, push_.guideCount * push_.vertices);
   if (profiler) profiler->end(cmd);
 }
 }  // namespace hp::compute

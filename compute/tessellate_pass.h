@@ -12,7 +12,7 @@
 
 #include "compute/strand_buffers.h"
 #include "engine/vk/descriptors.h"
-#include "engine/vk/pipeline.h"
+#include "engine/vk/pipeline_library.h"
 #include "engine/vk/profiler.h"
 #include "shaders/shared/strands.h"
 
@@ -20,7 +20,9 @@ namespace hp::compute {
 class TessellatePass {
  public:
   // particles: vec4[G * P] (xyz position, w unused), at least layout().guideCount * P entries.
-  TessellatePass(const vk::Context& ctx, const vk::Buffer& particles, const StrandBuffers& buffers);
+  // With a `library`, the pipeline is shared with every other pass built from it.
+  TessellatePass(const vk::Context& ctx, const vk::Buffer& particles, const StrandBuffers& buffers,
+                 vk::PipelineLibrary* library = nullptr);
 
   // After StrandBuffers or the particle buffer were re-allocated; outside the frame loop only.
   void bind(const vk::Buffer& particles, const StrandBuffers& buffers);
@@ -28,7 +30,7 @@ class TessellatePass {
 
  private:
   vk::DescriptorSet set_;
-  vk::ComputePipeline pipeline_;
+  std::shared_ptr<const vk::ComputePipeline> pipeline_;
   gpu::TessellatePush push_{};
 };
 }  // namespace hp::compute

@@ -2,10 +2,10 @@
 #include <bit>
 #include <cmath>
 #include <cstring>
-#include <fstream>
 
 #include "engine/error.h"
 #include "engine/hair/hair_file.h"
+#include "engine/hair/input_file.h"
 
 namespace hp {
 static_assert(std::endian::native == std::endian::little, ".hair is little-endian; so is every target");
@@ -133,17 +133,6 @@ HairFileData decodeHair(std::span<const std::byte> bytes, const std::string& sou
 }
 
 HairFileData readHairFile(const std::filesystem::path& path) {
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec)) throw Error(path.string() + ": cannot open (not a regular file)");
-  std::ifstream in(path, std::ios::binary | std::ios::ate);
-  if (!in) throw Error(path.string() + ": cannot open");
-  const std::streamoff end = in.tellg();
-  if (end < 0) throw Error(path.string() + ": cannot tell the file's size");
-  auto size = static_cast<std::size_t>(end);
-  std::vector<std::byte> bytes(size);
-  in.seekg(0);
-  if (!in.read(reinterpret_cast<char*>(bytes.data()), static_cast<std::streamsize>(size)))
-    throw Error(path.string() + ": read error");
-  return decodeHair(bytes, path.string());
+  return decodeHair(readInputBytes(path, kMaxHairFileBytes), path.string());
 }
 }  // namespace hp

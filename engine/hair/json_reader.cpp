@@ -1,6 +1,10 @@
 #include "engine/hair/json_reader.h"
 
+#include <cmath>
+#include <limits>
+
 #include "engine/error.h"
+#include "engine/hair/input_file.h"
 
 namespace hp {
 std::string jsonTypeName(const nlohmann::json& value) {
@@ -9,12 +13,22 @@ std::string jsonTypeName(const nlohmann::json& value) {
 }
 
 nlohmann::json parseJsonText(const std::string& text, const std::string& file) {
+  // Depth is bounded while parsing (the parser itself is iterative), so no later recursive copy,
+  // comparison or dump of the document can run out of stack on hostile nesting.
+  const nlohmann::json::parser_callback_t limitDepth = [&file](int depth, nlohmann::json::parse_event_t event,
+                                                                 nlohmann::json&) {
+    const bool opens = event == nlohmann::json::parse_event_t::object_start ||
+                       event == nlohmann::json::parse_event_t::array_start;
+    if (opens && depth >= kMaxJsonDepth)
+      throw Error(file + ": invalid JSON: nested deeper than " + std::to_string(kMaxJsonDepth) + " levels");
+    return true;
+  };
   try {
-    return nlohmann::json::parse(text);
-  } catch (const nlohmann::json::parse_error& e) {
+    return nlohmann::json::parse(text, limitDepth);
+  } catch (const nlohmann::json::exception& e) {  // syntax errors, and numbers that overflow a double
     std::string what = e.what();
     auto cut = what.find("] ");  // drop nlohmann's "[json.exception.parse_error.101] " tag
-    throw Error(file + ": invalid JSON: " + (cut == std::string::npos ? what : what.substr(cut + 2)));
+    throw Error(file + ": invalid JSON: " + excerpt(cut == std::string::npos ? what : what.substr(cut + 2), 160));
   }
 }
 
@@ -23,6 +37,8 @@ JsonObject::JsonObject(const nlohmann::json& value, std::string pointer, std::st
   if (!value_.is_object())
     throw Error(where(pointer_) + ": expected an object, got " + jsonTypeName(value_));
 }
+
+std::string JsonObject::pointer(const char* key) const { return pointer_ + "/" + excerpt(key); }
 
 void JsonObject::fail(const char* key, const std::string& message) const {
   throw Error(where(pointer(key)) + ": " + message);
@@ -56,6 +72,8 @@ void JsonObject::read(const char* key, double& out) {
 void JsonObject::read(const char* key, float& out) {
   double d = out;
   read(key, d);
+  if (std::abs(d) > double(std::numeric_limits<float>::max()))
+    fail(key, "the number " + excerpt(std::to_string(d), 24) + " does not fit a 32-bit float");
   out = static_cast<float>(d);
 }
 
@@ -97,6 +115,9 @@ void JsonObject::read(const char* key, glm::dvec3& out) {
 void JsonObject::read(const char* key, glm::vec3& out) {
   glm::dvec3 d(out);
   read(key, d);
+  for (int i = 0; i < 3; ++i)
+    if (std::abs(d[i]) > double(std::numeric_limits<float>::max()))
+      throw Error(where(pointer(key) + "/" + std::to_string(i)) + ": the number does not fit a 32-bit float");
   out = glm::vec3(d);
 }
 

@@ -32,7 +32,7 @@ class JsonObject {
   const nlohmann::json* array(const char* key);  // nullptr when absent; throws if not an array
   const nlohmann::json* value(const char* key);  // any type; marks the key as read
 
-  std::string pointer(const char* key) const { return pointer_ + "/" + key; }
+  std::string pointer(const char* key) const;  // keys are quoted as a short excerpt
   std::string where(const std::string& pointer) const { return file_ + ": " + (pointer.empty() ? "/" : pointer); }
   [[noreturn]] void fail(const char* key, const std::string& message) const;
   void finish() const;  // throws on the first key no read asked for
@@ -48,7 +48,10 @@ class JsonObject {
   std::set<std::string> used_;
 };
 
-// Parses JSON text; a syntax error becomes hp::Error "file: invalid JSON: <where and why>".
+// How deep objects and arrays may nest in a config file (a scene needs 3 levels).
+inline constexpr int kMaxJsonDepth = 32;
+// Parses JSON text; a syntax error, a number that overflows a double or nesting deeper than
+// kMaxJsonDepth becomes hp::Error "file: invalid JSON: <where and why>" (quoting a short excerpt).
 nlohmann::json parseJsonText(const std::string& text, const std::string& file);
 // What a JSON value is, for messages: "number", "string", "array", ...
 std::string jsonTypeName(const nlohmann::json& value);

@@ -2,10 +2,12 @@
 
 #include <tiny_obj_loader.h>
 
+#include <cmath>
 #include <string>
 #include <unordered_map>
 
 #include "engine/error.h"
+#include "engine/hair/input_file.h"
 
 namespace hp {
 namespace {
@@ -63,21 +65,29 @@ void checkManifold(const std::vector<glm::uvec3>& triangles, const std::string& 
     }
 }
 
-RawMesh readRaw(const std::filesystem::path& path) {
-  const std::string file = path.string();
+void checkFinite(const std::vector<glm::vec3>& positions, const std::string& file) {
+  for (std::size_t i = 0; i < positions.size(); ++i)
+    if (!std::isfinite(positions[i].x) || !std::isfinite(positions[i].y) || !std::isfinite(positions[i].z))
+      throw Error(file + ": vertex " + std::to_string(i + 1) + " is not finite");
+}
+
+// Parsed from memory with an empty material text: hairpipe uses no materials, and an `mtllib` line
+// must never make it open a file the input names (such as ../../dev/zero).
+RawMesh parseRaw(const std::string& text, const std::string& file) {
   tinyobj::ObjReaderConfig config;
   config.triangulate = false;  // indices are validated before any triangulation touches them
   config.vertex_color = false;
   tinyobj::ObjReader reader;
-  if (!reader.ParseFromFile(file, config)) {
+  if (!reader.ParseFromString(text, std::string(), config)) {
     std::string err = reader.Error();
     while (!err.empty() && (err.back() == '\n' || err.back() == ' ')) err.pop_back();
-    throw Error(file + ": " + (err.empty() ? std::string("cannot parse") : err));
+    throw Error(file + ": " + (err.empty() ? std::string("cannot parse") : excerpt(err, 160)));
   }
   const auto& attrib = reader.GetAttrib();
   RawMesh raw;
   for (std::size_t i = 0; i + 2 < attrib.vertices.size(); i += 3)
     raw.positions.emplace_back(attrib.vertices[i], attrib.vertices[i + 1], attrib.vertices[i + 2]);
+  checkFinite(raw.positions, file);
   raw.normalSums.assign(raw.positions.size(), glm::vec3(0.0f));
   std::size_t face = 0;
   for (const auto& shape : reader.GetShapes()) {
@@ -95,10 +105,15 @@ RawMesh readRaw(const std::filesystem::path& path) {
 
 ScalpMesh loadObjScalp(const std::filesystem::path& path, const ModelTransform& transform) {
   transform.validate();
-  RawMesh raw = readRaw(path);
+  return parseObjScalp(readInputText(path, kMaxMeshFileBytes), path.string(), transform);
+}
+
+ScalpMesh parseObjScalp(const std::string& text, const std::string& source, const ModelTransform& transform) {
+  transform.validate();
+  RawMesh raw = parseRaw(text, source);
   // Zero-area faces go before compaction, so vertices only they used go too.
   std::uint32_t dropped = dropDegenerateTriangles(raw.positions, raw.triangles);
-  if (raw.triangles.empty()) throw Error(path.string() + ": no non-degenerate triangles");
+  if (raw.triangles.empty()) throw Error(source + ": no non-degenerate triangles");
   // Keep only vertices some face uses: one guide grows per scalp vertex.
   std::vector<std::int64_t> remap(raw.positions.size(), -1);
   std::vector<glm::vec3> positions, normals;
@@ -112,7 +127,7 @@ ScalpMesh loadObjScalp(const std::filesystem::path& path, const ModelTransform& 
       t[k] = static_cast<std::uint32_t>(remap[t[k]]);
     }
   if (!raw.allCornersHaveNormals) normals.clear();
-  ScalpMesh mesh = buildScalpMesh(std::move(positions), std::move(raw.triangles), std::move(normals), path.string());
+  ScalpMesh mesh = buildScalpMesh(std::move(positions), std::move(raw.triangles), std::move(normals), source);
   mesh.droppedDegenerateTriangles += dropped;
   return mesh;
 }

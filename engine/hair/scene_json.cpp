@@ -1,10 +1,9 @@
 // Scene file parsing: one function per section, each reading its keys and checking its ranges.
 #include <cmath>
-#include <fstream>
-#include <sstream>
 
 #include "engine/error.h"
 #include "engine/hair/default_head.h"
+#include "engine/hair/input_file.h"
 #include "engine/hair/json_reader.h"
 #include "engine/hair/scene.h"
 
@@ -30,7 +29,7 @@ ModelSpec::Kind kindOf(const std::string& source, JsonObject& o) {
   for (auto& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   if (ext == ".hair") return ModelSpec::Kind::Hair;
   if (ext == ".obj") return ModelSpec::Kind::Obj;
-  o.fail("source", "expected \"default\" or a path ending in .hair or .obj, got \"" + source + "\"");
+  o.fail("source", "expected \"default\" or a path ending in .hair or .obj, got \"" + excerpt(source) + "\"");
 }
 
 void readModel(JsonObject& root, ModelSpec& model, const std::filesystem::path& baseDir) {
@@ -47,7 +46,7 @@ void readModel(JsonObject& root, ModelSpec& model, const std::filesystem::path& 
   o.finish();
   model.kind = kindOf(source, o);
   if (model.kind != ModelSpec::Kind::Default) model.path = baseDir / source;
-  requireThat(up == "y" || up == "z" || up == "Y" || up == "Z", o, "up", "expected \"y\" or \"z\", got \"" + up + "\"");
+  requireThat(up == "y" || up == "z" || up == "Y" || up == "Z", o, "up", "expected \"y\" or \"z\", got \"" + excerpt(up) + "\"");
   model.transform.up = parseUpAxis(up);
   validateSection(model.transform, o, root.pointer("model"));
 }
@@ -119,7 +118,7 @@ void readLight(JsonObject& root, LightSpec& l) {
   std::string type = "directional";
   o->read("type", type);
   requireThat(type == "directional" || type == "spot", *o, "type",
-              "expected \"directional\" or \"spot\", got \"" + type + "\"");
+              "expected \"directional\" or \"spot\", got \"" + excerpt(type) + "\"");
   const bool spot = type == "spot";
   for (const char* key : {"position", "target", "coneDeg", "range"})
     requireThat(spot || !o->has(key), *o, key, "is for a spot light only (\"type\": \"spot\")");
@@ -218,10 +217,6 @@ Scene parseScene(const std::string& jsonText, const std::string& source, const s
 }
 
 Scene loadSceneFile(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw Error(path.string() + ": cannot open");
-  std::stringstream text;
-  text << in.rdbuf();
-  return parseScene(text.str(), path.string(), path.parent_path());
+  return parseScene(readInputText(path, kMaxTextFileBytes), path.string(), path.parent_path());
 }
 }  // namespace hp

@@ -9,7 +9,7 @@ namespace {
 constexpr VkBufferUsageFlags kUsage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
 constexpr VkShaderStageFlags kVertex = VK_SHADER_STAGE_VERTEX_BIT;
 const vk::Binding kBindings[] = {
-    {gpu::RENDER_BINDING_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT},
+    {gpu::RENDER_BINDING_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT},
     {gpu::RENDER_BINDING_POSITIONS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kVertex},
     {gpu::RENDER_BINDING_TANGENTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kVertex},
     {gpu::RENDER_BINDING_ATTRIBUTES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kVertex},
@@ -27,7 +27,7 @@ std::vector<glm::vec4> asVec4(const std::vector<glm::vec3>& v, const std::vector
 }  // namespace
 
 HeadPass::HeadPass(const vk::Context& ctx, const HeadMesh& mesh, const vk::Buffer& frameBlock,
-                   const ShadowInputs& shadows, const AttachmentFormats& formats)
+                   const ShadowInputs& shadows, const AttachmentFormats& formats, vk::PipelineLibrary* library)
     : indexCount_(static_cast<std::uint32_t>(mesh.indices.size())) {
   if (mesh.normals.size() != mesh.positions.size()) throw Error("head mesh: one normal per position is required");
   if (!mesh.scalp.empty() && mesh.scalp.size() != mesh.positions.size())
@@ -35,7 +35,8 @@ HeadPass::HeadPass(const vk::Context& ctx, const HeadMesh& mesh, const vk::Buffe
   for (std::uint32_t i : mesh.indices)
     if (i >= mesh.positions.size()) throw Error("head mesh: index " + std::to_string(i) + " is out of range");
   set_ = vk::DescriptorSet(ctx, kBindings, "head");
-  set_.writeUniformBuffer(gpu::RENDER_BINDING_FRAME, frameBlock.handle());
+  set_.writeBuffer(gpu::RENDER_BINDING_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, frameBlock.handle(), 0,
+                   sizeof(gpu::RenderFrame));
   set_.writeSampledImage(gpu::RENDER_BINDING_OPACITY, shadows.opacityView, shadows.sampler);  // hair shadows
   set_.writeStorageBuffer(gpu::RENDER_BINDING_LIGHT, shadows.lightSpace);
   vk::GraphicsPipelineDesc desc;
@@ -49,7 +50,7 @@ HeadPass::HeadPass(const vk::Context& ctx, const HeadMesh& mesh, const vk::Buffe
   desc.sets = {set_.layout()};
   desc.pushSize = sizeof(glm::mat4);
   desc.name = "head";
-  pipeline_ = vk::GraphicsPipeline(ctx, desc);
+  pipeline_ = vk::makeGraphicsPipeline(ctx, library, desc);
   if (empty()) return;
   positions_ = vk::Buffer(ctx, mesh.positions.size() * sizeof(glm::vec4), kUsage, vk::MemoryKind::DeviceLocal, "head positions");
   normals_ = vk::Buffer(ctx, mesh.normals.size() * sizeof(glm::vec4), kUsage, vk::MemoryKind::DeviceLocal, "head normals");
@@ -64,10 +65,11 @@ HeadPass::HeadPass(const vk::Context& ctx, const HeadMesh& mesh, const vk::Buffe
   set_.writeStorageBuffer(gpu::RENDER_BINDING_ATTRIBUTES, indices_.handle());
 }
 
-void HeadPass::draw(VkCommandBuffer cmd, VkExtent2D extent, const glm::mat4& headToWorld) const {
+void HeadPass::draw(VkCommandBuffer cmd, VkExtent2D extent, const glm::mat4& headToWorld,
+                    std::uint32_t frameOffset) const {
   if (empty()) return;
-  pipeline_.bind(cmd, set_.set(), extent);
-  pipeline_.push(cmd, headToWorld);
+  pipeline_->bind(cmd, set_.set(), extent, frameOffset);
+  pipeline_->push(cmd, headToWorld);
   vkCmdDraw(cmd, indexCount_, 1, 0, 0);
 }
 }  // namespace hp::render

@@ -2,7 +2,8 @@
 // Contract: draws the opaque head mesh (HairAsset::head) with the paper's wrap lighting, the hair colour
 // where HeadMesh::scalp marks hair roots (so the scalp does not show bare between strands), depth test and
 // write on, into the caller's dynamic rendering. Owns the mesh buffers (uploaded once), pipeline and
-// descriptor set; reads the frame block the caller keeps up to date (RenderFrame, shaders/shared/render.h)
+// descriptor set; reads the frame block the caller keeps up to date (RenderFrame, shaders/shared/render.h;
+// a dynamic uniform buffer, draw() names the slot's offset)
 // and the opacity maps + LightSpace (ShadowInputs), so hair shadows fall on the head.
 // draw() must be called inside vkCmdBeginRendering with attachments matching `formats`.
 #include <glm/glm.hpp>
@@ -12,20 +13,22 @@
 #include "engine/render/shadow_inputs.h"
 #include "engine/vk/buffer.h"
 #include "engine/vk/descriptors.h"
-#include "engine/vk/pipeline.h"
+#include "engine/vk/pipeline_library.h"
+
+#include <memory>
 
 namespace hp::render {
 class HeadPass {
  public:
   HeadPass(const vk::Context& ctx, const HeadMesh& mesh, const vk::Buffer& frameBlock, const ShadowInputs& shadows,
-           const AttachmentFormats& formats);
-  void draw(VkCommandBuffer cmd, VkExtent2D extent, const glm::mat4& headToWorld) const;
+           const AttachmentFormats& formats, vk::PipelineLibrary* library = nullptr);
+  void draw(VkCommandBuffer cmd, VkExtent2D extent, const glm::mat4& headToWorld, std::uint32_t frameOffset) const;
   bool empty() const { return indexCount_ == 0; }
 
  private:
   std::uint32_t indexCount_ = 0;
   vk::Buffer positions_, normals_, indices_;
   vk::DescriptorSet set_;
-  vk::GraphicsPipeline pipeline_;
+  std::shared_ptr<const vk::GraphicsPipeline> pipeline_;
 };
 }  // namespace hp::render

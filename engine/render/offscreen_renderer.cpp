@@ -37,16 +37,20 @@ OffscreenRenderer::OffscreenRenderer(const vk::Context& ctx, std::uint32_t width
 
 AttachmentFormats OffscreenRenderer::formats() const { return {kHdrFormat, kDepthFormat, targets_.samples()}; }
 
-void OffscreenRenderer::record(VkCommandBuffer cmd, const HairSystem& hair, const DrawView& view, float exposure,
+void OffscreenRenderer::record(VkCommandBuffer cmd, HairSystem& hair, const DrawView& view, float exposure,
                                vk::GpuProfiler* profiler) const {
-  recordScene(cmd, hair, view, profiler);
+  record(cmd, [&](VkCommandBuffer c) { hair.recordDraw(c, view, profiler); }, exposure, profiler);
+}
+
+void OffscreenRenderer::record(VkCommandBuffer cmd, const std::function<void(VkCommandBuffer)>& draws,
+                               float exposure, vk::GpuProfiler* profiler) const {
+  recordScene(cmd, draws);
   if (profiler) profiler->begin(cmd, "tonemap");
   recordTonemap(cmd, exposure);
   if (profiler) profiler->end(cmd);
 }
 
-void OffscreenRenderer::recordScene(VkCommandBuffer cmd, const HairSystem& hair, const DrawView& view,
-                                    vk::GpuProfiler* profiler) const {
+void OffscreenRenderer::recordScene(VkCommandBuffer cmd, const std::function<void(VkCommandBuffer)>& draws) const {
   const bool msaa = bool(targets_.resolved);
   // Earlier frames recorded into the same images: their writes (and, without MSAA, the tonemap's reads
   // of the HDR image) finish before the transitions discard the contents.
@@ -74,7 +78,7 @@ void OffscreenRenderer::recordScene(VkCommandBuffer cmd, const HairSystem& hair,
   depth.clearValue.depthStencil = {1.0f, 0};
   VkRenderingInfo info = renderingInfo(extent(), &color, &depth);
   vkCmdBeginRendering(cmd, &info);
-  hair.recordDraw(cmd, view, profiler);
+  draws(cmd);
   vkCmdEndRendering(cmd);
   vk::imageBarrier(cmd, hdrInput().handle(), VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::ColorAttachment,
                    vk::ImageUse::FragmentSampled);

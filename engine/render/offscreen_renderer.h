@@ -3,6 +3,7 @@
 // offscreen targets (RenderTargets) and the tonemap pass, and records, into the caller's command
 // buffer after HairSystem::recordPrepareDraw: clear, head + hair with MSAA into linear HDR, resolve,
 // tonemap to sRGB. readDisplay() then returns the image (blocking; outside the frame loop).
+#include <functional>
 #include <vector>
 
 #include "engine/hair_system.h"
@@ -16,13 +17,16 @@ class OffscreenRenderer {
   AttachmentFormats formats() const;
   VkExtent2D extent() const { return targets_.extent(); }
 
-  void record(VkCommandBuffer cmd, const HairSystem& hair, const DrawView& view, float exposure,
+  void record(VkCommandBuffer cmd, HairSystem& hair, const DrawView& view, float exposure,
+              vk::GpuProfiler* profiler = nullptr) const;
+  // The same frame with any draws (a Renderer's instances) inside the rendering.
+  void record(VkCommandBuffer cmd, const std::function<void(VkCommandBuffer)>& draws, float exposure,
               vk::GpuProfiler* profiler = nullptr) const;
   // RGBA8, sRGB-encoded, rows top to bottom. Waits for the queue through a one-shot readback.
   std::vector<std::uint8_t> readDisplay() const;
 
  private:
-  void recordScene(VkCommandBuffer cmd, const HairSystem& hair, const DrawView& view, vk::GpuProfiler* profiler) const;
+  void recordScene(VkCommandBuffer cmd, const std::function<void(VkCommandBuffer)>& draws) const;
   void recordTonemap(VkCommandBuffer cmd, float exposure) const;
   const vk::Image& hdrInput() const { return targets_.resolved ? targets_.resolved : targets_.hdr; }
 

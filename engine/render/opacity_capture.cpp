@@ -89,7 +89,6 @@ nlohmann::json sliceJson(const OpacityCapture& c) {
           {"k", c.settings.k},
           {"strand_opacity", c.settings.strandOpacity},
           {"strand_opacity_mode", c.settings.footprint ? "footprint" : "constant"},
-          {"strand_width", c.settings.strandWidth},
           {"head_opacity", c.settings.headOpacity},
           {"bias_slices", c.settings.biasSlices}};
 }

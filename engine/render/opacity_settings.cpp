@@ -23,8 +23,6 @@ void OpacitySettings::validate() const {
   if (resolution < 16 || resolution > 4096)
     throw Error("opacity settings: resolution must be in [16, 4096], got " + std::to_string(resolution));
   checkRange(strandOpacity, 0.0f, 100.0f, true, "strandOpacity");
-  checkRange(strandWidth, 0.0f, 1.0f, true, "strandWidth");
-  checkRange(tipWidthFraction, 0.0f, 1.0f, false, "tipWidthFraction");
   checkRange(headOpacity, 0.0f, 1.0e4f, false, "headOpacity");
   checkRange(k, 0.0f, 1.0e3f, false, "k");
   checkRange(biasSlices, 0.0f, float(gpu::OPACITY_SLICES), false, "biasSlices");

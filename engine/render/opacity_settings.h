@@ -14,9 +14,7 @@ struct OpacitySettings {
   // area and T = exp(-k alpha) is Beer-Lambert for randomly placed fibres, independent of the map's
   // resolution and the strand count. Otherwise a tuned constant strandOpacity per crossing.
   bool footprint = true;
-  float strandOpacity = 0.04f;      // (0, 100]; constant mode only
-  float strandWidth = 0.0005f;      // footprint: width at the root (scene units; HairSystem copies LookSettings)
-  float tipWidthFraction = 0.35f;   // footprint: width at the tip / root
+  float strandOpacity = 0.04f;      // (0, 100]; constant mode only (the width comes from each instance's look)
   float headOpacity = 50.0f;        // per head fragment, [0, 1e4]; T = exp(-k 50) is black behind the head
   float k = 1.0f;                   // T = exp(-k alpha), [0, 1e3]
   float biasSlices = 1.0f;          // lookups move this many slices toward the light, [0, 16]

@@ -64,7 +64,7 @@ RenderResult renderStill(const vk::Context& ctx, const HairAsset& asset, const R
     result.strandDump = compute::renderStrandsToHairData(ctx, hair.strands(), vk::BufferUse::VertexRead,
                                                          "hairpipe render: render strands of the drawn frame");
   if (request.captureOpacity && request.opacity.enabled)
-    result.opacity = render::captureOpacity(ctx, hair.opacity().image(), hair.bounds().lightSpace(), request.opacity,
+    result.opacity = render::captureOpacity(ctx, hair.shadows().image(), hair.shadows().lightSpace(), request.opacity,
                                             glm::normalize(view.light.direction));
   return result;
 }

@@ -8,7 +8,7 @@ constexpr VkShaderStageFlags kBoth = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAG
 constexpr VkShaderStageFlags kVertex = VK_SHADER_STAGE_VERTEX_BIT;
 constexpr VkShaderStageFlags kFragment = VK_SHADER_STAGE_FRAGMENT_BIT;
 const vk::Binding kBindings[] = {
-    {gpu::RENDER_BINDING_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kBoth},
+    {gpu::RENDER_BINDING_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, kBoth},
     {gpu::RENDER_BINDING_MARSCHNER, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kFragment},
     {gpu::RENDER_BINDING_LUT_M, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kFragment},
     {gpu::RENDER_BINDING_LUT_N0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kFragment},
@@ -20,8 +20,9 @@ const vk::Binding kBindings[] = {
     {gpu::RENDER_BINDING_ATTRIBUTES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kVertex},
 };
 
-vk::GraphicsPipeline makePipeline(const vk::Context& ctx, VkDescriptorSetLayout layout,
-                                  const AttachmentFormats& formats, bool lines) {
+std::shared_ptr<const vk::GraphicsPipeline> makePipeline(const vk::Context& ctx, vk::PipelineLibrary* library,
+                                                         VkDescriptorSetLayout layout,
+                                                         const AttachmentFormats& formats, bool lines) {
   vk::GraphicsPipelineDesc desc;
   desc.vertexShader = "strands.vert";
   desc.fragmentShader = "strands.frag";
@@ -36,26 +37,18 @@ vk::GraphicsPipeline makePipeline(const vk::Context& ctx, VkDescriptorSetLayout 
   desc.sets = {layout};
   desc.pushSize = sizeof(gpu::StrandDrawPush);
   desc.name = lines ? "strand lines" : "strand ribbons";
-  return vk::GraphicsPipeline(ctx, desc);
+  return vk::makeGraphicsPipeline(ctx, library, desc);
 }
 }  // namespace
 
 StrandPass::StrandPass(const vk::Context& ctx, const compute::StrandBuffers& strands,
                        const MarschnerTextures& marschner, const vk::Buffer& frameBlock,
-                       const ShadowInputs& shadows, const AttachmentFormats& formats)
-    : ctx_(ctx), samples_(formats.samples) {
-  bind(strands, marschner, frameBlock, shadows);
-  ribbons_ = makePipeline(ctx, sets_.front().layout(), formats, false);
-  lines_ = makePipeline(ctx, sets_.front().layout(), formats, true);
-}
-
-void StrandPass::bind(const compute::StrandBuffers& strands, const MarschnerTextures& marschner,
-                      const vk::Buffer& frameBlock, const ShadowInputs& shadows) {
-  strands_ = &strands;
-  sets_.clear();
+                       const ShadowInputs& shadows, const AttachmentFormats& formats, vk::PipelineLibrary* library)
+    : strands_(&strands), samples_(formats.samples) {
   for (const auto& chunk : strands.chunks()) {
-    vk::DescriptorSet set(ctx_, kBindings, "strands chunk " + std::to_string(sets_.size()));
-    set.writeUniformBuffer(gpu::RENDER_BINDING_FRAME, frameBlock.handle());
+    vk::DescriptorSet set(ctx, kBindings, "strands chunk " + std::to_string(sets_.size()));
+    set.writeBuffer(gpu::RENDER_BINDING_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, frameBlock.handle(), 0,
+                    sizeof(gpu::RenderFrame));
     marschner.writeDescriptors(set, gpu::RENDER_BINDING_MARSCHNER, gpu::RENDER_BINDING_LUT_M,
                                gpu::RENDER_BINDING_LUT_N0, gpu::RENDER_BINDING_LUT_N1);
     set.writeStorageBuffer(gpu::RENDER_BINDING_POSITIONS, chunk.positions.handle());
@@ -65,15 +58,17 @@ void StrandPass::bind(const compute::StrandBuffers& strands, const MarschnerText
     set.writeStorageBuffer(gpu::RENDER_BINDING_LIGHT, shadows.lightSpace);
     sets_.push_back(std::move(set));
   }
+  ribbons_ = makePipeline(ctx, library, sets_.front().layout(), formats, false);
+  lines_ = makePipeline(ctx, library, sets_.front().layout(), formats, true);
 }
 
-void StrandPass::draw(VkCommandBuffer cmd, VkExtent2D extent, bool lines) const {
+void StrandPass::draw(VkCommandBuffer cmd, VkExtent2D extent, bool lines, std::uint32_t frameOffset) const {
   const auto& layout = strands_->layout();
   const std::uint32_t perSegment = lines ? gpu::STRAND_VERTICES_PER_LINE : gpu::STRAND_VERTICES_PER_QUAD;
-  const vk::GraphicsPipeline& pipeline = lines ? lines_ : ribbons_;
+  const vk::GraphicsPipeline& pipeline = lines ? *lines_ : *ribbons_;
   for (std::size_t c = 0; c < sets_.size(); ++c) {
     const auto& range = strands_->chunks()[c].range;
-    pipeline.bind(cmd, sets_[c].set(), extent);
+    pipeline.bind(cmd, sets_[c].set(), extent, frameOffset);
     pipeline.push(cmd, gpu::StrandDrawPush{range.firstStrand, lines ? 1u : 0u, std::uint32_t(samples_), 0u});
     vkCmdDraw(cmd, range.strandCount * (layout.verticesPerStrand - 1) * perSegment, 1, 0, 0);
   }

@@ -3,10 +3,11 @@
 // the caller's dynamic rendering: depth test and write on; with MSAA a sub-pixel strand writes its
 // coverage as a dithered sample mask (strands.frag), without MSAA it blends with alpha = coverage.
 // Vertex pulling from the interpolate pass's chunk buffers (one descriptor set per chunk). Reads the
-// frame block, the Marschner resources and the opacity maps + LightSpace (ShadowInputs: sampled in the
+// frame block (gpu::RenderFrame, a dynamic uniform buffer: draw() names the slot's offset), the Marschner resources and the opacity maps + LightSpace (ShadowInputs: sampled in the
 // fragment shader, read in the vertex shader); the caller keeps them current and orders the strand
 // buffers' ComputeWrite before this pass's VertexRead. draw() goes inside vkCmdBeginRendering with
-// attachments matching `formats`.
+// attachments matching `formats`. Descriptors are written once: anything they name changes by building a
+// new StrandPass (cheap with a PipelineLibrary) and retiring the old one after its last frame.
 #include <vector>
 
 #include "compute/strand_buffers.h"
@@ -14,24 +15,22 @@
 #include "engine/render/marschner_textures.h"
 #include "engine/render/shadow_inputs.h"
 #include "engine/vk/descriptors.h"
-#include "engine/vk/pipeline.h"
+#include "engine/vk/pipeline_library.h"
 
 namespace hp::render {
 class StrandPass {
  public:
   StrandPass(const vk::Context& ctx, const compute::StrandBuffers& strands, const MarschnerTextures& marschner,
-             const vk::Buffer& frameBlock, const ShadowInputs& shadows, const AttachmentFormats& formats);
-  // Rewrites every descriptor (after the strand buffers or the Marschner textures changed).
-  void bind(const compute::StrandBuffers& strands, const MarschnerTextures& marschner, const vk::Buffer& frameBlock,
-            const ShadowInputs& shadows);
-  void draw(VkCommandBuffer cmd, VkExtent2D extent, bool lines) const;
+             const vk::Buffer& frameBlock, const ShadowInputs& shadows, const AttachmentFormats& formats,
+             vk::PipelineLibrary* library = nullptr);
+  // frameOffset: byte offset of this draw's gpu::RenderFrame in frameBlock.
+  void draw(VkCommandBuffer cmd, VkExtent2D extent, bool lines, std::uint32_t frameOffset) const;
 
  private:
-  const vk::Context& ctx_;
   const compute::StrandBuffers* strands_ = nullptr;
   std::vector<vk::DescriptorSet> sets_;  // one per chunk
-  vk::GraphicsPipeline ribbons_;
-  vk::GraphicsPipeline lines_;
+  std::shared_ptr<const vk::GraphicsPipeline> ribbons_;
+  std::shared_ptr<const vk::GraphicsPipeline> lines_;
   VkSampleCountFlagBits samples_;  // the flag's value is the count
 };
 }  // namespace hp::render

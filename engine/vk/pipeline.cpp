@@ -190,9 +190,12 @@ GraphicsPipeline::GraphicsPipeline(const Context& ctx, const GraphicsPipelineDes
   ctx.setName(VK_OBJECT_TYPE_PIPELINE, reinterpret_cast<std::uint64_t>(pipeline_), d.name);
 }
 
-void GraphicsPipeline::bind(VkCommandBuffer cmd, VkDescriptorSet set, VkExtent2D extent) const {
+void GraphicsPipeline::bind(VkCommandBuffer cmd, VkDescriptorSet set, VkExtent2D extent,
+                            std::optional<std::uint32_t> dynamicOffset) const {
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_);
-  if (set) vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, 0, 1, &set, 0, nullptr);
+  if (set)
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, 0, 1, &set, dynamicOffset ? 1 : 0,
+                            dynamicOffset ? &*dynamicOffset : nullptr);
   // Flip Y so that +Y is up in clip space, as in GL-style projection matrices from glm.
   VkViewport vp{0.0f, float(extent.height), float(extent.width), -float(extent.height), 0.0f, 1.0f};
   VkRect2D scissor{{0, 0}, extent};

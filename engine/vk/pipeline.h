@@ -8,6 +8,7 @@
 
 #include <cstdint>
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -83,6 +84,8 @@ class GraphicsPipeline : public PipelineBase {
  public:
   GraphicsPipeline() = default;
   GraphicsPipeline(const Context& ctx, const GraphicsPipelineDesc& desc);
-  void bind(VkCommandBuffer cmd, VkDescriptorSet set, VkExtent2D extent) const;
+  // `dynamicOffset`: the offset of the set's one dynamic uniform buffer, if its layout has one.
+  void bind(VkCommandBuffer cmd, VkDescriptorSet set, VkExtent2D extent,
+            std::optional<std::uint32_t> dynamicOffset = std::nullopt) const;
 };
 }  // namespace hp::vk

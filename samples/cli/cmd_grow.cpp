@@ -10,6 +10,7 @@
 #include "engine/hair/hair_export.h"
 #include "engine/hair/obj_import.h"
 #include "samples/cli/command.h"
+#include "samples/cli/output_paths.h"
 
 namespace {
 struct GrowCommand {
@@ -25,6 +26,7 @@ void run(const GrowCommand& c) {
   hp::ModelTransform transform;
   transform.scale = c.scale;
   transform.up = hp::parseUpAxis(c.up);
+  hp::cli::prepareOutputFile({"--out", c.out}, {{"--scalp", c.scalp}});
   hp::ScalpMesh scalp = hp::loadObjScalp(c.scalp, transform);
   std::vector<hp::SphereCollider> colliders;
   if (c.fitCollider) colliders.push_back(hp::fitSphere(scalp.positions).sphere);

@@ -17,6 +17,7 @@
 #include "engine/shading/lut_export.h"
 #include "samples/cli/command.h"
 #include "samples/cli/material_options.h"
+#include "samples/cli/output_paths.h"
 
 namespace {
 struct LutOptions {
@@ -45,11 +46,10 @@ void writeTexture(const std::filesystem::path& dir, const hp::LutTexture& t, nlo
 }
 
 void run(const LutOptions& o) {
-  hp::MarschnerLut lut = hp::buildLut(hp::parseLutMode(o.mode), o.material);
-  std::filesystem::path dir(o.out);
-  std::error_code ec;
-  std::filesystem::create_directories(dir, ec);
-  if (ec) throw hp::Error("cannot create directory " + dir.string() + ": " + ec.message());
+  const hp::LutMode mode = hp::parseLutMode(o.mode);
+  const std::filesystem::path dir(o.out);
+  hp::cli::prepareOutputFolder({"--out", dir}, {});
+  hp::MarschnerLut lut = hp::buildLut(mode, o.material);
   nlohmann::json desc = hp::describeLut(lut);
   nlohmann::json files = nlohmann::json::object();
   for (const hp::LutTexture& t : lut.textures) writeTexture(dir, t, files);

@@ -13,6 +13,7 @@
 #include "samples/cli/command.h"
 #include "samples/cli/material_options.h"
 #include "samples/cli/scene_options.h"
+#include "samples/cli/output_paths.h"
 
 namespace {
 struct RenderOptions {
@@ -123,15 +124,22 @@ hp::RenderRequest makeRequest(const RenderOptions& o, const CLI::App& cmd) {
   return r;
 }
 
+// Every output checked (not an input, folder writable) before the simulation starts.
+void prepareOutputs(const RenderOptions& o, const hp::Scene& scene) {
+  const std::vector<hp::cli::CommandPath> inputs = hp::cli::sceneInputs(o.scene, scene);
+  hp::cli::prepareOutputFile({"--out", o.out}, inputs);
+  if (!o.dumpStrands.empty()) hp::cli::prepareOutputFile({"--dump-strands", o.dumpStrands}, inputs);
+  if (!o.dumpOpacity.empty()) hp::cli::prepareOutputFolder({"--dump-opacity", o.dumpOpacity}, inputs);
+}
+
 void runRender(const RenderOptions& o, const CLI::App& cmd) {
   hp::RenderRequest request = makeRequest(o, cmd);
+  prepareOutputs(o, request.scene);
   hp::HairAsset asset = hp::buildSceneAsset(request.scene);
   auto ctx = hp::cli::createContext(o.scene);
   hp::RenderResult result = hp::renderStill(*ctx, asset, request);
   hp::cli::checkValidation(*ctx);
-  std::filesystem::path out(o.out);
-  if (out.has_parent_path()) std::filesystem::create_directories(out.parent_path());
-  hp::writePng(out, result.width, result.height, 4, result.rgba);
+  hp::writePng(o.out, result.width, result.height, 4, result.rgba);
   if (result.opacity) hp::render::writeOpacityDump(o.dumpOpacity, *result.opacity);
   if (result.strandDump) hp::writeHairFile(o.dumpStrands, *result.strandDump);
   nlohmann::json passes = nlohmann::json::object();

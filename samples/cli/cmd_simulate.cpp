@@ -10,6 +10,7 @@
 #include "engine/hair/hair_file.h"
 #include "samples/cli/command.h"
 #include "samples/cli/scene_options.h"
+#include "samples/cli/output_paths.h"
 
 namespace {
 struct SimulateOptions {
@@ -43,6 +44,7 @@ void runSimulate(const SimulateOptions& opt) {
   hp::Scene scene = hp::cli::loadScene(opt.scene);
   hp::SimulationParams params = simulationParams(opt, scene.simulation);
   hp::HeadAnimation animation = hp::parseHeadAnimation(opt.animate);
+  if (!opt.out.empty()) hp::cli::prepareOutputFile({"--out", opt.out}, hp::cli::sceneInputs(opt.scene, scene));
   hp::HairAsset asset = hp::buildSceneAsset(scene);
   auto ctx = hp::cli::createContext(opt.scene);
   hp::SimulatePass pass(*ctx, asset, params);

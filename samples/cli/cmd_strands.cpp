@@ -18,6 +18,7 @@
 #include "samples/cli/command.h"
 #include "samples/cli/scene_options.h"
 #include "shaders/shared/strands.h"
+#include "samples/cli/output_paths.h"
 
 namespace {
 // Past this a dump is a mistake (2M x 36 vertices is already a 0.9 GB .hair file).
@@ -79,6 +80,7 @@ void runStrands(const StrandsOptions& o) {
     scene.density.mode = hp::DensityOptions::Mode::Total;
     scene.density.totalStrands = static_cast<std::uint32_t>(o.density);
   }
+  hp::cli::prepareOutputFile({"--out", o.out}, hp::cli::sceneInputs(o.scene, scene));
   hp::HairAsset asset = hp::buildSceneAsset(scene);
   const std::uint32_t particles = asset.guides.particlesPerGuide;
   if (o.vertices < particles)

@@ -5,13 +5,6 @@
 #include "engine/error.h"
 #include "samples/cli/command.h"
 
-namespace hp::cli {
-std::vector<CommandSetup>& commandRegistry() {
-  static std::vector<CommandSetup> registry;
-  return registry;
-}
-}  // namespace hp::cli
-
 int main(int argc, char** argv) {
   CLI::App app{"hairpipe: a dynamic strand-hair pipeline on Vulkan"};
   app.require_subcommand(1);

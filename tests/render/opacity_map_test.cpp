@@ -12,6 +12,7 @@
 #include "compute/bounds_pass.h"
 #include "engine/error.h"
 #include "engine/hair/default_head.h"
+#include "engine/frame_recorder.h"
 #include "engine/hair_system.h"
 #include "engine/render/opacity_capture.h"
 #include "engine/render/opacity_pass.h"
@@ -37,9 +38,10 @@ struct StrandSet {
   }
 };
 
-// Bounds + opacity passes over hand-made strands, recorded as HairSystem records them.
+// Bounds + opacity passes over hand-made strands, recorded as the Renderer records them.
 struct ShadowRig {
   std::unique_ptr<hp::compute::StrandBuffers> buffers;
+  std::unique_ptr<hp::render::ShadowMaps> maps;
   std::unique_ptr<hp::compute::BoundsPass> bounds;
   std::unique_ptr<hp::render::OpacityPass> opacity;
 
@@ -53,20 +55,24 @@ struct ShadowRig {
     for (const auto& chunk : buffers->chunks())
       hp::vk::uploadBytes(ctx, chunk.positions, set.positions.data() + std::size_t(chunk.range.firstStrand) * set.q,
                           VkDeviceSize(chunk.range.strandCount) * set.q * sizeof(glm::vec4), hp::vk::BufferUse::VertexRead);
-    bounds = std::make_unique<hp::compute::BoundsPass>(ctx, *buffers);
-    opacity = std::make_unique<hp::render::OpacityPass>(ctx, *buffers, hp::HeadMesh{}, bounds->lightSpace(), settings);
+    maps = std::make_unique<hp::render::ShadowMaps>(ctx, settings);
+    bounds = std::make_unique<hp::compute::BoundsPass>(ctx, *buffers, maps->lightSpace());
+    opacity = std::make_unique<hp::render::OpacityPass>(ctx, *buffers, hp::HeadMesh{}, *maps);
   }
+
+  glm::vec2 strandWidth{0.0005f, 0.35f};  // root width, tip / root: the footprint of every strand
 
   OpacityCapture run(const hp::vk::Context& ctx, const hp::compute::ShadowLight& light, float marginTexels = 2.0f) {
     hp::compute::BoundsFraming framing;
-    framing.resolution = opacity->settings().resolution;
+    framing.resolution = maps->settings().resolution;
     framing.marginTexels = marginTexels;
     hp::vk::submitAndWait(ctx, [&](VkCommandBuffer cmd) {
       // The uploads were transfers of an earlier submission; the bounds read them in compute.
       hp::vk::memoryBarrier(cmd, hp::vk::BufferUse::TransferDst, hp::vk::BufferUse::ComputeRead);
-      hp::recordShadowPasses(cmd, *bounds, *opacity, light, framing, glm::mat4(1.0f));
+      const hp::ShadowCaster caster{bounds.get(), opacity.get(), glm::mat4(1.0f), strandWidth};
+      hp::recordShadowPasses(cmd, *maps, std::span(&caster, 1), light, framing);
     }, "shadow rig");
-    return hp::render::captureOpacity(ctx, opacity->image(), bounds->lightSpace(), opacity->settings(),
+    return hp::render::captureOpacity(ctx, maps->image(), maps->lightSpace(), maps->settings(),
                                       glm::normalize(light.towardLight));
   }
 };
@@ -431,7 +437,7 @@ TEST_F(VulkanTest, OpacityOfASmallHeadSceneMatchesTheCpuReference) {
     hair.recordUpdate(cmd, hp::HeadMotion{});
     hair.recordPrepareDraw(cmd, view);
   }, "head scene frame");
-  const OpacityCapture c = hp::render::captureOpacity(*ctx, hair.opacity().image(), hair.bounds().lightSpace(),
+  const OpacityCapture c = hp::render::captureOpacity(*ctx, hair.shadows().image(), hair.shadows().lightSpace(),
                                                       settings.opacity, view.light.direction);
   const hp::compute::StrandData strands = hp::compute::readRenderStrands(*ctx, hair.strands(), hp::vk::BufferUse::VertexRead);
 
@@ -481,11 +487,9 @@ double meanTransmittanceBehind(const OpacityCapture& c) {
   return sum / double(n);
 }
 
-OpacitySettings footprintSettings(std::uint32_t resolution, float width) {
+OpacitySettings footprintSettings(std::uint32_t resolution) {
   OpacitySettings s;
   s.resolution = resolution;
-  s.strandWidth = width;
-  s.tipWidthFraction = 1.0f;
   return s;
 }
 }  // namespace
@@ -498,7 +502,8 @@ TEST_F(VulkanTest, FootprintOpacityOfStrandLayersFollowsBeerLambert) {
   const std::vector<float> depths = {0.0f, -0.25f, -0.5f, -1.0f};
   const double expected = std::exp(-double(depths.size()) * width / spacing);
   for (std::uint32_t res : {64u, 128u}) {
-    ShadowRig rig(*ctx, footprintLayers(depths, spacing, false), footprintSettings(res, width));
+    ShadowRig rig(*ctx, footprintLayers(depths, spacing, false), footprintSettings(res));
+    rig.strandWidth = {width, 1.0f};
     const double t = meanTransmittanceBehind(rig.run(*ctx, glm::vec3(0.0f, 0.0f, 1.0f)));
     std::cout << "directional, " << res << "^2: T = " << t << ", Beer-Lambert " << expected << "\n";
     EXPECT_NEAR(t / expected, 1.0, 0.05) << res;
@@ -506,7 +511,8 @@ TEST_F(VulkanTest, FootprintOpacityOfStrandLayersFollowsBeerLambert) {
   double spotAlpha = 0.0;
   for (float z : depths) spotAlpha += width / (spacing * (kSpotZ - z) / kSpotZ);
   const auto spot = hp::compute::ShadowLight::makeSpot({0.0f, 0.0f, kSpotZ}, {0.0f, 0.0f, 1.0f}, glm::radians(30.0f));
-  ShadowRig rig(*ctx, footprintLayers(depths, spacing, true), footprintSettings(128, width));
+  ShadowRig rig(*ctx, footprintLayers(depths, spacing, true), footprintSettings(128));
+  rig.strandWidth = {width, 1.0f};
   const double t = meanTransmittanceBehind(rig.run(*ctx, spot));
   std::cout << "spot, 128^2: T = " << t << ", Beer-Lambert " << std::exp(-spotAlpha) << "\n";
   EXPECT_NEAR(t / std::exp(-spotAlpha), 1.0, 0.05);

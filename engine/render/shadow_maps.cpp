@@ -1,0 +1,71 @@
+#include "engine/render/shadow_maps.h"
+
+#include "compute/bounds_pass.h"
+#include "engine/vk/barriers.h"
+#include "engine/vk/context.h"
+#include "engine/vk/submit.h"
+#include "shaders/shared/opacity.h"
+
+namespace hp::render {
+namespace {
+const OpacitySettings& validated(const OpacitySettings& s) {
+  s.validate();
+  return s;
+}
+
+vk::Image makeImage(const vk::Context& ctx, const OpacitySettings& settings) {
+  vk::ImageDesc desc;
+  desc.width = desc.height = settings.resolution;
+  desc.layers = gpu::OPACITY_TARGETS;
+  desc.format = settings.format;
+  desc.usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
+               VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+  desc.name = "opacity maps";
+  return vk::Image(ctx, desc);
+}
+
+VkRenderingAttachmentInfo sliceAttachment(VkImageView view) {
+  VkRenderingAttachmentInfo a{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+  a.imageView = view;
+  a.imageLayout = vk::imageLayout(vk::ImageUse::ColorAttachment);
+  a.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+  a.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+  a.clearValue.color = {{0.0f, 0.0f, 0.0f, 0.0f}};
+  return a;
+}
+}  // namespace
+
+ShadowMaps::ShadowMaps(const vk::Context& ctx, const OpacitySettings& settings)
+    : settings_(validated(settings)),
+      lightSpace_(ctx, sizeof(gpu::LightSpace),
+                  VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                  vk::MemoryKind::DeviceLocal, "light space"),
+      image_(makeImage(ctx, settings_)),
+      sampler_(ctx, "opacity sampler") {
+  const gpu::LightSpace initial = compute::initialLightSpace();
+  vk::submitAndWait(ctx, [&](VkCommandBuffer cmd) {
+    vkCmdUpdateBuffer(cmd, lightSpace_.handle(), 0, sizeof(initial), &initial);
+    vk::bufferBarrier(cmd, lightSpace_.handle(), vk::BufferUse::TransferDst, vk::BufferUse::VertexRead);
+    vk::imageBarrier(cmd, image_.handle(), VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::Undefined,
+                     vk::ImageUse::TransferDst, gpu::OPACITY_TARGETS);
+    const VkClearColorValue zero{{0.0f, 0.0f, 0.0f, 0.0f}};
+    const VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, gpu::OPACITY_TARGETS};
+    vkCmdClearColorImage(cmd, image_.handle(), vk::imageLayout(vk::ImageUse::TransferDst), &zero, 1, &range);
+    vk::imageBarrier(cmd, image_.handle(), VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::TransferDst,
+                     vk::ImageUse::FragmentSampled, gpu::OPACITY_TARGETS);
+  }, "clear opacity maps");
+}
+
+void ShadowMaps::beginRendering(VkCommandBuffer cmd) const {
+  VkRenderingAttachmentInfo attachments[gpu::OPACITY_TARGETS];
+  for (std::uint32_t t = 0; t < gpu::OPACITY_TARGETS; ++t) attachments[t] = sliceAttachment(image_.layerView(t));
+  VkRenderingInfo info{VK_STRUCTURE_TYPE_RENDERING_INFO};
+  info.renderArea = {{0, 0}, image_.extent()};
+  info.layerCount = 1;
+  info.colorAttachmentCount = gpu::OPACITY_TARGETS;
+  info.pColorAttachments = attachments;
+  vkCmdBeginRendering(cmd, &info);
+}
+
+void ShadowMaps::endRendering(VkCommandBuffer cmd) const { vkCmdEndRendering(cmd); }
+}  // namespace hp::render

@@ -1,0 +1,116 @@
+#include "engine/renderer.h"
+
+#include <algorithm>
+
+#include "engine/error.h"
+#include "engine/frame_recorder.h"
+#include "engine/vk/context.h"
+
+namespace hp {
+namespace {
+const RendererSettings& validated(const RendererSettings& s) {
+  s.validate();
+  return s;
+}
+}  // namespace
+
+Renderer::Renderer(const vk::Context& ctx, const RendererSettings& settings)
+    : ctx_(ctx),
+      settings_(validated(settings)),
+      pipelines_(ctx),
+      shadows_(std::make_unique<render::ShadowMaps>(ctx, settings.opacity)),
+      frameLights_(settings.framesInFlight) {}
+
+Renderer::~Renderer() = default;
+
+std::unique_ptr<HairInstance> Renderer::createInstance(const HairAsset& asset, const InstanceSettings& settings,
+                                                       const glm::mat4& initialHead) {
+  return std::unique_ptr<HairInstance>(new HairInstance(*this, asset, settings, initialHead));
+}
+
+void Renderer::destroyInstance(std::unique_ptr<HairInstance> instance) {
+  if (instance) retire(std::shared_ptr<HairInstance>(std::move(instance)));
+}
+
+std::shared_ptr<render::MarschnerTextures> Renderer::marschner(const HairMaterial& material, LutMode mode) {
+  std::erase_if(luts_, [](const Lut& l) { return l.textures.expired(); });
+  for (const Lut& l : luts_)
+    if (l.mode == mode && l.material == material) return l.textures.lock();
+  auto textures = std::make_shared<render::MarschnerTextures>(ctx_, material, mode);
+  luts_.push_back({material, mode, textures});
+  return textures;
+}
+
+void Renderer::retire(std::shared_ptr<void> resource) {
+  if (!lastFrame_) return;  // nothing recorded yet: nothing can be in flight
+  retired_.push_back({lastFrame_, std::move(resource)});
+}
+
+void Renderer::setOpacityTuning(const render::OpacitySettings& opacity) {
+  const render::OpacitySettings& current = shadows_->settings();
+  if (opacity.resolution != current.resolution || opacity.format != current.format)
+    throw Error("setOpacityTuning: the opacity maps' resolution and format are fixed for a Renderer");
+  opacity.validate();
+  shadows_->setTuning(opacity);
+  settings_.opacity = opacity;
+}
+
+void Renderer::beginFrame(std::uint64_t frame, std::span<HairInstance* const> instances) {
+  for (const HairInstance* i : instances)
+    if (!i || &i->renderer_ != this) throw Error("Renderer: an instance is null or belongs to another Renderer");
+  if (!lastFrame_ || frame > *lastFrame_) lastFrame_ = frame;
+  // Frame `frame - framesInFlight` is complete (the application waited for it): what was retired by then goes.
+  std::erase_if(retired_, [&](const Retired& r) { return !r.after || frame >= *r.after + settings_.framesInFlight; });
+}
+
+void Renderer::recordUpdate(VkCommandBuffer cmd, std::uint64_t frame, std::span<HairInstance* const> instances,
+                            vk::GpuProfiler* profiler) {
+  beginFrame(frame, instances);
+  std::vector<UpdateWork> work;
+  work.reserve(instances.size());
+  for (HairInstance* i : instances)
+    work.push_back({&i->simulate_, i->motion_, &i->geometry_->tessellate, &i->geometry_->interpolate});
+  recordUpdatePasses(cmd, work, profiler);
+}
+
+void Renderer::recordShadows(VkCommandBuffer cmd, std::uint64_t frame, const LightSpec& light,
+                             std::span<HairInstance* const> instances, vk::GpuProfiler* profiler) {
+  light.validate();
+  beginFrame(frame, instances);
+  frameLights_[frame % settings_.framesInFlight] = light;
+  makeStrandsDrawable(cmd);
+  const render::OpacitySettings& opacity = shadows_->settings();
+  if (!opacity.enabled) return;
+  std::vector<ShadowCaster> casters;
+  float widest = 0.0f;
+  for (HairInstance* i : instances) {
+    const render::LookSettings& look = i->settings_.look;
+    casters.push_back({&i->geometry_->bounds, &i->geometry_->opacity, i->headToWorld(),
+                       glm::vec2(look.strandWidth, look.tipWidthFraction)});
+    widest = std::max(widest, i->settings_.look.strandWidth);
+  }
+  compute::BoundsFraming framing;
+  framing.resolution = opacity.resolution;
+  framing.marginWorld = 0.5f * widest * gpu::WIDTH_SCALE_MAX;
+  recordShadowPasses(cmd, *shadows_, casters, shadowLightOf(light), framing, profiler);
+}
+
+void Renderer::recordDraw(VkCommandBuffer cmd, std::uint64_t frame, const View& view,
+                          std::span<HairInstance* const> instances, vk::GpuProfiler* profiler) {
+  view.validate(settings_.maxViewsPerFrame);
+  beginFrame(frame, instances);
+  const LightSpec& light = frameLights_[frame % settings_.framesInFlight];
+  for (HairInstance* i : instances) {
+    *i->frameSlot(frame, view.index) =
+        render::makeRenderFrame(view.camera, view.extent, light, i->settings_.material, i->settings_.look,
+                                i->strands().layout().verticesPerStrand, shadows_->settings());
+    const std::uint32_t offset = i->frameOffset(frame, view.index);
+    if (profiler) profiler->begin(cmd, "head");
+    i->head_->draw(cmd, view.extent, i->headToWorld(), offset);
+    if (profiler) profiler->end(cmd);
+    if (profiler) profiler->begin(cmd, "shade");
+    i->strandPass_->draw(cmd, view.extent, view.lines, offset);
+    if (profiler) profiler->end(cmd);
+  }
+}
+}  // namespace hp

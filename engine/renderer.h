@@ -1,0 +1,95 @@
+#pragma once
+// Contract: what hairpipe shares per device and attachment formats: the pipelines (one PipelineLibrary),
+// the Marschner LUT textures (cached by material and mode), the opacity shadow maps of the frame's light
+// and the retirement queue of frames in flight. It creates HairInstances (one per head) and records
+// their frames into the application's command buffers:
+//   recordUpdate(cmd, frame, instances)         outside rendering: simulate -> tessellate -> interpolate
+//   recordShadows(cmd, frame, light, instances) outside rendering: one framing over all instances, every
+//                                               instance's strands and head in the same opacity maps (heads
+//                                               shadow each other); its own vkCmdBeginRendering on its maps
+//   recordDraw(cmd, frame, view, instances)     inside the application's vkCmdBeginRendering (attachments
+//                                               matching settings.formats): heads and hair ribbons
+// once per frame in that order; recordDraw once per view (View::index distinct per view of a frame), all
+// views reusing the frame's shadows. Stages touched: COMPUTE_SHADER, COPY/CLEAR, VERTEX_SHADER,
+// FRAGMENT_SHADER, early/late fragment tests, colour output; in the application's attachments only colour
+// and depth. hairpipe never waits on a queue inside these calls.
+//
+// Frames in flight: `frame` is the application's frame number, increasing by one per frame (it may start
+// anywhere). When it records frame F, the application has waited for the completion of frame
+// F - framesInFlight (its own fences), and it submits frames in order on one queue. Per-frame constants
+// live in a ring of framesInFlight slots written by the host at record time; resources replaced by a
+// setter (material, strands, look) are retired and destroyed by a record call of frame
+// retiredAt + framesInFlight, so nothing needs a device idle. destroyInstance() retires an instance the
+// same way. The Renderer must outlive its instances and the GPU's use of everything it recorded.
+//
+// Errors (hp::Error): the constructor, createInstance and the instance setters (invalid parameters, device
+// limits, out of memory); recordShadows for an invalid light and recordDraw for an invalid view (checked
+// before anything is recorded); any record call for an instance of another Renderer. Nothing else in the
+// record calls throws.
+#include <memory>
+#include <optional>
+#include <span>
+#include <vector>
+
+#include "engine/hair_instance.h"
+#include "engine/render/shadow_maps.h"
+#include "engine/renderer_settings.h"
+#include "engine/vk/pipeline_library.h"
+#include "engine/vk/profiler.h"
+
+namespace hp {
+class Renderer {
+ public:
+  Renderer(const vk::Context& ctx, const RendererSettings& settings);
+  ~Renderer();
+  Renderer(const Renderer&) = delete;
+  Renderer& operator=(const Renderer&) = delete;
+
+  std::unique_ptr<HairInstance> createInstance(const HairAsset& asset, const InstanceSettings& settings,
+                                               const glm::mat4& initialHead = glm::mat4(1.0f));
+  // Destroys the instance after the frames that may still use it are done.
+  void destroyInstance(std::unique_ptr<HairInstance> instance);
+
+  void recordUpdate(VkCommandBuffer cmd, std::uint64_t frame, std::span<HairInstance* const> instances,
+                    vk::GpuProfiler* profiler = nullptr);
+  void recordShadows(VkCommandBuffer cmd, std::uint64_t frame, const LightSpec& light,
+                     std::span<HairInstance* const> instances, vk::GpuProfiler* profiler = nullptr);
+  void recordDraw(VkCommandBuffer cmd, std::uint64_t frame, const View& view,
+                  std::span<HairInstance* const> instances, vk::GpuProfiler* profiler = nullptr);
+
+  // Shadow tuning that keeps the maps' resolution and format (strand/head opacity, k, bias, on/off).
+  void setOpacityTuning(const render::OpacitySettings& opacity);
+
+  const RendererSettings& settings() const { return settings_; }
+  const vk::Context& context() const { return ctx_; }
+  const render::ShadowMaps& shadows() const { return *shadows_; }
+  vk::PipelineLibrary& pipelines() { return pipelines_; }
+  // The LUT textures of a material and mode, built once and shared while any instance uses them.
+  std::shared_ptr<render::MarschnerTextures> marschner(const HairMaterial& material, LutMode mode);
+  // Keeps `resource` alive until the frames that may use it now are done.
+  void retire(std::shared_ptr<void> resource);
+  std::size_t retiredCount() const { return retired_.size(); }
+
+ private:
+  void beginFrame(std::uint64_t frame, std::span<HairInstance* const> instances);
+
+  struct Lut {
+    HairMaterial material;
+    LutMode mode;
+    std::weak_ptr<render::MarschnerTextures> textures;
+  };
+  struct Retired {
+    std::optional<std::uint64_t> after;  // last frame recorded when it was retired
+    std::shared_ptr<void> resource;
+  };
+
+  const vk::Context& ctx_;
+  RendererSettings settings_;
+  vk::PipelineLibrary pipelines_;
+  std::unique_ptr<render::ShadowMaps> shadows_;
+  std::vector<Lut> luts_;
+  std::vector<LightSpec> frameLights_;  // per ring slot: the light recordShadows was given
+  std::vector<Retired> retired_;
+  std::optional<std::uint64_t> lastFrame_;
+};
+}  // namespace hp

@@ -1,0 +1,48 @@
+#pragma once
+// Contract: the parameters of hp::Renderer (per device and attachment formats), of each hp::HairInstance
+// (per head) and of one view of a frame. Pure host data; validate() throws hp::Error naming the field,
+// and the Renderer/instance calls that take them validate them there, so recording never throws for them.
+#include <volk.h>
+
+#include <cstdint>
+
+#include "compute/strand_buffers.h"
+#include "engine/hair/sim_params.h"
+#include "engine/render/attachment_formats.h"
+#include "engine/render/camera.h"
+#include "engine/render/frame_block.h"
+#include "engine/render/opacity_settings.h"
+#include "engine/shading/lut.h"
+#include "engine/shading/material.h"
+
+namespace hp {
+inline constexpr std::uint32_t kMaxFramesInFlight = 8;
+inline constexpr std::uint32_t kMaxViewsPerFrame = 16;
+
+struct RendererSettings {
+  render::AttachmentFormats formats;  // the application's attachments the draws go into
+  render::OpacitySettings opacity;    // the shared opacity shadow maps (one light)
+  std::uint32_t framesInFlight = 2;   // [1, kMaxFramesInFlight]
+  std::uint32_t maxViewsPerFrame = 4; // [1, kMaxViewsPerFrame]: draws of one frame with different cameras
+  void validate() const;
+};
+
+struct InstanceSettings {
+  SimulationParams simulation;
+  HairMaterial material;
+  LutMode lutMode = LutMode::Physical;
+  compute::StrandOptions strands;
+  render::LookSettings look;
+  void validate() const;
+};
+
+// One camera of a frame. Several views of one frame (a mirror, split screen) reuse its update and
+// shadows; each needs its own `index`, below RendererSettings::maxViewsPerFrame.
+struct View {
+  CameraMatrices camera;
+  VkExtent2D extent{1, 1};
+  bool lines = false;       // strands as 1-pixel lines instead of ribbons (debugging)
+  std::uint32_t index = 0;  // which of the frame's views
+  void validate(std::uint32_t maxViews) const;
+};
+}  // namespace hp

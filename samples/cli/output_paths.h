@@ -1,0 +1,24 @@
+#pragma once
+// Contract: the output rule every command applies before it does any work. Each output file's folder
+// is created if missing and must be writable; an output must not be one of the command's inputs (the
+// same file, by identity or by normalised path), nor an existing folder; an output folder must not be
+// an existing file. Throws hp::Error naming the option and the path. The files themselves are then
+// written atomically (engine/hair/atomic_write.h), so a failed run leaves no partial file.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "engine/hair/scene.h"
+#include "samples/cli/scene_options.h"
+
+namespace hp::cli {
+struct CommandPath {
+  std::string option;  // "--out", "--scalp", "scene model", ...
+  std::filesystem::path path;
+};
+
+void prepareOutputFile(const CommandPath& output, const std::vector<CommandPath>& inputs);
+void prepareOutputFolder(const CommandPath& output, const std::vector<CommandPath>& inputs);
+// The files a scene command reads: the scene file (if any) and the model it names.
+std::vector<CommandPath> sceneInputs(const SceneOptions& options, const Scene& scene);
+}  // namespace hp::cli

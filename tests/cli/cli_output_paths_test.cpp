@@ -1,0 +1,93 @@
+// Every command checks its outputs before any work: an output naming one of its inputs is refused and
+// the input is left byte-identical; a folder where a file is expected (and the reverse) is refused;
+// missing folders are created.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+
+#include "tests/hair/hair_test_util.h"
+#include "tests/support/cli_runner.h"
+
+using hp::test::runCli;
+
+namespace {
+const std::string kCap = std::string(HAIRPIPE_TEST_DATA_DIR) + "/scalp_cap.obj";
+
+std::string contentsOf(const std::filesystem::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// Runs the command, expects exit 1 with `needle` on stderr and `input` unchanged.
+void expectInputKept(const std::vector<std::string>& args, const std::filesystem::path& input, const std::string& needle) {
+  const std::string before = contentsOf(input);
+  const auto r = runCli(args);
+  EXPECT_EQ(r.exitCode, 1) << r.err;
+  EXPECT_NE(r.err.find(needle), std::string::npos) << r.err;
+  EXPECT_EQ(contentsOf(input), before) << "the input was modified";
+}
+
+TEST(CliOutputPaths, GrowRefusesToOverwriteItsScalp) {
+  hp::test::TempDir dir;
+  std::filesystem::copy_file(kCap, dir / "a.obj");
+  const std::string scalp = (dir / "a.obj").string();
+  expectInputKept({"grow", "--scalp", scalp, "--out", scalp}, scalp, "is the input given by --scalp");
+  // The same file through another spelling of its path.
+  expectInputKept({"grow", "--scalp", scalp, "--out", (dir.path() / "." / "a.obj").string()}, scalp,
+                  "is the input given by --scalp");
+}
+
+TEST(CliOutputPaths, RenderAndStrandsRefuseToOverwriteTheirModel) {
+  hp::test::TempDir dir;
+  const std::string hair = (dir / "m.hair").string();
+  ASSERT_EQ(runCli({"grow", "--scalp", kCap, "--out", hair, "--particles", "4"}).exitCode, 0);
+  expectInputKept({"render", "--model", hair, "--out", hair, "--frames", "1"}, hair, "is the input given by --model");
+  expectInputKept({"render", "--model", hair, "--dump-strands", hair, "--frames", "1"}, hair,
+                  "--dump-strands " + hair + ": is the input given by --model");
+  expectInputKept({"strands", "--model", hair, "--out", hair}, hair, "is the input given by --model");
+  expectInputKept({"simulate", "--model", hair, "--out", hair, "--frames", "1"}, hair, "is the input given by --model");
+}
+
+TEST(CliOutputPaths, SceneModelIsAnInputToo) {
+  hp::test::TempDir dir;
+  ASSERT_EQ(runCli({"grow", "--scalp", kCap, "--out", (dir / "m.hair").string(), "--particles", "4"}).exitCode, 0);
+  hp::test::writeText(dir / "s.json", R"({"model": "m.hair"})");
+  expectInputKept({"strands", "--scene", (dir / "s.json").string(), "--out", (dir / "m.hair").string()},
+                  dir / "m.hair", "is the input given by the scene's model");
+  expectInputKept({"strands", "--scene", (dir / "s.json").string(), "--out", (dir / "s.json").string()},
+                  dir / "s.json", "is the input given by --scene");
+}
+
+TEST(CliOutputPaths, BrdfRefusesToOverwriteItsQueries) {
+  hp::test::TempDir dir;
+  hp::test::writeText(dir / "q.csv", "0,0,1,0,0,1,1,0,0\n");
+  expectInputKept({"brdf", "--in", (dir / "q.csv").string(), "--out", (dir / "q.csv").string()}, dir / "q.csv",
+                  "is the input given by --in");
+}
+
+TEST(CliOutputPaths, FoldersAndFilesAreNotConfused) {
+  hp::test::TempDir dir;
+  std::filesystem::create_directories(dir / "taken");
+  auto r = runCli({"grow", "--scalp", kCap, "--out", (dir / "taken").string()});
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_NE(r.err.find("is a folder, expected a file name"), std::string::npos) << r.err;
+  hp::test::writeText(dir / "file", "x");
+  r = runCli({"lut", "--out", (dir / "file").string()});
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_NE(r.err.find("is a file, expected a folder"), std::string::npos) << r.err;
+  r = runCli({"grow", "--scalp", kCap, "--out", (dir / "file" / "x.hair").string()});
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_NE(r.err.find("cannot create the folder"), std::string::npos) << r.err;
+}
+
+TEST(CliOutputPaths, MissingFoldersAreCreated) {
+  hp::test::TempDir dir;
+  const auto out = dir / "a" / "b" / "g.hair";
+  const auto r = runCli({"grow", "--scalp", kCap, "--out", out.string(), "--particles", "4"});
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_TRUE(std::filesystem::is_regular_file(out));
+}
+}  // namespace

@@ -1,0 +1,92 @@
+// Hostile inputs the asset readers must refuse with a short hp::Error instead of crashing, hanging or
+// exhausting memory: nesting, overflowing numbers, huge keys, device files, material libraries.
+#include <gtest/gtest.h>
+
+#include "engine/hair/hair_file.h"
+#include "engine/hair/input_file.h"
+#include "engine/hair/json_reader.h"
+#include "engine/hair/obj_import.h"
+#include "engine/hair/scene.h"
+#include "tests/hair/hair_test_util.h"
+
+namespace hp {
+namespace {
+std::string sceneError(const std::string& json) {
+  return test::errorOf([&] { parseScene(json, "scene.json", "/base"); });
+}
+
+std::string nested(int depth) { return std::string(depth, '[') + std::string(depth, ']'); }
+
+const char* kTriangleObj = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+
+TEST(InputLimits, DeepNestingIsRefusedBeforeAnyRecursion) {
+  // 200,000 levels overflowed the stack in a recursive copy before the limit existed.
+  const std::string msg = sceneError("{\"model\": " + nested(200000) + "}");
+  EXPECT_NE(msg.find("scene.json: invalid JSON: nested deeper than 32 levels"), std::string::npos) << msg;
+  EXPECT_LT(msg.size(), 200u);
+}
+
+TEST(InputLimits, NestingWithinTheLimitReachesTheSchemaCheck) {
+  const std::string msg = sceneError("{\"model\": " + nested(20) + "}");
+  EXPECT_NE(msg.find("/model"), std::string::npos) << msg;
+  EXPECT_EQ(msg.find("nested deeper"), std::string::npos) << msg;
+}
+
+TEST(InputLimits, ANumberBeyondADoubleIsAnHpError) {
+  EXPECT_ERROR_CONTAINS(parseScene(R"({"camera": {"distance": 1e400}})", "scene.json", "/"),
+                        "scene.json: invalid JSON: number overflow");
+}
+
+TEST(InputLimits, ANumberBeyondAFloatNamesItsField) {
+  EXPECT_ERROR_CONTAINS(parseScene(R"({"camera": {"distance": 1e300}})", "scene.json", "/"),
+                        "scene.json: /camera/distance: the number");
+  EXPECT_ERROR_CONTAINS(parseScene(R"({"light": {"direction": [0, 1e300, 0]}})", "scene.json", "/"),
+                        "scene.json: /light/direction/1: the number does not fit a 32-bit float");
+}
+
+TEST(InputLimits, MessagesQuoteOnlyAnExcerptOfHugeKeysAndStrings) {
+  const std::string huge(100000, 'k');
+  std::string msg = sceneError("{\"" + huge + "\": 1}");
+  EXPECT_NE(msg.find("unknown key"), std::string::npos) << msg.substr(0, 200);
+  EXPECT_LT(msg.size(), 200u);
+  msg = sceneError("{\"model\": {\"source\": \"" + huge + "\"}}");
+  EXPECT_NE(msg.find("expected \"default\""), std::string::npos) << msg.substr(0, 200);
+  EXPECT_LT(msg.size(), 250u);
+  msg = sceneError("{\"light\": {\"type\": \"" + huge + "\"}}");
+  EXPECT_LT(msg.size(), 250u);
+}
+
+TEST(InputLimits, ExcerptCutsAndEscapes) {
+  EXPECT_EQ(excerpt("short"), "short");
+  EXPECT_EQ(excerpt(std::string(100, 'a'), 4), "aaaa...");
+  EXPECT_EQ(excerpt(std::string("a\nb\0c", 5)), "a\\x0ab\\x00c");
+}
+
+TEST(InputLimits, DeviceFilesAndFifosAreNotRead) {
+  EXPECT_ERROR_CONTAINS(readInputBytes("/dev/zero", kMaxHairFileBytes), "/dev/zero: cannot open (not a regular file)");
+  EXPECT_ERROR_CONTAINS(readHairFile("/dev/zero"), "not a regular file");
+  EXPECT_ERROR_CONTAINS(loadSceneFile("/dev/zero"), "not a regular file");
+  EXPECT_ERROR_CONTAINS(loadObjScalp("/dev/zero"), "not a regular file");
+}
+
+TEST(InputLimits, AFileOverItsLimitIsRefusedBeforeReading) {
+  test::TempDir dir;
+  test::writeText(dir / "big.json", std::string(2048, ' ') + "{}");
+  EXPECT_ERROR_CONTAINS(readInputText(dir / "big.json", 1024), "the file is 2050 bytes, more than the 1024 bytes");
+  EXPECT_EQ(readInputText(dir / "big.json", 4096).size(), 2050u);
+}
+
+TEST(InputLimits, ObjMaterialLibrariesAreNeverOpened) {
+  test::TempDir dir;
+  // Before, tinyobjloader followed mtllib and read /dev/zero until memory ran out.
+  test::writeText(dir / "scalp.obj", std::string("mtllib ../../../../../../dev/zero\nusemtl skin\n") + kTriangleObj);
+  ScalpMesh mesh = loadObjScalp(dir / "scalp.obj");
+  EXPECT_EQ(mesh.triangles.size(), 1u);
+}
+
+TEST(InputLimits, ObjNonFiniteVerticesAreRefused) {
+  EXPECT_ERROR_CONTAINS(parseObjScalp(std::string("v 1e999 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"), "x.obj"),
+                        "x.obj: vertex 1 is not finite");
+}
+}  // namespace
+}  // namespace hp
