@@ -89,6 +89,7 @@ class Renderer {
   std::unique_ptr<render::ShadowMaps> shadows_;
   std::vector<Lut> luts_;
   std::vector<LightSpec> frameLights_;  // per ring slot: the light recordShadows was given
+  std::vector<render::HeadShadowView> frameHeadShadows_;  // per ring slot: the heads' depth map framing
   std::vector<Retired> retired_;
   std::optional<std::uint64_t> lastFrame_;
 };

@@ -3,11 +3,13 @@
 // (L and the light's cone/distance scale from light.glsl: per fragment for a spot)
 // a small ambient term, times the strand's lightness variation. The ribbon's pixel coverage becomes a
 // sample mask with MSAA (dithered per strand and pixel, see coverageMask), alpha without. Transmittance T = exp(-k alpha) from the opacity maps with the
-// per-vertex slice weights (opacity_lookup.glsl); the ambient term is not shadowed.
+// per-vertex slice weights (opacity_lookup.glsl), times the head's occlusion (head_shadow.glsl); the
+// ambient term is not shadowed.
 #include "shared/render.h"
 #include "shared/marschner.h"
 #include "marschner.glsl"
 #include "opacity_lookup.glsl"
+#include "head_shadow.glsl"
 #include "light.glsl"
 #include "shared/strands.h"
 
@@ -17,6 +19,7 @@ layout(binding = RENDER_BINDING_LUT_M) uniform sampler2D lutM;
 layout(binding = RENDER_BINDING_LUT_N0) uniform sampler2D lutN0;
 layout(binding = RENDER_BINDING_LUT_N1) uniform sampler2D lutN1;
 layout(binding = RENDER_BINDING_OPACITY) uniform sampler2DArray opacityMaps;
+layout(binding = RENDER_BINDING_HEAD_SHADOW) uniform sampler2DShadow headShadowMap;
 
 layout(location = 0) in vec3 inWorld;
 layout(location = 1) in vec3 inTangent;
@@ -51,7 +54,8 @@ void main() {
   float cosThetaI = sqrt(1.0 - sinThetaI * sinThetaI);
   float alpha = opacityAlpha(opacityMaps, inLightUvw, inSliceWeights[0], inSliceWeights[1], inSliceWeights[2],
                              inSliceWeights[3]);
-  float transmittance = exp(-frame.strand.z * alpha);
+  float transmittance = exp(-frame.strand.z * alpha) *
+                        headVisibility(headShadowMap, frame.headShadowViewProj, frame.headShadow, inWorld, L);
   vec3 direct = S * cosThetaI * frame.lightRadiance.rgb * (light.scale * transmittance);
   vec3 ambient = frame.hairColor.rgb * frame.hairColor.w;
   if (push.samples > 1u) {

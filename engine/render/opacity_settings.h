@@ -15,7 +15,10 @@ struct OpacitySettings {
   // resolution and the strand count. Otherwise a tuned constant strandOpacity per crossing.
   bool footprint = true;
   float strandOpacity = 0.04f;      // (0, 100]; constant mode only (the width comes from each instance's look)
-  float headOpacity = 50.0f;        // per head fragment, [0, 1e4]; T = exp(-k 50) is black behind the head
+  // The heads occlude through their own depth shadow map (ShadowMaps::headImage, head_shadow.glsl).
+  // headOpacity > 0 also draws them into the opacity slices (the old path: its slices band the skin).
+  float headOpacity = 0.0f;         // per head fragment, [0, 1e4]
+  std::uint32_t headShadowResolution = 1024;  // head depth map texels per side, [16, 8192]
   float k = 1.0f;                   // T = exp(-k alpha), [0, 1e3]
   float biasSlices = 1.0f;          // lookups move this many slices toward the light, [0, 16]
   // RGBA32F: accurate additive sums (RGBA16F rounds each 0.04 by 17% past alpha 16 and drops it past

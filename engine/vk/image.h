@@ -57,10 +57,13 @@ std::uint32_t formatBytesPerPixel(VkFormat format);  // for the formats hairpipe
 
 // A sampler with linear filtering and clamp-to-edge (what every LUT, shadow and tonemap lookup uses),
 // move-only and destroyed with its owner, so a constructor that throws after making one cannot leak it.
+// With a compare op it is a depth-compare sampler (sampler2DShadow: filtered percentage-closer lookups);
+// its border is opaque white (clamp-to-border), so lookups outside a depth map pass the test.
 class Sampler {
  public:
   Sampler() = default;
   Sampler(const Context& ctx, const std::string& name);
+  Sampler(const Context& ctx, const std::string& name, VkCompareOp compare);
   ~Sampler();
   Sampler(Sampler&& other) noexcept;
   Sampler& operator=(Sampler&& other) noexcept;
