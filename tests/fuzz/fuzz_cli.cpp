@@ -1,5 +1,5 @@
 // The `hairpipe` command line: every registered subcommand's options, as main() builds them, fed
-// fuzzed argument lists (NUL-separated). Callbacks are cleared so nothing runs or writes; what is
+// fuzzed argument lists (NUL-separated). Callbacks are parked so nothing runs or writes; what is
 // fuzzed is option parsing and the option validators. A parse may only end in CLI11's usage errors
 // or hp::Error; anything else escapes and libFuzzer records it.
 #include <cstdint>
@@ -25,20 +25,29 @@ std::vector<std::string> splitArgs(const std::uint8_t* data, std::size_t size) {
   return args;
 }
 
-void clearCallbacks(CLI::App& app) {
+// A subcommand's callback owns (through a shared_ptr) the options its CLI::Options write into, so it
+// must outlive the parse: it is moved out into `parked` rather than destroyed. The final callback is a
+// protected member of CLI::App; naming it through a derived class gives a pointer to that member.
+struct CallbackAccess : CLI::App {
+  static constexpr std::function<void()> CLI::App::*kFinal = &CallbackAccess::final_callback_;
+};
+
+void parkCallbacks(CLI::App& app, std::vector<std::function<void()>>& parked) {
   for (CLI::App* sub : app.get_subcommands([](CLI::App*) { return true; })) {
-    sub->callback(std::function<void()>{});
-    clearCallbacks(*sub);
+    parked.push_back(std::move(sub->*CallbackAccess::kFinal));
+    sub->*CallbackAccess::kFinal = nullptr;
+    parkCallbacks(*sub, parked);
   }
 }
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  std::vector<std::function<void()>> parked;  // declared first: outlives the app that points into them
   CLI::App app{"hairpipe"};
   app.require_subcommand(1);
   app.set_version_flag("--version", "hairpipe");
   for (const auto& setup : hp::cli::commandRegistry()) setup(app);
-  clearCallbacks(app);
+  parkCallbacks(app, parked);
   std::vector<std::string> args = splitArgs(data, size);
   std::vector<char*> argv;
   for (auto& a : args) argv.push_back(a.data());
