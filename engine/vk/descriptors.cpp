@@ -78,26 +78,22 @@ void DescriptorSet::writeBuffer(std::uint32_t binding, VkDescriptorType type, Vk
   vkUpdateDescriptorSets(device_, 1, &write, 0, nullptr);
 }
 
-void DescriptorSet::writeSampledImage(std::uint32_t binding, VkImageView view, VkSampler sampler,
-                                      VkImageLayout layout) const {
-  VkDescriptorImageInfo info{sampler, view, layout};
+void DescriptorSet::writeImage(std::uint32_t binding, VkDescriptorType type, const VkDescriptorImageInfo& info) const {
   VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
   write.dstSet = set_;
   write.dstBinding = binding;
   write.descriptorCount = 1;
-  write.descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+  write.descriptorType = type;
   write.pImageInfo = &info;
   vkUpdateDescriptorSets(device_, 1, &write, 0, nullptr);
 }
 
+void DescriptorSet::writeSampledImage(std::uint32_t binding, VkImageView view, VkSampler sampler,
+                                      VkImageLayout layout) const {
+  writeImage(binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, {sampler, view, layout});
+}
+
 void DescriptorSet::writeStorageImage(std::uint32_t binding, VkImageView view) const {
-  VkDescriptorImageInfo info{VK_NULL_HANDLE, view, VK_IMAGE_LAYOUT_GENERAL};
-  VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-  write.dstSet = set_;
-  write.dstBinding = binding;
-  write.descriptorCount = 1;
-  write.descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
-  write.pImageInfo = &info;
-  vkUpdateDescriptorSets(device_, 1, &write, 0, nullptr);
+  writeImage(binding, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, {VK_NULL_HANDLE, view, VK_IMAGE_LAYOUT_GENERAL});
 }
 }  // namespace hp::vk

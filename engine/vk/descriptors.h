@@ -45,6 +45,7 @@ class DescriptorSet {
   void writeStorageImage(std::uint32_t binding, VkImageView view) const;
 
  private:
+  void writeImage(std::uint32_t binding, VkDescriptorType type, const VkDescriptorImageInfo& info) const;
   void release();
   VkDevice device_ = VK_NULL_HANDLE;
   VkDescriptorSetLayout layout_ = VK_NULL_HANDLE;
