@@ -76,6 +76,16 @@ void HairSystem::setMaterial(const HairMaterial& material, LutMode mode) {
   if (rasterPass_) rebuildRaster(rasterPass_->extent());
 }
 
+void HairSystem::setLook(const render::LookSettings& look) {
+  instance_->setLook(look);
+  settings_.look = look;  // the compute raster's frame constants read it
+}
+
+void HairSystem::setStrands(const InterpolationTopology& topology) {
+  instance_->setStrands(topology, settings_.strands);
+  if (rasterPass_) rebuildRaster(rasterPass_->extent());
+}
+
 compute::ShadingWriter HairSystem::shadingWriter() const {
   return [this](const vk::DescriptorSet& set) {
     set.writeUniformBuffer(gpu::RENDER_BINDING_FRAME, rasterFrame_.handle());

@@ -69,6 +69,9 @@ class HairSystem {
 
   // Between frames, with earlier frames possibly in flight: the old textures are retired, not idled on.
   void setMaterial(const HairMaterial& material, LutMode mode);
+  void setLook(const render::LookSettings& look);
+  // A new density (interpolation topology): new strand buffers, and a new rasterizer reading them.
+  void setStrands(const InterpolationTopology& topology);
 
   SimulatePass& simulation() { return instance_->simulationForTools(); }
   const compute::StrandBuffers& strands() const { return instance_->strands(); }

@@ -34,7 +34,14 @@ enum class ImageUse {
   ColorAttachmentDiscard,  // written as a colour attachment (or resolve target) by earlier work, now discarded
   DepthAttachmentDiscard,  // written as a depth attachment by earlier work, now discarded
                            // (layout UNDEFINED): reusing a frame's image waits for those reads
+  SwapchainAcquired,       // a swapchain image just acquired, contents discarded: the first transfer or
+                           // colour write waits (at those stages) on the acquire semaphore
+  Present,                 // handed to vkQueuePresentKHR (the present waits on a semaphore, no access)
 };
+
+// The stages a frame's submission waits at for its swapchain image (ImageUse::SwapchainAcquired).
+inline constexpr VkPipelineStageFlags2 kSwapchainWaitStages =
+    VK_PIPELINE_STAGE_2_BLIT_BIT | VK_PIPELINE_STAGE_2_COPY_BIT | VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT;
 
 // A buffer range barrier between two uses.
 void bufferBarrier(VkCommandBuffer cmd, VkBuffer buffer, BufferUse from, BufferUse to,

@@ -32,6 +32,16 @@ VkDebugUtilsMessengerCreateInfoEXT messengerInfo(ValidationLog* log) {
   return info;
 }
 
+bool deviceExtensionAvailable(VkPhysicalDevice device, const std::string& name) {
+  std::uint32_t count = 0;
+  HP_VK_CHECK(vkEnumerateDeviceExtensionProperties(device, nullptr, &count, nullptr));
+  std::vector<VkExtensionProperties> exts(count);
+  HP_VK_CHECK(vkEnumerateDeviceExtensionProperties(device, nullptr, &count, exts.data()));
+  for (const auto& e : exts)
+    if (name == e.extensionName) return true;
+  return false;
+}
+
 std::string requestedDevice(const ContextOptions& options) {
   if (!options.device.empty()) return options.device;
   const char* env = std::getenv("HAIRPIPE_DEVICE");
@@ -120,6 +130,10 @@ void Context::createInstance(const ContextOptions& options) {
     if (!debugUtils_) throw Error("validation was requested but VK_EXT_debug_utils is not available");
     layers.push_back(kValidationLayer);
   }
+  for (const auto& e : options.instanceExtensions) {
+    if (!instanceExtensionAvailable(e.c_str())) throw Error("the Vulkan instance extension " + e + " is not available");
+    extensions.push_back(e.c_str());
+  }
   VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
   app.pApplicationName = options.appName.c_str();
   app.pEngineName = "hairpipe";
@@ -167,9 +181,17 @@ void Context::createDevice(const ContextOptions& options) {
   v13.dynamicRendering = VK_TRUE;
   v13.synchronization2 = VK_TRUE;
   VkPhysicalDeviceFeatures2 features{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &v13};
+  std::vector<const char*> extensions;
+  for (const auto& e : options.deviceExtensions) {
+    if (!deviceExtensionAvailable(physical_, e))
+      throw Error(std::string(chosen.candidate.name) + " does not support the device extension " + e);
+    extensions.push_back(e.c_str());
+  }
   VkDeviceCreateInfo info{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO, &features};
   info.queueCreateInfoCount = 1;
   info.pQueueCreateInfos = &queueInfo;
+  info.enabledExtensionCount = static_cast<std::uint32_t>(extensions.size());
+  info.ppEnabledExtensionNames = extensions.data();
   HP_VK_CHECK(vkCreateDevice(physical_, &info, nullptr, &device_));
   volkLoadDevice(device_);
   vkGetDeviceQueue(device_, queueFamily_, 0, &queue_);

@@ -22,6 +22,10 @@ struct ContextOptions {
   bool validation = false;
   std::string device;  // --device NAME-SUBSTRING|INDEX; empty: HAIRPIPE_DEVICE, else the best device
   std::string appName = "hairpipe";
+  // Extra extensions (a windowed tool: the surface ones and VK_KHR_swapchain); a missing one is an
+  // hp::Error naming it. hairpipe itself needs none.
+  std::vector<std::string> instanceExtensions;
+  std::vector<std::string> deviceExtensions;
 };
 
 // Handles owned by an embedding application. hairpipe never destroys them and never waits idle on the

@@ -1,7 +1,7 @@
 // `hairpipe render`: simulates N frames so the hair settles, renders the last one (head + hair with
 // Marschner shading, opacity shadow maps), writes the PNG atomically and prints the GPU time of every
 // pass. --dump-opacity DIR also writes the 16 opacity slices (PFM), a contact sheet (PNG) and the
-// slice depths (JSON).
+// slice depths (JSON). --sequence DIR renders every frame of the animation instead (render_sequence.h).
 #include <cmath>
 #include <iostream>
 
@@ -10,7 +10,9 @@
 #include "engine/error.h"
 #include "engine/hair/camera_fit.h"
 #include "samples/tools/png_file.h"
+#include "samples/tools/progress_reporter.h"
 #include "samples/tools/render_job.h"
+#include "samples/cli/render_sequence.h"
 #include "samples/cli/command.h"
 #include "samples/cli/material_options.h"
 #include "samples/cli/scene_options.h"
@@ -40,6 +42,7 @@ struct RenderOptions {
   std::string dumpStrands;
   std::optional<std::string> raster;
   std::optional<std::uint32_t> tileBudget;
+  hp::cli::SequenceOptions sequence;
 };
 
 // --raster overrides the scene's; --lines are graphics lines, so they pick the graphics path unless
@@ -125,6 +128,7 @@ hp::RenderRequest makeRequest(const RenderOptions& o, const CLI::App& cmd) {
       r.scene.render.height > 16384)
     throw hp::Error("--width/--height must be in [1, 16384]");
   r.settleFrames = o.frames;
+  if (o.sequence.fps) r.scene.simulation.dt = hp::cli::stepOfFps(*o.sequence.fps);
   r.animation = hp::parseHeadAnimation(o.animate);
   r.lutMode = hp::parseLutMode(o.lutMode);
   r.lines = o.lines;
@@ -171,11 +175,25 @@ void prepareOutputs(const RenderOptions& o, const hp::Scene& scene) {
 
 void runRender(const RenderOptions& o, const CLI::App& cmd) {
   hp::RenderRequest request = makeRequest(o, cmd);
+  if (!o.sequence.dir.empty()) {
+    if (cmd.count("--out") || !o.dumpOpacity.empty() || !o.dumpStrands.empty())
+      throw hp::Error("--sequence writes DIR/frame_NNNN.png: --out and the dumps do not apply");
+    hp::cli::checkSequence(o.frames);
+    hp::cli::prepareSequenceOutputs(o.sequence, hp::cli::sceneInputs(o.scene, request.scene));
+    hp::HairAsset asset = hp::buildSceneAsset(request.scene);
+    const nlohmann::json guessed = frameCamera(request.scene, asset);
+    request.settleFrames = 0;  // the sequence is the animation from its first step
+    hp::cli::runSequence(o.sequence, o.frames, request, asset, o.scene, o.json, guessed);
+    return;
+  }
+  if (!o.sequence.contactSheet.empty()) throw hp::Error("--contact-sheet needs --sequence DIR");
   prepareOutputs(o, request.scene);
   hp::HairAsset asset = hp::buildSceneAsset(request.scene);
   const nlohmann::json guessed = frameCamera(request.scene, asset);
   auto ctx = hp::cli::createContext(o.scene);
-  hp::RenderResult result = hp::renderStill(*ctx, asset, request);
+  hp::ProgressReporter progress("hairpipe render: settling", request.settleFrames);
+  hp::RenderResult result = hp::renderStill(*ctx, asset, request, [&](std::uint32_t done) { progress.update(done); });
+  progress.finish();
   hp::cli::checkValidation(*ctx);
   hp::writePng(o.out, result.width, result.height, 4, result.rgba);
   if (result.opacity) hp::render::writeOpacityDump(o.dumpOpacity, *result.opacity);
@@ -216,7 +234,8 @@ void setupRender(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand("render", "Simulate, then render the last frame to a PNG");
   hp::cli::addSceneOptions(*cmd, o->scene);
   hp::cli::addMaterialOptions(*cmd, o->material);
-  cmd->add_option("--frames", o->frames, "Frames simulated before the rendered one (default 90)");
+  cmd->add_option("--frames", o->frames,
+                  "Frames simulated before the rendered one (default 90); with --sequence, the frames rendered");
   cmd->add_option("--width", o->width, "Image width (default: scene, 1280)");
   cmd->add_option("--height", o->height, "Image height (default: scene, 720)");
   cmd->add_option("--msaa", o->msaa, "Samples per pixel of the graphics raster: 1, 2, 4 or 8 (default: scene, 4)");
@@ -245,6 +264,7 @@ void setupRender(CLI::App& app) {
   cmd->add_option("--dump-strands", o->dumpStrands, "Write the rendered frame's render strands as .hair (Q points each)");
   cmd->add_option("--dump-opacity", o->dumpOpacity, "Write the 16 opacity slices (PFM), a contact sheet and the slice depths to DIR");
   cmd->add_option("--out", o->out, "Output PNG (default out/hair.png)");
+  hp::cli::addSequenceOptions(*cmd, o->sequence);
   cmd->add_flag("--json", o->json, "Print JSON");
   cmd->callback([o, cmd] { runRender(*o, *cmd); });
 }

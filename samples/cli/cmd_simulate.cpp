@@ -4,6 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "samples/tools/progress_reporter.h"
 #include "samples/tools/simulation_driver.h"
 #include "engine/error.h"
 #include "engine/hair/hair_export.h"
@@ -49,7 +50,9 @@ void runSimulate(const SimulateOptions& opt) {
   auto ctx = hp::cli::createContext(opt.scene);
   hp::SimulatePass pass(*ctx, asset, params);
   hp::SimulationDriver driver(*ctx, pass, animation, hp::assetHeadRadius(asset));
-  driver.runFrames(opt.frames);
+  hp::ProgressReporter progress("hairpipe simulate", opt.frames);
+  driver.runFrames(opt.frames, [&](std::uint32_t done) { progress.update(done); });
+  progress.finish();
   hp::SimStats stats = driver.stats();
   if (!opt.out.empty())
     hp::writeHairFile(opt.out, hp::guidesToHair(finalGuides(driver.readPositions(), pass.particlesPerGuide()),

@@ -58,8 +58,8 @@ Scene loadScene(const SceneOptions& options) {
   return scene;
 }
 
-std::unique_ptr<vk::Context> createContext(const SceneOptions& options) {
-  vk::ContextOptions ctxOptions;
+std::unique_ptr<vk::Context> createContext(const SceneOptions& options, const vk::ContextOptions& extensions) {
+  vk::ContextOptions ctxOptions = extensions;
   ctxOptions.device = options.device;
   ctxOptions.validation = options.validation;
   auto ctx = vk::Context::createHeadless(ctxOptions);

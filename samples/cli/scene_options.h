@@ -25,7 +25,8 @@ struct SceneOptions {
 
 void addSceneOptions(CLI::App& cmd, SceneOptions& options);
 Scene loadScene(const SceneOptions& options);
-std::unique_ptr<vk::Context> createContext(const SceneOptions& options);
+// `extensions` adds instance and device extensions (a windowed tool's surface and swapchain).
+std::unique_ptr<vk::Context> createContext(const SceneOptions& options, const vk::ContextOptions& extensions = {});
 // After a run with --validation: throws hp::Error listing the messages, if any.
 void checkValidation(vk::Context& ctx);
 }  // namespace hp::cli

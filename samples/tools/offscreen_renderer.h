@@ -23,6 +23,8 @@ class OffscreenRenderer {
   void attach(HairSystem& hair) const;
   AttachmentFormats formats() const;
   VkExtent2D extent() const { return targets_.extent(); }
+  // The sRGB image record() leaves in ImageUse::ColorAttachment (a window blits it to its swapchain).
+  const vk::Image& display() const { return targets_.display; }
 
   void record(VkCommandBuffer cmd, HairSystem& hair, const DrawView& view, float exposure,
               vk::GpuProfiler* profiler = nullptr) const;

@@ -1,5 +1,7 @@
 #include "samples/tools/render_job.h"
 
+#include <cmath>
+
 #include "samples/tools/strand_dump.h"
 
 #include "samples/tools/simulation_driver.h"
@@ -10,6 +12,63 @@
 
 namespace hp {
 namespace {
+// What every rendered frame of a job shares: targets, the hair, the scripted head and the timestamps.
+struct RenderSession {
+  RenderSession(const vk::Context& ctx, const HairAsset& asset, const RenderRequest& request)
+      : request(request),
+        raster(resolveRasterMode(request.scene.render.raster, ctx.properties().deviceType)),
+        renderer(ctx, request.scene.render.width, request.scene.render.height, request.scene.render.msaa, raster),
+        hair(ctx, asset, systemSettings(resolved(request, raster), renderer.formats())),
+        driver(ctx, hair.simulation(), request.animation, assetHeadRadius(asset)),
+        profiler(ctx, 16, "render frame") {
+    renderer.attach(hair);
+  }
+
+  static RenderRequest resolved(RenderRequest r, RasterMode raster) {
+    r.scene.render.raster = raster;
+    return r;
+  }
+
+  DrawView view(const HeadMotion& motion) const {
+    DrawView v;
+    v.extent = renderer.extent();
+    v.camera = orbitCamera(request.scene.camera, float(v.extent.width) / float(v.extent.height));
+    v.light = request.scene.light;
+    v.lines = request.lines;
+    v.headToWorld = motion.to;
+    return v;
+  }
+
+  // One frame in full (simulate, tessellate, interpolate, shadows, head, hair, tonemap), waited for.
+  RenderResult render(const vk::Context& ctx, const HeadMotion& motion) {
+    const DrawView v = view(motion);
+    vk::submitAndWait(ctx, [&](VkCommandBuffer cmd) {
+      profiler.reset(cmd);
+      hair.recordUpdate(cmd, motion, &profiler);
+      hair.recordPrepareDraw(cmd, v, &profiler);
+      renderer.record(cmd, hair, v, request.exposure, &profiler);
+    }, "render frame");
+    RenderResult result;
+    result.width = v.extent.width;
+    result.height = v.extent.height;
+    result.rgba = renderer.readDisplay();
+    result.passTimes = profiler.results();
+    result.guides = hair.simulation().guideCount();
+    result.strands = hair.strands().layout().strandCount;
+    result.verticesPerStrand = hair.strands().layout().verticesPerStrand;
+    result.raster = hair.raster();
+    return result;
+  }
+
+  const RenderRequest& request;
+  RasterMode raster;
+  render::OffscreenRenderer renderer;
+  HairSystem hair;
+  SimulationDriver driver;
+  vk::GpuProfiler profiler;
+};
+}  // namespace
+
 HairSystemSettings systemSettings(const RenderRequest& r, const render::AttachmentFormats& formats) {
   HairSystemSettings s;
   s.simulation = r.scene.simulation;
@@ -24,55 +83,40 @@ HairSystemSettings systemSettings(const RenderRequest& r, const render::Attachme
   return s;
 }
 
-void validate(const RenderRequest& r) {
+void validateRequest(const RenderRequest& r) {
   if (r.settleFrames > 100000) throw Error("settle frames must be at most 100000");
   if (!(r.exposure > 0.0f) || !std::isfinite(r.exposure)) throw Error("exposure must be a positive number");
   r.scene.light.validate();  // also catches a hand-built LightSpec that skipped the scene parser
 }
-}  // namespace
 
-RenderResult renderStill(const vk::Context& ctx, const HairAsset& asset, const RenderRequest& request) {
-  validate(request);
-  const RenderSpec& size = request.scene.render;
-  RenderRequest resolved = request;
-  resolved.scene.render.raster = resolveRasterMode(request.scene.render.raster, ctx.properties().deviceType);
-  render::OffscreenRenderer renderer(ctx, size.width, size.height, size.msaa, resolved.scene.render.raster);
-  HairSystem hair(ctx, asset, systemSettings(resolved, renderer.formats()));
-  renderer.attach(hair);
-  SimulationDriver driver(ctx, hair.simulation(), request.animation, assetHeadRadius(asset));
-  if (request.settleFrames > 0) driver.runFrames(request.settleFrames);
-
-  DrawView view;
-  view.extent = renderer.extent();
-  view.camera = orbitCamera(request.scene.camera, float(size.width) / float(size.height));
-  view.light = request.scene.light;
-  view.lines = request.lines;
-  const HeadMotion motion = driver.nextMotion();
-  view.headToWorld = motion.to;
-  vk::GpuProfiler profiler(ctx, 16, "render frame");
-  vk::submitAndWait(ctx, [&](VkCommandBuffer cmd) {
-    profiler.reset(cmd);
-    hair.recordUpdate(cmd, motion, &profiler);
-    hair.recordPrepareDraw(cmd, view, &profiler);
-    renderer.record(cmd, hair, view, request.exposure, &profiler);
-  }, "render frame");
-
-  RenderResult result;
-  result.width = size.width;
-  result.height = size.height;
-  result.rgba = renderer.readDisplay();
-  result.passTimes = profiler.results();
-  result.guides = hair.simulation().guideCount();
-  result.strands = hair.strands().layout().strandCount;
-  result.verticesPerStrand = hair.strands().layout().verticesPerStrand;
-  result.raster = hair.raster();
+RenderResult renderStill(const vk::Context& ctx, const HairAsset& asset, const RenderRequest& request,
+                         const std::function<void(std::uint32_t settled)>& progress) {
+  validateRequest(request);
+  RenderSession session(ctx, asset, request);
+  if (request.settleFrames > 0) session.driver.runFrames(request.settleFrames, progress);
+  const HeadMotion motion = session.driver.nextMotion();
+  RenderResult result = session.render(ctx, motion);
+  HairSystem& hair = session.hair;
   if (hair.raster() == RasterMode::Compute) result.rasterStats = hair.rasterStats();
   if (request.captureStrands)
     result.strandDump = compute::renderStrandsToHairData(ctx, hair.strands(), vk::BufferUse::VertexRead,
                                                          "hairpipe render: render strands of the drawn frame");
   if (request.captureOpacity && request.opacity.enabled)
     result.opacity = render::captureOpacity(ctx, hair.shadows().image(), hair.shadows().lightSpace(), request.opacity,
-                                            glm::normalize(view.light.direction));
+                                            glm::normalize(request.scene.light.direction));
   return result;
+}
+
+std::uint32_t renderSequence(const vk::Context& ctx, const HairAsset& asset, const RenderRequest& request,
+                             std::uint32_t frames,
+                             const std::function<bool(std::uint32_t frame, const RenderResult& image)>& onFrame) {
+  validateRequest(request);
+  RenderSession session(ctx, asset, request);
+  if (request.settleFrames > 0) session.driver.runFrames(request.settleFrames);
+  for (std::uint32_t i = 1; i <= frames; ++i) {
+    const RenderResult image = session.render(ctx, session.driver.advance());
+    if (!onFrame(i, image)) return i;
+  }
+  return frames;
 }
 }  // namespace hp

@@ -3,6 +3,7 @@
 // asset, lets the simulation settle for settleFrames (the head following `animation`), then records
 // the last frame in full (simulate, tessellate, interpolate, head, hair, tonemap) with GPU timestamps
 // per pass (bounds and opacity included when shadows are on) and reads the image back. Blocking; for tools and tests, not for a frame loop.
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -42,5 +43,20 @@ struct RenderResult {
   std::optional<HairFileData> strandDump;         // with captureStrands: Q points per render strand
 };
 
-RenderResult renderStill(const vk::Context& ctx, const HairAsset& asset, const RenderRequest& request);
+// `progress` (optional) is told the settling frames done.
+RenderResult renderStill(const vk::Context& ctx, const HairAsset& asset, const RenderRequest& request,
+                         const std::function<void(std::uint32_t settled)>& progress = {});
+
+// An animation: request.settleFrames simulated first, then `frames` frames each simulated and rendered
+// in full (one simulation step apart, scene.simulation.dt). After each, `onFrame(index from 1, image)`;
+// returning false stops the sequence there (Ctrl-C). Returns the frames rendered. The captures of the
+// request are not made.
+std::uint32_t renderSequence(const vk::Context& ctx, const HairAsset& asset, const RenderRequest& request,
+                             std::uint32_t frames,
+                             const std::function<bool(std::uint32_t frame, const RenderResult& image)>& onFrame);
+
+// The HairSystem settings a render request implies for targets of `formats` (the viewer's too).
+HairSystemSettings systemSettings(const RenderRequest& request, const render::AttachmentFormats& formats);
+// Throws hp::Error for a request renderStill would refuse (frame counts, exposure, light).
+void validateRequest(const RenderRequest& request);
 }  // namespace hp

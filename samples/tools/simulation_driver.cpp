@@ -9,6 +9,7 @@
 namespace hp {
 namespace {
 constexpr std::uint32_t kMaxFramesPerSubmit = 256;
+constexpr std::uint32_t kFramesPerReportedSubmit = 16;  // progress often enough on a slow device
 }
 
 SimulationDriver::SimulationDriver(const vk::Context& ctx, SimulatePass& pass, HeadAnimation animation,
@@ -22,9 +23,16 @@ HeadMotion SimulationDriver::nextMotion() const {
           headTeleportsBetween(animation_, t0, t1)};
 }
 
-void SimulationDriver::runFrames(std::uint32_t count) {
+HeadMotion SimulationDriver::advance() {
+  const HeadMotion motion = nextMotion();
+  ++frame_;
+  return motion;
+}
+
+void SimulationDriver::runFrames(std::uint32_t count, const std::function<void(std::uint32_t done)>& progress) {
+  const std::uint32_t total = count;
   while (count > 0) {
-    const std::uint32_t batch = std::min(count, kMaxFramesPerSubmit);
+    const std::uint32_t batch = std::min(count, progress ? kFramesPerReportedSubmit : kMaxFramesPerSubmit);
     vk::submitAndWait(ctx_, [&](VkCommandBuffer cmd) {
       profiler_.reset(cmd);
       for (std::uint32_t i = 0; i < batch; ++i) {
@@ -36,6 +44,7 @@ void SimulationDriver::runFrames(std::uint32_t count) {
     }, "simulate frames");
     for (const auto& scope : profiler_.results()) frameMs_.push_back(scope.milliseconds);
     count -= batch;
+    if (progress) progress(total - count);
   }
 }
 

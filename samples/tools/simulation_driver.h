@@ -3,6 +3,7 @@
 // tests, benchmarks): records a batch of frames into one submission with the frame-to-frame barrier,
 // times each frame with GPU timestamps, and reads the state back on request. The head follows a
 // HeadAnimation; a jump in it is handed to the pass as a teleport.
+#include <functional>
 #include <vector>
 
 #include "compute/simulate_pass.h"
@@ -15,8 +16,9 @@ class SimulationDriver {
  public:
   SimulationDriver(const vk::Context& ctx, SimulatePass& pass, HeadAnimation animation, float headRadius);
 
-  // Simulates `count` frames in one submission and waits for it. Appends each frame's GPU ms.
-  void runFrames(std::uint32_t count);
+  // Simulates `count` frames in submissions of up to 256 frames and waits for them. Appends each
+  // frame's GPU ms. With `progress`, submissions are smaller and it is told the frames done after each.
+  void runFrames(std::uint32_t count, const std::function<void(std::uint32_t done)>& progress = {});
   const std::vector<double>& frameMilliseconds() const { return frameMs_; }
   double medianFrameMilliseconds() const;
 
@@ -25,6 +27,8 @@ class SimulationDriver {
   glm::mat4 head() const { return headTransformAt(animation_, time(), headRadius_); }
   // The motion of the next frame (what runFrames records for it).
   HeadMotion nextMotion() const;
+  // The next frame's motion, counted as simulated: for frames recorded elsewhere (a full render frame).
+  HeadMotion advance();
 
   std::vector<glm::vec4> readPositions() const;
   std::vector<glm::vec4> readPrevious() const;

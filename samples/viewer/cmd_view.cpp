@@ -1,0 +1,121 @@
+// `hairpipe view`: the live viewer (viewer_app.h). Registered into the tool only (not the CLI fuzzer's
+// command set): it is the one command that opens a window.
+#include <cstdio>
+#include <iostream>
+
+#include <nlohmann/json.hpp>
+
+#include "engine/error.h"
+#include "engine/hair/camera_fit.h"
+#include "samples/cli/command.h"
+#include "samples/cli/output_paths.h"
+#include "samples/viewer/viewer_app.h"
+
+namespace {
+constexpr std::uint32_t kMaxFrames = 1000000;
+constexpr std::uint32_t kMaxWindowSide = 16384;
+
+struct ViewOptions {
+  hp::cli::SceneOptions scene;
+  std::optional<std::uint32_t> width, height, msaa, density;
+  std::optional<std::string> raster;
+  std::string lutMode = "float";
+  std::string animate = "none";
+  float exposure = 1.0f;
+  std::uint32_t frames = 0;
+  std::string screenshot;
+  std::string resizeAt;
+  bool noPanel = false;
+  bool json = false;
+};
+
+// "K:WxH": at frame K the window is resized to W x H.
+void parseResize(const std::string& text, hp::viewer::ViewerOptions& v) {
+  unsigned k = 0, w = 0, h = 0;
+  char tail = 0;
+  if (std::sscanf(text.c_str(), "%u:%ux%u%c", &k, &w, &h, &tail) != 3 || w == 0 || h == 0 || w > kMaxWindowSide ||
+      h > kMaxWindowSide)
+    throw hp::Error("--resize-at takes FRAME:WIDTHxHEIGHT with sides in [1, 16384], e.g. 10:200x150");
+  v.resizeAt = k;
+  v.resizeTo = {w, h};
+}
+
+hp::viewer::ViewerOptions viewerOptions(const ViewOptions& o) {
+  hp::viewer::ViewerOptions v;
+  v.scene = o.scene;
+  hp::RenderRequest& r = v.request;
+  r.scene = hp::cli::loadScene(o.scene);
+  if (o.width) r.scene.render.width = *o.width;
+  if (o.height) r.scene.render.height = *o.height;
+  if (r.scene.render.width == 0 || r.scene.render.height == 0 || r.scene.render.width > kMaxWindowSide ||
+      r.scene.render.height > kMaxWindowSide)
+    throw hp::Error("--width/--height must be in [1, 16384]");
+  if (o.msaa) r.scene.render.msaa = *o.msaa;
+  if (o.raster) r.scene.render.raster = hp::parseRasterMode(*o.raster);
+  if (o.density) {
+    r.scene.density.mode = hp::DensityOptions::Mode::Total;
+    r.scene.density.totalStrands = *o.density;
+    r.scene.density.validate();
+  }
+  r.lutMode = hp::parseLutMode(o.lutMode);
+  r.animation = hp::parseHeadAnimation(o.animate);
+  if (!(o.exposure > 0.0f) || !std::isfinite(o.exposure)) throw hp::Error("--exposure must be a positive number");
+  r.exposure = o.exposure;
+  if (o.frames > kMaxFrames) throw hp::Error("--frames must be at most 1000000 (0: until the window closes)");
+  v.frames = o.frames;
+  if (!o.screenshot.empty() && o.frames == 0) throw hp::Error("--screenshot needs --frames N (the frame it saves)");
+  v.screenshot = o.screenshot;
+  if (!o.resizeAt.empty()) parseResize(o.resizeAt, v);
+  v.panel = !o.noPanel;
+  hp::validateRequest(r);
+  return v;
+}
+
+void runView(const ViewOptions& o) {
+  hp::viewer::ViewerOptions v = viewerOptions(o);
+  if (!v.screenshot.empty())
+    hp::cli::prepareOutputFile({"--screenshot", v.screenshot}, hp::cli::sceneInputs(o.scene, v.request.scene));
+  const hp::HairAsset asset = hp::buildSceneAsset(v.request.scene);
+  if (v.request.scene.fitCamera) hp::fitCameraToPoints(v.request.scene.camera, asset.guides.positions);
+  const hp::viewer::ViewerReport report = hp::viewer::runViewer(v, asset);
+  const nlohmann::json j = {{"frames", report.frames},
+                            {"swapchain_recreations", report.swapchainRecreations},
+                            {"width", report.extent.width},
+                            {"height", report.extent.height},
+                            {"device", report.device},
+                            {"raster", report.raster},
+                            {"screenshot", v.screenshot}};
+  if (o.json) {
+    std::cout << j.dump(2) << "\n";
+    return;
+  }
+  std::cout << "viewed " << report.frames << " frames (" << report.extent.width << "x" << report.extent.height
+            << ", swapchain recreated " << report.swapchainRecreations << "x, " << report.raster << " raster) on "
+            << report.device << "\n";
+  if (!v.screenshot.empty()) std::cout << "wrote " << v.screenshot << "\n";
+}
+
+void setupView(CLI::App& app) {
+  auto o = std::make_shared<ViewOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "view", "Live viewer: drag orbits, wheel zooms, Shift+drag or right drag turns the light, N/T/S nod/turn/"
+              "shake, W wind, Space pause, F1 panel, Esc quits");
+  hp::cli::addSceneOptions(*cmd, o->scene);
+  cmd->add_option("--width", o->width, "Window width (default: scene, 1280)");
+  cmd->add_option("--height", o->height, "Window height (default: scene, 720)");
+  cmd->add_option("--msaa", o->msaa, "Samples per pixel of the graphics raster (default: scene, 4)");
+  cmd->add_option("--raster", o->raster, "Hair drawing: auto (= compute), compute or graphics (default: scene)");
+  cmd->add_option("--density", o->density, "Render strands in total (default: scene, 20000)");
+  cmd->add_option("--lut-mode", o->lutMode, "Marschner evaluation: float, paper or direct (default float)");
+  cmd->add_option("--animate", o->animate, "Head motion at the start: none, nod, turn, shake");
+  cmd->add_option("--exposure", o->exposure, "Exposure multiplier before tonemapping (default 1)");
+  cmd->add_option("--frames", o->frames, "Stop after N frames (default 0: when the window closes)");
+  cmd->add_option("--screenshot", o->screenshot, "With --frames N: save the last frame's window image as PNG");
+  cmd->add_option("--resize-at", o->resizeAt, "Testing: resize the window at a frame, FRAME:WxH");
+  cmd->add_flag("--no-panel", o->noPanel, "Start with the panel hidden (F1 shows it)");
+  cmd->add_flag("--json", o->json, "Print the run's summary as JSON");
+  cmd->callback([o] { runView(*o); });
+}
+}  // namespace
+
+HP_CLI_COMMAND(setupView);

@@ -1,0 +1,120 @@
+#include "samples/viewer/viewer_panel.h"
+
+#include <imgui.h>
+
+#include <cmath>
+
+namespace hp::viewer {
+namespace {
+// ImGui edits floats; the parameters are doubles (and radians where the UI shows degrees).
+bool editDouble(const char* label, double& value, float lo, float hi, const char* format = "%.3f") {
+  float v = float(value);
+  if (!ImGui::SliderFloat(label, &v, lo, hi, format)) return false;
+  value = v;
+  return true;
+}
+
+bool editDegrees(const char* label, double& radians, float lo, float hi) {
+  float deg = float(radians * 180.0 / M_PI);
+  if (!ImGui::SliderFloat(label, &deg, lo, hi, "%.1f deg")) return false;
+  radians = deg * M_PI / 180.0;
+  return true;
+}
+
+bool editCount(const char* label, std::uint32_t& value, int lo, int hi) {
+  int v = int(value);
+  if (!ImGui::SliderInt(label, &v, lo, hi)) return false;
+  value = std::uint32_t(v);
+  return true;
+}
+
+void simulationSection(Tunables& t, ViewState& view, PanelChanges& c) {
+  if (!ImGui::CollapsingHeader("Simulation", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  const char* animations[] = {"none", "nod", "turn", "shake"};
+  int a = int(view.animation);
+  if (a > 3) a = 0;
+  if (ImGui::Combo("animation (N/T/S)", &a, animations, 4)) {
+    view.animation = HeadAnimation(a);
+    view.animationChanged = true;
+  }
+  ImGui::Checkbox("paused (Space)", &view.paused);
+  c.simulation |= ImGui::Checkbox("wind (W)", &view.wind);
+  c.simulation |= editDouble("wind strength", t.windStrength, 0.0f, 30.0f);
+  c.simulation |= editDouble("wind gust", t.simulation.windGust, 0.0f, 1.0f);
+  c.simulation |= editCount("substeps", t.simulation.substeps, 1, 8);
+  c.simulation |= editCount("iterations", t.simulation.iterations, 1, 32);
+  c.simulation |= editDouble("damping", t.simulation.damping, 0.0f, 0.5f);
+  c.simulation |= editDouble("stiffness", t.simulation.stiffness, 0.0f, 1.0f);
+}
+
+void densitySection(Tunables& t, PanelChanges& c) {
+  if (!ImGui::CollapsingHeader("Density")) return;
+  int d = int(t.density);
+  ImGui::SliderInt("render strands", &d, 1000, 200000, "%d", ImGuiSliderFlags_Logarithmic);
+  t.density = std::uint32_t(d);
+  c.density = ImGui::Button("apply density");
+}
+
+void materialSection(Tunables& t, PanelChanges& c) {
+  if (!ImGui::CollapsingHeader("Material and scattering")) return;
+  float sigma[3] = {float(t.material.absorption.x), float(t.material.absorption.y), float(t.material.absorption.z)};
+  if (ImGui::SliderFloat3("absorption", sigma, 0.0f, 8.0f)) t.material.absorption = {sigma[0], sigma[1], sigma[2]};
+  editDouble("eta", t.material.eta, 1.2f, 2.0f);
+  editDegrees("alpha R (shift)", t.material.alphaR, -12.0f, 0.0f);
+  editDegrees("beta R (width)", t.material.betaR, 2.0f, 20.0f);
+  editDouble("glint kG", t.material.kG, 0.0f, 2.0f);
+  editDegrees("glint width wc", t.material.wc, 5.0f, 30.0f);
+  const char* modes[] = {"direct", "paper", "float"};
+  int m = int(t.lutMode);
+  ImGui::Combo("lookup", &m, modes, 3);
+  t.lutMode = LutMode(m);
+  c.material = ImGui::Button("apply material");
+}
+
+void shadowSection(Tunables& t, PanelChanges& c) {
+  if (!ImGui::CollapsingHeader("Shadows")) return;
+  c.opacity |= ImGui::Checkbox("opacity shadow maps", &t.opacity.enabled);
+  c.opacity |= ImGui::SliderFloat("strand opacity", &t.opacity.strandOpacity, 0.001f, 0.5f, "%.3f",
+                                  ImGuiSliderFlags_Logarithmic);
+  c.opacity |= ImGui::SliderFloat("extinction k", &t.opacity.k, 0.0f, 4.0f);
+  c.opacity |= ImGui::SliderFloat("bias (slices)", &t.opacity.biasSlices, 0.0f, 4.0f);
+}
+
+void lookSection(Tunables& t, PanelChanges& c) {
+  if (!ImGui::CollapsingHeader("Look")) return;
+  ImGui::SliderFloat("exposure", &t.exposure, 0.1f, 8.0f, "%.2f", ImGuiSliderFlags_Logarithmic);
+  c.look |= ImGui::SliderFloat("ambient", &t.look.ambient, 0.0f, 0.5f);
+  c.look |= ImGui::SliderFloat("strand width", &t.look.strandWidth, 0.0001f, 0.003f, "%.4f");
+}
+
+void timingSection(const PanelStatus& s) {
+  if (!ImGui::CollapsingHeader("GPU time per pass", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  ImGui::Text("%s, %s raster, %u strands", s.device.c_str(), s.raster.c_str(), s.strands);
+  ImGui::Text("frame %.1f ms (%.1f frames/s)", s.frameMs, s.frameMs > 0 ? 1000.0 / s.frameMs : 0.0);
+  if (s.passTimes.empty()) ImGui::TextUnformatted("(no GPU timestamps on this device yet)");
+  for (const auto& p : s.passTimes) ImGui::Text("%*s%-14s %7.3f ms", p.depth * 2, "", p.name.c_str(), p.milliseconds);
+}
+}  // namespace
+
+PanelChanges drawPanel(Tunables& t, ViewState& view, const PanelStatus& status) {
+  PanelChanges c;
+  if (!view.panel) return c;
+  ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(340, 0), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowBgAlpha(0.8f);
+  ImGui::SetNextWindowCollapsed(status.startCollapsed, ImGuiCond_FirstUseEver);
+  if (!ImGui::Begin("hairpipe (F1 hides)", &view.panel)) {
+    ImGui::End();
+    return c;
+  }
+  timingSection(status);
+  simulationSection(t, view, c);
+  densitySection(t, c);
+  materialSection(t, c);
+  shadowSection(t, c);
+  lookSection(t, c);
+  if (!status.error.empty()) ImGui::TextColored(ImVec4(1.0f, 0.4f, 0.3f, 1.0f), "%s", status.error.c_str());
+  ImGui::End();
+  return c;
+}
+}  // namespace hp::viewer
