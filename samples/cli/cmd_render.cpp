@@ -121,9 +121,7 @@ hp::RenderRequest makeRequest(const RenderOptions& o, const CLI::App& cmd) {
   }
   if (o.orbit) r.scene.camera.orbitDeg = *o.orbit;
   applySpot(o, r.scene);
-  if (cmd.count("--eta") + cmd.count("--absorption") + cmd.count("--color") + cmd.count("--alpha-r") +
-          cmd.count("--beta-r") + cmd.count("--kg") + cmd.count("--wc") + cmd.count("--deta") + cmd.count("--dhm") > 0)
-    r.scene.material = o.material;
+  if (hp::cli::materialGiven(cmd)) r.scene.material = o.material;
   if (r.scene.render.width == 0 || r.scene.render.height == 0 || r.scene.render.width > 16384 ||
       r.scene.render.height > 16384)
     throw hp::Error("--width/--height must be in [1, 16384]");

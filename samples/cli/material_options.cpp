@@ -73,4 +73,9 @@ void addMaterialOptions(CLI::App& app, HairMaterial& m) {
   for (CLI::Option* o : {absorption, color}) o->delimiter(',')->expected(3)->group(kGroup);
   absorption->excludes(color);
 }
+bool materialGiven(const CLI::App& app) {
+  for (const char* name : {"--eta", "--absorption", "--color", "--alpha-r", "--beta-r", "--kg", "--wc", "--deta", "--dhm"})
+    if (app.count(name) > 0) return true;
+  return false;
+}
 }  // namespace hp::cli

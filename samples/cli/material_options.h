@@ -11,4 +11,6 @@
 
 namespace hp::cli {
 void addMaterialOptions(CLI::App& app, HairMaterial& material);
+// Whether any material option was given (then the options' material replaces the scene's).
+bool materialGiven(const CLI::App& app);
 }  // namespace hp::cli

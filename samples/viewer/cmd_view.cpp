@@ -8,6 +8,7 @@
 #include "engine/error.h"
 #include "engine/hair/camera_fit.h"
 #include "samples/cli/command.h"
+#include "samples/cli/material_options.h"
 #include "samples/cli/output_paths.h"
 #include "samples/viewer/viewer_app.h"
 
@@ -17,7 +18,9 @@ constexpr std::uint32_t kMaxWindowSide = 16384;
 
 struct ViewOptions {
   hp::cli::SceneOptions scene;
-  std::optional<std::uint32_t> width, height, msaa, density;
+  hp::HairMaterial material;
+  std::optional<std::uint32_t> width, height, msaa, density, opacityResolution;
+  bool noShadows = false;
   std::optional<std::string> raster;
   std::string lutMode = "float";
   std::string animate = "none";
@@ -40,7 +43,7 @@ void parseResize(const std::string& text, hp::viewer::ViewerOptions& v) {
   v.resizeTo = {w, h};
 }
 
-hp::viewer::ViewerOptions viewerOptions(const ViewOptions& o) {
+hp::viewer::ViewerOptions viewerOptions(const ViewOptions& o, const CLI::App& cmd) {
   hp::viewer::ViewerOptions v;
   v.scene = o.scene;
   hp::RenderRequest& r = v.request;
@@ -51,12 +54,16 @@ hp::viewer::ViewerOptions viewerOptions(const ViewOptions& o) {
       r.scene.render.height > kMaxWindowSide)
     throw hp::Error("--width/--height must be in [1, 16384]");
   if (o.msaa) r.scene.render.msaa = *o.msaa;
+  if (hp::cli::materialGiven(cmd)) r.scene.material = o.material;
   if (o.raster) r.scene.render.raster = hp::parseRasterMode(*o.raster);
   if (o.density) {
     r.scene.density.mode = hp::DensityOptions::Mode::Total;
     r.scene.density.totalStrands = *o.density;
     r.scene.density.validate();
   }
+  r.opacity.enabled = !o.noShadows;
+  if (o.opacityResolution) r.opacity.resolution = *o.opacityResolution;
+  r.opacity.validate();
   r.lutMode = hp::parseLutMode(o.lutMode);
   r.animation = hp::parseHeadAnimation(o.animate);
   if (!(o.exposure > 0.0f) || !std::isfinite(o.exposure)) throw hp::Error("--exposure must be a positive number");
@@ -71,8 +78,8 @@ hp::viewer::ViewerOptions viewerOptions(const ViewOptions& o) {
   return v;
 }
 
-void runView(const ViewOptions& o) {
-  hp::viewer::ViewerOptions v = viewerOptions(o);
+void runView(const ViewOptions& o, const CLI::App& cmd) {
+  hp::viewer::ViewerOptions v = viewerOptions(o, cmd);
   if (!v.screenshot.empty())
     hp::cli::prepareOutputFile({"--screenshot", v.screenshot}, hp::cli::sceneInputs(o.scene, v.request.scene));
   const hp::HairAsset asset = hp::buildSceneAsset(v.request.scene);
@@ -101,11 +108,14 @@ void setupView(CLI::App& app) {
       "view", "Live viewer: drag orbits, wheel zooms, Shift+drag or right drag turns the light, N/T/S nod/turn/"
               "shake, W wind, Space pause, F1 panel, Esc quits");
   hp::cli::addSceneOptions(*cmd, o->scene);
+  hp::cli::addMaterialOptions(*cmd, o->material);
   cmd->add_option("--width", o->width, "Window width (default: scene, 1280)");
   cmd->add_option("--height", o->height, "Window height (default: scene, 720)");
   cmd->add_option("--msaa", o->msaa, "Samples per pixel of the graphics raster (default: scene, 4)");
   cmd->add_option("--raster", o->raster, "Hair drawing: auto (= compute), compute or graphics (default: scene)");
   cmd->add_option("--density", o->density, "Render strands in total (default: scene, 20000)");
+  cmd->add_option("--opacity-resolution", o->opacityResolution, "Opacity map texels per side, 16-4096 (default 512)");
+  cmd->add_flag("--no-shadows", o->noShadows, "Start with the opacity shadow maps off");
   cmd->add_option("--lut-mode", o->lutMode, "Marschner evaluation: float, paper or direct (default float)");
   cmd->add_option("--animate", o->animate, "Head motion at the start: none, nod, turn, shake");
   cmd->add_option("--exposure", o->exposure, "Exposure multiplier before tonemapping (default 1)");
@@ -114,7 +124,7 @@ void setupView(CLI::App& app) {
   cmd->add_option("--resize-at", o->resizeAt, "Testing: resize the window at a frame, FRAME:WxH");
   cmd->add_flag("--no-panel", o->noPanel, "Start with the panel hidden (F1 shows it)");
   cmd->add_flag("--json", o->json, "Print the run's summary as JSON");
-  cmd->callback([o] { runView(*o); });
+  cmd->callback([o, cmd] { runView(*o, *cmd); });
 }
 }  // namespace
 

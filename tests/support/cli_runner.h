@@ -1,6 +1,8 @@
 #pragma once
 // Contract: runs the built `hairpipe` tool with arguments and captures its exit code, stdout and stderr,
 // so CLI tests check what a user sees. Arguments are passed without a shell.
+#include <sys/types.h>
+
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -11,7 +13,39 @@ struct CliResult {
   std::string out;
   std::string err;
 };
-CliResult runCli(const std::vector<std::string>& args);
+// `extraEnv`: "NAME=value" entries added to (and overriding) the test's environment.
+CliResult runCli(const std::vector<std::string>& args, const std::vector<std::string>& extraEnv = {});
+
+// The tool started in the background (stdin /dev/null, stdout/stderr captured), for tests that act on
+// it while it runs (a signal). The destructor kills and reaps a child still running.
+class CliProcess {
+ public:
+  explicit CliProcess(const std::vector<std::string>& args, const std::vector<std::string>& extraEnv = {});
+  ~CliProcess();
+  CliProcess(const CliProcess&) = delete;
+  CliProcess& operator=(const CliProcess&) = delete;
+  void signal(int sig) const;
+  CliResult wait();
+
+ private:
+  pid_t pid_ = 0;
+  std::string outPath_, errPath_;
+};
+
+// A private X server (Xvfb) for window tests, on a display it picks itself; stopped by the destructor.
+// A missing Xvfb throws (a failure, never a skip).
+class Xvfb {
+ public:
+  Xvfb();
+  ~Xvfb();
+  Xvfb(const Xvfb&) = delete;
+  Xvfb& operator=(const Xvfb&) = delete;
+  std::string displayEnv() const { return "DISPLAY=" + display_; }
+
+ private:
+  pid_t pid_ = 0;
+  std::string display_;
+};
 // A path in the temp directory with nothing at it yet (an earlier run's file is removed).
 std::filesystem::path freshTempPath(const std::string& name);
 
