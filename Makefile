@@ -1,5 +1,6 @@
 # Thin driver (as neovim does): install what is missing, configure, build, run.
-#   make demo   installs, builds (Release) and renders the default head to out/hair.png
+#   make demo   installs, builds (Release) and renders the default head to out/hair.png and the
+#               README's pictures (docs/images: front, back, an animation's contact sheet)
 #   make test   installs, builds and runs the whole CTest suite on lavapipe
 #   make fuzz   builds the libFuzzer targets (clang, ASan+UBSan) and runs each for FUZZ_SECONDS
 #   make test-asan  builds everything with ASan+UBSan (clang) and runs the sanitizer suite
@@ -12,7 +13,8 @@ FUZZ_SECONDS ?= 60
 # Debian 12 packages the build, the tests and the demo need.
 PACKAGES := cmake make g++ pkg-config libvulkan-dev libvulkan-volk-dev glslc libshaderc-dev \
 	libglm-dev mesa-vulkan-drivers vulkan-validationlayers libcli11-dev nlohmann-json3-dev \
-	libtinyobjloader-dev libpng-dev libgtest-dev clang-14 libclang-rt-14-dev
+	libtinyobjloader-dev libpng-dev libgtest-dev clang-14 libclang-rt-14-dev \
+	libglfw3-dev libimgui-dev libstb-dev xvfb
 
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
@@ -33,9 +35,15 @@ configure: deps
 build: configure
 	cmake --build $(BUILD) -j $(JOBS)
 
-# The default head from behind and to the side, where the hair is; 90 settling frames first.
+# The default head from behind and to the side, where the hair is; 90 settling frames first. Then the
+# README's pictures: front and back (small, so the PNGs stay well under 300 KB) and a contact sheet of
+# a shaking head (--sequence; its frames go to out/sequence).
 demo: build
 	./$(BUILD)/samples/hairpipe render --camera-orbit 145 --out out/hair.png
+	./$(BUILD)/samples/hairpipe render --camera-orbit 0 --width 480 --height 360 --out docs/images/head_front.png
+	./$(BUILD)/samples/hairpipe render --camera-orbit 180 --width 480 --height 360 --out docs/images/head_back.png
+	./$(BUILD)/samples/hairpipe render --camera-orbit 150 --width 240 --height 180 --animate shake --fps 60 \
+		--frames 48 --sequence out/sequence --contact-sheet docs/images/shake_contact_sheet.png
 
 test: build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS) --timeout 900

@@ -46,18 +46,18 @@ TEST(CliSequence, WritesEveryFrameWithProgressOnStderrAndJsonOnStdout) {
   const auto dir = freshTempPath("hairpipe_cli_sequence");
   std::filesystem::remove_all(dir);
   const auto sheet = freshTempPath("hairpipe_cli_sequence_sheet.png");
-  auto args = sequenceArgs(dir, "3");
+  auto args = sequenceArgs(dir, "2");
   for (const char* a : {"--fps", "30", "--json", "--validation", "--contact-sheet"}) args.push_back(a);
   args.push_back(sheet.string());
   const auto r = runCli(args);
   ASSERT_EQ(r.exitCode, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);  // nothing but JSON on stdout
-  EXPECT_EQ(j["frames"], 3);
-  EXPECT_EQ(completeFrames(dir), 3u);
-  EXPECT_NE(r.err.find("3/3 frames (100%)"), std::string::npos) << r.err;
+  EXPECT_EQ(j["frames"], 2);
+  EXPECT_EQ(completeFrames(dir), 2u);
+  EXPECT_NE(r.err.find("2/2 frames (100%)"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("frames/s"), std::string::npos) << r.err;
   const hp::RgbaImage s = hp::readPngRgba(sheet);
-  EXPECT_EQ(s.width, 3u * 96u + 2u * 2u);  // three tiles in one row, 2-pixel gutters
+  EXPECT_EQ(s.width, 2u * 96u + 2u);  // two tiles in one row, 2-pixel gutters
   EXPECT_EQ(s.height, 72u);
   std::filesystem::remove_all(dir);
   std::filesystem::remove(sheet);

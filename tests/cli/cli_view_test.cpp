@@ -27,18 +27,18 @@ double greenFraction(const hp::RgbaImage& image) {
 TEST(CliView, ShowsHairUnderXvfbAndKeepsWorkingAcrossAResize) {
   hp::test::Xvfb x;
   const auto png = freshTempPath("hairpipe_cli_view.png");
-  auto r = runCli({"view", "--frames", "10", "--resize-at", "5:200x150", "--width", "160", "--height", "120",
+  auto r = runCli({"view", "--frames", "6", "--resize-at", "3:160x120", "--width", "128", "--height", "96",
                    "--density", "2000", "--opacity-resolution", "64", "--color", "0.2,0.75,0.25", "--validation",
                    "--json", "--screenshot", png.string()},
                   {x.displayEnv()});
   ASSERT_EQ(r.exitCode, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
-  EXPECT_EQ(j["frames"], 10);
+  EXPECT_EQ(j["frames"], 6);
   EXPECT_EQ(j["raster"], "compute");  // what `render` uses on lavapipe
   EXPECT_GE(j["swapchain_recreations"].get<int>(), 1);
   const hp::RgbaImage image = hp::readPngRgba(png);
-  EXPECT_EQ(image.width, 200u);  // the screenshot is the resized window's last frame
-  EXPECT_EQ(image.height, 150u);
+  EXPECT_EQ(image.width, 160u);  // the screenshot is the resized window's last frame
+  EXPECT_EQ(image.height, 120u);
   const double hair = greenFraction(image);
   EXPECT_GT(hair, 0.05) << "hair fraction of the window";
   EXPECT_LT(hair, 0.7) << "hair fraction of the window";

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Fails if a layer includes a layer above it. Bottom to top: engine/{hair,shading,sim} (no Vulkan),
 # engine/vk, compute/, engine/render/, the facade (engine/*.h: Renderer, HairInstance, HairSystem),
-# samples/tools/, samples/ (the CLI and the embedding sample). Usage: check_layers.sh SOURCE_DIR
+# samples/tools/, samples/cli/, samples/viewer/ and the embedding sample. Usage: check_layers.sh SOURCE_DIR
 set -euo pipefail
 cd "$1"
 status=0
@@ -20,6 +20,7 @@ check engine/vk -- 'engine/render/|compute/|samples/|engine/(hair_system|hair_in
 check compute -- 'engine/render/|samples/|engine/(hair_system|hair_instance|renderer|renderer_settings|frame_recorder)\.h'
 check engine/render -- 'samples/|engine/(hair_system|hair_instance|renderer|renderer_settings|frame_recorder)\.h'
 check engine/*.h engine/*.cpp -- 'samples/'
-check samples/tools -- 'samples/(cli|embed)'
+check samples/tools -- 'samples/(cli|embed|viewer)'
+check samples/cli -- 'samples/viewer'
 [ $status -eq 0 ] && echo "no layer includes a layer above it"
 exit $status
