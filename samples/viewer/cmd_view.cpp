@@ -1,5 +1,6 @@
 // `hairpipe view`: the live viewer (viewer_app.h). Registered into the tool only (not the CLI fuzzer's
 // command set): it is the one command that opens a window.
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 

@@ -2,7 +2,7 @@
 
 #include <imgui.h>
 
-#include <cmath>
+#include <numbers>
 
 namespace hp::viewer {
 namespace {
@@ -15,9 +15,9 @@ bool editDouble(const char* label, double& value, float lo, float hi, const char
 }
 
 bool editDegrees(const char* label, double& radians, float lo, float hi) {
-  float deg = float(radians * 180.0 / M_PI);
+  float deg = float(radians * 180.0 / std::numbers::pi);
   if (!ImGui::SliderFloat(label, &deg, lo, hi, "%.1f deg")) return false;
-  radians = deg * M_PI / 180.0;
+  radians = deg * std::numbers::pi / 180.0;
   return true;
 }
 
