@@ -28,7 +28,7 @@ TEST(CliView, ShowsHairUnderXvfbAndKeepsWorkingAcrossAResize) {
   hp::test::Xvfb x;
   const auto png = freshTempPath("hairpipe_cli_view.png");
   auto r = runCli({"view", "--frames", "6", "--resize-at", "3:160x120", "--width", "128", "--height", "96",
-                   "--density", "2000", "--opacity-resolution", "64", "--color", "0.2,0.75,0.25", "--validation",
+                   "--density", "2000", "--opacity-resolution", "32", "--color", "0.2,0.75,0.25", "--validation",
                    "--json", "--screenshot", png.string()},
                   {x.displayEnv()});
   ASSERT_EQ(r.exitCode, 0) << r.err;
