@@ -13,8 +13,8 @@ constexpr std::uint32_t kFramesPerReportedSubmit = 16;  // progress often enough
 }
 
 SimulationDriver::SimulationDriver(const vk::Context& ctx, SimulatePass& pass, HeadAnimation animation,
-                                   float headRadius)
-    : ctx_(ctx), pass_(pass), animation_(animation), headRadius_(headRadius),
+                                   float headRadius, Timing timing)
+    : ctx_(ctx), pass_(pass), animation_(animation), headRadius_(headRadius), timing_(timing),
       profiler_(ctx, kMaxFramesPerSubmit, "simulation frames") {}
 
 HeadMotion SimulationDriver::nextMotion() const {
@@ -33,16 +33,18 @@ void SimulationDriver::runFrames(std::uint32_t count, const std::function<void(s
   const std::uint32_t total = count;
   while (count > 0) {
     const std::uint32_t batch = std::min(count, progress ? kFramesPerReportedSubmit : kMaxFramesPerSubmit);
+    const bool timed = timing_ == Timing::GpuTimestamps;
     vk::submitAndWait(ctx_, [&](VkCommandBuffer cmd) {
-      profiler_.reset(cmd);
+      if (timed) profiler_.reset(cmd);
       for (std::uint32_t i = 0; i < batch; ++i) {
         // Each frame reads and writes what the previous one wrote.
         vk::memoryBarrier(cmd, vk::BufferUse::ComputeWrite, vk::BufferUse::ComputeWrite);
-        pass_.record(cmd, nextMotion(), &profiler_);
+        pass_.record(cmd, nextMotion(), timed ? &profiler_ : nullptr);
         ++frame_;
       }
     }, "simulate frames");
-    for (const auto& scope : profiler_.results()) frameMs_.push_back(scope.milliseconds);
+    if (timed)
+      for (const auto& scope : profiler_.results()) frameMs_.push_back(scope.milliseconds);
     count -= batch;
     if (progress) progress(total - count);
   }
