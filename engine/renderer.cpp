@@ -70,7 +70,7 @@ void Renderer::recordUpdate(VkCommandBuffer cmd, std::uint64_t frame, std::span<
   work.reserve(instances.size());
   for (HairInstance* i : instances)
     work.push_back({&i->simulate_, i->motion_, &i->geometry_->tessellate, &i->geometry_->interpolate});
-  recordUpdatePasses(cmd, work, profiler);
+  recordUpdatePasses(ctx_, cmd, work, profiler);
 }
 
 void Renderer::recordShadows(VkCommandBuffer cmd, std::uint64_t frame, const LightSpec& light,
@@ -78,7 +78,7 @@ void Renderer::recordShadows(VkCommandBuffer cmd, std::uint64_t frame, const Lig
   light.validate();
   beginFrame(frame, instances);
   frameLights_[frame % settings_.framesInFlight] = light;
-  makeStrandsDrawable(cmd);
+  makeStrandsDrawable(ctx_, cmd);
   const render::OpacitySettings& opacity = shadows_->settings();
   if (!opacity.enabled) return;
   std::vector<ShadowCaster> casters;
@@ -90,7 +90,7 @@ void Renderer::recordShadows(VkCommandBuffer cmd, std::uint64_t frame, const Lig
   compute::BoundsFraming framing;
   framing.resolution = opacity.resolution;
   framing.marginWorld = 0.5f * widest * gpu::WIDTH_SCALE_MAX;
-  recordShadowPasses(cmd, *shadows_, casters, shadowLightOf(light), framing, profiler);
+  recordShadowPasses(ctx_, cmd, *shadows_, casters, shadowLightOf(light), framing, profiler);
 }
 
 void Renderer::recordDraw(VkCommandBuffer cmd, std::uint64_t frame, const View& view,

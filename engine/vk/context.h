@@ -1,7 +1,11 @@
 #pragma once
 // Contract: the Vulkan instance/device hairpipe works with, either created headless by hairpipe
 // (createHeadless) or handed over by the embedding application (adopt). It owns only what it created.
-// Functions are loaded through volk's global table, so one process drives one VkDevice at a time.
+// Device functions are called through the context's own table (volk's VolkDeviceTable, fn()), never
+// through volk's process-wide pointers: adopt() leaves an application's volk globals as they are (it
+// loads volk's instance-level functions only when volk has no instance loaded, or another one), and
+// several contexts may drive several devices in one process. createHeadless also loads the volk globals
+// for its device: a headless context is its program's only device (the tool, the tests).
 // Required: Vulkan 1.3 with dynamicRendering and synchronization2 enabled, and a graphics+compute queue.
 // With validation on, VK_LAYER_KHRONOS_validation runs with synchronization validation and every
 // message lands in validationLog(); a missing layer is an error, never a silent downgrade.
@@ -50,6 +54,8 @@ class Context {
   VkInstance instance() const { return instance_; }
   VkPhysicalDevice physicalDevice() const { return physical_; }
   VkDevice device() const { return device_; }
+  // The device's functions: ctx.fn().vkCmdDispatch(cmd, ...). Valid as long as the context.
+  const VolkDeviceTable& fn() const { return fn_; }
   VkQueue queue() const { return queue_; }
   std::uint32_t queueFamily() const { return queueFamily_; }
   VkCommandPool transientPool() const { return transientPool_; }
@@ -87,6 +93,7 @@ class Context {
   VkDebugUtilsMessengerEXT messenger_ = VK_NULL_HANDLE;
   VkPhysicalDevice physical_ = VK_NULL_HANDLE;
   VkDevice device_ = VK_NULL_HANDLE;
+  VolkDeviceTable fn_{};
   VkQueue queue_ = VK_NULL_HANDLE;
   std::uint32_t queueFamily_ = 0;
   VkCommandPool transientPool_ = VK_NULL_HANDLE;
