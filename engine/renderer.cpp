@@ -1,5 +1,7 @@
 #include "engine/renderer.h"
 
+#include "engine/vk/submit.h"
+
 #include <algorithm>
 
 #include "engine/error.h"
@@ -25,7 +27,11 @@ Renderer::~Renderer() = default;
 
 std::unique_ptr<HairInstance> Renderer::createInstance(const HairAsset& asset, const InstanceSettings& settings,
                                                        const glm::mat4& initialHead) {
-  return std::unique_ptr<HairInstance>(new HairInstance(*this, asset, settings, initialHead));
+  // Every upload of the instance (and of a new material's LUTs) in one submission, waited on once.
+  vk::OneShotBatch uploads(ctx_, "create instance");
+  std::unique_ptr<HairInstance> instance(new HairInstance(*this, asset, settings, initialHead));
+  uploads.submit();
+  return instance;
 }
 
 void Renderer::destroyInstance(std::unique_ptr<HairInstance> instance) {

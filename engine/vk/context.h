@@ -22,6 +22,8 @@
 #include "engine/vk/validation_log.h"
 
 namespace hp::vk {
+class OneShotBatch;
+
 struct ContextOptions {
   bool validation = false;
   std::string device;  // --device NAME-SUBSTRING|INDEX; empty: HAIRPIPE_DEVICE, else the best device
@@ -81,8 +83,12 @@ class Context {
   std::uint64_t allocatedBytes() const { return allocated_->load(); }
   // Shared with every buffer and image, which add their allocation and take it back when freed.
   const std::shared_ptr<std::atomic<std::int64_t>>& allocationTally() const { return allocated_; }
+  // The batch that one-shot work records into now (submit.h), or null: submit each at once.
+  OneShotBatch* openBatch() const { return batch_; }
 
  private:
+  friend class OneShotBatch;
+  void setOpenBatch(OneShotBatch* batch) const { batch_ = batch; }
   Context() = default;
   void createInstance(const ContextOptions& options);
   void createDevice(const ContextOptions& options);
@@ -106,6 +112,7 @@ class Context {
   std::shared_ptr<ValidationLog> log_ = std::make_shared<ValidationLog>();
   std::shared_ptr<std::atomic<std::int64_t>> allocated_ = std::make_shared<std::atomic<std::int64_t>>(0);
   DeviceChoice choice_;
+  mutable OneShotBatch* batch_ = nullptr;
 };
 
 // Loads the Vulkan loader through volk once per process; throws hp::Error when it is missing.

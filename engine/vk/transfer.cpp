@@ -18,6 +18,7 @@ void uploadBytes(const Context& ctx, const Buffer& dst, const void* data, VkDevi
     ctx.fn().vkCmdCopyBuffer(cmd, staging.handle(), dst.handle(), 1, &region);
     bufferBarrier(ctx, cmd, dst.handle(), BufferUse::TransferDst, after);
   }, "upload " + dst.name());
+  keepUntilSubmitted(ctx, std::move(staging));
 }
 
 std::vector<std::byte> readbackBytes(const Context& ctx, const Buffer& src, BufferUse before, VkDeviceSize offset,
@@ -35,6 +36,7 @@ std::vector<std::byte> readbackBytes(const Context& ctx, const Buffer& src, Buff
     ctx.fn().vkCmdCopyBuffer(cmd, src.handle(), staging.handle(), 1, &region);
     bufferBarrier(ctx, cmd, staging.handle(), BufferUse::TransferDst, BufferUse::HostRead);
   }, "readback " + src.name());
+  submitOpenBatch(ctx);
   staging.invalidate();
   std::memcpy(out.data(), staging.mapped(), size);
   return out;
@@ -66,6 +68,7 @@ void uploadImage(const Context& ctx, const Image& image, std::span<const std::by
     ctx.fn().vkCmdCopyBufferToImage(cmd, staging.handle(), image.handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
     imageBarrier(ctx, cmd, image.handle(), image.aspect(), ImageUse::TransferDst, after, layers);
   }, "upload " + image.desc().name);
+  keepUntilSubmitted(ctx, std::move(staging));
 }
 
 std::vector<std::byte> readbackImage(const Context& ctx, const Image& image, ImageUse current, std::uint32_t layer) {
@@ -84,6 +87,7 @@ std::vector<std::byte> readbackImage(const Context& ctx, const Image& image, Ima
     if (current != ImageUse::Undefined)
       imageBarrier(ctx, cmd, image.handle(), image.aspect(), ImageUse::TransferSrc, current, layers);
   }, "readback " + image.desc().name);
+  submitOpenBatch(ctx);
   staging.invalidate();
   std::vector<std::byte> out(bytes);
   std::memcpy(out.data(), staging.mapped(), bytes);
