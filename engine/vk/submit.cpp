@@ -19,7 +19,7 @@ VkCommandBuffer beginOneShot(const Context& ctx, const std::string& name) {
   begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
   VkResult r = ctx.fn().vkBeginCommandBuffer(cmd, &begin);
   if (r != VK_SUCCESS) ctx.fn().vkFreeCommandBuffers(ctx.device(), ctx.transientPool(), 1, &cmd);
-  HP_VK_CHECK(r);
+  check(r, "vkBeginCommandBuffer");
   return cmd;
 }
 
