@@ -8,6 +8,7 @@
 #include "engine/error.h"
 #include "engine/hair/finite.h"
 #include "engine/vk/barriers.h"
+#include "engine/vk/context.h"
 #include "engine/vk/transfer.h"
 
 namespace hp {
@@ -41,7 +42,7 @@ void ScalpInput::validate(std::uint32_t guideCount) const {
 
 ScalpState::ScalpState(const vk::Context& ctx, const ScalpInput& input, std::span<const glm::vec4> rest,
                        std::uint32_t particlesPerGuide, const glm::mat4& initialHead)
-    : input_(input) {
+    : ctx_(&ctx), input_(input) {
   const std::uint32_t guides = static_cast<std::uint32_t>(rest.size() / particlesPerGuide);
   input_.validate(guides);
   dummy_ = vk::Buffer(ctx, 64, kStorage, vk::MemoryKind::DeviceLocal, "scalp unused");
@@ -100,10 +101,10 @@ void ScalpState::record(VkCommandBuffer cmd) {
   // start = last frame's end (a frame without setBones holds the bones still).
   std::vector<glm::mat4> both = previous_;
   both.insert(both.end(), current_.begin(), current_.end());
-  vk::bufferBarrier(cmd, bones_.handle(), everRecorded_ ? vk::BufferUse::ComputeRead : vk::BufferUse::None,
+  vk::bufferBarrier(*ctx_, cmd, bones_.handle(), everRecorded_ ? vk::BufferUse::ComputeRead : vk::BufferUse::None,
                     vk::BufferUse::TransferDst);
-  vkCmdUpdateBuffer(cmd, bones_.handle(), 0, both.size() * sizeof(glm::mat4), both.data());
-  vk::bufferBarrier(cmd, bones_.handle(), vk::BufferUse::TransferDst, vk::BufferUse::ComputeRead);
+  ctx_->fn().vkCmdUpdateBuffer(cmd, bones_.handle(), 0, both.size() * sizeof(glm::mat4), both.data());
+  vk::bufferBarrier(*ctx_, cmd, bones_.handle(), vk::BufferUse::TransferDst, vk::BufferUse::ComputeRead);
   previous_ = current_;
   everRecorded_ = true;
 }

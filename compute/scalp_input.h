@@ -48,6 +48,7 @@ class ScalpState {
   void record(VkCommandBuffer cmd);
 
  private:
+  const vk::Context* ctx_;
   ScalpInput input_;
   vk::Buffer rootsPrev_;  // RootFrames: last frame's root frames (written by the simulate shader)
   vk::Buffer bones_;      // Bones: 2 x boneCount mat4 (start, end)

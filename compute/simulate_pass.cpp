@@ -146,10 +146,10 @@ void SimulatePass::record(VkCommandBuffer cmd, const HeadMotion& motion, vk::Gpu
   if (profiler) profiler->begin(cmd, "simulate");
   gpu::SimFrame f = frameConstants(motion);
   // The previous frame's dispatch may still read the block: order that read before this write.
-  vk::bufferBarrier(cmd, frame_.handle(), frameWritten_ ? vk::BufferUse::ComputeRead : vk::BufferUse::None,
+  vk::bufferBarrier(ctx_, cmd, frame_.handle(), frameWritten_ ? vk::BufferUse::ComputeRead : vk::BufferUse::None,
                     vk::BufferUse::TransferDst);
-  vkCmdUpdateBuffer(cmd, frame_.handle(), 0, sizeof(f), &f);
-  vk::bufferBarrier(cmd, frame_.handle(), vk::BufferUse::TransferDst, vk::BufferUse::ComputeRead);
+  ctx_.fn().vkCmdUpdateBuffer(cmd, frame_.handle(), 0, sizeof(f), &f);
+  vk::bufferBarrier(ctx_, cmd, frame_.handle(), vk::BufferUse::TransferDst, vk::BufferUse::ComputeRead);
   frameWritten_ = true;
   scalp_.record(cmd);
   pipeline_->bind(cmd, set_.set());

@@ -155,16 +155,16 @@ void StrandRasterPass::setDepth(VkImageView depth) {
 
 void StrandRasterPass::recordArm(VkCommandBuffer cmd) const {
   // The previous frame's steps (compute) finish reading and writing before the transfers re-arm.
-  vk::memoryBarrier(cmd, vk::BufferUse::ComputeWrite, vk::BufferUse::ComputeWrite);
-  vk::bufferBarrier(cmd, state_.handle(), vk::BufferUse::ComputeWrite, vk::BufferUse::TransferDst);
-  vk::bufferBarrier(cmd, counts_.handle(), vk::BufferUse::ComputeWrite, vk::BufferUse::TransferDst);
+  vk::memoryBarrier(ctx_, cmd, vk::BufferUse::ComputeWrite, vk::BufferUse::ComputeWrite);
+  vk::bufferBarrier(ctx_, cmd, state_.handle(), vk::BufferUse::ComputeWrite, vk::BufferUse::TransferDst);
+  vk::bufferBarrier(ctx_, cmd, counts_.handle(), vk::BufferUse::ComputeWrite, vk::BufferUse::TransferDst);
   const gpu::RasterState armed = armedState();
-  vkCmdUpdateBuffer(cmd, state_.handle(), 0, sizeof(armed), &armed);
-  vkCmdFillBuffer(cmd, counts_.handle(), 0, VK_WHOLE_SIZE, 0u);
-  vk::bufferBarrier(cmd, state_.handle(), vk::BufferUse::TransferDst, vk::BufferUse::ComputeWrite);
-  vk::bufferBarrier(cmd, counts_.handle(), vk::BufferUse::TransferDst, vk::BufferUse::ComputeWrite);
+  ctx_.fn().vkCmdUpdateBuffer(cmd, state_.handle(), 0, sizeof(armed), &armed);
+  ctx_.fn().vkCmdFillBuffer(cmd, counts_.handle(), 0, VK_WHOLE_SIZE, 0u);
+  vk::bufferBarrier(ctx_, cmd, state_.handle(), vk::BufferUse::TransferDst, vk::BufferUse::ComputeWrite);
+  vk::bufferBarrier(ctx_, cmd, counts_.handle(), vk::BufferUse::TransferDst, vk::BufferUse::ComputeWrite);
   // The previous frame's composite sampled the output; its contents are rewritten in full.
-  vk::imageBarrier(cmd, output_.handle(), VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::FragmentSampledDiscard,
+  vk::imageBarrier(ctx_, cmd, output_.handle(), VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::FragmentSampledDiscard,
                    vk::ImageUse::ComputeStorageWrite);
 }
 
@@ -190,7 +190,9 @@ void StrandRasterPass::recordOnce(VkCommandBuffer cmd, const vk::ComputePipeline
 
 namespace {
 // Each step's writes visible to the next step's reads and writes (all buffers are the pass's own).
-void chain(VkCommandBuffer cmd) { vk::memoryBarrier(cmd, vk::BufferUse::ComputeWrite, vk::BufferUse::ComputeWrite); }
+void chain(const vk::Context& ctx, VkCommandBuffer cmd) {
+  vk::memoryBarrier(ctx, cmd, vk::BufferUse::ComputeWrite, vk::BufferUse::ComputeWrite);
+}
 
 void begin(VkCommandBuffer cmd, vk::GpuProfiler* profiler, const char* name) {
   if (profiler) profiler->begin(cmd, name);
@@ -207,13 +209,13 @@ void StrandRasterPass::recordBinning(VkCommandBuffer cmd, vk::GpuProfiler* profi
   recordPerChunk(cmd, shade_, gpu::RASTER_MODE_SHADE, q_);
   end(cmd, profiler);
   begin(cmd, profiler, "raster bin");
-  chain(cmd);
+  chain(ctx_, cmd);
   recordPerChunk(cmd, bin_, gpu::RASTER_MODE_COUNT, q_ - 1);
-  chain(cmd);
+  chain(ctx_, cmd);
   recordOnce(cmd, scanTiles_, divUp(tiles, gpu::RASTER_SCAN_SIZE) * gpu::RASTER_SCAN_SIZE);
-  chain(cmd);
+  chain(ctx_, cmd);
   recordOnce(cmd, scanBlocks_, gpu::RASTER_SCAN_SIZE);
-  chain(cmd);
+  chain(ctx_, cmd);
   recordPerChunk(cmd, bin_, gpu::RASTER_MODE_SCATTER, q_ - 1);
   end(cmd, profiler);
 }
@@ -221,9 +223,9 @@ void StrandRasterPass::recordBinning(VkCommandBuffer cmd, vk::GpuProfiler* profi
 void StrandRasterPass::recordFine(VkCommandBuffer cmd, vk::GpuProfiler* profiler) const {
   if (depth_ == VK_NULL_HANDLE) throw Error("compute raster: setDepth() was not called before record()");
   begin(cmd, profiler, "raster fine");
-  chain(cmd);
+  chain(ctx_, cmd);
   recordOnce(cmd, fine_, tilesX_ * tilesY_ * gpu::RASTER_FINE_SIZE);
-  vk::imageBarrier(cmd, output_.handle(), VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::ComputeStorageWrite,
+  vk::imageBarrier(ctx_, cmd, output_.handle(), VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::ComputeStorageWrite,
                    vk::ImageUse::FragmentSampled);
   end(cmd, profiler);
 }

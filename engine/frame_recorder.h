@@ -39,12 +39,14 @@ struct ShadowCaster {
   glm::mat4 headToWorld{1.0f};
 };
 
-void recordUpdatePasses(VkCommandBuffer cmd, std::span<const UpdateWork> work, vk::GpuProfiler* profiler = nullptr);
+void recordUpdatePasses(const vk::Context& ctx, VkCommandBuffer cmd, std::span<const UpdateWork> work,
+                        vk::GpuProfiler* profiler = nullptr);
 // The render strands' compute writes become visible to the vertex stage (shadows and draws).
-void makeStrandsDrawable(VkCommandBuffer cmd);
+void makeStrandsDrawable(const vk::Context& ctx, VkCommandBuffer cmd);
 
 compute::ShadowLight shadowLightOf(const LightSpec& light);
-void recordShadowPasses(VkCommandBuffer cmd, const render::ShadowMaps& maps, std::span<const ShadowCaster> casters,
+void recordShadowPasses(const vk::Context& ctx, VkCommandBuffer cmd, const render::ShadowMaps& maps,
+                        std::span<const ShadowCaster> casters,
                         const compute::ShadowLight& light, const compute::BoundsFraming& framing,
                         vk::GpuProfiler* profiler = nullptr);
 }  // namespace hp

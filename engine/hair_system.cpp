@@ -118,25 +118,26 @@ void HairSystem::setRasterTarget(VkExtent2D extent, VkImageView depth) {
 
 void HairSystem::recordRaster(VkCommandBuffer cmd, const DrawView& view, vk::GpuProfiler* profiler) {
   if (!rasterPass_) throw Error("HairSystem: the compute raster needs setRasterTarget() before recording");
+  const vk::Context& ctx = renderer_.context();
   const gpu::RenderFrame frame =
       render::makeRenderFrame(view.camera, view.extent, view.light, settings_.material, settings_.look,
                               instance_->strands().layout().verticesPerStrand, renderer_.shadows().settings());
-  vk::bufferBarrier(cmd, rasterFrame_.handle(), vk::BufferUse::ComputeRead, vk::BufferUse::TransferDst);
-  vkCmdUpdateBuffer(cmd, rasterFrame_.handle(), 0, sizeof(frame), &frame);
-  vk::bufferBarrier(cmd, rasterFrame_.handle(), vk::BufferUse::TransferDst, vk::BufferUse::ComputeRead);
+  vk::bufferBarrier(ctx, cmd, rasterFrame_.handle(), vk::BufferUse::ComputeRead, vk::BufferUse::TransferDst);
+  ctx.fn().vkCmdUpdateBuffer(cmd, rasterFrame_.handle(), 0, sizeof(frame), &frame);
+  vk::bufferBarrier(ctx, cmd, rasterFrame_.handle(), vk::BufferUse::TransferDst, vk::BufferUse::ComputeRead);
   // The graphics readers' states (recordShadows) extended to compute for the pass, then back, so the
   // next frame's barriers (which wait on vertex/fragment readers) still cover these reads.
   const render::ShadowMaps& shadows = renderer_.shadows();
   const VkBuffer light = shadows.lightSpace().handle();
   const VkImage maps = shadows.image().handle();
-  vk::memoryBarrier(cmd, vk::BufferUse::ComputeWrite, vk::BufferUse::ComputeRead);  // strand buffers
-  vk::bufferBarrier(cmd, light, vk::BufferUse::VertexRead, vk::BufferUse::ComputeRead);
-  vk::imageBarrier(cmd, maps, VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::FragmentSampled, vk::ImageUse::ComputeSampled,
-                   gpu::OPACITY_TARGETS);
+  vk::memoryBarrier(ctx, cmd, vk::BufferUse::ComputeWrite, vk::BufferUse::ComputeRead);  // strand buffers
+  vk::bufferBarrier(ctx, cmd, light, vk::BufferUse::VertexRead, vk::BufferUse::ComputeRead);
+  vk::imageBarrier(ctx, cmd, maps, VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::FragmentSampled,
+                   vk::ImageUse::ComputeSampled, gpu::OPACITY_TARGETS);
   rasterPass_->record(cmd, profiler);
-  vk::bufferBarrier(cmd, light, vk::BufferUse::ComputeRead, vk::BufferUse::VertexRead);
-  vk::imageBarrier(cmd, maps, VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::ComputeSampled, vk::ImageUse::FragmentSampled,
-                   gpu::OPACITY_TARGETS);
+  vk::bufferBarrier(ctx, cmd, light, vk::BufferUse::ComputeRead, vk::BufferUse::VertexRead);
+  vk::imageBarrier(ctx, cmd, maps, VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::ComputeSampled,
+                   vk::ImageUse::FragmentSampled, gpu::OPACITY_TARGETS);
 }
 
 void HairSystem::recordComposite(VkCommandBuffer cmd, VkExtent2D extent, vk::GpuProfiler* profiler) const {

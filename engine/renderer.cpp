@@ -1,5 +1,7 @@
 #include "engine/renderer.h"
 
+#include "engine/vk/submit.h"
+
 #include <algorithm>
 
 #include "engine/error.h"
@@ -25,7 +27,11 @@ Renderer::~Renderer() = default;
 
 std::unique_ptr<HairInstance> Renderer::createInstance(const HairAsset& asset, const InstanceSettings& settings,
                                                        const glm::mat4& initialHead) {
-  return std::unique_ptr<HairInstance>(new HairInstance(*this, asset, settings, initialHead));
+  // Every upload of the instance (and of a new material's LUTs) in one submission, waited on once.
+  vk::OneShotBatch uploads(ctx_, "create instance");
+  std::unique_ptr<HairInstance> instance(new HairInstance(*this, asset, settings, initialHead));
+  uploads.submit();
+  return instance;
 }
 
 void Renderer::destroyInstance(std::unique_ptr<HairInstance> instance) {
@@ -70,7 +76,7 @@ void Renderer::recordUpdate(VkCommandBuffer cmd, std::uint64_t frame, std::span<
   work.reserve(instances.size());
   for (HairInstance* i : instances)
     work.push_back({&i->simulate_, i->motion_, &i->geometry_->tessellate, &i->geometry_->interpolate});
-  recordUpdatePasses(cmd, work, profiler);
+  recordUpdatePasses(ctx_, cmd, work, profiler);
 }
 
 void Renderer::recordShadows(VkCommandBuffer cmd, std::uint64_t frame, const LightSpec& light,
@@ -78,7 +84,7 @@ void Renderer::recordShadows(VkCommandBuffer cmd, std::uint64_t frame, const Lig
   light.validate();
   beginFrame(frame, instances);
   frameLights_[frame % settings_.framesInFlight] = light;
-  makeStrandsDrawable(cmd);
+  makeStrandsDrawable(ctx_, cmd);
   const render::OpacitySettings& opacity = shadows_->settings();
   if (!opacity.enabled) return;
   std::vector<ShadowCaster> casters;
@@ -90,7 +96,7 @@ void Renderer::recordShadows(VkCommandBuffer cmd, std::uint64_t frame, const Lig
   compute::BoundsFraming framing;
   framing.resolution = opacity.resolution;
   framing.marginWorld = 0.5f * widest * gpu::WIDTH_SCALE_MAX;
-  recordShadowPasses(cmd, *shadows_, casters, shadowLightOf(light), framing, profiler);
+  recordShadowPasses(ctx_, cmd, *shadows_, casters, shadowLightOf(light), framing, profiler);
 }
 
 void Renderer::recordDraw(VkCommandBuffer cmd, std::uint64_t frame, const View& view,

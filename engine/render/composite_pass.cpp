@@ -29,6 +29,6 @@ void CompositePass::setInput(VkImageView hair) {
 
 void CompositePass::draw(VkCommandBuffer cmd, VkExtent2D extent) const {
   pipeline_.bind(cmd, set_.set(), extent);
-  vkCmdDraw(cmd, 3, 1, 0, 0);
+  pipeline_.draw(cmd, 3);
 }
 }  // namespace hp::render

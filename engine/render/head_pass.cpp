@@ -70,6 +70,6 @@ void HeadPass::draw(VkCommandBuffer cmd, VkExtent2D extent, const glm::mat4& hea
   if (empty()) return;
   pipeline_->bind(cmd, set_.set(), extent, frameOffset);
   pipeline_->push(cmd, headToWorld);
-  vkCmdDraw(cmd, indexCount_, 1, 0, 0);
+  pipeline_->draw(cmd, indexCount_);
 }
 }  // namespace hp::render

@@ -69,7 +69,8 @@ void makeVisibleToComputeToo(const vk::Context& ctx, const std::vector<const vk:
   if (images.empty()) return;
   vk::submitAndWait(ctx, [&](VkCommandBuffer cmd) {
     for (const vk::Image* image : images)
-      vk::imageBarrier(cmd, image->handle(), image->aspect(), vk::ImageUse::GraphicsSampled, vk::ImageUse::ComputeSampled);
+      vk::imageBarrier(ctx, cmd, image->handle(), image->aspect(), vk::ImageUse::GraphicsSampled,
+                       vk::ImageUse::ComputeSampled);
   }, "Marschner LUT visibility");
 }
 }  // namespace

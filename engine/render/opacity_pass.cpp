@@ -93,14 +93,14 @@ void OpacityPass::recordDraws(VkCommandBuffer cmd, const glm::mat4& headToWorld)
   for (std::size_t c = 0; c < strandSets_.size(); ++c) {
     strandPipeline_->bind(cmd, strandSets_[c].set(), extent);
     strandPipeline_->push(cmd, push);
-    vkCmdDraw(cmd, strands_->chunks()[c].range.strandCount * (q - 1) * 2, 1, 0, 0);
+    strandPipeline_->draw(cmd, strands_->chunks()[c].range.strandCount * (q - 1) * 2);
   }
   if (headIndexCount_ > 0 && settings.headOpacity > 0.0f) {
     push.headToWorld = headToWorld;
     push.opacity = settings.headOpacity;
     headPipeline_->bind(cmd, headSet_.set(), extent);
     headPipeline_->push(cmd, push);
-    vkCmdDraw(cmd, headIndexCount_, 1, 0, 0);
+    headPipeline_->draw(cmd, headIndexCount_);
   }
 }
 }  // namespace hp::render

@@ -36,7 +36,8 @@ VkRenderingAttachmentInfo sliceAttachment(VkImageView view) {
 }  // namespace
 
 ShadowMaps::ShadowMaps(const vk::Context& ctx, const OpacitySettings& settings)
-    : settings_(validated(settings)),
+    : ctx_(&ctx),
+      settings_(validated(settings)),
       lightSpace_(ctx, sizeof(gpu::LightSpace),
                   VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
                   vk::MemoryKind::DeviceLocal, "light space"),
@@ -44,14 +45,14 @@ ShadowMaps::ShadowMaps(const vk::Context& ctx, const OpacitySettings& settings)
       sampler_(ctx, "opacity sampler") {
   const gpu::LightSpace initial = compute::initialLightSpace();
   vk::submitAndWait(ctx, [&](VkCommandBuffer cmd) {
-    vkCmdUpdateBuffer(cmd, lightSpace_.handle(), 0, sizeof(initial), &initial);
-    vk::bufferBarrier(cmd, lightSpace_.handle(), vk::BufferUse::TransferDst, vk::BufferUse::VertexRead);
-    vk::imageBarrier(cmd, image_.handle(), VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::Undefined,
+    ctx.fn().vkCmdUpdateBuffer(cmd, lightSpace_.handle(), 0, sizeof(initial), &initial);
+    vk::bufferBarrier(ctx, cmd, lightSpace_.handle(), vk::BufferUse::TransferDst, vk::BufferUse::VertexRead);
+    vk::imageBarrier(ctx, cmd, image_.handle(), VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::Undefined,
                      vk::ImageUse::TransferDst, gpu::OPACITY_TARGETS);
     const VkClearColorValue zero{{0.0f, 0.0f, 0.0f, 0.0f}};
     const VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, gpu::OPACITY_TARGETS};
-    vkCmdClearColorImage(cmd, image_.handle(), vk::imageLayout(vk::ImageUse::TransferDst), &zero, 1, &range);
-    vk::imageBarrier(cmd, image_.handle(), VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::TransferDst,
+    ctx.fn().vkCmdClearColorImage(cmd, image_.handle(), vk::imageLayout(vk::ImageUse::TransferDst), &zero, 1, &range);
+    vk::imageBarrier(ctx, cmd, image_.handle(), VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::TransferDst,
                      vk::ImageUse::FragmentSampled, gpu::OPACITY_TARGETS);
   }, "clear opacity maps");
 }
@@ -64,8 +65,8 @@ void ShadowMaps::beginRendering(VkCommandBuffer cmd) const {
   info.layerCount = 1;
   info.colorAttachmentCount = gpu::OPACITY_TARGETS;
   info.pColorAttachments = attachments;
-  vkCmdBeginRendering(cmd, &info);
+  ctx_->fn().vkCmdBeginRendering(cmd, &info);
 }
 
-void ShadowMaps::endRendering(VkCommandBuffer cmd) const { vkCmdEndRendering(cmd); }
+void ShadowMaps::endRendering(VkCommandBuffer cmd) const { ctx_->fn().vkCmdEndRendering(cmd); }
 }  // namespace hp::render

@@ -33,6 +33,7 @@ class ShadowMaps {
   const OpacitySettings& settings() const { return settings_; }
 
  private:
+  const vk::Context* ctx_;
   OpacitySettings settings_;
   vk::Buffer lightSpace_;
   vk::Image image_;

@@ -70,7 +70,7 @@ void StrandPass::draw(VkCommandBuffer cmd, VkExtent2D extent, bool lines, std::u
     const auto& range = strands_->chunks()[c].range;
     pipeline.bind(cmd, sets_[c].set(), extent, frameOffset);
     pipeline.push(cmd, gpu::StrandDrawPush{range.firstStrand, lines ? 1u : 0u, std::uint32_t(samples_), 0u});
-    vkCmdDraw(cmd, range.strandCount * (layout.verticesPerStrand - 1) * perSegment, 1, 0, 0);
+    pipeline.draw(cmd, range.strandCount * (layout.verticesPerStrand - 1) * perSegment);
   }
 }
 }  // namespace hp::render

@@ -1,4 +1,5 @@
 #include "engine/vk/barriers.h"
+#include "engine/vk/context.h"
 
 namespace hp::vk {
 namespace {
@@ -90,8 +91,8 @@ ImageScope imageScope(ImageUse use) {
 
 VkImageLayout imageLayout(ImageUse use) { return imageScope(use).layout; }
 
-void bufferBarrier(VkCommandBuffer cmd, VkBuffer buffer, BufferUse from, BufferUse to, VkDeviceSize offset,
-                   VkDeviceSize size) {
+void bufferBarrier(const Context& ctx, VkCommandBuffer cmd, VkBuffer buffer, BufferUse from, BufferUse to,
+                   VkDeviceSize offset, VkDeviceSize size) {
   Scope src = bufferScope(from), dst = bufferScope(to);
   VkBufferMemoryBarrier2 b{VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER_2};
   b.srcStageMask = src.stage;
@@ -106,10 +107,10 @@ void bufferBarrier(VkCommandBuffer cmd, VkBuffer buffer, BufferUse from, BufferU
   VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
   dep.bufferMemoryBarrierCount = 1;
   dep.pBufferMemoryBarriers = &b;
-  vkCmdPipelineBarrier2(cmd, &dep);
+  ctx.fn().vkCmdPipelineBarrier2(cmd, &dep);
 }
 
-void memoryBarrier(VkCommandBuffer cmd, BufferUse from, BufferUse to) {
+void memoryBarrier(const Context& ctx, VkCommandBuffer cmd, BufferUse from, BufferUse to) {
   Scope src = bufferScope(from), dst = bufferScope(to);
   VkMemoryBarrier2 b{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
   b.srcStageMask = src.stage;
@@ -119,11 +120,11 @@ void memoryBarrier(VkCommandBuffer cmd, BufferUse from, BufferUse to) {
   VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
   dep.memoryBarrierCount = 1;
   dep.pMemoryBarriers = &b;
-  vkCmdPipelineBarrier2(cmd, &dep);
+  ctx.fn().vkCmdPipelineBarrier2(cmd, &dep);
 }
 
-void imageBarrier(VkCommandBuffer cmd, VkImage image, VkImageAspectFlags aspect, ImageUse from, ImageUse to,
-                  std::uint32_t layers) {
+void imageBarrier(const Context& ctx, VkCommandBuffer cmd, VkImage image, VkImageAspectFlags aspect, ImageUse from,
+                  ImageUse to, std::uint32_t layers) {
   ImageScope src = imageScope(from), dst = imageScope(to);
   VkImageMemoryBarrier2 b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2};
   b.srcStageMask = src.stage;
@@ -139,6 +140,6 @@ void imageBarrier(VkCommandBuffer cmd, VkImage image, VkImageAspectFlags aspect,
   VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
   dep.imageMemoryBarrierCount = 1;
   dep.pImageMemoryBarriers = &b;
-  vkCmdPipelineBarrier2(cmd, &dep);
+  ctx.fn().vkCmdPipelineBarrier2(cmd, &dep);
 }
 }  // namespace hp::vk

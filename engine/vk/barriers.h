@@ -2,11 +2,14 @@
 // Contract: every pipeline barrier in hairpipe goes through these helpers (synchronization2).
 // A use is a small semantic enum; the one switch in barriers.cpp maps it to stage, access and (for
 // images) layout, so a barrier reads as "from what to what" and cannot mismatch stage and access.
+// The context gives the device's function table (cmd is one of its command buffers).
 #include <volk.h>
 
 #include <cstdint>
 
 namespace hp::vk {
+class Context;
+
 enum class BufferUse {
   None,              // nothing before (first use in a submission)
   TransferSrc,
@@ -44,12 +47,12 @@ inline constexpr VkPipelineStageFlags2 kSwapchainWaitStages =
     VK_PIPELINE_STAGE_2_BLIT_BIT | VK_PIPELINE_STAGE_2_COPY_BIT | VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT;
 
 // A buffer range barrier between two uses.
-void bufferBarrier(VkCommandBuffer cmd, VkBuffer buffer, BufferUse from, BufferUse to,
+void bufferBarrier(const Context& ctx, VkCommandBuffer cmd, VkBuffer buffer, BufferUse from, BufferUse to,
                    VkDeviceSize offset = 0, VkDeviceSize size = VK_WHOLE_SIZE);
 // A global memory barrier between two uses (all buffers); for chains of dependent compute passes.
-void memoryBarrier(VkCommandBuffer cmd, BufferUse from, BufferUse to);
+void memoryBarrier(const Context& ctx, VkCommandBuffer cmd, BufferUse from, BufferUse to);
 // A layout transition (and its memory dependency) of all layers of one mip.
-void imageBarrier(VkCommandBuffer cmd, VkImage image, VkImageAspectFlags aspect, ImageUse from, ImageUse to,
-                  std::uint32_t layers = 1);
+void imageBarrier(const Context& ctx, VkCommandBuffer cmd, VkImage image, VkImageAspectFlags aspect, ImageUse from,
+                  ImageUse to, std::uint32_t layers = 1);
 VkImageLayout imageLayout(ImageUse use);
 }  // namespace hp::vk

@@ -23,28 +23,28 @@ VkMemoryPropertyFlags preferredFlags(MemoryKind kind) {
 
 Buffer::Buffer(const Context& ctx, VkDeviceSize size, VkBufferUsageFlags usage, MemoryKind kind,
                const std::string& name)
-    : device_(ctx.device()), size_(size), name_(name) {
+    : device_(ctx.device()), fn_(&ctx.fn()), size_(size), name_(name) {
   if (size == 0) throw Error("buffer '" + name + "': size must be positive");
   VkBufferCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
   info.size = size;
   info.usage = usage;
   info.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
-  HP_VK_CHECK(vkCreateBuffer(device_, &info, nullptr, &buffer_));
+  HP_VK_CHECK(fn_->vkCreateBuffer(device_, &info, nullptr, &buffer_));
   try {
     ctx.setName(VK_OBJECT_TYPE_BUFFER, reinterpret_cast<std::uint64_t>(buffer_), name);
     VkMemoryRequirements req;
-    vkGetBufferMemoryRequirements(device_, buffer_, &req);
+    fn_->vkGetBufferMemoryRequirements(device_, buffer_, &req);
     VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
     alloc.allocationSize = req.size;
     alloc.memoryTypeIndex = ctx.findMemoryType(req.memoryTypeBits, requiredFlags(kind), preferredFlags(kind));
     ctx.checkDeviceMemoryBudget(req.size, "buffer '" + name + "'");
-    HP_VK_CHECK(vkAllocateMemory(device_, &alloc, nullptr, &memory_));
+    HP_VK_CHECK(fn_->vkAllocateMemory(device_, &alloc, nullptr, &memory_));
     tally_ = ctx.allocationTally();
     allocated_ = req.size;
     *tally_ += std::int64_t(allocated_);
     ctx.setName(VK_OBJECT_TYPE_DEVICE_MEMORY, reinterpret_cast<std::uint64_t>(memory_), name + " memory");
-    HP_VK_CHECK(vkBindBufferMemory(device_, buffer_, memory_, 0));
-    if (kind != MemoryKind::DeviceLocal) HP_VK_CHECK(vkMapMemory(device_, memory_, 0, VK_WHOLE_SIZE, 0, &mapped_));
+    HP_VK_CHECK(fn_->vkBindBufferMemory(device_, buffer_, memory_, 0));
+    if (kind != MemoryKind::DeviceLocal) HP_VK_CHECK(fn_->vkMapMemory(device_, memory_, 0, VK_WHOLE_SIZE, 0, &mapped_));
   } catch (...) {
     release();
     throw;
@@ -59,6 +59,7 @@ Buffer& Buffer::operator=(Buffer&& other) noexcept {
   if (this != &other) {
     release();
     device_ = std::exchange(other.device_, VK_NULL_HANDLE);
+    fn_ = std::exchange(other.fn_, nullptr);
     buffer_ = std::exchange(other.buffer_, VK_NULL_HANDLE);
     memory_ = std::exchange(other.memory_, VK_NULL_HANDLE);
     tally_ = std::move(other.tally_);
@@ -75,12 +76,12 @@ void Buffer::invalidate() const {
   VkMappedMemoryRange range{VK_STRUCTURE_TYPE_MAPPED_MEMORY_RANGE};
   range.memory = memory_;
   range.size = VK_WHOLE_SIZE;
-  HP_VK_CHECK(vkInvalidateMappedMemoryRanges(device_, 1, &range));
+  HP_VK_CHECK(fn_->vkInvalidateMappedMemoryRanges(device_, 1, &range));
 }
 
 void Buffer::release() {
-  if (buffer_) vkDestroyBuffer(device_, buffer_, nullptr);
-  if (memory_) vkFreeMemory(device_, memory_, nullptr);
+  if (buffer_) fn_->vkDestroyBuffer(device_, buffer_, nullptr);
+  if (memory_) fn_->vkFreeMemory(device_, memory_, nullptr);
   if (tally_) *tally_ -= std::int64_t(allocated_);
   tally_.reset();
   allocated_ = 0;

@@ -40,6 +40,7 @@ class Buffer {
  private:
   void release();
   VkDevice device_ = VK_NULL_HANDLE;
+  const VolkDeviceTable* fn_ = nullptr;  // the Context's device functions
   VkBuffer buffer_ = VK_NULL_HANDLE;
   VkDeviceMemory memory_ = VK_NULL_HANDLE;
   std::shared_ptr<std::atomic<std::int64_t>> tally_;  // Context::allocatedBytes

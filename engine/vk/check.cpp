@@ -1,5 +1,6 @@
 #include "engine/vk/check.h"
 
+#include <cctype>
 #include <string>
 
 #include "engine/error.h"
@@ -46,7 +47,18 @@ const char* resultName(VkResult result) {
   }
 }
 
-void check(VkResult result, const char* call) {
+namespace {
+// "ctx.fn().vkWaitForFences(...)" -> "vkWaitForFences(...)": device calls go through the context's table,
+// and errors (and injected faults) name the Vulkan function, not the expression that reached it.
+const char* vulkanCall(const char* call) {
+  for (const char* p = call; p[0] && p[1]; ++p)
+    if (p[0] == 'v' && p[1] == 'k' && std::isupper(static_cast<unsigned char>(p[2]))) return p;
+  return call;
+}
+}  // namespace
+
+void check(VkResult result, const char* expression) {
+  const char* call = vulkanCall(expression);
   result = injectFault(call, result);
   if (result == VK_SUCCESS) return;
   throw Error(std::string(call) + " failed: " + resultName(result) + " (" + std::to_string(result) + ")");

@@ -83,13 +83,17 @@ std::unique_ptr<Context> Context::adopt(const ExternalDevice& external) {
       !external.queue)
     throw Error("Context::adopt: every handle of ExternalDevice (getInstanceProcAddr, instance, physicalDevice, "
                 "device, queue) must be set");
-  volkInitializeCustom(external.getInstanceProcAddr);
-  volkLoadInstanceOnly(external.instance);
-  volkLoadDevice(external.device);
+  // The application may use volk itself: its instance functions stay as they are when it loaded this
+  // instance; its device functions are never touched (hairpipe's are in ctx->fn_).
+  if (volkGetLoadedInstance() != external.instance) {
+    volkInitializeCustom(external.getInstanceProcAddr);
+    volkLoadInstanceOnly(external.instance);
+  }
   std::unique_ptr<Context> ctx(new Context());
   ctx->instance_ = external.instance;
   ctx->physical_ = external.physicalDevice;
   ctx->device_ = external.device;
+  volkLoadDeviceTable(&ctx->fn_, external.device);
   ctx->queue_ = external.queue;
   ctx->queueFamily_ = external.queueFamily;
   ctx->debugUtils_ = external.debugUtilsEnabled;
@@ -112,7 +116,7 @@ void Context::checkAdopted() const {
   const VkQueueFlags needed = VK_QUEUE_GRAPHICS_BIT | VK_QUEUE_COMPUTE_BIT;
   if (queueFamily_ >= count || (families[queueFamily_].queueFlags & needed) != needed)
     throw Error("Context::adopt: queue family " + std::to_string(queueFamily_) + " does not support graphics and compute");
-  if (!vkCmdPipelineBarrier2 || !vkCmdBeginRendering || !vkQueueSubmit2)
+  if (!fn_.vkCmdPipelineBarrier2 || !fn_.vkCmdBeginRendering || !fn_.vkQueueSubmit2)
     throw Error("Context::adopt: Vulkan 1.3 device functions did not load (was the device created with apiVersion 1.3?)");
 }
 
@@ -193,8 +197,9 @@ void Context::createDevice(const ContextOptions& options) {
   info.enabledExtensionCount = static_cast<std::uint32_t>(extensions.size());
   info.ppEnabledExtensionNames = extensions.data();
   HP_VK_CHECK(vkCreateDevice(physical_, &info, nullptr, &device_));
-  volkLoadDevice(device_);
-  vkGetDeviceQueue(device_, queueFamily_, 0, &queue_);
+  volkLoadDeviceTable(&fn_, device_);
+  volkLoadDevice(device_);  // the headless program's own direct calls (see the contract)
+  fn_.vkGetDeviceQueue(device_, queueFamily_, 0, &queue_);
 }
 
 void Context::finishSetup() {
@@ -210,17 +215,17 @@ void Context::finishSetup() {
   VkCommandPoolCreateInfo pool{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
   pool.flags = VK_COMMAND_POOL_CREATE_TRANSIENT_BIT | VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
   pool.queueFamilyIndex = queueFamily_;
-  HP_VK_CHECK(vkCreateCommandPool(device_, &pool, nullptr, &transientPool_));
+  HP_VK_CHECK(fn_.vkCreateCommandPool(device_, &pool, nullptr, &transientPool_));
   setName(VK_OBJECT_TYPE_COMMAND_POOL, reinterpret_cast<std::uint64_t>(transientPool_), "hairpipe transient pool");
 }
 
 Context::~Context() {
   // An adopted device belongs to the application: never wait idle on it, the app has already
   // ensured hairpipe's work is finished before destroying hairpipe (see the embedding contract).
-  if (ownsInstanceAndDevice_ && device_) vkDeviceWaitIdle(device_);
-  if (transientPool_) vkDestroyCommandPool(device_, transientPool_, nullptr);
+  if (ownsInstanceAndDevice_ && device_) fn_.vkDeviceWaitIdle(device_);
+  if (transientPool_) fn_.vkDestroyCommandPool(device_, transientPool_, nullptr);
   if (!ownsInstanceAndDevice_) return;
-  if (device_) vkDestroyDevice(device_, nullptr);
+  if (device_) fn_.vkDestroyDevice(device_, nullptr);
   if (messenger_) vkDestroyDebugUtilsMessengerEXT(instance_, messenger_, nullptr);
   if (instance_) vkDestroyInstance(instance_, nullptr);
 }
@@ -250,7 +255,7 @@ void Context::setName(VkObjectType type, std::uint64_t handle, const std::string
 
 void Context::waitIdle() const {
   if (!ownsInstanceAndDevice_) throw Error("Context::waitIdle: the device belongs to the application; hairpipe never waits idle on it");
-  HP_VK_CHECK(vkDeviceWaitIdle(device_));
+  HP_VK_CHECK(fn_.vkDeviceWaitIdle(device_));
 }
 
 void Context::checkDeviceMemoryBudget(VkDeviceSize bytes, const std::string& what) const {

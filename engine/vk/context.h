@@ -1,7 +1,11 @@
 #pragma once
 // Contract: the Vulkan instance/device hairpipe works with, either created headless by hairpipe
 // (createHeadless) or handed over by the embedding application (adopt). It owns only what it created.
-// Functions are loaded through volk's global table, so one process drives one VkDevice at a time.
+// Device functions are called through the context's own table (volk's VolkDeviceTable, fn()), never
+// through volk's process-wide pointers: adopt() leaves an application's volk globals as they are (it
+// loads volk's instance-level functions only when volk has no instance loaded, or another one), and
+// several contexts may drive several devices in one process. createHeadless also loads the volk globals
+// for its device: a headless context is its program's only device (the tool, the tests).
 // Required: Vulkan 1.3 with dynamicRendering and synchronization2 enabled, and a graphics+compute queue.
 // With validation on, VK_LAYER_KHRONOS_validation runs with synchronization validation and every
 // message lands in validationLog(); a missing layer is an error, never a silent downgrade.
@@ -18,6 +22,8 @@
 #include "engine/vk/validation_log.h"
 
 namespace hp::vk {
+class OneShotBatch;
+
 struct ContextOptions {
   bool validation = false;
   std::string device;  // --device NAME-SUBSTRING|INDEX; empty: HAIRPIPE_DEVICE, else the best device
@@ -54,6 +60,8 @@ class Context {
   VkInstance instance() const { return instance_; }
   VkPhysicalDevice physicalDevice() const { return physical_; }
   VkDevice device() const { return device_; }
+  // The device's functions: ctx.fn().vkCmdDispatch(cmd, ...). Valid as long as the context.
+  const VolkDeviceTable& fn() const { return fn_; }
   VkQueue queue() const { return queue_; }
   std::uint32_t queueFamily() const { return queueFamily_; }
   VkCommandPool transientPool() const { return transientPool_; }
@@ -79,6 +87,8 @@ class Context {
   std::uint64_t allocatedBytes() const { return allocated_->load(); }
   // Shared with every buffer and image, which add their allocation and take it back when freed.
   const std::shared_ptr<std::atomic<std::int64_t>>& allocationTally() const { return allocated_; }
+  // The batch that one-shot work records into now (submit.h), or null: submit each at once.
+  OneShotBatch* openBatch() const { return batch_; }
   // The most device memory hairpipe may hold at once (0: no cap but the heaps), for an application that
   // budgets its middleware. An allocation past it fails as the driver's out-of-memory does.
   void setDeviceMemoryBudget(VkDeviceSize bytes) { budget_.store(bytes); }
@@ -88,6 +98,8 @@ class Context {
   void checkDeviceMemoryBudget(VkDeviceSize bytes, const std::string& what) const;
 
  private:
+  friend class OneShotBatch;
+  void setOpenBatch(OneShotBatch* batch) const { batch_ = batch; }
   Context() = default;
   void createInstance(const ContextOptions& options);
   void createDevice(const ContextOptions& options);
@@ -98,6 +110,7 @@ class Context {
   VkDebugUtilsMessengerEXT messenger_ = VK_NULL_HANDLE;
   VkPhysicalDevice physical_ = VK_NULL_HANDLE;
   VkDevice device_ = VK_NULL_HANDLE;
+  VolkDeviceTable fn_{};
   VkQueue queue_ = VK_NULL_HANDLE;
   std::uint32_t queueFamily_ = 0;
   VkCommandPool transientPool_ = VK_NULL_HANDLE;
@@ -111,6 +124,7 @@ class Context {
   std::shared_ptr<std::atomic<std::int64_t>> allocated_ = std::make_shared<std::atomic<std::int64_t>>(0);
   std::atomic<VkDeviceSize> budget_{0};
   DeviceChoice choice_;
+  mutable OneShotBatch* batch_ = nullptr;
 };
 
 // Loads the Vulkan loader through volk once per process; throws hp::Error when it is missing.

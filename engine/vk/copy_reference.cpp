@@ -1,6 +1,7 @@
 #include "engine/vk/copy_reference.h"
 
 #include "engine/vk/barriers.h"
+#include "engine/vk/context.h"
 #include "engine/vk/submit.h"
 
 namespace hp::vk {
@@ -9,20 +10,21 @@ constexpr VkBufferUsageFlags kUsage = VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFF
 }
 
 CopyReference::CopyReference(const Context& ctx, VkDeviceSize bytes)
-    : source_(ctx, bytes, kUsage, MemoryKind::DeviceLocal, "copy reference source"),
+    : ctx_(&ctx),
+      source_(ctx, bytes, kUsage, MemoryKind::DeviceLocal, "copy reference source"),
       destination_(ctx, bytes, kUsage, MemoryKind::DeviceLocal, "copy reference destination") {
   submitAndWait(ctx, [&](VkCommandBuffer cmd) {
-    vkCmdFillBuffer(cmd, source_.handle(), 0, bytes, 0x3f800000u);  // touch every page before timing
-    bufferBarrier(cmd, source_.handle(), BufferUse::TransferDst, BufferUse::TransferSrc);
+    ctx.fn().vkCmdFillBuffer(cmd, source_.handle(), 0, bytes, 0x3f800000u);  // touch every page before timing
+    bufferBarrier(ctx, cmd, source_.handle(), BufferUse::TransferDst, BufferUse::TransferSrc);
   }, "copy reference fill");
 }
 
 void CopyReference::record(VkCommandBuffer cmd, GpuProfiler& profiler) const {
   // Earlier iterations wrote the destination: order those writes before this one.
-  bufferBarrier(cmd, destination_.handle(), BufferUse::TransferDst, BufferUse::TransferDst);
+  bufferBarrier(*ctx_, cmd, destination_.handle(), BufferUse::TransferDst, BufferUse::TransferDst);
   profiler.begin(cmd, "copy");
   VkBufferCopy region{0, 0, source_.size()};
-  vkCmdCopyBuffer(cmd, source_.handle(), destination_.handle(), 1, &region);
+  ctx_->fn().vkCmdCopyBuffer(cmd, source_.handle(), destination_.handle(), 1, &region);
   profiler.end(cmd);
 }
 

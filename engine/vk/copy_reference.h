@@ -13,6 +13,7 @@ class CopyReference {
   double bytesMoved() const { return 2.0 * double(source_.size()); }
 
  private:
+  const Context* ctx_;
   Buffer source_;
   Buffer destination_;
 };

@@ -9,7 +9,7 @@
 
 namespace hp::vk {
 DescriptorSet::DescriptorSet(const Context& ctx, std::span<const Binding> bindings, const std::string& name)
-    : device_(ctx.device()) {
+    : device_(ctx.device()), fn_(&ctx.fn()) {
   std::vector<VkDescriptorSetLayoutBinding> layoutBindings;
   std::map<VkDescriptorType, std::uint32_t> typeCounts;
   for (const Binding& b : bindings) {
@@ -19,7 +19,7 @@ DescriptorSet::DescriptorSet(const Context& ctx, std::span<const Binding> bindin
   VkDescriptorSetLayoutCreateInfo layoutInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
   layoutInfo.bindingCount = static_cast<std::uint32_t>(layoutBindings.size());
   layoutInfo.pBindings = layoutBindings.data();
-  HP_VK_CHECK(vkCreateDescriptorSetLayout(device_, &layoutInfo, nullptr, &layout_));
+  HP_VK_CHECK(fn_->vkCreateDescriptorSetLayout(device_, &layoutInfo, nullptr, &layout_));
 
   std::vector<VkDescriptorPoolSize> sizes;
   for (auto [type, count] : typeCounts) sizes.push_back({type, count});
@@ -29,13 +29,13 @@ DescriptorSet::DescriptorSet(const Context& ctx, std::span<const Binding> bindin
   poolInfo.pPoolSizes = sizes.data();
   try {
     ctx.setName(VK_OBJECT_TYPE_DESCRIPTOR_SET_LAYOUT, reinterpret_cast<std::uint64_t>(layout_), name + " layout");
-    HP_VK_CHECK(vkCreateDescriptorPool(device_, &poolInfo, nullptr, &pool_));
+    HP_VK_CHECK(fn_->vkCreateDescriptorPool(device_, &poolInfo, nullptr, &pool_));
     ctx.setName(VK_OBJECT_TYPE_DESCRIPTOR_POOL, reinterpret_cast<std::uint64_t>(pool_), name + " pool");
     VkDescriptorSetAllocateInfo alloc{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
     alloc.descriptorPool = pool_;
     alloc.descriptorSetCount = 1;
     alloc.pSetLayouts = &layout_;
-    HP_VK_CHECK(vkAllocateDescriptorSets(device_, &alloc, &set_));
+    HP_VK_CHECK(fn_->vkAllocateDescriptorSets(device_, &alloc, &set_));
     ctx.setName(VK_OBJECT_TYPE_DESCRIPTOR_SET, reinterpret_cast<std::uint64_t>(set_), name);
   } catch (...) {
     release();
@@ -51,6 +51,7 @@ DescriptorSet& DescriptorSet::operator=(DescriptorSet&& other) noexcept {
   if (this != &other) {
     release();
     device_ = std::exchange(other.device_, VK_NULL_HANDLE);
+    fn_ = std::exchange(other.fn_, nullptr);
     layout_ = std::exchange(other.layout_, VK_NULL_HANDLE);
     pool_ = std::exchange(other.pool_, VK_NULL_HANDLE);
     set_ = std::exchange(other.set_, VK_NULL_HANDLE);
@@ -59,8 +60,8 @@ DescriptorSet& DescriptorSet::operator=(DescriptorSet&& other) noexcept {
 }
 
 void DescriptorSet::release() {
-  if (pool_) vkDestroyDescriptorPool(device_, pool_, nullptr);  // frees the set too
-  if (layout_) vkDestroyDescriptorSetLayout(device_, layout_, nullptr);
+  if (pool_) fn_->vkDestroyDescriptorPool(device_, pool_, nullptr);  // frees the set too
+  if (layout_) fn_->vkDestroyDescriptorSetLayout(device_, layout_, nullptr);
   pool_ = VK_NULL_HANDLE;
   layout_ = VK_NULL_HANDLE;
   set_ = VK_NULL_HANDLE;
@@ -75,7 +76,7 @@ void DescriptorSet::writeBuffer(std::uint32_t binding, VkDescriptorType type, Vk
   write.descriptorCount = 1;
   write.descriptorType = type;
   write.pBufferInfo = &info;
-  vkUpdateDescriptorSets(device_, 1, &write, 0, nullptr);
+  fn_->vkUpdateDescriptorSets(device_, 1, &write, 0, nullptr);
 }
 
 void DescriptorSet::writeImage(std::uint32_t binding, VkDescriptorType type, const VkDescriptorImageInfo& info) const {
@@ -85,7 +86,7 @@ void DescriptorSet::writeImage(std::uint32_t binding, VkDescriptorType type, con
   write.descriptorCount = 1;
   write.descriptorType = type;
   write.pImageInfo = &info;
-  vkUpdateDescriptorSets(device_, 1, &write, 0, nullptr);
+  fn_->vkUpdateDescriptorSets(device_, 1, &write, 0, nullptr);
 }
 
 void DescriptorSet::writeSampledImage(std::uint32_t binding, VkImageView view, VkSampler sampler,

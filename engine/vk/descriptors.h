@@ -48,6 +48,7 @@ class DescriptorSet {
   void writeImage(std::uint32_t binding, VkDescriptorType type, const VkDescriptorImageInfo& info) const;
   void release();
   VkDevice device_ = VK_NULL_HANDLE;
+  const VolkDeviceTable* fn_ = nullptr;  // the Context's device functions
   VkDescriptorSetLayout layout_ = VK_NULL_HANDLE;
   VkDescriptorPool pool_ = VK_NULL_HANDLE;
   VkDescriptorSet set_ = VK_NULL_HANDLE;

@@ -32,7 +32,7 @@ VkImageAspectFlags Image::aspect() const {
   return isDepthFormat(desc_.format) ? VK_IMAGE_ASPECT_DEPTH_BIT : VK_IMAGE_ASPECT_COLOR_BIT;
 }
 
-Image::Image(const Context& ctx, const ImageDesc& desc) : device_(ctx.device()), desc_(desc) {
+Image::Image(const Context& ctx, const ImageDesc& desc) : device_(ctx.device()), fn_(&ctx.fn()), desc_(desc) {
   const auto& limits = ctx.properties().limits;
   if (desc.width == 0 || desc.height == 0 || desc.width > limits.maxImageDimension2D ||
       desc.height > limits.maxImageDimension2D)
@@ -50,21 +50,21 @@ Image::Image(const Context& ctx, const ImageDesc& desc) : device_(ctx.device()),
   info.tiling = VK_IMAGE_TILING_OPTIMAL;
   info.usage = desc.usage;
   info.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-  HP_VK_CHECK(vkCreateImage(device_, &info, nullptr, &image_));
+  HP_VK_CHECK(fn_->vkCreateImage(device_, &info, nullptr, &image_));
   try {
     ctx.setName(VK_OBJECT_TYPE_IMAGE, reinterpret_cast<std::uint64_t>(image_), desc.name);
     VkMemoryRequirements req;
-    vkGetImageMemoryRequirements(device_, image_, &req);
+    fn_->vkGetImageMemoryRequirements(device_, image_, &req);
     VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
     alloc.allocationSize = req.size;
     alloc.memoryTypeIndex = ctx.findMemoryType(req.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
     ctx.checkDeviceMemoryBudget(req.size, "image '" + desc.name + "'");
-    HP_VK_CHECK(vkAllocateMemory(device_, &alloc, nullptr, &memory_));
+    HP_VK_CHECK(fn_->vkAllocateMemory(device_, &alloc, nullptr, &memory_));
     tally_ = ctx.allocationTally();
     allocated_ = req.size;
     *tally_ += std::int64_t(allocated_);
     ctx.setName(VK_OBJECT_TYPE_DEVICE_MEMORY, reinterpret_cast<std::uint64_t>(memory_), desc.name + " memory");
-    HP_VK_CHECK(vkBindImageMemory(device_, image_, memory_, 0));
+    HP_VK_CHECK(fn_->vkBindImageMemory(device_, image_, memory_, 0));
     VkImageViewType type = desc.layers > 1 ? VK_IMAGE_VIEW_TYPE_2D_ARRAY : VK_IMAGE_VIEW_TYPE_2D;
     view_ = createView(ctx, type, 0, desc.layers, desc.name + " view");
     if (desc.layers > 1)
@@ -86,7 +86,7 @@ VkImageView Image::createView(const Context& ctx, VkImageViewType type, std::uin
   info.format = desc_.format;
   info.subresourceRange = {aspect(), 0, 1, firstLayer, layerCount};
   VkImageView view = VK_NULL_HANDLE;
-  HP_VK_CHECK(vkCreateImageView(device_, &info, nullptr, &view));
+  HP_VK_CHECK(fn_->vkCreateImageView(device_, &info, nullptr, &view));
   ctx.setName(VK_OBJECT_TYPE_IMAGE_VIEW, reinterpret_cast<std::uint64_t>(view), name);
   return view;
 }
@@ -99,6 +99,7 @@ Image& Image::operator=(Image&& other) noexcept {
   if (this != &other) {
     release();
     device_ = std::exchange(other.device_, VK_NULL_HANDLE);
+    fn_ = std::exchange(other.fn_, nullptr);
     image_ = std::exchange(other.image_, VK_NULL_HANDLE);
     memory_ = std::exchange(other.memory_, VK_NULL_HANDLE);
     tally_ = std::move(other.tally_);
@@ -114,11 +115,11 @@ Image& Image::operator=(Image&& other) noexcept {
 void Image::release() {
   if (!device_) return;
   for (VkImageView v : layerViews_)
-    if (v != view_) vkDestroyImageView(device_, v, nullptr);
+    if (v != view_) fn_->vkDestroyImageView(device_, v, nullptr);
   layerViews_.clear();
-  if (view_) vkDestroyImageView(device_, view_, nullptr);
-  if (image_) vkDestroyImage(device_, image_, nullptr);
-  if (memory_) vkFreeMemory(device_, memory_, nullptr);
+  if (view_) fn_->vkDestroyImageView(device_, view_, nullptr);
+  if (image_) fn_->vkDestroyImage(device_, image_, nullptr);
+  if (memory_) fn_->vkFreeMemory(device_, memory_, nullptr);
   if (tally_) *tally_ -= std::int64_t(allocated_);
   tally_.reset();
   allocated_ = 0;
@@ -127,7 +128,7 @@ void Image::release() {
   memory_ = VK_NULL_HANDLE;
 }
 
-Sampler::Sampler(const Context& ctx, const std::string& name, VkFilter filter) : device_(ctx.device()) {
+Sampler::Sampler(const Context& ctx, const std::string& name, VkFilter filter) : device_(ctx.device()), fn_(&ctx.fn()) {
   VkSamplerCreateInfo info{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
   info.magFilter = filter;
   info.minFilter = filter;
@@ -136,25 +137,26 @@ Sampler::Sampler(const Context& ctx, const std::string& name, VkFilter filter) :
   info.addressModeV = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
   info.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
   info.maxLod = 0.0f;
-  HP_VK_CHECK(vkCreateSampler(device_, &info, nullptr, &sampler_));
+  HP_VK_CHECK(fn_->vkCreateSampler(device_, &info, nullptr, &sampler_));
   try {
     ctx.setName(VK_OBJECT_TYPE_SAMPLER, reinterpret_cast<std::uint64_t>(sampler_), name);
   } catch (...) {
-    vkDestroySampler(device_, sampler_, nullptr);
+    fn_->vkDestroySampler(device_, sampler_, nullptr);
     throw;
   }
 }
 
 Sampler::~Sampler() {
-  if (sampler_) vkDestroySampler(device_, sampler_, nullptr);
+  if (sampler_) fn_->vkDestroySampler(device_, sampler_, nullptr);
 }
 
 Sampler::Sampler(Sampler&& other) noexcept { *this = std::move(other); }
 
 Sampler& Sampler::operator=(Sampler&& other) noexcept {
   if (this != &other) {
-    if (sampler_) vkDestroySampler(device_, sampler_, nullptr);
+    if (sampler_) fn_->vkDestroySampler(device_, sampler_, nullptr);
     device_ = std::exchange(other.device_, VK_NULL_HANDLE);
+    fn_ = std::exchange(other.fn_, nullptr);
     sampler_ = std::exchange(other.sampler_, VK_NULL_HANDLE);
   }
   return *this;

@@ -47,6 +47,7 @@ class Image {
   VkImageView createView(const Context& ctx, VkImageViewType type, std::uint32_t firstLayer,
                          std::uint32_t layerCount, const std::string& name);
   VkDevice device_ = VK_NULL_HANDLE;
+  const VolkDeviceTable* fn_ = nullptr;  // the Context's device functions
   VkImage image_ = VK_NULL_HANDLE;
   VkDeviceMemory memory_ = VK_NULL_HANDLE;
   std::shared_ptr<std::atomic<std::int64_t>> tally_;  // Context::allocatedBytes
@@ -75,6 +76,7 @@ class Sampler {
 
  private:
   VkDevice device_ = VK_NULL_HANDLE;
+  const VolkDeviceTable* fn_ = nullptr;  // the Context's device functions
   VkSampler sampler_ = VK_NULL_HANDLE;
 };
 }  // namespace hp::vk

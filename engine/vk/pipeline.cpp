@@ -14,16 +14,17 @@ namespace {
 // A shader module that lives only while its pipeline is created.
 struct ScopedModule {
   VkDevice device;
+  const VolkDeviceTable* fn_;
   VkShaderModule module = VK_NULL_HANDLE;
-  ScopedModule(const Context& ctx, const std::string& shader) : device(ctx.device()) {
+  ScopedModule(const Context& ctx, const std::string& shader) : device(ctx.device()), fn_(&ctx.fn()) {
     auto words = shaders::spirv(shader);
     VkShaderModuleCreateInfo info{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
     info.codeSize = words.size_bytes();
     info.pCode = words.data();
-    HP_VK_CHECK(vkCreateShaderModule(device, &info, nullptr, &module));
+    HP_VK_CHECK(fn_->vkCreateShaderModule(device, &info, nullptr, &module));
     ctx.setName(VK_OBJECT_TYPE_SHADER_MODULE, reinterpret_cast<std::uint64_t>(module), shader);
   }
-  ~ScopedModule() { vkDestroyShaderModule(device, module, nullptr); }
+  ~ScopedModule() { fn_->vkDestroyShaderModule(device, module, nullptr); }
 };
 
 VkPipelineShaderStageCreateInfo stageInfo(VkShaderStageFlagBits stage, VkShaderModule module) {
@@ -66,6 +67,7 @@ PipelineBase& PipelineBase::operator=(PipelineBase&& other) noexcept {
   if (this != &other) {
     release();
     device_ = std::exchange(other.device_, VK_NULL_HANDLE);
+    fn_ = std::exchange(other.fn_, nullptr);
     layout_ = std::exchange(other.layout_, VK_NULL_HANDLE);
     pipeline_ = std::exchange(other.pipeline_, VK_NULL_HANDLE);
     pushStages_ = other.pushStages_;
@@ -75,8 +77,8 @@ PipelineBase& PipelineBase::operator=(PipelineBase&& other) noexcept {
 }
 
 void PipelineBase::release() {
-  if (pipeline_) vkDestroyPipeline(device_, pipeline_, nullptr);
-  if (layout_) vkDestroyPipelineLayout(device_, layout_, nullptr);
+  if (pipeline_) fn_->vkDestroyPipeline(device_, pipeline_, nullptr);
+  if (layout_) fn_->vkDestroyPipelineLayout(device_, layout_, nullptr);
   pipeline_ = VK_NULL_HANDLE;
   layout_ = VK_NULL_HANDLE;
 }
@@ -84,6 +86,7 @@ void PipelineBase::release() {
 void PipelineBase::createLayout(const Context& ctx, const std::vector<VkDescriptorSetLayout>& sets,
                                 std::uint32_t pushSize, VkShaderStageFlags pushStages, const std::string& name) {
   device_ = ctx.device();
+  fn_ = &ctx.fn();
   pushStages_ = pushStages;
   if (pushSize > ctx.properties().limits.maxPushConstantsSize)
     throw Error("pipeline '" + name + "': push constants of " + std::to_string(pushSize) + " bytes exceed the device limit");
@@ -93,12 +96,12 @@ void PipelineBase::createLayout(const Context& ctx, const std::vector<VkDescript
   info.pSetLayouts = sets.data();
   info.pushConstantRangeCount = pushSize ? 1 : 0;
   info.pPushConstantRanges = &range;
-  HP_VK_CHECK(vkCreatePipelineLayout(device_, &info, nullptr, &layout_));
+  HP_VK_CHECK(fn_->vkCreatePipelineLayout(device_, &info, nullptr, &layout_));
   ctx.setName(VK_OBJECT_TYPE_PIPELINE_LAYOUT, reinterpret_cast<std::uint64_t>(layout_), name + " layout");
 }
 
 void PipelineBase::pushConstants(VkCommandBuffer cmd, const void* data, std::uint32_t size) const {
-  vkCmdPushConstants(cmd, layout_, pushStages_, 0, size, data);
+  fn_->vkCmdPushConstants(cmd, layout_, pushStages_, 0, size, data);
 }
 
 ComputePipeline::ComputePipeline(const Context& ctx, const std::string& shader, std::uint32_t workgroupSize,
@@ -119,13 +122,13 @@ ComputePipeline::ComputePipeline(const Context& ctx, const std::string& shader, 
   info.stage = stageInfo(VK_SHADER_STAGE_COMPUTE_BIT, module.module);
   if (!specialization.empty()) info.stage.pSpecializationInfo = &specInfo;
   info.layout = layout_;
-  HP_VK_CHECK(vkCreateComputePipelines(device_, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline_));
+  HP_VK_CHECK(fn_->vkCreateComputePipelines(device_, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline_));
   ctx.setName(VK_OBJECT_TYPE_PIPELINE, reinterpret_cast<std::uint64_t>(pipeline_), name);
 }
 
 void ComputePipeline::bind(VkCommandBuffer cmd, VkDescriptorSet set) const {
-  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_);
-  if (set) vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_, 0, 1, &set, 0, nullptr);
+  fn_->vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_);
+  if (set) fn_->vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_, 0, 1, &set, 0, nullptr);
 }
 
 void ComputePipeline::dispatch(VkCommandBuffer cmd, std::uint32_t threads) const {
@@ -133,7 +136,7 @@ void ComputePipeline::dispatch(VkCommandBuffer cmd, std::uint32_t threads) const
   const std::uint32_t groups = (threads + workgroupSize_ - 1) / workgroupSize_;
   const std::uint32_t x = std::min(groups, maxGroupsX_);
   const std::uint32_t y = (groups + x - 1) / x;
-  vkCmdDispatch(cmd, x, y, 1);
+  fn_->vkCmdDispatch(cmd, x, y, 1);
 }
 
 GraphicsPipeline::GraphicsPipeline(const Context& ctx, const GraphicsPipelineDesc& d) {
@@ -189,20 +192,24 @@ GraphicsPipeline::GraphicsPipeline(const Context& ctx, const GraphicsPipelineDes
   info.pColorBlendState = &blend;
   info.pDynamicState = &dynamic;
   info.layout = layout_;
-  HP_VK_CHECK(vkCreateGraphicsPipelines(device_, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline_));
+  HP_VK_CHECK(fn_->vkCreateGraphicsPipelines(device_, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline_));
   ctx.setName(VK_OBJECT_TYPE_PIPELINE, reinterpret_cast<std::uint64_t>(pipeline_), d.name);
 }
 
 void GraphicsPipeline::bind(VkCommandBuffer cmd, VkDescriptorSet set, VkExtent2D extent,
                             std::optional<std::uint32_t> dynamicOffset) const {
-  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_);
+  fn_->vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_);
   if (set)
-    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, 0, 1, &set, dynamicOffset ? 1 : 0,
+    fn_->vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, 0, 1, &set, dynamicOffset ? 1 : 0,
                             dynamicOffset ? &*dynamicOffset : nullptr);
   // Flip Y so that +Y is up in clip space, as in GL-style projection matrices from glm.
   VkViewport vp{0.0f, float(extent.height), float(extent.width), -float(extent.height), 0.0f, 1.0f};
   VkRect2D scissor{{0, 0}, extent};
-  vkCmdSetViewport(cmd, 0, 1, &vp);
-  vkCmdSetScissor(cmd, 0, 1, &scissor);
+  fn_->vkCmdSetViewport(cmd, 0, 1, &vp);
+  fn_->vkCmdSetScissor(cmd, 0, 1, &scissor);
+}
+
+void GraphicsPipeline::draw(VkCommandBuffer cmd, std::uint32_t vertexCount) const {
+  fn_->vkCmdDraw(cmd, vertexCount, 1, 0, 0);
 }
 }  // namespace hp::vk

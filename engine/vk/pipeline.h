@@ -37,6 +37,7 @@ class PipelineBase {
                     VkShaderStageFlags pushStages, const std::string& name);
   void release();
   VkDevice device_ = VK_NULL_HANDLE;
+  const VolkDeviceTable* fn_ = nullptr;  // the Context's device functions
   VkPipelineLayout layout_ = VK_NULL_HANDLE;
   VkPipeline pipeline_ = VK_NULL_HANDLE;
   VkShaderStageFlags pushStages_ = 0;
@@ -88,5 +89,7 @@ class GraphicsPipeline : public PipelineBase {
   // `dynamicOffset`: the offset of the set's one dynamic uniform buffer, if its layout has one.
   void bind(VkCommandBuffer cmd, VkDescriptorSet set, VkExtent2D extent,
             std::optional<std::uint32_t> dynamicOffset = std::nullopt) const;
+  // One non-indexed, non-instanced draw of `vertexCount` vertices (vertex pulling) after bind().
+  void draw(VkCommandBuffer cmd, std::uint32_t vertexCount) const;
 };
 }  // namespace hp::vk

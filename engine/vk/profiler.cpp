@@ -8,7 +8,7 @@
 
 namespace hp::vk {
 GpuProfiler::GpuProfiler(const Context& ctx, std::uint32_t maxScopes, const std::string& name)
-    : device_(ctx.device()), capacity_(maxScopes * 2) {
+    : device_(ctx.device()), fn_(&ctx.fn()), capacity_(maxScopes * 2) {
   if (!ctx.timestampsSupported()) return;
   std::uint32_t count = 0;
   vkGetPhysicalDeviceQueueFamilyProperties(ctx.physicalDevice(), &count, nullptr);
@@ -20,19 +20,19 @@ GpuProfiler::GpuProfiler(const Context& ctx, std::uint32_t maxScopes, const std:
   VkQueryPoolCreateInfo info{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
   info.queryType = VK_QUERY_TYPE_TIMESTAMP;
   info.queryCount = capacity_;
-  HP_VK_CHECK(vkCreateQueryPool(device_, &info, nullptr, &pool_));
+  HP_VK_CHECK(fn_->vkCreateQueryPool(device_, &info, nullptr, &pool_));
   ctx.setName(VK_OBJECT_TYPE_QUERY_POOL, reinterpret_cast<std::uint64_t>(pool_), name);
 }
 
 GpuProfiler::~GpuProfiler() {
-  if (pool_) vkDestroyQueryPool(device_, pool_, nullptr);
+  if (pool_) fn_->vkDestroyQueryPool(device_, pool_, nullptr);
 }
 
 void GpuProfiler::reset(VkCommandBuffer cmd) {
   scopes_.clear();
   open_.clear();
   used_ = 0;
-  if (pool_) vkCmdResetQueryPool(cmd, pool_, 0, capacity_);
+  if (pool_) fn_->vkCmdResetQueryPool(cmd, pool_, 0, capacity_);
 }
 
 void GpuProfiler::begin(VkCommandBuffer cmd, const std::string& scope) {
@@ -42,7 +42,7 @@ void GpuProfiler::begin(VkCommandBuffer cmd, const std::string& scope) {
   open_.push_back(scopes_.size() - 1);
   used_ += 2;
   // ALL_COMMANDS: the stamp is taken once all earlier work has finished, so a scope measures its own work.
-  vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, pool_, scopes_.back().beginQuery);
+  fn_->vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, pool_, scopes_.back().beginQuery);
 }
 
 void GpuProfiler::end(VkCommandBuffer cmd) {
@@ -50,7 +50,7 @@ void GpuProfiler::end(VkCommandBuffer cmd) {
   if (open_.empty()) throw Error("GpuProfiler::end without a matching begin");
   const Scope& s = scopes_[open_.back()];
   open_.pop_back();
-  vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, pool_, s.endQuery);
+  fn_->vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, pool_, s.endQuery);
 }
 
 std::vector<ScopeTime> GpuProfiler::results() const {
@@ -58,7 +58,7 @@ std::vector<ScopeTime> GpuProfiler::results() const {
   if (!pool_ || used_ == 0) return out;
   if (!open_.empty()) throw Error("GpuProfiler: scope '" + scopes_[open_.back()].name + "' was never ended");
   std::vector<std::uint64_t> stamps(used_);
-  HP_VK_CHECK(vkGetQueryPoolResults(device_, pool_, 0, used_, stamps.size() * sizeof(std::uint64_t), stamps.data(),
+  HP_VK_CHECK(fn_->vkGetQueryPoolResults(device_, pool_, 0, used_, stamps.size() * sizeof(std::uint64_t), stamps.data(),
                                     sizeof(std::uint64_t), VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT));
   for (const Scope& s : scopes_) {
     std::uint64_t t0 = stamps[s.beginQuery] & validMask_, t1 = stamps[s.endQuery] & validMask_;

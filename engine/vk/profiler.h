@@ -41,6 +41,7 @@ class GpuProfiler {
     int depth;
   };
   VkDevice device_ = VK_NULL_HANDLE;
+  const VolkDeviceTable* fn_ = nullptr;  // the Context's device functions
   VkQueryPool pool_ = VK_NULL_HANDLE;
   std::uint32_t capacity_ = 0;
   std::uint32_t used_ = 0;

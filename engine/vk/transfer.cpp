@@ -15,9 +15,10 @@ void uploadBytes(const Context& ctx, const Buffer& dst, const void* data, VkDevi
   std::memcpy(staging.mapped(), data, size);
   submitAndWait(ctx, [&](VkCommandBuffer cmd) {
     VkBufferCopy region{0, dstOffset, size};
-    vkCmdCopyBuffer(cmd, staging.handle(), dst.handle(), 1, &region);
-    bufferBarrier(cmd, dst.handle(), BufferUse::TransferDst, after);
+    ctx.fn().vkCmdCopyBuffer(cmd, staging.handle(), dst.handle(), 1, &region);
+    bufferBarrier(ctx, cmd, dst.handle(), BufferUse::TransferDst, after);
   }, "upload " + dst.name());
+  keepUntilSubmitted(ctx, std::move(staging));
 }
 
 std::vector<std::byte> readbackBytes(const Context& ctx, const Buffer& src, BufferUse before, VkDeviceSize offset,
@@ -30,11 +31,12 @@ std::vector<std::byte> readbackBytes(const Context& ctx, const Buffer& src, Buff
   if (size == 0) return out;
   Buffer staging(ctx, size, VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryKind::Readback, src.name() + " readback");
   submitAndWait(ctx, [&](VkCommandBuffer cmd) {
-    bufferBarrier(cmd, src.handle(), before, BufferUse::TransferSrc);
+    bufferBarrier(ctx, cmd, src.handle(), before, BufferUse::TransferSrc);
     VkBufferCopy region{offset, 0, size};
-    vkCmdCopyBuffer(cmd, src.handle(), staging.handle(), 1, &region);
-    bufferBarrier(cmd, staging.handle(), BufferUse::TransferDst, BufferUse::HostRead);
+    ctx.fn().vkCmdCopyBuffer(cmd, src.handle(), staging.handle(), 1, &region);
+    bufferBarrier(ctx, cmd, staging.handle(), BufferUse::TransferDst, BufferUse::HostRead);
   }, "readback " + src.name());
+  submitOpenBatch(ctx);
   staging.invalidate();
   std::memcpy(out.data(), staging.mapped(), size);
   return out;
@@ -61,11 +63,12 @@ void uploadImage(const Context& ctx, const Image& image, std::span<const std::by
   std::memcpy(staging.mapped(), texels.data(), expected);
   submitAndWait(ctx, [&](VkCommandBuffer cmd) {
     const std::uint32_t layers = image.desc().layers;
-    imageBarrier(cmd, image.handle(), image.aspect(), ImageUse::Undefined, ImageUse::TransferDst, layers);
+    imageBarrier(ctx, cmd, image.handle(), image.aspect(), ImageUse::Undefined, ImageUse::TransferDst, layers);
     VkBufferImageCopy region = layerRegion(image, 0, layers);
-    vkCmdCopyBufferToImage(cmd, staging.handle(), image.handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
-    imageBarrier(cmd, image.handle(), image.aspect(), ImageUse::TransferDst, after, layers);
+    ctx.fn().vkCmdCopyBufferToImage(cmd, staging.handle(), image.handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
+    imageBarrier(ctx, cmd, image.handle(), image.aspect(), ImageUse::TransferDst, after, layers);
   }, "upload " + image.desc().name);
+  keepUntilSubmitted(ctx, std::move(staging));
 }
 
 std::vector<std::byte> readbackImage(const Context& ctx, const Image& image, ImageUse current, std::uint32_t layer) {
@@ -77,13 +80,14 @@ std::vector<std::byte> readbackImage(const Context& ctx, const Image& image, Ima
   Buffer staging(ctx, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryKind::Readback, image.desc().name + " readback");
   submitAndWait(ctx, [&](VkCommandBuffer cmd) {
     const std::uint32_t layers = image.desc().layers;
-    imageBarrier(cmd, image.handle(), image.aspect(), current, ImageUse::TransferSrc, layers);
+    imageBarrier(ctx, cmd, image.handle(), image.aspect(), current, ImageUse::TransferSrc, layers);
     VkBufferImageCopy region = layerRegion(image, layer, 1);
-    vkCmdCopyImageToBuffer(cmd, image.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, staging.handle(), 1, &region);
-    bufferBarrier(cmd, staging.handle(), BufferUse::TransferDst, BufferUse::HostRead);
+    ctx.fn().vkCmdCopyImageToBuffer(cmd, image.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, staging.handle(), 1, &region);
+    bufferBarrier(ctx, cmd, staging.handle(), BufferUse::TransferDst, BufferUse::HostRead);
     if (current != ImageUse::Undefined)
-      imageBarrier(cmd, image.handle(), image.aspect(), ImageUse::TransferSrc, current, layers);
+      imageBarrier(ctx, cmd, image.handle(), image.aspect(), ImageUse::TransferSrc, current, layers);
   }, "readback " + image.desc().name);
+  submitOpenBatch(ctx);
   staging.invalidate();
   std::vector<std::byte> out(bytes);
   std::memcpy(out.data(), staging.mapped(), bytes);

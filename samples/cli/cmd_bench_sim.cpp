@@ -52,7 +52,7 @@ nlohmann::json benchOne(const hp::vk::Context& ctx, const hp::HairAsset& asset, 
   for (std::uint32_t f = 0; f < frames; ++f) {
     hp::vk::submitAndWait(ctx, [&](VkCommandBuffer cmd) {
       profiler.reset(cmd);
-      hp::vk::memoryBarrier(cmd, hp::vk::BufferUse::ComputeWrite, hp::vk::BufferUse::ComputeWrite);
+      hp::vk::memoryBarrier(ctx, cmd, hp::vk::BufferUse::ComputeWrite, hp::vk::BufferUse::ComputeWrite);
       pass.record(cmd, {glm::mat4(1.0f), glm::mat4(1.0f), f / 60.0, false}, &profiler);
       copy.record(cmd, profiler);
     }, "bench-sim frame");

@@ -54,11 +54,12 @@ void countBytes(Result& r) {
 
 // One frame: the previous frame's writes are done (the frame recorder's barrier), then the passes,
 // then the reference copy.
-void recordFrame(VkCommandBuffer cmd, hp::vk::GpuProfiler& profiler, const hp::compute::TessellatePass& tessellate,
-                 const hp::compute::InterpolatePass& interpolate, const hp::vk::CopyReference& copy) {
+void recordFrame(const hp::vk::Context& ctx, VkCommandBuffer cmd, hp::vk::GpuProfiler& profiler,
+                 const hp::compute::TessellatePass& tessellate, const hp::compute::InterpolatePass& interpolate,
+                 const hp::vk::CopyReference& copy) {
   profiler.reset(cmd);
-  hp::vk::memoryBarrier(cmd, hp::vk::BufferUse::ComputeWrite, hp::vk::BufferUse::ComputeWrite);
-  hp::compute::recordStrandPasses(cmd, tessellate, interpolate, &profiler);
+  hp::vk::memoryBarrier(ctx, cmd, hp::vk::BufferUse::ComputeWrite, hp::vk::BufferUse::ComputeWrite);
+  hp::compute::recordStrandPasses(ctx, cmd, tessellate, interpolate, &profiler);
   copy.record(cmd, profiler);
 }
 
@@ -78,7 +79,7 @@ Result benchOne(const hp::vk::Context& ctx, std::uint32_t strands, const BenchOp
   std::map<std::string, std::vector<double>> times;
   for (std::uint32_t f = 0; f <= o.frames; ++f) {  // frame 0 warms up (first touch of the memory)
     const auto start = std::chrono::steady_clock::now();
-    hp::vk::submitAndWait(ctx, [&](VkCommandBuffer cmd) { recordFrame(cmd, profiler, tessellate, interpolate, copy); },
+    hp::vk::submitAndWait(ctx, [&](VkCommandBuffer cmd) { recordFrame(ctx, cmd, profiler, tessellate, interpolate, copy); },
                           "bench strands frame");
     const double wallMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     if (f == 0) continue;

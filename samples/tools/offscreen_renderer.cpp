@@ -2,6 +2,7 @@
 
 #include "engine/error.h"
 #include "engine/vk/barriers.h"
+#include "engine/vk/context.h"
 #include "engine/vk/transfer.h"
 
 namespace hp::render {
@@ -80,30 +81,30 @@ void OffscreenRenderer::record(VkCommandBuffer cmd, HairSystem& hair, const Draw
 void OffscreenRenderer::recordComputeScene(VkCommandBuffer cmd, HairSystem& hair, const DrawView& view,
                                            vk::GpuProfiler* profiler) const {
   const VkImage hdr = targets_.hdr.handle(), depthImage = targets_.depth.handle();
-  vk::imageBarrier(cmd, hdr, VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::FragmentSampledDiscard,
+  vk::imageBarrier(ctx_, cmd, hdr, VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::FragmentSampledDiscard,
                    vk::ImageUse::ColorAttachment);
-  vk::imageBarrier(cmd, depthImage, VK_IMAGE_ASPECT_DEPTH_BIT, vk::ImageUse::DepthAttachmentDiscard,
+  vk::imageBarrier(ctx_, cmd, depthImage, VK_IMAGE_ASPECT_DEPTH_BIT, vk::ImageUse::DepthAttachmentDiscard,
                    vk::ImageUse::DepthAttachment);
   VkRenderingAttachmentInfo color = colorAttachment(targets_.hdr.view(), kBackground);
   VkRenderingAttachmentInfo depth = depthAttachment(targets_.depth.view(), VK_ATTACHMENT_LOAD_OP_CLEAR,
                                                     VK_ATTACHMENT_STORE_OP_STORE);
   VkRenderingInfo info = renderingInfo(extent(), &color, &depth);
-  vkCmdBeginRendering(cmd, &info);
+  ctx_.fn().vkCmdBeginRendering(cmd, &info);
   hair.recordDraw(cmd, view, profiler);  // the head only
-  vkCmdEndRendering(cmd);
-  vk::imageBarrier(cmd, depthImage, VK_IMAGE_ASPECT_DEPTH_BIT, vk::ImageUse::DepthAttachment,
+  ctx_.fn().vkCmdEndRendering(cmd);
+  vk::imageBarrier(ctx_, cmd, depthImage, VK_IMAGE_ASPECT_DEPTH_BIT, vk::ImageUse::DepthAttachment,
                    vk::ImageUse::ComputeSampled);
   hair.recordRaster(cmd, view, profiler);
-  vk::imageBarrier(cmd, depthImage, VK_IMAGE_ASPECT_DEPTH_BIT, vk::ImageUse::ComputeSampled,
+  vk::imageBarrier(ctx_, cmd, depthImage, VK_IMAGE_ASPECT_DEPTH_BIT, vk::ImageUse::ComputeSampled,
                    vk::ImageUse::DepthAttachment);
   // The head's colour writes before the composite's blend reads them (separate rendering instances).
-  vk::imageBarrier(cmd, hdr, VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::ColorAttachment, vk::ImageUse::ColorAttachment);
+  vk::imageBarrier(ctx_, cmd, hdr, VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::ColorAttachment, vk::ImageUse::ColorAttachment);
   color.loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;
   depth = depthAttachment(targets_.depth.view(), VK_ATTACHMENT_LOAD_OP_LOAD, VK_ATTACHMENT_STORE_OP_DONT_CARE);
-  vkCmdBeginRendering(cmd, &info);
+  ctx_.fn().vkCmdBeginRendering(cmd, &info);
   hair.recordComposite(cmd, extent(), profiler);
-  vkCmdEndRendering(cmd);
-  vk::imageBarrier(cmd, hdr, VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::ColorAttachment, vk::ImageUse::FragmentSampled);
+  ctx_.fn().vkCmdEndRendering(cmd);
+  vk::imageBarrier(ctx_, cmd, hdr, VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::ColorAttachment, vk::ImageUse::FragmentSampled);
 }
 
 void OffscreenRenderer::record(VkCommandBuffer cmd, const std::function<void(VkCommandBuffer)>& draws,
@@ -118,14 +119,14 @@ void OffscreenRenderer::recordScene(VkCommandBuffer cmd, const std::function<voi
   const bool msaa = bool(targets_.resolved);
   // Earlier frames recorded into the same images: their writes (and, without MSAA, the tonemap's reads
   // of the HDR image) finish before the transitions discard the contents.
-  vk::imageBarrier(cmd, targets_.hdr.handle(), VK_IMAGE_ASPECT_COLOR_BIT,
+  vk::imageBarrier(ctx_, cmd, targets_.hdr.handle(), VK_IMAGE_ASPECT_COLOR_BIT,
                    msaa ? vk::ImageUse::ColorAttachmentDiscard : vk::ImageUse::FragmentSampledDiscard,
                    vk::ImageUse::ColorAttachment);
-  vk::imageBarrier(cmd, targets_.depth.handle(), VK_IMAGE_ASPECT_DEPTH_BIT, vk::ImageUse::DepthAttachmentDiscard,
+  vk::imageBarrier(ctx_, cmd, targets_.depth.handle(), VK_IMAGE_ASPECT_DEPTH_BIT, vk::ImageUse::DepthAttachmentDiscard,
                    vk::ImageUse::DepthAttachment);
   // The previous frame's tonemap may still sample the HDR input: wait for it before discarding it.
   if (msaa)
-    vk::imageBarrier(cmd, targets_.resolved.handle(), VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::FragmentSampledDiscard,
+    vk::imageBarrier(ctx_, cmd, targets_.resolved.handle(), VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::FragmentSampledDiscard,
                      vk::ImageUse::ColorAttachment);
   VkRenderingAttachmentInfo color = colorAttachment(targets_.hdr.view(), kBackground);
   if (msaa) {
@@ -137,21 +138,21 @@ void OffscreenRenderer::recordScene(VkCommandBuffer cmd, const std::function<voi
   VkRenderingAttachmentInfo depth =
       depthAttachment(targets_.depth.view(), VK_ATTACHMENT_LOAD_OP_CLEAR, VK_ATTACHMENT_STORE_OP_DONT_CARE);
   VkRenderingInfo info = renderingInfo(extent(), &color, &depth);
-  vkCmdBeginRendering(cmd, &info);
+  ctx_.fn().vkCmdBeginRendering(cmd, &info);
   draws(cmd);
-  vkCmdEndRendering(cmd);
-  vk::imageBarrier(cmd, hdrInput().handle(), VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::ColorAttachment,
+  ctx_.fn().vkCmdEndRendering(cmd);
+  vk::imageBarrier(ctx_, cmd, hdrInput().handle(), VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::ColorAttachment,
                    vk::ImageUse::FragmentSampled);
 }
 
 void OffscreenRenderer::recordTonemap(VkCommandBuffer cmd, float exposure) const {
-  vk::imageBarrier(cmd, targets_.display.handle(), VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::ColorAttachmentDiscard,
+  vk::imageBarrier(ctx_, cmd, targets_.display.handle(), VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::ColorAttachmentDiscard,
                    vk::ImageUse::ColorAttachment);
   VkRenderingAttachmentInfo color = colorAttachment(targets_.display.view(), {{0, 0, 0, 1}});
   VkRenderingInfo info = renderingInfo(extent(), &color, nullptr);
-  vkCmdBeginRendering(cmd, &info);
+  ctx_.fn().vkCmdBeginRendering(cmd, &info);
   tonemap_.draw(cmd, extent(), exposure);
-  vkCmdEndRendering(cmd);
+  ctx_.fn().vkCmdEndRendering(cmd);
 }
 
 std::vector<std::uint8_t> OffscreenRenderer::readDisplay() const {

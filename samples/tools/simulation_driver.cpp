@@ -38,7 +38,7 @@ void SimulationDriver::runFrames(std::uint32_t count, const std::function<void(s
       if (timed) profiler_.reset(cmd);
       for (std::uint32_t i = 0; i < batch; ++i) {
         // Each frame reads and writes what the previous one wrote.
-        vk::memoryBarrier(cmd, vk::BufferUse::ComputeWrite, vk::BufferUse::ComputeWrite);
+        vk::memoryBarrier(ctx_, cmd, vk::BufferUse::ComputeWrite, vk::BufferUse::ComputeWrite);
         pass_.record(cmd, nextMotion(), timed ? &profiler_ : nullptr);
         ++frame_;
       }

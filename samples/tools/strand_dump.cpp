@@ -17,10 +17,10 @@ vk::Buffer uploadGuideParticles(const vk::Context& ctx, const GuideSet& guides, 
   return buffer;
 }
 
-void recordStrandPasses(VkCommandBuffer cmd, const TessellatePass& tessellate, const InterpolatePass& interpolate,
+void recordStrandPasses(const vk::Context& ctx, VkCommandBuffer cmd, const TessellatePass& tessellate, const InterpolatePass& interpolate,
                         vk::GpuProfiler* profiler) {
   tessellate.record(cmd, profiler);
-  vk::memoryBarrier(cmd, vk::BufferUse::ComputeWrite, vk::BufferUse::ComputeRead);
+  vk::memoryBarrier(ctx, cmd, vk::BufferUse::ComputeWrite, vk::BufferUse::ComputeRead);
   interpolate.record(cmd, profiler);
 }
 
@@ -47,7 +47,7 @@ StrandRun computeRenderStrands(const vk::Context& ctx, const HairAsset& asset, c
   vk::GpuProfiler profiler(ctx, 4, "strand passes");
   vk::submitAndWait(ctx, [&](VkCommandBuffer cmd) {
     profiler.reset(cmd);
-    recordStrandPasses(cmd, tessellate, interpolate, &profiler);
+    recordStrandPasses(ctx, cmd, tessellate, interpolate, &profiler);
   }, "strand passes");
   StrandRun run{buffers.layout(), renderStrandsToHairData(ctx, buffers, vk::BufferUse::ComputeWrite, info),
                 profiler.results()};

@@ -20,7 +20,7 @@ vk::Buffer uploadGuideParticles(const vk::Context& ctx, const GuideSet& guides,
 
 // Records tessellate, the ComputeWrite -> ComputeRead barrier on the smoothed guides, interpolate.
 // Before: guide particles in ComputeRead. After: render strands in ComputeWrite.
-void recordStrandPasses(VkCommandBuffer cmd, const TessellatePass& tessellate, const InterpolatePass& interpolate,
+void recordStrandPasses(const vk::Context& ctx, VkCommandBuffer cmd, const TessellatePass& tessellate, const InterpolatePass& interpolate,
                         vk::GpuProfiler* profiler = nullptr);
 
 // The render strands now in `buffers` (last GPU use `before`) as .hair data: Q points per strand.

@@ -28,6 +28,6 @@ void TonemapPass::setInput(VkImageView hdr) { set_.writeSampledImage(gpu::TONEMA
 void TonemapPass::draw(VkCommandBuffer cmd, VkExtent2D extent, float exposure) const {
   pipeline_.bind(cmd, set_.set(), extent);
   pipeline_.push(cmd, gpu::TonemapPush{exposure, 0, 0, 0});
-  vkCmdDraw(cmd, 3, 1, 0, 0);
+  pipeline_.draw(cmd, 3);
 }
 }  // namespace hp::render

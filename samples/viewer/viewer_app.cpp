@@ -298,16 +298,16 @@ DrawView Viewer::makeView() const {
 void Viewer::blitAndOverlay(VkCommandBuffer cmd, std::uint32_t image, std::uint32_t slotIndex, bool screenshot) {
   const VkImage display = targets_->display().handle(), target = swapchain_->image(image);
   const VkExtent2D e = swapchain_->extent();
-  vk::imageBarrier(cmd, display, VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::ColorAttachment, vk::ImageUse::TransferSrc);
-  vk::imageBarrier(cmd, target, VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::SwapchainAcquired, vk::ImageUse::TransferDst);
+  vk::imageBarrier(*ctx_, cmd, display, VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::ColorAttachment, vk::ImageUse::TransferSrc);
+  vk::imageBarrier(*ctx_, cmd, target, VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::SwapchainAcquired, vk::ImageUse::TransferDst);
   VkImageBlit region{};
   region.srcSubresource = region.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
   region.srcOffsets[1] = region.dstOffsets[1] = {std::int32_t(e.width), std::int32_t(e.height), 1};
   vkCmdBlitImage(cmd, display, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, target, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1,
                  &region, VK_FILTER_NEAREST);
   // Back to what the next frame's tonemap transition expects (it discards from a colour attachment).
-  vk::imageBarrier(cmd, display, VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::TransferSrc, vk::ImageUse::ColorAttachment);
-  vk::imageBarrier(cmd, target, VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::TransferDst, vk::ImageUse::ColorAttachment);
+  vk::imageBarrier(*ctx_, cmd, display, VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::TransferSrc, vk::ImageUse::ColorAttachment);
+  vk::imageBarrier(*ctx_, cmd, target, VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::TransferDst, vk::ImageUse::ColorAttachment);
   VkRenderingAttachmentInfo color{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
   color.imageView = swapchain_->view(image);
   color.imageLayout = vk::imageLayout(vk::ImageUse::ColorAttachment);
@@ -322,16 +322,16 @@ void Viewer::blitAndOverlay(VkCommandBuffer cmd, std::uint32_t image, std::uint3
   overlay_->draw(cmd, slotIndex, *ImGui::GetDrawData(), e);
   vkCmdEndRendering(cmd);
   if (!screenshot) {
-    vk::imageBarrier(cmd, target, VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::ColorAttachment, vk::ImageUse::Present);
+    vk::imageBarrier(*ctx_, cmd, target, VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::ColorAttachment, vk::ImageUse::Present);
     return;
   }
-  vk::imageBarrier(cmd, target, VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::ColorAttachment, vk::ImageUse::TransferSrc);
+  vk::imageBarrier(*ctx_, cmd, target, VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::ColorAttachment, vk::ImageUse::TransferSrc);
   VkBufferImageCopy copy{};
   copy.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
   copy.imageExtent = {e.width, e.height, 1};
   vkCmdCopyImageToBuffer(cmd, target, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, screenshot_.handle(), 1, &copy);
-  vk::bufferBarrier(cmd, screenshot_.handle(), vk::BufferUse::TransferDst, vk::BufferUse::HostRead);
-  vk::imageBarrier(cmd, target, VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::TransferSrc, vk::ImageUse::Present);
+  vk::bufferBarrier(*ctx_, cmd, screenshot_.handle(), vk::BufferUse::TransferDst, vk::BufferUse::HostRead);
+  vk::imageBarrier(*ctx_, cmd, target, VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::TransferSrc, vk::ImageUse::Present);
 }
 
 void Viewer::record(FrameSlot& slot, std::uint32_t image, std::uint32_t slotIndex, bool screenshot) {

@@ -163,13 +163,13 @@ TEST_F(InterpolateTest, RebindsToReallocatedBuffersAfterADensityChange) {
                                                           asset.topology);
   compute::TessellatePass tessellate(*ctx, particles, *buffers);
   compute::InterpolatePass interpolate(*ctx, *buffers);
-  vk::submitAndWait(*ctx, [&](VkCommandBuffer cmd) { compute::recordStrandPasses(cmd, tessellate, interpolate); },
+  vk::submitAndWait(*ctx, [&](VkCommandBuffer cmd) { compute::recordStrandPasses(*ctx, cmd, tessellate, interpolate); },
                     "first density");
   buffers = std::make_unique<compute::StrandBuffers>(*ctx, guides.guideCount(), guides.particlesPerGuide,
                                                      denser.topology);
   tessellate.bind(particles, *buffers);
   interpolate.bind(*buffers);
-  vk::submitAndWait(*ctx, [&](VkCommandBuffer cmd) { compute::recordStrandPasses(cmd, tessellate, interpolate); },
+  vk::submitAndWait(*ctx, [&](VkCommandBuffer cmd) { compute::recordStrandPasses(*ctx, cmd, tessellate, interpolate); },
                     "second density");
   compute::StrandData got = compute::readRenderStrands(*ctx, *buffers, vk::BufferUse::ComputeWrite);
   test::GpuStrands fresh = test::runStrandPasses(*ctx, denser, {});
@@ -185,7 +185,7 @@ TEST_F(InterpolateTest, HundredThousandStrandsOfThirtySixVerticesInSeconds) {
   compute::TessellatePass tessellate(*ctx, particles, buffers);
   compute::InterpolatePass interpolate(*ctx, buffers);
   auto start = std::chrono::steady_clock::now();
-  vk::submitAndWait(*ctx, [&](VkCommandBuffer cmd) { compute::recordStrandPasses(cmd, tessellate, interpolate); },
+  vk::submitAndWait(*ctx, [&](VkCommandBuffer cmd) { compute::recordStrandPasses(*ctx, cmd, tessellate, interpolate); },
                     "100k strands");
   double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   EXPECT_LT(seconds, 3.0);

@@ -106,7 +106,7 @@ GpuStrands runStrandPasses(const vk::Context& ctx, const HairAsset& asset, const
   vk::Buffer particles = compute::uploadGuideParticles(ctx, guides);
   compute::TessellatePass tessellate(ctx, particles, buffers);
   compute::InterpolatePass interpolate(ctx, buffers);
-  vk::submitAndWait(ctx, [&](VkCommandBuffer cmd) { compute::recordStrandPasses(cmd, tessellate, interpolate); },
+  vk::submitAndWait(ctx, [&](VkCommandBuffer cmd) { compute::recordStrandPasses(ctx, cmd, tessellate, interpolate); },
                     "strand passes test");
   // The smoothed guides' last use was the interpolate pass's read.
   return {buffers.layout(), compute::readSmoothedGuides(ctx, buffers, vk::BufferUse::ComputeRead),

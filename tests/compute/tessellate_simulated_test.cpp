@@ -29,8 +29,8 @@ TEST_F(TessellateSimulatedTest, SmoothGuidesFollowTheSimulatedParticles) {
   compute::TessellatePass tessellate(*ctx, simulate.positions(), buffers);
   compute::InterpolatePass interpolate(*ctx, buffers);
   vk::submitAndWait(*ctx, [&](VkCommandBuffer cmd) {
-    vk::memoryBarrier(cmd, vk::BufferUse::ComputeWrite, vk::BufferUse::ComputeRead);  // simulate -> tessellate
-    compute::recordStrandPasses(cmd, tessellate, interpolate);
+    vk::memoryBarrier(*ctx, cmd, vk::BufferUse::ComputeWrite, vk::BufferUse::ComputeRead);  // simulate -> tessellate
+    compute::recordStrandPasses(*ctx, cmd, tessellate, interpolate);
   }, "simulated strands");
 
   GuideSet simulated;

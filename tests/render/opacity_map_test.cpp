@@ -65,9 +65,9 @@ struct ShadowRig {
     framing.marginTexels = marginTexels;
     hp::vk::submitAndWait(ctx, [&](VkCommandBuffer cmd) {
       // The uploads were transfers of an earlier submission; the bounds read them in compute.
-      hp::vk::memoryBarrier(cmd, hp::vk::BufferUse::TransferDst, hp::vk::BufferUse::ComputeRead);
+      hp::vk::memoryBarrier(ctx, cmd, hp::vk::BufferUse::TransferDst, hp::vk::BufferUse::ComputeRead);
       const hp::ShadowCaster caster{bounds.get(), opacity.get(), glm::mat4(1.0f)};
-      hp::recordShadowPasses(cmd, *maps, std::span(&caster, 1), light, framing);
+      hp::recordShadowPasses(ctx, cmd, *maps, std::span(&caster, 1), light, framing);
     }, "shadow rig");
     return hp::render::captureOpacity(ctx, maps->image(), maps->lightSpace(), maps->settings(),
                                       glm::normalize(light.towardLight));

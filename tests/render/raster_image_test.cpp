@@ -124,7 +124,7 @@ TEST_F(VulkanTest, TheDefaultTileBudgetKeepsEveryEntryAt3840x2160) {
   vk::Buffer particles = compute::uploadGuideParticles(*ctx, asset.guides);
   compute::TessellatePass tessellate(*ctx, particles, strands);
   compute::InterpolatePass interpolate(*ctx, strands);
-  vk::submitAndWait(*ctx, [&](VkCommandBuffer cmd) { compute::recordStrandPasses(cmd, tessellate, interpolate); },
+  vk::submitAndWait(*ctx, [&](VkCommandBuffer cmd) { compute::recordStrandPasses(*ctx, cmd, tessellate, interpolate); },
                     "strands");
   const VkExtent2D extent{3840, 2160};
   const CameraMatrices camera = orbitCamera(scene.camera, float(extent.width) / float(extent.height));

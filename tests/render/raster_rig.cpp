@@ -69,21 +69,21 @@ RasterRig::RasterRig(const vk::Context& c, const compute::StrandBuffers& strands
 void RasterRig::run(float headNdcDepth, bool binOnly) {
   vk::submitAndWait(ctx, [&](VkCommandBuffer cmd) {
     // Uploads were transfers of earlier submissions; the rasterizer reads them in compute.
-    vk::memoryBarrier(cmd, vk::BufferUse::TransferDst, vk::BufferUse::ComputeRead);
-    vk::imageBarrier(cmd, shadows.image().handle(), VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::FragmentSampled,
+    vk::memoryBarrier(ctx, cmd, vk::BufferUse::TransferDst, vk::BufferUse::ComputeRead);
+    vk::imageBarrier(ctx, cmd, shadows.image().handle(), VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::FragmentSampled,
                      vk::ImageUse::ComputeSampled, gpu::OPACITY_TARGETS);
-    vk::imageBarrier(cmd, depth.handle(), VK_IMAGE_ASPECT_DEPTH_BIT, vk::ImageUse::Undefined,
+    vk::imageBarrier(ctx, cmd, depth.handle(), VK_IMAGE_ASPECT_DEPTH_BIT, vk::ImageUse::Undefined,
                      vk::ImageUse::TransferDst);
     const VkClearDepthStencilValue clear{headNdcDepth, 0};
     const VkImageSubresourceRange range{VK_IMAGE_ASPECT_DEPTH_BIT, 0, 1, 0, 1};
-    vkCmdClearDepthStencilImage(cmd, depth.handle(), vk::imageLayout(vk::ImageUse::TransferDst), &clear, 1, &range);
-    vk::imageBarrier(cmd, depth.handle(), VK_IMAGE_ASPECT_DEPTH_BIT, vk::ImageUse::TransferDst,
+    ctx.fn().vkCmdClearDepthStencilImage(cmd, depth.handle(), vk::imageLayout(vk::ImageUse::TransferDst), &clear, 1, &range);
+    vk::imageBarrier(ctx, cmd, depth.handle(), VK_IMAGE_ASPECT_DEPTH_BIT, vk::ImageUse::TransferDst,
                      vk::ImageUse::ComputeSampled);
     if (binOnly)
       pass->recordBinning(cmd);
     else
       pass->record(cmd);
-    vk::imageBarrier(cmd, shadows.image().handle(), VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::ComputeSampled,
+    vk::imageBarrier(ctx, cmd, shadows.image().handle(), VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::ComputeSampled,
                      vk::ImageUse::FragmentSampled, gpu::OPACITY_TARGETS);
   }, "raster rig");
 }

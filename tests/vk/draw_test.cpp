@@ -38,7 +38,7 @@ TEST_F(VulkanTest, DynamicRenderingDrawIsPixelExact) {
   GraphicsPipeline pipeline(*ctx, desc);
 
   submitAndWait(*ctx, [&](VkCommandBuffer cmd) {
-    imageBarrier(cmd, target.handle(), target.aspect(), ImageUse::Undefined, ImageUse::ColorAttachment);
+    imageBarrier(*ctx, cmd, target.handle(), target.aspect(), ImageUse::Undefined, ImageUse::ColorAttachment);
     VkRenderingAttachmentInfo color{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
     color.imageView = target.view();
     color.imageLayout = imageLayout(ImageUse::ColorAttachment);
@@ -50,11 +50,11 @@ TEST_F(VulkanTest, DynamicRenderingDrawIsPixelExact) {
     info.layerCount = 1;
     info.colorAttachmentCount = 1;
     info.pColorAttachments = &color;
-    vkCmdBeginRendering(cmd, &info);
+    ctx->fn().vkCmdBeginRendering(cmd, &info);
     pipeline.bind(cmd, set.set(), {w, h});
     pipeline.push(cmd, hp::gpu::FlatDrawPush{{1.0f, 0.5f, 0.0f, 1.0f}, {float(w), float(h)}, {}});
-    vkCmdDraw(cmd, 6, 1, 0, 0);
-    vkCmdEndRendering(cmd);
+    ctx->fn().vkCmdDraw(cmd, 6, 1, 0, 0);
+    ctx->fn().vkCmdEndRendering(cmd);
   }, "flat draw");
 
   auto pixels = readbackImage(*ctx, target, ImageUse::ColorAttachment);

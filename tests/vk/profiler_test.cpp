@@ -20,12 +20,12 @@ TEST_F(VulkanTest, TimestampProfilerReturnsPositiveOrderedNestedTimes) {
     profiler.reset(cmd);
     profiler.begin(cmd, "outer");
     profiler.begin(cmd, "fill");
-    vkCmdFillBuffer(cmd, a.handle(), 0, size, 0x01020304u);
+    ctx->fn().vkCmdFillBuffer(cmd, a.handle(), 0, size, 0x01020304u);
     profiler.end(cmd);
-    bufferBarrier(cmd, a.handle(), BufferUse::TransferDst, BufferUse::TransferSrc);
+    bufferBarrier(*ctx, cmd, a.handle(), BufferUse::TransferDst, BufferUse::TransferSrc);
     profiler.begin(cmd, "copy");
     VkBufferCopy region{0, 0, size};
-    vkCmdCopyBuffer(cmd, a.handle(), b.handle(), 1, &region);
+    ctx->fn().vkCmdCopyBuffer(cmd, a.handle(), b.handle(), 1, &region);
     profiler.end(cmd);
     profiler.end(cmd);
   }, "profiled work");

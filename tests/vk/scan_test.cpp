@@ -63,13 +63,13 @@ TEST_F(VulkanTest, InclusivePrefixSumOfOneMillionWordsMatchesCpu) {
       scan.bind(cmd, level.set.set());
       scan.push(cmd, hp::gpu::ScanPush{level.count});
       scan.dispatch(cmd, level.count);
-      memoryBarrier(cmd, BufferUse::ComputeWrite, BufferUse::ComputeWrite);
+      memoryBarrier(*ctx, cmd, BufferUse::ComputeWrite, BufferUse::ComputeWrite);
     }
     for (auto it = levels.rbegin(); it != levels.rend(); ++it) {  // up: add scanned totals of earlier blocks
       add.bind(cmd, it->set.set());
       add.push(cmd, hp::gpu::ScanPush{it->count});
       add.dispatch(cmd, it->count);
-      memoryBarrier(cmd, BufferUse::ComputeWrite, BufferUse::ComputeWrite);
+      memoryBarrier(*ctx, cmd, BufferUse::ComputeWrite, BufferUse::ComputeWrite);
     }
   }, "prefix sum");
 

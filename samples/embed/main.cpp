@@ -1,0 +1,471 @@
+// The embedding sample: an application that owns its Vulkan instance, device, queue, attachments and
+// command buffers, built against the installed package (find_package(hairpipe), <hairpipe/...> headers).
+// The application:
+//   1. creates its Vulkan 1.3 device (dynamicRendering + synchronization2, a graphics+compute queue) and
+//      loads it into volk's global functions for its own calls, as engines using volk do,
+//   2. hands the handles to hp::vk::Context::adopt (hairpipe keeps its own per-device function table) and
+//      creates one hp::Renderer for its attachment formats,
+//   3. creates two hair instances: one whose lower scalp is skinned to a jaw/neck bone, one rigid head,
+//   4. each frame records hairpipe's update, shadows and draw into ITS command buffer and ITS rendering,
+//      with two frames in flight (a command buffer and fence per slot),
+//   5. reads its colour attachment back, writes a PNG (libpng, its own), destroys hairpipe before its device.
+// Usage: hairpipe_embed [--validation] [--frames N] [--out FILE.png]
+// With --validation, VK_LAYER_KHRONOS_validation runs with synchronization validation; any message fails.
+#include <png.h>
+#include <volk.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <iostream>
+#include <span>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <hairpipe/error.h>
+#include <hairpipe/hair/default_head.h>
+#include <hairpipe/hair/head_sdf.h>
+#include <hairpipe/renderer.h>
+#include <hairpipe/shading/material_color.h>
+#include <hairpipe/sim/head_animation.h>
+#include <hairpipe/vk/context.h>
+#include <hairpipe/vk/device_probe.h>
+
+namespace {
+constexpr std::uint32_t kWidth = 160, kHeight = 120;
+constexpr VkFormat kColor = VK_FORMAT_R8G8B8A8_UNORM;  // the app's own choice of formats
+constexpr VkFormat kDepth = VK_FORMAT_D32_SFLOAT;
+constexpr std::uint32_t kFramesInFlight = 2;
+
+void check(VkResult result, const char* what) {
+  if (result != VK_SUCCESS) throw std::runtime_error(std::string(what) + " failed: VkResult " + std::to_string(result));
+}
+
+std::uint32_t validationMessages = 0;
+VKAPI_ATTR VkBool32 VKAPI_CALL onMessage(VkDebugUtilsMessageSeverityFlagBitsEXT, VkDebugUtilsMessageTypeFlagsEXT,
+                                         const VkDebugUtilsMessengerCallbackDataEXT* data, void*) {
+  std::cerr << "validation: " << data->pMessage << "\n";
+  ++validationMessages;
+  return VK_FALSE;
+}
+
+// Synchronization validation is off by default in the layer; VkValidationFeaturesEXT turns it on.
+constexpr VkValidationFeatureEnableEXT kSyncValidation = VK_VALIDATION_FEATURE_ENABLE_SYNCHRONIZATION_VALIDATION_EXT;
+
+// An image with its memory and view, created and destroyed by the application.
+struct Attachment {
+  VkImage image = VK_NULL_HANDLE;
+  VkDeviceMemory memory = VK_NULL_HANDLE;
+  VkImageView view = VK_NULL_HANDLE;
+};
+
+// Everything the application owns, created and destroyed by the application with plain Vulkan.
+struct App {
+  VkInstance instance = VK_NULL_HANDLE;
+  VkDebugUtilsMessengerEXT messenger = VK_NULL_HANDLE;
+  VkPhysicalDevice physical = VK_NULL_HANDLE;
+  VkDevice device = VK_NULL_HANDLE;
+  std::uint32_t family = 0;
+  VkQueue queue = VK_NULL_HANDLE;
+  VkCommandPool pool = VK_NULL_HANDLE;
+  VkCommandBuffer cmds[kFramesInFlight] = {};
+  VkFence fences[kFramesInFlight] = {};
+  bool pending[kFramesInFlight] = {};
+  Attachment color, depth;
+
+  void createInstance(bool validation) {
+    check(volkInitialize(), "volkInitialize (no Vulkan loader)");
+    VkApplicationInfo appInfo{VK_STRUCTURE_TYPE_APPLICATION_INFO};
+    appInfo.pApplicationName = "hairpipe_embed";
+    appInfo.apiVersion = VK_API_VERSION_1_3;
+    const char* layer = "VK_LAYER_KHRONOS_validation";
+    const char* ext = VK_EXT_DEBUG_UTILS_EXTENSION_NAME;
+    VkValidationFeaturesEXT features{VK_STRUCTURE_TYPE_VALIDATION_FEATURES_EXT};
+    features.enabledValidationFeatureCount = 1;
+    features.pEnabledValidationFeatures = &kSyncValidation;
+    VkInstanceCreateInfo ii{VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO, validation ? &features : nullptr};
+    ii.pApplicationInfo = &appInfo;
+    ii.enabledLayerCount = validation ? 1 : 0;
+    ii.ppEnabledLayerNames = &layer;
+    ii.enabledExtensionCount = 1;
+    ii.ppEnabledExtensionNames = &ext;
+    check(vkCreateInstance(&ii, nullptr, &instance), "vkCreateInstance");
+    volkLoadInstance(instance);
+    if (validation) {
+      VkDebugUtilsMessengerCreateInfoEXT mi{VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
+      mi.messageSeverity = VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
+      mi.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT;
+      mi.pfnUserCallback = onMessage;
+      check(vkCreateDebugUtilsMessengerEXT(instance, &mi, nullptr, &messenger), "vkCreateDebugUtilsMessengerEXT");
+    }
+  }
+
+  void pickDevice() {
+    std::uint32_t count = 0;
+    check(vkEnumeratePhysicalDevices(instance, &count, nullptr), "vkEnumeratePhysicalDevices");
+    std::vector<VkPhysicalDevice> devices(count);
+    check(vkEnumeratePhysicalDevices(instance, &count, devices.data()), "vkEnumeratePhysicalDevices");
+    for (VkPhysicalDevice d : devices)  // the first device hairpipe can run on
+      if (hp::vk::unfitReasons(d).empty()) {
+        physical = d;
+        break;
+      }
+    if (!physical) throw std::runtime_error("no Vulkan device fit for hairpipe");
+    std::uint32_t families = 0;
+    vkGetPhysicalDeviceQueueFamilyProperties(physical, &families, nullptr);
+    std::vector<VkQueueFamilyProperties> props(families);
+    vkGetPhysicalDeviceQueueFamilyProperties(physical, &families, props.data());
+    constexpr VkQueueFlags kNeeded = VK_QUEUE_GRAPHICS_BIT | VK_QUEUE_COMPUTE_BIT;
+    while (family < families && (props[family].queueFlags & kNeeded) != kNeeded) ++family;
+    if (family == families) throw std::runtime_error("no graphics+compute queue");
+  }
+
+  void createDevice() {
+    float priority = 1.0f;
+    VkDeviceQueueCreateInfo qi{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
+    qi.queueFamilyIndex = family;
+    qi.queueCount = 1;
+    qi.pQueuePriorities = &priority;
+    VkPhysicalDeviceVulkan13Features v13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
+    v13.dynamicRendering = VK_TRUE;  // what hp::vk::requirements() lists
+    v13.synchronization2 = VK_TRUE;
+    VkDeviceCreateInfo di{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO, &v13};
+    di.queueCreateInfoCount = 1;
+    di.pQueueCreateInfos = &qi;
+    check(vkCreateDevice(physical, &di, nullptr, &device), "vkCreateDevice");
+    volkLoadDevice(device);  // the application's own calls go through volk's globals
+    vkGetDeviceQueue(device, family, 0, &queue);
+    VkCommandPoolCreateInfo pi{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
+    pi.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
+    pi.queueFamilyIndex = family;
+    check(vkCreateCommandPool(device, &pi, nullptr, &pool), "vkCreateCommandPool");
+    VkCommandBufferAllocateInfo ai{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
+    ai.commandPool = pool;
+    ai.commandBufferCount = kFramesInFlight;
+    check(vkAllocateCommandBuffers(device, &ai, cmds), "vkAllocateCommandBuffers");
+    VkFenceCreateInfo fi{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
+    for (VkFence& f : fences) check(vkCreateFence(device, &fi, nullptr, &f), "vkCreateFence");
+  }
+
+  std::uint32_t memoryType(std::uint32_t bits, VkMemoryPropertyFlags flags) const {
+    VkPhysicalDeviceMemoryProperties props;
+    vkGetPhysicalDeviceMemoryProperties(physical, &props);
+    for (std::uint32_t i = 0; i < props.memoryTypeCount; ++i)
+      if ((bits & (1u << i)) && (props.memoryTypes[i].propertyFlags & flags) == flags) return i;
+    throw std::runtime_error("no suitable memory type");
+  }
+
+  VkDeviceMemory allocate(const VkMemoryRequirements& req, VkMemoryPropertyFlags flags) const {
+    VkMemoryAllocateInfo mi{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
+    mi.allocationSize = req.size;
+    mi.memoryTypeIndex = memoryType(req.memoryTypeBits, flags);
+    VkDeviceMemory memory = VK_NULL_HANDLE;
+    check(vkAllocateMemory(device, &mi, nullptr, &memory), "vkAllocateMemory");
+    return memory;
+  }
+
+  Attachment createAttachment(VkFormat format, VkImageUsageFlags usage, VkImageAspectFlags aspect) const {
+    Attachment a;
+    VkImageCreateInfo ii{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
+    ii.imageType = VK_IMAGE_TYPE_2D;
+    ii.format = format;
+    ii.extent = {kWidth, kHeight, 1};
+    ii.mipLevels = ii.arrayLayers = 1;
+    ii.samples = VK_SAMPLE_COUNT_1_BIT;
+    ii.usage = usage;
+    check(vkCreateImage(device, &ii, nullptr, &a.image), "vkCreateImage");
+    VkMemoryRequirements req;
+    vkGetImageMemoryRequirements(device, a.image, &req);
+    a.memory = allocate(req, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+    check(vkBindImageMemory(device, a.image, a.memory, 0), "vkBindImageMemory");
+    VkImageViewCreateInfo vi{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
+    vi.image = a.image;
+    vi.viewType = VK_IMAGE_VIEW_TYPE_2D;
+    vi.format = format;
+    vi.subresourceRange = {aspect, 0, 1, 0, 1};
+    check(vkCreateImageView(device, &vi, nullptr, &a.view), "vkCreateImageView");
+    return a;
+  }
+
+  void destroyAttachment(Attachment& a) const {
+    if (a.view) vkDestroyImageView(device, a.view, nullptr);
+    if (a.image) vkDestroyImage(device, a.image, nullptr);
+    if (a.memory) vkFreeMemory(device, a.memory, nullptr);
+    a = {};
+  }
+
+  // The slot's previous frame (frame - kFramesInFlight) is done: its command buffer is free again.
+  void waitSlot(std::uint32_t slot) {
+    if (!pending[slot]) return;
+    check(vkWaitForFences(device, 1, &fences[slot], VK_TRUE, UINT64_MAX), "vkWaitForFences");
+    check(vkResetFences(device, 1, &fences[slot]), "vkResetFences");
+    pending[slot] = false;
+  }
+
+  void submit(std::uint32_t slot) {
+    VkCommandBufferSubmitInfo ci{VK_STRUCTURE_TYPE_COMMAND_BUFFER_SUBMIT_INFO};
+    ci.commandBuffer = cmds[slot];
+    VkSubmitInfo2 si{VK_STRUCTURE_TYPE_SUBMIT_INFO_2};
+    si.commandBufferInfoCount = 1;
+    si.pCommandBufferInfos = &ci;
+    check(vkQueueSubmit2(queue, 1, &si, fences[slot]), "vkQueueSubmit2");
+    pending[slot] = true;
+  }
+
+  void destroy() {
+    if (device) vkDeviceWaitIdle(device);
+    if (device) destroyAttachment(color);
+    if (device) destroyAttachment(depth);
+    for (VkFence f : fences)
+      if (f) vkDestroyFence(device, f, nullptr);
+    if (pool) vkDestroyCommandPool(device, pool, nullptr);
+    if (device) vkDestroyDevice(device, nullptr);
+    if (messenger) vkDestroyDebugUtilsMessengerEXT(instance, messenger, nullptr);
+    if (instance) vkDestroyInstance(instance, nullptr);
+    *this = {};
+  }
+};
+
+// One image layout transition (and its memory dependency) with synchronization2.
+void transition(VkCommandBuffer cmd, VkImage image, VkImageAspectFlags aspect, VkImageLayout from, VkImageLayout to,
+                VkPipelineStageFlags2 srcStage, VkAccessFlags2 srcAccess, VkPipelineStageFlags2 dstStage,
+                VkAccessFlags2 dstAccess) {
+  VkImageMemoryBarrier2 b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2};
+  b.srcStageMask = srcStage;
+  b.srcAccessMask = srcAccess;
+  b.dstStageMask = dstStage;
+  b.dstAccessMask = dstAccess;
+  b.oldLayout = from;
+  b.newLayout = to;
+  b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+  b.image = image;
+  b.subresourceRange = {aspect, 0, 1, 0, 1};
+  VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
+  dep.imageMemoryBarrierCount = 1;
+  dep.pImageMemoryBarriers = &b;
+  vkCmdPipelineBarrier2(cmd, &dep);
+}
+
+// Both frames in flight render into the same attachments: each frame discards them (layout UNDEFINED)
+// after the previous frame's attachment writes (and, for colour, the readback copy) are done.
+void beginAttachments(VkCommandBuffer cmd, const App& app) {
+  constexpr VkPipelineStageFlags2 kDepthStages =
+      VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT;
+  transition(cmd, app.color.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+             VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+             VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT | VK_PIPELINE_STAGE_2_COPY_BIT,
+             VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+             VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT);
+  transition(cmd, app.depth.image, VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+             VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, kDepthStages, VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
+             kDepthStages,
+             VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT | VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT);
+}
+
+VkRenderingAttachmentInfo attachmentInfo(VkImageView view, VkImageLayout layout, VkAttachmentStoreOp store,
+                                         VkClearValue clear) {
+  VkRenderingAttachmentInfo a{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+  a.imageView = view;
+  a.imageLayout = layout;
+  a.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+  a.storeOp = store;
+  a.clearValue = clear;
+  return a;
+}
+
+// [embed-readme-begin]
+// One frame of the application: hairpipe's update and shadows outside rendering, then the application's
+// own rendering (its colour + depth attachments) with hairpipe's draw inside it.
+void recordFrame(VkCommandBuffer cmd, const App& app, hp::Renderer& renderer, std::uint64_t frame,
+                 std::span<hp::HairInstance* const> heads, const hp::LightSpec& light, const hp::View& view) {
+  VkCommandBufferBeginInfo bi{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+  bi.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+  check(vkBeginCommandBuffer(cmd, &bi), "vkBeginCommandBuffer");
+  renderer.recordUpdate(cmd, frame, heads);          // simulate, tessellate, interpolate
+  renderer.recordShadows(cmd, frame, light, heads);  // one opacity map set: heads shadow each other
+  beginAttachments(cmd, app);
+  VkRenderingAttachmentInfo color = attachmentInfo(app.color.view, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                                                   VK_ATTACHMENT_STORE_OP_STORE, {{{0.2f, 0.25f, 0.3f, 1.0f}}});
+  VkClearValue far{};
+  far.depthStencil = {1.0f, 0};
+  VkRenderingAttachmentInfo depth = attachmentInfo(app.depth.view, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL,
+                                                   VK_ATTACHMENT_STORE_OP_DONT_CARE, far);
+  VkRenderingInfo ri{VK_STRUCTURE_TYPE_RENDERING_INFO};
+  ri.renderArea = {{0, 0}, {kWidth, kHeight}};
+  ri.layerCount = 1;
+  ri.colorAttachmentCount = 1;
+  ri.pColorAttachments = &color;
+  ri.pDepthAttachment = &depth;
+  vkCmdBeginRendering(cmd, &ri);
+  renderer.recordDraw(cmd, frame, view, heads);      // heads + hair; more views: View::index 1, 2...
+  vkCmdEndRendering(cmd);
+  check(vkEndCommandBuffer(cmd), "vkEndCommandBuffer");
+}
+
+// The jaw/neck bone: pitches the lower scalp around the cranium's centre, +-0.25 rad at 1 Hz.
+glm::mat4 jawBone(const glm::vec3& pivot, double t) {
+  const float angle = 0.25f * float(std::sin(2.0 * 3.14159265358979 * t));
+  return glm::translate(glm::mat4(1.0f), pivot) * glm::rotate(glm::mat4(1.0f), angle, {1, 0, 0}) *
+         glm::translate(glm::mat4(1.0f), -pivot);
+}
+
+// Skinning data as an application's exporter would give it: roots below the cranium's centre follow the
+// jaw bone (1), those well above it the skull (0), blended in between; up to 4 bones per guide root.
+hp::ScalpInput jawSkin(const hp::HairAsset& asset, const glm::vec3& pivot) {
+  hp::ScalpInput scalp;
+  scalp.kind = hp::ScalpInput::Kind::Bones;  // or RootFrames (your skinning's buffer), or Rigid
+  scalp.boneCount = 2;
+  for (std::uint32_t g = 0; g < asset.guides.guideCount(); ++g) {
+    const float w = std::clamp((pivot.y + 0.04f - asset.guides.guide(g)[0].y) / 0.04f, 0.0f, 1.0f);
+    scalp.skin.push_back({glm::uvec4(0, 1, 0, 0), glm::vec4(1.0f - w, w, 0.0f, 0.0f)});
+  }
+  return scalp;
+}
+
+void renderFrames(App& app, std::uint32_t frames) {
+  // Your device: Vulkan 1.3, dynamicRendering + synchronization2 enabled, a graphics+compute queue.
+  auto ctx = hp::vk::Context::adopt(
+      {vkGetInstanceProcAddr, app.instance, app.physical, app.device, app.family, app.queue, true});
+  hp::RendererSettings rs;
+  rs.formats = {kColor, kDepth, VK_SAMPLE_COUNT_1_BIT};  // your attachments
+  rs.framesInFlight = kFramesInFlight;
+  hp::Renderer renderer(*ctx, rs);
+
+  // One asset (guides, head mesh, interpolation topology), two heads with their own state and material.
+  const hp::HairAsset asset =
+      hp::buildDefaultHeadAsset(hp::defaultHeadGrowth(), {hp::DensityOptions::Mode::Total, 8, 2000, 7});
+  const glm::vec3 pivot = hp::kCraniumCenter;  // the jaw bone turns about the cranium's centre
+  hp::InstanceSettings skinned;                // material, simulation, look, strand options
+  skinned.scalp = jawSkin(asset, pivot);
+  hp::InstanceSettings rigid;
+  rigid.material.absorption = hp::absorptionFromColor({0.85, 0.7, 0.45});  // blonde
+  const glm::mat4 rigidPlace = glm::translate(glm::mat4(1.0f), {0.32f, 0.0f, -0.1f});
+  auto jaw = renderer.createInstance(asset, skinned);
+  auto other = renderer.createInstance(asset, rigid, rigidPlace);
+  hp::HairInstance* heads[] = {jaw.get(), other.get()};
+
+  hp::Scene scene;
+  scene.camera.target.x = 0.16f;
+  scene.camera.distance = 1.2f;
+  const hp::View view{hp::orbitCamera(scene.camera, float(kWidth) / kHeight), {kWidth, kHeight}};
+  for (std::uint32_t f = 0; f < frames; ++f) {
+    const std::uint32_t slot = f % kFramesInFlight;
+    app.waitSlot(slot);  // frame f - kFramesInFlight is done: its slot and command buffer are free
+    const double t0 = f / 60.0, t1 = (f + 1) / 60.0;
+    const glm::mat4 bones[] = {glm::mat4(1.0f), jawBone(pivot, t1)};
+    jaw->setBones(bones);  // per-frame inputs: bones, colliders, motion
+    other->setMotion({rigidPlace * hp::headTransformAt(hp::HeadAnimation::Nod, t0, 0.1f),
+                      rigidPlace * hp::headTransformAt(hp::HeadAnimation::Nod, t1, 0.1f), t0, false});
+    recordFrame(app.cmds[slot], app, renderer, f, heads, scene.light, view);
+    app.submit(slot);
+  }
+  for (std::uint32_t slot = 0; slot < kFramesInFlight; ++slot) app.waitSlot(slot);
+}  // hairpipe (instances, renderer, context) is destroyed here, before the application's device
+// [embed-readme-end]
+
+// Copies the colour attachment into a host-visible buffer and returns its RGBA8 texels.
+std::vector<std::uint8_t> readColor(App& app) {
+  const VkDeviceSize bytes = VkDeviceSize(kWidth) * kHeight * 4;
+  VkBufferCreateInfo bi{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
+  bi.size = bytes;
+  bi.usage = VK_BUFFER_USAGE_TRANSFER_DST_BIT;
+  VkBuffer buffer = VK_NULL_HANDLE;
+  check(vkCreateBuffer(app.device, &bi, nullptr, &buffer), "vkCreateBuffer");
+  VkMemoryRequirements req;
+  vkGetBufferMemoryRequirements(app.device, buffer, &req);
+  VkDeviceMemory memory =
+      app.allocate(req, VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
+  check(vkBindBufferMemory(app.device, buffer, memory, 0), "vkBindBufferMemory");
+  VkCommandBuffer cmd = app.cmds[0];
+  VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+  begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+  check(vkBeginCommandBuffer(cmd, &begin), "vkBeginCommandBuffer");
+  transition(cmd, app.color.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+             VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+             VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT);
+  VkBufferImageCopy region{};
+  region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+  region.imageExtent = {kWidth, kHeight, 1};
+  vkCmdCopyImageToBuffer(cmd, app.color.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, buffer, 1, &region);
+  check(vkEndCommandBuffer(cmd), "vkEndCommandBuffer");
+  app.submit(0);
+  app.waitSlot(0);
+  void* mapped = nullptr;
+  check(vkMapMemory(app.device, memory, 0, VK_WHOLE_SIZE, 0, &mapped), "vkMapMemory");
+  std::vector<std::uint8_t> rgba(bytes);
+  std::memcpy(rgba.data(), mapped, bytes);
+  vkUnmapMemory(app.device, memory);
+  vkDestroyBuffer(app.device, buffer, nullptr);
+  vkFreeMemory(app.device, memory, nullptr);
+  return rgba;
+}
+
+// Writes RGBA8 rows as a PNG with libpng; a failed write removes the file.
+void writePng(const std::string& path, const std::vector<std::uint8_t>& rgba) {
+  FILE* file = std::fopen(path.c_str(), "wb");
+  if (!file) throw std::runtime_error("cannot open " + path);
+  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
+  png_infop info = png ? png_create_info_struct(png) : nullptr;
+  if (!info || setjmp(png_jmpbuf(png))) {
+    png_destroy_write_struct(&png, &info);
+    std::fclose(file);
+    std::remove(path.c_str());
+    throw std::runtime_error("writing " + path + " failed");
+  }
+  png_init_io(png, file);
+  png_set_IHDR(png, info, kWidth, kHeight, 8, PNG_COLOR_TYPE_RGBA, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT,
+               PNG_FILTER_TYPE_DEFAULT);
+  png_write_info(png, info);
+  for (std::uint32_t y = 0; y < kHeight; ++y) png_write_row(png, rgba.data() + std::size_t(y) * kWidth * 4);
+  png_write_end(png, nullptr);
+  png_destroy_write_struct(&png, &info);
+  if (std::fclose(file) != 0) throw std::runtime_error("writing " + path + " failed");
+}
+
+int run(bool validation, std::uint32_t frames, const std::string& out) {
+  App app;
+  try {
+    app.createInstance(validation);
+    app.pickDevice();
+    app.createDevice();
+    app.color = app.createAttachment(kColor, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
+                                     VK_IMAGE_ASPECT_COLOR_BIT);
+    app.depth = app.createAttachment(kDepth, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT, VK_IMAGE_ASPECT_DEPTH_BIT);
+    renderFrames(app, frames);
+    writePng(out, readColor(app));
+    app.destroy();
+  } catch (const std::exception& e) {  // hp::Error and the application's own errors
+    std::cerr << "hairpipe_embed: error: " << e.what() << "\n";
+    app.destroy();
+    return 1;
+  }
+  if (validationMessages > 0) {
+    std::cerr << "hairpipe_embed: " << validationMessages << " validation message(s)\n";
+    return 1;
+  }
+  std::cout << "hairpipe_embed: rendered " << frames << " frames of two heads (" << kFramesInFlight
+            << " in flight) into the application's attachments; wrote " << out << "\n";
+  return 0;
+}
+}  // namespace
+
+int main(int argc, char** argv) {
+  bool validation = false;
+  std::uint32_t frames = 30;
+  std::string out = "embed.png";
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (a == "--validation") validation = true;
+    else if (a == "--frames" && i + 1 < argc) frames = static_cast<std::uint32_t>(std::stoul(argv[++i]));
+    else if (a == "--out" && i + 1 < argc) out = argv[++i];
+    else {
+      std::cerr << "usage: hairpipe_embed [--validation] [--frames N] [--out FILE.png]\n";
+      return 1;
+    }
+  }
+  return run(validation, frames, out);
+}
