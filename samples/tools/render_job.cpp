@@ -7,6 +7,7 @@
 #include "samples/tools/offscreen_renderer.h"
 #include "engine/vk/context.h"
 #include "engine/vk/submit.h"
+#include "engine/vk/transfer.h"
 
 namespace hp {
 namespace {
@@ -28,6 +29,20 @@ void validate(const RenderRequest& r) {
   if (r.settleFrames > 100000) throw Error("settle frames must be at most 100000");
   if (!(r.exposure > 0.0f) || !std::isfinite(r.exposure)) throw Error("exposure must be a positive number");
   r.scene.light.validate();  // also catches a hand-built LightSpec that skipped the scene parser
+}
+
+FrameCapture captureFrame(const vk::Context& ctx, const HairSystem& hair, const render::OffscreenRenderer& renderer,
+                          const DrawView& view) {
+  FrameCapture f;
+  f.strands = compute::readRenderStrands(ctx, hair.strands(), vk::BufferUse::VertexRead);
+  f.verticesPerStrand = hair.strands().layout().verticesPerStrand;
+  f.headToWorld = view.headToWorld;
+  f.camera = view.camera;
+  f.linear = renderer.readLinear();
+  if (hair.raster() == RasterMode::Compute)
+    f.hairAlpha = render::rgbOfHalfRgba(vk::readbackImage(ctx, hair.rasterImage(), vk::ImageUse::FragmentSampled),
+                                        renderer.extent(), 3, 1);
+  return f;
 }
 }  // namespace
 
@@ -70,6 +85,7 @@ RenderResult renderStill(const vk::Context& ctx, const HairAsset& asset, const R
   if (request.captureStrands)
     result.strandDump = compute::renderStrandsToHairData(ctx, hair.strands(), vk::BufferUse::VertexRead,
                                                          "hairpipe render: render strands of the drawn frame");
+  if (request.captureFrame) result.frame = captureFrame(ctx, hair, renderer, view);
   if (request.captureOpacity && request.opacity.enabled)
     result.opacity = render::captureOpacity(ctx, hair.shadows().image(), hair.shadows().lightSpace(), request.opacity,
                                             glm::normalize(view.light.direction));

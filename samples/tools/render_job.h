@@ -8,6 +8,7 @@
 
 #include "engine/hair/hair_file.h"
 #include "engine/hair_system.h"
+#include "samples/tools/frame_capture.h"
 #include "samples/tools/opacity_capture.h"
 #include "engine/sim/head_animation.h"
 #include "engine/vk/profiler.h"
@@ -26,6 +27,7 @@ struct RenderRequest {
   compute::RasterSettings rasterSettings;  // the compute raster's tile budget (scene.render.raster picks the path)
   bool captureOpacity = false;      // read the opacity maps and light framing back (RenderResult::opacity)
   bool captureStrands = false;      // read the rendered frame's render strands back (RenderResult::strands)
+  bool captureFrame = false;        // read strands, camera, linear image, hair coverage back (RenderResult::frame)
 };
 
 struct RenderResult {
@@ -40,6 +42,7 @@ struct RenderResult {
   std::optional<compute::RasterStats> rasterStats;   // compute raster: tile-list entries and overflow
   std::optional<render::OpacityCapture> opacity;  // with captureOpacity and shadows on
   std::optional<HairFileData> strandDump;         // with captureStrands: Q points per render strand
+  std::optional<FrameCapture> frame;              // with captureFrame
 };
 
 RenderResult renderStill(const vk::Context& ctx, const HairAsset& asset, const RenderRequest& request);
