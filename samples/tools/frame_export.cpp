@@ -1,13 +1,12 @@
 #include "samples/tools/frame_export.h"
 
 #include <cmath>
-#include <fstream>
-#include <sstream>
 
 #include <nlohmann/json.hpp>
 
 #include "engine/error.h"
 #include "engine/hair/atomic_write.h"
+#include "engine/hair/input_file.h"
 #include "engine/hair/json_reader.h"
 #include "samples/tools/obj_albedo_mesh.h"
 #include "samples/tools/reference/fibre.h"
@@ -81,14 +80,6 @@ nlohmann::json frameJson(const ExportedFrame& f) {
           {"exposure", f.exposure}, {"tonemap", "filmic (shaders/shared/tonemap.h) then sRGB"}};
 }
 
-std::string readText(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw Error("cannot open '" + path.string() + "'");
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 LightSpec readLight(JsonObject o) {
   LightSpec l;
   std::string type;
@@ -146,7 +137,7 @@ void readCamera(JsonObject o, FrameCameraSpec& c) {
 void readFrameJson(ExportedFrame& f, const std::filesystem::path& path) {
   nlohmann::json root;
   try {
-    root = nlohmann::json::parse(readText(path));
+    root = nlohmann::json::parse(readInputText(path, kMaxTextFileBytes));
   } catch (const nlohmann::json::parse_error& e) {
     throw Error(path.string() + ": not valid JSON: " + e.what());
   }

@@ -1,12 +1,14 @@
 #include "samples/tools/linear_image.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
-#include <fstream>
 #include <sstream>
+#include <string_view>
 
 #include "engine/error.h"
 #include "engine/hair/atomic_write.h"
+#include "engine/hair/input_file.h"
 #include "engine/shading/lut_export.h"
 #include "shaders/shared/tonemap.h"
 
@@ -32,23 +34,22 @@ void writePfm(const std::filesystem::path& path, const LinearImage& image) {
 }
 
 LinearImage readPfm(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw Error("cannot open '" + path.string() + "'");
+  const std::vector<std::byte> bytes = readInputBytes(path, kMaxHairFileBytes);
+  const std::string_view text(reinterpret_cast<const char*>(bytes.data()), std::min<std::size_t>(bytes.size(), 128));
+  std::istringstream header{std::string(text)};
   std::string magic;
   long long w = 0, h = 0;
   double scale = 0;
-  in >> magic >> w >> h >> scale;
-  if (!in || (magic != "PF" && magic != "Pf")) throw Error("'" + path.string() + "' is not a PFM file (PF or Pf header)");
+  header >> magic >> w >> h >> scale;
+  if (!header || (magic != "PF" && magic != "Pf")) throw Error("'" + path.string() + "' is not a PFM file (PF or Pf header)");
   if (w < 1 || h < 1 || w > kMaxSide || h > kMaxSide) throw Error("'" + path.string() + "': PFM size must be in [1, 16384]");
   if (!(scale < 0)) throw Error("'" + path.string() + "': only little-endian PFM (negative scale) is read");
-  in.get();  // the single whitespace character after the scale
+  const auto dataStart = std::size_t(header.tellg()) + 1;  // one whitespace character after the scale
   LinearImage image(std::uint32_t(w), std::uint32_t(h), magic == "PF" ? 3u : 1u);
-  std::vector<float> bottomUp(image.values.size());
-  in.read(reinterpret_cast<char*>(bottomUp.data()), std::streamsize(bottomUp.size() * sizeof(float)));
-  if (in.gcount() != std::streamsize(bottomUp.size() * sizeof(float)))
-    throw Error("'" + path.string() + "': PFM data is shorter than its header says");
-  image.values = bottomUp;
-  image.values = flipRows(image);  // flipping is its own inverse
+  if (bytes.size() != dataStart + image.values.size() * sizeof(float))
+    throw Error("'" + path.string() + "': PFM data size does not match its header");
+  std::memcpy(image.values.data(), bytes.data() + dataStart, image.values.size() * sizeof(float));
+  image.values = flipRows(image);  // the file's rows are bottom to top
   return image;
 }
 

@@ -1,7 +1,7 @@
 #pragma once
 // Contract: a triangle mesh with one normal and one albedo per vertex as a Wavefront OBJ with vertex
 // colours ("v x y z r g b", "vn x y z", "f a//a b//b c//c", 1-based, normal i belongs to vertex i), the
-// head of a frame export. Numbers are printed with 9 significant digits, so floats read back exactly.
+// head of a frame export. Numbers are printed as the shortest text that reads back to the same float.
 // readAlbedoObj accepts exactly that subset (comments and blank lines aside) and throws hp::Error
 // naming the file and line for anything else; writeAlbedoObj is atomic.
 #include <glm/glm.hpp>
