@@ -37,6 +37,7 @@ struct ShadowCaster {
   const compute::BoundsPass* bounds;
   const render::OpacityPass* opacity;
   glm::mat4 headToWorld{1.0f};
+  glm::vec2 strandWidth{0.0005f, 0.35f};  // root width, tip / root: the instance's LookSettings (footprint)
 };
 
 void recordUpdatePasses(VkCommandBuffer cmd, std::span<const UpdateWork> work, vk::GpuProfiler* profiler = nullptr);
@@ -44,7 +45,8 @@ void recordUpdatePasses(VkCommandBuffer cmd, std::span<const UpdateWork> work, v
 void makeStrandsDrawable(VkCommandBuffer cmd);
 
 compute::ShadowLight shadowLightOf(const LightSpec& light);
+// headView on: the casters' heads are also drawn into the maps' head depth map (left FragmentSampled).
 void recordShadowPasses(VkCommandBuffer cmd, const render::ShadowMaps& maps, std::span<const ShadowCaster> casters,
                         const compute::ShadowLight& light, const compute::BoundsFraming& framing,
-                        vk::GpuProfiler* profiler = nullptr);
+                        vk::GpuProfiler* profiler = nullptr, const render::HeadShadowView& headView = {});
 }  // namespace hp

@@ -26,7 +26,10 @@ hp::render::OpacitySettings opacitySettings(const FrameOptions& o) {
   hp::render::OpacitySettings s;
   s.enabled = !o.noShadows;
   if (o.opacityResolution) s.resolution = *o.opacityResolution;
-  if (o.strandOpacity) s.strandOpacity = *o.strandOpacity;
+  if (o.strandOpacity) {
+    s.footprint = false;  // a constant per crossing replaces the width / texel-size footprint
+    s.strandOpacity = *o.strandOpacity;
+  }
   if (o.shadowK) s.k = *o.shadowK;
   if (o.shadowBias) s.biasSlices = *o.shadowBias;
   s.validate();
@@ -87,7 +90,8 @@ hp::RenderRequest makeRenderRequest(const FrameOptions& o, const CLI::App& cmd) 
   if (o.orbit) r.scene.camera.orbitDeg = *o.orbit;
   applySpot(o, r.scene);
   if (cmd.count("--eta") + cmd.count("--absorption") + cmd.count("--color") + cmd.count("--alpha-r") +
-          cmd.count("--beta-r") + cmd.count("--kg") + cmd.count("--wc") + cmd.count("--deta") + cmd.count("--dhm") > 0)
+          cmd.count("--beta-r") + cmd.count("--kg") + cmd.count("--wc") + cmd.count("--deta") + cmd.count("--dhm") +
+              cmd.count("--beta-n") > 0)
     r.scene.material = o.material;
   if (r.scene.render.width == 0 || r.scene.render.height == 0 || r.scene.render.width > 16384 ||
       r.scene.render.height > 16384)
@@ -147,14 +151,14 @@ void addFrameOptions(CLI::App& cmd, FrameOptions& o) {
   cmd.add_option("--spot-angle", o.spotAngle, "Spot cone half-angle in degrees, (0, 80] (default 30)");
   cmd.add_option("--spot-range", o.spotRange, "Spot inverse-square falloff, 1 at this distance (default 0: none)");
   cmd.add_option("--camera-orbit", o.orbit, "Camera orbit around the head in degrees (0: from the front)");
-  cmd.add_option("--lut-mode", o.lutMode, "Marschner evaluation: float, paper or direct (default float)");
+  cmd.add_option("--lut-mode", o.lutMode, "fibre model: physical (energy-conserving, default), or the paper's model as float, paper or direct");
   cmd.add_option("--animate", o.animate, "Head motion while settling: none, nod, turn, shake, teleport");
   cmd.add_option("--exposure", o.exposure, "Exposure multiplier before tonemapping (default 1)");
   cmd.add_flag("--lines", o.lines, "Draw strands as lines instead of ribbons");
   cmd.add_flag("--guides-only", o.guidesOnly, "Draw the smoothed guides only (no interpolation)");
   cmd.add_flag("--no-shadows", o.noShadows, "Turn the opacity shadow maps off");
   cmd.add_option("--opacity-resolution", o.opacityResolution, "Opacity map texels per side, 16-4096 (default 512)");
-  cmd.add_option("--strand-opacity", o.strandOpacity, "Opacity a strand adds per opacity-map texel (default 0.04)");
+  cmd.add_option("--strand-opacity", o.strandOpacity, "Constant opacity a strand adds per opacity-map texel instead of its footprint (width / texel size, the default)");
   cmd.add_option("--shadow-k", o.shadowK, "Extinction k in T = exp(-k alpha) (default 1)");
   cmd.add_option("--shadow-bias", o.shadowBias, "Shadow lookup bias toward the light, in slices (default 1)");
 }

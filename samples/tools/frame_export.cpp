@@ -63,7 +63,7 @@ nlohmann::json lightJson(const LightSpec& l) {
 
 nlohmann::json materialJson(const HairMaterial& m) {
   return {{"eta", m.eta}, {"absorption", dvec(m.absorption)}, {"alpha_r_rad", m.alphaR}, {"beta_r_rad", m.betaR},
-          {"kg", m.kG}, {"wc_rad", m.wc}, {"deta", m.dEta}, {"dhm", m.dhM}};
+          {"kg", m.kG}, {"wc_rad", m.wc}, {"deta", m.dEta}, {"dhm", m.dhM}, {"beta_n_rad", m.betaN}};
 }
 
 nlohmann::json frameJson(const ExportedFrame& f) {
@@ -108,6 +108,7 @@ HairMaterial readMaterial(JsonObject o) {
   o.read("wc_rad", m.wc);
   o.read("deta", m.dEta);
   o.read("dhm", m.dhM);
+  o.read("beta_n_rad", m.betaN);
   o.finish();
   m.validate();
   return m;

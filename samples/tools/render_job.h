@@ -18,7 +18,7 @@ struct RenderRequest {
   Scene scene;                      // camera, light, render size, material, simulation, density
   std::uint32_t settleFrames = 90;  // simulated frames before the rendered one
   HeadAnimation animation = HeadAnimation::None;
-  LutMode lutMode = LutMode::Float;
+  LutMode lutMode = LutMode::Physical;
   bool lines = false;
   bool guidesOnly = false;
   float exposure = 1.0f;

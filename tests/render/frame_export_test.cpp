@@ -16,6 +16,7 @@
 #include "engine/error.h"
 #include "samples/tools/frame_export.h"
 #include "samples/tools/image_compare.h"
+#include "samples/tools/reference/fibre.h"
 #include "samples/tools/reference/path_tracer.h"
 #include "samples/tools/render_job.h"
 #include "tests/support/vk_fixture.h"
@@ -32,6 +33,9 @@ RenderRequest smallFrame() {
   r.scene.density.totalStrands = 2000;
   r.settleFrames = 2;
   r.captureFrame = true;
+  // The paper's model: its exact S costs ~1 us on the CPU, the physical model's far more (its frames are
+  // measured against the reference in docs/SHADING.md, not here).
+  r.lutMode = LutMode::Float;
   return r;
 }
 
@@ -60,8 +64,8 @@ void expectSameFrames(const ExportedFrame& a, const ExportedFrame& b) {
   EXPECT_EQ(a.fibreModel, b.fibreModel);
 }
 
-// Measured on lavapipe with these settings (Marschner float LUTs, 16 spp, 4 bounces): real time against
-// the reference 21.5 dB, luminance ratio 1.05; seed 1 against seed 2: 21.4 dB, ratio 1.01 (16 spp is
+// Measured on lavapipe with these settings (the paper's model, float LUTs, 16 spp, 4 bounces): real time against
+// the reference 22.2 dB, luminance ratio 1.04; seed 1 against seed 2: 21.4 dB, ratio 1.01 (16 spp is
 // noise-limited: against 256 spp the real-time image is at 23.6 dB).
 constexpr double kMinPsnrAgainstReference = 19.0, kMinPsnrBetweenSeeds = 19.0;
 constexpr double kLuminanceRatioLow = 0.85, kLuminanceRatioHigh = 1.25;
@@ -89,7 +93,9 @@ TEST_F(VulkanTest, FrameExportRoundTripsAndTheRealTimeHairMatchesTheReference) {
   const RenderResult result = renderStill(*ctx, asset, request);
   ASSERT_TRUE(result.frame);
   const FrameCapture& capture = *result.frame;
-  const ExportedFrame frame = makeExportedFrame(request, asset, capture, "marschner");
+  const ExportedFrame frame =
+      makeExportedFrame(request, asset, capture, reference::fibreModelName(fibreModelOf(request.lutMode)));
+  EXPECT_EQ(frame.fibreModel, "marschner");
 
   // The strands as drawn (shaders/strands.vert's width and the shading's lightness scale).
   const std::uint32_t q = capture.verticesPerStrand;

@@ -3,12 +3,13 @@
 //    uniform sky of radiance Le returns albedo x Le (every cosine-weighted sample carries exactly that);
 //  - a fibre filling the view under a uniform white sky returns the integral of S cos(theta_i) over the
 //    sphere computed by quadrature (checks that the lobe importance sampling and its density agree);
+//    with the energy-conserving physical model and no absorption that integral is the white furnace, ~1;
 //  - the image is the same for a seed whatever the thread count, and differs for another seed.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "engine/shading/marschner.h"
+#include "engine/shading/fibre_model.h"
 #include "samples/tools/reference/path_tracer.h"
 
 using namespace hp;
@@ -69,7 +70,7 @@ ExportedFrame fibreFrame() {
 }
 
 // int S(w, V, T) cos(theta) dw over the sphere, midpoint rule in (theta, phi), dw = cos(theta) dtheta dphi.
-glm::dvec3 furnaceIntegral(const HairMaterial& m, glm::dvec3 V, glm::dvec3 T) {
+glm::dvec3 furnaceIntegral(FibreModel model, const HairMaterial& m, glm::dvec3 V, glm::dvec3 T) {
   const int nt = 360, np = 720;
   const glm::dvec3 U = glm::normalize(V - glm::dot(V, T) * T), W = glm::cross(T, U);
   glm::dvec3 sum(0.0);
@@ -78,7 +79,7 @@ glm::dvec3 furnaceIntegral(const HairMaterial& m, glm::dvec3 V, glm::dvec3 T) {
     for (int j = 0; j < np; ++j) {
       const double ph = -kPi + (j + 0.5) * 2.0 * kPi / np;
       const glm::dvec3 L = std::sin(th) * T + std::cos(th) * (std::cos(ph) * U + std::sin(ph) * W);
-      sum += marschnerS(L, V, T, m) * std::cos(th) * std::cos(th);
+      sum += exactS(model, L, V, T, m) * std::cos(th) * std::cos(th);
     }
   }
   return sum * (kPi / nt) * (2.0 * kPi / np);
@@ -106,18 +107,43 @@ TEST(ReferenceTracer, LambertPlaneUnderAUniformSkyReturnsAlbedoTimesSky) {
     EXPECT_NEAR(r.radiance.at(3, 5, c), f.headAlbedo[0][c] * 0.7, 1e-6);
 }
 
-TEST(ReferenceTracer, FibreUnderAUniformSkyReturnsTheIntegralOfItsScattering) {
-  const ExportedFrame f = fibreFrame();
+// The traced fibre's mean radiance under a sky of radiance 1 against the quadrature, per channel.
+void expectFurnace(const ExportedFrame& f, FibreModel model, double tolerance) {
   const auto r = reference::traceReference(f, {1024, 1, 3, 2, nullptr});
-  const glm::dvec3 expected = furnaceIntegral(f.material, {0, 0, 1}, {1, 0, 0});
+  const glm::dvec3 expected = furnaceIntegral(model, f.material, {0, 0, 1}, {1, 0, 0});
+  double traced[3] = {0.0, 0.0, 0.0};
+  for (std::uint32_t c = 0; c < 3; ++c) {
+    for (std::uint32_t y = 0; y < 4; ++y)
+      for (std::uint32_t x = 0; x < 4; ++x) traced[c] += r.radiance.at(x, y, c) / 16.0;
+    EXPECT_NEAR(traced[c], expected[c], tolerance * expected[c]) << "channel " << c;
+    std::cout << f.fibreModel << " channel " << c << ": traced " << traced[c] << ", quadrature " << expected[c] << "\n";
+  }
+  EXPECT_GT(r.hairCoverage.at(1, 2, 0), 0.999f);
+}
+
+// Measured (seed 3, 16k samples): within 1.3% per channel.
+TEST(ReferenceTracer, FibreUnderAUniformSkyReturnsTheIntegralOfItsScattering) {
+  ExportedFrame f = fibreFrame();
+  f.fibreModel = "marschner";
+  expectFurnace(f, FibreModel::Marschner, 0.03);
+}
+
+// The white furnace through the tracer: the physical model conserves energy, so a non-absorbing fibre
+// under a sky of 1 returns ~1 (tests/shading/physical_test.cpp checks the quadrature itself; the exact
+// physical S is too slow to integrate here). Measured: 0.989 with 4096 samples.
+TEST(ReferenceTracer, WhitePhysicalFibreUnderAUniformSkyReturnsAboutOne) {
+  ExportedFrame f = fibreFrame();
+  f.fibreModel = "physical";
+  f.material.absorption = glm::dvec3(0.0);
+  const auto r = reference::traceReference(f, {256, 1, 3, 2, nullptr});
   for (std::uint32_t c = 0; c < 3; ++c) {
     double mean = 0.0;
     for (std::uint32_t y = 0; y < 4; ++y)
       for (std::uint32_t x = 0; x < 4; ++x) mean += r.radiance.at(x, y, c) / 16.0;
-    EXPECT_NEAR(mean, expected[c], 0.03 * expected[c]) << "channel " << c;
-    std::cout << "channel " << c << ": traced " << mean << ", quadrature " << expected[c] << "\n";
+    std::cout << "physical, white, channel " << c << ": " << mean << "\n";
+    EXPECT_GT(mean, 0.95) << "channel " << c;
+    EXPECT_LT(mean, 1.02) << "channel " << c;
   }
-  EXPECT_GT(r.hairCoverage.at(1, 2, 0), 0.999f);
 }
 
 TEST(ReferenceTracer, TheImageDependsOnTheSeedAloneNotOnTheThreadCount) {
