@@ -13,7 +13,7 @@ constexpr VkBufferUsageFlags kParticleUsage =
     VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
 
 const vk::Binding kBindings[] = {
-    {gpu::SIM_BINDING_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
+    {gpu::SIM_BINDING_FRAME, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
     {gpu::SIM_BINDING_POSITIONS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
     {gpu::SIM_BINDING_PREVIOUS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
     {gpu::SIM_BINDING_REST, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
@@ -65,10 +65,10 @@ SimulatePass::SimulatePass(const vk::Context& ctx, const HairAsset& asset, const
   positions_ = vk::Buffer(ctx, bytes, kParticleUsage, vk::MemoryKind::DeviceLocal, "guide positions");
   previous_ = vk::Buffer(ctx, bytes, kParticleUsage, vk::MemoryKind::DeviceLocal, "guide previous positions");
   restBuffer_ = vk::Buffer(ctx, bytes, kParticleUsage, vk::MemoryKind::DeviceLocal, "guide rest pose");
-  frame_ = vk::Buffer(ctx, sizeof(gpu::SimFrame), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+  frame_ = vk::Buffer(ctx, sizeof(gpu::SimFrame), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                       vk::MemoryKind::DeviceLocal, "simulation frame");
   set_ = vk::DescriptorSet(ctx, kBindings, "simulate");
-  set_.writeUniformBuffer(gpu::SIM_BINDING_FRAME, frame_.handle());
+  set_.writeStorageBuffer(gpu::SIM_BINDING_FRAME, frame_.handle());
   set_.writeStorageBuffer(gpu::SIM_BINDING_POSITIONS, positions_.handle());
   set_.writeStorageBuffer(gpu::SIM_BINDING_PREVIOUS, previous_.handle());
   set_.writeStorageBuffer(gpu::SIM_BINDING_REST, restBuffer_.handle());

@@ -9,7 +9,10 @@
 #include "common.glsl"
 
 layout(local_size_x = SIM_WORKGROUP_SIZE) in;
-layout(std140, binding = SIM_BINDING_FRAME) uniform Frame { SimFrame frame; };
+// A read-only storage block, not a uniform block: Mesa 22.3's lavapipe inlines uniform values that
+// steer loops into a fresh shader variant on every bind, i.e. one LLVM compile (~20 ms, never freed)
+// per simulated frame. Same std140 layout; no cost on GPUs (the block is read uniformly).
+layout(std140, binding = SIM_BINDING_FRAME) readonly buffer Frame { SimFrame frame; };
 layout(std430, binding = SIM_BINDING_POSITIONS) buffer Positions { vec4 positions[]; };
 layout(std430, binding = SIM_BINDING_PREVIOUS) buffer Previous { vec4 previous[]; };
 layout(std430, binding = SIM_BINDING_REST) readonly buffer Rest { vec4 rest[]; };

@@ -2,7 +2,8 @@
 // Contract: drives a SimulatePass through scripted frames outside an application's frame loop (CLI,
 // tests, benchmarks): records a batch of frames into one submission with the frame-to-frame barrier,
 // times each frame with GPU timestamps, and reads the state back on request. The head follows a
-// HeadAnimation; a jump in it is handed to the pass as a teleport.
+// HeadAnimation; a jump in it is handed to the pass as a teleport. Timing can be turned off: long runs
+// under the validation layer (1.3.239) would otherwise grow its memory with every query-pool reset.
 #include <vector>
 
 #include "compute/simulate_pass.h"
@@ -13,11 +14,15 @@
 namespace hp {
 class SimulationDriver {
  public:
-  SimulationDriver(const vk::Context& ctx, SimulatePass& pass, HeadAnimation animation, float headRadius);
+  enum class Timing { GpuTimestamps, None };
+  SimulationDriver(const vk::Context& ctx, SimulatePass& pass, HeadAnimation animation, float headRadius,
+                   Timing timing = Timing::GpuTimestamps);
 
   // Simulates `count` frames in one submission and waits for it. Appends each frame's GPU ms.
   void runFrames(std::uint32_t count);
   const std::vector<double>& frameMilliseconds() const { return frameMs_; }
+  // Forgets the recorded frame times (long runs keep their memory flat).
+  void clearFrameTimes() { frameMs_.clear(); frameMs_.shrink_to_fit(); }
   double medianFrameMilliseconds() const;
 
   std::uint32_t frame() const { return frame_; }
@@ -35,6 +40,7 @@ class SimulationDriver {
   SimulatePass& pass_;
   HeadAnimation animation_;
   float headRadius_;
+  Timing timing_;
   std::uint32_t frame_ = 0;
   vk::GpuProfiler profiler_;
   std::vector<double> frameMs_;
