@@ -4,6 +4,7 @@
 // frame of an export folder (--frame DIR, from `render --export-frame`). Writes linear radiance (.pfm)
 // or the tonemapped image (.png, the render command's display curve), atomically.
 #include <iostream>
+#include <set>
 
 #include <nlohmann/json.hpp>
 

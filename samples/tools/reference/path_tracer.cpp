@@ -59,7 +59,7 @@ class Tracer {
     RaySkip skip;
     glm::dvec3 radiance(0.0), throughput(1.0);
     for (std::uint32_t vertex = 1;; ++vertex) {
-      const SceneHit hit = scene_.intersect(origin, dir, vertex == 1 ? 0.0f : 0.0f, skip);
+      const SceneHit hit = scene_.intersect(origin, dir, 0.0f, skip);
       if (vertex == 1) hairFirst = hit.kind == SceneHit::Kind::Fibre;
       if (hit.kind == SceneHit::Kind::None) {
         radiance += throughput * (vertex == 1 ? glm::dvec3(frame_.background) : glm::dvec3(frame_.environment));
