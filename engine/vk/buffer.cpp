@@ -37,6 +37,7 @@ Buffer::Buffer(const Context& ctx, VkDeviceSize size, VkBufferUsageFlags usage, 
     VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
     alloc.allocationSize = req.size;
     alloc.memoryTypeIndex = ctx.findMemoryType(req.memoryTypeBits, requiredFlags(kind), preferredFlags(kind));
+    ctx.checkDeviceMemoryBudget(req.size, "buffer '" + name + "'");
     HP_VK_CHECK(vkAllocateMemory(device_, &alloc, nullptr, &memory_));
     tally_ = ctx.allocationTally();
     allocated_ = req.size;

@@ -3,6 +3,7 @@
 #include <string>
 
 #include "engine/error.h"
+#include "engine/vk/fault_injection.h"
 
 namespace hp::vk {
 const char* resultName(VkResult result) {
@@ -46,6 +47,7 @@ const char* resultName(VkResult result) {
 }
 
 void check(VkResult result, const char* call) {
+  result = injectFault(call, result);
   if (result == VK_SUCCESS) return;
   throw Error(std::string(call) + " failed: " + resultName(result) + " (" + std::to_string(result) + ")");
 }

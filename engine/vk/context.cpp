@@ -231,6 +231,15 @@ void Context::waitIdle() const {
   HP_VK_CHECK(vkDeviceWaitIdle(device_));
 }
 
+void Context::checkDeviceMemoryBudget(VkDeviceSize bytes, const std::string& what) const {
+  const VkDeviceSize budget = deviceMemoryBudget();
+  const auto held = static_cast<VkDeviceSize>(std::max<std::int64_t>(0, allocated_->load()));
+  if (budget == 0 || held + bytes <= budget) return;
+  throw Error("vkAllocateMemory refused: VK_ERROR_OUT_OF_DEVICE_MEMORY (" + what + ": " + std::to_string(bytes) +
+              " bytes more than the " + std::to_string(budget - std::min(budget, held)) +
+              " left of hairpipe's device memory budget of " + std::to_string(budget) + " bytes)");
+}
+
 VkDeviceSize Context::deviceLocalHeapBytes() const {
   VkDeviceSize best = 0;
   for (std::uint32_t i = 0; i < memory_.memoryHeapCount; ++i)

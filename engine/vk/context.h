@@ -75,6 +75,13 @@ class Context {
   std::uint64_t allocatedBytes() const { return allocated_->load(); }
   // Shared with every buffer and image, which add their allocation and take it back when freed.
   const std::shared_ptr<std::atomic<std::int64_t>>& allocationTally() const { return allocated_; }
+  // The most device memory hairpipe may hold at once (0: no cap but the heaps), for an application that
+  // budgets its middleware. An allocation past it fails as the driver's out-of-memory does.
+  void setDeviceMemoryBudget(VkDeviceSize bytes) { budget_.store(bytes); }
+  VkDeviceSize deviceMemoryBudget() const { return budget_.load(); }
+  // Called before every allocation: throws hp::Error naming VK_ERROR_OUT_OF_DEVICE_MEMORY, `what` and the
+  // budget when `bytes` more would exceed it.
+  void checkDeviceMemoryBudget(VkDeviceSize bytes, const std::string& what) const;
 
  private:
   Context() = default;
@@ -98,6 +105,7 @@ class Context {
   bool timestampsSupported_ = false;
   std::shared_ptr<ValidationLog> log_ = std::make_shared<ValidationLog>();
   std::shared_ptr<std::atomic<std::int64_t>> allocated_ = std::make_shared<std::atomic<std::int64_t>>(0);
+  std::atomic<VkDeviceSize> budget_{0};
   DeviceChoice choice_;
 };
 

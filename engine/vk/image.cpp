@@ -58,6 +58,7 @@ Image::Image(const Context& ctx, const ImageDesc& desc) : device_(ctx.device()),
     VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
     alloc.allocationSize = req.size;
     alloc.memoryTypeIndex = ctx.findMemoryType(req.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
+    ctx.checkDeviceMemoryBudget(req.size, "image '" + desc.name + "'");
     HP_VK_CHECK(vkAllocateMemory(device_, &alloc, nullptr, &memory_));
     tally_ = ctx.allocationTally();
     allocated_ = req.size;

@@ -11,7 +11,9 @@ void VulkanTest::SetUp() {
 
 void VulkanTest::TearDown() {
   ctx.reset();  // destroy first: leaked objects are reported at vkDestroyDevice
-  if (log) EXPECT_EQ(log->problemCount(), 0u) << "validation messages:\n" << log->describeProblems();
+  if (log) {
+    EXPECT_EQ(log->problemCount(), 0u) << "validation messages:\n" << log->describeProblems();
+  }
 }
 
 std::size_t VulkanTest::takeValidationProblems() {
