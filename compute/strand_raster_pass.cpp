@@ -15,6 +15,8 @@ namespace {
 constexpr VkShaderStageFlags kCompute = VK_SHADER_STAGE_COMPUTE_BIT;
 constexpr VkDescriptorType kStorage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
 constexpr VkDescriptorType kSampled = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+// The raster's own bindings follow the shading bindings of shaders/shared/render.h in one set.
+static_assert(gpu::RASTER_BINDING_SCREEN > gpu::RENDER_BINDING_HEAD_SHADOW, "raster bindings overlap render.h's");
 const vk::Binding kBindings[] = {
     {gpu::RENDER_BINDING_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kCompute},
     {gpu::RENDER_BINDING_MARSCHNER, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kCompute},
@@ -22,6 +24,7 @@ const vk::Binding kBindings[] = {
     {gpu::RENDER_BINDING_LUT_N0, kSampled, kCompute},
     {gpu::RENDER_BINDING_LUT_N1, kSampled, kCompute},
     {gpu::RENDER_BINDING_OPACITY, kSampled, kCompute},
+    {gpu::RENDER_BINDING_HEAD_SHADOW, kSampled, kCompute},
     {gpu::RENDER_BINDING_LIGHT, kStorage, kCompute},
     {gpu::RENDER_BINDING_POSITIONS, kStorage, kCompute},
     {gpu::RENDER_BINDING_TANGENTS, kStorage, kCompute},

@@ -39,8 +39,8 @@ struct RasterStats {
   std::uint64_t overflow() const { return droppedByTileBudget + droppedByCapacity; }
 };
 
-// Writes the shading bindings 0-6 of shaders/shared/render.h (frame block, Marschner UBO and LUTs,
-// opacity maps, LightSpace) into a raster descriptor set: what the shade step's hairRadiance reads.
+// Writes the shading bindings of shaders/shared/render.h (frame block, Marschner UBO and LUTs, opacity
+// maps, LightSpace, the head's depth shadow map) into a raster descriptor set: what hairRadiance reads.
 using ShadingWriter = std::function<void(const vk::DescriptorSet&)>;
 
 class StrandRasterPass {

@@ -29,7 +29,7 @@ compute::ShadowLight shadowLightOf(const LightSpec& light) {
 void recordShadowPasses(const vk::Context& ctx, VkCommandBuffer cmd, const render::ShadowMaps& maps,
                         std::span<const ShadowCaster> casters,
                         const compute::ShadowLight& shadowLight, const compute::BoundsFraming& framing,
-                        vk::GpuProfiler* profiler) {
+                        vk::GpuProfiler* profiler, const render::HeadShadowView& headView) {
   if (casters.empty()) return;
   const VkBuffer light = maps.lightSpace().handle();
   if (profiler) profiler->begin(cmd, "bounds");
@@ -49,10 +49,20 @@ void recordShadowPasses(const vk::Context& ctx, VkCommandBuffer cmd, const rende
   vk::imageBarrier(ctx, cmd, image.handle(), VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::FragmentSampled,
                    vk::ImageUse::ColorAttachment, gpu::OPACITY_TARGETS);
   maps.beginRendering(cmd);
-  for (const ShadowCaster& c : casters) c.opacity->recordDraws(cmd, c.headToWorld);
+  for (const ShadowCaster& c : casters) c.opacity->recordDraws(cmd, c.headToWorld, c.strandWidth);
   maps.endRendering(cmd);
   vk::imageBarrier(ctx, cmd, image.handle(), VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::ColorAttachment,
                    vk::ImageUse::FragmentSampled, gpu::OPACITY_TARGETS);
+  if (profiler) profiler->end(cmd);
+
+  if (headView.params.x == 0.0f) return;
+  const VkImage head = maps.headImage().handle();
+  if (profiler) profiler->begin(cmd, "head shadow");
+  vk::imageBarrier(ctx, cmd, head, VK_IMAGE_ASPECT_DEPTH_BIT, vk::ImageUse::FragmentSampled, vk::ImageUse::DepthAttachment);
+  maps.beginHeadRendering(cmd);
+  for (const ShadowCaster& c : casters) c.opacity->recordHeadDepth(cmd, headView.viewProj * c.headToWorld);
+  maps.endRendering(cmd);
+  vk::imageBarrier(ctx, cmd, head, VK_IMAGE_ASPECT_DEPTH_BIT, vk::ImageUse::DepthAttachment, vk::ImageUse::FragmentSampled);
   if (profiler) profiler->end(cmd);
 }
 }  // namespace hp

@@ -37,6 +37,7 @@ struct ShadowCaster {
   const compute::BoundsPass* bounds;
   const render::OpacityPass* opacity;
   glm::mat4 headToWorld{1.0f};
+  glm::vec2 strandWidth{0.0005f, 0.35f};  // root width, tip / root: the instance's LookSettings (footprint)
 };
 
 void recordUpdatePasses(const vk::Context& ctx, VkCommandBuffer cmd, std::span<const UpdateWork> work,
@@ -45,8 +46,9 @@ void recordUpdatePasses(const vk::Context& ctx, VkCommandBuffer cmd, std::span<c
 void makeStrandsDrawable(const vk::Context& ctx, VkCommandBuffer cmd);
 
 compute::ShadowLight shadowLightOf(const LightSpec& light);
+// headView on: the casters' heads are also drawn into the maps' head depth map (left FragmentSampled).
 void recordShadowPasses(const vk::Context& ctx, VkCommandBuffer cmd, const render::ShadowMaps& maps,
                         std::span<const ShadowCaster> casters,
                         const compute::ShadowLight& light, const compute::BoundsFraming& framing,
-                        vk::GpuProfiler* profiler = nullptr);
+                        vk::GpuProfiler* profiler = nullptr, const render::HeadShadowView& headView = {});
 }  // namespace hp

@@ -94,6 +94,7 @@ compute::ShadingWriter HairSystem::shadingWriter() const {
     const render::ShadowInputs shadows = renderer_.shadows().inputs();
     set.writeSampledImage(gpu::RENDER_BINDING_OPACITY, shadows.opacityView, shadows.sampler);
     set.writeStorageBuffer(gpu::RENDER_BINDING_LIGHT, shadows.lightSpace);
+    set.writeSampledImage(gpu::RENDER_BINDING_HEAD_SHADOW, shadows.headShadowView, shadows.headShadowSampler);
   };
 }
 
@@ -119,9 +120,12 @@ void HairSystem::setRasterTarget(VkExtent2D extent, VkImageView depth) {
 void HairSystem::recordRaster(VkCommandBuffer cmd, const DrawView& view, vk::GpuProfiler* profiler) {
   if (!rasterPass_) throw Error("HairSystem: the compute raster needs setRasterTarget() before recording");
   const vk::Context& ctx = renderer_.context();
-  const gpu::RenderFrame frame =
+  gpu::RenderFrame frame =
       render::makeRenderFrame(view.camera, view.extent, view.light, settings_.material, settings_.look,
                               instance_->strands().layout().verticesPerStrand, renderer_.shadows().settings());
+  const render::HeadShadowView& headView = renderer_.headShadowOf(frame_);
+  frame.headShadowViewProj = headView.viewProj;
+  frame.headShadow = headView.params;
   vk::bufferBarrier(ctx, cmd, rasterFrame_.handle(), vk::BufferUse::ComputeRead, vk::BufferUse::TransferDst);
   ctx.fn().vkCmdUpdateBuffer(cmd, rasterFrame_.handle(), 0, sizeof(frame), &frame);
   vk::bufferBarrier(ctx, cmd, rasterFrame_.handle(), vk::BufferUse::TransferDst, vk::BufferUse::ComputeRead);
@@ -130,14 +134,17 @@ void HairSystem::recordRaster(VkCommandBuffer cmd, const DrawView& view, vk::Gpu
   const render::ShadowMaps& shadows = renderer_.shadows();
   const VkBuffer light = shadows.lightSpace().handle();
   const VkImage maps = shadows.image().handle();
+  const VkImage head = shadows.headImage().handle();
   vk::memoryBarrier(ctx, cmd, vk::BufferUse::ComputeWrite, vk::BufferUse::ComputeRead);  // strand buffers
+  vk::imageBarrier(ctx, cmd, head, VK_IMAGE_ASPECT_DEPTH_BIT, vk::ImageUse::FragmentSampled, vk::ImageUse::ComputeSampled);
   vk::bufferBarrier(ctx, cmd, light, vk::BufferUse::VertexRead, vk::BufferUse::ComputeRead);
-  vk::imageBarrier(ctx, cmd, maps, VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::FragmentSampled,
-                   vk::ImageUse::ComputeSampled, gpu::OPACITY_TARGETS);
+  vk::imageBarrier(ctx, cmd, maps, VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::FragmentSampled, vk::ImageUse::ComputeSampled,
+                   gpu::OPACITY_TARGETS);
   rasterPass_->record(cmd, profiler);
   vk::bufferBarrier(ctx, cmd, light, vk::BufferUse::ComputeRead, vk::BufferUse::VertexRead);
-  vk::imageBarrier(ctx, cmd, maps, VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::ComputeSampled,
-                   vk::ImageUse::FragmentSampled, gpu::OPACITY_TARGETS);
+  vk::imageBarrier(ctx, cmd, maps, VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::ComputeSampled, vk::ImageUse::FragmentSampled,
+                   gpu::OPACITY_TARGETS);
+  vk::imageBarrier(ctx, cmd, head, VK_IMAGE_ASPECT_DEPTH_BIT, vk::ImageUse::ComputeSampled, vk::ImageUse::FragmentSampled);
 }
 
 void HairSystem::recordComposite(VkCommandBuffer cmd, VkExtent2D extent, vk::GpuProfiler* profiler) const {

@@ -24,7 +24,7 @@ namespace hp {
 struct HairSystemSettings {
   SimulationParams simulation;
   HairMaterial material;
-  LutMode lutMode = LutMode::Float;
+  LutMode lutMode = LutMode::Physical;
   compute::StrandOptions strands;
   render::AttachmentFormats formats;
   render::LookSettings look;

@@ -21,7 +21,8 @@ Renderer::Renderer(const vk::Context& ctx, const RendererSettings& settings)
       settings_(validated(settings)),
       pipelines_(ctx),
       shadows_(std::make_unique<render::ShadowMaps>(ctx, settings.opacity)),
-      frameLights_(settings.framesInFlight) {}
+      frameLights_(settings.framesInFlight),
+      frameHeadShadows_(settings.framesInFlight) {}
 
 Renderer::~Renderer() = default;
 
@@ -54,7 +55,8 @@ void Renderer::retire(std::shared_ptr<void> resource) {
 
 void Renderer::setOpacityTuning(const render::OpacitySettings& opacity) {
   const render::OpacitySettings& current = shadows_->settings();
-  if (opacity.resolution != current.resolution || opacity.format != current.format)
+  if (opacity.resolution != current.resolution || opacity.format != current.format ||
+      opacity.headShadowResolution != current.headShadowResolution)
     throw Error("setOpacityTuning: the opacity maps' resolution and format are fixed for a Renderer");
   opacity.validate();
   shadows_->setTuning(opacity);
@@ -84,19 +86,26 @@ void Renderer::recordShadows(VkCommandBuffer cmd, std::uint64_t frame, const Lig
   light.validate();
   beginFrame(frame, instances);
   frameLights_[frame % settings_.framesInFlight] = light;
+  render::HeadShadowView& headView = frameHeadShadows_[frame % settings_.framesInFlight];
+  headView = {};
   makeStrandsDrawable(ctx_, cmd);
   const render::OpacitySettings& opacity = shadows_->settings();
   if (!opacity.enabled) return;
+  render::HeadSphere heads;
+  for (HairInstance* i : instances) heads = render::enclose(heads, i->geometry_->opacity.headSphere(i->headToWorld()));
+  headView = render::headShadowView(light, heads, opacity.headShadowResolution);
   std::vector<ShadowCaster> casters;
   float widest = 0.0f;
   for (HairInstance* i : instances) {
-    casters.push_back({&i->geometry_->bounds, &i->geometry_->opacity, i->headToWorld()});
+    const render::LookSettings& look = i->settings_.look;
+    casters.push_back({&i->geometry_->bounds, &i->geometry_->opacity, i->headToWorld(),
+                       glm::vec2(look.strandWidth, look.tipWidthFraction)});
     widest = std::max(widest, i->settings_.look.strandWidth);
   }
   compute::BoundsFraming framing;
   framing.resolution = opacity.resolution;
   framing.marginWorld = 0.5f * widest * gpu::WIDTH_SCALE_MAX;
-  recordShadowPasses(ctx_, cmd, *shadows_, casters, shadowLightOf(light), framing, profiler);
+  recordShadowPasses(ctx_, cmd, *shadows_, casters, shadowLightOf(light), framing, profiler, headView);
 }
 
 void Renderer::recordDraw(VkCommandBuffer cmd, std::uint64_t frame, const View& view,
@@ -104,10 +113,13 @@ void Renderer::recordDraw(VkCommandBuffer cmd, std::uint64_t frame, const View& 
   view.validate(settings_.maxViewsPerFrame);
   beginFrame(frame, instances);
   const LightSpec& light = frameLights_[frame % settings_.framesInFlight];
+  const render::HeadShadowView& headView = frameHeadShadows_[frame % settings_.framesInFlight];
   for (HairInstance* i : instances) {
-    *i->frameSlot(frame, view.index) =
-        render::makeRenderFrame(view.camera, view.extent, light, i->settings_.material, i->settings_.look,
-                                i->strands().layout().verticesPerStrand, shadows_->settings());
+    gpu::RenderFrame* block = i->frameSlot(frame, view.index);
+    *block = render::makeRenderFrame(view.camera, view.extent, light, i->settings_.material, i->settings_.look,
+                                     i->strands().layout().verticesPerStrand, shadows_->settings());
+    block->headShadowViewProj = headView.viewProj;
+    block->headShadow = headView.params;
     const std::uint32_t offset = i->frameOffset(frame, view.index);
     if (profiler) profiler->begin(cmd, "head");
     i->head_->draw(cmd, view.extent, i->headToWorld(), offset);

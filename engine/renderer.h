@@ -63,6 +63,10 @@ class Renderer {
   const RendererSettings& settings() const { return settings_; }
   const vk::Context& context() const { return ctx_; }
   const render::ShadowMaps& shadows() const { return *shadows_; }
+  // The head depth map's framing that recordShadows chose for `frame` (for a caller's own frame block).
+  const render::HeadShadowView& headShadowOf(std::uint64_t frame) const {
+    return frameHeadShadows_[frame % settings_.framesInFlight];
+  }
   vk::PipelineLibrary& pipelines() { return pipelines_; }
   // The LUT textures of a material and mode, built once and shared while any instance uses them.
   std::shared_ptr<render::MarschnerTextures> marschner(const HairMaterial& material, LutMode mode);
@@ -89,6 +93,7 @@ class Renderer {
   std::unique_ptr<render::ShadowMaps> shadows_;
   std::vector<Lut> luts_;
   std::vector<LightSpec> frameLights_;  // per ring slot: the light recordShadows was given
+  std::vector<render::HeadShadowView> frameHeadShadows_;  // per ring slot: the heads' depth map framing
   std::vector<Retired> retired_;
   std::optional<std::uint64_t> lastFrame_;
 };

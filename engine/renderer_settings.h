@@ -31,7 +31,7 @@ struct RendererSettings {
 struct InstanceSettings {
   SimulationParams simulation;
   HairMaterial material;
-  LutMode lutMode = LutMode::Float;
+  LutMode lutMode = LutMode::Physical;
   compute::StrandOptions strands;
   render::LookSettings look;
   ScalpInput scalp;  // where the roots come from: rigid head (default), skinned root frames, or bones

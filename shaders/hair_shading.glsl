@@ -1,10 +1,12 @@
 // The radiance a hair fibre sends toward the camera (REFERENCES.md §3-4), GLSL only, shared by the graphics
 // strand shader (strands.frag, per fragment) and the compute rasterizer (raster_shade.comp, per vertex):
 // S(L, V, T) cos(theta_i) x light x transmittance + ambient, times the strand's lightness variation.
-// The includer declares `frame` (RenderFrame), `marschner` (MarschnerParams) and the LUT samplers
-// lutM, lutN0, lutN1 before including this file; `alpha` is the opacity-map lookup at the point.
+// The includer declares `frame` (RenderFrame), `marschner` (MarschnerParams), the LUT samplers
+// lutM, lutN0, lutN1 and `headShadowMap` (the head's depth map) before including this file; `alpha` is
+// the opacity-map lookup at the point. The transmittance is the hair's (opacity maps) times the head's.
 #ifndef HP_HAIR_SHADING_GLSL
 #define HP_HAIR_SHADING_GLSL
+#include "head_shadow.glsl"
 #include "light.glsl"
 
 vec3 hairRadiance(vec3 world, vec3 tangent, float colorScale, float alpha) {
@@ -15,7 +17,8 @@ vec3 hairRadiance(vec3 world, vec3 tangent, float colorScale, float alpha) {
   vec3 S = marschnerEvaluate(marschner.control.x, L, V, T, lutM, lutN0, lutN1, marschner);
   float sinThetaI = clamp(dot(L, T), -1.0, 1.0);
   float cosThetaI = sqrt(1.0 - sinThetaI * sinThetaI);
-  float transmittance = exp(-frame.strand.z * alpha);
+  float transmittance = exp(-frame.strand.z * alpha) *
+                        headVisibility(headShadowMap, frame.headShadowViewProj, frame.headShadow, world, L);
   vec3 direct = S * cosThetaI * frame.lightRadiance.rgb * (light.scale * transmittance);
   vec3 ambient = frame.hairColor.rgb * frame.hairColor.w;
   return (direct + ambient) * colorScale;

@@ -3,6 +3,7 @@
 //   vec3 marschnerDirect  (L, V, T, MarschnerParams p)                          analytic S, no textures
 //   vec3 marschnerLutPaper(L, V, T, sampler2D mTex, sampler2D nTex, p)            paper, RGBA8 128x128
 //   vec3 marschnerLutFloat(L, V, T, sampler2D mTex, sampler2D n0Tex, sampler2D n1Tex, p)  RGBA16F
+//   vec3 marschnerLutPhysical(L, V, T, mTex, n0Tex, n1Tex, p)   the physical model (REFERENCES §3b), RGBA16F
 //   vec3 marschnerEvaluate(mode, L, V, T, mTex, n0Tex, n1Tex, p)                 switch on MARSCHNER_MODE_*
 // Samplers: linear min/mag filter, CLAMP_TO_EDGE, normalised coordinates, one mip level. Sampled with
 // textureLod(.., 0) so the same code is valid in compute shaders.
@@ -232,9 +233,23 @@ vec3 marschnerLutFloat(vec3 L, vec3 V, vec3 T, sampler2D mTex, sampler2D n0Tex, 
   return (m.x * n0.w + m.y * n0.xyz + m.z * n1.xyz) * c.w;
 }
 
-// Mode switch for shaders that support all three (paper mode reads mTex and n0Tex only).
+// The physical model (REFERENCES §3b): M = (M_R, M_TT, M_TRT) over (theta_i, theta_r), N0 = (N_TT, N_R),
+// N1 = N_TRT + N_res over (phi/2, |theta_r|); S = (M_R N_R + M_TT N_TT + M_TRT N1) / cos theta_i.
+vec3 marschnerLutPhysical(vec3 L, vec3 V, vec3 T, sampler2D mTex, sampler2D n0Tex, sampler2D n1Tex,
+                          MarschnerParams prm) {
+  vec4 ang = marschnerAngles(L, V, T);
+  vec4 c = marschnerPhysicalCoords(ang);
+  vec4 m = textureLod(mTex, c.xy, 0.0) * prm.mScale;
+  vec4 n0 = textureLod(n0Tex, c.zw, 0.0) * prm.n0Scale;
+  vec4 n1 = textureLod(n1Tex, c.zw, 0.0) * prm.n1Scale;
+  return (m.x * n0.w + m.y * n0.xyz + m.z * n1.xyz) * marschnerPhysicalInvCosI(ang);
+}
+
+// The ONE shading entry point of every hair shading path (mode = MARSCHNER_MODE_*; paper mode reads
+// mTex and n0Tex only, direct none).
 vec3 marschnerEvaluate(uint mode, vec3 L, vec3 V, vec3 T, sampler2D mTex, sampler2D n0Tex,
                        sampler2D n1Tex, MarschnerParams prm) {
+  if (mode == MARSCHNER_MODE_LUT_PHYSICAL) return marschnerLutPhysical(L, V, T, mTex, n0Tex, n1Tex, prm);
   if (mode == MARSCHNER_MODE_LUT_FLOAT) return marschnerLutFloat(L, V, T, mTex, n0Tex, n1Tex, prm);
   if (mode == MARSCHNER_MODE_LUT_PAPER) return marschnerLutPaper(L, V, T, mTex, n0Tex, prm);
   return marschnerDirect(L, V, T, prm);

@@ -12,6 +12,7 @@ layout(std430, binding = OPACITY_BINDING_LIGHT) readonly buffer Light { LightSpa
 layout(push_constant) uniform Push { OpacityPush push; };
 
 layout(location = 0) out float outSlice;
+layout(location = 1) out float outOpacity;
 
 void main() {
   uint q = push.verticesPerStrand;
@@ -21,5 +22,13 @@ void main() {
   uint v = strand * q + k + (gl_VertexIndex & 1u);
   vec4 clip = light.viewProj * vec4(positions[v].xyz, 1.0);
   outSlice = clip.z * float(OPACITY_SLICES);
+  // Footprint: the strand's width over the texel's size at this depth (the box is in light x/y units,
+  // per unit depth for a spot, so the texel grows with clip.w). The per-strand width variation
+  // (widthScale, mean 1) is left out: its mean is what the map's density needs.
+  float along = float(k + (uint(gl_VertexIndex) & 1u)) / float(q - 1u);
+  float width = push.footprint.x * mix(1.0, push.footprint.y, along);
+  vec2 texel = (light.extent.zw - light.extent.xy) * (push.footprint.z * clip.w);
+  float footprint = width / sqrt(max(texel.x * texel.y, 1e-20));
+  outOpacity = push.opacity * (push.footprint.w > 0.5 ? footprint : 1.0);
   gl_Position = vec4(clip.xy, 0.5 * clip.w, clip.w);  // w = 1 (directional) or spot depth
 }

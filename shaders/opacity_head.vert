@@ -9,10 +9,12 @@ layout(std430, binding = OPACITY_BINDING_LIGHT) readonly buffer Light { LightSpa
 layout(push_constant) uniform Push { OpacityPush push; };
 
 layout(location = 0) out float outSlice;
+layout(location = 1) out float outOpacity;
 
 void main() {
   vec4 world = push.headToWorld * vec4(positions[indices[gl_VertexIndex]].xyz, 1.0);
   vec4 clip = light.viewProj * world;
   outSlice = clip.z * float(OPACITY_SLICES);
+  outOpacity = push.opacity;
   gl_Position = vec4(clip.xy, 0.5 * clip.w, clip.w);  // w = 1 (directional) or spot depth
 }

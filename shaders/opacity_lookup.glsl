@@ -38,4 +38,18 @@ float opacityAlpha(sampler2DArray maps, vec3 uvw, vec4 w0, vec4 w1, vec4 w2, vec
   return dot(w0, textureLod(maps, vec3(uv, 0.0), 0.0)) + dot(w1, textureLod(maps, vec3(uv, 1.0), 0.0)) +
          dot(w2, textureLod(maps, vec3(uv, 2.0), 0.0)) + dot(w3, textureLod(maps, vec3(uv, 3.0), 0.0));
 }
+// The same over a wider footprint for opaque receivers (the head): 4 bilinear taps 1.5 texels from the
+// receiver diagonally, a box of ~5 texels. One render strand covers about one texel, so the plain lookup draws
+// each strand's shadow as a sharp line on the skin; hair shadows on skin come from many fibres and are
+// soft. (Strand receivers keep the sharp lookup: it is what separates strands from the ones above them.)
+float opacityAlphaSoft(sampler2DArray maps, vec3 uvw, vec4 w0, vec4 w1, vec4 w2, vec4 w3) {
+  if (!(uvw.z > 0.0)) return 0.0;
+  vec2 d = 1.5 / vec2(textureSize(maps, 0).xy);
+  float sum = 0.0;
+  for (int k = 0; k < 4; ++k) {
+    vec2 o = vec2((k & 1) == 0 ? -d.x : d.x, k < 2 ? -d.y : d.y);
+    sum += opacityAlpha(maps, vec3(uvw.xy + o * uvw.z, uvw.z), w0, w1, w2, w3);
+  }
+  return 0.25 * sum;
+}
 #endif

@@ -17,6 +17,7 @@ layout(binding = RENDER_BINDING_LUT_M) uniform sampler2D lutM;
 layout(binding = RENDER_BINDING_LUT_N0) uniform sampler2D lutN0;
 layout(binding = RENDER_BINDING_LUT_N1) uniform sampler2D lutN1;
 layout(binding = RENDER_BINDING_OPACITY) uniform sampler2DArray opacityMaps;
+layout(binding = RENDER_BINDING_HEAD_SHADOW) uniform sampler2DShadow headShadowMap;
 layout(std430, binding = RENDER_BINDING_LIGHT) readonly buffer Light { LightSpace light; };
 layout(std430, binding = RENDER_BINDING_POSITIONS) readonly buffer Positions { vec4 positions[]; };
 layout(std430, binding = RENDER_BINDING_TANGENTS) readonly buffer Tangents { vec4 tangents[]; };

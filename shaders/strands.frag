@@ -2,7 +2,8 @@
 // Hair shading per fragment: hairRadiance (hair_shading.glsl, the same entry point as the compute
 // rasterizer's), L and the light's cone/distance scale per fragment for a spot. The ribbon's pixel coverage becomes a
 // sample mask with MSAA (dithered per strand and pixel, see coverageMask), alpha without. Transmittance T = exp(-k alpha) from the opacity maps with the
-// per-vertex slice weights (opacity_lookup.glsl); the ambient term is not shadowed.
+// per-vertex slice weights (opacity_lookup.glsl), times the head's occlusion (head_shadow.glsl); the
+// ambient term is not shadowed.
 #include "shared/render.h"
 #include "shared/marschner.h"
 #include "marschner.glsl"
@@ -15,6 +16,7 @@ layout(binding = RENDER_BINDING_LUT_M) uniform sampler2D lutM;
 layout(binding = RENDER_BINDING_LUT_N0) uniform sampler2D lutN0;
 layout(binding = RENDER_BINDING_LUT_N1) uniform sampler2D lutN1;
 layout(binding = RENDER_BINDING_OPACITY) uniform sampler2DArray opacityMaps;
+layout(binding = RENDER_BINDING_HEAD_SHADOW) uniform sampler2DShadow headShadowMap;
 
 layout(location = 0) in vec3 inWorld;
 layout(location = 1) in vec3 inTangent;

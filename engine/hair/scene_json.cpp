@@ -120,6 +120,7 @@ void readMaterial(JsonObject& root, HairMaterial& m) {
   o->readDegrees("wcDeg", m.wc);
   o->read("dEta", m.dEta);
   o->read("dhM", m.dhM);
+  o->readDegrees("betaNDeg", m.betaN);
   o->finish();
   validateSection(m, *o, root.pointer("material"));
 }

@@ -14,6 +14,7 @@ const vk::Binding kBindings[] = {
     {gpu::RENDER_BINDING_TANGENTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kVertex},
     {gpu::RENDER_BINDING_ATTRIBUTES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kVertex},
     {gpu::RENDER_BINDING_OPACITY, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT},
+    {gpu::RENDER_BINDING_HEAD_SHADOW, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT},
     {gpu::RENDER_BINDING_LIGHT, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kVertex},
 };
 
@@ -38,6 +39,7 @@ HeadPass::HeadPass(const vk::Context& ctx, const HeadMesh& mesh, const vk::Buffe
   set_.writeBuffer(gpu::RENDER_BINDING_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, frameBlock.handle(), 0,
                    sizeof(gpu::RenderFrame));
   set_.writeSampledImage(gpu::RENDER_BINDING_OPACITY, shadows.opacityView, shadows.sampler);  // hair shadows
+  set_.writeSampledImage(gpu::RENDER_BINDING_HEAD_SHADOW, shadows.headShadowView, shadows.headShadowSampler);
   set_.writeStorageBuffer(gpu::RENDER_BINDING_LIGHT, shadows.lightSpace);
   vk::GraphicsPipelineDesc desc;
   desc.vertexShader = "head.vert";

@@ -3,8 +3,8 @@
 // where HeadMesh::scalp marks hair roots (so the scalp does not show bare between strands), depth test and
 // write on, into the caller's dynamic rendering. Owns the mesh buffers (uploaded once), pipeline and
 // descriptor set; reads the frame block the caller keeps up to date (RenderFrame, shaders/shared/render.h;
-// a dynamic uniform buffer, draw() names the slot's offset)
-// and the opacity maps + LightSpace (ShadowInputs), so hair shadows fall on the head.
+// a dynamic uniform buffer, draw() names the slot's offset) and the shadows (ShadowInputs): hair shadows
+// from the opacity maps, the head's own from its depth map.
 // draw() must be called inside vkCmdBeginRendering with attachments matching `formats`.
 #include <glm/glm.hpp>
 

@@ -1,5 +1,6 @@
 #include "engine/render/opacity_pass.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -47,6 +48,29 @@ OpacityPass::OpacityPass(const vk::Context& ctx, const compute::StrandBuffers& s
   bind(strands);
   strandPipeline_ = makePipeline(ctx, library, strandSets_.front().layout(), maps.settings().format, false);
   headPipeline_ = makePipeline(ctx, library, headSet_.layout(), maps.settings().format, true);
+  vk::GraphicsPipelineDesc depth;
+  depth.vertexShader = "head_shadow.vert";
+  depth.depthFormat = ShadowMaps::kHeadDepthFormat;
+  depth.depthTest = depth.depthWrite = true;
+  depth.cullMode = VK_CULL_MODE_FRONT_BIT;  // back faces only: the "second depth" (head_shadow.glsl)
+  depth.sets = {headSet_.layout()};
+  depth.pushSize = sizeof(glm::mat4);
+  depth.name = "head shadow depth";
+  headDepthPipeline_ = vk::makeGraphicsPipeline(ctx, library, depth);
+}
+
+HeadSphere OpacityPass::headSphere(const glm::mat4& headToWorld) const {
+  if (headIndexCount_ == 0) return {};
+  const float scale = std::max({glm::length(glm::vec3(headToWorld[0])), glm::length(glm::vec3(headToWorld[1])),
+                                glm::length(glm::vec3(headToWorld[2]))});
+  return {glm::vec3(headToWorld * glm::vec4(sphere_.centre, 1.0f)), sphere_.radius * scale};
+}
+
+void OpacityPass::recordHeadDepth(VkCommandBuffer cmd, const glm::mat4& headToLightClip) const {
+  if (headIndexCount_ == 0) return;
+  headDepthPipeline_->bind(cmd, headSet_.set(), maps_.headImage().extent());
+  headDepthPipeline_->push(cmd, headToLightClip);
+  headDepthPipeline_->draw(cmd, headIndexCount_);
 }
 
 void OpacityPass::uploadHead(const HeadMesh& head) {
@@ -55,6 +79,12 @@ void OpacityPass::uploadHead(const HeadMesh& head) {
     if (i >= head.positions.size()) throw Error("head mesh: index " + std::to_string(i) + " is out of range");
   std::vector<glm::vec4> positions;
   for (const glm::vec3& p : head.positions) positions.emplace_back(p, 1.0f);
+  if (!head.positions.empty()) {
+    glm::vec3 lo = head.positions.front(), hi = lo;
+    for (const glm::vec3& p : head.positions) lo = glm::min(lo, p), hi = glm::max(hi, p);
+    sphere_.centre = 0.5f * (lo + hi);
+    for (const glm::vec3& p : head.positions) sphere_.radius = std::max(sphere_.radius, glm::length(p - sphere_.centre));
+  }
   // Placeholders keep the descriptors valid for a head-less asset (nothing is drawn then).
   if (positions.empty()) positions.emplace_back(0.0f);
   std::vector<std::uint32_t> indices = head.indices;
@@ -83,13 +113,15 @@ void OpacityPass::bind(const compute::StrandBuffers& strands) {
   strandSets_ = std::move(sets);
 }
 
-void OpacityPass::recordDraws(VkCommandBuffer cmd, const glm::mat4& headToWorld) const {
+void OpacityPass::recordDraws(VkCommandBuffer cmd, const glm::mat4& headToWorld, const glm::vec2& strandWidth) const {
   const VkExtent2D extent = maps_.image().extent();
   const OpacitySettings& settings = maps_.settings();
   const std::uint32_t q = strands_->layout().verticesPerStrand;
   gpu::OpacityPush push{};
-  push.opacity = settings.strandOpacity;
+  push.opacity = settings.footprint ? 1.0f : settings.strandOpacity;
   push.verticesPerStrand = q;
+  push.footprint = glm::vec4(strandWidth.x, strandWidth.y, 1.0f / float(settings.resolution),
+                             settings.footprint ? 1.0f : 0.0f);
   for (std::size_t c = 0; c < strandSets_.size(); ++c) {
     strandPipeline_->bind(cmd, strandSets_[c].set(), extent);
     strandPipeline_->push(cmd, push);

@@ -18,6 +18,7 @@
 
 #include "compute/strand_buffers.h"
 #include "engine/hair/hair_asset.h"
+#include "engine/render/head_shadow_view.h"
 #include "engine/render/shadow_maps.h"
 #include "engine/vk/buffer.h"
 #include "engine/vk/descriptors.h"
@@ -31,7 +32,12 @@ class OpacityPass {
   OpacityPass(const OpacityPass&) = delete;
   OpacityPass& operator=(const OpacityPass&) = delete;
 
-  void recordDraws(VkCommandBuffer cmd, const glm::mat4& headToWorld) const;
+  // strandWidth: x = width at the root (scene units), y = tip / root (the instance's LookSettings), for
+  // the footprint opacity (OpacitySettings::footprint).
+  void recordDraws(VkCommandBuffer cmd, const glm::mat4& headToWorld, const glm::vec2& strandWidth) const;
+  // The head's back faces into ShadowMaps' head depth map (between beginHeadRendering and endRendering).
+  void recordHeadDepth(VkCommandBuffer cmd, const glm::mat4& headToLightClip) const;
+  HeadSphere headSphere(const glm::mat4& headToWorld) const;  // bounding sphere in world space
 
  private:
   void uploadHead(const HeadMesh& head);
@@ -46,5 +52,7 @@ class OpacityPass {
   std::vector<vk::DescriptorSet> strandSets_;  // one per chunk
   std::shared_ptr<const vk::GraphicsPipeline> strandPipeline_;
   std::shared_ptr<const vk::GraphicsPipeline> headPipeline_;
+  std::shared_ptr<const vk::GraphicsPipeline> headDepthPipeline_;
+  HeadSphere sphere_;  // head space
 };
 }  // namespace hp::render

@@ -24,6 +24,9 @@ void OpacitySettings::validate() const {
     throw Error("opacity settings: resolution must be in [16, 4096], got " + std::to_string(resolution));
   checkRange(strandOpacity, 0.0f, 100.0f, true, "strandOpacity");
   checkRange(headOpacity, 0.0f, 1.0e4f, false, "headOpacity");
+  if (headShadowResolution < 16 || headShadowResolution > 8192)
+    throw Error("opacity settings: headShadowResolution must be in [16, 8192], got " +
+                std::to_string(headShadowResolution));
   checkRange(k, 0.0f, 1.0e3f, false, "k");
   checkRange(biasSlices, 0.0f, float(gpu::OPACITY_SLICES), false, "biasSlices");
   if (format != VK_FORMAT_R32G32B32A32_SFLOAT && format != VK_FORMAT_R16G16B16A16_SFLOAT)

@@ -1,7 +1,8 @@
 #pragma once
-// Contract: what a shading pass binds to look the opacity shadow maps up (opacity_lookup.glsl): the
-// 4-layer opacity image with its sampler (fragment shader) and the LightSpace buffer (vertex shader).
-// Handles owned by OpacityPass and BoundsPass; valid while the HairSystem lives.
+// Contract: what a shading pass binds to look the shadows up: the 4-layer opacity image with its
+// sampler (fragment shader, opacity_lookup.glsl), the LightSpace buffer (vertex shader) and the head's
+// depth shadow map with its compare sampler (fragment shader, head_shadow.glsl). Handles owned by
+// ShadowMaps (opacity image, LightSpace, head depth map); valid while the Renderer lives.
 #include <volk.h>
 
 namespace hp::render {
@@ -9,5 +10,7 @@ struct ShadowInputs {
   VkImageView opacityView = VK_NULL_HANDLE;  // 2D array, 4 layers, FragmentSampled
   VkSampler sampler = VK_NULL_HANDLE;
   VkBuffer lightSpace = VK_NULL_HANDLE;      // gpu::LightSpace, VertexRead
+  VkImageView headShadowView = VK_NULL_HANDLE;  // D32 depth, FragmentSampled
+  VkSampler headShadowSampler = VK_NULL_HANDLE;  // depth-compare
 };
 }  // namespace hp::render

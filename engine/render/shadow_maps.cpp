@@ -24,6 +24,25 @@ vk::Image makeImage(const vk::Context& ctx, const OpacitySettings& settings) {
   return vk::Image(ctx, desc);
 }
 
+vk::Image makeHeadImage(const vk::Context& ctx, const OpacitySettings& settings) {
+  vk::ImageDesc desc;
+  desc.width = desc.height = settings.headShadowResolution;
+  desc.format = ShadowMaps::kHeadDepthFormat;
+  desc.usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT;
+  desc.name = "head shadow map";
+  return vk::Image(ctx, desc);
+}
+
+VkRenderingAttachmentInfo depthAttachment(VkImageView view) {
+  VkRenderingAttachmentInfo a{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
+  a.imageView = view;
+  a.imageLayout = vk::imageLayout(vk::ImageUse::DepthAttachment);
+  a.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+  a.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+  a.clearValue.depthStencil = {1.0f, 0};
+  return a;
+}
+
 VkRenderingAttachmentInfo sliceAttachment(VkImageView view) {
   VkRenderingAttachmentInfo a{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
   a.imageView = view;
@@ -42,7 +61,9 @@ ShadowMaps::ShadowMaps(const vk::Context& ctx, const OpacitySettings& settings)
                   VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
                   vk::MemoryKind::DeviceLocal, "light space"),
       image_(makeImage(ctx, settings_)),
-      sampler_(ctx, "opacity sampler") {
+      sampler_(ctx, "opacity sampler"),
+      headImage_(makeHeadImage(ctx, settings_)),
+      headSampler_(ctx, "head shadow sampler", VK_COMPARE_OP_LESS_OR_EQUAL) {
   const gpu::LightSpace initial = compute::initialLightSpace();
   vk::submitAndWait(ctx, [&](VkCommandBuffer cmd) {
     ctx.fn().vkCmdUpdateBuffer(cmd, lightSpace_.handle(), 0, sizeof(initial), &initial);
@@ -54,6 +75,12 @@ ShadowMaps::ShadowMaps(const vk::Context& ctx, const OpacitySettings& settings)
     ctx.fn().vkCmdClearColorImage(cmd, image_.handle(), vk::imageLayout(vk::ImageUse::TransferDst), &zero, 1, &range);
     vk::imageBarrier(ctx, cmd, image_.handle(), VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::TransferDst,
                      vk::ImageUse::FragmentSampled, gpu::OPACITY_TARGETS);
+    vk::imageBarrier(ctx, cmd, headImage_.handle(), VK_IMAGE_ASPECT_DEPTH_BIT, vk::ImageUse::Undefined,
+                     vk::ImageUse::DepthAttachment);
+    beginHeadRendering(cmd);
+    endRendering(cmd);
+    vk::imageBarrier(ctx, cmd, headImage_.handle(), VK_IMAGE_ASPECT_DEPTH_BIT, vk::ImageUse::DepthAttachment,
+                     vk::ImageUse::FragmentSampled);
   }, "clear opacity maps");
 }
 
@@ -69,4 +96,13 @@ void ShadowMaps::beginRendering(VkCommandBuffer cmd) const {
 }
 
 void ShadowMaps::endRendering(VkCommandBuffer cmd) const { ctx_->fn().vkCmdEndRendering(cmd); }
+
+void ShadowMaps::beginHeadRendering(VkCommandBuffer cmd) const {
+  VkRenderingAttachmentInfo depth = depthAttachment(headImage_.view());
+  VkRenderingInfo info{VK_STRUCTURE_TYPE_RENDERING_INFO};
+  info.renderArea = {{0, 0}, headImage_.extent()};
+  info.layerCount = 1;
+  info.pDepthAttachment = &depth;
+  ctx_->fn().vkCmdBeginRendering(cmd, &info);
+}
 }  // namespace hp::render

@@ -6,7 +6,10 @@
 // beginRendering()/endRendering() open and close the additive rendering into the 4 layers (cleared to 0);
 // the instances' OpacityPass::recordDraws go between them. Inserts no barriers: the frame recorder
 // (hp::recordShadowPasses) owns them.
-// Construction clears the image (alpha = 0, T = 1) and leaves it in ImageUse::FragmentSampled, and
+// Also owns the heads' depth shadow map (D32, back faces, head_shadow.glsl) every instance's head is
+// drawn into, with its compare sampler: the head occludes hair and itself through it, not the slices.
+// Construction clears the image (alpha = 0, T = 1) and the head map (far plane: lit) and leaves them in
+// ImageUse::FragmentSampled, and
 // uploads an armed LightSpace (compute::initialLightSpace) left in BufferUse::VertexRead, so a frame with
 // shadows off samples valid data. One blocking submission. Throws hp::Error on invalid settings.
 #include "engine/render/opacity_settings.h"
@@ -17,6 +20,8 @@
 namespace hp::render {
 class ShadowMaps {
  public:
+  static constexpr VkFormat kHeadDepthFormat = VK_FORMAT_D32_SFLOAT;
+
   ShadowMaps(const vk::Context& ctx, const OpacitySettings& settings);
   ShadowMaps(const ShadowMaps&) = delete;
   ShadowMaps& operator=(const ShadowMaps&) = delete;
@@ -26,10 +31,15 @@ class ShadowMaps {
 
   void beginRendering(VkCommandBuffer cmd) const;
   void endRendering(VkCommandBuffer cmd) const;
+  // The heads' depth map (back faces, cleared to the far plane): OpacityPass::recordHeadDepth between.
+  void beginHeadRendering(VkCommandBuffer cmd) const;
 
   const vk::Image& image() const { return image_; }
+  const vk::Image& headImage() const { return headImage_; }
   const vk::Buffer& lightSpace() const { return lightSpace_; }
-  ShadowInputs inputs() const { return {image_.view(), sampler_.handle(), lightSpace_.handle()}; }
+  ShadowInputs inputs() const {
+    return {image_.view(), sampler_.handle(), lightSpace_.handle(), headImage_.view(), headSampler_.handle()};
+  }
   const OpacitySettings& settings() const { return settings_; }
 
  private:
@@ -38,5 +48,7 @@ class ShadowMaps {
   vk::Buffer lightSpace_;
   vk::Image image_;
   vk::Sampler sampler_;
+  vk::Image headImage_;    // D32, settings.headShadowResolution^2
+  vk::Sampler headSampler_;  // depth compare
 };
 }  // namespace hp::render

@@ -14,6 +14,7 @@ const vk::Binding kBindings[] = {
     {gpu::RENDER_BINDING_LUT_N0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kFragment},
     {gpu::RENDER_BINDING_LUT_N1, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kFragment},
     {gpu::RENDER_BINDING_OPACITY, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kFragment},
+    {gpu::RENDER_BINDING_HEAD_SHADOW, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kFragment},
     {gpu::RENDER_BINDING_LIGHT, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kVertex},
     {gpu::RENDER_BINDING_POSITIONS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kVertex},
     {gpu::RENDER_BINDING_TANGENTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kVertex},
@@ -55,6 +56,7 @@ StrandPass::StrandPass(const vk::Context& ctx, const compute::StrandBuffers& str
     set.writeStorageBuffer(gpu::RENDER_BINDING_TANGENTS, chunk.tangents.handle());
     set.writeStorageBuffer(gpu::RENDER_BINDING_ATTRIBUTES, chunk.attributes.handle());
     set.writeSampledImage(gpu::RENDER_BINDING_OPACITY, shadows.opacityView, shadows.sampler);
+    set.writeSampledImage(gpu::RENDER_BINDING_HEAD_SHADOW, shadows.headShadowView, shadows.headShadowSampler);
     set.writeStorageBuffer(gpu::RENDER_BINDING_LIGHT, shadows.lightSpace);
     sets_.push_back(std::move(set));
   }

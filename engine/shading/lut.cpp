@@ -9,14 +9,15 @@ const char* lutModeName(LutMode mode) {
     case LutMode::Direct: return "direct";
     case LutMode::Paper: return "paper";
     case LutMode::Float: return "float";
+    case LutMode::Physical: return "physical";
   }
   return "?";
 }
 
 LutMode parseLutMode(const std::string& name) {
-  for (LutMode m : {LutMode::Direct, LutMode::Paper, LutMode::Float})
+  for (LutMode m : {LutMode::Direct, LutMode::Paper, LutMode::Float, LutMode::Physical})
     if (name == lutModeName(m)) return m;
-  throw Error("unknown LUT mode '" + name + "' (expected direct, paper or float)");
+  throw Error("unknown LUT mode '" + name + "' (expected direct, paper, float or physical)");
 }
 
 const char* lutFormatName(LutFormat format) {
@@ -32,6 +33,7 @@ MarschnerLut buildLut(LutMode mode, const HairMaterial& material, const LutBuild
   switch (mode) {
     case LutMode::Paper: return buildPaperLut(material, options.paperFormat);
     case LutMode::Float: return buildFloatLut(material, options.floatFormat);
+    case LutMode::Physical: return buildPhysicalLut(material, options.floatFormat);
     case LutMode::Direct: break;
   }
   material.validate();
@@ -55,7 +57,8 @@ nlohmann::json describeLut(const MarschnerLut& lut) {
                    {"kG", m.kG},
                    {"wc_rad", m.wc},
                    {"dEta", m.dEta},
-                   {"dhM", m.dhM}};
+                   {"dhM", m.dhM},
+                   {"betaN_rad", m.betaN}};
   j["textures"] = nlohmann::json::array();
   for (const LutTexture& t : lut.textures) {
     j["textures"].push_back({{"name", t.name},

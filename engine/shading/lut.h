@@ -6,6 +6,8 @@
 //  - LutMode::Float: RGBA16F (or RGBA32F on request) M (1D) and N0/N1 (2D) over the pseudo-angle
 //    parameterisation of shaders/shared/marschner.h; separate lobes; scale = 1.
 //  - LutMode::Direct: no textures.
+//  - LutMode::Physical: the energy-conserving model (REFERENCES §3b), RGBA16F M (2D over theta_i,
+//    theta_r) and N0/N1 (over phi, theta_r); scale = 1. The other three modes are the paper's model.
 // Texel data are floats already quantised to the GPU format (RGBA8: k/255), row-major, 4 channels,
 // row 0 at v = 0; texel (i, j) sits at texture coordinate ((i + 0.5)/width, (j + 0.5)/height).
 #include <nlohmann/json.hpp>
@@ -17,11 +19,11 @@
 #include "engine/shading/material.h"
 
 namespace hp {
-enum class LutMode { Direct, Paper, Float };
+enum class LutMode { Direct, Paper, Float, Physical };
 enum class LutFormat { RGBA8Unorm, RGBA16F, RGBA32F };
 
 const char* lutModeName(LutMode mode);
-LutMode parseLutMode(const std::string& name);  // "direct" | "paper" | "float", else hp::Error
+LutMode parseLutMode(const std::string& name);  // "direct" | "paper" | "float" | "physical", else hp::Error
 const char* lutFormatName(LutFormat format);
 
 struct LutTexture {
@@ -43,18 +45,19 @@ struct LutTexture {
 struct MarschnerLut {
   LutMode mode = LutMode::Direct;
   HairMaterial material;
-  std::vector<LutTexture> textures;  // paper: {M, N}; float: {M, N0, N1}; direct: {}
+  std::vector<LutTexture> textures;  // paper: {M, N}; float, physical: {M, N0, N1}; direct: {}
   std::string parameterisation;      // human-readable summary
 };
 
 struct LutBuildOptions {
-  LutFormat floatFormat = LutFormat::RGBA16F;    // float mode only
+  LutFormat floatFormat = LutFormat::RGBA16F;    // float and physical modes
   LutFormat paperFormat = LutFormat::RGBA8Unorm;  // RGBA32F only to separate 8-bit error when measuring
 };
 
 MarschnerLut buildLut(LutMode mode, const HairMaterial& material, const LutBuildOptions& options = {});
 MarschnerLut buildPaperLut(const HairMaterial& material, LutFormat format = LutFormat::RGBA8Unorm);
 MarschnerLut buildFloatLut(const HairMaterial& material, LutFormat format);
+MarschnerLut buildPhysicalLut(const HairMaterial& material, LutFormat format);
 
 nlohmann::json describeLut(const MarschnerLut& lut);  // layout, parameterisation, scales, material
 }  // namespace hp

@@ -3,32 +3,21 @@
 #include <algorithm>
 #include <cmath>
 
-#include "engine/shading/half_float.h"
 #include "engine/shading/lut.h"
 #include "engine/shading/lut_param.h"
+#include "engine/shading/lut_texture.h"
 #include "engine/shading/marschner.h"
 #include "engine/shading/marschner_terms.h"
 #include "shaders/shared/marschner.h"
 
 namespace hp {
 namespace {
-float quantise(double v, LutFormat f) {
-  float x = static_cast<float>(v);
-  return f == LutFormat::RGBA16F ? shading::roundToHalf(x) : x;
-}
+using shading::makeLutTexture;
 
-LutTexture makeTexture(const char* name, std::uint32_t w, std::uint32_t h, LutFormat f) {
-  LutTexture t;
-  t.name = name;
-  t.width = w;
-  t.height = h;
-  t.format = f;
-  t.data.assign(std::size_t(w) * h * 4, 0.0f);
-  return t;
-}
+float quantise(double v, LutFormat f) { return shading::quantiseTexel(v, f); }
 
 LutTexture buildM(const HairMaterial& m, LutFormat f) {
-  LutTexture t = makeTexture("M", gpu::MARSCHNER_FLOAT_M_WIDTH, 1, f);
+  LutTexture t = makeLutTexture("M", gpu::MARSCHNER_FLOAT_M_WIDTH, 1, f);
   t.channelNames = {"M_R", "M_TT", "M_TRT", "unused"};
   t.uAxis = "signed pseudo-angle of theta_h: 0.5 + 0.5 sign(theta_h) P(|theta_h|), texel-centre mapped";
   t.vAxis = "none (height 1)";
@@ -68,8 +57,8 @@ MarschnerLut buildFloatLut(const HairMaterial& material, LutFormat format) {
   lut.material = material;
   const char* nu = "pseudo-angle P(phi/2): 0 at phi = 0, 1 at phi = pi, texel-centre mapped";
   const char* nv = "pseudo-angle P(|theta_d|): 0 at theta_d = 0, 1 at 90 deg, texel-centre mapped";
-  LutTexture n0 = makeTexture("N0", gpu::MARSCHNER_FLOAT_N_WIDTH, gpu::MARSCHNER_FLOAT_N_HEIGHT, format);
-  LutTexture n1 = makeTexture("N1", gpu::MARSCHNER_FLOAT_N_WIDTH, gpu::MARSCHNER_FLOAT_N_HEIGHT, format);
+  LutTexture n0 = makeLutTexture("N0", gpu::MARSCHNER_FLOAT_N_WIDTH, gpu::MARSCHNER_FLOAT_N_HEIGHT, format);
+  LutTexture n1 = makeLutTexture("N1", gpu::MARSCHNER_FLOAT_N_WIDTH, gpu::MARSCHNER_FLOAT_N_HEIGHT, format);
   n0.channelNames = {"N_TT.r", "N_TT.g", "N_TT.b", "N_R"};
   n1.channelNames = {"N_TRT.r", "N_TRT.g", "N_TRT.b", "unused"};
   n0.uAxis = n1.uAxis = nu;

@@ -38,6 +38,14 @@ glm::vec3 evaluateFloat(const MarschnerLut& lut, glm::vec4 ang, const LutSampler
   glm::vec4 n1 = sampleBilinear(lut.textures.at(2), c.y, c.z, o) * scaleOf(lut.textures[2]);
   return (m.x * n0.w + m.y * glm::vec3(n0) + m.z * glm::vec3(n1)) * c.w;
 }
+
+glm::vec3 evaluatePhysical(const MarschnerLut& lut, glm::vec4 ang, const LutSamplerOptions& o) {
+  glm::vec4 c = gpu::marschnerPhysicalCoords(ang);
+  glm::vec4 m = sampleBilinear(lut.textures.at(0), c.x, c.y, o) * scaleOf(lut.textures[0]);
+  glm::vec4 n0 = sampleBilinear(lut.textures.at(1), c.z, c.w, o) * scaleOf(lut.textures[1]);
+  glm::vec4 n1 = sampleBilinear(lut.textures.at(2), c.z, c.w, o) * scaleOf(lut.textures[2]);
+  return (m.x * n0.w + m.y * glm::vec3(n0) + m.z * glm::vec3(n1)) * gpu::marschnerPhysicalInvCosI(ang);
+}
 }  // namespace
 
 glm::vec4 sampleBilinear(const LutTexture& t, float u, float v, const LutSamplerOptions& options) {
@@ -57,6 +65,7 @@ glm::dvec3 evaluateLut(const MarschnerLut& lut, glm::dvec3 L, glm::dvec3 V, glm:
   switch (lut.mode) {
     case LutMode::Paper: return glm::dvec3(evaluatePaper(lut, ang, options));
     case LutMode::Float: return glm::dvec3(evaluateFloat(lut, ang, options));
+    case LutMode::Physical: return glm::dvec3(evaluatePhysical(lut, ang, options));
     case LutMode::Direct: break;
   }
   throw Error("evaluateLut: the direct mode has no lookup textures");

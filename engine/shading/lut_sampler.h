@@ -3,7 +3,7 @@
 // CPU. sampleBilinear() is the GPU's bilinear filter with clamp-to-edge addressing: texel centres at
 // (i + 0.5)/n, weights from u*n - 0.5, optionally quantised to subTexelBits fractional bits like
 // hardware filtering (0 = exact; NVIDIA/AMD use 8). Arithmetic is single precision, like the GPU.
-// evaluateLut() runs the marschnerLutPaper / marschnerLutFloat shader logic of shaders/marschner.glsl
+// evaluateLut() runs the marschnerLutPaper / marschnerLutFloat / marschnerLutPhysical shader logic of shaders/marschner.glsl
 // (same shared coordinate functions from shaders/shared/marschner.h) and returns S.
 #include <glm/glm.hpp>
 

@@ -10,6 +10,7 @@ std::uint32_t gpuModeOf(LutMode mode) {
   switch (mode) {
     case LutMode::Paper: return gpu::MARSCHNER_MODE_LUT_PAPER;
     case LutMode::Float: return gpu::MARSCHNER_MODE_LUT_FLOAT;
+    case LutMode::Physical: return gpu::MARSCHNER_MODE_LUT_PHYSICAL;
     case LutMode::Direct: break;
   }
   return gpu::MARSCHNER_MODE_DIRECT;

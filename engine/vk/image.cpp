@@ -128,14 +128,27 @@ void Image::release() {
   memory_ = VK_NULL_HANDLE;
 }
 
-Sampler::Sampler(const Context& ctx, const std::string& name, VkFilter filter) : device_(ctx.device()), fn_(&ctx.fn()) {
+Sampler::Sampler(const Context& ctx, const std::string& name, VkFilter filter)
+    : Sampler(ctx, name, filter, VK_COMPARE_OP_MAX_ENUM) {}
+
+Sampler::Sampler(const Context& ctx, const std::string& name, VkCompareOp compare)
+    : Sampler(ctx, name, VK_FILTER_LINEAR, compare) {}
+
+Sampler::Sampler(const Context& ctx, const std::string& name, VkFilter filter, VkCompareOp compare)
+    : device_(ctx.device()), fn_(&ctx.fn()) {
+  const bool depthCompare = compare != VK_COMPARE_OP_MAX_ENUM;
+  const VkSamplerAddressMode address =
+      depthCompare ? VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_BORDER : VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
   VkSamplerCreateInfo info{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
   info.magFilter = filter;
   info.minFilter = filter;
   info.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
-  info.addressModeU = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-  info.addressModeV = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-  info.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+  info.addressModeU = address;
+  info.addressModeV = address;
+  info.addressModeW = address;
+  info.compareEnable = depthCompare ? VK_TRUE : VK_FALSE;
+  info.compareOp = depthCompare ? compare : VK_COMPARE_OP_NEVER;
+  info.borderColor = VK_BORDER_COLOR_FLOAT_OPAQUE_WHITE;
   info.maxLod = 0.0f;
   HP_VK_CHECK(fn_->vkCreateSampler(device_, &info, nullptr, &sampler_));
   try {

@@ -60,13 +60,16 @@ class Image {
 bool isDepthFormat(VkFormat format);
 std::uint32_t formatBytesPerPixel(VkFormat format);  // for the formats hairpipe reads back
 
-// A sampler with linear filtering (or `filter`: nearest for formats that cannot filter, e.g. depth) and
-// clamp-to-edge (what every LUT, shadow and tonemap lookup uses), move-only and destroyed with its
-// owner, so a constructor that throws after making one cannot leak it.
+// A sampler with linear filtering (or `filter`: nearest for formats that cannot filter) and clamp-to-edge
+// (what every LUT, shadow and tonemap lookup uses), move-only and destroyed with its owner, so a
+// constructor that throws after making one cannot leak it. With a compare op it is a depth-compare
+// sampler (sampler2DShadow: filtered percentage-closer lookups); its border is opaque white
+// (clamp-to-border), so lookups outside a depth map pass the test.
 class Sampler {
  public:
   Sampler() = default;
   Sampler(const Context& ctx, const std::string& name, VkFilter filter = VK_FILTER_LINEAR);
+  Sampler(const Context& ctx, const std::string& name, VkCompareOp compare);
   ~Sampler();
   Sampler(Sampler&& other) noexcept;
   Sampler& operator=(Sampler&& other) noexcept;
@@ -75,6 +78,7 @@ class Sampler {
   VkSampler handle() const { return sampler_; }
 
  private:
+  Sampler(const Context& ctx, const std::string& name, VkFilter filter, VkCompareOp compare);
   VkDevice device_ = VK_NULL_HANDLE;
   const VolkDeviceTable* fn_ = nullptr;  // the Context's device functions
   VkSampler sampler_ = VK_NULL_HANDLE;

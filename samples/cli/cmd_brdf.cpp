@@ -1,5 +1,5 @@
-// `hairpipe brdf --in DIRS.csv --out S.csv [--mode paper|float|direct] [material options] [--device D]
-// [--validation]`: evaluates the Marschner S ON THE DEVICE (shaders/brdf_eval.comp via
+// `hairpipe brdf --in DIRS.csv --out S.csv [--mode physical|paper|float|direct] [material options] [--device D]
+// [--validation]`: evaluates the fibre S ON THE DEVICE (shaders/brdf_eval.comp via
 // hp::render::BrdfEvaluator) for every row of DIRS.csv.
 // Input: one row per line, `lx,ly,lz,vx,vy,vz,tx,ty,tz` (L toward the light, V toward the eye, T the
 // tangent); vectors need not be normalised (they are normalised on the host, in double, so any finite
@@ -29,7 +29,7 @@ namespace {
 struct BrdfOptions {
   std::string in;
   std::string out;
-  std::string mode = "float";
+  std::string mode = "physical";
   hp::HairMaterial material;
   std::string device;
   bool validation = false;
@@ -52,8 +52,8 @@ std::vector<std::byte> formatRows(const std::vector<glm::vec3>& s, const std::st
 }
 
 void runBrdf(const BrdfOptions& o) {
-  if (o.mode != "paper" && o.mode != "float" && o.mode != "direct")
-    throw hp::Error("--mode " + o.mode + ": expected paper, float or direct");
+  if (o.mode != "physical" && o.mode != "paper" && o.mode != "float" && o.mode != "direct")
+    throw hp::Error("--mode " + o.mode + ": expected physical, paper, float or direct");
   const hp::LutMode mode = hp::parseLutMode(o.mode);
   o.material.validate();
   hp::cli::prepareOutputFile({"--out", o.out}, {{"--in", o.in}});
@@ -77,12 +77,13 @@ void runBrdf(const BrdfOptions& o) {
 
 void setupBrdf(CLI::App& app) {
   auto options = std::make_shared<BrdfOptions>();
-  CLI::App* cmd = app.add_subcommand("brdf", "evaluate the Marschner S on the device for rows of (L, V, T)");
+  CLI::App* cmd = app.add_subcommand("brdf", "evaluate the fibre S on the device for rows of (L, V, T)");
   cmd->add_option("--in", options->in, std::string("input CSV, rows ") + hp::cli::kBrdfRowFormat + " (optional header line)")
       ->required();
   cmd->add_option("--out", options->out, "output CSV, rows r,g,b in input order (written atomically)")->required();
   // Checked in runBrdf (hp::Error, exit code 1) rather than by CLI11, like the material options.
-  cmd->add_option("--mode", options->mode, "float (RGBA16F LUTs, default), paper (RGBA8 128x128) or direct (analytic)");
+  cmd->add_option("--mode", options->mode, "physical (energy-conserving model, RGBA16F LUTs, default); the paper's model: float (RGBA16F LUTs), "
+                  "paper (RGBA8 128x128) or direct (analytic)");
   hp::cli::addMaterialOptions(*cmd, options->material);
   cmd->add_option("--device", options->device, "device name substring or index (default: HAIRPIPE_DEVICE, else best)");
   cmd->add_flag("--validation", options->validation, "enable the Vulkan validation layer");

@@ -1,4 +1,4 @@
-// `hairpipe lut --out DIR [--mode paper|float] [material options]`: builds the Marschner lookup
+// `hairpipe lut --out DIR [--mode paper|float|physical] [material options]`: builds the Marschner lookup
 // textures on the CPU and writes, per texture NAME: NAME_rgb.pfm and NAME_a.pfm (stored float values,
 // channels 0-2 and 3), NAME.png and NAME_a.png (8-bit previews), plus lut.json (layout,
 // parameterisation, per-channel scale factors, material, files). Every file is written atomically.
@@ -63,8 +63,8 @@ void setupLut(CLI::App& app) {
   auto options = std::make_shared<LutOptions>();
   CLI::App* cmd = app.add_subcommand("lut", "build the Marschner lookup textures (PFM + PNG + JSON)");
   cmd->add_option("--out", options->out, "output directory (created if missing)")->required();
-  cmd->add_option("--mode", options->mode, "paper (RGBA8 128x128, the paper's form) or float (RGBA16F)")
-      ->check(CLI::IsMember({"paper", "float"}));
+  cmd->add_option("--mode", options->mode, "paper (RGBA8 128x128, the paper's form), float (RGBA16F) or physical (the energy-conserving model)")
+      ->check(CLI::IsMember({"paper", "float", "physical"}));
   hp::cli::addMaterialOptions(*cmd, options->material);
   cmd->callback([options] { run(*options); });
 }

@@ -56,6 +56,8 @@ void addMaterialOptions(CLI::App& app, HairMaterial& m) {
             [](HairMaterial& x, double v) { x.wc = glm::radians(v); });
   addScalar(app, m, "--deta", "caustic fade range of eta', > 0 (default 0.3)", [](HairMaterial& x, double v) { x.dEta = v; });
   addScalar(app, m, "--dhm", "caustic maximum h range, (0, 1] (default 0.5)", [](HairMaterial& x, double v) { x.dhM = v; });
+  addScalar(app, m, "--beta-n", "physical model: azimuthal lobe width in degrees, [2, 45] (default 10)",
+            [](HairMaterial& x, double v) { x.betaN = glm::radians(v); });
   auto* absorption = app.add_option_function<std::vector<double>>(
       "--absorption",
       [&m](const std::vector<double>& v) {

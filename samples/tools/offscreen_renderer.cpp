@@ -1,13 +1,16 @@
 #include "samples/tools/offscreen_renderer.h"
 
+#include <cstring>
+
 #include "engine/error.h"
+#include "engine/shading/half_float.h"
 #include "engine/vk/barriers.h"
 #include "engine/vk/context.h"
 #include "engine/vk/transfer.h"
 
 namespace hp::render {
 namespace {
-constexpr VkClearColorValue kBackground = {{0.018f, 0.02f, 0.024f, 1.0f}};
+constexpr VkClearColorValue kBackground = {{kBackgroundRadiance.x, kBackgroundRadiance.y, kBackgroundRadiance.z, 1.0f}};
 
 VkRenderingAttachmentInfo colorAttachment(VkImageView view, VkClearColorValue clear) {
   VkRenderingAttachmentInfo a{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
@@ -160,5 +163,21 @@ std::vector<std::uint8_t> OffscreenRenderer::readDisplay() const {
   std::vector<std::uint8_t> out(bytes.size());
   std::memcpy(out.data(), bytes.data(), bytes.size());
   return out;
+}
+
+LinearImage OffscreenRenderer::readLinear() const {
+  return rgbOfHalfRgba(vk::readbackImage(ctx_, hdrInput(), vk::ImageUse::FragmentSampled), extent(), 0, 3);
+}
+
+LinearImage rgbOfHalfRgba(const std::vector<std::byte>& bytes, VkExtent2D extent, std::uint32_t first,
+                          std::uint32_t channels) {
+  const std::size_t pixels = std::size_t(extent.width) * extent.height;
+  if (bytes.size() != pixels * 4 * sizeof(std::uint16_t)) throw Error("rgbOfHalfRgba: not an RGBA16F image of this size");
+  std::vector<std::uint16_t> halves(pixels * 4);
+  std::memcpy(halves.data(), bytes.data(), bytes.size());
+  LinearImage image(extent.width, extent.height, channels);
+  for (std::size_t i = 0; i < pixels; ++i)
+    for (std::uint32_t c = 0; c < channels; ++c) image.values[i * channels + c] = shading::halfToFloat(halves[i * 4 + first + c]);
+  return image;
 }
 }  // namespace hp::render

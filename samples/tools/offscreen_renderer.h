@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "engine/hair_system.h"
+#include "samples/tools/linear_image.h"
 #include "samples/tools/render_targets.h"
 #include "samples/tools/tonemap_pass.h"
 
@@ -33,6 +34,9 @@ class OffscreenRenderer {
               vk::GpuProfiler* profiler = nullptr) const;
   // RGBA8, sRGB-encoded, rows top to bottom. Waits for the queue through a one-shot readback.
   std::vector<std::uint8_t> readDisplay() const;
+  // The frame's linear HDR radiance before exposure and tonemap (RGB floats, rows top to bottom);
+  // after record(), blocking like readDisplay().
+  LinearImage readLinear() const;
 
  private:
   void recordScene(VkCommandBuffer cmd, const std::function<void(VkCommandBuffer)>& draws) const;
@@ -46,4 +50,8 @@ class OffscreenRenderer {
   RenderTargets targets_;
   TonemapPass tonemap_;
 };
+
+// Channels [first, first + channels) of an RGBA16F image read back (rows top to bottom) as floats.
+LinearImage rgbOfHalfRgba(const std::vector<std::byte>& bytes, VkExtent2D extent, std::uint32_t first,
+                          std::uint32_t channels);
 }  // namespace hp::render

@@ -88,6 +88,7 @@ nlohmann::json sliceJson(const OpacityCapture& c) {
           {"view_proj_rows", viewProj},
           {"k", c.settings.k},
           {"strand_opacity", c.settings.strandOpacity},
+          {"strand_opacity_mode", c.settings.footprint ? "footprint" : "constant"},
           {"head_opacity", c.settings.headOpacity},
           {"bias_slices", c.settings.biasSlices}};
 }

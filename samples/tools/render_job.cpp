@@ -9,6 +9,7 @@
 #include "samples/tools/offscreen_renderer.h"
 #include "engine/vk/context.h"
 #include "engine/vk/submit.h"
+#include "engine/vk/transfer.h"
 
 namespace hp {
 namespace {
@@ -89,6 +90,23 @@ void validateRequest(const RenderRequest& r) {
   r.scene.light.validate();  // also catches a hand-built LightSpec that skipped the scene parser
 }
 
+namespace {
+// What --export-frame writes: the drawn strands, the camera and head placement, the linear image.
+FrameCapture captureFrame(const vk::Context& ctx, const HairSystem& hair, const render::OffscreenRenderer& renderer,
+                          const DrawView& view) {
+  FrameCapture f;
+  f.strands = compute::readRenderStrands(ctx, hair.strands(), vk::BufferUse::VertexRead);
+  f.verticesPerStrand = hair.strands().layout().verticesPerStrand;
+  f.headToWorld = view.headToWorld;
+  f.camera = view.camera;
+  f.linear = renderer.readLinear();
+  if (hair.raster() == RasterMode::Compute)
+    f.hairAlpha = render::rgbOfHalfRgba(vk::readbackImage(ctx, hair.rasterImage(), vk::ImageUse::FragmentSampled),
+                                        renderer.extent(), 3, 1);
+  return f;
+}
+}  // namespace
+
 RenderResult renderStill(const vk::Context& ctx, const HairAsset& asset, const RenderRequest& request,
                          const std::function<void(std::uint32_t settled)>& progress) {
   validateRequest(request);
@@ -101,6 +119,7 @@ RenderResult renderStill(const vk::Context& ctx, const HairAsset& asset, const R
   if (request.captureStrands)
     result.strandDump = compute::renderStrandsToHairData(ctx, hair.strands(), vk::BufferUse::VertexRead,
                                                          "hairpipe render: render strands of the drawn frame");
+  if (request.captureFrame) result.frame = captureFrame(ctx, hair, session.renderer, session.view(motion));
   if (request.captureOpacity && request.opacity.enabled)
     result.opacity = render::captureOpacity(ctx, hair.shadows().image(), hair.shadows().lightSpace(), request.opacity,
                                             glm::normalize(request.scene.light.direction));

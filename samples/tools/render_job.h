@@ -9,6 +9,7 @@
 
 #include "engine/hair/hair_file.h"
 #include "engine/hair_system.h"
+#include "samples/tools/frame_capture.h"
 #include "samples/tools/opacity_capture.h"
 #include "engine/sim/head_animation.h"
 #include "engine/vk/profiler.h"
@@ -18,7 +19,7 @@ struct RenderRequest {
   Scene scene;                      // camera, light, render size, material, simulation, density
   std::uint32_t settleFrames = 90;  // simulated frames before the rendered one
   HeadAnimation animation = HeadAnimation::None;
-  LutMode lutMode = LutMode::Float;
+  LutMode lutMode = LutMode::Physical;
   bool lines = false;
   bool guidesOnly = false;
   float exposure = 1.0f;
@@ -27,6 +28,7 @@ struct RenderRequest {
   compute::RasterSettings rasterSettings;  // the compute raster's tile budget (scene.render.raster picks the path)
   bool captureOpacity = false;      // read the opacity maps and light framing back (RenderResult::opacity)
   bool captureStrands = false;      // read the rendered frame's render strands back (RenderResult::strands)
+  bool captureFrame = false;        // read strands, camera, linear image, hair coverage back (RenderResult::frame)
 };
 
 struct RenderResult {
@@ -41,6 +43,7 @@ struct RenderResult {
   std::optional<compute::RasterStats> rasterStats;   // compute raster: tile-list entries and overflow
   std::optional<render::OpacityCapture> opacity;  // with captureOpacity and shadows on
   std::optional<HairFileData> strandDump;         // with captureStrands: Q points per render strand
+  std::optional<FrameCapture> frame;              // with captureFrame
 };
 
 // `progress` (optional) is told the settling frames done.

@@ -34,6 +34,7 @@ HP_BEGIN
 HP_CONST(uint, MARSCHNER_MODE_DIRECT, 0u)     // analytic S in the shader, no textures
 HP_CONST(uint, MARSCHNER_MODE_LUT_PAPER, 1u)  // the paper's two RGBA8 128x128 textures
 HP_CONST(uint, MARSCHNER_MODE_LUT_FLOAT, 2u)  // three RGBA16F textures, separate lobes
+HP_CONST(uint, MARSCHNER_MODE_LUT_PHYSICAL, 3u)  // the energy-conserving model (REFERENCES §3b), RGBA16F
 
 // `paper` mode: M (RGBA8) indexed by (sin theta_i, sin theta_r) * 0.5 + 0.5,
 // N (RGBA8) indexed by (cos phi * 0.5 + 0.5, cos theta_d). Both square.
@@ -47,6 +48,16 @@ HP_CONST(uint, MARSCHNER_PAPER_LUT_SIZE, 128u)
 HP_CONST(uint, MARSCHNER_FLOAT_M_WIDTH, 2048u)
 HP_CONST(uint, MARSCHNER_FLOAT_N_WIDTH, 256u)
 HP_CONST(uint, MARSCHNER_FLOAT_N_HEIGHT, 128u)
+
+// `physical` mode (RGBA16F; docs/SHADING.md "physical"):
+//   M  : M_SIZE x M_SIZE, (M_R, M_TT, M_TRT, 0) over (signed pseudo-angle of theta_i, of theta_r);
+//   N0 : N_WIDTH x N_HEIGHT, (N_TT.rgb, N_R); N1: same size, (N_TRT + N_res).rgb;
+//        u = pseudo-angle of phi/2, v = pseudo-angle of |theta_r| (the attenuations depend on theta_r).
+// S = (M_R N_R + M_TT N_TT + M_TRT (N_TRT + N_res)) / cos theta_i, cos theta_i = sqrt(1 - sin^2).
+HP_CONST(uint, MARSCHNER_PHYSICAL_M_SIZE, 512u)
+HP_CONST(uint, MARSCHNER_PHYSICAL_N_WIDTH, 256u)
+HP_CONST(uint, MARSCHNER_PHYSICAL_N_HEIGHT, 128u)
+HP_CONST(float, MARSCHNER_PHYSICAL_MIN_COS_I, 1e-4f)
 
 HP_CONST(float, MARSCHNER_INV_SQRT2, 0.70710678f)
 
@@ -131,6 +142,31 @@ HP_FN vec4 marschnerFloatCoords(vec4 angles) {
   float nu = marschnerTexelCentreCoord(marschnerPseudoAngle(angles.z), float(MARSCHNER_FLOAT_N_WIDTH));
   float nv = marschnerTexelCentreCoord(marschnerPseudoAngle(cos2d), float(MARSCHNER_FLOAT_N_HEIGHT));
   return vec4(mu, nu, nv, 2.0f / max(1.0f + cos2d, 1e-12f));
+}
+
+// Pseudo-angle of |theta| from sin(theta) (same map as marschnerPseudoAngle with cos 2a = 1 - 2 s^2,
+// but taking sin a = |s| directly keeps the digits near theta = 0).
+HP_FN float marschnerPseudoAngleOfSin(float s) {
+  float a = abs(s);
+  return a <= MARSCHNER_INV_SQRT2 ? a * MARSCHNER_INV_SQRT2
+                                  : 1.0f - sqrt(max(0.0f, 1.0f - a * a)) * MARSCHNER_INV_SQRT2;
+}
+
+// `physical` mode coordinates from marschnerAngles(): (M u, M v, N u, N v), square roots only.
+HP_FN vec4 marschnerPhysicalCoords(vec4 angles) {
+  float n = float(MARSCHNER_PHYSICAL_M_SIZE);
+  float pi = marschnerPseudoAngleOfSin(angles.x);
+  float pr = marschnerPseudoAngleOfSin(angles.y);
+  float mu = marschnerTexelCentreCoord(0.5f + 0.5f * (angles.x >= 0.0f ? pi : -pi), n);
+  float mv = marschnerTexelCentreCoord(0.5f + 0.5f * (angles.y >= 0.0f ? pr : -pr), n);
+  float nu = marschnerTexelCentreCoord(marschnerPseudoAngle(angles.z), float(MARSCHNER_PHYSICAL_N_WIDTH));
+  float nv = marschnerTexelCentreCoord(pr, float(MARSCHNER_PHYSICAL_N_HEIGHT));
+  return vec4(mu, mv, nu, nv);
+}
+
+// 1 / cos theta_i of the physical S, floored like the exact form.
+HP_FN float marschnerPhysicalInvCosI(vec4 angles) {
+  return 1.0f / max(sqrt(max(0.0f, 1.0f - angles.x * angles.x)), MARSCHNER_PHYSICAL_MIN_COS_I);
 }
 
 HP_END

@@ -62,10 +62,14 @@ struct BoundsPush {
 
 struct OpacityPush {
   mat4 headToWorld;   // head draws only
-  float opacity;      // added per fragment (strand or head)
+  float opacity;      // head: added per fragment; strands: see footprint.w
   uint verticesPerStrand;  // strands: Q
   uint pad0;
   uint pad1;
+  // Strands: x = width at the root (scene units), y = tip width / root width, z = 1 / map resolution,
+  // w = 1: a fragment adds opacity x width / texel size (the fraction of the texel the strand covers
+  // per texel of its length: Beer-Lambert alpha = covered area / texel area); w = 0: adds `opacity`.
+  vec4 footprint;
 };
 HP_END
 
@@ -101,7 +105,8 @@ static_assert(offsetof(hp::gpu::LightSpace, minBits) == 96);
 static_assert(sizeof(hp::gpu::BoundsPush) == 96);
 static_assert(offsetof(hp::gpu::BoundsPush, origin) == 80);
 static_assert(offsetof(hp::gpu::BoundsPush, vertexCount) == 48);
-static_assert(sizeof(hp::gpu::OpacityPush) == 80);
+static_assert(sizeof(hp::gpu::OpacityPush) == 96);
+static_assert(offsetof(hp::gpu::OpacityPush, footprint) == 80);
 static_assert(offsetof(hp::gpu::OpacityPush, opacity) == 64);
 #endif
 #endif

@@ -43,17 +43,17 @@ HP_CONST(uint, RASTER_SCAN_SIZE, 256)           // tiles per scan block; the blo
 HP_CONST(float, RASTER_OPAQUE_T, 1.0f / 255.0f) // a pixel stops compositing below this transmittance
 HP_CONST(uint, RASTER_LAST_SEGMENT, 0x80000000u) // list entry flag: the segment ends at the strand's tip
 
-// Set 0 of every raster pipeline; 0-9 are the strand shading bindings (shared/render.h), same numbers.
-HP_CONST(uint, RASTER_BINDING_SCREEN, 10)
-HP_CONST(uint, RASTER_BINDING_COLORS, 11)
-HP_CONST(uint, RASTER_BINDING_STATE, 12)
-HP_CONST(uint, RASTER_BINDING_COUNTS, 13)
-HP_CONST(uint, RASTER_BINDING_KEYS, 14)
-HP_CONST(uint, RASTER_BINDING_TILES, 15)
-HP_CONST(uint, RASTER_BINDING_BLOCKS, 16)
-HP_CONST(uint, RASTER_BINDING_LIST, 17)
-HP_CONST(uint, RASTER_BINDING_DEPTH, 18)   // sampler2D: the head's depth (single sample), 1 = nothing
-HP_CONST(uint, RASTER_BINDING_OUTPUT, 19)  // storage image rgba16f: premultiplied hair radiance, a = 1 - T
+// Set 0 of every raster pipeline; 0-10 are the strand shading bindings (shared/render.h), same numbers.
+HP_CONST(uint, RASTER_BINDING_SCREEN, 11)
+HP_CONST(uint, RASTER_BINDING_COLORS, 12)
+HP_CONST(uint, RASTER_BINDING_STATE, 13)
+HP_CONST(uint, RASTER_BINDING_COUNTS, 14)
+HP_CONST(uint, RASTER_BINDING_KEYS, 15)
+HP_CONST(uint, RASTER_BINDING_TILES, 16)
+HP_CONST(uint, RASTER_BINDING_BLOCKS, 17)
+HP_CONST(uint, RASTER_BINDING_LIST, 18)
+HP_CONST(uint, RASTER_BINDING_DEPTH, 19)   // sampler2D: the head's depth (single sample), 1 = nothing
+HP_CONST(uint, RASTER_BINDING_OUTPUT, 20)  // storage image rgba16f: premultiplied hair radiance, a = 1 - T
 
 // The composite pass (composite.frag) samples the output image.
 HP_CONST(uint, COMPOSITE_BINDING_HAIR, 0)

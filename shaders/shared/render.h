@@ -19,6 +19,7 @@ HP_CONST(uint, RENDER_BINDING_LIGHT, 6)       // storage LightSpace (shared/opac
 HP_CONST(uint, RENDER_BINDING_POSITIONS, 7)   // strands: vec4[S*Q]; head: vec4 positions
 HP_CONST(uint, RENDER_BINDING_TANGENTS, 8)    // strands: vec4[S*Q]; head: vec4 normals
 HP_CONST(uint, RENDER_BINDING_ATTRIBUTES, 9)  // strands: StrandAttributes[S]; head: uint indices
+HP_CONST(uint, RENDER_BINDING_HEAD_SHADOW, 10)  // sampler2DShadow: the head's depth shadow map (head_shadow.glsl)
 // The tonemap pass reads the resolved HDR image.
 HP_CONST(uint, TONEMAP_BINDING_HDR, 0)
 
@@ -39,6 +40,9 @@ struct RenderFrame {
   vec4 lightPosition;    // xyz world position of a spot; w = 1 for a spot, 0 for a directional light
   vec4 lightSpot;        // spot: x = cos(cone half-angle), y = cos(inner angle, full radiance inside),
                          // z = range of the inverse-square falloff (0: none), w = 0 (shaders/light.glsl)
+  mat4 headShadowViewProj;  // world -> clip of the head's depth shadow map (engine/render/shadow_maps.h, head_shadow_view.h)
+  vec4 headShadow;          // x = 1: the head occludes the light (0: no map), y = receiver offset toward the
+                            // light (scene units), z = 1 / map resolution, w = 0
 };
 
 struct StrandDrawPush {
@@ -61,7 +65,8 @@ HP_END
 static_assert(offsetof(hp::gpu::RenderFrame, cameraPosition) == 128);
 static_assert(offsetof(hp::gpu::RenderFrame, options) == 224);
 static_assert(offsetof(hp::gpu::RenderFrame, lightPosition) == 240);
-static_assert(sizeof(hp::gpu::RenderFrame) == 272);
+static_assert(offsetof(hp::gpu::RenderFrame, headShadowViewProj) == 272);
+static_assert(sizeof(hp::gpu::RenderFrame) == 352);
 static_assert(sizeof(hp::gpu::StrandDrawPush) == 16);
 static_assert(sizeof(hp::gpu::TonemapPush) == 16);
 #endif

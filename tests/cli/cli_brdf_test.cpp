@@ -9,7 +9,7 @@
 #include <random>
 #include <sstream>
 
-#include "engine/shading/marschner.h"
+#include "engine/shading/fibre_model.h"
 #include "tests/hair/hair_test_util.h"
 #include "tests/shading/random_directions.h"
 #include "tests/support/cli_runner.h"
@@ -68,10 +68,11 @@ std::vector<glm::dvec3> readS(const std::filesystem::path& p) {
 }
 
 // Fraction of values with e = |S - S_exact| / (|S_exact| + 0.01) <= tol.
-double fractionWithin(const std::vector<glm::dvec3>& s, const std::vector<Row>& rows, double tol) {
+double fractionWithin(const std::vector<glm::dvec3>& s, const std::vector<Row>& rows, double tol,
+                      hp::FibreModel model = hp::FibreModel::Marschner) {
   int ok = 0;
   for (std::size_t i = 0; i < rows.size(); ++i) {
-    glm::dvec3 exact = hp::marschnerS(rows[i].L, rows[i].V, rows[i].T, hp::HairMaterial{});
+    glm::dvec3 exact = hp::exactS(model, rows[i].L, rows[i].V, rows[i].T, hp::HairMaterial{});
     for (int c = 0; c < 3; ++c) ok += std::abs(s[i][c] - exact[c]) / (std::abs(exact[c]) + 0.01) <= tol;
   }
   return double(ok) / double(3 * rows.size());
@@ -110,13 +111,20 @@ TEST(CliBrdf, HeaderIsOptionalAndRowOrderIsKept) {
   for (std::size_t i = 0; i < 50; ++i) EXPECT_EQ(forward[i], backward[49 - i]) << "row " << i;
 }
 
-// Float mode: the tolerances of the 100k-sample device measurement, applied to 300 rows (p99 <= 2%,
-// median <= 0.3%: at least 99% of values within 2% and half within 0.3%). Paper: loose.
+// Float and physical modes: the tolerances of the 100k-sample device measurement, applied to 300 rows
+// (p99 <= 2%, median <= 0.3%: at least 99% of values within 2% and half within 0.3%). Paper: loose.
+// physical is the default mode.
 TEST(CliBrdf, LutModesMatchTheExactSWithinTheirTolerance) {
   TempDir dir;
   const auto rows = randomRows(300, 3);
   writeText(dir / "dirs.csv", csv(rows, false));
-  auto r = runCli({"brdf", "--in", (dir / "dirs.csv").string(), "--out", (dir / "float.csv").string()});
+  auto r = runCli({"brdf", "--in", (dir / "dirs.csv").string(), "--out", (dir / "physical.csv").string()});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  auto p = readS(dir / "physical.csv");
+  ASSERT_EQ(p.size(), rows.size());
+  EXPECT_GE(fractionWithin(p, rows, 0.02, hp::FibreModel::Physical), 0.99);
+  EXPECT_GE(fractionWithin(p, rows, 0.003, hp::FibreModel::Physical), 0.5);
+  r = runCli({"brdf", "--in", (dir / "dirs.csv").string(), "--out", (dir / "float.csv").string(), "--mode", "float"});
   ASSERT_EQ(r.exitCode, 0) << r.err;
   auto s = readS(dir / "float.csv");
   ASSERT_EQ(s.size(), rows.size());

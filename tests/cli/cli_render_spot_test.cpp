@@ -1,9 +1,11 @@
-// `hairpipe render --spot`: a small spot-lit render is clean under validation, and bad spot options
+// `hairpipe render --spot`: a small spot-lit render is clean under validation (and exports), and bad spot options
 // exit 1 with a message naming the option, writing nothing.
 #include <gtest/gtest.h>
 
 #include <filesystem>
 
+#include "samples/tools/frame_export.h"
+#include "samples/tools/linear_image.h"
 #include "samples/tools/png_file.h"
 #include "tests/support/cli_runner.h"
 
@@ -11,14 +13,25 @@ using hp::test::freshTempPath;
 using hp::test::expectRefused;
 using hp::test::runCli;
 
-TEST(CliRenderSpot, RendersASpotLitFrame) {
+// With --export-frame: the export carries the spot (for `hairpipe reference`) and the real-time image.
+TEST(CliRenderSpot, RendersASpotLitFrameAndExportsIt) {
   const auto png = freshTempPath("hairpipe_cli_render_spot.png");
+  const auto dir = freshTempPath("hairpipe_cli_render_spot_export");
   auto r = runCli({"render", "--width", "96", "--height", "72", "--density", "1000", "--frames", "2", "--validation",
                    "--spot", "0.3,0.5,0.8", "--spot-target", "0,-0.05,0", "--spot-angle", "20", "--spot-range", "1",
-                   "--opacity-resolution", "128", "--out", png.string()});
+                   "--opacity-resolution", "128", "--out", png.string(), "--export-frame", dir.string()});
   ASSERT_EQ(r.exitCode, 0) << r.err;
   EXPECT_EQ(hp::readPngRgba(png).width, 96u);
+  const hp::ExportedFrame frame = hp::readFrameExport(dir);
+  EXPECT_EQ(frame.light.type, hp::LightSpec::Type::Spot);
+  EXPECT_EQ(frame.light.position, glm::vec3(0.3f, 0.5f, 0.8f));
+  EXPECT_EQ(frame.light.coneDeg, 20.0f);
+  EXPECT_EQ(frame.light.range, 1.0f);
+  EXPECT_EQ(frame.strands.strandCount, 1000u);
+  EXPECT_EQ(hp::readPfm(dir / "realtime.pfm").width, 96u);
+  EXPECT_EQ(hp::readPfm(dir / "realtime_hair_alpha.pfm").channels, 1u);
   std::filesystem::remove(png);
+  std::filesystem::remove_all(dir);
 }
 
 TEST(CliRenderSpot, BadSpotOptionsExitWithAMessageNamingTheOption) {

@@ -7,7 +7,7 @@
 
 #include "samples/tools/brdf_evaluator.h"
 #include "engine/render/marschner_textures.h"
-#include "engine/shading/marschner.h"
+#include "engine/shading/fibre_model.h"
 #include "tests/render/brdf_test_util.h"
 #include "tests/support/vk_fixture.h"
 
@@ -23,20 +23,28 @@ struct Reference {
   std::vector<glm::dvec3> exact;
 };
 
-// The exact S of the float-rounded queries (what the device sees), computed once per process.
-const Reference& reference() {
-  static const Reference ref = [] {
+// The exact S of the float-rounded queries (what the device sees), computed once per process and model.
+// The physical model's exact S integrates over h per sample, so it uses the first 20,000 queries.
+const Reference& reference(hp::FibreModel model) {
+  static const Reference marschner = [] {
     Reference r;
     r.queries = hp::test::randomQueries(kSamples, kSeed);
     const hp::HairMaterial m;
     for (const auto& q : r.queries) r.exact.push_back(hp::marschnerS(glm::dvec3(q.L), glm::dvec3(q.V), glm::dvec3(q.T), m));
     return r;
   }();
-  return ref;
+  static const Reference physical = [] {
+    Reference r;
+    r.queries = hp::test::randomQueries(20'000, kSeed);
+    const hp::HairMaterial m;
+    for (const auto& q : r.queries) r.exact.push_back(hp::physicalS(glm::dvec3(q.L), glm::dvec3(q.V), glm::dvec3(q.T), m));
+    return r;
+  }();
+  return model == hp::FibreModel::Physical ? physical : marschner;
 }
 
 hp::test::DeviceAccuracy measure(const hp::vk::Context& ctx, LutMode mode) {
-  const Reference& ref = reference();
+  const Reference& ref = reference(hp::fibreModelOf(mode));
   hp::render::MarschnerTextures textures(ctx, hp::HairMaterial{}, mode);
   std::vector<glm::vec3> s = hp::render::evaluateBrdfOnDevice(ctx, textures, ref.queries);
   hp::test::DeviceAccuracy a = hp::test::compareWithExact(s, ref.exact);
@@ -59,6 +67,13 @@ TEST_F(VulkanTest, BrdfDirectModeOnDeviceMatchesExactS) {
 
 TEST_F(VulkanTest, BrdfFloatModeOnDeviceMatchesExactS) {
   auto a = measure(*ctx, LutMode::Float);
+  EXPECT_LE(a.median, 0.003) << a.str();
+  EXPECT_LE(a.p99, 0.02) << a.str();
+  EXPECT_LE(a.relativeSum, 0.02) << a.str();
+}
+
+TEST_F(VulkanTest, BrdfPhysicalModeOnDeviceMatchesExactS) {
+  auto a = measure(*ctx, LutMode::Physical);
   EXPECT_LE(a.median, 0.003) << a.str();
   EXPECT_LE(a.p99, 0.02) << a.str();
   EXPECT_LE(a.relativeSum, 0.02) << a.str();

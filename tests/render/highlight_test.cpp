@@ -8,6 +8,8 @@
 // TRT band -- the classic observation behind two-highlight real-time hair shaders.
 #include <gtest/gtest.h>
 
+#include <iostream>
+
 #include <cmath>
 
 #include "engine/render/camera.h"
@@ -36,8 +38,9 @@ HairAsset arcSheet() {
   return asset;
 }
 
-RenderRequest sheetRequest(float lightElevationDeg) {
+RenderRequest sheetRequest(float lightElevationDeg, LutMode mode = LutMode::Float) {
   RenderRequest r;
+  r.lutMode = mode;
   r.scene.render = {160, 160, 4};
   r.scene.camera.orbitDeg = 180.0f;  // behind the "head"
   r.scene.camera.elevationDeg = 25.0f;
@@ -110,6 +113,7 @@ double predictedRow(const RenderRequest& r, double targetDeg) {
 }
 }  // namespace
 
+// The paper's model (float LUTs): TRT at theta_h = -3 alpha_R / 2.
 TEST_F(VulkanTest, PrimaryAndSecondaryHighlightsSitWhereTheLobeShiftsPutThem) {
   const RenderRequest request = sheetRequest(35.0f);
   RowProfile p = profile(renderStill(*ctx, arcSheet(), request));
@@ -119,5 +123,20 @@ TEST_F(VulkanTest, PrimaryAndSecondaryHighlightsSitWhereTheLobeShiftsPutThem) {
   EXPECT_NEAR(rRow, rPredicted, 6.0) << "R (white) peak row";
   EXPECT_NEAR(trtRow, trtPredicted, 8.0) << "TRT (coloured) peak row";
   // Roots are at the top of the image: the white band lies tipward (below) of the coloured one.
+  EXPECT_GT(rRow, trtRow + 5) << "R row " << rRow << ", TRT row " << trtRow;
+}
+
+// The physical model: R at theta_h = alpha_R as in the paper, TRT tilted by -4 alpha_R (pbrt-v3's
+// magnitude), i.e. at theta_h = -2 alpha_R. Same tolerances as the paper model's test.
+TEST_F(VulkanTest, PhysicalModelHighlightsSitWhereItsTiltsPutThem) {
+  const RenderRequest request = sheetRequest(35.0f, LutMode::Physical);
+  RowProfile p = profile(renderStill(*ctx, arcSheet(), request));
+  const int rRow = p.peak(p.blue), trtRow = p.peak(p.warm);
+  const double alphaR = glm::degrees(request.scene.material.alphaR);
+  const double rPredicted = predictedRow(request, alphaR), trtPredicted = predictedRow(request, -2.0 * alphaR);
+  std::cout << "physical: R row " << rRow << " (predicted " << rPredicted << "), TRT row " << trtRow << " (predicted "
+            << trtPredicted << ")\n";
+  EXPECT_NEAR(rRow, rPredicted, 6.0) << "R (white) peak row";
+  EXPECT_NEAR(trtRow, trtPredicted, 8.0) << "TRT (coloured) peak row";
   EXPECT_GT(rRow, trtRow + 5) << "R row " << rRow << ", TRT row " << trtRow;
 }

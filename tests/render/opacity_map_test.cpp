@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <iostream>
 #include <memory>
 #include <random>
 
@@ -59,6 +60,8 @@ struct ShadowRig {
     opacity = std::make_unique<hp::render::OpacityPass>(ctx, *buffers, hp::HeadMesh{}, *maps);
   }
 
+  glm::vec2 strandWidth{0.0005f, 0.35f};  // root width, tip / root: the footprint of every strand
+
   OpacityCapture run(const hp::vk::Context& ctx, const hp::compute::ShadowLight& light, float marginTexels = 2.0f) {
     hp::compute::BoundsFraming framing;
     framing.resolution = maps->settings().resolution;
@@ -66,7 +69,7 @@ struct ShadowRig {
     hp::vk::submitAndWait(ctx, [&](VkCommandBuffer cmd) {
       // The uploads were transfers of an earlier submission; the bounds read them in compute.
       hp::vk::memoryBarrier(ctx, cmd, hp::vk::BufferUse::TransferDst, hp::vk::BufferUse::ComputeRead);
-      const hp::ShadowCaster caster{bounds.get(), opacity.get(), glm::mat4(1.0f)};
+      const hp::ShadowCaster caster{bounds.get(), opacity.get(), glm::mat4(1.0f), strandWidth};
       hp::recordShadowPasses(ctx, cmd, *maps, std::span(&caster, 1), light, framing);
     }, "shadow rig");
     return hp::render::captureOpacity(ctx, maps->image(), maps->lightSpace(), maps->settings(),
@@ -79,6 +82,7 @@ namespace {
 OpacitySettings smallSettings(std::uint32_t resolution, float strandOpacity) {
   OpacitySettings s;
   s.resolution = resolution;
+  s.footprint = false;  // the constant-per-crossing mode: alpha is exactly crossings x strandOpacity
   s.strandOpacity = strandOpacity;
   return s;
 }
@@ -424,6 +428,7 @@ TEST_F(VulkanTest, OpacityOfASmallHeadSceneMatchesTheCpuReference) {
   const hp::HairAsset asset = hp::buildDefaultHeadAsset(hp::defaultHeadGrowth(), density);
   hp::HairSystemSettings settings;
   settings.opacity.resolution = 128;
+  settings.opacity.footprint = false;
   settings.opacity.strandOpacity = 0.1f;
   hp::HairSystem hair(*ctx, asset, settings);
   hp::DrawView view;
@@ -456,4 +461,59 @@ TEST_F(VulkanTest, OpacityOfASmallHeadSceneMatchesTheCpuReference) {
     EXPECT_LT(e.total, 0.005) << "slice " << slice + 1;
     EXPECT_LT(e.blockL1, 0.03) << "slice " << slice + 1;
   }
+}
+
+namespace {
+// K layers of parallel strands along x, spacing `spacing` in y (not a multiple of the texel), at the
+// given depths below z = 0; for a spot at (0, 0, kSpotZ) each layer is scaled by its spot depth / kSpotZ
+// (its strands stay `width` wide, so its covered fraction is width / (spacing x scale)).
+StrandSet footprintLayers(const std::vector<float>& depths, float spacing, bool spot) {
+  StrandSet set;
+  set.q = 2;
+  for (float z : depths) {
+    const float scale = spot ? (kSpotZ - z) / kSpotZ : 1.0f;
+    for (float y = -0.5f; y <= 0.5f; y += spacing)
+      set.addStraight({-0.5f * scale, y * scale, z}, {0.5f * scale, y * scale, z});
+  }
+  return set;
+}
+
+// Mean transmittance exp(-alpha) behind all layers (slice 16) over the interior texels.
+double meanTransmittanceBehind(const OpacityCapture& c) {
+  double sum = 0.0;
+  std::size_t n = 0;
+  for (std::uint32_t y = c.resolution / 8; y < c.resolution * 7 / 8; ++y)
+    for (std::uint32_t x = c.resolution / 8; x < c.resolution * 7 / 8; ++x, ++n) sum += std::exp(-c.at(15, x, y));
+  return sum / double(n);
+}
+
+OpacitySettings footprintSettings(std::uint32_t resolution) {
+  OpacitySettings s;
+  s.resolution = resolution;
+  return s;
+}
+}  // namespace
+
+// Footprint opacity (the default): layers of strands of known width and spacing transmit what
+// Beer-Lambert predicts for their covered fraction, T = exp(-sum_k width / spacing_k), at two map
+// resolutions and for a spot (whose texels grow with depth). Spacing 1/173: ~3 strands per texel.
+TEST_F(VulkanTest, FootprintOpacityOfStrandLayersFollowsBeerLambert) {
+  const float spacing = 1.0f / 173.0f, width = 0.15f * spacing;
+  const std::vector<float> depths = {0.0f, -0.25f, -0.5f, -1.0f};
+  const double expected = std::exp(-double(depths.size()) * width / spacing);
+  for (std::uint32_t res : {64u, 128u}) {
+    ShadowRig rig(*ctx, footprintLayers(depths, spacing, false), footprintSettings(res));
+    rig.strandWidth = {width, 1.0f};
+    const double t = meanTransmittanceBehind(rig.run(*ctx, glm::vec3(0.0f, 0.0f, 1.0f)));
+    std::cout << "directional, " << res << "^2: T = " << t << ", Beer-Lambert " << expected << "\n";
+    EXPECT_NEAR(t / expected, 1.0, 0.05) << res;
+  }
+  double spotAlpha = 0.0;
+  for (float z : depths) spotAlpha += width / (spacing * (kSpotZ - z) / kSpotZ);
+  const auto spot = hp::compute::ShadowLight::makeSpot({0.0f, 0.0f, kSpotZ}, {0.0f, 0.0f, 1.0f}, glm::radians(30.0f));
+  ShadowRig rig(*ctx, footprintLayers(depths, spacing, true), footprintSettings(128));
+  rig.strandWidth = {width, 1.0f};
+  const double t = meanTransmittanceBehind(rig.run(*ctx, spot));
+  std::cout << "spot, 128^2: T = " << t << ", Beer-Lambert " << std::exp(-spotAlpha) << "\n";
+  EXPECT_NEAR(t / std::exp(-spotAlpha), 1.0, 0.05);
 }

@@ -61,6 +61,7 @@ RasterRig::RasterRig(const vk::Context& c, const compute::StrandBuffers& strands
     const render::ShadowInputs inputs = shadows.inputs();
     set.writeSampledImage(gpu::RENDER_BINDING_OPACITY, inputs.opacityView, inputs.sampler);
     set.writeStorageBuffer(gpu::RENDER_BINDING_LIGHT, inputs.lightSpace);
+    set.writeSampledImage(gpu::RENDER_BINDING_HEAD_SHADOW, inputs.headShadowView, inputs.headShadowSampler);
   };
   pass = std::make_unique<compute::StrandRasterPass>(c, strands, shading, e, settings);
   pass->setDepth(depth.view());

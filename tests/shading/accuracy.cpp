@@ -6,7 +6,6 @@
 #include <sstream>
 #include <vector>
 
-#include "engine/shading/marschner.h"
 #include "tests/shading/random_directions.h"
 
 namespace hp::test {
@@ -18,14 +17,15 @@ std::string AccuracyStats::str() const {
   return os.str();
 }
 
-AccuracyStats measureAccuracy(const SEvaluator& mode, const HairMaterial& m, int samples, unsigned seed) {
+AccuracyStats measureAccuracy(const SEvaluator& mode, const HairMaterial& m, int samples, unsigned seed,
+                              FibreModel model) {
   std::mt19937_64 rng(seed);
   std::vector<double> e;
   e.reserve(std::size_t(samples) * 3);
   double sumDiff = 0, sumExact = 0;
   for (int i = 0; i < samples; ++i) {
     Triple t = uniformTriple(rng);
-    glm::dvec3 exact = marschnerS(t.L, t.V, t.T, m);
+    glm::dvec3 exact = exactS(model, t.L, t.V, t.T, m);
     glm::dvec3 approx = mode(t.L, t.V, t.T);
     for (int c = 0; c < 3; ++c) {
       double d = std::abs(approx[c] - exact[c]);

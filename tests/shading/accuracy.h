@@ -1,13 +1,13 @@
 #pragma once
 // Contract: the LUT accuracy metric of the brief, over uniformly random (L, V, T) with a fixed seed:
 // per sample and channel e = |S_mode - S_exact| / (|S_exact| + 0.01); reports median(e), p99(e) and
-// sum|S_mode - S_exact| / sum|S_exact|.
+// sum|S_mode - S_exact| / sum|S_exact|. S_exact is the exact S of `model`.
 #include <functional>
 #include <string>
 
 #include <glm/glm.hpp>
 
-#include "engine/shading/material.h"
+#include "engine/shading/fibre_model.h"
 
 namespace hp::test {
 struct AccuracyStats {
@@ -15,5 +15,6 @@ struct AccuracyStats {
   std::string str() const;
 };
 using SEvaluator = std::function<glm::dvec3(glm::dvec3 L, glm::dvec3 V, glm::dvec3 T)>;
-AccuracyStats measureAccuracy(const SEvaluator& mode, const HairMaterial& m, int samples, unsigned seed);
+AccuracyStats measureAccuracy(const SEvaluator& mode, const HairMaterial& m, int samples, unsigned seed,
+                              FibreModel model = FibreModel::Marschner);
 }  // namespace hp::test

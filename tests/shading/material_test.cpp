@@ -47,6 +47,8 @@ TEST(Material, BadFieldsAreNamed) {
       {[](HairMaterial& m, double v) { m.dEta = v; }, 0.0, "dEta"},
       {[](HairMaterial& m, double v) { m.dhM = v; }, -0.5, "dhM"},
       {[](HairMaterial& m, double v) { m.dhM = v; }, nan, "dhM"},
+      {[](HairMaterial& m, double v) { m.betaN = v; }, 0.01, "betaN"},
+      {[](HairMaterial& m, double v) { m.betaN = v; }, 1.0, "betaN"},
   };
   for (const Case& c : cases) {
     HairMaterial m;

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Fails if a layer includes a layer above it. Bottom to top: engine/{hair,shading,sim} (no Vulkan),
 # engine/vk, compute/, engine/render/, the facade (engine/*.h: Renderer, HairInstance, HairSystem),
-# samples/tools/, samples/cli/, samples/viewer/ and the embedding sample. Usage: check_layers.sh SOURCE_DIR
+# samples/tools/, samples/cli/, samples/viewer/ and the embedding sample; Embree only in
+# samples/tools/reference/. Usage: check_layers.sh SOURCE_DIR
 set -euo pipefail
 cd "$1"
 status=0
@@ -22,5 +23,13 @@ check engine/render -- 'samples/|engine/(hair_system|hair_instance|renderer|rend
 check engine/*.h engine/*.cpp -- 'samples/'
 check samples/tools -- 'samples/(cli|embed|viewer)'
 check samples/cli -- 'samples/viewer'
+# Embree is the path-traced reference's alone (samples/tools/reference/, inside the tools target).
+embree=$(grep -rEln '#include <embree3/' engine compute shaders samples tests --include='*.h' --include='*.cpp' \
+  | grep -v '^samples/tools/reference/' || true)
+if [ -n "$embree" ]; then
+  echo "Embree is included outside samples/tools/reference/:" >&2
+  echo "$embree" >&2
+  status=1
+fi
 [ $status -eq 0 ] && echo "no layer includes a layer above it"
 exit $status

@@ -1,0 +1,54 @@
+#include "engine/shading/furnace.h"
+
+#include <cmath>
+#include <vector>
+
+#include "engine/shading/marschner.h"
+#include "engine/shading/physical.h"
+#include "engine/shading/quadrature.h"
+
+namespace hp {
+namespace {
+constexpr double kPi = 3.14159265358979323846;
+
+glm::dvec3 physicalFurnace(double sinThetaR, const HairMaterial& m, int panels) {
+  double mInt[3] = {0, 0, 0};
+  shading::gaussLegendre(-0.5 * kPi, 0.5 * kPi, 2 * panels, [&](double ti, double w) {
+    double s = std::sin(ti), c = std::cos(ti);
+    for (int p = 0; p < 3; ++p) mInt[p] += w * c * shading::physicalM(p, s, sinThetaR, m);
+  });
+  // N is even in phi: int over [-pi, pi] = 2 int over [0, pi].
+  std::vector<double> phis, weights;
+  shading::gaussLegendre(0.0, kPi, panels, [&](double phi, double w) {
+    phis.push_back(phi);
+    weights.push_back(2.0 * w);
+  });
+  std::vector<shading::PhysicalN> n(phis.size());
+  shading::physicalNRow(sinThetaR, m, phis.data(), int(phis.size()), n.data());
+  shading::PhysicalN nInt;
+  for (std::size_t k = 0; k < n.size(); ++k) {
+    nInt.r += weights[k] * n[k].r;
+    nInt.tt += weights[k] * n[k].tt;
+    nInt.trt += weights[k] * n[k].trt;
+    nInt.res += weights[k] * n[k].res;
+  }
+  return mInt[0] * nInt.r + mInt[1] * nInt.tt + mInt[2] * (nInt.trt + nInt.res);
+}
+
+glm::dvec3 marschnerFurnace(double sinThetaR, const HairMaterial& m, int panels) {
+  glm::dvec3 sum(0.0);
+  shading::gaussLegendre(-0.5 * kPi, 0.5 * kPi, panels, [&](double ti, double wt) {
+    double s = std::sin(ti), c = std::cos(ti);
+    shading::gaussLegendre(0.0, kPi, panels, [&](double phi, double wp) {
+      sum += 2.0 * wt * wp * c * c * marschnerS(s, sinThetaR, std::cos(phi), m);
+    });
+  });
+  return sum;
+}
+}  // namespace
+
+glm::dvec3 whiteFurnace(FibreModel model, double sinThetaR, const HairMaterial& m, int panels) {
+  m.validate();
+  return model == FibreModel::Physical ? physicalFurnace(sinThetaR, m, panels) : marschnerFurnace(sinThetaR, m, panels);
+}
+}  // namespace hp

@@ -1,0 +1,18 @@
+#pragma once
+// Contract: the white-furnace integral of a fibre model, per RGB channel: for one outgoing direction
+// (given by sin theta_r; the integral does not depend on the outgoing azimuth),
+//   W = int over the sphere of incoming L of S(L, V) cos(theta_i) d omega_i,
+// d omega = cos theta_i d theta_i d phi. An energy-conserving fibre has W <= 1, = 1 without absorption.
+// Computed by composite Gauss-Legendre quadrature in double precision:
+//  - Physical: S cos theta_i = sum_p M_p(theta_i, theta_r) N_p(phi, theta_r) exactly, so W is
+//    sum_p [int M_p cos theta_i d theta_i] [int N_p d phi], each integral numerical (the model's own
+//    identities are not assumed);
+//  - Marschner (the paper's model, REFERENCES §3): S does not factor (1/cos^2 theta_d), so W is a
+//    2D quadrature over (theta_i, phi) of the exact S; `panels` 8-node panels per axis.
+#include <glm/glm.hpp>
+
+#include "engine/shading/fibre_model.h"
+
+namespace hp {
+glm::dvec3 whiteFurnace(FibreModel model, double sinThetaR, const HairMaterial& m, int panels = 64);
+}  // namespace hp

@@ -1,0 +1,166 @@
+#include "samples/cli/frame_options.h"
+
+#include <cmath>
+#include <iostream>
+
+#include "engine/error.h"
+#include "engine/hair/camera_fit.h"
+#include "samples/cli/material_options.h"
+
+namespace hp::cli {
+namespace {
+// --raster overrides the scene's; --lines are graphics lines, so they pick the graphics path unless
+// the compute one was asked for by name (refused).
+void applyRaster(const FrameOptions& o, hp::RenderRequest& r) {
+  if (o.raster) r.scene.render.raster = hp::parseRasterMode(*o.raster);
+  if (o.lines) {
+    if (r.scene.render.raster == hp::RasterMode::Compute)
+      throw hp::Error("--lines draws graphics lines: use --raster graphics (or auto) with it");
+    r.scene.render.raster = hp::RasterMode::Graphics;
+  }
+  if (o.tileBudget) r.rasterSettings.tileBudget = *o.tileBudget;
+  r.rasterSettings.validate();
+}
+
+hp::render::OpacitySettings opacitySettings(const FrameOptions& o) {
+  hp::render::OpacitySettings s;
+  s.enabled = !o.noShadows;
+  if (o.opacityResolution) s.resolution = *o.opacityResolution;
+  if (o.strandOpacity) {
+    s.footprint = false;  // a constant per crossing replaces the width / texel-size footprint
+    s.strandOpacity = *o.strandOpacity;
+  }
+  if (o.shadowK) s.k = *o.shadowK;
+  if (o.shadowBias) s.biasSlices = *o.shadowBias;
+  s.validate();
+  return s;
+}
+
+glm::vec3 vec3Option(const std::vector<float>& v, const char* name) {
+  if (v.size() != 3) throw hp::Error(std::string(name) + " takes X,Y,Z");
+  const glm::vec3 p{v[0], v[1], v[2]};
+  if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+    throw hp::Error(std::string(name) + " must be finite");
+  return p;
+}
+
+// --spot POS [--spot-target P] [--spot-angle DEG] [--spot-range R]: a spot light aimed at the
+// target (default: the camera's target); each bad value names its option.
+void applySpot(const FrameOptions& o, hp::Scene& scene) {
+  if (!o.spot) {
+    if (o.spotTarget || o.spotAngle || o.spotRange) throw hp::Error("--spot-target/--spot-angle/--spot-range need --spot");
+    return;
+  }
+  if (o.lightDir) throw hp::Error("--spot and --light-dir are exclusive");
+  const glm::vec3 position = vec3Option(*o.spot, "--spot");
+  const glm::vec3 target = o.spotTarget ? vec3Option(*o.spotTarget, "--spot-target") : scene.camera.target;
+  if (glm::length(position - target) < 1e-6f) throw hp::Error("--spot-target must differ from the --spot position");
+  const float angle = o.spotAngle.value_or(30.0f);
+  if (!(angle > 0.0f && angle <= 80.0f)) throw hp::Error("--spot-angle must be in (0, 80] degrees");
+  const float range = o.spotRange.value_or(0.0f);
+  if (!(std::isfinite(range) && range >= 0.0f)) throw hp::Error("--spot-range must be >= 0 (0: no distance falloff)");
+  hp::LightSpec light = hp::LightSpec::makeSpot(position, target, angle);
+  light.range = range;
+  light.color = scene.light.color;
+  light.intensity = scene.light.intensity;
+  scene.light = light;
+}
+
+}  // namespace
+
+hp::RenderRequest makeRenderRequest(const FrameOptions& o, const CLI::App& cmd) {
+  hp::RenderRequest r;
+  r.scene = hp::cli::loadScene(o.scene);
+  if (o.width) r.scene.render.width = *o.width;
+  if (o.height) r.scene.render.height = *o.height;
+  if (o.msaa) r.scene.render.msaa = *o.msaa;
+  if (o.density) {
+    r.scene.density.mode = hp::DensityOptions::Mode::Total;
+    r.scene.density.totalStrands = *o.density;
+    r.scene.density.validate();
+  }
+  if (o.lightDir) {
+    if (o.lightDir->size() != 3) throw hp::Error("--light-dir takes X,Y,Z");
+    r.scene.light.direction = {(*o.lightDir)[0], (*o.lightDir)[1], (*o.lightDir)[2]};
+    if (!(glm::length(r.scene.light.direction) > 1e-6f) || !std::isfinite(glm::length(r.scene.light.direction)))
+      throw hp::Error("--light-dir must be a non-zero finite vector");
+    r.scene.light.direction = glm::normalize(r.scene.light.direction);
+    r.scene.light.type = hp::LightSpec::Type::Directional;  // overrides a scene's spot
+  }
+  if (o.orbit) r.scene.camera.orbitDeg = *o.orbit;
+  applySpot(o, r.scene);
+  if (cmd.count("--eta") + cmd.count("--absorption") + cmd.count("--color") + cmd.count("--alpha-r") +
+          cmd.count("--beta-r") + cmd.count("--kg") + cmd.count("--wc") + cmd.count("--deta") + cmd.count("--dhm") +
+              cmd.count("--beta-n") > 0)
+    r.scene.material = o.material;
+  if (r.scene.render.width == 0 || r.scene.render.height == 0 || r.scene.render.width > 16384 ||
+      r.scene.render.height > 16384)
+    throw hp::Error("--width/--height must be in [1, 16384]");
+  r.settleFrames = o.frames;
+  r.animation = hp::parseHeadAnimation(o.animate);
+  r.lutMode = hp::parseLutMode(o.lutMode);
+  r.lines = o.lines;
+  r.guidesOnly = o.guidesOnly;
+  r.exposure = o.exposure;
+  r.opacity = opacitySettings(o);
+  applyRaster(o, r);
+  return r;
+}
+
+// A model loaded without a scene: frame the camera on its hair (the orbit and elevation stay). Any
+// frame: refuse one in which no guide particle falls inside the view, naming why.
+nlohmann::json frameCamera(Scene& scene, const hp::HairAsset& asset) {
+  nlohmann::json guessed = nlohmann::json::object();
+  if (scene.fitCamera) {
+    hp::fitCameraToPoints(scene.camera, asset.guides.positions);
+    const auto& c = scene.camera;
+    guessed = {{"model", scene.guessed},
+               {"camera", {{"target", {c.target.x, c.target.y, c.target.z}}, {"distance", c.distance}}}};
+    std::cerr << "hairpipe: guessed " << scene.guessed << "; camera framed on the hair (target " << c.target.x
+              << ", " << c.target.y << ", " << c.target.z << ", distance " << c.distance << ")\n";
+  }
+  const float aspect = float(scene.render.width) / float(scene.render.height);
+  if (hp::pointsInView(scene.camera, aspect, asset.guides.positions) == 0) {
+    const auto& c = scene.camera;
+    throw hp::Error("no hair is visible: all " + std::to_string(asset.guides.positions.size()) +
+                    " guide particles of " + asset.name + " are outside the camera's view (target " +
+                    std::to_string(c.target.x) + ", " + std::to_string(c.target.y) + ", " + std::to_string(c.target.z) +
+                    ", distance " + std::to_string(c.distance) + ", orbit " + std::to_string(c.orbitDeg) +
+                    "); check the model's units/up axis or the camera");
+  }
+  return guessed;
+}
+
+
+void addFrameOptions(CLI::App& cmd, FrameOptions& o) {
+  addSceneOptions(cmd, o.scene);
+  addMaterialOptions(cmd, o.material);
+  cmd.add_option("--frames", o.frames,
+                 "Frames simulated before the rendered one (default 90); with render --sequence, the frames rendered");
+  cmd.add_option("--width", o.width, "Image width (default: scene, 1280)");
+  cmd.add_option("--height", o.height, "Image height (default: scene, 720)");
+  cmd.add_option("--msaa", o.msaa, "Samples per pixel of the graphics raster: 1, 2, 4 or 8 (default: scene, 4)");
+  cmd.add_option("--raster", o.raster,
+                 "Hair drawing: compute (tile rasterizer, analytic coverage), graphics (MSAA ribbons) or auto "
+                 "(default: scene, auto = compute)");
+  cmd.add_option("--tile-budget", o.tileBudget, "Compute raster: list entries kept per 8x8 tile (default 16384)");
+  cmd.add_option("--density", o.density, "Render strands in total (default: scene, 20000)");
+  cmd.add_option("--light-dir", o.lightDir, "Direction toward the light, X,Y,Z")->delimiter(',')->expected(3);
+  cmd.add_option("--spot", o.spot, "Spot light at X,Y,Z instead of the directional light")->delimiter(',')->expected(3);
+  cmd.add_option("--spot-target", o.spotTarget, "Point the spot aims at, X,Y,Z (default: the camera target)")
+      ->delimiter(',')->expected(3);
+  cmd.add_option("--spot-angle", o.spotAngle, "Spot cone half-angle in degrees, (0, 80] (default 30)");
+  cmd.add_option("--spot-range", o.spotRange, "Spot inverse-square falloff, 1 at this distance (default 0: none)");
+  cmd.add_option("--camera-orbit", o.orbit, "Camera orbit around the head in degrees (0: from the front)");
+  cmd.add_option("--lut-mode", o.lutMode, "fibre model: physical (energy-conserving, default), or the paper's model as float, paper or direct");
+  cmd.add_option("--animate", o.animate, "Head motion while settling: none, nod, turn, shake, teleport");
+  cmd.add_option("--exposure", o.exposure, "Exposure multiplier before tonemapping (default 1)");
+  cmd.add_flag("--lines", o.lines, "Draw strands as lines instead of ribbons");
+  cmd.add_flag("--guides-only", o.guidesOnly, "Draw the smoothed guides only (no interpolation)");
+  cmd.add_flag("--no-shadows", o.noShadows, "Turn the opacity shadow maps off");
+  cmd.add_option("--opacity-resolution", o.opacityResolution, "Opacity map texels per side, 16-4096 (default 512)");
+  cmd.add_option("--strand-opacity", o.strandOpacity, "Constant opacity a strand adds per opacity-map texel instead of its footprint (width / texel size, the default)");
+  cmd.add_option("--shadow-k", o.shadowK, "Extinction k in T = exp(-k alpha) (default 1)");
+  cmd.add_option("--shadow-bias", o.shadowBias, "Shadow lookup bias toward the light, in slices (default 1)");
+}
+}  // namespace hp::cli

@@ -1,0 +1,44 @@
+#pragma once
+// Contract: the options that define a rendered frame (scene, size, light, camera, material, LUT mode,
+// shadows, raster, settling), shared by `hairpipe render` and `hairpipe reference` so both commands
+// take exactly the same frame description. addFrameOptions registers them on a subcommand;
+// makeRenderRequest validates them (hp::Error naming the option) into a RenderRequest; frameCamera
+// frames a guessed model's camera and refuses a frame with no hair in view.
+#include <CLI/CLI.hpp>
+
+#include <nlohmann/json.hpp>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "samples/cli/scene_options.h"
+#include "samples/tools/render_job.h"
+
+namespace hp::cli {
+struct FrameOptions {
+  SceneOptions scene;
+  HairMaterial material;
+  std::uint32_t frames = 90;
+  std::optional<std::uint32_t> width, height, msaa, density;
+  std::optional<std::vector<float>> lightDir, spot, spotTarget;
+  std::optional<float> spotAngle, spotRange;
+  std::optional<float> orbit;
+  std::string lutMode = "physical";
+  std::string animate = "none";
+  float exposure = 1.0f;
+  bool lines = false;
+  bool guidesOnly = false;
+  bool noShadows = false;
+  std::optional<std::uint32_t> opacityResolution;
+  std::optional<float> strandOpacity, shadowK, shadowBias;
+  std::optional<std::string> raster;
+  std::optional<std::uint32_t> tileBudget;
+};
+
+void addFrameOptions(CLI::App& cmd, FrameOptions& o);
+RenderRequest makeRenderRequest(const FrameOptions& o, const CLI::App& cmd);
+// A model loaded without a scene: frame the camera on its hair (said on stderr); returns what was
+// guessed (empty object: nothing). Throws when no guide particle is in view.
+nlohmann::json frameCamera(Scene& scene, const HairAsset& asset);
+}  // namespace hp::cli

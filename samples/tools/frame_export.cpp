@@ -1,0 +1,243 @@
+#include "samples/tools/frame_export.h"
+
+#include <cmath>
+
+#include <nlohmann/json.hpp>
+
+#include "engine/error.h"
+#include "engine/hair/atomic_write.h"
+#include "engine/hair/input_file.h"
+#include "engine/hair/json_reader.h"
+#include "samples/tools/obj_albedo_mesh.h"
+#include "samples/tools/reference/fibre.h"
+#include "samples/tools/render_targets.h"
+
+namespace hp {
+namespace {
+constexpr const char* kFormat = "hairpipe-frame";
+constexpr std::uint32_t kVersion = 1;
+
+nlohmann::json vec(const glm::vec3& v) { return {v.x, v.y, v.z}; }
+nlohmann::json dvec(const glm::dvec3& v) { return {v.x, v.y, v.z}; }
+
+// The strands as drawn: Q points each, width = root width x strand scale x mix(1, tip, along)
+// (shaders/strands.vert), colour = the hair albedo x the strand's lightness scale.
+HairFileData exportStrands(const FrameCapture& f, const render::LookSettings& look, const glm::vec3& albedo) {
+  const std::uint32_t q = f.verticesPerStrand;
+  const std::uint32_t strands = std::uint32_t(f.strands.attributes.size());
+  if (q < 2 || f.strands.positions.size() != std::size_t(strands) * q) throw Error("frame export: inconsistent strand capture");
+  HairFileData hair;
+  hair.strandCount = strands;
+  hair.defaultSegments = q - 1;
+  hair.setInfoText("hairpipe frame export: render strands as drawn");
+  for (std::uint32_t s = 0; s < strands; ++s) {
+    const auto& a = f.strands.attributes[s];
+    for (std::uint32_t j = 0; j < q; ++j) {
+      const glm::vec4 p = f.strands.positions[std::size_t(s) * q + j];
+      hair.points.emplace_back(p);
+      hair.thickness.push_back(look.strandWidth * a.widthScale * (1.0f + (look.tipWidthFraction - 1.0f) * p.w));
+      hair.colors.push_back(albedo * a.colorScale);
+    }
+  }
+  return hair;
+}
+
+void exportHead(ExportedFrame& out, const HeadMesh& head, const glm::mat4& headToWorld) {
+  const glm::mat3 linear(headToWorld);
+  const glm::vec3 hairUnderScalp = 0.5f * out.hairAlbedo;
+  for (std::size_t i = 0; i < head.positions.size(); ++i) {
+    out.headPositions.push_back(glm::vec3(headToWorld * glm::vec4(head.positions[i], 1.0f)));
+    out.headNormals.push_back(glm::normalize(linear * head.normals[i]));
+    const float scalp = head.scalp.empty() ? 0.0f : head.scalp[i];
+    out.headAlbedo.push_back(glm::mix(out.skinColor, hairUnderScalp, scalp));  // shaders/head.frag
+  }
+  out.headIndices = head.indices;
+}
+
+nlohmann::json lightJson(const LightSpec& l) {
+  return {{"type", l.type == LightSpec::Type::Spot ? "spot" : "directional"},
+          {"direction", vec(l.direction)}, {"color", vec(l.color)}, {"intensity", l.intensity},
+          {"irradiance", vec(l.color * l.intensity)}, {"position", vec(l.position)},
+          {"cone_deg", l.coneDeg}, {"range", l.range}};
+}
+
+nlohmann::json materialJson(const HairMaterial& m) {
+  return {{"eta", m.eta}, {"absorption", dvec(m.absorption)}, {"alpha_r_rad", m.alphaR}, {"beta_r_rad", m.betaR},
+          {"kg", m.kG}, {"wc_rad", m.wc}, {"deta", m.dEta}, {"dhm", m.dhM}, {"beta_n_rad", m.betaN}};
+}
+
+nlohmann::json frameJson(const ExportedFrame& f) {
+  const auto& c = f.camera;
+  return {{"format", kFormat}, {"version", kVersion}, {"units", "metres"}, {"up", "+y"},
+          {"files", {{"strands", "strands.hair"}, {"head", "head.obj"}}},
+          {"camera", {{"position", vec(c.position)}, {"target", vec(c.target)}, {"up", vec(c.up)},
+                      {"fov_y_deg", c.fovYDeg}, {"width", c.width}, {"height", c.height}}},
+          {"light", lightJson(f.light)},
+          {"fibre", {{"model", f.fibreModel}, {"lut_mode", f.lutMode}, {"material", materialJson(f.material)},
+                     {"albedo", vec(f.hairAlbedo)}}},
+          {"skin", {{"color", vec(f.skinColor)}, {"wrap", f.wrap}}},
+          {"environment_radiance", f.environment}, {"background_radiance", vec(f.background)},
+          {"exposure", f.exposure}, {"tonemap", "filmic (shaders/shared/tonemap.h) then sRGB"}};
+}
+
+LightSpec readLight(JsonObject o) {
+  LightSpec l;
+  std::string type;
+  o.read("type", type);
+  if (type != "directional" && type != "spot") o.fail("type", "expected \"directional\" or \"spot\"");
+  l.type = type == "spot" ? LightSpec::Type::Spot : LightSpec::Type::Directional;
+  o.read("direction", l.direction);
+  o.read("color", l.color);
+  o.read("intensity", l.intensity);
+  o.value("irradiance");  // derived (colour x intensity), informative only
+  o.read("position", l.position);
+  o.read("cone_deg", l.coneDeg);
+  o.read("range", l.range);
+  o.finish();
+  l.validate();
+  return l;
+}
+
+HairMaterial readMaterial(JsonObject o) {
+  HairMaterial m;
+  o.read("eta", m.eta);
+  o.read("absorption", m.absorption);
+  o.read("alpha_r_rad", m.alphaR);
+  o.read("beta_r_rad", m.betaR);
+  o.read("kg", m.kG);
+  o.read("wc_rad", m.wc);
+  o.read("deta", m.dEta);
+  o.read("dhm", m.dhM);
+  o.read("beta_n_rad", m.betaN);
+  o.finish();
+  m.validate();
+  return m;
+}
+
+JsonObject required(JsonObject& parent, const char* key) {
+  auto o = parent.object(key);
+  if (!o) parent.fail(key, "missing");
+  return *o;
+}
+
+void readCamera(JsonObject o, FrameCameraSpec& c) {
+  o.read("position", c.position);
+  o.read("target", c.target);
+  o.read("up", c.up);
+  o.read("fov_y_deg", c.fovYDeg);
+  o.read("width", c.width);
+  o.read("height", c.height);
+  o.finish();
+  if (c.width < 1 || c.height < 1 || c.width > 16384 || c.height > 16384) o.fail("width", "width/height must be in [1, 16384]");
+  if (!(c.fovYDeg > 0.0f && c.fovYDeg < 180.0f)) o.fail("fov_y_deg", "must be in (0, 180)");
+  const glm::vec3 forward = c.target - c.position;
+  if (!(glm::length(forward) > 0.0f) || !(glm::length(glm::cross(forward, c.up)) > 0.0f))
+    o.fail("target", "the camera needs distinct position and target, and an up vector not along the view");
+}
+
+void readFrameJson(ExportedFrame& f, const std::filesystem::path& path) {
+  nlohmann::json root;
+  try {
+    root = nlohmann::json::parse(readInputText(path, kMaxTextFileBytes));
+  } catch (const nlohmann::json::parse_error& e) {
+    throw Error(path.string() + ": not valid JSON: " + e.what());
+  }
+  JsonObject o(root, "", path.string());
+  std::string format, units, up;
+  std::uint32_t version = 0;
+  o.read("format", format);
+  o.read("version", version);
+  if (format != kFormat || version != kVersion) o.fail("format", "expected format \"hairpipe-frame\", version 1");
+  o.read("units", units);
+  o.read("up", up);
+  if (units != "metres" || up != "+y") o.fail("units", "expected units \"metres\" and up \"+y\"");
+  o.value("files");
+  o.value("tonemap");
+  readCamera(required(o, "camera"), f.camera);
+  f.light = readLight(required(o, "light"));
+  JsonObject fibre = required(o, "fibre");
+  fibre.read("model", f.fibreModel);
+  (void)reference::parseFibreModel(f.fibreModel);
+  fibre.read("lut_mode", f.lutMode);
+  f.material = readMaterial(required(fibre, "material"));
+  fibre.read("albedo", f.hairAlbedo);
+  fibre.finish();
+  JsonObject skin = required(o, "skin");
+  skin.read("color", f.skinColor);
+  skin.read("wrap", f.wrap);
+  skin.finish();
+  o.read("environment_radiance", f.environment);
+  o.read("background_radiance", f.background);
+  o.read("exposure", f.exposure);
+  o.finish();
+  if (!(f.environment >= 0.0f) || !std::isfinite(f.environment)) o.fail("environment_radiance", "must be >= 0");
+  if (!(f.exposure > 0.0f) || !std::isfinite(f.exposure)) o.fail("exposure", "must be > 0");
+}
+
+void checkStrands(const HairFileData& h, const std::string& source) {
+  validateHairData(h, source);
+  if (h.thickness.size() != h.points.size() || h.colors.size() != h.points.size())
+    throw Error(source + ": a frame export needs per-point thickness and colour arrays");
+  for (float t : h.thickness)
+    if (!(t > 0.0f) || !std::isfinite(t)) throw Error(source + ": thickness must be positive and finite");
+  for (const glm::vec3& c : h.colors)
+    if (!(c.x >= 0 && c.y >= 0 && c.z >= 0) || !std::isfinite(c.x + c.y + c.z))
+      throw Error(source + ": colours must be finite and >= 0");
+}
+}  // namespace
+
+std::vector<float> ExportedFrame::strandColorScales() const {
+  // The channel with the largest albedo carries the scale with the best precision.
+  int c = 0;
+  for (int i = 1; i < 3; ++i)
+    if (hairAlbedo[i] > hairAlbedo[c]) c = i;
+  std::vector<float> scales;
+  const auto offsets = strands.strandOffsets();
+  for (std::uint32_t s = 0; s < strands.strandCount; ++s)
+    scales.push_back(hairAlbedo[c] > 0.0f ? strands.colors[offsets[s]][c] / hairAlbedo[c] : 1.0f);
+  return scales;
+}
+
+ExportedFrame makeExportedFrame(const RenderRequest& request, const HairAsset& asset, const FrameCapture& frame,
+                                const std::string& fibreModel) {
+  const Scene& scene = request.scene;
+  ExportedFrame f;
+  f.fibreModel = fibreModel;
+  f.lutMode = lutModeName(request.lutMode);
+  f.material = scene.material;
+  f.hairAlbedo = glm::vec3(glm::exp(-2.0 * scene.material.absorption));  // render/frame_block.cpp
+  f.skinColor = request.look.skinColor;
+  f.wrap = request.look.wrap;
+  f.environment = request.look.ambient;
+  f.background = kBackgroundRadiance;
+  f.exposure = request.exposure;
+  f.light = scene.light;
+  f.light.direction = glm::normalize(f.light.direction);
+  f.camera = {frame.camera.position, scene.camera.target, {0.0f, 1.0f, 0.0f}, scene.camera.fovDeg,
+              scene.render.width, scene.render.height};
+  f.strands = exportStrands(frame, request.look, f.hairAlbedo);
+  exportHead(f, asset.head, frame.headToWorld);
+  return f;
+}
+
+void writeFrameExport(const std::filesystem::path& dir, const ExportedFrame& frame) {
+  writeHairFile(dir / "strands.hair", frame.strands);
+  writeAlbedoObj(dir / "head.obj", {frame.headPositions, frame.headNormals, frame.headAlbedo, frame.headIndices});
+  const std::string text = frameJson(frame).dump(2) + "\n";
+  writeFileAtomically(dir / "frame.json", std::as_bytes(std::span(text.data(), text.size())));
+}
+
+ExportedFrame readFrameExport(const std::filesystem::path& dir) {
+  if (!std::filesystem::is_directory(dir)) throw Error("'" + dir.string() + "' is not a frame export folder");
+  ExportedFrame f;
+  readFrameJson(f, dir / "frame.json");
+  f.strands = readHairFile(dir / "strands.hair");
+  checkStrands(f.strands, (dir / "strands.hair").string());
+  AlbedoMesh head = readAlbedoObj(dir / "head.obj");
+  f.headPositions = std::move(head.positions);
+  f.headNormals = std::move(head.normals);
+  f.headAlbedo = std::move(head.albedo);
+  f.headIndices = std::move(head.indices);
+  return f;
+}
+}  // namespace hp

@@ -1,0 +1,56 @@
+#pragma once
+// Contract: one rendered frame as the files an offline renderer needs to reproduce it
+// (`hairpipe render --export-frame DIR`, read back by `hairpipe reference --frame DIR`); the schema is
+// docs/FRAME_EXPORT.md. Units are metres (scene units), Y up, world space (the head is placed).
+//   DIR/strands.hair  the render strands as drawn: points, per-point thickness (fibre diameter) and
+//                     per-point colour (the strand's colour, the same on each of its points)
+//   DIR/head.obj      the opaque head: positions with per-vertex albedo ("v x y z r g b"), normals, triangles
+//   DIR/frame.json    camera, light, fibre material and model, skin, ambient, background, exposure
+// Every file is written atomically; readFrameExport validates everything and throws hp::Error naming
+// the file and the problem. write then read reproduces every number exactly (floats printed round-trip).
+#include <glm/glm.hpp>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "engine/hair/hair_asset.h"
+#include "engine/hair/hair_file.h"
+#include "engine/hair/scene.h"
+#include "samples/tools/frame_capture.h"
+#include "samples/tools/render_job.h"
+
+namespace hp {
+struct FrameCameraSpec {
+  glm::vec3 position{0.0f};
+  glm::vec3 target{0.0f};
+  glm::vec3 up{0.0f, 1.0f, 0.0f};
+  float fovYDeg = 35.0f;  // vertical
+  std::uint32_t width = 0, height = 0;
+};
+
+struct ExportedFrame {
+  HairFileData strands;  // thickness and colors arrays always present
+  std::vector<glm::vec3> headPositions, headNormals, headAlbedo;
+  std::vector<std::uint32_t> headIndices;
+  FrameCameraSpec camera;
+  LightSpec light;
+  HairMaterial material;
+  std::string fibreModel = "marschner";  // reference/fibre.h names
+  std::string lutMode = "float";         // what the real-time frame used
+  glm::vec3 hairAlbedo{1.0f};            // exp(-2 sigma_a): strand colour = this x the strand's lightness scale
+  glm::vec3 skinColor{1.0f};
+  float wrap = 0.0f;                     // the real-time head's wrap term (the reference's skin is Lambert)
+  float environment = 0.0f;              // uniform white sky radiance = the real-time ambient strength
+  glm::vec3 background{0.0f};            // radiance of camera rays that hit nothing
+  float exposure = 1.0f;
+
+  // Per strand: the lightness scale the real-time shading multiplies the strand's radiance by.
+  std::vector<float> strandColorScales() const;
+};
+
+ExportedFrame makeExportedFrame(const RenderRequest& request, const HairAsset& asset, const FrameCapture& frame,
+                                const std::string& fibreModel);
+void writeFrameExport(const std::filesystem::path& dir, const ExportedFrame& frame);
+ExportedFrame readFrameExport(const std::filesystem::path& dir);
+}  // namespace hp

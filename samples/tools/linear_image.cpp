@@ -1,0 +1,69 @@
+#include "samples/tools/linear_image.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <sstream>
+#include <string_view>
+
+#include "engine/error.h"
+#include "engine/hair/atomic_write.h"
+#include "engine/hair/input_file.h"
+#include "engine/shading/lut_export.h"
+#include "shaders/shared/tonemap.h"
+
+namespace hp {
+namespace {
+constexpr std::uint32_t kMaxSide = 16384;
+
+std::vector<float> flipRows(const LinearImage& image) {
+  const std::size_t row = std::size_t(image.width) * image.channels;
+  std::vector<float> out(image.values.size());
+  for (std::uint32_t y = 0; y < image.height; ++y)
+    std::memcpy(out.data() + (image.height - 1 - y) * row, image.values.data() + y * row, row * sizeof(float));
+  return out;
+}
+}  // namespace
+
+void writePfm(const std::filesystem::path& path, const LinearImage& image) {
+  if (image.channels != 1 && image.channels != 3) throw Error("writePfm: 1 or 3 channels, not " + std::to_string(image.channels));
+  if (image.values.size() != std::size_t(image.width) * image.height * image.channels)
+    throw Error("writePfm: the image's values do not match its size");
+  const std::vector<float> bottomUp = flipRows(image);
+  writeFileAtomically(path, encodePfm(image.width, image.height, int(image.channels), bottomUp.data()));
+}
+
+LinearImage readPfm(const std::filesystem::path& path) {
+  const std::vector<std::byte> bytes = readInputBytes(path, kMaxHairFileBytes);
+  const std::string_view text(reinterpret_cast<const char*>(bytes.data()), std::min<std::size_t>(bytes.size(), 128));
+  std::istringstream header{std::string(text)};
+  std::string magic;
+  long long w = 0, h = 0;
+  double scale = 0;
+  header >> magic >> w >> h >> scale;
+  if (!header || (magic != "PF" && magic != "Pf")) throw Error("'" + path.string() + "' is not a PFM file (PF or Pf header)");
+  if (w < 1 || h < 1 || w > kMaxSide || h > kMaxSide) throw Error("'" + path.string() + "': PFM size must be in [1, 16384]");
+  if (!(scale < 0)) throw Error("'" + path.string() + "': only little-endian PFM (negative scale) is read");
+  const auto dataStart = std::size_t(header.tellg()) + 1;  // one whitespace character after the scale
+  LinearImage image(std::uint32_t(w), std::uint32_t(h), magic == "PF" ? 3u : 1u);
+  if (bytes.size() != dataStart + image.values.size() * sizeof(float))
+    throw Error("'" + path.string() + "': PFM data size does not match its header");
+  std::memcpy(image.values.data(), bytes.data() + dataStart, image.values.size() * sizeof(float));
+  image.values = flipRows(image);  // the file's rows are bottom to top
+  return image;
+}
+
+std::uint8_t srgbEncode8(float display) {
+  const float c = std::clamp(display, 0.0f, 1.0f);
+  const float e = c <= 0.0031308f ? 12.92f * c : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f;
+  return std::uint8_t(std::lround(e * 255.0f));
+}
+
+std::vector<std::uint8_t> displayRgba8(const LinearImage& image, float exposure) {
+  if (image.channels != 3) throw Error("displayRgba8: the image must have 3 channels");
+  std::vector<std::uint8_t> out(std::size_t(image.width) * image.height * 4, 255);
+  for (std::size_t i = 0; i < std::size_t(image.width) * image.height; ++i)
+    for (int c = 0; c < 3; ++c) out[i * 4 + c] = srgbEncode8(gpu::tonemapFilmic(image.values[i * 3 + c] * exposure));
+  return out;
+}
+}  // namespace hp

@@ -1,0 +1,67 @@
+#pragma once
+// Contract: the exported frame's geometry in Embree 3 for the path tracer: every render strand as a
+// round linear curve through its points with radius = thickness / 2 (rounded joints, as one tube),
+// and the head as an opaque triangle mesh. intersect() returns the nearest hit with what shading needs
+// (fibre: tangent and strand; head: normals and albedo interpolated as the rasteriser does);
+// occluded() answers a shadow ray. Both can skip the strand a ray leaves from (a far-field fibre
+// scatters from its axis, so its own tube is not an occluder) up to a distance. Thread-safe after
+// construction; throws hp::Error when Embree fails.
+#include <glm/glm.hpp>
+
+#include <embree3/rtcore.h>
+
+#include <cstdint>
+#include <vector>
+
+#include "samples/tools/frame_export.h"
+
+namespace hp::reference {
+inline constexpr std::uint32_t kNoStrand = 0xFFFFFFFFu;
+
+struct RaySkip {
+  std::uint32_t strand = kNoStrand;  // hits on this strand closer than `distance` are ignored
+  float distance = 0.0f;
+};
+
+struct SceneHit {
+  enum class Kind { None, Fibre, Head } kind = Kind::None;
+  double t = 0.0;
+  glm::dvec3 point{0.0};
+  glm::dvec3 tangent{0.0};       // fibre: unit, root to tip
+  std::uint32_t strand = 0;      // fibre
+  double radius = 0.0;           // fibre: at the hit
+  glm::dvec3 axisPoint{0.0};     // fibre: the hit projected onto the strand's axis
+  glm::dvec3 normal{0.0};        // head: interpolated shading normal, unit
+  glm::dvec3 geometricNormal{0.0};  // head: unit
+  glm::dvec3 albedo{0.0};        // head
+};
+
+class ReferenceScene {
+ public:
+  explicit ReferenceScene(const ExportedFrame& frame);
+  ~ReferenceScene();
+  ReferenceScene(const ReferenceScene&) = delete;
+  ReferenceScene& operator=(const ReferenceScene&) = delete;
+
+  SceneHit intersect(const glm::dvec3& origin, const glm::dvec3& dir, float tnear, RaySkip skip = {}) const;
+  bool occluded(const glm::dvec3& origin, const glm::dvec3& dir, float tnear, float tfar, RaySkip skip = {}) const;
+  float sceneScale() const { return scale_; }  // bounding box diagonal, for ray offsets
+
+ private:
+  void addStrands(const HairFileData& strands);
+  void addHead(const ExportedFrame& frame);
+  SceneHit fibreHit(std::uint32_t segment, float u, const glm::dvec3& point) const;
+  SceneHit headHit(std::uint32_t triangle, float u, float v, const glm::dvec3& ng) const;
+
+  RTCDevice device_ = nullptr;
+  RTCScene scene_ = nullptr;
+  unsigned curveGeom_ = 0, headGeom_ = 0;
+  std::vector<glm::vec4> curvePoints_;          // xyz, radius
+  std::vector<glm::vec3> curveTangents_;        // per point, central differences
+  std::vector<std::uint32_t> segmentFirst_;     // per segment: its first point
+  std::vector<std::uint32_t> segmentStrand_;    // per segment: its strand
+  std::vector<glm::vec3> headPositions_, headNormals_, headAlbedo_;
+  std::vector<std::uint32_t> headIndices_;
+  float scale_ = 1.0f;
+};
+}  // namespace hp::reference

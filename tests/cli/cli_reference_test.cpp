@@ -1,0 +1,78 @@
+// `hairpipe reference --frame DIR` and `hairpipe compare` on a tiny synthetic export (no device): the
+// reference writes a PFM of the frame's size and a PNG through the render command's display curve,
+// compare measures an image against itself as identical, and bad options exit 1 naming the problem
+// without writing anything. (The real-time frame against the reference: tests/render/frame_export_test.cpp.)
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "samples/tools/frame_export.h"
+#include "samples/tools/linear_image.h"
+#include "samples/tools/png_file.h"
+#include "tests/support/cli_runner.h"
+
+using hp::test::expectRefused;
+using hp::test::freshTempPath;
+using hp::test::runCli;
+
+namespace {
+// A Lambertian square facing the camera with one strand across it, lit by the sun.
+std::filesystem::path writeTinyExport() {
+  const auto dir = freshTempPath("hairpipe_cli_reference_frame");
+  std::filesystem::create_directories(dir);
+  hp::ExportedFrame f;
+  f.camera = {{0, 0, 3}, {0, 0, 0}, {0, 1, 0}, 30.0f, 12, 8};
+  f.environment = 0.1f;
+  for (glm::vec2 c : {glm::vec2(-1, -1), glm::vec2(1, -1), glm::vec2(1, 1), glm::vec2(-1, 1)}) {
+    f.headPositions.emplace_back(c.x, c.y, 0.0f);
+    f.headNormals.emplace_back(0, 0, 1);
+    f.headAlbedo.emplace_back(0.6f, 0.45f, 0.35f);
+  }
+  f.headIndices = {0, 1, 2, 0, 2, 3};
+  f.strands.strandCount = 1;
+  f.strands.defaultSegments = 2;
+  f.strands.points = {{-0.5f, -0.2f, 0.1f}, {0.0f, 0.0f, 0.15f}, {0.5f, 0.2f, 0.1f}};
+  f.strands.thickness = {0.05f, 0.05f, 0.04f};
+  f.strands.colors.assign(3, f.hairAlbedo);
+  hp::writeFrameExport(dir, f);
+  return dir;
+}
+}  // namespace
+
+TEST(CliReference, TracesAnExportedFrameToPfmAndPng) {
+  const auto dir = writeTinyExport();
+  const auto pfm = freshTempPath("hairpipe_cli_reference.pfm"), png = freshTempPath("hairpipe_cli_reference.png");
+  auto r = runCli({"reference", "--frame", dir.string(), "--spp", "4", "--bounces", "2", "--out", pfm.string()});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.err.find("tiles"), std::string::npos) << "no progress on stderr: " << r.err;
+  const hp::LinearImage image = hp::readPfm(pfm);
+  EXPECT_EQ(image.width, 12u);
+  EXPECT_EQ(image.height, 8u);
+  r = runCli({"reference", "--frame", dir.string(), "--spp", "4", "--bounces", "2", "--quiet", "--out", png.string()});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_EQ(hp::readPngRgba(png).pixels, hp::displayRgba8(image, 1.0f)) << "the PNG is not the PFM tonemapped";
+
+  r = runCli({"compare", "--image", pfm.string(), "--reference", pfm.string(), "--json"});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.out.find("\"luminance_ratio\": 1.0"), std::string::npos) << r.out;
+  std::filesystem::remove_all(dir);
+  std::filesystem::remove(pfm);
+  std::filesystem::remove(png);
+}
+
+TEST(CliReference, BadOptionsExitWithAMessageAndWriteNothing) {
+  const auto dir = writeTinyExport();
+  const auto out = freshTempPath("hairpipe_cli_reference_bad.pfm");
+  expectRefused({"reference", "--out", out.string()}, {
+      {{"--frame", dir.string(), "--width", "64"}, "--width cannot be combined with --frame"},
+      {{"--frame", dir.string(), "--spp", "0"}, "--spp"},
+      {{"--frame", dir.string(), "--bounces", "0"}, "--bounces"},
+      {{"--frame", (dir / "missing").string()}, "is not a frame export folder"},
+  }, out);
+  expectRefused({"reference", "--frame", dir.string()}, {
+      {{"--out", freshTempPath("hairpipe_cli_reference_bad.jpg").string()}, ".pfm"},
+  });
+  std::filesystem::remove(dir / "head.obj");
+  expectRefused({"reference", "--frame", dir.string(), "--out", out.string()}, {{{}, "head.obj"}}, out);
+  std::filesystem::remove_all(dir);
+}

@@ -1,0 +1,143 @@
+// `render --export-frame` and `hairpipe reference` on one small frame (96x72, 2000 strands, from behind):
+//  1. the export holds the strands as drawn (points, widths from the per-strand scale and the
+//     root-to-tip taper, colours from the per-strand lightness) and the camera that produced the view
+//     matrix; reading the folder back returns every number bit for bit; a broken export is refused
+//     naming the file;
+//  2. the real-time image against the path-traced reference of the exported frame over the hair
+//     (real-time hair coverage > 0.5), and two seeds of the reference against each other: PSNR and
+//     mean-luminance ratio above thresholds set under what was measured (numbers in docs/SHADING.md).
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <iostream>
+#include <fstream>
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "engine/error.h"
+#include "samples/tools/frame_export.h"
+#include "samples/tools/image_compare.h"
+#include "samples/tools/reference/fibre.h"
+#include "samples/tools/reference/path_tracer.h"
+#include "samples/tools/render_job.h"
+#include "tests/support/vk_fixture.h"
+
+using namespace hp;
+using hp::test::VulkanTest;
+
+namespace {
+RenderRequest smallFrame() {
+  RenderRequest r;
+  r.scene.render.width = 96;
+  r.scene.render.height = 72;
+  r.scene.camera.orbitDeg = 145.0f;  // the hair side of the head
+  r.scene.density.totalStrands = 2000;
+  r.settleFrames = 2;
+  r.captureFrame = true;
+  // The paper's model: its exact S costs ~1 us on the CPU, the physical model's far more (its frames are
+  // measured against the reference in docs/SHADING.md, not here).
+  r.lutMode = LutMode::Float;
+  return r;
+}
+
+void expectSameFrames(const ExportedFrame& a, const ExportedFrame& b) {
+  EXPECT_EQ(a.strands.strandCount, b.strands.strandCount);
+  EXPECT_EQ(a.strands.points, b.strands.points);
+  EXPECT_EQ(a.strands.thickness, b.strands.thickness);
+  EXPECT_EQ(a.strands.colors, b.strands.colors);
+  EXPECT_EQ(a.camera.position, b.camera.position);
+  EXPECT_EQ(a.camera.target, b.camera.target);
+  EXPECT_EQ(a.camera.up, b.camera.up);
+  EXPECT_EQ(a.camera.fovYDeg, b.camera.fovYDeg);
+  EXPECT_EQ(a.camera.width, b.camera.width);
+  EXPECT_EQ(a.camera.height, b.camera.height);
+  EXPECT_EQ(a.light.direction, b.light.direction);
+  EXPECT_EQ(a.light.color * a.light.intensity, b.light.color * b.light.intensity);
+  EXPECT_TRUE(a.material == b.material);
+  EXPECT_EQ(a.headPositions, b.headPositions);
+  EXPECT_EQ(a.headNormals, b.headNormals);
+  EXPECT_EQ(a.headAlbedo, b.headAlbedo);
+  EXPECT_EQ(a.headIndices, b.headIndices);
+  EXPECT_EQ(a.hairAlbedo, b.hairAlbedo);
+  EXPECT_EQ(a.environment, b.environment);
+  EXPECT_EQ(a.background, b.background);
+  EXPECT_EQ(a.exposure, b.exposure);
+  EXPECT_EQ(a.fibreModel, b.fibreModel);
+}
+
+// Measured on lavapipe with these settings (the paper's model, float LUTs, 16 spp, 4 bounces): real time against
+// the reference 22.2 dB, luminance ratio 1.04; seed 1 against seed 2: 21.4 dB, ratio 1.01 (16 spp is
+// noise-limited: against 256 spp the real-time image is at 23.6 dB).
+constexpr double kMinPsnrAgainstReference = 19.0, kMinPsnrBetweenSeeds = 19.0;
+constexpr double kLuminanceRatioLow = 0.85, kLuminanceRatioHigh = 1.25;
+
+void expectCloseToReference(const FrameCapture& capture, const ExportedFrame& frame) {
+  const reference::TraceResult a = reference::traceReference(frame, {16, 4, 1, 0, nullptr});
+  const reference::TraceResult b = reference::traceReference(frame, {16, 4, 2, 0, nullptr});
+  const ImageComparison realTime = compareImages(capture.linear, a.radiance, capture.hairAlpha, frame.exposure);
+  const ImageComparison seeds = compareImages(a.radiance, b.radiance, capture.hairAlpha, frame.exposure);
+  std::cout << "real time vs reference: " << realTime.psnrDb << " dB, luminance " << realTime.luminanceRatio
+            << "; seeds: " << seeds.psnrDb << " dB, luminance " << seeds.luminanceRatio << ", " << realTime.pixels
+            << " hair pixels\n";
+  EXPECT_GT(realTime.pixels, 500u);
+  EXPECT_GT(realTime.psnrDb, kMinPsnrAgainstReference);
+  EXPECT_GT(realTime.luminanceRatio, kLuminanceRatioLow);
+  EXPECT_LT(realTime.luminanceRatio, kLuminanceRatioHigh);
+  EXPECT_GT(seeds.psnrDb, kMinPsnrBetweenSeeds);
+  EXPECT_NEAR(seeds.luminanceRatio, 1.0, 0.05);
+}
+}  // namespace
+
+TEST_F(VulkanTest, FrameExportRoundTripsAndTheRealTimeHairMatchesTheReference) {
+  const RenderRequest request = smallFrame();
+  const HairAsset asset = buildSceneAsset(request.scene);
+  const RenderResult result = renderStill(*ctx, asset, request);
+  ASSERT_TRUE(result.frame);
+  const FrameCapture& capture = *result.frame;
+  const ExportedFrame frame =
+      makeExportedFrame(request, asset, capture, reference::fibreModelName(fibreModelOf(request.lutMode)));
+  EXPECT_EQ(frame.fibreModel, "marschner");
+
+  // The strands as drawn (shaders/strands.vert's width and the shading's lightness scale).
+  const std::uint32_t q = capture.verticesPerStrand;
+  ASSERT_EQ(frame.strands.strandCount, result.strands);
+  const std::vector<float> scales = frame.strandColorScales();
+  for (std::uint32_t s = 0; s < frame.strands.strandCount; ++s) {
+    const auto& attr = capture.strands.attributes[s];
+    EXPECT_NEAR(scales[s], attr.colorScale, 1e-6f * attr.colorScale);
+    for (std::uint32_t j = 0; j < q; ++j) {
+      const std::size_t i = std::size_t(s) * q + j;
+      const glm::vec4 p = capture.strands.positions[i];
+      ASSERT_EQ(frame.strands.points[i], glm::vec3(p));
+      const float width = request.look.strandWidth * attr.widthScale * glm::mix(1.0f, request.look.tipWidthFraction, p.w);
+      ASSERT_NEAR(frame.strands.thickness[i], width, 1e-6f * width);
+      ASSERT_EQ(frame.strands.colors[i], frame.hairAlbedo * attr.colorScale);
+    }
+  }
+  // The camera the export describes gives the view matrix that drew the frame.
+  const glm::mat4 view = glm::lookAt(frame.camera.position, frame.camera.target, frame.camera.up);
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 4; ++r) EXPECT_NEAR(view[c][r], capture.camera.view[c][r], 1e-6f);
+  EXPECT_FLOAT_EQ(glm::radians(frame.camera.fovYDeg), capture.camera.fovY);
+  ASSERT_EQ(capture.linear.width, 96u);
+  ASSERT_EQ(capture.hairAlpha.width, 96u);
+
+  const auto dir = std::filesystem::temp_directory_path() / "hairpipe_frame_export_test";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  writeFrameExport(dir, frame);
+  const ExportedFrame back = readFrameExport(dir);
+  expectSameFrames(frame, back);
+  expectCloseToReference(capture, back);
+  writePfm(dir / "realtime.pfm", capture.linear);
+  EXPECT_EQ(readPfm(dir / "realtime.pfm").values, capture.linear.values);
+
+  // A broken export is refused, naming the file.
+  std::ofstream(dir / "frame.json") << "{\"format\": \"hairpipe-frame\"}";
+  try {
+    readFrameExport(dir);
+    ADD_FAILURE() << "a frame.json without a version was accepted";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("frame.json"), std::string::npos) << e.what();
+  }
+  std::filesystem::remove_all(dir);
+}
