@@ -17,8 +17,9 @@ using hp::test::runCli;
 
 namespace {
 // A Lambertian square facing the camera with one strand across it, lit by the sun.
-std::filesystem::path writeTinyExport() {
-  const auto dir = freshTempPath("hairpipe_cli_reference_frame");
+// `name`: the folder under the temp directory, one per test (CTest runs them in parallel).
+std::filesystem::path writeTinyExport(const std::string& name) {
+  const auto dir = freshTempPath(name);
   std::filesystem::create_directories(dir);
   hp::ExportedFrame f;
   f.camera = {{0, 0, 3}, {0, 0, 0}, {0, 1, 0}, 30.0f, 12, 8};
@@ -40,7 +41,7 @@ std::filesystem::path writeTinyExport() {
 }  // namespace
 
 TEST(CliReference, TracesAnExportedFrameToPfmAndPng) {
-  const auto dir = writeTinyExport();
+  const auto dir = writeTinyExport("hairpipe_cli_reference_frame_1");
   const auto pfm = freshTempPath("hairpipe_cli_reference.pfm"), png = freshTempPath("hairpipe_cli_reference.png");
   auto r = runCli({"reference", "--frame", dir.string(), "--spp", "4", "--bounces", "2", "--out", pfm.string()});
   ASSERT_EQ(r.exitCode, 0) << r.err;
@@ -61,7 +62,7 @@ TEST(CliReference, TracesAnExportedFrameToPfmAndPng) {
 }
 
 TEST(CliReference, BadOptionsExitWithAMessageAndWriteNothing) {
-  const auto dir = writeTinyExport();
+  const auto dir = writeTinyExport("hairpipe_cli_reference_frame_2");
   const auto out = freshTempPath("hairpipe_cli_reference_bad.pfm");
   expectRefused({"reference", "--out", out.string()}, {
       {{"--frame", dir.string(), "--width", "64"}, "--width cannot be combined with --frame"},

@@ -132,7 +132,7 @@ Xvfb::~Xvfb() {
 
 std::filesystem::path freshTempPath(const std::string& name) {
   auto path = std::filesystem::temp_directory_path() / name;
-  std::filesystem::remove(path);
+  std::filesystem::remove_all(path);  // a file or a folder a previous run left
   return path;
 }
 
