@@ -1,6 +1,7 @@
 #include "engine/render/shadow_maps.h"
 
 #include "compute/bounds_pass.h"
+#include "engine/vk/attachments.h"
 #include "engine/vk/barriers.h"
 #include "engine/vk/context.h"
 #include "engine/vk/submit.h"
@@ -31,16 +32,6 @@ vk::Image makeHeadImage(const vk::Context& ctx, const OpacitySettings& settings)
   desc.usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT;
   desc.name = "head shadow map";
   return vk::Image(ctx, desc);
-}
-
-VkRenderingAttachmentInfo depthAttachment(VkImageView view) {
-  VkRenderingAttachmentInfo a{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
-  a.imageView = view;
-  a.imageLayout = vk::imageLayout(vk::ImageUse::DepthAttachment);
-  a.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
-  a.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-  a.clearValue.depthStencil = {1.0f, 0};
-  return a;
 }
 
 VkRenderingAttachmentInfo sliceAttachment(VkImageView view) {
@@ -98,7 +89,8 @@ void ShadowMaps::beginRendering(VkCommandBuffer cmd) const {
 void ShadowMaps::endRendering(VkCommandBuffer cmd) const { ctx_->fn().vkCmdEndRendering(cmd); }
 
 void ShadowMaps::beginHeadRendering(VkCommandBuffer cmd) const {
-  VkRenderingAttachmentInfo depth = depthAttachment(headImage_.view());
+  VkRenderingAttachmentInfo depth =
+      vk::depthAttachment(headImage_.view(), VK_ATTACHMENT_LOAD_OP_CLEAR, VK_ATTACHMENT_STORE_OP_STORE);
   VkRenderingInfo info{VK_STRUCTURE_TYPE_RENDERING_INFO};
   info.renderArea = {{0, 0}, headImage_.extent()};
   info.layerCount = 1;

@@ -4,6 +4,7 @@
 
 #include "engine/error.h"
 #include "engine/shading/half_float.h"
+#include "engine/vk/attachments.h"
 #include "engine/vk/barriers.h"
 #include "engine/vk/context.h"
 #include "engine/vk/transfer.h"
@@ -26,16 +27,6 @@ VkRenderingAttachmentInfo colorAttachment(VkImageView view, VkClearColorValue cl
 std::uint32_t targetSamples(std::uint32_t msaa, RasterMode raster) {
   (void)sampleCountFlag(msaa);
   return raster == RasterMode::Compute ? 1 : msaa;
-}
-
-VkRenderingAttachmentInfo depthAttachment(VkImageView view, VkAttachmentLoadOp load, VkAttachmentStoreOp store) {
-  VkRenderingAttachmentInfo a{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
-  a.imageView = view;
-  a.imageLayout = vk::imageLayout(vk::ImageUse::DepthAttachment);
-  a.loadOp = load;
-  a.storeOp = store;
-  a.clearValue.depthStencil = {1.0f, 0};
-  return a;
 }
 
 VkRenderingInfo renderingInfo(VkExtent2D extent, const VkRenderingAttachmentInfo* color,
@@ -89,7 +80,7 @@ void OffscreenRenderer::recordComputeScene(VkCommandBuffer cmd, HairSystem& hair
   vk::imageBarrier(ctx_, cmd, depthImage, VK_IMAGE_ASPECT_DEPTH_BIT, vk::ImageUse::DepthAttachmentDiscard,
                    vk::ImageUse::DepthAttachment);
   VkRenderingAttachmentInfo color = colorAttachment(targets_.hdr.view(), kBackground);
-  VkRenderingAttachmentInfo depth = depthAttachment(targets_.depth.view(), VK_ATTACHMENT_LOAD_OP_CLEAR,
+  VkRenderingAttachmentInfo depth = vk::depthAttachment(targets_.depth.view(), VK_ATTACHMENT_LOAD_OP_CLEAR,
                                                     VK_ATTACHMENT_STORE_OP_STORE);
   VkRenderingInfo info = renderingInfo(extent(), &color, &depth);
   ctx_.fn().vkCmdBeginRendering(cmd, &info);
@@ -103,7 +94,7 @@ void OffscreenRenderer::recordComputeScene(VkCommandBuffer cmd, HairSystem& hair
   // The head's colour writes before the composite's blend reads them (separate rendering instances).
   vk::imageBarrier(ctx_, cmd, hdr, VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::ColorAttachment, vk::ImageUse::ColorAttachment);
   color.loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;
-  depth = depthAttachment(targets_.depth.view(), VK_ATTACHMENT_LOAD_OP_LOAD, VK_ATTACHMENT_STORE_OP_DONT_CARE);
+  depth = vk::depthAttachment(targets_.depth.view(), VK_ATTACHMENT_LOAD_OP_LOAD, VK_ATTACHMENT_STORE_OP_DONT_CARE);
   ctx_.fn().vkCmdBeginRendering(cmd, &info);
   hair.recordComposite(cmd, extent(), profiler);
   ctx_.fn().vkCmdEndRendering(cmd);
@@ -139,7 +130,7 @@ void OffscreenRenderer::recordScene(VkCommandBuffer cmd, const std::function<voi
     color.storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;  // only the resolve is kept
   }
   VkRenderingAttachmentInfo depth =
-      depthAttachment(targets_.depth.view(), VK_ATTACHMENT_LOAD_OP_CLEAR, VK_ATTACHMENT_STORE_OP_DONT_CARE);
+      vk::depthAttachment(targets_.depth.view(), VK_ATTACHMENT_LOAD_OP_CLEAR, VK_ATTACHMENT_STORE_OP_DONT_CARE);
   VkRenderingInfo info = renderingInfo(extent(), &color, &depth);
   ctx_.fn().vkCmdBeginRendering(cmd, &info);
   draws(cmd);
