@@ -83,7 +83,7 @@ class Context {
   void waitIdle() const;
   // Size of the largest device-local heap: the budget that size checks of big allocations use.
   VkDeviceSize deviceLocalHeapBytes() const;
-  // Bytes of device memory hairpipe's buffers and images hold now (what `hairpipe bench-instances` reports).
+  // Bytes of device memory hairpipe's buffers and images hold now (what `hairpipe bench instances` reports).
   std::uint64_t allocatedBytes() const { return allocated_->load(); }
   // Shared with every buffer and image, which add their allocation and take it back when freed.
   const std::shared_ptr<std::atomic<std::int64_t>>& allocationTally() const { return allocated_; }

@@ -68,6 +68,8 @@ TEST(CliBench, SuitesAreSubcommandsOfBench) {
   EXPECT_NE(old.err.find("A subcommand is required"), std::string::npos) << old.err;
   auto assets = runCli({"bench", "assets", "--strands", "200", "--points", "2000", "--repeat", "1", "--json"});
   ASSERT_EQ(assets.exitCode, 0) << assets.err;
-  EXPECT_NO_THROW((void)nlohmann::json::parse(assets.out)) << assets.out;
+  nlohmann::json parsed;
+  EXPECT_NO_THROW(parsed = nlohmann::json::parse(assets.out)) << assets.out;
+  EXPECT_TRUE(parsed.is_object()) << assets.out;
   EXPECT_EQ(assets.out.find("median of"), std::string::npos) << "the frame bench ran too";
 }
