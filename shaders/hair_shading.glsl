@@ -1,6 +1,7 @@
 // The radiance a hair fibre sends toward the camera (REFERENCES.md §3-4), GLSL only, shared by the graphics
 // strand shader (strands.frag, per fragment) and the compute rasterizer (raster_shade.comp, per vertex):
-// S(L, V, T) cos(theta_i) x light x transmittance + ambient, times the strand's lightness variation.
+// S(L, V, T) cos(theta_i) x light x transmittance + sky albedo x ambient x RENDER_HAIR_SKY_VISIBILITY, times the
+// strand's lightness variation.
 // The includer declares `frame` (RenderFrame), `marschner` (MarschnerParams), the LUT samplers
 // lutM, lutN0, lutN1 and `headShadowMap` (the head's depth map) before including this file; `alpha` is
 // the opacity-map lookup at the point. The transmittance is the hair's (opacity maps) times the head's.
@@ -20,7 +21,9 @@ vec3 hairRadiance(vec3 world, vec3 tangent, float colorScale, float alpha) {
   float transmittance = exp(-frame.strand.z * alpha) *
                         headVisibility(headShadowMap, frame.headShadowViewProj, frame.headShadow, world, L);
   vec3 direct = S * cosThetaI * frame.lightRadiance.rgb * (light.scale * transmittance);
-  vec3 ambient = frame.hairColor.rgb * frame.hairColor.w;
+  // The ambient is a uniform white sky: an unoccluded fibre returns the model's sky albedo times its
+  // radiance, a fibre of a head of hair the mean visible fraction of it (shared/render.h).
+  vec3 ambient = marschner.skyAlbedo.rgb * (frame.hairColor.w * RENDER_HAIR_SKY_VISIBILITY);
   return (direct + ambient) * colorScale;
 }
 #endif

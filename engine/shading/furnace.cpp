@@ -51,4 +51,13 @@ glm::dvec3 whiteFurnace(FibreModel model, double sinThetaR, const HairMaterial& 
   m.validate();
   return model == FibreModel::Physical ? physicalFurnace(sinThetaR, m, panels) : marschnerFurnace(sinThetaR, m, panels);
 }
+
+glm::dvec3 skyAlbedo(FibreModel model, const HairMaterial& m) {
+  const int panels = model == FibreModel::Physical ? 16 : 4;
+  glm::dvec3 sum(0.0);
+  shading::gaussLegendre(-0.5 * kPi, 0.5 * kPi, 2, [&](double thetaR, double w) {
+    sum += 0.5 * w * std::cos(thetaR) * whiteFurnace(model, std::sin(thetaR), m, panels);
+  });
+  return sum;
+}
 }  // namespace hp

@@ -1,5 +1,7 @@
 #include "engine/shading/marschner_gpu.h"
 
+#include "engine/shading/fibre_model.h"
+#include "engine/shading/furnace.h"
 #include "shaders/shared/brdf_eval.h"
 
 namespace hp {
@@ -31,6 +33,7 @@ gpu::MarschnerParams marschnerGpuParams(const MarschnerLut& lut) {
     }
   }
   p.control = glm::uvec4(gpuModeOf(lut.mode), 0u, 0u, 0u);
+  p.skyAlbedo = glm::vec4(glm::vec3(skyAlbedo(fibreModelOf(lut.mode), m)), 0.0f);
   return p;
 }
 }  // namespace hp

@@ -102,6 +102,8 @@ hp::RenderRequest makeRenderRequest(const FrameOptions& o, const CLI::App& cmd) 
   r.lines = o.lines;
   r.guidesOnly = o.guidesOnly;
   r.exposure = o.exposure;
+  if (o.ambient) r.look.ambient = *o.ambient;
+  r.look.validate();
   r.opacity = opacitySettings(o);
   applyRaster(o, r);
   return r;
@@ -155,6 +157,8 @@ void addFrameOptions(CLI::App& cmd, FrameOptions& o) {
   cmd.add_option("--lut-mode", o.lutMode, "fibre model: physical (energy-conserving, default), or the paper's model as float, paper or direct");
   cmd.add_option("--animate", o.animate, "Head motion while settling: none, nod, turn, shake, teleport");
   cmd.add_option("--exposure", o.exposure, "Exposure multiplier before tonemapping (default 1)");
+  cmd.add_option("--ambient", o.ambient,
+                 "Ambient fill light in [0, 10] (default 0.06; the reference's uniform sky radiance)");
   cmd.add_flag("--lines", o.lines, "Draw strands as lines instead of ribbons");
   cmd.add_flag("--guides-only", o.guidesOnly, "Draw the smoothed guides only (no interpolation)");
   cmd.add_flag("--no-shadows", o.noShadows, "Turn the opacity shadow maps off");

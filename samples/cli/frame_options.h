@@ -24,6 +24,7 @@ struct FrameOptions {
   std::optional<std::vector<float>> lightDir, spot, spotTarget;
   std::optional<float> spotAngle, spotRange;
   std::optional<float> orbit;
+  std::optional<float> ambient;
   std::string lutMode = "physical";
   std::string animate = "none";
   float exposure = 1.0f;

@@ -70,6 +70,7 @@ struct MarschnerParams {
   vec4 n0Scale;       // same for the first N texture
   vec4 n1Scale;       // same for the second N texture (float mode only)
   uvec4 control;      // x = MARSCHNER_MODE_*, yzw = 0
+  vec4 skyAlbedo;     // rgb = the fibre's albedo under a uniform white sky (hp::skyAlbedo), w = 0
 };
 
 // Pseudo-angle of a in [0, pi/2] from cos(2a): sin(a)/sqrt2 below pi/4, 1 - cos(a)/sqrt2 above.

@@ -23,6 +23,13 @@ HP_CONST(uint, RENDER_BINDING_HEAD_SHADOW, 10)  // sampler2DShadow: the head's d
 // The tonemap pass reads the resolved HDR image.
 HP_CONST(uint, TONEMAP_BINDING_HDR, 0)
 
+// The fraction of a uniform sky that the fibres the camera sees receive, on average, from a head of hair
+// (the ambient term's occlusion): a fibre at optical depth x below the surface of an optically thick
+// layer sees (1/2) E_2(x) of the sky (E_2 the exponential integral: the outer hemisphere through the
+// hair), and the camera sees depths with density exp(-x), so the mean is (1/2) int exp(-x) E_2(x) dx
+// = (1 - ln 2) / 2. docs/SHADING.md "Ambient" compares it with the path-traced reference's sky.
+HP_CONST(float, RENDER_HAIR_SKY_VISIBILITY, 0.15342641f)
+
 HP_CONST(uint, STRAND_VERTICES_PER_QUAD, 6)
 HP_CONST(uint, STRAND_VERTICES_PER_LINE, 2)
 
@@ -32,7 +39,7 @@ struct RenderFrame {
   vec4 cameraPosition;   // xyz world; w = world size of one pixel at unit view depth
   vec4 lightDirection;   // xyz unit, from the hair toward the light (spot: minus its axis)
   vec4 lightRadiance;    // rgb linear radiance of the light
-  vec4 hairColor;        // rgb ambient albedo of the hair (exp(-2 sigma_a)); w = ambient strength
+  vec4 hairColor;        // rgb exp(-2 sigma_a) (the scalp's tint); w = ambient (white sky) radiance
   vec4 skinColor;        // rgb albedo of the head; w = wrap in [0, 1]
   vec4 strand;           // x = width at the root (scene units), y = width at the tip / root, z = shadow k
                          // (T = exp(-k alpha)), w = shadow bias in slices (lookups move this far toward the light)

@@ -75,6 +75,7 @@ TEST_F(VulkanTest, ModelsInAnyUnitsAndUpAxisAreGuessedAndFramed) {
       r.scene.render = {kWidth, kHeight, 1};
       r.settleFrames = 0;
       r.opacity.enabled = false;
+      r.look.ambient = 0.4f;  // hair facing away from the light shows through the ambient (sky albedo x 0.15)
       HairAsset asset = buildSceneAsset(r.scene);
       asset.head = {};  // count hair only
       fitCameraToPoints(r.scene.camera, asset.guides.positions);

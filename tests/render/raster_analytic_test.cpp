@@ -69,7 +69,8 @@ hp::render::LookSettings rigLook(const hp::CameraMatrices& camera, float tipFrac
   return look;
 }
 
-// Ambient only: every strand's radiance is hairColor * ambient * colorScale, constant along it.
+// Ambient only: every strand's radiance is skyAlbedo * ambient * RENDER_HAIR_SKY_VISIBILITY * colorScale,
+// constant along it.
 hp::LightSpec darkLight() {
   hp::LightSpec light;
   light.intensity = 0.0f;
@@ -165,7 +166,7 @@ TEST_F(VulkanTest, CrossingStrandsCompositeFrontToBackAsTheAnalyticOver) {
   hp::test::RasterRig rig(*ctx, *buffers, kExtent, camera, rigLook(camera), darkLight());
   rig.run();
   const auto image = rig.image();
-  const glm::vec3 base = glm::vec3(rig.frame.hairColor) * rig.frame.hairColor.w;
+  const glm::vec3 base = glm::vec3(rig.marschner.params().skyAlbedo) * (rig.frame.hairColor.w * hp::gpu::RENDER_HAIR_SKY_VISIBILITY);
   int checked = 0;
   for (int y = 18; y <= 22; ++y)
     for (int x = 28; x <= 33; ++x) {

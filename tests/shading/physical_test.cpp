@@ -118,3 +118,27 @@ TEST(PhysicalModel, RLobePeaksAtTheTiltedSpecularAngle) {
   }
   EXPECT_NEAR(bestTi + tr, 2.0 * m.alphaR, 0.03);  // d'Eon's lobe is not exactly centred
 }
+
+// The ambient term's albedo (hp::skyAlbedo, the furnace averaged over outgoing directions): 1 for a
+// white physical fibre, between the furnace's extremes for brown; the coarse Marschner quadrature it
+// uses agrees with a fine one.
+TEST(PhysicalModel, SkyAlbedoIsTheFurnaceAveragedOverOutgoingDirections) {
+  const glm::dvec3 w = skyAlbedo(FibreModel::Physical, white());
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(w[c], 1.0, 1e-5);
+  const HairMaterial brown;
+  const glm::dvec3 a = skyAlbedo(FibreModel::Physical, brown);
+  const glm::dvec3 at0 = whiteFurnace(FibreModel::Physical, 0.0, brown), at85 = whiteFurnace(FibreModel::Physical, 0.996, brown);
+  for (int c = 0; c < 3; ++c) {
+    EXPECT_GT(a[c], 0.9 * std::min(at0[c], at85[c]));
+    EXPECT_LT(a[c], std::max(at0[c], at85[c]));
+  }
+  EXPECT_GT(a.r, 2.0 * a.b);  // brown stays red under a white sky
+  std::cout << "sky albedo, physical brown: " << a.r << " " << a.g << " " << a.b << "\n";
+  const glm::dvec3 m = skyAlbedo(FibreModel::Marschner, brown);
+  glm::dvec3 fine(0.0);
+  shading::gaussLegendre(-0.5 * kPi, 0.5 * kPi, 2, [&](double t, double wt) {
+    fine += 0.5 * wt * std::cos(t) * whiteFurnace(FibreModel::Marschner, std::sin(t), brown, 8);
+  });
+  std::cout << "sky albedo, Marschner brown: " << m.r << " " << m.g << " " << m.b << "\n";
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(m[c], fine[c], 0.01 * fine[c]) << "channel " << c;
+}
