@@ -56,11 +56,11 @@ struct Geometry {
 const Geometry& geometry() {
   static const Geometry g = [] {
     Geometry out;
-    auto grid = std::make_shared<SdfGrid>(makeDefaultHeadGrid());
+    NarrowBandGrid field = makeDefaultHeadField();
     out.scalp = makeDefaultScalp();
-    out.mesh = makeDefaultHeadMesh(*grid);
+    out.mesh = makeDefaultHeadMesh(field);
     markScalp(out.mesh, out.scalp.positions);
-    out.grid = std::move(grid);
+    out.grid = std::make_shared<SdfGrid>(std::move(field.grid));
     return out;
   }();
   return g;
@@ -85,8 +85,9 @@ ScalpMesh makeDefaultScalp(std::uint32_t sphereSamples) {
   auto vertex = [&](std::uint32_t i) {
     if (remap[i] < 0) {
       remap[i] = static_cast<std::int64_t>(positions.size());
-      positions.push_back(headSurfaceAlong(glm::vec3(dirs[i])));
-      normals.push_back(glm::normalize(headGradient(positions.back())));
+      glm::vec3 gradient;
+      positions.push_back(headSurfaceAlong(glm::vec3(dirs[i]), &gradient));
+      normals.push_back(glm::normalize(gradient));
     }
     return static_cast<std::uint32_t>(remap[i]);
   };
@@ -99,9 +100,12 @@ ScalpMesh makeDefaultScalp(std::uint32_t sphereSamples) {
   return buildScalpMesh(std::move(positions), std::move(triangles), std::move(normals), "default scalp");
 }
 
-SdfGrid makeDefaultHeadGrid() { return sampleField(headDistance, kHeadFieldLow, kHeadFieldHigh, kDefaultHeadCell); }
+NarrowBandGrid makeDefaultHeadField() {
+  return sampleNarrowBand(headField(), kHeadFieldLow, kHeadFieldHigh, kDefaultHeadCell, kDefaultHeadBand,
+                          kDefaultHeadBrick);
+}
 
-HeadMesh makeDefaultHeadMesh(const SdfGrid& grid) { return meshZeroLevel(grid, headDistance); }
+HeadMesh makeDefaultHeadMesh(const NarrowBandGrid& field) { return meshZeroLevel(field.grid, field.band); }
 
 HairAsset buildDefaultHeadAsset(const GrowthOptions& growth, const DensityOptions& density) {
   growth.validate();

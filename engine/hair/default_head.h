@@ -1,7 +1,7 @@
 #pragma once
 // Contract: the procedural default head that `make demo` renders, in metres, Y up, face toward +Z,
-// origin at the center of the cranium: one signed distance field (head_sdf.h) meshed at load time by
-// marching tetrahedra (render mesh) and kept as a grid (the hair's collider). The scalp is the field's
+// origin at the center of the cranium: one signed distance field (head_sdf.h) sampled on a grid in a
+// narrow band (the hair's collider), meshed at load time by marching tetrahedra (render mesh). The scalp is the field's
 // surface above the hairline (crown, back and sides; not the face or the ears), 1,000-4,000
 // vertices, one guide each. Guides are long, parted on the crown, laid along the head, combed back
 // from the forehead and behind the ears, and slid over the field, so the rest pose already reads
@@ -11,21 +11,27 @@
 
 #include "engine/hair/guide_growth.h"
 #include "engine/hair/hair_asset.h"
+#include "engine/hair/narrow_band.h"
 #include "engine/hair/scalp_mesh.h"
 #include "engine/hair/sdf_grid.h"
 #include "engine/hair/strand_topology.h"
 
 namespace hp {
 inline constexpr float kDefaultHeadCell = 0.004f;  // grid spacing of the head's field (m)
+// Nodes closer than this to the surface hold the field's exact value; farther ones a correctly signed
+// bound (narrow_band.h). Three cells: a pearl's clearance plus the collision gradient's half-cell probes.
+inline constexpr float kDefaultHeadBand = 3.0f * kDefaultHeadCell;
+inline constexpr std::uint32_t kDefaultHeadBrick = 4;  // cells per brick side of the narrow band
 
 // The growth options the default head uses unless a scene overrides them.
 GrowthOptions defaultHeadGrowth();
 
 // The scalp alone (vertex count grows with `sphereSamples`: about half of them are on the scalp).
 ScalpMesh makeDefaultScalp(std::uint32_t sphereSamples = 5000);
-// The head's field on a kDefaultHeadCell grid, and the marching-tetrahedra mesh of it (scalp not marked).
-SdfGrid makeDefaultHeadGrid();
-HeadMesh makeDefaultHeadMesh(const SdfGrid& grid);
+// The head's field on a kDefaultHeadCell grid (exact within kDefaultHeadBand), and the
+// marching-tetrahedra mesh of it (scalp not marked).
+NarrowBandGrid makeDefaultHeadField();
+HeadMesh makeDefaultHeadMesh(const NarrowBandGrid& field);
 
 HairAsset buildDefaultHeadAsset(const GrowthOptions& growth = defaultHeadGrowth(),
                                 const DensityOptions& density = {});

@@ -2,65 +2,83 @@
 
 #include <cmath>
 
-#include "engine/hair/sdf_primitives.h"
-
 namespace hp {
 namespace {
 using glm::vec3;
 
-// Mirror in x so left and right features are one primitive each.
-vec3 mirrored(const vec3& p) { return {std::abs(p.x), p.y, p.z}; }
-
-float skull(const vec3& p) {
-  const vec3 m = mirrored(p);
-  float d = sdf::ellipsoid(p, kCraniumCenter, {0.074f, 0.088f, 0.097f});
-  d = sdf::smoothUnion(d, sdf::capsule(m, {0.0f, 0.021f, 0.080f}, {0.038f, 0.021f, 0.076f}, 0.012f), 0.02f);  // brow
-  d = sdf::smoothUnion(d, sdf::ellipsoid(p, {0.0f, -0.050f, 0.022f}, {0.061f, 0.065f, 0.066f}), 0.03f);        // face
-  d = sdf::smoothUnion(d, sdf::ellipsoid(m, {0.044f, -0.026f, 0.058f}, {0.022f, 0.016f, 0.024f}), 0.02f);      // cheekbone
-  d = sdf::smoothUnion(d, sdf::capsule(m, {0.047f, -0.045f, -0.005f}, {0.020f, -0.108f, 0.052f}, 0.018f), 0.03f);  // jaw
-  d = sdf::smoothUnion(d, sdf::ellipsoid(p, {0.0f, -0.112f, 0.068f}, {0.024f, 0.019f, 0.020f}), 0.015f);       // chin
-  return d;
+// Cranium, brow, face, cheekbones (mirrored: one leaf per left/right pair), jaw, chin.
+void skull(sdf::Program& f) {
+  f.ellipsoid(kCraniumCenter, {0.074f, 0.088f, 0.097f});
+  f.capsule({0.0f, 0.021f, 0.080f}, {0.038f, 0.021f, 0.076f}, 0.012f, true).smoothUnion(0.02f);  // brow
+  f.ellipsoid({0.0f, -0.050f, 0.022f}, {0.061f, 0.065f, 0.066f}).smoothUnion(0.03f);              // face
+  f.ellipsoid({0.044f, -0.026f, 0.058f}, {0.022f, 0.016f, 0.024f}, true).smoothUnion(0.02f);      // cheekbone
+  f.capsule({0.047f, -0.045f, -0.005f}, {0.020f, -0.108f, 0.052f}, 0.018f, true).smoothUnion(0.03f);  // jaw
+  f.ellipsoid({0.0f, -0.112f, 0.068f}, {0.024f, 0.019f, 0.020f}).smoothUnion(0.015f);             // chin
 }
 
-float features(const vec3& p, float d) {
-  const vec3 m = mirrored(p);
-  d = sdf::smoothSubtract(d, sdf::sphere(m, {0.031f, -0.001f, 0.091f}, 0.018f), 0.008f);                    // eye socket
-  d = sdf::smoothUnion(d, sdf::sphere(m, {0.031f, 0.000f, 0.066f}, 0.0125f), 0.003f);                       // eye
-  d = sdf::smoothUnion(d, sdf::taperedCapsule(p, {0.0f, 0.004f, 0.088f}, {0.0f, -0.038f, 0.113f}, 0.007f, 0.010f), 0.008f);  // nose
-  d = sdf::smoothUnion(d, sdf::ellipsoid(p, {0.0f, -0.043f, 0.102f}, {0.019f, 0.010f, 0.011f}), 0.014f);   // nostrils
-  d = sdf::smoothUnion(d, sdf::ellipsoid(p, {0.0f, -0.070f, 0.087f}, {0.024f, 0.008f, 0.010f}), 0.006f);   // upper lip
-  d = sdf::smoothUnion(d, sdf::ellipsoid(p, {0.0f, -0.084f, 0.083f}, {0.021f, 0.008f, 0.010f}), 0.006f);   // lower lip
-  const float ear = sdf::ellipsoid(m, {0.074f, -0.018f, -0.012f}, {0.011f, 0.031f, 0.019f});
-  return sdf::smoothUnion(d, ear, 0.006f);
+void features(sdf::Program& f) {
+  f.sphere({0.031f, -0.001f, 0.091f}, 0.018f, true).smoothSubtract(0.008f);                       // eye socket
+  f.sphere({0.031f, 0.000f, 0.066f}, 0.0125f, true).smoothUnion(0.003f);                          // eye
+  f.taperedCapsule({0.0f, 0.004f, 0.088f}, {0.0f, -0.038f, 0.113f}, 0.007f, 0.010f).smoothUnion(0.008f);  // nose
+  f.ellipsoid({0.0f, -0.043f, 0.102f}, {0.019f, 0.010f, 0.011f}).smoothUnion(0.014f);             // nostrils
+  f.ellipsoid({0.0f, -0.070f, 0.087f}, {0.024f, 0.008f, 0.010f}).smoothUnion(0.006f);             // upper lip
+  f.ellipsoid({0.0f, -0.084f, 0.083f}, {0.021f, 0.008f, 0.010f}).smoothUnion(0.006f);             // lower lip
+  f.ellipsoid({0.074f, -0.018f, -0.012f}, {0.011f, 0.031f, 0.019f}, true).smoothUnion(0.006f);    // ear
 }
 
-float body(const vec3& p) {
-  const vec3 m = mirrored(p);
-  float neck = sdf::taperedCapsule(p, {0.0f, -0.06f, -0.022f}, {0.0f, -0.25f, -0.020f}, 0.050f, 0.057f);
-  float shoulders = sdf::capsule(m, {0.0f, -0.275f, -0.02f}, {0.165f, -0.268f, -0.02f}, 0.052f);
-  float chest = sdf::ellipsoid(p, {0.0f, -0.36f, -0.015f}, {0.185f, 0.11f, 0.105f});
-  float d = sdf::smoothUnion(neck, sdf::smoothUnion(shoulders, chest, 0.06f), 0.07f);
-  return std::max(d, kHeadFieldLow.y + 0.03f - p.y);  // cut flat below the chest
+// Neck, shoulders and chest, cut flat below the chest.
+void body(sdf::Program& f) {
+  f.taperedCapsule({0.0f, -0.06f, -0.022f}, {0.0f, -0.25f, -0.020f}, 0.050f, 0.057f);             // neck
+  f.capsule({0.0f, -0.275f, -0.02f}, {0.165f, -0.268f, -0.02f}, 0.052f, true);                   // shoulders
+  f.ellipsoid({0.0f, -0.36f, -0.015f}, {0.185f, 0.11f, 0.105f}).smoothUnion(0.06f);              // chest
+  f.smoothUnion(0.07f).belowPlaneY(kHeadFieldLow.y + 0.03f).max();
+}
+
+sdf::Program buildHead() {
+  sdf::Program f;
+  skull(f);
+  features(f);
+  body(f);
+  return f.smoothUnion(0.025f);
 }
 }  // namespace
 
-float headDistance(const glm::vec3& p) { return sdf::smoothUnion(features(p, skull(p)), body(p), 0.025f); }
-
-glm::vec3 headGradient(const glm::vec3& p) {
-  const float h = 2e-4f;
-  return glm::vec3(headDistance(p + vec3(h, 0, 0)) - headDistance(p - vec3(h, 0, 0)),
-                   headDistance(p + vec3(0, h, 0)) - headDistance(p - vec3(0, h, 0)),
-                   headDistance(p + vec3(0, 0, h)) - headDistance(p - vec3(0, 0, h))) /
-         (2.0f * h);
+const sdf::Program& headField() {
+  static const sdf::Program f = buildHead();
+  return f;
 }
 
-glm::vec3 headSurfaceAlong(const glm::vec3& dir) {
+float headDistance(const glm::vec3& p) { return headField()(p); }
+
+namespace {
+template <typename F>
+glm::vec3 centralDifference(const F& f, const glm::vec3& p) {
+  const float h = 2e-4f;
+  return glm::vec3(f(p + vec3(h, 0, 0)) - f(p - vec3(h, 0, 0)), f(p + vec3(0, h, 0)) - f(p - vec3(0, h, 0)),
+                   f(p + vec3(0, 0, h)) - f(p - vec3(0, 0, h))) /
+         (2.0f * h);
+}
+}  // namespace
+
+glm::vec3 headGradient(const glm::vec3& p) { return centralDifference(headDistance, p); }
+
+glm::vec3 headSurfaceAlong(const glm::vec3& dir, glm::vec3* gradient) {
   float inside = 0.0f, outside = 0.3f;  // the center is inside, 0.3 m out is past every feature
-  for (int i = 0; i < 40; ++i) {
+  // Once the bracket is short, the field specialised to a box around it gives the same values, faster.
+  constexpr int kWhole = 6, kSteps = 40;
+  for (int i = 0; i < kWhole; ++i) {
     const float mid = 0.5f * (inside + outside);
     (headDistance(kCraniumCenter + mid * dir) < 0.0f ? inside : outside) = mid;
   }
-  return kCraniumCenter + outside * dir;
+  const glm::vec3 a = kCraniumCenter + inside * dir, b = kCraniumCenter + outside * dir, pad(1e-3f);
+  const sdf::Program near = headField().specialise(glm::min(a, b) - pad, glm::max(a, b) + pad);
+  for (int i = kWhole; i < kSteps; ++i) {
+    const float mid = 0.5f * (inside + outside);
+    (near(kCraniumCenter + mid * dir) < 0.0f ? inside : outside) = mid;
+  }
+  const glm::vec3 surface = kCraniumCenter + outside * dir;
+  if (gradient) *gradient = centralDifference(near, surface);  // == headGradient(surface): probes within the pad
+  return surface;
 }
 
 bool aboveHairline(const glm::vec3& dir) {

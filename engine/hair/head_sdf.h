@@ -1,12 +1,16 @@
 #pragma once
 // Contract: the default head as one signed distance field, in metres, Y up, face toward +Z, origin
 // at the center of the cranium. Cranium, brow, eye sockets with eyes, nose, cheekbones, jaw, chin,
-// lips, ears, neck, shoulders and upper chest are primitives (sdf_primitives.h) blended with a
+// lips, ears, neck, shoulders and upper chest are primitives (sdf_program.h) blended with a
 // smooth minimum; the chest is cut flat at kHeadFieldLow.y so the surface is closed. The scalp, the
 // hairline and the face region are read from the same field. Pure and deterministic.
 #include <glm/glm.hpp>
 
+#include "engine/hair/sdf_program.h"
+
 namespace hp {
+// The field as a program (its leaves in the order above); headDistance(p) == headField()(p).
+const sdf::Program& headField();
 float headDistance(const glm::vec3& p);
 glm::vec3 headGradient(const glm::vec3& p);  // central differences of headDistance (not normalized)
 
@@ -16,8 +20,9 @@ inline constexpr glm::vec3 kHeadFieldHigh{0.27f, 0.115f, 0.16f};
 // The cranium's center: rays from here meet the scalp.
 inline constexpr glm::vec3 kCraniumCenter{0.0f, 0.005f, -0.012f};
 
-// The surface point on the ray from kCraniumCenter along unit `dir` (bisection on the field).
-glm::vec3 headSurfaceAlong(const glm::vec3& dir);
+// The surface point on the ray from kCraniumCenter along unit `dir` (bisection on the field), and
+// headGradient there when `gradient` is given.
+glm::vec3 headSurfaceAlong(const glm::vec3& dir, glm::vec3* gradient = nullptr);
 
 // Hair grows where the direction from the cranium center is above the hairline: high at the
 // forehead, above the ears at the sides, low at the nape.

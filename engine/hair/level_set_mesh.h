@@ -4,12 +4,37 @@
 // neighbouring cells split their shared face the same way), and every tetrahedron the surface crosses
 // gives one or two triangles with vertices on its edges. Vertices are shared between tetrahedra (one
 // per crossed grid edge), so the mesh is closed and manifold with no ambiguous cases; each vertex is
-// the zero of `field` on its edge (regula falsi; the grid's nodes must be samples of `field`).
+// the zero of the exact field on its edge (regula falsi; the grid's nodes must be samples of it).
 // Triangles are counter-clockwise seen from outside (the positive side); normals are the field's
-// normalized gradient. A surface that reaches the grid's boundary throws hp::Error. Deterministic.
+// normalized gradient. A surface that reaches the grid's boundary throws hp::Error.
+// Only the cells of "near" bricks are visited (LevelSetBand): bricks of cubes of cells in which the
+// grid's sign is known to be constant are skipped. Bricks are meshed on parallelFor's threads and
+// joined in brick order, so the mesh is the same for any thread count. Deterministic.
+#include <cstdint>
+#include <functional>
+#include <span>
+#include <vector>
+
 #include "engine/hair/hair_asset.h"
 #include "engine/hair/sdf_grid.h"
 
 namespace hp {
+// The grid's cells in bricks of brickCells^3 (the last ones per axis may be partial), x fastest.
+struct LevelSetBand {
+  std::uint32_t brickCells = 4;
+  glm::uvec3 bricks{0};
+  std::vector<std::int32_t> nearSlot;  // per brick: -1 where the sign is constant in the brick, else its slot
+  // The exact field near slot's brick (its box grown by a tenth of a cell on every side): at one
+  // point, and at many (out[i] = exact(slot, points[i])).
+  std::function<float(std::int32_t slot, const glm::vec3& p)> exact;
+  std::function<void(std::int32_t slot, std::span<const glm::vec3> points, std::span<float> out)> exactMany;
+
+  std::size_t brickIndex(const glm::uvec3& b) const { return (std::size_t(b.z) * bricks.y + b.y) * bricks.x + b.x; }
+};
+
+// Every brick near, the exact field = `field` everywhere.
+LevelSetBand wholeGridBand(const SdfGrid& grid, const DistanceFunction& field);
+
+HeadMesh meshZeroLevel(const SdfGrid& grid, const LevelSetBand& band);
 HeadMesh meshZeroLevel(const SdfGrid& grid, const DistanceFunction& field);
 }  // namespace hp

@@ -27,8 +27,7 @@ glm::vec3 SdfGrid::gradient(const glm::vec3& p) const {
          (2.0f * h);
 }
 
-SdfGrid sampleField(const DistanceFunction& f, const glm::vec3& lo, const glm::vec3& hi, float cell,
-                    std::size_t maxNodes) {
+SdfGrid gridCovering(const glm::vec3& lo, const glm::vec3& hi, float cell, std::size_t maxNodes) {
   if (!(cell > 0.0f) || !std::isfinite(cell)) throw Error("distance grid: the cell size must be positive");
   const glm::vec3 extent = hi - lo;
   if (!(extent.x > 0.0f && extent.y > 0.0f && extent.z > 0.0f) || !std::isfinite(glm::length(extent)))
@@ -42,6 +41,12 @@ SdfGrid sampleField(const DistanceFunction& f, const glm::vec3& lo, const glm::v
   g.dims = glm::uvec3(cells) + 1u;
   g.origin = 0.5f * (lo + hi) - 0.5f * cell * glm::vec3(g.dims - 1u);
   g.values.resize(std::size_t(g.dims.x) * g.dims.y * g.dims.z);
+  return g;
+}
+
+SdfGrid sampleField(const DistanceFunction& f, const glm::vec3& lo, const glm::vec3& hi, float cell,
+                    std::size_t maxNodes) {
+  SdfGrid g = gridCovering(lo, hi, cell, maxNodes);
   for (std::uint32_t k = 0; k < g.dims.z; ++k)
     for (std::uint32_t j = 0; j < g.dims.y; ++j)
       for (std::uint32_t i = 0; i < g.dims.x; ++i) g.values[g.index(i, j, k)] = f(g.node(i, j, k));

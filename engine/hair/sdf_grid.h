@@ -32,8 +32,11 @@ struct SdfGrid {
 
 using DistanceFunction = std::function<float(const glm::vec3&)>;
 
-// Grid of `cell` spacing covering [lo, hi] (rounded outward to whole cells), each node = f(node).
+// A grid of `cell` spacing covering [lo, hi] (rounded outward to whole cells, centered), values 0.
 // Throws hp::Error when the box is empty or would need more than `maxNodes` nodes.
+SdfGrid gridCovering(const glm::vec3& lo, const glm::vec3& hi, float cell, std::size_t maxNodes = std::size_t(1) << 24);
+
+// gridCovering(lo, hi, cell, maxNodes) with each node = f(node).
 SdfGrid sampleField(const DistanceFunction& f, const glm::vec3& lo, const glm::vec3& hi, float cell,
                     std::size_t maxNodes = std::size_t(1) << 24);
 }  // namespace hp

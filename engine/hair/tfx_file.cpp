@@ -6,6 +6,7 @@
 #include <cstring>
 #include <fstream>
 #include <iterator>
+#include <string>
 
 #include "engine/error.h"
 
@@ -45,6 +46,39 @@ std::vector<T> loadArray(std::span<const std::byte> bytes, std::size_t field, co
   return out;
 }
 
+bool finite(const glm::vec2& v) { return std::isfinite(v.x) && std::isfinite(v.y); }
+bool finite(const glm::vec4& v) { return finite(glm::vec2(v)) && finite(glm::vec2(v.z, v.w)); }
+
+// "vertex V of strand S" for per-vertex arrays, "strand S" for per-strand ones.
+std::string element(std::size_t i, std::uint32_t perStrand) {
+  return perStrand == 1 ? "strand " + std::to_string(i)
+                        : "vertex " + std::to_string(i % perStrand) + " of strand " + std::to_string(i / perStrand);
+}
+
+template <typename T>
+void checkFinite(const std::vector<T>& values, const char* name, std::uint32_t perStrand, const std::string& source) {
+  for (std::size_t i = 0; i < values.size(); ++i)
+    if (!finite(values[i])) throw Error(source + ": " + name + ": " + element(i, perStrand) + " is not finite");
+}
+
+// Every value finite; inverse masses and thicknesses not negative.
+void checkValues(const TfxData& d, const std::string& source) {
+  const std::uint32_t vps = d.verticesPerStrand;
+  for (std::size_t i = 0; i < d.positions.size(); ++i) {
+    const glm::vec4& p = d.positions[i];
+    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+      throw Error(source + ": positions: " + element(i, vps) + " is not finite");
+    if (!(p.w >= 0.0f) || !std::isfinite(p.w))
+      throw Error(source + ": positions: the inverse mass (w) of " + element(i, vps) + " is negative or not finite");
+  }
+  checkFinite(d.strandUVs, "strand UVs", 1, source);
+  checkFinite(d.vertexUVs, "vertex UVs", vps, source);
+  checkFinite(d.vertexColors, "vertex colours", vps, source);
+  for (std::size_t i = 0; i < d.strandThickness.size(); ++i)
+    if (!(d.strandThickness[i] >= 0.0f) || !std::isfinite(d.strandThickness[i]))
+      throw Error(source + ": strand thickness: " + element(i, 1) + " is negative or not finite");
+}
+
 template <typename T>
 void appendArray(std::vector<std::byte>& out, std::size_t field, const std::vector<T>& values) {
   if (values.empty()) return;
@@ -72,12 +106,7 @@ TfxData decodeTfx(std::span<const std::byte> bytes, const std::string& source) {
   d.vertexUVs = loadArray<glm::vec2>(bytes, kOffVertexUV, "offsetVertexUV", vertices, false, source);
   d.strandThickness = loadArray<float>(bytes, kOffThickness, "offsetStrandThickness", d.strandCount, false, source);
   d.vertexColors = loadArray<glm::vec4>(bytes, kOffColors, "offsetVertexColor", vertices, false, source);
-  for (std::size_t i = 0; i < d.positions.size(); ++i) {
-    const glm::vec3 p(d.positions[i]);
-    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
-      throw Error(source + ": positions: vertex " + std::to_string(i % d.verticesPerStrand) + " of strand " +
-                  std::to_string(i / d.verticesPerStrand) + " is not finite");
-  }
+  checkValues(d, source);
   return d;
 }
 

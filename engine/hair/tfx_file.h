@@ -4,7 +4,8 @@
 // UVs, strand thickness, vertex colours; 0 = absent), then the arrays where the offsets say.
 // decodeTfx validates everything before allocating: header size, strand count > 0, vertices per
 // strand in [2, 64], every present array inside the file and not overlapping the header (sizes in
-// 64 bits, so hostile counts cannot overflow), finite positions. Each refusal is an hp::Error that
+// 64 bits, so hostile counts cannot overflow), every value finite, inverse masses (w) and strand
+// thicknesses not negative. Each refusal is an hp::Error that
 // names the source and the field. tfxToHair turns the strands into .hair data (same points, the
 // file's strand order), so the .hair import (resampling, root triangulation) applies unchanged.
 #include <cstddef>

@@ -7,8 +7,8 @@
 
 #include "engine/error.h"
 #include "engine/hair/hair_file.h"
-#include "engine/hair/hair_import.h"
 #include "tests/fuzz/fuzz_check.h"
+#include "tests/fuzz/fuzz_import.h"
 
 namespace {
 void checkAccepted(const hp::HairFileData& d, std::span<const std::byte> bytes) {
@@ -17,16 +17,6 @@ void checkAccepted(const hp::HairFileData& d, std::span<const std::byte> bytes) 
   for (const auto& p : d.points) HP_FUZZ_REQUIRE(hp::fuzz::finite(p));
   const std::vector<std::byte> again = hp::encodeHair(d);
   HP_FUZZ_REQUIRE(again.size() == bytes.size() && std::equal(again.begin(), again.end(), bytes.begin()));
-}
-
-void checkImport(const hp::HairFileData& d) {
-  hp::HairImportOptions options;
-  options.density.totalStrands = 64;  // bounded work per input
-  options.density.mode = hp::DensityOptions::Mode::Total;
-  const hp::HairAsset asset = hp::importHairAsset(d, options, "fuzz.hair");
-  for (const auto& p : asset.guides.positions) HP_FUZZ_REQUIRE(hp::fuzz::finite(glm::vec3(p)));
-  const std::size_t roots = asset.guides.guideCount();
-  for (const auto& t : asset.topology.triangles) HP_FUZZ_REQUIRE(t.x < roots && t.y < roots && t.z < roots);
 }
 }  // namespace
 
@@ -40,9 +30,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   }
   checkAccepted(d, bytes);
   if (d.pointCount() > 4096) return 0;  // import cost grows with the points; keep each run short
-  try {
-    checkImport(d);
-  } catch (const hp::Error&) {
-  }
+  hp::fuzz::checkImport(d, "fuzz.hair");
   return 0;
 }

@@ -14,12 +14,13 @@
 
 namespace hp {
 namespace {
-const SdfGrid& grid() {
-  static const SdfGrid g = makeDefaultHeadGrid();
-  return g;
+const NarrowBandGrid& field() {
+  static const NarrowBandGrid f = makeDefaultHeadField();
+  return f;
 }
+const SdfGrid& grid() { return field().grid; }
 const HeadMesh& mesh() {
-  static const HeadMesh m = makeDefaultHeadMesh(grid());
+  static const HeadMesh m = makeDefaultHeadMesh(field());
   return m;
 }
 
@@ -90,9 +91,31 @@ TEST(HeadSdf, VerticesLieOnTheZeroLevelSet) {
   EXPECT_LT(worst, 0.5f * kDefaultHeadCell);
 }
 
+TEST(HeadSdf, GridIsTheFieldInTheBandAndCorrectlySignedBeyond) {
+  // Every node within the band holds the field's value itself; every other node has the field's sign
+  // and a magnitude above the band (a far node holds a blend of exact values, a near one the field).
+  std::size_t wrongInBand = 0, wrongBeyond = 0, inBand = 0, farNodes = 0;
+  for (std::uint32_t k = 0; k < grid().dims.z; ++k)
+    for (std::uint32_t j = 0; j < grid().dims.y; ++j)
+      for (std::uint32_t i = 0; i < grid().dims.x; ++i) {
+        const float f = headDistance(grid().node(i, j, k)), v = grid().at(i, j, k);
+        if (std::abs(f) <= kDefaultHeadBand) {
+          ++inBand;
+          wrongInBand += v != f;
+        } else {
+          farNodes += v != f;
+          wrongBeyond += (v < 0.0f) != (f < 0.0f) || std::abs(v) <= kDefaultHeadBand;
+        }
+      }
+  EXPECT_EQ(wrongInBand, 0u) << "of " << inBand;
+  EXPECT_EQ(wrongBeyond, 0u);
+  EXPECT_GT(inBand, 50000u);
+  EXPECT_GT(farNodes, grid().values.size() / 2);  // the far field is not evaluated node by node
+  EXPECT_LT(field().exactNodes, grid().values.size() / 3);
+}
+
 TEST(HeadSdf, GridSamplesTheFieldTrilinearly) {
-  // At nodes the grid is the field; between them it is close (the field is smooth at this scale).
-  EXPECT_FLOAT_EQ(grid().sample(grid().node(20, 30, 40)), headDistance(grid().node(20, 30, 40)));
+  // Between the nodes the grid is close to the field (the field is smooth at this scale).
   float worst = 0.0f;
   for (const auto& p : mesh().positions) worst = std::max(worst, std::abs(grid().sample(p)));
   EXPECT_LT(worst, 0.3f * kDefaultHeadCell);
@@ -133,8 +156,11 @@ TEST(HeadSdf, EarsStandOutAtTheSides) {
 }
 
 TEST(HeadSdf, BuildIsDeterministic) {
-  const HeadMesh again = makeDefaultHeadMesh(makeDefaultHeadGrid());
+  const NarrowBandGrid f = makeDefaultHeadField();
+  EXPECT_EQ(f.grid.values, grid().values);
+  const HeadMesh again = makeDefaultHeadMesh(f);
   EXPECT_EQ(again.positions, mesh().positions);
+  EXPECT_EQ(again.normals, mesh().normals);
   EXPECT_EQ(again.indices, mesh().indices);
 }
 

@@ -2,14 +2,17 @@
 // as the equivalent .hair data; every corruption is refused with a message naming the field.
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 
 #include "engine/error.h"
 #include "engine/hair/hair_import.h"
 #include "engine/hair/scene.h"
 #include "engine/hair/tfx_file.h"
+#include "tests/hair/tfx_cases.h"
 
 namespace hp {
 namespace {
@@ -28,8 +31,6 @@ TfxData syntheticTfx() {
   }
   return d;
 }
-
-void putU32(std::vector<std::byte>& b, std::size_t at, std::uint32_t v) { std::memcpy(b.data() + at, &v, 4); }
 
 void expectRefused(const std::vector<std::byte>& bytes, const std::string& needle) {
   try {
@@ -80,48 +81,35 @@ TEST(TfxFile, ImportGivesTheGuidesOfTheSameStrandsAsHair) {
 }
 
 TEST(TfxFile, CorruptTruncatedAndHostileFilesAreRefusedNamingTheField) {
-  const auto good = encodeTfx(syntheticTfx());
-  expectRefused(std::vector<std::byte>(good.begin(), good.begin() + 100), "short header");
-  auto b = good;
-  putU32(b, 4, 0);
-  expectRefused(b, "numHairStrands is 0");
-  for (std::uint32_t vps : {0u, 1u, 65u, 0xffffffffu}) {
-    b = good;
-    putU32(b, 8, vps);
-    expectRefused(b, "numVerticesPerStrand");
+  for (const test::TfxCase& c : test::tfxCases()) {
+    SCOPED_TRACE(c.name);
+    if (c.refusal.empty()) {
+      const TfxData d = decodeTfx(c.bytes, "good.tfx");
+      EXPECT_EQ(encodeTfx(d), c.bytes);
+    } else {
+      expectRefused(c.bytes, c.refusal);
+    }
   }
-  b = good;
-  putU32(b, 4, 0xffffffffu);  // 4G strands x 16 vertices: far past the file, no overflow, no allocation
-  expectRefused(b, "offsetVertexPosition");
-  b = good;
-  putU32(b, 12, 0);
-  expectRefused(b, "offsetVertexPosition is 0");
-  b = good;
-  putU32(b, 12, 0xfffffff0u);
-  expectRefused(b, "offsetVertexPosition 4294967280");
-  b = good;
-  putU32(b, 12, 8);
-  expectRefused(b, "points into the 160-byte header");
-  b = good;
-  putU32(b, 16, std::uint32_t(good.size()) - 4);
-  expectRefused(b, "offsetStrandUV");
-  b = good;
-  putU32(b, 20, std::uint32_t(good.size()) - 100);  // 300 x 16 vertex UVs do not fit in 100 bytes
-  expectRefused(b, "offsetVertexUV");
-  b = good;
-  putU32(b, 24, 0xffffffffu);
-  expectRefused(b, "offsetStrandThickness");
-  b = good;
-  putU32(b, 28, std::uint32_t(good.size()) - 100);
-  expectRefused(b, "offsetVertexColor");
-  expectRefused(std::vector<std::byte>(good.begin(), good.end() - 1), "past the end of the file");
-  b = good;
-  const float nan = std::nanf("");
-  std::memcpy(b.data() + 160 + 16 * 37 + 4, &nan, 4);  // strand 2, vertex 5, y
-  expectRefused(b, "positions: vertex 5 of strand 2 is not finite");
-  b = good;
-  const float inf = INFINITY;
-  std::memcpy(b.data(), &inf, 4);
-  expectRefused(b, "version");
+}
+
+// The .tfx fuzzer starts from these files; HAIRPIPE_UPDATE_CORPUS=1 rewrites them after a change of the cases.
+TEST(TfxFile, SeedCorpusIsTheTestsFiles) {
+  const auto dir = std::filesystem::path(HAIRPIPE_TEST_DATA_DIR).parent_path() / "fuzz" / "corpus" / "fuzz_tfx";
+  const bool update = std::getenv("HAIRPIPE_UPDATE_CORPUS") != nullptr;
+  std::size_t files = 0;
+  for (const test::TfxCase& c : test::tfxCases()) {
+    const auto path = dir / (c.name + ".tfx");
+    if (update) {
+      std::filesystem::create_directories(dir);
+      std::ofstream(path, std::ios::binary).write(reinterpret_cast<const char*>(c.bytes.data()), std::streamsize(c.bytes.size()));
+    }
+    std::ifstream in(path, std::ios::binary);
+    const std::vector<char> raw((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    EXPECT_TRUE(raw.size() == c.bytes.size() && std::memcmp(raw.data(), c.bytes.data(), raw.size()) == 0)
+        << path << " differs from the test's case (HAIRPIPE_UPDATE_CORPUS=1 rewrites the corpus)";
+    ++files;
+  }
+  for (const auto& entry : std::filesystem::directory_iterator(dir)) files -= entry.path().extension() == ".tfx";
+  EXPECT_EQ(files, 0u) << "the corpus holds .tfx files that are no test case";
 }
 }  // namespace hp
