@@ -18,8 +18,8 @@ constexpr VkDescriptorType kSampled = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
 // The raster's own bindings follow the shading bindings of shaders/shared/render.h in one set.
 static_assert(gpu::RASTER_BINDING_SCREEN > gpu::RENDER_BINDING_HEAD_SHADOW, "raster bindings overlap render.h's");
 const vk::Binding kBindings[] = {
-    {gpu::RENDER_BINDING_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kCompute},
-    {gpu::RENDER_BINDING_MARSCHNER, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kCompute},
+    {gpu::RENDER_BINDING_FRAME, kStorage, kCompute},  // read-only storage blocks: see raster_shade.comp
+    {gpu::RENDER_BINDING_MARSCHNER, kStorage, kCompute},
     {gpu::RENDER_BINDING_LUT_M, kSampled, kCompute},
     {gpu::RENDER_BINDING_LUT_N0, kSampled, kCompute},
     {gpu::RENDER_BINDING_LUT_N1, kSampled, kCompute},

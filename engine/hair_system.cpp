@@ -44,7 +44,7 @@ HairSystem::HairSystem(const vk::Context& ctx, const HairAsset& asset, const Hai
       instance_(renderer_.createInstance(asset, instanceSettings(settings), initialHead)),
       settings_(settings),
       raster_(resolveRasterMode(settings.raster, ctx.properties().deviceType)),
-      rasterFrame_(ctx, sizeof(gpu::RenderFrame), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+      rasterFrame_(ctx, sizeof(gpu::RenderFrame), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                    vk::MemoryKind::DeviceLocal, "raster frame") {
   settings.rasterSettings.validate();
 }
@@ -88,9 +88,10 @@ void HairSystem::setStrands(const InterpolationTopology& topology) {
 
 compute::ShadingWriter HairSystem::shadingWriter() const {
   return [this](const vk::DescriptorSet& set) {
-    set.writeUniformBuffer(gpu::RENDER_BINDING_FRAME, rasterFrame_.handle());
+    set.writeStorageBuffer(gpu::RENDER_BINDING_FRAME, rasterFrame_.handle());
     instance_->marschner().writeDescriptors(set, gpu::RENDER_BINDING_MARSCHNER, gpu::RENDER_BINDING_LUT_M,
-                                            gpu::RENDER_BINDING_LUT_N0, gpu::RENDER_BINDING_LUT_N1);
+                                            gpu::RENDER_BINDING_LUT_N0, gpu::RENDER_BINDING_LUT_N1,
+                                            VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);
     const render::ShadowInputs shadows = renderer_.shadows().inputs();
     set.writeSampledImage(gpu::RENDER_BINDING_OPACITY, shadows.opacityView, shadows.sampler);
     set.writeStorageBuffer(gpu::RENDER_BINDING_LIGHT, shadows.lightSpace);

@@ -11,8 +11,11 @@
 #include "opacity_lookup.glsl"
 
 layout(local_size_x = RASTER_WORKGROUP_SIZE) in;
-layout(std140, binding = RENDER_BINDING_FRAME) uniform Frame { RenderFrame frame; };
-layout(std140, binding = RENDER_BINDING_MARSCHNER) uniform Marschner { MarschnerParams marschner; };
+// Read-only storage blocks, not uniform blocks (same std140 layout): Mesa 22.3's lavapipe inlines uniform
+// values that steer branches (the light's type, the LUT mode) into the shader again on every bind, an LLVM
+// compile and ~1.4 MB that stays per frame (docs/DESIGN.md, driver notes).
+layout(std140, binding = RENDER_BINDING_FRAME) readonly buffer Frame { RenderFrame frame; };
+layout(std140, binding = RENDER_BINDING_MARSCHNER) readonly buffer Marschner { MarschnerParams marschner; };
 layout(binding = RENDER_BINDING_LUT_M) uniform sampler2D lutM;
 layout(binding = RENDER_BINDING_LUT_N0) uniform sampler2D lutN0;
 layout(binding = RENDER_BINDING_LUT_N1) uniform sampler2D lutN1;

@@ -47,7 +47,7 @@ RasterRig::RasterRig(const vk::Context& c, const compute::StrandBuffers& strands
       frame(render::makeRenderFrame(camera, e, light, HairMaterial{}, look, strands.layout().verticesPerStrand,
                                     shadowsOff())),
       marschner(c, HairMaterial{}, LutMode::Float),
-      frameBlock(c, sizeof(gpu::RenderFrame), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+      frameBlock(c, sizeof(gpu::RenderFrame), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                  vk::MemoryKind::DeviceLocal, "rig frame"),
       shadows(c, shadowsOff()),
       depth(c, {e.width, e.height, 1, VK_FORMAT_D32_SFLOAT,
@@ -55,9 +55,9 @@ RasterRig::RasterRig(const vk::Context& c, const compute::StrandBuffers& strands
                 VK_SAMPLE_COUNT_1_BIT, "rig head depth"}) {
   vk::uploadBytes(c, frameBlock, &frame, sizeof(frame), vk::BufferUse::ComputeRead);
   const compute::ShadingWriter shading = [this](const vk::DescriptorSet& set) {
-    set.writeUniformBuffer(gpu::RENDER_BINDING_FRAME, frameBlock.handle());
+    set.writeStorageBuffer(gpu::RENDER_BINDING_FRAME, frameBlock.handle());
     marschner.writeDescriptors(set, gpu::RENDER_BINDING_MARSCHNER, gpu::RENDER_BINDING_LUT_M,
-                               gpu::RENDER_BINDING_LUT_N0, gpu::RENDER_BINDING_LUT_N1);
+                               gpu::RENDER_BINDING_LUT_N0, gpu::RENDER_BINDING_LUT_N1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);
     const render::ShadowInputs inputs = shadows.inputs();
     set.writeSampledImage(gpu::RENDER_BINDING_OPACITY, inputs.opacityView, inputs.sampler);
     set.writeStorageBuffer(gpu::RENDER_BINDING_LIGHT, inputs.lightSpace);
