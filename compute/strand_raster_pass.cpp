@@ -17,8 +17,11 @@ constexpr VkDescriptorType kStorage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
 constexpr VkDescriptorType kSampled = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
 // The raster's own bindings follow the shading bindings of shaders/shared/render.h in one set.
 static_assert(gpu::RASTER_BINDING_SCREEN > gpu::RENDER_BINDING_HEAD_SHADOW, "raster bindings overlap render.h's");
+// No uniform buffers and no push constants: lavapipe would recompile each step per dispatch
+// (docs/DESIGN.md, driver notes); the frame block, the Marschner block and the per-chunk parameters are
+// read-only storage buffers.
 const vk::Binding kBindings[] = {
-    {gpu::RENDER_BINDING_FRAME, kStorage, kCompute},  // read-only storage blocks: see raster_shade.comp
+    {gpu::RENDER_BINDING_FRAME, kStorage, kCompute},
     {gpu::RENDER_BINDING_MARSCHNER, kStorage, kCompute},
     {gpu::RENDER_BINDING_LUT_M, kSampled, kCompute},
     {gpu::RENDER_BINDING_LUT_N0, kSampled, kCompute},
@@ -39,6 +42,8 @@ const vk::Binding kBindings[] = {
     {gpu::RASTER_BINDING_LIST, kStorage, kCompute},
     {gpu::RASTER_BINDING_DEPTH, kSampled, kCompute},
     {gpu::RASTER_BINDING_OUTPUT, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, kCompute},
+    {gpu::RASTER_BINDING_PARAMS, kStorage, kCompute},
+    {gpu::RASTER_BINDING_TILE_DEPTH, kStorage, kCompute},
 };
 constexpr VkBufferUsageFlags kStorageUsage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
 constexpr VkBufferUsageFlags kArmedUsage =
@@ -61,9 +66,9 @@ vk::Buffer deviceBuffer(const vk::Context& ctx, VkDeviceSize bytes, VkBufferUsag
   return vk::Buffer(ctx, std::max<VkDeviceSize>(bytes, 16), usage, vk::MemoryKind::DeviceLocal, "raster " + name);
 }
 
-gpu::RasterPush basePush(std::uint32_t tilesX, std::uint32_t tilesY, std::uint32_t budget, std::uint32_t capacity,
-                         VkExtent2D extent, std::uint32_t q) {
-  gpu::RasterPush p{};
+gpu::RasterParams baseParams(std::uint32_t tilesX, std::uint32_t tilesY, std::uint32_t budget,
+                             std::uint32_t capacity, VkExtent2D extent, std::uint32_t q) {
+  gpu::RasterParams p{};
   p.tilesX = tilesX;
   p.tilesY = tilesY;
   p.tileBudget = budget;
@@ -104,6 +109,7 @@ StrandRasterPass::StrandRasterPass(const vk::Context& ctx, const StrandBuffers& 
   counts_ = deviceBuffer(ctx, tiles * gpu::RASTER_DEPTH_BINS * 4, kArmedUsage, "key counts", limit);
   keys_ = deviceBuffer(ctx, tiles * gpu::RASTER_DEPTH_BINS * 8, kStorageUsage, "keys", limit);
   tiles_ = deviceBuffer(ctx, tiles * 8, kStorageUsage, "tiles", limit);
+  tileDepth_ = deviceBuffer(ctx, tiles * 4, kStorageUsage, "tile head depth", limit);
   blocks_ = deviceBuffer(ctx, divUp(std::uint32_t(tiles), gpu::RASTER_SCAN_SIZE) * 4, kStorageUsage, "blocks", limit);
   list_ = deviceBuffer(ctx, VkDeviceSize(capacity_) * 4, kStorageUsage, "tile lists", limit);
   output_ = vk::Image(ctx, {extent.width, extent.height, 1, VK_FORMAT_R16G16B16A16_SFLOAT,
@@ -115,10 +121,14 @@ StrandRasterPass::StrandRasterPass(const vk::Context& ctx, const StrandBuffers& 
   bind(strands, shading);
   const auto setLayout = chunks_.front().set.layout();
   const auto pipeline = [&](const char* shader, std::uint32_t size, const char* name) {
-    return vk::ComputePipeline(ctx, shader, size, {setLayout}, sizeof(gpu::RasterPush), name);
+    return vk::ComputePipeline(ctx, shader, size, {setLayout}, 0, name);
   };
   shade_ = pipeline("raster_shade.comp", gpu::RASTER_WORKGROUP_SIZE, "raster shade");
-  bin_ = pipeline("raster_bin.comp", gpu::RASTER_WORKGROUP_SIZE, "raster bin");
+  tileDepthPipeline_ = pipeline("raster_tile_depth.comp", gpu::RASTER_WORKGROUP_SIZE, "raster tile depth");
+  count_ = vk::ComputePipeline(ctx, "raster_bin.comp", gpu::RASTER_WORKGROUP_SIZE, {setLayout}, 0, "raster count",
+                               {gpu::RASTER_MODE_COUNT});
+  scatter_ = vk::ComputePipeline(ctx, "raster_bin.comp", gpu::RASTER_WORKGROUP_SIZE, {setLayout}, 0, "raster scatter",
+                                 {gpu::RASTER_MODE_SCATTER});
   scanTiles_ = pipeline("raster_scan_tiles.comp", gpu::RASTER_SCAN_SIZE, "raster scan tiles");
   scanBlocks_ = pipeline("raster_scan_blocks.comp", gpu::RASTER_SCAN_SIZE, "raster scan blocks");
   fine_ = pipeline("raster_fine.comp", gpu::RASTER_FINE_SIZE, "raster fine");
@@ -129,10 +139,18 @@ void StrandRasterPass::bind(const StrandBuffers& strands, const ShadingWriter& s
     throw Error("compute raster: bind() needs strand buffers of the size the pass was built for");
   std::vector<Chunk> chunks;
   for (const StrandChunk& c : strands.chunks()) {
-    Chunk chunk{vk::DescriptorSet(ctx_, kBindings, "raster [chunk " + std::to_string(chunks.size()) + "]"),
-                c.range.firstStrand, c.range.strandCount};
+    const std::string name = "raster [chunk " + std::to_string(chunks.size()) + "]";
+    gpu::RasterParams params = baseParams(tilesX_, tilesY_, settings_.tileBudget, capacity_, extent_, q_);
+    params.firstStrand = c.range.firstStrand;
+    params.strandCount = c.range.strandCount;
+    Chunk chunk{vk::DescriptorSet(ctx_, kBindings, name),
+                vk::Buffer(ctx_, sizeof(params), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                           vk::MemoryKind::DeviceLocal, name + " params"),
+                c.range.strandCount};
+    vk::uploadBytes(ctx_, chunk.params, &params, sizeof(params), vk::BufferUse::ComputeRead);
     const vk::DescriptorSet& set = chunk.set;
     shading(set);
+    set.writeStorageBuffer(gpu::RASTER_BINDING_PARAMS, chunk.params.handle());
     set.writeStorageBuffer(gpu::RENDER_BINDING_POSITIONS, c.positions.handle());
     set.writeStorageBuffer(gpu::RENDER_BINDING_TANGENTS, c.tangents.handle());
     set.writeStorageBuffer(gpu::RENDER_BINDING_ATTRIBUTES, c.attributes.handle());
@@ -144,6 +162,7 @@ void StrandRasterPass::bind(const StrandBuffers& strands, const ShadingWriter& s
     set.writeStorageBuffer(gpu::RASTER_BINDING_TILES, tiles_.handle());
     set.writeStorageBuffer(gpu::RASTER_BINDING_BLOCKS, blocks_.handle());
     set.writeStorageBuffer(gpu::RASTER_BINDING_LIST, list_.handle());
+    set.writeStorageBuffer(gpu::RASTER_BINDING_TILE_DEPTH, tileDepth_.handle());
     set.writeStorageImage(gpu::RASTER_BINDING_OUTPUT, output_.view());
     if (depth_ != VK_NULL_HANDLE) set.writeSampledImage(gpu::RASTER_BINDING_DEPTH, depth_, sampler_.handle());
     chunks.push_back(std::move(chunk));
@@ -171,15 +190,10 @@ void StrandRasterPass::recordArm(VkCommandBuffer cmd) const {
                    vk::ImageUse::ComputeStorageWrite);
 }
 
-void StrandRasterPass::recordPerChunk(VkCommandBuffer cmd, const vk::ComputePipeline& pipeline, std::uint32_t mode,
+void StrandRasterPass::recordPerChunk(VkCommandBuffer cmd, const vk::ComputePipeline& pipeline,
                                       std::uint32_t perStrand) const {
-  gpu::RasterPush p = basePush(tilesX_, tilesY_, settings_.tileBudget, capacity_, extent_, q_);
-  p.mode = mode;
   for (const Chunk& c : chunks_) {
-    p.firstStrand = c.firstStrand;
-    p.strandCount = c.strandCount;
     pipeline.bind(cmd, c.set.set());
-    pipeline.push(cmd, p);
     pipeline.dispatch(cmd, c.strandCount * perStrand);
   }
 }
@@ -187,7 +201,6 @@ void StrandRasterPass::recordPerChunk(VkCommandBuffer cmd, const vk::ComputePipe
 void StrandRasterPass::recordOnce(VkCommandBuffer cmd, const vk::ComputePipeline& pipeline,
                                   std::uint32_t threads) const {
   pipeline.bind(cmd, chunks_.front().set.set());
-  pipeline.push(cmd, basePush(tilesX_, tilesY_, settings_.tileBudget, capacity_, extent_, q_));
   pipeline.dispatch(cmd, threads);
 }
 
@@ -206,25 +219,26 @@ void end(VkCommandBuffer cmd, vk::GpuProfiler* profiler) {
 }  // namespace
 
 void StrandRasterPass::recordBinning(VkCommandBuffer cmd, vk::GpuProfiler* profiler) const {
+  if (depth_ == VK_NULL_HANDLE) throw Error("compute raster: setDepth() was not called before record()");
   const std::uint32_t tiles = tilesX_ * tilesY_;
   begin(cmd, profiler, "raster shade");
   recordArm(cmd);
-  recordPerChunk(cmd, shade_, gpu::RASTER_MODE_SHADE, q_);
+  recordPerChunk(cmd, shade_, q_);
   end(cmd, profiler);
   begin(cmd, profiler, "raster bin");
+  recordOnce(cmd, tileDepthPipeline_, tiles);
   chain(ctx_, cmd);
-  recordPerChunk(cmd, bin_, gpu::RASTER_MODE_COUNT, q_ - 1);
+  recordPerChunk(cmd, count_, q_ - 1);
   chain(ctx_, cmd);
   recordOnce(cmd, scanTiles_, divUp(tiles, gpu::RASTER_SCAN_SIZE) * gpu::RASTER_SCAN_SIZE);
   chain(ctx_, cmd);
   recordOnce(cmd, scanBlocks_, gpu::RASTER_SCAN_SIZE);
   chain(ctx_, cmd);
-  recordPerChunk(cmd, bin_, gpu::RASTER_MODE_SCATTER, q_ - 1);
+  recordPerChunk(cmd, scatter_, q_ - 1);
   end(cmd, profiler);
 }
 
 void StrandRasterPass::recordFine(VkCommandBuffer cmd, vk::GpuProfiler* profiler) const {
-  if (depth_ == VK_NULL_HANDLE) throw Error("compute raster: setDepth() was not called before record()");
   begin(cmd, profiler, "raster fine");
   chain(ctx_, cmd);
   recordOnce(cmd, fine_, tilesX_ * tilesY_ * gpu::RASTER_FINE_SIZE);

@@ -3,8 +3,9 @@
 // formula in shaders/shared/raster.h). Over the render strands of every chunk it
 //   shade    per vertex: radiance by the graphics path's hairRadiance (opacity maps looked up at the
 //            vertex: strand-space shading) and the projection to pixels, NDC depth and width;
-//   bin      per segment: count its (8x8 tile, depth bin) keys, scan the tiles (tile budget: nearest bins
-//            kept first), scatter the segment ids into per-tile lists ordered near to far by depth bin;
+//   bin      per tile: the farthest head depth; per segment: count its (8x8 tile, depth bin) keys, leaving
+//            out tiles where the head hides it, scan the tiles (tile budget: nearest bins kept first),
+//            scatter the segment ids into per-tile lists ordered near to far by depth bin;
 //   fine     per pixel: exact band coverage, hidden at or behind the head's depth, composited front to
 //            back until T < 1/255, into output(): RGBA16F, premultiplied radiance, alpha = 1 - T.
 // The pass owns every buffer and image it writes and the barriers between its own steps. The frame
@@ -39,8 +40,9 @@ struct RasterStats {
   std::uint64_t overflow() const { return droppedByTileBudget + droppedByCapacity; }
 };
 
-// Writes the shading bindings of shaders/shared/render.h (frame block, Marschner UBO and LUTs, opacity
-// maps, LightSpace, the head's depth shadow map) into a raster descriptor set: what hairRadiance reads.
+// Writes the shading bindings of shaders/shared/render.h (frame block and Marschner parameters as STORAGE
+// buffers, the LUTs, opacity maps, LightSpace, the head's depth shadow map) into a raster descriptor set:
+// what hairRadiance reads.
 using ShadingWriter = std::function<void(const vk::DescriptorSet&)>;
 
 class StrandRasterPass {
@@ -70,24 +72,23 @@ class StrandRasterPass {
  private:
   struct Chunk {
     vk::DescriptorSet set;
-    std::uint32_t firstStrand;
+    vk::Buffer params;  // gpu::RasterParams of the chunk (a storage buffer: no push constants, see .cpp)
     std::uint32_t strandCount;
   };
   void recordArm(VkCommandBuffer cmd) const;
-  void recordPerChunk(VkCommandBuffer cmd, const vk::ComputePipeline& pipeline, std::uint32_t mode,
-                      std::uint32_t perStrand) const;
+  void recordPerChunk(VkCommandBuffer cmd, const vk::ComputePipeline& pipeline, std::uint32_t perStrand) const;
   void recordOnce(VkCommandBuffer cmd, const vk::ComputePipeline& pipeline, std::uint32_t threads) const;
 
   const vk::Context& ctx_;
   VkExtent2D extent_;
   RasterSettings settings_;
   std::uint32_t tilesX_, tilesY_, q_ = 0, capacity_ = 0;
-  vk::Buffer screen_, colors_, state_, counts_, keys_, tiles_, blocks_, list_;
+  vk::Buffer screen_, colors_, state_, counts_, keys_, tiles_, blocks_, list_, tileDepth_;
   vk::Image output_;
   vk::Sampler sampler_;
   VkImageView depth_ = VK_NULL_HANDLE;
   std::vector<Chunk> chunks_;
-  vk::ComputePipeline shade_, bin_, scanTiles_, scanBlocks_, fine_;
+  vk::ComputePipeline shade_, tileDepthPipeline_, count_, scatter_, scanTiles_, scanBlocks_, fine_;
 };
 
 // List entries reserved for a frame: every segment in 8 tiles plus 16 per tile (the default head at

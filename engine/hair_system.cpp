@@ -88,6 +88,7 @@ void HairSystem::setStrands(const InterpolationTopology& topology) {
 
 compute::ShadingWriter HairSystem::shadingWriter() const {
   return [this](const vk::DescriptorSet& set) {
+    // Storage buffers: the raster shaders read no uniform blocks (compute/strand_raster_pass.cpp).
     set.writeStorageBuffer(gpu::RENDER_BINDING_FRAME, rasterFrame_.handle());
     instance_->marschner().writeDescriptors(set, gpu::RENDER_BINDING_MARSCHNER, gpu::RENDER_BINDING_LUT_M,
                                             gpu::RENDER_BINDING_LUT_N0, gpu::RENDER_BINDING_LUT_N1,

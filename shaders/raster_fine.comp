@@ -16,7 +16,7 @@ layout(std430, binding = RASTER_BINDING_BLOCKS) readonly buffer Blocks { uint bl
 layout(std430, binding = RASTER_BINDING_LIST) readonly buffer List { uint list[]; };
 layout(binding = RASTER_BINDING_DEPTH) uniform sampler2D headDepth;
 layout(binding = RASTER_BINDING_OUTPUT, rgba16f) uniform writeonly image2D outImage;
-layout(push_constant) uniform Push { RasterPush push; };
+layout(std430, binding = RASTER_BINDING_PARAMS) readonly buffer Params { RasterParams params; };
 
 vec3 radianceOf(uvec2 c) { return vec3(unpackHalf2x16(c.x), unpackHalf2x16(c.y).x); }
 
@@ -24,14 +24,14 @@ void main() {
   uint invocation = hpThreadId(RASTER_FINE_SIZE);
   uint tile = invocation / RASTER_FINE_SIZE;
   uint lane = invocation % RASTER_FINE_SIZE;
-  if (tile >= push.tilesX * push.tilesY) return;
-  uvec2 pixel = uvec2(tile % push.tilesX, tile / push.tilesX) * RASTER_TILE_SIZE +
+  if (tile >= params.tilesX * params.tilesY) return;
+  uvec2 pixel = uvec2(tile % params.tilesX, tile / params.tilesX) * RASTER_TILE_SIZE +
                 uvec2(lane % RASTER_TILE_SIZE, lane / RASTER_TILE_SIZE);
-  if (pixel.x >= push.width || pixel.y >= push.height) return;
+  if (pixel.x >= params.width || pixel.y >= params.height) return;
   vec2 centre = vec2(pixel) + 0.5;
   float occluder = texelFetch(headDepth, ivec2(pixel), 0).r;
   uint start = tiles[tile].x + blocks[tile / RASTER_SCAN_SIZE];
-  uint end = min(start + tiles[tile].y, push.capacity);
+  uint end = min(start + tiles[tile].y, params.capacity);
   vec3 color = vec3(0.0);
   float T = 1.0;
   for (uint e = start; e < end && T >= RASTER_OPAQUE_T; ++e) {

@@ -7,13 +7,13 @@
 layout(local_size_x = RASTER_SCAN_SIZE) in;
 layout(std430, binding = RASTER_BINDING_STATE) buffer State { RasterState state; };
 layout(std430, binding = RASTER_BINDING_BLOCKS) buffer Blocks { uint blocks[]; };
-layout(push_constant) uniform Push { RasterPush push; };
+layout(std430, binding = RASTER_BINDING_PARAMS) readonly buffer Params { RasterParams params; };
 
 shared uint rows[2][RASTER_SCAN_SIZE];
 
 void main() {
   uint lane = gl_LocalInvocationID.x;
-  uint blockCount = (push.tilesX * push.tilesY + RASTER_SCAN_SIZE - 1u) / RASTER_SCAN_SIZE;
+  uint blockCount = (params.tilesX * params.tilesY + RASTER_SCAN_SIZE - 1u) / RASTER_SCAN_SIZE;
   uint run = (blockCount + RASTER_SCAN_SIZE - 1u) / RASTER_SCAN_SIZE;
   uint first = min(lane * run, blockCount);
   uint last = min(first + run, blockCount);
@@ -37,7 +37,7 @@ void main() {
   }
   if (lane == RASTER_SCAN_SIZE - 1u) {
     uint total = rows[src][lane];
-    state.entries.z = total > push.capacity ? total - push.capacity : 0u;
-    state.entries.w = min(total, push.capacity);
+    state.entries.z = total > params.capacity ? total - params.capacity : 0u;
+    state.entries.w = min(total, params.capacity);
   }
 }

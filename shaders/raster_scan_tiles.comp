@@ -12,7 +12,7 @@ layout(std430, binding = RASTER_BINDING_COUNTS) buffer Counts { uint counts[]; }
 layout(std430, binding = RASTER_BINDING_KEYS) writeonly buffer Keys { uvec2 keys[]; };
 layout(std430, binding = RASTER_BINDING_TILES) writeonly buffer Tiles { uvec2 tiles[]; };
 layout(std430, binding = RASTER_BINDING_BLOCKS) writeonly buffer Blocks { uint blocks[]; };
-layout(push_constant) uniform Push { RasterPush push; };
+layout(std430, binding = RASTER_BINDING_PARAMS) readonly buffer Params { RasterParams params; };
 
 // Hillis-Steele with ping-pong rows, one barrier per round (as the prefix-sum self test).
 shared uint rows[2][RASTER_SCAN_SIZE];
@@ -21,12 +21,12 @@ void main() {
   uint t = hpThreadId(RASTER_SCAN_SIZE);
   uint lane = gl_LocalInvocationID.x;
   uint kept = 0u;
-  if (t < push.tilesX * push.tilesY) {
+  if (t < params.tilesX * params.tilesY) {
     uint requested = 0u;
     for (uint b = 0u; b < RASTER_DEPTH_BINS; ++b) {
       uint key = t * RASTER_DEPTH_BINS + b;
       uint c = counts[key];
-      uint k = min(c, push.tileBudget - kept);
+      uint k = min(c, params.tileBudget - kept);
       keys[key] = uvec2(kept, k);
       counts[key] = 0u;
       kept += k;
@@ -45,6 +45,6 @@ void main() {
     src = 1u - src;
     barrier();
   }
-  if (t < push.tilesX * push.tilesY) tiles[t] = uvec2(rows[src][lane] - kept, kept);
+  if (t < params.tilesX * params.tilesY) tiles[t] = uvec2(rows[src][lane] - kept, kept);
   if (lane == RASTER_SCAN_SIZE - 1u) blocks[t / RASTER_SCAN_SIZE] = rows[src][lane];
 }

@@ -11,11 +11,12 @@
 #include "opacity_lookup.glsl"
 
 layout(local_size_x = RASTER_WORKGROUP_SIZE) in;
-// Read-only storage blocks, not uniform blocks (same std140 layout): Mesa 22.3's lavapipe inlines uniform
-// values that steer branches (the light's type, the LUT mode) into the shader again on every bind, an LLVM
-// compile and ~1.4 MB that stays per frame (docs/DESIGN.md, driver notes).
+// Read-only storage blocks, not uniform blocks or push constants: Mesa 22.3's lavapipe inlines uniform
+// values that steer branches or loops into a fresh shader variant on every bind (one LLVM compile per
+// dispatch; docs/DESIGN.md driver notes). Same std140 layout; no cost on GPUs (read uniformly).
 layout(std140, binding = RENDER_BINDING_FRAME) readonly buffer Frame { RenderFrame frame; };
 layout(std140, binding = RENDER_BINDING_MARSCHNER) readonly buffer Marschner { MarschnerParams marschner; };
+layout(std430, binding = RASTER_BINDING_PARAMS) readonly buffer Params { RasterParams params; };
 layout(binding = RENDER_BINDING_LUT_M) uniform sampler2D lutM;
 layout(binding = RENDER_BINDING_LUT_N0) uniform sampler2D lutN0;
 layout(binding = RENDER_BINDING_LUT_N1) uniform sampler2D lutN1;
@@ -28,7 +29,6 @@ layout(std430, binding = RENDER_BINDING_ATTRIBUTES) readonly buffer Attributes {
 layout(std430, binding = RASTER_BINDING_SCREEN) writeonly buffer Screen { vec4 screen[]; };
 layout(std430, binding = RASTER_BINDING_COLORS) writeonly buffer Colors { uvec2 colors[]; };
 layout(std430, binding = RASTER_BINDING_STATE) buffer State { RasterState state; };
-layout(push_constant) uniform Push { RasterPush push; };
 #include "hair_shading.glsl"
 
 shared uint groupMin;
@@ -41,10 +41,10 @@ void main() {
     groupMax = 0u;
   }
   barrier();
-  uint q = push.verticesPerStrand;
+  uint q = params.verticesPerStrand;
   uint i = hpThreadId(RASTER_WORKGROUP_SIZE);
-  if (i < push.strandCount * q) {
-    uint global = push.firstStrand * q + i;
+  if (i < params.strandCount * q) {
+    uint global = params.firstStrand * q + i;
     vec4 pos = positions[i];
     StrandAttributes attr = attributes[i / q];
     vec4 clip = frame.proj * frame.view * vec4(pos.xyz, 1.0);
@@ -54,7 +54,7 @@ void main() {
     } else {
       vec3 ndc = clip.xyz / clip.w;
       // The graphics passes' viewport flips y (clip +Y is up): pixel rows go down.
-      vec2 pixel = vec2((ndc.x * 0.5 + 0.5) * float(push.width), (0.5 - ndc.y * 0.5) * float(push.height));
+      vec2 pixel = vec2((ndc.x * 0.5 + 0.5) * float(params.width), (0.5 - ndc.y * 0.5) * float(params.height));
       float width = frame.strand.x * attr.widthScale * mix(1.0, frame.strand.y, pos.w);
       float widthPixels = width / (frame.cameraPosition.w * clip.w);
       screen[global] = vec4(pixel, ndc.z, widthPixels);

@@ -88,7 +88,8 @@ MarschnerTextures::MarschnerTextures(const vk::Context& ctx, const HairMaterial&
   const std::byte zero[4] = {};
   vk::uploadImage(ctx, dummy_, zero, vk::ImageUse::GraphicsSampled);
   makeVisibleToComputeToo(ctx, {&dummy_});
-  paramsBuffer_ = vk::Buffer(ctx, sizeof(gpu::MarschnerParams), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+  paramsBuffer_ = vk::Buffer(ctx, sizeof(gpu::MarschnerParams),
+                             VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                              vk::MemoryKind::Upload, "Marschner params UBO");
   upload(lut);
 }
@@ -139,10 +140,7 @@ const vk::Image& MarschnerTextures::slotImage(std::uint32_t slot) const {
 void MarschnerTextures::writeDescriptors(const vk::DescriptorSet& set, std::uint32_t paramsBinding,
                                          std::uint32_t mBinding, std::uint32_t n0Binding,
                                          std::uint32_t n1Binding, VkDescriptorType paramsType) const {
-  if (paramsType == VK_DESCRIPTOR_TYPE_STORAGE_BUFFER)
-    set.writeStorageBuffer(paramsBinding, paramsBuffer_.handle());
-  else
-    set.writeUniformBuffer(paramsBinding, paramsBuffer_.handle());
+  set.writeBuffer(paramsBinding, paramsType, paramsBuffer_.handle());
   const std::uint32_t bindings[3] = {mBinding, n0Binding, n1Binding};
   for (std::uint32_t slot = 0; slot < 3; ++slot)
     set.writeSampledImage(bindings[slot], slotImage(slot).view(), sampler_.handle(),

@@ -55,8 +55,8 @@ class MarschnerTextures {
 
   // Writes the parameter block and the three combined image samplers (M, N0, N1; dummies where the mode
   // has no texture) into `set`. The set's layout must declare paramsBinding as `paramsType` (a uniform
-  // buffer, or a storage buffer for a shader that reads it as a read-only storage block) and the others
-  // as COMBINED_IMAGE_SAMPLER.
+  // buffer, or a storage buffer for the compute raster, which reads no uniform blocks) and the others as
+  // COMBINED_IMAGE_SAMPLER.
   void writeDescriptors(const vk::DescriptorSet& set, std::uint32_t paramsBinding, std::uint32_t mBinding,
                         std::uint32_t n0Binding, std::uint32_t n1Binding,
                         VkDescriptorType paramsType = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER) const;

@@ -1,6 +1,8 @@
 // Mode names, dispatch and the JSON description of a Marschner LUT.
 #include "engine/shading/lut.h"
 
+#include <nlohmann/json.hpp>
+
 #include "engine/error.h"
 
 namespace hp {

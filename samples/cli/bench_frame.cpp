@@ -1,6 +1,9 @@
 #include "samples/cli/bench_frame.h"
 
 #include <algorithm>
+#include <chrono>
+#include <fstream>
+#include <unistd.h>
 
 #include "engine/hair/default_head.h"
 #include "engine/hair_system.h"
@@ -21,8 +24,16 @@ PassTiming summarize(std::vector<double> ms) {
   return t;
 }
 
+// Resident set of this process (Linux /proc/self/statm; 0 where it cannot be read).
+double residentMiB() {
+  std::ifstream statm("/proc/self/statm");
+  double pages = 0, resident = 0;
+  if (!(statm >> pages >> resident)) return 0.0;
+  return resident * double(sysconf(_SC_PAGESIZE)) / (1024.0 * 1024.0);
+}
+
 // Compulsory bytes per frame of the compute passes: every input read once, every output written once
-// (formulas as bench-strands / bench-sim; raster: vertex records 16 + 8 bytes, list entries 4 bytes).
+// (formulas as bench strands / bench sim; raster: vertex records 16 + 8 bytes, list entries 4 bytes).
 void countBytes(FrameResult& r, const compute::StrandLayout& l) {
   const double g = l.guideCount, p = l.particlesPerGuide, q = l.verticesPerStrand, s = l.strandCount;
   const double v = s * q, e = double(r.rasterEntries);
@@ -59,8 +70,11 @@ FrameResult benchFrame(const vk::Context& ctx, const FrameCase& c) {
   view.light = scene.light;
   vk::CopyReference copy(ctx, kCopyBytes);
   std::map<std::string, std::vector<double>> times;
+  std::vector<double> hostMs;
+  double residentAfterWarmUp = 0.0;
   for (std::uint32_t f = 0; f <= c.frames; ++f) {  // frame 0 warms up
     vk::GpuProfiler profiler(ctx, 24, "bench frame");
+    const auto start = std::chrono::steady_clock::now();
     vk::submitAndWait(ctx, [&](VkCommandBuffer cmd) {
       profiler.reset(cmd);
       copy.record(cmd, profiler);  // first: lavapipe stamps scopes after graphics work late (docs/PERFORMANCE.md)
@@ -68,7 +82,12 @@ FrameResult benchFrame(const vk::Context& ctx, const FrameCase& c) {
       hair.recordPrepareDraw(cmd, view, &profiler);
       renderer.record(cmd, hair, view, 1.0f, &profiler);
     }, "bench frame");
-    if (f == 0) continue;
+    hostMs.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+    if (f == 0) {
+      residentAfterWarmUp = residentMiB();
+      hostMs.clear();
+      continue;
+    }
     double frameMs = 0.0;  // every top-level scope but the reference copy
     for (const auto& t : profiler.results()) {
       times[t.name].push_back(t.milliseconds);
@@ -78,6 +97,9 @@ FrameResult benchFrame(const vk::Context& ctx, const FrameCase& c) {
   }
   FrameResult r;
   r.c = c;
+  r.hostMs = vk::median(hostMs);
+  r.residentMiB = residentMiB();
+  r.residentGrowthMiB = (r.residentMiB - residentAfterWarmUp) / double(c.frames);
   for (auto& [name, ms] : times) r.passes[name] = summarize(ms);
   if (hair.raster() == RasterMode::Compute) {
     const compute::RasterStats stats = hair.rasterStats();

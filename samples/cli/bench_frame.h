@@ -3,7 +3,8 @@
 // resolution and raster path, every frame recorded as `hairpipe render` records it (simulate,
 // tessellate, interpolate, bounds, opacity, head, hair raster/shade, composite, tonemap) plus a
 // vkCmdCopyBuffer reference in the same submission; one warm-up frame, then `frames` timed frames.
-// Per pass: GPU-timestamp median/min/max and, for compute passes, the compulsory bytes moved.
+// Per pass: GPU-timestamp median/min/max and, for compute passes, the compulsory bytes moved; per frame
+// the host wall time and the growth of the resident set (a driver that compiles per frame shows in both).
 #include <map>
 #include <string>
 #include <vector>
@@ -30,6 +31,9 @@ struct FrameResult {
   std::map<std::string, PassTiming> passes;  // "frame" is the whole frame; "copy" the reference
   std::uint64_t rasterEntries = 0, rasterOverflow = 0;
   double copyBytes = 0;
+  double hostMs = 0;          // median wall time of a frame's submit-and-wait (driver compiles included)
+  double residentMiB = 0;     // the process's resident memory after the last frame
+  double residentGrowthMiB = 0;  // per timed frame: (resident after the last - after the warm-up) / frames
 };
 
 FrameResult benchFrame(const vk::Context& ctx, const FrameCase& c);

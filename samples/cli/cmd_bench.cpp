@@ -2,10 +2,11 @@
 // [--plot F.svg]`: the whole frame on the default head (bench_frame.h) for each strand count and raster
 // path (graphics once per --msaa value), after one warm-up frame: per pass the GPU-timestamp median
 // (min/max) of N frames, the frame total, each compute pass's achieved bytes/s as a fraction of a
-// vkCmdCopyBuffer timed in the same frames, the device and driver. --json writes the report to F,
-// --plot an SVG of ms per pass against strand count. Pass-level benchmarks over other axes stay in
-// bench-strands (tessellate/interpolate to 1M strands), bench-opacity (map sizes), bench-sim (guide
-// counts) and bench-assets (host asset path).
+// vkCmdCopyBuffer timed in the same frames, the host time and resident-memory growth per frame, the
+// device and driver. --json writes the report to F, --plot an SVG of ms per pass against strand count.
+// Suites over other axes are its subcommands (bench_context.h): `bench strands` (tessellate/interpolate
+// to 1M strands), `bench opacity` (map sizes), `bench sim` (guide counts), `bench instances` (heads per
+// Renderer), `bench head` and `bench assets` (host work).
 #include <cstdio>
 #include <iostream>
 
@@ -84,13 +85,18 @@ nlohmann::json toJson(const hp::cli::FrameResult& r) {
           {"height", r.c.height},        {"raster", hp::cli::frameCaseName(r.c)},
           {"frame_ms", r.passes.at("frame").medianMs}, {"copy_gb_per_s", copyGbs},
           {"raster_entries", r.rasterEntries},         {"raster_overflow", r.rasterOverflow},
+          {"host_frame_ms", r.hostMs},                 {"resident_mib", r.residentMiB},
+          {"resident_growth_mib_per_frame", r.residentGrowthMiB},
           {"passes", passes}};
 }
 
 void printText(const nlohmann::json& row) {
-  std::printf("%u strands, %ux%u, %s: frame %.1f ms (copy %.2f GB/s)\n", row["strands"].get<unsigned>(),
-              row["width"].get<unsigned>(), row["height"].get<unsigned>(), row["raster"].get<std::string>().c_str(),
-              row["frame_ms"].get<double>(), row["copy_gb_per_s"].get<double>());
+  std::printf("%u strands, %ux%u, %s: frame %.1f ms (copy %.2f GB/s), host %.1f ms per frame, resident %.1f MiB "
+              "(%+.2f MiB per frame)\n",
+              row["strands"].get<unsigned>(), row["width"].get<unsigned>(), row["height"].get<unsigned>(),
+              row["raster"].get<std::string>().c_str(), row["frame_ms"].get<double>(),
+              row["copy_gb_per_s"].get<double>(), row["host_frame_ms"].get<double>(),
+              row["resident_mib"].get<double>(), row["resident_growth_mib_per_frame"].get<double>());
   for (const auto& [name, p] : row["passes"].items()) {
     if (name == "frame") continue;
     std::printf("  %-14s %10.2f ms  (%.2f - %.2f)", name.c_str(), p["median_ms"].get<double>(),
@@ -132,7 +138,7 @@ void run(const BenchOptions& o) {
 
 void setup(CLI::App& app) {
   auto o = std::make_shared<BenchOptions>();
-  CLI::App* cmd = app.add_subcommand("bench", "Time the whole frame per pass on the device (default head)");
+  CLI::App* cmd = hp::cli::benchCommand(app);  // the suites (bench sim, bench strands, ...) are its subcommands
   cmd->add_option("--strands", o->strands, "Render strand counts, comma separated")->delimiter(',')->capture_default_str();
   cmd->add_option("--resolution", o->resolution, "Frame size WxH")->capture_default_str();
   cmd->add_option("--frames", o->frames, "Timed frames per case (median), after one warm-up")->capture_default_str();
@@ -143,7 +149,9 @@ void setup(CLI::App& app) {
   cmd->add_option("--json", o->json, "Write the report as JSON to this file");
   cmd->add_option("--plot", o->plot, "Write an SVG of ms per pass against strand count to this file");
   cmd->add_option("--device", o->device, "Vulkan device: index or name substring (env HAIRPIPE_DEVICE)");
-  cmd->callback([o] { run(*o); });
+  cmd->callback([o, cmd] {
+    if (cmd->get_subcommands().empty()) run(*o);  // otherwise a suite ran
+  });
 }
 }  // namespace
 

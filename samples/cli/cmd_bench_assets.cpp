@@ -1,4 +1,4 @@
-// `hairpipe bench-assets [--strands N] [--points M] [--repeat R] [--json]`: times the host asset path
+// `hairpipe bench assets [--strands N] [--points M] [--repeat R] [--json]`: times the host asset path
 // on a synthetic model the size of the largest public .hair files (50,000 strands, 3,441,580 points by
 // default): read + decode the file, resample every strand to guides, fit the head sphere and
 // triangulate the roots, build the interpolation topology. The file is written once to the temp
@@ -18,6 +18,7 @@
 #include "engine/hair/hair_import.h"
 #include "engine/hair/root_topology.h"
 #include "engine/hair/synthetic_hair.h"
+#include "samples/cli/bench_context.h"
 #include "samples/cli/command.h"
 
 namespace {
@@ -58,7 +59,7 @@ Timings runOnce(const std::filesystem::path& file, std::size_t& triangles) {
 }
 
 void run(const BenchOptions& o) {
-  if (o.repeat == 0) throw hp::Error("bench-assets: --repeat must be >= 1");
+  if (o.repeat == 0) throw hp::Error("bench assets: --repeat must be >= 1");
   hp::SyntheticHairOptions synth;
   synth.strands = o.strands;
   synth.points = o.points;
@@ -95,7 +96,7 @@ void run(const BenchOptions& o) {
 
 void setup(CLI::App& app) {
   auto o = std::make_shared<BenchOptions>();
-  auto* cmd = app.add_subcommand("bench-assets", "Time loading, resampling and triangulating a large .hair model");
+  auto* cmd = hp::cli::benchSuite(app, "assets", "Time loading, resampling and triangulating a large .hair model");
   cmd->add_option("--strands", o->strands, "strands in the synthetic model")->capture_default_str();
   cmd->add_option("--points", o->points, "points in the synthetic model")->capture_default_str();
   cmd->add_option("--repeat", o->repeat, "runs; the best is reported")->capture_default_str();

@@ -1,4 +1,4 @@
-// `hairpipe bench-head [--repeat R] [--triangles N] [--json]`: host times of the distance-field work
+// `hairpipe bench head [--repeat R] [--triangles N] [--json]`: host times of the distance-field work
 // done at load time: sampling the default head's field on its grid, meshing it (marching tetrahedra),
 // projecting the scalp, and building a distance grid from a closed collider mesh of about N triangles
 // (a UV sphere, 64 cells on its longest side). Best of R runs per stage.
@@ -14,6 +14,7 @@
 #include "engine/hair/default_head.h"
 #include "engine/hair/head_mesh.h"
 #include "engine/hair/sdf_mesh.h"
+#include "samples/cli/bench_context.h"
 #include "samples/cli/command.h"
 
 namespace {
@@ -36,7 +37,7 @@ double bestSeconds(std::uint32_t repeat, F&& work) {
 
 void run(const Options& o) {
   if (o.repeat == 0 || o.triangles < 100 || o.triangles > 20000000)
-    throw hp::Error("bench-head: --repeat must be >= 1 and --triangles in [100, 20000000]");
+    throw hp::Error("bench head: --repeat must be >= 1 and --triangles in [100, 20000000]");
   hp::SdfGrid grid;
   hp::HeadMesh head;
   const double gridS = bestSeconds(o.repeat, [&] { grid = hp::makeDefaultHeadGrid(); });
@@ -67,7 +68,7 @@ void run(const Options& o) {
 
 void setup(CLI::App& app) {
   auto o = std::make_shared<Options>();
-  auto* cmd = app.add_subcommand("bench-head", "Time the default head's field, mesh and scalp, and a collider mesh's distance grid");
+  auto* cmd = hp::cli::benchSuite(app, "head", "Time the default head's field, mesh and scalp, and a collider mesh's distance grid");
   cmd->add_option("--repeat", o->repeat, "runs; the best is reported")->capture_default_str();
   cmd->add_option("--triangles", o->triangles, "triangles of the collider mesh")->capture_default_str();
   cmd->add_flag("--json", o->json, "print JSON");

@@ -1,4 +1,4 @@
-// `hairpipe bench-instances [--instances 1,4,16] [--strands N] [--frames F] [--json]`: the cost of many heads
+// `hairpipe bench instances [--instances 1,4,16] [--strands N] [--frames F] [--json]`: the cost of many heads
 // on one hp::Renderer: host time to create the renderer and each instance, device memory held per instance
 // and shared (Context::allocatedBytes before and after), and the CPU time to record one frame (update,
 // shadows and one view's draw of every instance; median of F frames after one warm-up) for each instance
@@ -88,11 +88,11 @@ nlohmann::json benchCount(const hp::vk::Context& ctx, const hp::HairAsset& asset
 }
 
 void run(const BenchOptions& o) {
-  if (o.frames == 0 || o.frames > 100) throw hp::Error("bench-instances: --frames must be in [1, 100]");
-  if (o.strands == 0 || o.strands > 1'000'000) throw hp::Error("bench-instances: --strands must be in [1, 1000000]");
+  if (o.frames == 0 || o.frames > 100) throw hp::Error("bench instances: --frames must be in [1, 100]");
+  if (o.strands == 0 || o.strands > 1'000'000) throw hp::Error("bench instances: --strands must be in [1, 1000000]");
   for (std::uint32_t n : o.instances)
-    if (n == 0 || n > 64) throw hp::Error("bench-instances: --instances values must be in [1, 64]");
-  auto ctx = hp::cli::createBenchContext(o.device, "bench-instances");
+    if (n == 0 || n > 64) throw hp::Error("bench instances: --instances values must be in [1, 64]");
+  auto ctx = hp::cli::createBenchContext(o.device, "bench instances");
   hp::DensityOptions density;
   density.totalStrands = o.strands;
   const hp::HairAsset asset = hp::buildDefaultHeadAsset(hp::defaultHeadGrowth(), density);
@@ -114,7 +114,7 @@ void run(const BenchOptions& o) {
 
 void setup(CLI::App& app) {
   auto o = std::make_shared<BenchOptions>();
-  CLI::App* cmd = app.add_subcommand("bench-instances", "Time renderer/instance creation and frame recording for many heads");
+  CLI::App* cmd = hp::cli::benchSuite(app, "instances", "Time renderer/instance creation and frame recording for many heads");
   cmd->add_option("--instances", o->instances, "Instance counts, comma separated")->delimiter(',')->capture_default_str();
   cmd->add_option("--strands", o->strands, "Render strands per head")->capture_default_str();
   cmd->add_option("--frames", o->frames, "Timed frames per count (median), after one warm-up")->capture_default_str();

@@ -1,4 +1,4 @@
-// `hairpipe bench-opacity [--strands 10000,100000,1000000] [--resolutions 512,1024] [--frames F]
+// `hairpipe bench opacity [--strands 10000,100000,1000000] [--resolutions 512,1024] [--frames F]
 // [--half] [--json]`: GPU time of the bounds and opacity passes (GpuProfiler timestamps, median of F
 // frames after one warm-up frame) on the default head in its rest pose, for each render-strand count
 // and opacity-map resolution. Each frame is interpolate -> bounds -> opacity, as HairSystem records it.
@@ -56,10 +56,10 @@ nlohmann::json benchOne(const hp::vk::Context& ctx, const hp::HairAsset& asset, 
 }
 
 void run(const BenchOptions& o) {
-  if (o.frames == 0 || o.frames > 100) throw hp::Error("bench-opacity: --frames must be in [1, 100]");
+  if (o.frames == 0 || o.frames > 100) throw hp::Error("bench opacity: --frames must be in [1, 100]");
   for (std::uint32_t s : o.strands)
-    if (s == 0 || s > 4'000'000) throw hp::Error("bench-opacity: --strands values must be in [1, 4000000]");
-  auto ctx = hp::cli::createBenchContext(o.device, "bench-opacity");
+    if (s == 0 || s > 4'000'000) throw hp::Error("bench opacity: --strands values must be in [1, 4000000]");
+  auto ctx = hp::cli::createBenchContext(o.device, "bench opacity");
   nlohmann::json report = {{"device", ctx->properties().deviceName}, {"frames", o.frames},
                            {"results", nlohmann::json::array()}};
   for (std::uint32_t s : o.strands) {
@@ -81,7 +81,7 @@ void run(const BenchOptions& o) {
 
 void setup(CLI::App& app) {
   auto o = std::make_shared<BenchOptions>();
-  CLI::App* cmd = app.add_subcommand("bench-opacity", "Time the bounds and opacity-map passes on the device");
+  CLI::App* cmd = hp::cli::benchSuite(app, "opacity", "Time the bounds and opacity-map passes on the device");
   cmd->add_option("--strands", o->strands, "Render strand counts, comma separated")->delimiter(',')->capture_default_str();
   cmd->add_option("--resolutions", o->resolutions, "Opacity map sizes, comma separated")->delimiter(',')->capture_default_str();
   cmd->add_option("--frames", o->frames, "Timed frames per case (median), after one warm-up")->capture_default_str();

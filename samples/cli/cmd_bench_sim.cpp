@@ -1,4 +1,4 @@
-// `hairpipe bench-sim`: GPU ms per frame of the simulation pass for 1k / 10k / 100k guides (the default
+// `hairpipe bench sim`: GPU ms per frame of the simulation pass for 1k / 10k / 100k guides (the default
 // head's guides repeated), and its achieved bytes/s as a fraction of vkCmdCopyBuffer bandwidth measured
 // in the same run. Bytes counted per frame: positions and previous read + written, rest pose read.
 // --colliders picks what the hair collides with: the default head's distance grid (sdf, default),
@@ -47,7 +47,7 @@ hp::HairAsset repeatedGuides(const hp::HairAsset& head, std::uint32_t count, con
 nlohmann::json benchOne(const hp::vk::Context& ctx, const hp::HairAsset& asset, std::uint32_t frames,
                         const hp::vk::CopyReference& copy) {
   hp::SimulatePass pass(ctx, asset, hp::SimulationParams{});
-  hp::vk::GpuProfiler profiler(ctx, 2 * frames + 2, "bench-sim");
+  hp::vk::GpuProfiler profiler(ctx, 2 * frames + 2, "bench sim");
   std::vector<double> sim, copyMs;
   for (std::uint32_t f = 0; f < frames; ++f) {
     hp::vk::submitAndWait(ctx, [&](VkCommandBuffer cmd) {
@@ -55,7 +55,7 @@ nlohmann::json benchOne(const hp::vk::Context& ctx, const hp::HairAsset& asset, 
       hp::vk::memoryBarrier(ctx, cmd, hp::vk::BufferUse::ComputeWrite, hp::vk::BufferUse::ComputeWrite);
       pass.record(cmd, {glm::mat4(1.0f), glm::mat4(1.0f), f / 60.0, false}, &profiler);
       copy.record(cmd, profiler);
-    }, "bench-sim frame");
+    }, "bench sim frame");
     auto times = profiler.results();
     sim.push_back(times[0].milliseconds);
     copyMs.push_back(times[1].milliseconds);
@@ -71,7 +71,7 @@ nlohmann::json benchOne(const hp::vk::Context& ctx, const hp::HairAsset& asset, 
 
 void runBench(const BenchOptions& o) {
   if (o.frames == 0 || o.frames > 10000) throw hp::Error("--frames must be in [1, 10000]");
-  auto ctx = hp::cli::createBenchContext(o.device, "bench-sim");
+  auto ctx = hp::cli::createBenchContext(o.device, "bench sim");
   const hp::HairAsset head = hp::buildDefaultHeadAsset();
   hp::vk::CopyReference copy(*ctx, 64ull << 20);
   nlohmann::json report = {{"device", ctx->properties().deviceName},
@@ -98,7 +98,7 @@ void runBench(const BenchOptions& o) {
 
 void setupBench(CLI::App& app) {
   auto o = std::make_shared<BenchOptions>();
-  CLI::App* cmd = app.add_subcommand("bench-sim", "Benchmark the simulation pass with GPU timestamps");
+  CLI::App* cmd = hp::cli::benchSuite(app, "sim", "Benchmark the simulation pass with GPU timestamps");
   cmd->add_option("--device", o->device, "Vulkan device: index or name substring (env HAIRPIPE_DEVICE)");
   cmd->add_option("--guides", o->guides, "Guide counts to measure (default 1000 10000 100000)");
   cmd->add_option("--frames", o->frames, "Frames per measurement (median is reported)");

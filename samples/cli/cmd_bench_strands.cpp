@@ -1,4 +1,4 @@
-// `hairpipe bench-strands [--strands 10000,100000,1000000] [--frames F] [--vertices Q] [--json]`:
+// `hairpipe bench strands [--strands 10000,100000,1000000] [--frames F] [--vertices Q] [--json]`:
 // GPU time per frame of the tessellate and interpolate passes (GpuProfiler timestamps, median of F
 // frames after one warm-up frame) on the default head at each render-strand count, and the achieved
 // bandwidth as a fraction of a vkCmdCopyBuffer of 128 MiB timed in the same frames.
@@ -130,10 +130,10 @@ void printText(const nlohmann::json& report) {
 }
 
 void run(const BenchOptions& o) {
-  if (o.frames == 0 || o.frames > 1000) throw hp::Error("bench-strands: --frames must be in [1, 1000]");
+  if (o.frames == 0 || o.frames > 1000) throw hp::Error("bench strands: --frames must be in [1, 1000]");
   for (std::uint32_t s : o.strands)
-    if (s == 0 || s > 4'000'000) throw hp::Error("bench-strands: --strands values must be in [1, 4000000]");
-  auto ctx = hp::cli::createBenchContext(o.device, "bench-strands");
+    if (s == 0 || s > 4'000'000) throw hp::Error("bench strands: --strands values must be in [1, 4000000]");
+  auto ctx = hp::cli::createBenchContext(o.device, "bench strands");
   nlohmann::json report = {{"device", ctx->properties().deviceName}, {"frames", o.frames},
                            {"copy_bytes", kCopyBytes}, {"results", nlohmann::json::array()}};
   for (std::uint32_t s : o.strands) report["results"].push_back(toJson(benchOne(*ctx, s, o)));
@@ -145,7 +145,7 @@ void run(const BenchOptions& o) {
 
 void setup(CLI::App& app) {
   auto o = std::make_shared<BenchOptions>();
-  CLI::App* cmd = app.add_subcommand("bench-strands", "Time the tessellate and interpolate passes on the device");
+  CLI::App* cmd = hp::cli::benchSuite(app, "strands", "Time the tessellate and interpolate passes on the device");
   cmd->add_option("--strands", o->strands, "Render strand counts, comma separated")->delimiter(',')->capture_default_str();
   cmd->add_option("--frames", o->frames, "Timed frames per count (median), after one warm-up")->capture_default_str();
   cmd->add_option("--vertices", o->vertices, "Vertices per strand (Q)")->capture_default_str();

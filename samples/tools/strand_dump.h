@@ -1,6 +1,6 @@
 #pragma once
 // Contract: one-shot use of the strand passes outside the frame loop, for tools and tests:
-// `hairpipe strands`, `hairpipe bench-strands` and (later) `hairpipe render --dump-strands`.
+// `hairpipe strands`, `hairpipe bench strands` and (later) `hairpipe render --dump-strands`.
 // Every function waits for its own submission; none is meant for the per-frame path.
 #include <string>
 #include <vector>

@@ -11,6 +11,7 @@
 //   keys       uvec2[K]  x = offset of the key within its tile's list, y = entries kept (tile budget)
 //   tiles      uvec2[T]  x = offset of the tile's list within its scan block, y = entries kept
 //   blocks     uint[ceil(T / RASTER_SCAN_SIZE)]  offset of each scan block in the list
+//   tileDepth  float[T]  the farthest head depth (NDC z) over each tile's pixels, 1 where no head
 //   list       uint[capacity]  per tile, depth bins near to far: the global index of the segment's first
 //                              vertex (strand * Q + k), | RASTER_LAST_SEGMENT for the strand's last segment
 //                              (no integer division in the fine loop: CPU SIMD has none)
@@ -54,11 +55,13 @@ HP_CONST(uint, RASTER_BINDING_BLOCKS, 17)
 HP_CONST(uint, RASTER_BINDING_LIST, 18)
 HP_CONST(uint, RASTER_BINDING_DEPTH, 19)   // sampler2D: the head's depth (single sample), 1 = nothing
 HP_CONST(uint, RASTER_BINDING_OUTPUT, 20)  // storage image rgba16f: premultiplied hair radiance, a = 1 - T
+HP_CONST(uint, RASTER_BINDING_PARAMS, 21)  // RasterParams of the set's chunk (read-only storage buffer)
+HP_CONST(uint, RASTER_BINDING_TILE_DEPTH, 22)  // float[tiles]: the farthest head depth in each tile
 
 // The composite pass (composite.frag) samples the output image.
 HP_CONST(uint, COMPOSITE_BINDING_HAIR, 0)
 
-HP_CONST(uint, RASTER_MODE_SHADE, 0)    // per vertex: shade + project (+ view-depth range)
+// raster_bin.comp's specialization constant 0.
 HP_CONST(uint, RASTER_MODE_COUNT, 1)    // per segment: count into (tile, bin) keys
 HP_CONST(uint, RASTER_MODE_SCATTER, 2)  // per segment: write ids into the tile lists
 
@@ -69,10 +72,12 @@ struct RasterState {
                     // z = dropped past the list capacity, w = entries kept
 };
 
-struct RasterPush {
+// Per chunk, fixed for the pass's life: a read-only storage buffer, not push constants (lavapipe in
+// Mesa 22.3 recompiles a shader on every dispatch whose push constants steer its loops; docs/DESIGN.md).
+struct RasterParams {
   uint firstStrand;   // global index of the chunk's first strand
   uint strandCount;   // strands in the chunk
-  uint mode;          // RASTER_MODE_*
+  uint pad2;
   uint tilesX;
   uint tilesY;
   uint tileBudget;    // entries kept per tile (the nearest bins first)
@@ -114,7 +119,7 @@ HP_END
 
 #ifdef __cplusplus
 static_assert(sizeof(hp::gpu::RasterState) == 32);
-static_assert(sizeof(hp::gpu::RasterPush) == 48);
+static_assert(sizeof(hp::gpu::RasterParams) == 48);
 static_assert(hp::gpu::RASTER_FINE_SIZE == hp::gpu::RASTER_TILE_SIZE * hp::gpu::RASTER_TILE_SIZE);
 #endif
 #endif

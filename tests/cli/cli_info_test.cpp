@@ -53,3 +53,21 @@ TEST(CliUsage, UsageErrorsExitWithCodeOneAndHelpSucceeds) {
   EXPECT_NE(r.err.find("bogus"), std::string::npos) << r.err;
   EXPECT_EQ(runCli({"--version"}).exitCode, 0);
 }
+
+// The benchmark suites are subcommands of `bench` (issue 13): each has its help, a suite runs alone
+// (the whole-frame bench does not run as well) and the former `bench-*` names are gone.
+TEST(CliBench, SuitesAreSubcommandsOfBench) {
+  auto r = runCli({"bench", "--help"});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  for (const char* suite : {"sim", "strands", "opacity", "instances", "head", "assets"}) {
+    EXPECT_NE(r.out.find(suite), std::string::npos) << suite;
+    EXPECT_EQ(runCli({"bench", suite, "--help"}).exitCode, 0) << suite;
+  }
+  auto old = runCli({"bench-sim", "--frames", "1"});  // not a command: nothing runs
+  EXPECT_EQ(old.exitCode, 1);
+  EXPECT_NE(old.err.find("A subcommand is required"), std::string::npos) << old.err;
+  auto assets = runCli({"bench", "assets", "--strands", "200", "--points", "2000", "--repeat", "1", "--json"});
+  ASSERT_EQ(assets.exitCode, 0) << assets.err;
+  EXPECT_NO_THROW((void)nlohmann::json::parse(assets.out)) << assets.out;
+  EXPECT_EQ(assets.out.find("median of"), std::string::npos) << "the frame bench ran too";
+}

@@ -176,7 +176,7 @@ TEST_F(InterpolateTest, RebindsToReallocatedBuffersAfterADensityChange) {
   EXPECT_TRUE(got.positions == fresh.strands.positions);
 }
 
-// At scale, checked for correctness only: its speed is `hairpipe bench-strands`' (GPU timestamps), not a
+// At scale, checked for correctness only: its speed is `hairpipe bench strands`' (GPU timestamps), not a
 // wall clock in a unit test, which failed under load without saying anything about the pass.
 TEST_F(InterpolateTest, HundredThousandStrandsOfThirtySixVerticesMatchTheReference) {
   HairAsset asset = headWithStrands(100000);

@@ -57,7 +57,8 @@ RasterRig::RasterRig(const vk::Context& c, const compute::StrandBuffers& strands
   const compute::ShadingWriter shading = [this](const vk::DescriptorSet& set) {
     set.writeStorageBuffer(gpu::RENDER_BINDING_FRAME, frameBlock.handle());
     marschner.writeDescriptors(set, gpu::RENDER_BINDING_MARSCHNER, gpu::RENDER_BINDING_LUT_M,
-                               gpu::RENDER_BINDING_LUT_N0, gpu::RENDER_BINDING_LUT_N1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);
+                               gpu::RENDER_BINDING_LUT_N0, gpu::RENDER_BINDING_LUT_N1,
+                               VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);
     const render::ShadowInputs inputs = shadows.inputs();
     set.writeSampledImage(gpu::RENDER_BINDING_OPACITY, inputs.opacityView, inputs.sampler);
     set.writeStorageBuffer(gpu::RENDER_BINDING_LIGHT, inputs.lightSpace);

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <numbers>
 
+#include <nlohmann/json.hpp>
+
 #include "engine/error.h"
 #include "engine/shading/half_float.h"
 #include "engine/shading/lut.h"
