@@ -4,6 +4,7 @@
 #include <string>
 
 #include "engine/error.h"
+#include "engine/vk/device_lost.h"
 #include "engine/vk/fault_injection.h"
 
 namespace hp::vk {
@@ -61,6 +62,8 @@ void check(VkResult result, const char* expression) {
   const char* call = vulkanCall(expression);
   result = injectFault(call, result);
   if (result == VK_SUCCESS) return;
-  throw Error(std::string(call) + " failed: " + resultName(result) + " (" + std::to_string(result) + ")");
+  const std::string message = std::string(call) + " failed: " + resultName(result) + " (" + std::to_string(result) + ")";
+  if (result == VK_ERROR_DEVICE_LOST) throw DeviceLost(message);
+  throw Error(message);
 }
 }  // namespace hp::vk

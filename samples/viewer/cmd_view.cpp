@@ -8,6 +8,7 @@
 
 #include "engine/error.h"
 #include "engine/hair/camera_fit.h"
+#include "engine/vk/check.h"
 #include "samples/cli/command.h"
 #include "samples/cli/material_options.h"
 #include "samples/cli/output_paths.h"
@@ -29,6 +30,8 @@ struct ViewOptions {
   std::uint32_t frames = 0;
   std::string screenshot;
   std::string resizeAt;
+  std::string minimiseAt;
+  std::vector<std::string> faultsAt;
   bool noPanel = false;
   bool json = false;
 };
@@ -42,6 +45,41 @@ void parseResize(const std::string& text, hp::viewer::ViewerOptions& v) {
     throw hp::Error("--resize-at takes FRAME:WIDTHxHEIGHT with sides in [1, 16384], e.g. 10:200x150");
   v.resizeAt = k;
   v.resizeTo = {w, h};
+}
+
+// "K:S": at frame K the window is minimised for S seconds.
+void parseMinimise(const std::string& text, hp::viewer::ViewerOptions& v) {
+  unsigned k = 0;
+  double seconds = 0.0;
+  char tail = 0;
+  if (std::sscanf(text.c_str(), "%u:%lf%c", &k, &seconds, &tail) != 2 || !(seconds > 0.0) || seconds > 60.0)
+    throw hp::Error("--minimise-at takes FRAME:SECONDS with seconds in (0, 60], e.g. 10:0.5");
+  v.minimiseAt = k;
+  v.minimiseSeconds = seconds;
+}
+
+// "K:CALL:RESULT": from frame K, the next success of CALL reports RESULT. Only the calls and results
+// whose injection is faithful (the call has done its work when it returns; see vk::armFault).
+hp::viewer::ScriptedFault parseFault(const std::string& text) {
+  const std::string usage =
+      "--fault-at takes FRAME:CALL:RESULT with CALL vkWaitForFences, vkQueueSubmit2 or vkQueuePresentKHR and "
+      "RESULT VK_ERROR_DEVICE_LOST, or vkQueuePresentKHR with VK_ERROR_OUT_OF_DATE_KHR or VK_SUBOPTIMAL_KHR";
+  const std::size_t a = text.find(':'), b = a == std::string::npos ? a : text.find(':', a + 1);
+  if (b == std::string::npos) throw hp::Error(usage);
+  hp::viewer::ScriptedFault f;
+  f.call = text.substr(a + 1, b - a - 1);
+  const std::string result = text.substr(b + 1);
+  unsigned k = 0;
+  char tail = 0;
+  if (std::sscanf(text.substr(0, a).c_str(), "%u%c", &k, &tail) != 1) throw hp::Error(usage);
+  f.frame = k;
+  const bool present = f.call == "vkQueuePresentKHR";
+  for (VkResult r : {VK_ERROR_DEVICE_LOST, VK_ERROR_OUT_OF_DATE_KHR, VK_SUBOPTIMAL_KHR})
+    if (result == hp::vk::resultName(r)) f.result = r;
+  const bool lost = f.result == VK_ERROR_DEVICE_LOST &&
+                    (present || f.call == "vkWaitForFences" || f.call == "vkQueueSubmit2");
+  if (!lost && !(present && f.result != VK_SUCCESS)) throw hp::Error(usage);
+  return f;
 }
 
 hp::viewer::ViewerOptions viewerOptions(const ViewOptions& o, const CLI::App& cmd) {
@@ -74,6 +112,8 @@ hp::viewer::ViewerOptions viewerOptions(const ViewOptions& o, const CLI::App& cm
   if (!o.screenshot.empty() && o.frames == 0) throw hp::Error("--screenshot needs --frames N (the frame it saves)");
   v.screenshot = o.screenshot;
   if (!o.resizeAt.empty()) parseResize(o.resizeAt, v);
+  if (!o.minimiseAt.empty()) parseMinimise(o.minimiseAt, v);
+  for (const std::string& f : o.faultsAt) v.faults.push_back(parseFault(f));
   v.panel = !o.noPanel;
   hp::validateRequest(r);
   return v;
@@ -88,6 +128,8 @@ void runView(const ViewOptions& o, const CLI::App& cmd) {
   const hp::viewer::ViewerReport report = hp::viewer::runViewer(v, asset);
   const nlohmann::json j = {{"frames", report.frames},
                             {"swapchain_recreations", report.swapchainRecreations},
+                            {"minimised_waits", report.minimisedWaits},
+                            {"device_losses", report.deviceLosses},
                             {"width", report.extent.width},
                             {"height", report.extent.height},
                             {"device", report.device},
@@ -100,6 +142,7 @@ void runView(const ViewOptions& o, const CLI::App& cmd) {
   std::cout << "viewed " << report.frames << " frames (" << report.extent.width << "x" << report.extent.height
             << ", swapchain recreated " << report.swapchainRecreations << "x, " << report.raster << " raster) on "
             << report.device << "\n";
+  if (report.deviceLosses > 0) std::cout << "the device was lost " << report.deviceLosses << "x and replaced\n";
   if (!v.screenshot.empty()) std::cout << "wrote " << v.screenshot << "\n";
 }
 
@@ -123,6 +166,10 @@ void setupView(CLI::App& app) {
   cmd->add_option("--frames", o->frames, "Stop after N frames (default 0: when the window closes)");
   cmd->add_option("--screenshot", o->screenshot, "With --frames N: save the last frame's window image as PNG");
   cmd->add_option("--resize-at", o->resizeAt, "Testing: resize the window at a frame, FRAME:WxH");
+  cmd->add_option("--minimise-at", o->minimiseAt, "Testing: minimise the window at a frame for a while, FRAME:SECONDS");
+  cmd->add_option("--fault-at", o->faultsAt,
+                  "Testing: from a frame on, the next success of a Vulkan call reports a failure, "
+                  "FRAME:CALL:RESULT (e.g. 5:vkWaitForFences:VK_ERROR_DEVICE_LOST); repeatable");
   cmd->add_flag("--no-panel", o->noPanel, "Start with the panel hidden (F1 shows it)");
   cmd->add_flag("--json", o->json, "Print the run's summary as JSON");
   cmd->callback([o, cmd] { runView(*o, *cmd); });

@@ -6,6 +6,7 @@
 #include "engine/error.h"
 #include "engine/vk/check.h"
 #include "engine/vk/context.h"
+#include "engine/vk/fault_injection.h"
 
 namespace hp::viewer {
 namespace {
@@ -149,6 +150,9 @@ Swapchain::Status Swapchain::present(std::uint32_t image) {
   info.swapchainCount = 1;
   info.pSwapchains = &swapchain_;
   info.pImageIndices = &image;
-  return statusOf(vkQueuePresentKHR(ctx_.queue(), &info), "vkQueuePresentKHR");
+  // A fault armed for the present (vk::armFault: tests inject VK_ERROR_OUT_OF_DATE_KHR) is seen like the
+  // driver's own result; a present's semaphore wait happens whatever it returns, so that is faithful. Not
+  // so for an acquire, whose semaphore would be signalled behind the fault's back: never injected there.
+  return statusOf(vk::injectFault("vkQueuePresentKHR", vkQueuePresentKHR(ctx_.queue(), &info)), "vkQueuePresentKHR");
 }
 }  // namespace hp::viewer

@@ -47,6 +47,28 @@ VkSurfaceKHR Window::createSurface(VkInstance instance) const {
   return surface;
 }
 
+bool Window::minimised() const {
+  const VkExtent2D fb = framebufferSize();
+  return fb.width == 0 || fb.height == 0 || glfwGetWindowAttrib(window_, GLFW_ICONIFIED) == GLFW_TRUE ||
+         glfwGetTime() < minimisedUntil_;
+}
+
+void Window::waitWhileMinimised() {
+  while (minimised() && !shouldClose()) {
+    const double forced = minimisedUntil_ - glfwGetTime();
+    glfwWaitEventsTimeout(forced > 0.0 ? forced : 0.5);  // a restore or resize event ends the wait early
+  }
+  if (minimisedUntil_ >= 0.0) {
+    minimisedUntil_ = -1.0;
+    glfwRestoreWindow(window_);
+  }
+}
+
+void Window::minimiseFor(double seconds) {
+  glfwIconifyWindow(window_);
+  minimisedUntil_ = glfwGetTime() + seconds;
+}
+
 VkExtent2D Window::framebufferSize() const {
   int w = 0, h = 0;
   glfwGetFramebufferSize(window_, &w, &h);

@@ -4,6 +4,7 @@
 #include "engine/vk/buffer.h"
 #include "engine/vk/check.h"
 #include "engine/vk/context.h"
+#include "engine/vk/device_lost.h"
 #include "engine/vk/device_probe.h"
 #include "tests/support/vk_fixture.h"
 
@@ -53,6 +54,24 @@ TEST(VulkanCheck, FailureNamesTheCallAndTheResult) {
     EXPECT_NE(msg.find("VK_ERROR_OUT_OF_DEVICE_MEMORY"), std::string::npos);
   }
   EXPECT_NO_THROW(hp::vk::check(VK_SUCCESS, "vkFoo"));
+}
+
+// Device loss is the one failure a caller may recover from by making a new device: it has its own type,
+// still an hp::Error for everyone else; other failures are plain hp::Error.
+TEST(VulkanCheck, DeviceLossIsTellableApartByType) {
+  EXPECT_THROW(hp::vk::check(VK_ERROR_DEVICE_LOST, "vkQueueSubmit2(queue, ...)"), hp::vk::DeviceLost);
+  try {
+    hp::vk::check(VK_ERROR_DEVICE_LOST, "vkWaitForFences(device, ...)");
+  } catch (const hp::Error& e) {
+    EXPECT_NE(std::string(e.what()).find("vkWaitForFences(device, ...) failed: VK_ERROR_DEVICE_LOST"), std::string::npos) << e.what();
+  }
+  try {
+    hp::vk::check(VK_ERROR_OUT_OF_HOST_MEMORY, "vkCreateBuffer(device, ...)");
+    FAIL() << "expected hp::Error";
+  } catch (const hp::vk::DeviceLost&) {
+    FAIL() << "only VK_ERROR_DEVICE_LOST is a DeviceLost";
+  } catch (const hp::Error&) {
+  }
 }
 
 // An application's device handed to hairpipe: adopt() checks what it can and never waits idle on it.
