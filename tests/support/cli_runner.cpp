@@ -130,9 +130,24 @@ Xvfb::~Xvfb() {
   }
 }
 
+namespace {
+// One folder per test process (CTest runs each test in its own process, and several checkouts may run
+// their suites at once on one machine): fixed names in /tmp then never collide. Removed at exit.
+struct ProcessTempFolder {
+  std::filesystem::path path =
+      std::filesystem::temp_directory_path() / ("hairpipe-test-" + std::to_string(::getpid()));
+  ProcessTempFolder() { std::filesystem::create_directories(path); }
+  ~ProcessTempFolder() {
+    std::error_code ignored;
+    std::filesystem::remove_all(path, ignored);
+  }
+};
+}  // namespace
+
 std::filesystem::path freshTempPath(const std::string& name) {
-  auto path = std::filesystem::temp_directory_path() / name;
-  std::filesystem::remove_all(path);  // a file or a folder a previous run left
+  static ProcessTempFolder folder;
+  auto path = folder.path / name;
+  std::filesystem::remove_all(path);  // a file or a folder this process wrote earlier
   return path;
 }
 
@@ -146,7 +161,9 @@ void expectRefused(const std::vector<std::string>& command, const std::vector<Re
     const CliResult r = runCli(args);
     EXPECT_EQ(r.exitCode, 1) << shown;
     EXPECT_NE(r.err.find(c.needle), std::string::npos) << shown << ": stderr: " << r.err;
-    if (!output.empty()) EXPECT_FALSE(std::filesystem::exists(output)) << shown << ": output written";
+    if (!output.empty()) {
+      EXPECT_FALSE(std::filesystem::exists(output)) << shown << ": output written";
+    }
   }
 }
 }  // namespace hp::test

@@ -46,7 +46,7 @@ class Xvfb {
   pid_t pid_ = 0;
   std::string display_;
 };
-// A path in the temp directory with nothing at it yet (an earlier run's file is removed).
+// A path in this test process's own temp folder with nothing at it yet (removed when the process exits).
 std::filesystem::path freshTempPath(const std::string& name);
 
 // One refused invocation: the options appended to the command, and text the error must contain.
