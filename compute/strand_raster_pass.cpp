@@ -1,6 +1,7 @@
 #include "compute/strand_raster_pass.h"
 
 #include <algorithm>
+#include <utility>
 #include <string>
 
 #include "engine/error.h"
@@ -44,6 +45,9 @@ const vk::Binding kBindings[] = {
     {gpu::RASTER_BINDING_OUTPUT, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, kCompute},
     {gpu::RASTER_BINDING_PARAMS, kStorage, kCompute},
     {gpu::RASTER_BINDING_TILE_DEPTH, kStorage, kCompute},
+    {gpu::RASTER_BINDING_SHADE_FLAGS, kStorage, kCompute},
+    {gpu::RASTER_BINDING_SHADE_LIST, kStorage, kCompute},
+    {gpu::RASTER_BINDING_SHADE_ARGS, kStorage, kCompute},
 };
 constexpr VkBufferUsageFlags kStorageUsage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
 constexpr VkBufferUsageFlags kArmedUsage =
@@ -67,7 +71,7 @@ vk::Buffer deviceBuffer(const vk::Context& ctx, VkDeviceSize bytes, VkBufferUsag
 }
 
 gpu::RasterParams baseParams(std::uint32_t tilesX, std::uint32_t tilesY, std::uint32_t budget,
-                             std::uint32_t capacity, VkExtent2D extent, std::uint32_t q) {
+                             std::uint32_t capacity, VkExtent2D extent) {
   gpu::RasterParams p{};
   p.tilesX = tilesX;
   p.tilesY = tilesY;
@@ -75,9 +79,17 @@ gpu::RasterParams baseParams(std::uint32_t tilesX, std::uint32_t tilesY, std::ui
   p.capacity = capacity;
   p.width = extent.width;
   p.height = extent.height;
-  p.verticesPerStrand = q;
   return p;
 }
+
+std::size_t chunkCount(std::span<const RasterSource> sources) {
+  std::size_t n = 0;
+  for (const RasterSource& s : sources) n += s.strands->chunks().size();
+  return n;
+}
+
+// The shade dispatch arguments re-armed every frame: (0, 1, 1) groups and nothing listed, per chunk.
+std::vector<glm::uvec4> armedShadeArgs(std::size_t chunks) { return std::vector<glm::uvec4>(chunks, {0u, 1u, 1u, 0u}); }
 }  // namespace
 
 void RasterSettings::validate() const {
@@ -87,42 +99,52 @@ void RasterSettings::validate() const {
 
 std::uint32_t rasterListCapacity(std::uint64_t segments, std::uint64_t tiles, std::uint64_t maxRangeBytes) {
   const std::uint64_t wanted = segments * 8 + tiles * 16;
-  return std::uint32_t(std::clamp<std::uint64_t>(wanted, 1024, std::min<std::uint64_t>(maxRangeBytes / 4, 0xFFFFFFFFu)));
+  return std::uint32_t(std::clamp<std::uint64_t>(wanted, 1024, std::min<std::uint64_t>(maxRangeBytes / 8, 0xFFFFFFFFu)));
 }
 
-StrandRasterPass::StrandRasterPass(const vk::Context& ctx, const StrandBuffers& strands, const ShadingWriter& shading,
-                                   VkExtent2D extent, const RasterSettings& settings)
+StrandRasterPass::StrandRasterPass(const vk::Context& ctx, std::span<const RasterSource> sources, VkExtent2D extent,
+                                   const RasterSettings& settings)
     : ctx_(ctx), extent_(extent), settings_(settings) {
   settings.validate();
   if (extent.width == 0 || extent.height == 0) throw Error("compute raster: the extent must be non-zero");
+  if (sources.empty()) throw Error("compute raster: no strand source");
   tilesX_ = divUp(extent.width, gpu::RASTER_TILE_SIZE);
   tilesY_ = divUp(extent.height, gpu::RASTER_TILE_SIZE);
-  const StrandLayout& layout = strands.layout();
-  q_ = layout.verticesPerStrand;
   const VkDeviceSize limit = ctx.properties().limits.maxStorageBufferRange;
-  const std::uint64_t vertices = layout.strandVertexCount();
+  std::uint64_t vertices = 0, segments = 0;
+  for (const RasterSource& source : sources) {
+    const StrandLayout& layout = source.strands->layout();
+    vertices += layout.strandVertexCount();
+    segments += std::uint64_t(layout.strandCount) * (layout.verticesPerStrand - 1);
+    sourceVertices_.push_back(std::uint32_t(layout.strandVertexCount()));
+  }
   const std::uint64_t tiles = std::uint64_t(tilesX_) * tilesY_;
-  capacity_ = rasterListCapacity(std::uint64_t(layout.strandCount) * (q_ - 1), tiles, limit);
+  const std::size_t chunks = chunkCount(sources);
+  capacity_ = rasterListCapacity(segments, tiles, limit);
   screen_ = deviceBuffer(ctx, vertices * 16, kStorageUsage, "screen vertices", limit);
   colors_ = deviceBuffer(ctx, vertices * 8, kStorageUsage, "vertex colours", limit);
+  shadeFlags_ = deviceBuffer(ctx, vertices * 4, kArmedUsage, "shade flags", limit);
+  shadeList_ = deviceBuffer(ctx, vertices * 4, kStorageUsage, "shade list", limit);
+  shadeArgs_ = deviceBuffer(ctx, chunks * 16, kArmedUsage | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, "shade dispatch", limit);
   state_ = deviceBuffer(ctx, sizeof(gpu::RasterState), kArmedUsage, "state", limit);
   counts_ = deviceBuffer(ctx, tiles * gpu::RASTER_DEPTH_BINS * 4, kArmedUsage, "key counts", limit);
   keys_ = deviceBuffer(ctx, tiles * gpu::RASTER_DEPTH_BINS * 8, kStorageUsage, "keys", limit);
   tiles_ = deviceBuffer(ctx, tiles * 8, kStorageUsage, "tiles", limit);
   tileDepth_ = deviceBuffer(ctx, tiles * 4, kStorageUsage, "tile head depth", limit);
   blocks_ = deviceBuffer(ctx, divUp(std::uint32_t(tiles), gpu::RASTER_SCAN_SIZE) * 4, kStorageUsage, "blocks", limit);
-  list_ = deviceBuffer(ctx, VkDeviceSize(capacity_) * 4, kStorageUsage, "tile lists", limit);
+  list_ = deviceBuffer(ctx, VkDeviceSize(capacity_) * 8, kStorageUsage, "tile lists", limit);
   output_ = vk::Image(ctx, {extent.width, extent.height, 1, VK_FORMAT_R16G16B16A16_SFLOAT,
                             VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
                             VK_SAMPLE_COUNT_1_BIT, "raster hair image"});
   sampler_ = vk::Sampler(ctx, "raster depth sampler", VK_FILTER_NEAREST);  // D32 cannot filter
   const gpu::RasterState armed = armedState();
   vk::uploadBytes(ctx, state_, &armed, sizeof(armed), vk::BufferUse::ComputeWrite);
-  bind(strands, shading);
+  bind(sources);
   const auto setLayout = chunks_.front().set.layout();
   const auto pipeline = [&](const char* shader, std::uint32_t size, const char* name) {
     return vk::ComputePipeline(ctx, shader, size, {setLayout}, 0, name);
   };
+  project_ = pipeline("raster_project.comp", gpu::RASTER_WORKGROUP_SIZE, "raster project");
   shade_ = pipeline("raster_shade.comp", gpu::RASTER_WORKGROUP_SIZE, "raster shade");
   tileDepthPipeline_ = pipeline("raster_tile_depth.comp", gpu::RASTER_WORKGROUP_SIZE, "raster tile depth");
   count_ = vk::ComputePipeline(ctx, "raster_bin.comp", gpu::RASTER_WORKGROUP_SIZE, {setLayout}, 0, "raster count",
@@ -134,40 +156,56 @@ StrandRasterPass::StrandRasterPass(const vk::Context& ctx, const StrandBuffers& 
   fine_ = pipeline("raster_fine.comp", gpu::RASTER_FINE_SIZE, "raster fine");
 }
 
-void StrandRasterPass::bind(const StrandBuffers& strands, const ShadingWriter& shading) {
-  if (strands.layout().verticesPerStrand != q_ || strands.layout().strandVertexCount() * 16 > screen_.size())
-    throw Error("compute raster: bind() needs strand buffers of the size the pass was built for");
+void StrandRasterPass::bind(std::span<const RasterSource> sources) {
+  if (sources.size() != sourceVertices_.size())
+    throw Error("compute raster: bind() needs the sources the pass was built for");
+  const std::uint32_t chunkTotal = std::uint32_t(chunkCount(sources));
   std::vector<Chunk> chunks;
-  for (const StrandChunk& c : strands.chunks()) {
-    const std::string name = "raster [chunk " + std::to_string(chunks.size()) + "]";
-    gpu::RasterParams params = baseParams(tilesX_, tilesY_, settings_.tileBudget, capacity_, extent_, q_);
-    params.firstStrand = c.range.firstStrand;
-    params.strandCount = c.range.strandCount;
-    Chunk chunk{vk::DescriptorSet(ctx_, kBindings, name),
-                vk::Buffer(ctx_, sizeof(params), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                           vk::MemoryKind::DeviceLocal, name + " params"),
-                c.range.strandCount};
-    vk::uploadBytes(ctx_, chunk.params, &params, sizeof(params), vk::BufferUse::ComputeRead);
-    const vk::DescriptorSet& set = chunk.set;
-    shading(set);
-    set.writeStorageBuffer(gpu::RASTER_BINDING_PARAMS, chunk.params.handle());
-    set.writeStorageBuffer(gpu::RENDER_BINDING_POSITIONS, c.positions.handle());
-    set.writeStorageBuffer(gpu::RENDER_BINDING_TANGENTS, c.tangents.handle());
-    set.writeStorageBuffer(gpu::RENDER_BINDING_ATTRIBUTES, c.attributes.handle());
-    set.writeStorageBuffer(gpu::RASTER_BINDING_SCREEN, screen_.handle());
-    set.writeStorageBuffer(gpu::RASTER_BINDING_COLORS, colors_.handle());
-    set.writeStorageBuffer(gpu::RASTER_BINDING_STATE, state_.handle());
-    set.writeStorageBuffer(gpu::RASTER_BINDING_COUNTS, counts_.handle());
-    set.writeStorageBuffer(gpu::RASTER_BINDING_KEYS, keys_.handle());
-    set.writeStorageBuffer(gpu::RASTER_BINDING_TILES, tiles_.handle());
-    set.writeStorageBuffer(gpu::RASTER_BINDING_BLOCKS, blocks_.handle());
-    set.writeStorageBuffer(gpu::RASTER_BINDING_LIST, list_.handle());
-    set.writeStorageBuffer(gpu::RASTER_BINDING_TILE_DEPTH, tileDepth_.handle());
-    set.writeStorageImage(gpu::RASTER_BINDING_OUTPUT, output_.view());
-    if (depth_ != VK_NULL_HANDLE) set.writeSampledImage(gpu::RASTER_BINDING_DEPTH, depth_, sampler_.handle());
-    chunks.push_back(std::move(chunk));
+  std::uint32_t firstVertex = 0;
+  for (std::size_t s = 0; s < sources.size(); ++s) {
+    const StrandBuffers& strands = *sources[s].strands;
+    const std::uint32_t q = strands.layout().verticesPerStrand;
+    if (strands.layout().strandVertexCount() != sourceVertices_[s])
+      throw Error("compute raster: bind() needs strand buffers of the size the pass was built for");
+    for (const StrandChunk& c : strands.chunks()) {
+      const std::string name = "raster [source " + std::to_string(s) + " chunk " + std::to_string(chunks.size()) + "]";
+      gpu::RasterParams params = baseParams(tilesX_, tilesY_, settings_.tileBudget, capacity_, extent_);
+      params.firstStrand = c.range.firstStrand;
+      params.strandCount = c.range.strandCount;
+      params.firstVertex = firstVertex;
+      params.verticesPerStrand = q;
+      params.chunkIndex = std::uint32_t(chunks.size());
+      params.chunkCount = chunkTotal;
+      params.maxGroupsX = ctx_.properties().limits.maxComputeWorkGroupCount[0];
+      firstVertex += c.range.strandCount * q;
+      Chunk chunk{vk::DescriptorSet(ctx_, kBindings, name),
+                  vk::Buffer(ctx_, sizeof(params), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                             vk::MemoryKind::DeviceLocal, name + " params"),
+                  c.range.strandCount, q};
+      vk::uploadBytes(ctx_, chunk.params, &params, sizeof(params), vk::BufferUse::ComputeRead);
+      writeChunkSet(chunk.set, sources[s].shading, c, chunk.params);
+      chunks.push_back(std::move(chunk));
+    }
   }
   chunks_ = std::move(chunks);
+}
+
+void StrandRasterPass::writeChunkSet(const vk::DescriptorSet& set, const ShadingWriter& shading, const StrandChunk& c,
+                                     const vk::Buffer& params) const {
+  shading(set);
+  set.writeStorageBuffer(gpu::RASTER_BINDING_PARAMS, params.handle());
+  set.writeStorageBuffer(gpu::RENDER_BINDING_POSITIONS, c.positions.handle());
+  set.writeStorageBuffer(gpu::RENDER_BINDING_TANGENTS, c.tangents.handle());
+  set.writeStorageBuffer(gpu::RENDER_BINDING_ATTRIBUTES, c.attributes.handle());
+  for (const auto& [binding, buffer] :
+       {std::pair{gpu::RASTER_BINDING_SCREEN, &screen_}, {gpu::RASTER_BINDING_COLORS, &colors_},
+        {gpu::RASTER_BINDING_STATE, &state_}, {gpu::RASTER_BINDING_COUNTS, &counts_}, {gpu::RASTER_BINDING_KEYS, &keys_},
+        {gpu::RASTER_BINDING_TILES, &tiles_}, {gpu::RASTER_BINDING_BLOCKS, &blocks_}, {gpu::RASTER_BINDING_LIST, &list_},
+        {gpu::RASTER_BINDING_TILE_DEPTH, &tileDepth_}, {gpu::RASTER_BINDING_SHADE_FLAGS, &shadeFlags_},
+        {gpu::RASTER_BINDING_SHADE_LIST, &shadeList_}, {gpu::RASTER_BINDING_SHADE_ARGS, &shadeArgs_}})
+    set.writeStorageBuffer(binding, buffer->handle());
+  set.writeStorageImage(gpu::RASTER_BINDING_OUTPUT, output_.view());
+  if (depth_ != VK_NULL_HANDLE) set.writeSampledImage(gpu::RASTER_BINDING_DEPTH, depth_, sampler_.handle());
 }
 
 void StrandRasterPass::setDepth(VkImageView depth) {
@@ -180,21 +218,28 @@ void StrandRasterPass::recordArm(VkCommandBuffer cmd) const {
   vk::memoryBarrier(ctx_, cmd, vk::BufferUse::ComputeWrite, vk::BufferUse::ComputeWrite);
   vk::bufferBarrier(ctx_, cmd, state_.handle(), vk::BufferUse::ComputeWrite, vk::BufferUse::TransferDst);
   vk::bufferBarrier(ctx_, cmd, counts_.handle(), vk::BufferUse::ComputeWrite, vk::BufferUse::TransferDst);
+  vk::bufferBarrier(ctx_, cmd, shadeFlags_.handle(), vk::BufferUse::ComputeWrite, vk::BufferUse::TransferDst);
+  // The shade dispatches read their arguments both as indirect commands and in the shader.
+  vk::bufferBarrier(ctx_, cmd, shadeArgs_.handle(), vk::BufferUse::IndirectRead, vk::BufferUse::TransferDst);
+  vk::bufferBarrier(ctx_, cmd, shadeArgs_.handle(), vk::BufferUse::ComputeWrite, vk::BufferUse::TransferDst);
   const gpu::RasterState armed = armedState();
+  const std::vector<glm::uvec4> args = armedShadeArgs(chunks_.size());
   ctx_.fn().vkCmdUpdateBuffer(cmd, state_.handle(), 0, sizeof(armed), &armed);
+  ctx_.fn().vkCmdUpdateBuffer(cmd, shadeArgs_.handle(), 0, args.size() * sizeof(glm::uvec4), args.data());
   ctx_.fn().vkCmdFillBuffer(cmd, counts_.handle(), 0, VK_WHOLE_SIZE, 0u);
-  vk::bufferBarrier(ctx_, cmd, state_.handle(), vk::BufferUse::TransferDst, vk::BufferUse::ComputeWrite);
-  vk::bufferBarrier(ctx_, cmd, counts_.handle(), vk::BufferUse::TransferDst, vk::BufferUse::ComputeWrite);
+  ctx_.fn().vkCmdFillBuffer(cmd, shadeFlags_.handle(), 0, VK_WHOLE_SIZE, 0u);
+  for (const vk::Buffer* b : {&state_, &counts_, &shadeFlags_, &shadeArgs_})
+    vk::bufferBarrier(ctx_, cmd, b->handle(), vk::BufferUse::TransferDst, vk::BufferUse::ComputeWrite);
   // The previous frame's composite sampled the output; its contents are rewritten in full.
   vk::imageBarrier(ctx_, cmd, output_.handle(), VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::FragmentSampledDiscard,
                    vk::ImageUse::ComputeStorageWrite);
 }
 
 void StrandRasterPass::recordPerChunk(VkCommandBuffer cmd, const vk::ComputePipeline& pipeline,
-                                      std::uint32_t perStrand) const {
+                                      std::uint32_t perStrandLess) const {
   for (const Chunk& c : chunks_) {
     pipeline.bind(cmd, c.set.set());
-    pipeline.dispatch(cmd, c.strandCount * perStrand);
+    pipeline.dispatch(cmd, c.strandCount * (c.verticesPerStrand - perStrandLess));
   }
 }
 
@@ -221,24 +266,31 @@ void end(VkCommandBuffer cmd, vk::GpuProfiler* profiler) {
 void StrandRasterPass::recordBinning(VkCommandBuffer cmd, vk::GpuProfiler* profiler) const {
   if (depth_ == VK_NULL_HANDLE) throw Error("compute raster: setDepth() was not called before record()");
   const std::uint32_t tiles = tilesX_ * tilesY_;
-  begin(cmd, profiler, "raster shade");
-  recordArm(cmd);
-  recordPerChunk(cmd, shade_, q_);
-  end(cmd, profiler);
   begin(cmd, profiler, "raster bin");
+  recordArm(cmd);
+  recordPerChunk(cmd, project_, 0);
   recordOnce(cmd, tileDepthPipeline_, tiles);
   chain(ctx_, cmd);
-  recordPerChunk(cmd, count_, q_ - 1);
+  recordPerChunk(cmd, count_, 1);
   chain(ctx_, cmd);
   recordOnce(cmd, scanTiles_, divUp(tiles, gpu::RASTER_SCAN_SIZE) * gpu::RASTER_SCAN_SIZE);
   chain(ctx_, cmd);
   recordOnce(cmd, scanBlocks_, gpu::RASTER_SCAN_SIZE);
   chain(ctx_, cmd);
-  recordPerChunk(cmd, scatter_, q_ - 1);
+  recordPerChunk(cmd, scatter_, 1);
   end(cmd, profiler);
 }
 
 void StrandRasterPass::recordFine(VkCommandBuffer cmd, vk::GpuProfiler* profiler) const {
+  begin(cmd, profiler, "raster shade");
+  // The scan wrote the shade dispatches (indirect arguments) and the count step the shade lists.
+  vk::bufferBarrier(ctx_, cmd, shadeArgs_.handle(), vk::BufferUse::ComputeWrite, vk::BufferUse::IndirectRead);
+  chain(ctx_, cmd);
+  for (std::size_t i = 0; i < chunks_.size(); ++i) {
+    shade_.bind(cmd, chunks_[i].set.set());
+    shade_.dispatchIndirect(cmd, shadeArgs_.handle(), i * sizeof(glm::uvec4));
+  }
+  end(cmd, profiler);
   begin(cmd, profiler, "raster fine");
   chain(ctx_, cmd);
   recordOnce(cmd, fine_, tilesX_ * tilesY_ * gpu::RASTER_FINE_SIZE);

@@ -1,11 +1,15 @@
 #pragma once
 // Contract: the compute strand rasterizer for the camera view (REFERENCES.md §8; layouts and the coverage
-// formula in shaders/shared/raster.h). Over the render strands of every chunk it
-//   shade    per vertex: radiance by the graphics path's hairRadiance (opacity maps looked up at the
-//            vertex: strand-space shading) and the projection to pixels, NDC depth and width;
-//   bin      per tile: the farthest head depth; per segment: count its (8x8 tile, depth bin) keys, leaving
-//            out tiles where the head hides it, scan the tiles (tile budget: nearest bins kept first),
-//            scatter the segment ids into per-tile lists ordered near to far by depth bin;
+// formula in shaders/shared/raster.h). Over the render strands of every chunk of every source (one source
+// per hair instance: its strands and its shading resources; all share one set of tile lists, so hair of
+// different heads interleaves correctly by depth) it
+//   bin      per vertex: the projection to pixels, NDC depth and width; per tile: the farthest head depth;
+//            per segment: count its (8x8 tile, depth bin) keys with the rows of the tile it may cover,
+//            leaving out tiles where the head hides it, and list the ends of kept segments for shading;
+//            scan the tiles (tile budget: nearest bins kept first), scatter the segment ids into per-tile
+//            lists ordered near to far by depth bin;
+//   shade    per listed vertex (indirect dispatch): radiance by the graphics path's hairRadiance (opacity
+//            maps looked up at the vertex: strand-space shading);
 //   fine     per pixel: exact band coverage, hidden at or behind the head's depth, composited front to
 //            back until T < 1/255, into output(): RGBA16F, premultiplied radiance, alpha = 1 - T.
 // The pass owns every buffer and image it writes and the barriers between its own steps. The frame
@@ -17,6 +21,7 @@
 #include <volk.h>
 
 #include <functional>
+#include <span>
 #include <vector>
 
 #include "compute/strand_buffers.h"
@@ -45,13 +50,23 @@ struct RasterStats {
 // what hairRadiance reads.
 using ShadingWriter = std::function<void(const vk::DescriptorSet&)>;
 
+// One head's strands and the shading resources its segments are shaded with.
+struct RasterSource {
+  const StrandBuffers* strands = nullptr;
+  ShadingWriter shading;
+};
+
 class StrandRasterPass {
  public:
-  // Throws hp::Error for a zero extent, bad settings or strand buffers past maxStorageBufferRange.
+  // Throws hp::Error for no source, a zero extent, bad settings or buffers past maxStorageBufferRange.
+  StrandRasterPass(const vk::Context& ctx, std::span<const RasterSource> sources, VkExtent2D extent,
+                   const RasterSettings& settings);
   StrandRasterPass(const vk::Context& ctx, const StrandBuffers& strands, const ShadingWriter& shading,
-                   VkExtent2D extent, const RasterSettings& settings);
-  // Outside the frame loop: rewrite descriptors after the strands or shading resources changed.
-  void bind(const StrandBuffers& strands, const ShadingWriter& shading);
+                   VkExtent2D extent, const RasterSettings& settings)
+      : StrandRasterPass(ctx, std::span<const RasterSource>(std::vector<RasterSource>{{&strands, shading}}), extent,
+                         settings) {}
+  // Outside the frame loop: rewrite descriptors after the shading resources changed (same strand sizes).
+  void bind(std::span<const RasterSource> sources);
   // The head's depth (single sample, D32); 1.0 where nothing was drawn. Must be set before record().
   void setDepth(VkImageView depth);
 
@@ -59,7 +74,7 @@ class StrandRasterPass {
     recordBinning(cmd, profiler);
     recordFine(cmd, profiler);
   }
-  // record() in two halves: shade + bin (readStats() is complete after it), then the fine raster.
+  // record() in two halves: project + bin (readStats() is complete after it), then shade + fine raster.
   void recordBinning(VkCommandBuffer cmd, vk::GpuProfiler* profiler = nullptr) const;
   void recordFine(VkCommandBuffer cmd, vk::GpuProfiler* profiler = nullptr) const;
 
@@ -74,21 +89,27 @@ class StrandRasterPass {
     vk::DescriptorSet set;
     vk::Buffer params;  // gpu::RasterParams of the chunk (a storage buffer: no push constants, see .cpp)
     std::uint32_t strandCount;
+    std::uint32_t verticesPerStrand;
   };
   void recordArm(VkCommandBuffer cmd) const;
-  void recordPerChunk(VkCommandBuffer cmd, const vk::ComputePipeline& pipeline, std::uint32_t perStrand) const;
+  void writeChunkSet(const vk::DescriptorSet& set, const ShadingWriter& shading, const StrandChunk& c,
+                     const vk::Buffer& params) const;
+  // One dispatch per chunk of strandCount * (verticesPerStrand - perStrandLess) invocations.
+  void recordPerChunk(VkCommandBuffer cmd, const vk::ComputePipeline& pipeline, std::uint32_t perStrandLess) const;
   void recordOnce(VkCommandBuffer cmd, const vk::ComputePipeline& pipeline, std::uint32_t threads) const;
 
   const vk::Context& ctx_;
   VkExtent2D extent_;
   RasterSettings settings_;
-  std::uint32_t tilesX_, tilesY_, q_ = 0, capacity_ = 0;
+  std::uint32_t tilesX_, tilesY_, capacity_ = 0;
+  std::vector<std::uint32_t> sourceVertices_;  // render vertices of each source (bind() must match)
   vk::Buffer screen_, colors_, state_, counts_, keys_, tiles_, blocks_, list_, tileDepth_;
+  vk::Buffer shadeFlags_, shadeList_, shadeArgs_;
   vk::Image output_;
   vk::Sampler sampler_;
   VkImageView depth_ = VK_NULL_HANDLE;
   std::vector<Chunk> chunks_;
-  vk::ComputePipeline shade_, tileDepthPipeline_, count_, scatter_, scanTiles_, scanBlocks_, fine_;
+  vk::ComputePipeline project_, shade_, tileDepthPipeline_, count_, scatter_, scanTiles_, scanBlocks_, fine_;
 };
 
 // List entries reserved for a frame: every segment in 8 tiles plus 16 per tile (the default head at

@@ -55,7 +55,7 @@ HairInstance::HairInstance(Renderer& renderer, const HairAsset& asset, const Ins
   strandPass_ = makeStrandPass(*geometry_, *marschner_);
 }
 
-HairInstance::~HairInstance() = default;
+HairInstance::~HairInstance() { renderer_.forgetInstance(*this); }
 
 std::uint32_t HairInstance::frameOffset(std::uint64_t frame, std::uint32_t view) const {
   const RendererSettings& rs = renderer_.settings();
@@ -101,6 +101,7 @@ void HairInstance::setMaterial(const HairMaterial& material, LutMode mode) {
   replaceStrandPass(std::move(pass));
   settings_.material = material;
   settings_.lutMode = mode;
+  renderer_.instanceChanged(*this);  // a compute raster target names the old LUTs
 }
 
 void HairInstance::setLook(const render::LookSettings& look) {
@@ -122,5 +123,6 @@ void HairInstance::setStrands(const InterpolationTopology& topology, const compu
   geometry_ = std::move(geometry);
   replaceStrandPass(std::move(pass));
   settings_ = next;
+  renderer_.instanceChanged(*this);  // a compute raster target reads the old strand buffers
 }
 }  // namespace hp

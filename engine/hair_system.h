@@ -36,9 +36,6 @@ struct HairSystemSettings {
   compute::RasterSettings rasterSettings;
 };
 
-// Auto -> the path measured faster on this device type (docs/PERFORMANCE.md "Compute rasterizer").
-RasterMode resolveRasterMode(RasterMode mode, VkPhysicalDeviceType type);
-
 struct DrawView {
   CameraMatrices camera;
   VkExtent2D extent{1, 1};
@@ -63,9 +60,9 @@ class HairSystem {
   // ImageUse::FragmentSampled.
   void recordRaster(VkCommandBuffer cmd, const DrawView& view, vk::GpuProfiler* profiler = nullptr);
   void recordComposite(VkCommandBuffer cmd, VkExtent2D extent, vk::GpuProfiler* profiler = nullptr) const;
-  RasterMode raster() const { return raster_; }
-  const vk::Image& rasterImage() const;
-  compute::RasterStats rasterStats() const;  // blocking readback of the last frame's list statistics
+  RasterMode raster() const { return renderer_.raster(); }
+  const vk::Image& rasterImage() const { return renderer_.rasterImage(); }
+  compute::RasterStats rasterStats() const { return renderer_.rasterStats(); }  // blocking readback
 
   // Between frames, with earlier frames possibly in flight: the old textures are retired, not idled on.
   void setMaterial(const HairMaterial& material, LutMode mode);
@@ -81,17 +78,9 @@ class HairSystem {
   HairInstance& instance() { return *instance_; }
 
  private:
-  compute::ShadingWriter shadingWriter() const;
-  void rebuildRaster(VkExtent2D extent);
-
   Renderer renderer_;
   std::unique_ptr<HairInstance> instance_;
   std::uint64_t frame_ = 0;
   HairSystemSettings settings_;
-  RasterMode raster_;
-  vk::Buffer rasterFrame_;  // the compute raster's gpu::RenderFrame, written with vkCmdUpdateBuffer per frame
-  std::shared_ptr<compute::StrandRasterPass> rasterPass_;  // retired through the Renderer when replaced
-  std::unique_ptr<render::CompositePass> composite_;
-  VkImageView rasterDepth_ = VK_NULL_HANDLE;
 };
 }  // namespace hp

@@ -19,6 +19,7 @@ const RendererSettings& validated(const RendererSettings& s) {
 Renderer::Renderer(const vk::Context& ctx, const RendererSettings& settings)
     : ctx_(ctx),
       settings_(validated(settings)),
+      raster_(resolveRasterMode(settings.raster, ctx.properties().deviceType)),
       pipelines_(ctx),
       shadows_(std::make_unique<render::ShadowMaps>(ctx, settings.opacity)),
       frameLights_(settings.framesInFlight),
@@ -36,8 +37,57 @@ std::unique_ptr<HairInstance> Renderer::createInstance(const HairAsset& asset, c
 }
 
 void Renderer::destroyInstance(std::unique_ptr<HairInstance> instance) {
-  if (instance) retire(std::shared_ptr<HairInstance>(std::move(instance)));
+  if (!instance) return;
+  instanceChanged(*instance, true);
+  retire(std::shared_ptr<HairInstance>(std::move(instance)));
 }
+
+void Renderer::setRasterTarget(VkExtent2D extent, VkImageView depth, std::span<HairInstance* const> instances) {
+  if (raster_ != RasterMode::Compute) throw Error("Renderer::setRasterTarget: the raster mode is not compute");
+  for (const HairInstance* i : instances)
+    if (!i || &i->renderer_ != this) throw Error("Renderer: an instance is null or belongs to another Renderer");
+  auto target = std::make_shared<ComputeRaster>(ctx_, settings_, *shadows_, extent, depth, instances);
+  if (rasterTarget_) retire(rasterTarget_);  // frames in flight may still use its buffers and descriptors
+  rasterTarget_ = std::move(target);
+}
+
+void Renderer::instanceChanged(const HairInstance& instance, bool removed) {
+  if (!rasterTarget_ || !rasterTarget_->holds(&instance)) return;
+  std::vector<HairInstance*> kept;
+  for (HairInstance* i : rasterTarget_->instances())
+    if (!removed || i != &instance) kept.push_back(i);
+  const std::shared_ptr<ComputeRaster> old = rasterTarget_;
+  retire(old);
+  rasterTarget_.reset();
+  if (!kept.empty()) setRasterTarget(old->extent(), old->depth(), kept);
+}
+
+void Renderer::forgetInstance(const HairInstance& instance) noexcept {
+  if (!rasterTarget_ || !rasterTarget_->holds(&instance)) return;
+  retired_.push_back({lastFrame_, std::move(rasterTarget_)});
+  rasterTarget_.reset();
+}
+
+const ComputeRaster& Renderer::target() const {
+  if (!rasterTarget_) throw Error("Renderer: the compute raster needs setRasterTarget() before recording");
+  return *rasterTarget_;
+}
+
+void Renderer::recordRaster(VkCommandBuffer cmd, std::uint64_t frame, const View& view, vk::GpuProfiler* profiler) {
+  const ComputeRaster& t = target();
+  view.validate(settings_.maxViewsPerFrame);
+  beginFrame(frame, t.instances());
+  t.record(cmd, view, frameLights_[frame % settings_.framesInFlight], frameHeadShadows_[frame % settings_.framesInFlight],
+           profiler);
+}
+
+void Renderer::recordComposite(VkCommandBuffer cmd, VkExtent2D extent, vk::GpuProfiler* profiler) const {
+  target().recordComposite(cmd, extent, profiler);
+}
+
+const vk::Image& Renderer::rasterImage() const { return target().image(); }
+
+compute::RasterStats Renderer::rasterStats() const { return target().readStats(); }
 
 std::shared_ptr<render::MarschnerTextures> Renderer::marschner(const HairMaterial& material, LutMode mode) {
   std::erase_if(luts_, [](const Lut& l) { return l.textures.expired(); });
@@ -124,7 +174,7 @@ void Renderer::recordDraw(VkCommandBuffer cmd, std::uint64_t frame, const View& 
     if (profiler) profiler->begin(cmd, "head");
     i->head_->draw(cmd, view.extent, i->headToWorld(), offset);
     if (profiler) profiler->end(cmd);
-    if (!view.ribbons) continue;
+    if (!view.ribbons || raster_ == RasterMode::Compute) continue;
     if (profiler) profiler->begin(cmd, "shade");
     i->strandPass_->draw(cmd, view.extent, view.lines, offset);
     if (profiler) profiler->end(cmd);

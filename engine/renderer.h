@@ -8,7 +8,14 @@
 //                                               instance's strands and head in the same opacity maps (heads
 //                                               shadow each other); its own vkCmdBeginRendering on its maps
 //   recordDraw(cmd, frame, view, instances)     inside the application's vkCmdBeginRendering (attachments
-//                                               matching settings.formats): heads and hair ribbons
+//                                               matching settings.formats): heads and (graphics raster)
+//                                               hair ribbons
+// With the compute raster (settings.raster resolves to Compute), after setRasterTarget(extent, depth,
+// instances) outside the frame loop, the hair of those instances is drawn by
+//   recordDraw(cmd, frame, view, instances)     heads only; the application ends the rendering and puts
+//                                               its depth image in ImageUse::ComputeSampled
+//   recordRaster(cmd, frame, view)              outside rendering: the compute rasterizer into rasterImage()
+//   recordComposite(cmd, extent)                inside a rendering of the same attachments: hair over colour
 // once per frame in that order; recordDraw once per view (View::index distinct per view of a frame), all
 // views reusing the frame's shadows. Stages touched: COMPUTE_SHADER, COPY/CLEAR, VERTEX_SHADER,
 // FRAGMENT_SHADER, early/late fragment tests, colour output; in the application's attachments only colour
@@ -31,6 +38,7 @@
 #include <span>
 #include <vector>
 
+#include "engine/compute_raster.h"
 #include "engine/hair_instance.h"
 #include "engine/render/shadow_maps.h"
 #include "engine/renderer_settings.h"
@@ -57,6 +65,19 @@ class Renderer {
   void recordDraw(VkCommandBuffer cmd, std::uint64_t frame, const View& view,
                   std::span<HairInstance* const> instances, vk::GpuProfiler* profiler = nullptr);
 
+  // Compute raster only, outside the frame loop: rasterize `instances` (all in one set of tile lists)
+  // into an image of `extent` against the single-sample depth image view `depth`. Rebuilt by the Renderer
+  // when one of them changes strands or material or is destroyed; call again for another extent or set.
+  void setRasterTarget(VkExtent2D extent, VkImageView depth, std::span<HairInstance* const> instances);
+  // After recordDraw of the frame's view (heads drawn, depth in ImageUse::ComputeSampled), with the
+  // light recordShadows was given; leaves rasterImage() in ImageUse::FragmentSampled. View::index is unused
+  // (one raster target: one view of a frame).
+  void recordRaster(VkCommandBuffer cmd, std::uint64_t frame, const View& view, vk::GpuProfiler* profiler = nullptr);
+  void recordComposite(VkCommandBuffer cmd, VkExtent2D extent, vk::GpuProfiler* profiler = nullptr) const;
+  RasterMode raster() const { return raster_; }
+  const vk::Image& rasterImage() const;
+  compute::RasterStats rasterStats() const;  // blocking readback of the last frame's tile-list statistics
+
   // Shadow tuning that keeps the maps' resolution and format (strand/head opacity, k, bias, on/off).
   void setOpacityTuning(const render::OpacitySettings& opacity);
 
@@ -75,7 +96,14 @@ class Renderer {
   std::size_t retiredCount() const { return retired_.size(); }
 
  private:
+  friend class HairInstance;
   void beginFrame(std::uint64_t frame, std::span<HairInstance* const> instances);
+  // An instance's strands or material changed, or it goes (`removed`): the raster target follows.
+  void instanceChanged(const HairInstance& instance, bool removed = false);
+  // An instance destroyed without destroyInstance(): a raster target holding it is dropped (retired, not
+  // rebuilt: nothing may throw here); recordRaster then asks for setRasterTarget().
+  void forgetInstance(const HairInstance& instance) noexcept;
+  const ComputeRaster& target() const;
 
   struct Lut {
     HairMaterial material;
@@ -89,6 +117,7 @@ class Renderer {
 
   const vk::Context& ctx_;
   RendererSettings settings_;
+  RasterMode raster_;
   vk::PipelineLibrary pipelines_;
   std::unique_ptr<render::ShadowMaps> shadows_;
   std::vector<Lut> luts_;
@@ -96,5 +125,6 @@ class Renderer {
   std::vector<render::HeadShadowView> frameHeadShadows_;  // per ring slot: the heads' depth map framing
   std::vector<Retired> retired_;
   std::optional<std::uint64_t> lastFrame_;
+  std::shared_ptr<ComputeRaster> rasterTarget_;  // retired through retire() when replaced
 };
 }  // namespace hp

@@ -7,8 +7,17 @@
 #include "engine/hair/finite.h"
 
 namespace hp {
+RasterMode resolveRasterMode(RasterMode mode, VkPhysicalDeviceType type) {
+  if (mode != RasterMode::Auto) return mode;
+  // Measured on lavapipe (CPU): compute 10x cheaper than MSAA 4 ribbons (docs/PERFORMANCE.md). GPUs are
+  // unmeasured here; compute is the default there too, on the fragment-vs-compute evidence.
+  (void)type;
+  return RasterMode::Compute;
+}
+
 void RendererSettings::validate() const {
   opacity.validate();
+  rasterSettings.validate();
   // The strand shader builds its coverage sample mask in 32 bits (and gl_SampleMask[0] holds 32).
   if (formats.samples > VK_SAMPLE_COUNT_16_BIT) throw Error("RendererSettings.formats.samples must be at most 16");
   if (framesInFlight < 1 || framesInFlight > kMaxFramesInFlight)

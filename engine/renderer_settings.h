@@ -8,6 +8,8 @@
 
 #include "compute/scalp_input.h"
 #include "compute/strand_buffers.h"
+#include "compute/strand_raster_pass.h"
+#include "engine/hair/scene.h"
 #include "engine/hair/sim_params.h"
 #include "engine/render/attachment_formats.h"
 #include "engine/render/camera.h"
@@ -25,6 +27,11 @@ struct RendererSettings {
   render::OpacitySettings opacity;    // the shared opacity shadow maps (one light)
   std::uint32_t framesInFlight = 2;   // [1, kMaxFramesInFlight]
   std::uint32_t maxViewsPerFrame = 4; // [1, kMaxViewsPerFrame]: draws of one frame with different cameras
+  // How hair reaches the camera: Graphics (ribbons in recordDraw) or Compute (setRasterTarget,
+  // recordRaster, recordComposite; recordDraw draws the heads only). Auto resolves per device type
+  // (resolveRasterMode). Graphics by default: an embedding that only calls recordDraw keeps drawing hair.
+  RasterMode raster = RasterMode::Graphics;
+  compute::RasterSettings rasterSettings;
   void validate() const;
 };
 
@@ -37,6 +44,9 @@ struct InstanceSettings {
   ScalpInput scalp;  // where the roots come from: rigid head (default), skinned root frames, or bones
   void validate() const;
 };
+
+// Auto -> the path measured faster on this device type (docs/PERFORMANCE.md "Compute rasterizer").
+RasterMode resolveRasterMode(RasterMode mode, VkPhysicalDeviceType type);
 
 // One camera of a frame. Several views of one frame (a mirror, split screen) reuse its update and
 // shadows; each needs its own `index`, below RendererSettings::maxViewsPerFrame.

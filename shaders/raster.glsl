@@ -3,7 +3,8 @@
 #ifndef HP_RASTER_GLSL
 #define HP_RASTER_GLSL
 
-// The screen-space footprint of segment k of a global strand: the tiles it may touch and its depth bin.
+// The screen-space footprint of the segment from global vertex v to v + 1: the tiles it may touch and its
+// depth bin.
 struct Footprint {
   bool visible;
   uvec2 tileMin;
@@ -13,9 +14,8 @@ struct Footprint {
   vec4 b;
 };
 
-Footprint segmentFootprint(uint globalStrand, uint k) {
+Footprint segmentFootprint(uint v) {
   Footprint f;
-  uint v = globalStrand * params.verticesPerStrand + k;
   f.a = screen[v];
   f.b = screen[v + 1u];
   f.visible = false;
@@ -36,22 +36,34 @@ Footprint segmentFootprint(uint globalStrand, uint k) {
   return f;
 }
 
-// Whether a tile can hold a pixel the segment covers and the head does not hide: the tile's centre within
-// reach of the segment (a long diagonal segment's box holds many tiles it never touches), the tile's
-// square within reach of the segment's line (separating axis along the line's normal: a tile beside the
-// segment but within the half-diagonal circle is out), and the nearer end in front of the farthest head
-// depth in the tile (raster_tile_depth.comp; behind it every fragment fails raster_fine's depth test).
-bool footprintTouches(Footprint f, uvec2 tile) {
-  if (min(f.a.z, f.b.z) >= tileDepth[tile.y * params.tilesX + tile.x]) return false;
-  vec2 centre = (vec2(tile) + 0.5) * float(RASTER_TILE_SIZE);
+// The rows of a tile that can hold a pixel the segment covers and the head does not hide: bit r set when
+// row r may (0: the segment stays out of the tile's list). raster_fine.comp composites a pixel centre c
+// only when its foot point s on the segment (t in [0, 1]) is within half the width + 0.75 px of c, so s
+// lies within `reach` of the row's centre line in y and of the row's x span: the test below clips the
+// segment to the row's y band and compares its x range, conservatively (and exactly the same for the
+// count and scatter modes). A segment whose nearer end is at or behind the farthest head depth in the
+// tile (raster_tile_depth.comp) is out: every fragment it could give there fails raster_fine's depth test.
+uint footprintRows(Footprint f, uvec2 tile) {
+  if (min(f.a.z, f.b.z) >= tileDepth[tile.y * params.tilesX + tile.x]) return 0u;
+  float reach = 0.5 * max(f.a.w, f.b.w) + 0.75 + 1e-3;
   vec2 ab = f.b.xy - f.a.xy;
-  float len2 = max(dot(ab, ab), 1e-12);
-  float t = clamp(dot(centre - f.a.xy, ab) / len2, 0.0, 1.0);
-  float band = 0.5 * max(f.a.w, f.b.w) + 0.75;
-  if (distance(centre, f.a.xy + t * ab) > band + 0.7072 * float(RASTER_TILE_SIZE)) return false;
-  vec2 n = vec2(-ab.y, ab.x) * inversesqrt(len2);
-  float halfTile = 0.5 * float(RASTER_TILE_SIZE);
-  return abs(dot(centre - f.a.xy, n)) <= band + halfTile * (abs(n.x) + abs(n.y)) + 1e-3;
+  float x0 = float(tile.x * RASTER_TILE_SIZE) + 0.5;
+  float x1 = x0 + float(RASTER_TILE_SIZE - 1u);
+  bool level = abs(ab.y) < 1e-6;
+  float inv = level ? 0.0 : 1.0 / ab.y;
+  uint rows = 0u;
+  for (uint r = 0u; r < RASTER_TILE_SIZE; ++r) {
+    float y = float(tile.y * RASTER_TILE_SIZE + r) + 0.5;
+    float ta = level ? (abs(f.a.y - y) <= reach ? 0.0 : 2.0) : (y - reach - f.a.y) * inv;
+    float tb = level ? ta + 1.0 : (y + reach - f.a.y) * inv;
+    float t0 = max(min(ta, tb), 0.0);
+    float t1 = min(max(ta, tb), 1.0);
+    float xa = f.a.x + ab.x * t0;
+    float xb = f.a.x + ab.x * t1;
+    bool hit = t0 <= t1 && max(xa, xb) + reach >= x0 && min(xa, xb) - reach <= x1;
+    rows |= hit ? (1u << r) : 0u;
+  }
+  return rows;
 }
 
 uint tileListStart(uint tile) { return tiles[tile].x + blocks[tile / RASTER_SCAN_SIZE]; }

@@ -1,7 +1,7 @@
 #version 460
 // Compute rasterizer, per segment of a chunk: the (tile, depth bin) keys its footprint touches.
-// RASTER_MODE_COUNT counts them; RASTER_MODE_SCATTER (after the tile scan) writes the segment's global
-// id into each tile's list, keeping the first `keys.y` of each key (the tile budget, nearest bins first).
+// RASTER_MODE_COUNT counts them and lists the ends of every segment that touches a tile for shading; RASTER_MODE_SCATTER (after the tile scan) writes the segment's global
+// id and the rows of the tile it may cover into each tile's list, keeping the first `keys.y` of each key (the tile budget, nearest bins first).
 // The mode is a specialization constant (one pipeline each), not a uniform value lavapipe would inline.
 #include "shared/raster.h"
 #include "common.glsl"
@@ -14,28 +14,46 @@ layout(std430, binding = RASTER_BINDING_COUNTS) buffer Counts { uint counts[]; }
 layout(std430, binding = RASTER_BINDING_KEYS) readonly buffer Keys { uvec2 keys[]; };
 layout(std430, binding = RASTER_BINDING_TILES) readonly buffer Tiles { uvec2 tiles[]; };
 layout(std430, binding = RASTER_BINDING_BLOCKS) readonly buffer Blocks { uint blocks[]; };
-layout(std430, binding = RASTER_BINDING_LIST) writeonly buffer List { uint list[]; };
+layout(std430, binding = RASTER_BINDING_LIST) writeonly buffer List { uvec2 list[]; };
 layout(std430, binding = RASTER_BINDING_TILE_DEPTH) readonly buffer TileDepth { float tileDepth[]; };
 layout(std430, binding = RASTER_BINDING_PARAMS) readonly buffer Params { RasterParams params; };
+layout(std430, binding = RASTER_BINDING_SHADE_FLAGS) buffer ShadeFlags { uint shadeFlags[]; };
+layout(std430, binding = RASTER_BINDING_SHADE_LIST) writeonly buffer ShadeList { uint shadeList[]; };
+layout(std430, binding = RASTER_BINDING_SHADE_ARGS) buffer ShadeArgs { uvec4 shadeArgs[]; };
 #include "raster.glsl"
+
+// Lists vertex v for raster_shade.comp once (the segments on either side of it may both ask).
+void listForShading(uint v) {
+  if (atomicExchange(shadeFlags[v], 1u) != 0u) return;
+  uint slot = atomicAdd(shadeArgs[params.chunkIndex].w, 1u);
+  shadeList[params.firstVertex + slot] = v;
+}
 
 void main() {
   uint segments = params.verticesPerStrand - 1u;
   uint i = hpThreadId(RASTER_WORKGROUP_SIZE);
   if (i >= params.strandCount * segments) return;
-  uint strand = params.firstStrand + i / segments;
   uint k = i % segments;
-  Footprint f = segmentFootprint(strand, k);
+  uint v = params.firstVertex + (i / segments) * params.verticesPerStrand + k;
+  Footprint f = segmentFootprint(v);
   if (!f.visible) return;
-  uint id = (strand * params.verticesPerStrand + k) | (k + 1u == segments ? RASTER_LAST_SEGMENT : 0u);
+  uint id = v | (k + 1u == segments ? RASTER_LAST_SEGMENT : 0u);
+  bool listed = false;
   for (uint ty = f.tileMin.y; ty <= f.tileMax.y; ++ty)
     for (uint tx = f.tileMin.x; tx <= f.tileMax.x; ++tx) {
-      if (!footprintTouches(f, uvec2(tx, ty))) continue;
+      uint rows = footprintRows(f, uvec2(tx, ty));
+      if (rows == 0u) continue;
+      listed = true;
       uint tile = ty * params.tilesX + tx;
       uint key = tile * RASTER_DEPTH_BINS + f.bin;
       uint slot = atomicAdd(counts[key], 1u);
       if (MODE != RASTER_MODE_SCATTER || slot >= keys[key].y) continue;
       uint index = tileListStart(tile) + keys[key].x + slot;
-      if (index < params.capacity) list[index] = id;
+      if (index < params.capacity) list[index] = uvec2(id, rows);
     }
+  // Count mode: both ends of a segment in some tile's list get shaded; the others never composite.
+  if (MODE == RASTER_MODE_COUNT && listed) {
+    listForShading(v);
+    listForShading(v + 1u);
+  }
 }

@@ -13,7 +13,7 @@ layout(std430, binding = RASTER_BINDING_SCREEN) readonly buffer Screen { vec4 sc
 layout(std430, binding = RASTER_BINDING_COLORS) readonly buffer Colors { uvec2 colors[]; };
 layout(std430, binding = RASTER_BINDING_TILES) readonly buffer Tiles { uvec2 tiles[]; };
 layout(std430, binding = RASTER_BINDING_BLOCKS) readonly buffer Blocks { uint blocks[]; };
-layout(std430, binding = RASTER_BINDING_LIST) readonly buffer List { uint list[]; };
+layout(std430, binding = RASTER_BINDING_LIST) readonly buffer List { uvec2 list[]; };
 layout(binding = RASTER_BINDING_DEPTH) uniform sampler2D headDepth;
 layout(binding = RASTER_BINDING_OUTPUT, rgba16f) uniform writeonly image2D outImage;
 layout(std430, binding = RASTER_BINDING_PARAMS) readonly buffer Params { RasterParams params; };
@@ -34,8 +34,15 @@ void main() {
   uint end = min(start + tiles[tile].y, params.capacity);
   vec3 color = vec3(0.0);
   float T = 1.0;
-  for (uint e = start; e < end && T >= RASTER_OPAQUE_T; ++e) {
-    uint entry = list[e];
+  // Entries that touch none of this pixel's row are skipped in a tight loop before the body: a row of the
+  // tile is one 8-wide SIMD vector on lavapipe (whose branches are predicated: a `continue` would still run
+  // the body), and on GPUs the skip is as cheap as the body's first test.
+  uint rowBit = 1u << (lane / RASTER_TILE_SIZE);
+  uint e = start;
+  while (T >= RASTER_OPAQUE_T) {
+    while (e < end && (list[e].y & rowBit) == 0u) ++e;
+    if (e >= end) break;
+    uint entry = list[e++].x;
     uint v = entry & ~RASTER_LAST_SEGMENT;
     vec4 a = screen[v];
     vec4 b = screen[v + 1u];

@@ -1,13 +1,15 @@
 #version 460
 // Compute rasterizer, one workgroup: exclusive scan of the block totals of raster_scan_tiles in place
 // (each invocation sums a run of blocks, a shared scan of the runs, then each run is written out), and
-// the list statistics: entries kept within the capacity, entries past it (dropped by the scatter).
+// the list statistics: entries kept within the capacity, entries past it (dropped by the scatter); and the
+// indirect shade dispatch of every chunk from its listed vertices (2D past maxGroupsX, as dispatch()).
 #include "shared/raster.h"
 
 layout(local_size_x = RASTER_SCAN_SIZE) in;
 layout(std430, binding = RASTER_BINDING_STATE) buffer State { RasterState state; };
 layout(std430, binding = RASTER_BINDING_BLOCKS) buffer Blocks { uint blocks[]; };
 layout(std430, binding = RASTER_BINDING_PARAMS) readonly buffer Params { RasterParams params; };
+layout(std430, binding = RASTER_BINDING_SHADE_ARGS) buffer ShadeArgs { uvec4 shadeArgs[]; };
 
 shared uint rows[2][RASTER_SCAN_SIZE];
 
@@ -39,5 +41,10 @@ void main() {
     uint total = rows[src][lane];
     state.entries.z = total > params.capacity ? total - params.capacity : 0u;
     state.entries.w = min(total, params.capacity);
+  }
+  for (uint c = lane; c < params.chunkCount; c += RASTER_SCAN_SIZE) {
+    uint groups = (shadeArgs[c].w + RASTER_WORKGROUP_SIZE - 1u) / RASTER_WORKGROUP_SIZE;
+    uint x = min(groups, params.maxGroupsX);
+    shadeArgs[c].xyz = uvec3(x, x == 0u ? 0u : (groups + x - 1u) / x, 1u);
   }
 }

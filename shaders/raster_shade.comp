@@ -1,7 +1,8 @@
 #version 460
-// Compute rasterizer, per render vertex of a chunk: shade (hairRadiance, the graphics path's entry point,
-// with the opacity-map lookup at the vertex: strand-space shading) and project to pixels; reduce the NDC
-// depth range of the vertices in front of the camera into RasterState for the depth bins.
+// Compute rasterizer, per vertex that raster_bin.comp listed for the chunk (an indirect dispatch): the
+// radiance by hairRadiance (shaders/hair_shading.glsl, the graphics path's entry point) with the
+// opacity-map lookup at the vertex (strand-space shading). Vertices of segments that touch no tile
+// (off-screen, behind the head's depth) are never shaded: the fine raster reads only listed segments' ends.
 #include "shared/render.h"
 #include "shared/marschner.h"
 #include "shared/strands.h"
@@ -11,9 +12,7 @@
 #include "opacity_lookup.glsl"
 
 layout(local_size_x = RASTER_WORKGROUP_SIZE) in;
-// Read-only storage blocks, not uniform blocks or push constants: Mesa 22.3's lavapipe inlines uniform
-// values that steer branches or loops into a fresh shader variant on every bind (one LLVM compile per
-// dispatch; docs/DESIGN.md driver notes). Same std140 layout; no cost on GPUs (read uniformly).
+// Storage blocks, not uniform blocks: see raster_project.comp.
 layout(std140, binding = RENDER_BINDING_FRAME) readonly buffer Frame { RenderFrame frame; };
 layout(std140, binding = RENDER_BINDING_MARSCHNER) readonly buffer Marschner { MarschnerParams marschner; };
 layout(std430, binding = RASTER_BINDING_PARAMS) readonly buffer Params { RasterParams params; };
@@ -26,50 +25,19 @@ layout(std430, binding = RENDER_BINDING_LIGHT) readonly buffer Light { LightSpac
 layout(std430, binding = RENDER_BINDING_POSITIONS) readonly buffer Positions { vec4 positions[]; };
 layout(std430, binding = RENDER_BINDING_TANGENTS) readonly buffer Tangents { vec4 tangents[]; };
 layout(std430, binding = RENDER_BINDING_ATTRIBUTES) readonly buffer Attributes { StrandAttributes attributes[]; };
-layout(std430, binding = RASTER_BINDING_SCREEN) writeonly buffer Screen { vec4 screen[]; };
 layout(std430, binding = RASTER_BINDING_COLORS) writeonly buffer Colors { uvec2 colors[]; };
-layout(std430, binding = RASTER_BINDING_STATE) buffer State { RasterState state; };
+layout(std430, binding = RASTER_BINDING_SHADE_LIST) readonly buffer ShadeList { uint shadeList[]; };
+layout(std430, binding = RASTER_BINDING_SHADE_ARGS) readonly buffer ShadeArgs { uvec4 shadeArgs[]; };
 #include "hair_shading.glsl"
 
-shared uint groupMin;
-shared uint groupMax;
-
 void main() {
-  uint lane = gl_LocalInvocationID.x;
-  if (lane == 0u) {
-    groupMin = 0xFFFFFFFFu;
-    groupMax = 0u;
-  }
-  barrier();
-  uint q = params.verticesPerStrand;
-  uint i = hpThreadId(RASTER_WORKGROUP_SIZE);
-  if (i < params.strandCount * q) {
-    uint global = params.firstStrand * q + i;
-    vec4 pos = positions[i];
-    StrandAttributes attr = attributes[i / q];
-    vec4 clip = frame.proj * frame.view * vec4(pos.xyz, 1.0);
-    if (clip.w <= 1e-6 || clip.z < 0.0) {
-      screen[global] = vec4(0.0, 0.0, 1.0, -1.0);
-      colors[global] = uvec2(0u);
-    } else {
-      vec3 ndc = clip.xyz / clip.w;
-      // The graphics passes' viewport flips y (clip +Y is up): pixel rows go down.
-      vec2 pixel = vec2((ndc.x * 0.5 + 0.5) * float(params.width), (0.5 - ndc.y * 0.5) * float(params.height));
-      float width = frame.strand.x * attr.widthScale * mix(1.0, frame.strand.y, pos.w);
-      float widthPixels = width / (frame.cameraPosition.w * clip.w);
-      screen[global] = vec4(pixel, ndc.z, widthPixels);
-      OpacityVertex o = opacityVertex(light, pos.xyz, frame.strand.w, frame.options.y != 0u);
-      float alpha = opacityAlpha(opacityMaps, o.uvw, o.w0, o.w1, o.w2, o.w3);
-      vec3 radiance = hairRadiance(pos.xyz, tangents[i].xyz, attr.colorScale, alpha);
-      colors[global] = uvec2(packHalf2x16(radiance.rg), packHalf2x16(vec2(radiance.b, 0.0)));
-      // NDC depth in [0, 1] is non-negative, so its float bits order like the values.
-      atomicMin(groupMin, floatBitsToUint(ndc.z));
-      atomicMax(groupMax, floatBitsToUint(ndc.z));
-    }
-  }
-  barrier();
-  if (lane == 0u && groupMin <= groupMax) {
-    atomicMin(state.depthBits.x, groupMin);
-    atomicMax(state.depthBits.y, groupMax);
-  }
+  uint n = hpThreadId(RASTER_WORKGROUP_SIZE);
+  if (n >= shadeArgs[params.chunkIndex].w) return;
+  uint global = shadeList[params.firstVertex + n];
+  uint i = global - params.firstVertex;
+  vec4 pos = positions[i];
+  OpacityVertex o = opacityVertex(light, pos.xyz, frame.strand.w, frame.options.y != 0u);
+  float alpha = opacityAlpha(opacityMaps, o.uvw, o.w0, o.w1, o.w2, o.w3);
+  vec3 radiance = hairRadiance(pos.xyz, tangents[i].xyz, attributes[i / params.verticesPerStrand].colorScale, alpha);
+  colors[global] = uvec2(packHalf2x16(radiance.rg), packHalf2x16(vec2(radiance.b, 0.0)));
 }

@@ -20,6 +20,7 @@ enum class BufferUse {
   FragmentRead,      // storage/uniform read in a fragment shader
   GraphicsRead,      // vertex + fragment shader reads
   HostRead,          // mapped readback after the submission
+  IndirectRead,      // indirect dispatch or draw arguments
 };
 
 enum class ImageUse {

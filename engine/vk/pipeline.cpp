@@ -139,6 +139,10 @@ void ComputePipeline::dispatch(VkCommandBuffer cmd, std::uint32_t threads) const
   fn_->vkCmdDispatch(cmd, x, y, 1);
 }
 
+void ComputePipeline::dispatchIndirect(VkCommandBuffer cmd, VkBuffer args, VkDeviceSize offset) const {
+  fn_->vkCmdDispatchIndirect(cmd, args, offset);
+}
+
 GraphicsPipeline::GraphicsPipeline(const Context& ctx, const GraphicsPipelineDesc& d) {
   bindPoint_ = VK_PIPELINE_BIND_POINT_GRAPHICS;
   createLayout(ctx, d.sets, d.pushSize, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, d.name);

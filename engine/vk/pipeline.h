@@ -55,6 +55,8 @@ class ComputePipeline : public PipelineBase {
   // Enough workgroups for `threads` invocations. Past maxComputeWorkGroupCount[0] groups the grid
   // becomes 2D; shaders use hpThreadId(size) from shaders/common.glsl and bounds-check against their count.
   void dispatch(VkCommandBuffer cmd, std::uint32_t threads) const;
+  // Groups from a VkDispatchIndirectCommand the device wrote at `offset` (in BufferUse::IndirectRead).
+  void dispatchIndirect(VkCommandBuffer cmd, VkBuffer args, VkDeviceSize offset) const;
   std::uint32_t workgroupSize() const { return workgroupSize_; }
 
  private:

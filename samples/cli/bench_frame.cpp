@@ -33,7 +33,8 @@ double residentMiB() {
 }
 
 // Compulsory bytes per frame of the compute passes: every input read once, every output written once
-// (formulas as bench strands / bench sim; raster: vertex records 16 + 8 bytes, list entries 4 bytes).
+// (formulas as bench strands / bench sim; raster: vertex records 16 + 8 bytes, list entries 8 bytes; the
+// bin step includes the projection, the shade step is counted as if every vertex were listed).
 void countBytes(FrameResult& r, const compute::StrandLayout& l) {
   const double g = l.guideCount, p = l.particlesPerGuide, q = l.verticesPerStrand, s = l.strandCount;
   const double v = s * q, e = double(r.rasterEntries);
@@ -44,9 +45,9 @@ void countBytes(FrameResult& r, const compute::StrandLayout& l) {
       {"tessellate", g * p * 16 + g * q * 32},
       {"interpolate", s * 16 + l.triangleCount * 16.0 + g * q * 32 + s * (q * 32 + 16)},
       {"bounds", v * 16},
-      {"raster shade", v * 32 + s * 16 + v * 24},
-      {"raster bin", 2 * v * 16 + tiles * gpu::RASTER_DEPTH_BINS * 16 + e * 4},
-      {"raster fine", e * 4 + e * 2 * 16 + pixels * (4 + 8)},
+      {"raster shade", v * (32 + 8 + 4) + s * 16},
+      {"raster bin", v * 32 + s * 16 + 2 * v * 16 + tiles * gpu::RASTER_DEPTH_BINS * 16 + e * 8},
+      {"raster fine", e * 8 + e * 2 * 16 + pixels * (4 + 8)},
   };
   for (auto& [name, t] : r.passes)
     if (auto it = bytes.find(name); it != bytes.end()) t.bytes = it->second;

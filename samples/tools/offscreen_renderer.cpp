@@ -56,6 +56,12 @@ void OffscreenRenderer::attach(HairSystem& hair) const {
   if (raster_ == RasterMode::Compute) hair.setRasterTarget(extent(), targets_.depth.view());
 }
 
+void OffscreenRenderer::attach(Renderer& renderer, std::span<HairInstance* const> instances) const {
+  if (raster_ != RasterMode::Compute || renderer.raster() != RasterMode::Compute)
+    throw Error("OffscreenRenderer::attach: the renderer and this target must both use the compute raster");
+  renderer.setRasterTarget(extent(), targets_.depth.view(), instances);
+}
+
 AttachmentFormats OffscreenRenderer::formats() const { return {kHdrFormat, kDepthFormat, targets_.samples()}; }
 
 void OffscreenRenderer::record(VkCommandBuffer cmd, HairSystem& hair, const DrawView& view, float exposure,
@@ -65,15 +71,30 @@ void OffscreenRenderer::record(VkCommandBuffer cmd, HairSystem& hair, const Draw
     record(cmd, [&](VkCommandBuffer c) { hair.recordDraw(c, view, profiler); }, exposure, profiler);
     return;
   }
-  recordComputeScene(cmd, hair, view, profiler);
+  recordComputeScene(
+      cmd, [&](VkCommandBuffer c) { hair.recordDraw(c, view, profiler); },  // the head only
+      [&](VkCommandBuffer c) { hair.recordRaster(c, view, profiler); },
+      [&](VkCommandBuffer c) { hair.recordComposite(c, extent(), profiler); });
   if (profiler) profiler->begin(cmd, "tonemap");
   recordTonemap(cmd, exposure);
   if (profiler) profiler->end(cmd);
 }
 
+void OffscreenRenderer::record(VkCommandBuffer cmd, Renderer& renderer, std::uint64_t frame, const View& view,
+                               std::span<HairInstance* const> instances, float exposure,
+                               vk::GpuProfiler* profiler) const {
+  if (raster_ != RasterMode::Compute || renderer.raster() != RasterMode::Compute)
+    throw Error("OffscreenRenderer: a Renderer frame here needs the compute raster on both");
+  recordComputeScene(
+      cmd, [&](VkCommandBuffer c) { renderer.recordDraw(c, frame, view, instances, profiler); },
+      [&](VkCommandBuffer c) { renderer.recordRaster(c, frame, view, profiler); },
+      [&](VkCommandBuffer c) { renderer.recordComposite(c, extent(), profiler); });
+  recordTonemap(cmd, exposure);
+}
+
 // Single sample: head (depth stored), the rasterizer reads the depth, then the composite over the colour.
-void OffscreenRenderer::recordComputeScene(VkCommandBuffer cmd, HairSystem& hair, const DrawView& view,
-                                           vk::GpuProfiler* profiler) const {
+void OffscreenRenderer::recordComputeScene(VkCommandBuffer cmd, const Record& drawHeads, const Record& raster,
+                                           const Record& composite) const {
   const VkImage hdr = targets_.hdr.handle(), depthImage = targets_.depth.handle();
   vk::imageBarrier(ctx_, cmd, hdr, VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::FragmentSampledDiscard,
                    vk::ImageUse::ColorAttachment);
@@ -84,11 +105,11 @@ void OffscreenRenderer::recordComputeScene(VkCommandBuffer cmd, HairSystem& hair
                                                     VK_ATTACHMENT_STORE_OP_STORE);
   VkRenderingInfo info = renderingInfo(extent(), &color, &depth);
   ctx_.fn().vkCmdBeginRendering(cmd, &info);
-  hair.recordDraw(cmd, view, profiler);  // the head only
+  drawHeads(cmd);
   ctx_.fn().vkCmdEndRendering(cmd);
   vk::imageBarrier(ctx_, cmd, depthImage, VK_IMAGE_ASPECT_DEPTH_BIT, vk::ImageUse::DepthAttachment,
                    vk::ImageUse::ComputeSampled);
-  hair.recordRaster(cmd, view, profiler);
+  raster(cmd);
   vk::imageBarrier(ctx_, cmd, depthImage, VK_IMAGE_ASPECT_DEPTH_BIT, vk::ImageUse::ComputeSampled,
                    vk::ImageUse::DepthAttachment);
   // The head's colour writes before the composite's blend reads them (separate rendering instances).
@@ -96,7 +117,7 @@ void OffscreenRenderer::recordComputeScene(VkCommandBuffer cmd, HairSystem& hair
   color.loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;
   depth = vk::depthAttachment(targets_.depth.view(), VK_ATTACHMENT_LOAD_OP_LOAD, VK_ATTACHMENT_STORE_OP_DONT_CARE);
   ctx_.fn().vkCmdBeginRendering(cmd, &info);
-  hair.recordComposite(cmd, extent(), profiler);
+  composite(cmd);
   ctx_.fn().vkCmdEndRendering(cmd);
   vk::imageBarrier(ctx_, cmd, hdr, VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::ColorAttachment, vk::ImageUse::FragmentSampled);
 }

@@ -7,6 +7,7 @@
 // are not anti-aliased) and a HairSystem frame is: head, the compute rasterizer reading the head's depth,
 // the composite of the hair image over the colour, tonemap. attach(hair) once binds the rasterizer's target.
 #include <functional>
+#include <span>
 #include <vector>
 
 #include "engine/hair_system.h"
@@ -22,6 +23,8 @@ class OffscreenRenderer {
   RasterMode raster() const { return raster_; }
   // Compute raster: binds this renderer's extent and depth to the hair's rasterizer (outside the frame loop).
   void attach(HairSystem& hair) const;
+  // The same for a Renderer's instances (the middleware API; the Renderer's raster mode must be compute).
+  void attach(Renderer& renderer, std::span<HairInstance* const> instances) const;
   AttachmentFormats formats() const;
   VkExtent2D extent() const { return targets_.extent(); }
   // The sRGB image record() leaves in ImageUse::ColorAttachment (a window blits it to its swapchain).
@@ -32,6 +35,10 @@ class OffscreenRenderer {
   // The same frame with any draws (a Renderer's instances) inside the rendering.
   void record(VkCommandBuffer cmd, const std::function<void(VkCommandBuffer)>& draws, float exposure,
               vk::GpuProfiler* profiler = nullptr) const;
+  // Compute raster: a Renderer's frame `frame` of its attached instances (heads by recordDraw, then
+  // recordRaster, recordComposite), after its recordShadows.
+  void record(VkCommandBuffer cmd, Renderer& renderer, std::uint64_t frame, const View& view,
+              std::span<HairInstance* const> instances, float exposure, vk::GpuProfiler* profiler = nullptr) const;
   // RGBA8, sRGB-encoded, rows top to bottom. Waits for the queue through a one-shot readback.
   std::vector<std::uint8_t> readDisplay() const;
   // The frame's linear HDR radiance before exposure and tonemap (RGB floats, rows top to bottom);
@@ -40,8 +47,10 @@ class OffscreenRenderer {
 
  private:
   void recordScene(VkCommandBuffer cmd, const std::function<void(VkCommandBuffer)>& draws) const;
-  void recordComputeScene(VkCommandBuffer cmd, HairSystem& hair, const DrawView& view,
-                          vk::GpuProfiler* profiler) const;
+  // Compute raster: heads (drawHeads, inside a rendering), raster (outside, depth sampled), composite.
+  using Record = std::function<void(VkCommandBuffer)>;
+  void recordComputeScene(VkCommandBuffer cmd, const Record& drawHeads, const Record& raster,
+                          const Record& composite) const;
   void recordTonemap(VkCommandBuffer cmd, float exposure) const;
   const vk::Image& hdrInput() const { return targets_.resolved ? targets_.resolved : targets_.hdr; }
 

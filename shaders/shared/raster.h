@@ -12,9 +12,14 @@
 //   tiles      uvec2[T]  x = offset of the tile's list within its scan block, y = entries kept
 //   blocks     uint[ceil(T / RASTER_SCAN_SIZE)]  offset of each scan block in the list
 //   tileDepth  float[T]  the farthest head depth (NDC z) over each tile's pixels, 1 where no head
-//   list       uint[capacity]  per tile, depth bins near to far: the global index of the segment's first
+//   shadeFlags uint[V]   1 once the vertex is in the shade list (cleared every frame)
+//   shadeList  uint[V]   per chunk, from its firstVertex: the global vertices of segments that touch a tile
+//                        (only they are shaded: off-screen and head-hidden segments are not)
+//   shadeArgs  uvec4[chunks]  the indirect shade dispatch of each chunk (x, y, z groups) and w = its listed count
+//   list       uvec2[capacity] per tile, depth bins near to far: x = the global index of the segment's first
 //                              vertex (strand * Q + k), | RASTER_LAST_SEGMENT for the strand's last segment
-//                              (no integer division in the fine loop: CPU SIMD has none)
+//                              (no integer division in the fine loop: CPU SIMD has none); y = the rows of
+//                              the tile it may cover (bit r: row r), which the fine loop skips by
 // Key of tile t and bin b: t * RASTER_DEPTH_BINS + b. Tile t covers pixels [tx*8, tx*8+8) x [ty*8, ty*8+8).
 #ifndef HP_SHARED_RASTER_H
 #define HP_SHARED_RASTER_H
@@ -57,6 +62,9 @@ HP_CONST(uint, RASTER_BINDING_DEPTH, 19)   // sampler2D: the head's depth (singl
 HP_CONST(uint, RASTER_BINDING_OUTPUT, 20)  // storage image rgba16f: premultiplied hair radiance, a = 1 - T
 HP_CONST(uint, RASTER_BINDING_PARAMS, 21)  // RasterParams of the set's chunk (read-only storage buffer)
 HP_CONST(uint, RASTER_BINDING_TILE_DEPTH, 22)  // float[tiles]: the farthest head depth in each tile
+HP_CONST(uint, RASTER_BINDING_SHADE_FLAGS, 23) // uint[V]: 1 once a vertex is listed for shading
+HP_CONST(uint, RASTER_BINDING_SHADE_LIST, 24)  // uint[V]: per chunk from its firstVertex, the vertices to shade
+HP_CONST(uint, RASTER_BINDING_SHADE_ARGS, 25)  // uvec4[chunks]: x, y, z = the shade dispatch, w = listed
 
 // The composite pass (composite.frag) samples the output image.
 HP_CONST(uint, COMPOSITE_BINDING_HAIR, 0)
@@ -77,7 +85,7 @@ struct RasterState {
 struct RasterParams {
   uint firstStrand;   // global index of the chunk's first strand
   uint strandCount;   // strands in the chunk
-  uint pad2;
+  uint firstVertex;   // global index of the chunk's first vertex in the screen, colour and shade buffers
   uint tilesX;
   uint tilesY;
   uint tileBudget;    // entries kept per tile (the nearest bins first)
@@ -85,8 +93,12 @@ struct RasterParams {
   uint width;         // output pixels
   uint height;
   uint verticesPerStrand;  // Q
+  uint chunkIndex;    // this chunk's shadeArgs entry
+  uint chunkCount;    // chunks of every source together
+  uint maxGroupsX;    // the device's maxComputeWorkGroupCount[0] (the shade dispatch goes 2D past it)
   uint pad0;
   uint pad1;
+  uint pad2;
 };
 HP_END
 
@@ -119,7 +131,7 @@ HP_END
 
 #ifdef __cplusplus
 static_assert(sizeof(hp::gpu::RasterState) == 32);
-static_assert(sizeof(hp::gpu::RasterParams) == 48);
+static_assert(sizeof(hp::gpu::RasterParams) == 64);
 static_assert(hp::gpu::RASTER_FINE_SIZE == hp::gpu::RASTER_TILE_SIZE * hp::gpu::RASTER_TILE_SIZE);
 #endif
 #endif

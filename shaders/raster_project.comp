@@ -1,0 +1,55 @@
+#version 460
+// Compute rasterizer, per render vertex of a chunk: project to pixels (x, y, NDC depth, width in pixels)
+// and reduce the NDC depth range of the vertices in front of the camera into RasterState for the depth
+// bins. Shading waits for the binning (raster_shade.comp): only listed vertices are shaded.
+#include "shared/render.h"
+#include "shared/strands.h"
+#include "shared/raster.h"
+#include "common.glsl"
+
+layout(local_size_x = RASTER_WORKGROUP_SIZE) in;
+// Read-only storage blocks, not uniform blocks or push constants: Mesa 22.3's lavapipe inlines uniform
+// values that steer branches or loops into a fresh shader variant on every bind (one LLVM compile per
+// dispatch; docs/DESIGN.md driver notes). Same std140 layout; no cost on GPUs (read uniformly).
+layout(std140, binding = RENDER_BINDING_FRAME) readonly buffer Frame { RenderFrame frame; };
+layout(std430, binding = RASTER_BINDING_PARAMS) readonly buffer Params { RasterParams params; };
+layout(std430, binding = RENDER_BINDING_POSITIONS) readonly buffer Positions { vec4 positions[]; };
+layout(std430, binding = RENDER_BINDING_ATTRIBUTES) readonly buffer Attributes { StrandAttributes attributes[]; };
+layout(std430, binding = RASTER_BINDING_SCREEN) writeonly buffer Screen { vec4 screen[]; };
+layout(std430, binding = RASTER_BINDING_STATE) buffer State { RasterState state; };
+
+shared uint groupMin;
+shared uint groupMax;
+
+void main() {
+  uint lane = gl_LocalInvocationID.x;
+  if (lane == 0u) {
+    groupMin = 0xFFFFFFFFu;
+    groupMax = 0u;
+  }
+  barrier();
+  uint q = params.verticesPerStrand;
+  uint i = hpThreadId(RASTER_WORKGROUP_SIZE);
+  if (i < params.strandCount * q) {
+    uint global = params.firstVertex + i;
+    vec4 pos = positions[i];
+    vec4 clip = frame.proj * frame.view * vec4(pos.xyz, 1.0);
+    if (clip.w <= 1e-6 || clip.z < 0.0) {
+      screen[global] = vec4(0.0, 0.0, 1.0, -1.0);
+    } else {
+      vec3 ndc = clip.xyz / clip.w;
+      // The graphics passes' viewport flips y (clip +Y is up): pixel rows go down.
+      vec2 pixel = vec2((ndc.x * 0.5 + 0.5) * float(params.width), (0.5 - ndc.y * 0.5) * float(params.height));
+      float width = frame.strand.x * attributes[i / q].widthScale * mix(1.0, frame.strand.y, pos.w);
+      screen[global] = vec4(pixel, ndc.z, width / (frame.cameraPosition.w * clip.w));
+      // NDC depth in [0, 1] is non-negative, so its float bits order like the values.
+      atomicMin(groupMin, floatBitsToUint(ndc.z));
+      atomicMax(groupMax, floatBitsToUint(ndc.z));
+    }
+  }
+  barrier();
+  if (lane == 0u && groupMin <= groupMax) {
+    atomicMin(state.depthBits.x, groupMin);
+    atomicMax(state.depthBits.y, groupMax);
+  }
+}
