@@ -266,9 +266,11 @@ void end(VkCommandBuffer cmd, vk::GpuProfiler* profiler) {
 void StrandRasterPass::recordBinning(VkCommandBuffer cmd, vk::GpuProfiler* profiler) const {
   if (depth_ == VK_NULL_HANDLE) throw Error("compute raster: setDepth() was not called before record()");
   const std::uint32_t tiles = tilesX_ * tilesY_;
-  begin(cmd, profiler, "raster bin");
+  begin(cmd, profiler, "raster project");
   recordArm(cmd);
   recordPerChunk(cmd, project_, 0);
+  end(cmd, profiler);
+  begin(cmd, profiler, "raster bin");
   recordOnce(cmd, tileDepthPipeline_, tiles);
   chain(ctx_, cmd);
   recordPerChunk(cmd, count_, 1);

@@ -38,32 +38,32 @@ Footprint segmentFootprint(uint v) {
 
 // The rows of a tile that can hold a pixel the segment covers and the head does not hide: bit r set when
 // row r may (0: the segment stays out of the tile's list). raster_fine.comp composites a pixel centre c
-// only when its foot point s on the segment (t in [0, 1]) is within half the width + 0.75 px of c, so s
-// lies within `reach` of the row's centre line in y and of the row's x span: the test below clips the
-// segment to the row's y band and compares its x range, conservatively (and exactly the same for the
-// count and scatter modes). A segment whose nearer end is at or behind the farthest head depth in the
+// only when its foot point s on the segment (t in [0, 1]) is within half the width + 0.75 px (`reach`)
+// of c; with c in the tile's columns, s lies on the part of the segment within `reach` of those columns in
+// x, and c within `reach` of that part's y range: one clip gives a conservative run of rows (the same in
+// the count and scatter modes). A segment whose nearer end is at or behind the farthest head depth in the
 // tile (raster_tile_depth.comp) is out: every fragment it could give there fails raster_fine's depth test.
 uint footprintRows(Footprint f, uvec2 tile) {
   if (min(f.a.z, f.b.z) >= tileDepth[tile.y * params.tilesX + tile.x]) return 0u;
   float reach = 0.5 * max(f.a.w, f.b.w) + 0.75 + 1e-3;
   vec2 ab = f.b.xy - f.a.xy;
-  float x0 = float(tile.x * RASTER_TILE_SIZE) + 0.5;
-  float x1 = x0 + float(RASTER_TILE_SIZE - 1u);
-  bool level = abs(ab.y) < 1e-6;
-  float inv = level ? 0.0 : 1.0 / ab.y;
-  uint rows = 0u;
-  for (uint r = 0u; r < RASTER_TILE_SIZE; ++r) {
-    float y = float(tile.y * RASTER_TILE_SIZE + r) + 0.5;
-    float ta = level ? (abs(f.a.y - y) <= reach ? 0.0 : 2.0) : (y - reach - f.a.y) * inv;
-    float tb = level ? ta + 1.0 : (y + reach - f.a.y) * inv;
-    float t0 = max(min(ta, tb), 0.0);
-    float t1 = min(max(ta, tb), 1.0);
-    float xa = f.a.x + ab.x * t0;
-    float xb = f.a.x + ab.x * t1;
-    bool hit = t0 <= t1 && max(xa, xb) + reach >= x0 && min(xa, xb) - reach <= x1;
-    rows |= hit ? (1u << r) : 0u;
+  vec2 origin = vec2(tile * RASTER_TILE_SIZE) + 0.5;  // the tile's first pixel centre
+  float x0 = origin.x - reach;
+  float x1 = origin.x + float(RASTER_TILE_SIZE - 1u) + reach;
+  float t0 = 0.0, t1 = 1.0;
+  if (abs(ab.x) > 1e-6) {
+    float ta = (x0 - f.a.x) / ab.x, tb = (x1 - f.a.x) / ab.x;
+    t0 = max(min(ta, tb), 0.0);
+    t1 = min(max(ta, tb), 1.0);
+  } else if (f.a.x < x0 || f.a.x > x1) {
+    return 0u;
   }
-  return rows;
+  if (t0 > t1) return 0u;
+  float ya = f.a.y + ab.y * t0, yb = f.a.y + ab.y * t1;
+  int first = max(int(ceil(min(ya, yb) - reach - origin.y)), 0);
+  int last = min(int(floor(max(ya, yb) + reach - origin.y)), int(RASTER_TILE_SIZE) - 1);
+  if (first > last) return 0u;
+  return ((1u << uint(last - first + 1)) - 1u) << uint(first);
 }
 
 uint tileListStart(uint tile) { return tiles[tile].x + blocks[tile / RASTER_SCAN_SIZE]; }

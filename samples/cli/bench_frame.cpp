@@ -34,7 +34,7 @@ double residentMiB() {
 
 // Compulsory bytes per frame of the compute passes: every input read once, every output written once
 // (formulas as bench strands / bench sim; raster: vertex records 16 + 8 bytes, list entries 8 bytes; the
-// bin step includes the projection, the shade step is counted as if every vertex were listed).
+// shade step is counted as if every vertex were listed).
 void countBytes(FrameResult& r, const compute::StrandLayout& l) {
   const double g = l.guideCount, p = l.particlesPerGuide, q = l.verticesPerStrand, s = l.strandCount;
   const double v = s * q, e = double(r.rasterEntries);
@@ -46,7 +46,8 @@ void countBytes(FrameResult& r, const compute::StrandLayout& l) {
       {"interpolate", s * 16 + l.triangleCount * 16.0 + g * q * 32 + s * (q * 32 + 16)},
       {"bounds", v * 16},
       {"raster shade", v * (32 + 8 + 4) + s * 16},
-      {"raster bin", v * 32 + s * 16 + 2 * v * 16 + tiles * gpu::RASTER_DEPTH_BINS * 16 + e * 8},
+      {"raster project", v * 32 + s * 16},
+      {"raster bin", 2 * v * 16 + tiles * gpu::RASTER_DEPTH_BINS * 16 + e * 8},
       {"raster fine", e * 8 + e * 2 * 16 + pixels * (4 + 8)},
   };
   for (auto& [name, t] : r.passes)

@@ -19,7 +19,7 @@ TEST(CliRender, WritesThePngReportsEveryPassAndDumpsTheStrands) {
   ASSERT_EQ(r.exitCode, 0) << r.err;
   auto j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j["raster"], "compute");  // auto on lavapipe
-  for (const char* pass : {"simulate", "tessellate", "interpolate", "bounds", "opacity", "head", "raster shade",
+  for (const char* pass : {"simulate", "tessellate", "interpolate", "bounds", "opacity", "head", "raster project", "raster shade",
                            "raster bin", "raster fine", "composite", "tonemap"})
     EXPECT_GT(j["gpu_ms"][pass].get<double>(), 0.0) << pass;
   EXPECT_GT(j["raster_lists"]["kept"].get<double>(), 0.0);
