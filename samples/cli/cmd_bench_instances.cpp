@@ -1,9 +1,11 @@
-// `hairpipe bench instances [--instances 1,4,16] [--strands N] [--frames F] [--json]`: the cost of many heads
+// `hairpipe bench instances [--instances 1,4,16] [--strands N] [--frames F] [--raster MODE] [--json]`: the cost of many heads
 // on one hp::Renderer: host time to create the renderer and each instance, device memory held per instance
 // and shared (Context::allocatedBytes before and after), and the CPU time to record one frame (update,
 // shadows and one view's draw of every instance; median of F frames after one warm-up) for each instance
 // count. Every frame is submitted and waited on; only the record calls are timed (host clock: this is CPU
-// work). Heads are the default head at `--strands`, side by side.
+// work). Heads are the default head at `--strands`, side by side. With `--raster compute` the hair of every
+// instance goes through the Renderer's compute rasterizer (one target over all instances; the timed record
+// calls then include recordRaster and recordComposite).
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -32,6 +34,7 @@ struct BenchOptions {
   std::vector<std::uint32_t> instances{1, 4, 16};
   std::uint32_t strands = 2000;
   std::uint32_t frames = 5;
+  std::string raster = "graphics";
   bool json = false;
   std::string device;
 };
@@ -39,10 +42,11 @@ struct BenchOptions {
 double msSince(Clock::time_point t0) { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
 
 nlohmann::json benchCount(const hp::vk::Context& ctx, const hp::HairAsset& asset, std::uint32_t count,
-                          const BenchOptions& o) {
-  hp::render::OffscreenRenderer target(ctx, 320, 180, 1);
+                          const BenchOptions& o, hp::RasterMode raster) {
+  hp::render::OffscreenRenderer target(ctx, 320, 180, 1, raster);
   hp::RendererSettings settings;
   settings.formats = target.formats();
+  settings.raster = raster;
   const std::uint64_t before = ctx.allocatedBytes();
   auto t0 = Clock::now();
   hp::Renderer renderer(ctx, settings);
@@ -58,6 +62,7 @@ nlohmann::json benchCount(const hp::vk::Context& ctx, const hp::HairAsset& asset
   const std::uint64_t all = ctx.allocatedBytes() - before;
   std::vector<hp::HairInstance*> span;
   for (auto& h : heads) span.push_back(h.get());
+  if (raster == hp::RasterMode::Compute) target.attach(renderer, span);
   hp::CameraSpec cam;
   cam.distance = 1.0f + 0.3f * float(count);
   const hp::View view{hp::orbitCamera(cam, 320.0f / 180.0f), {320, 180}, false, 0};
@@ -69,6 +74,12 @@ nlohmann::json benchCount(const hp::vk::Context& ctx, const hp::HairAsset& asset
       renderer.recordUpdate(cmd, f, span);
       renderer.recordShadows(cmd, f, hp::LightSpec{}, span);
       us += msSince(t) * 1000.0;
+      if (raster == hp::RasterMode::Compute) {
+        t = Clock::now();
+        target.record(cmd, renderer, f, view, span, 1.0f);
+        us += msSince(t) * 1000.0;
+        return;
+      }
       target.record(cmd, [&](VkCommandBuffer c) {
         auto td = Clock::now();
         renderer.recordDraw(c, f, view, span);
@@ -92,14 +103,17 @@ void run(const BenchOptions& o) {
   if (o.strands == 0 || o.strands > 1'000'000) throw hp::Error("bench instances: --strands must be in [1, 1000000]");
   for (std::uint32_t n : o.instances)
     if (n == 0 || n > 64) throw hp::Error("bench instances: --instances values must be in [1, 64]");
+  const hp::RasterMode requested = hp::parseRasterMode(o.raster);
   auto ctx = hp::cli::createBenchContext(o.device, "bench instances");
+  const hp::RasterMode raster = hp::resolveRasterMode(requested, ctx->properties().deviceType);
   hp::DensityOptions density;
   density.totalStrands = o.strands;
   const hp::HairAsset asset = hp::buildDefaultHeadAsset(hp::defaultHeadGrowth(), density);
   nlohmann::json report = {{"device", ctx->properties().deviceName}, {"strands", o.strands}, {"frames", o.frames},
+                           {"raster", hp::rasterModeName(raster)},
                            {"results", nlohmann::json::array()}};
   for (std::uint32_t n : o.instances) {
-    nlohmann::json row = benchCount(*ctx, asset, n, o);
+    nlohmann::json row = benchCount(*ctx, asset, n, o, raster);
     if (!o.json)
       std::printf("%3u instances  renderer %7.1f ms  1st instance %7.1f ms  later %7.1f ms  shared %6.2f MiB  "
                   "per instance %6.2f MiB  record %8.1f us\n",
@@ -118,6 +132,7 @@ void setup(CLI::App& app) {
   cmd->add_option("--instances", o->instances, "Instance counts, comma separated")->delimiter(',')->capture_default_str();
   cmd->add_option("--strands", o->strands, "Render strands per head")->capture_default_str();
   cmd->add_option("--frames", o->frames, "Timed frames per count (median), after one warm-up")->capture_default_str();
+  cmd->add_option("--raster", o->raster, "Hair drawing: graphics, compute or auto")->capture_default_str();
   cmd->add_flag("--json", o->json, "Print JSON");
   cmd->add_option("--device", o->device, "Vulkan device: index or name substring (env HAIRPIPE_DEVICE)");
   cmd->callback([o] { run(*o); });
