@@ -113,7 +113,7 @@ class StrandRasterPass {
 };
 
 // List entries reserved for a frame: every segment in 8 tiles plus 16 per tile (the default head at
-// 3840x2160 asks for 5.1M of 7.7M), within the device's
+// 3840x2160 asks for 4.3M of 7.7M), within the device's
 // storage buffer range (pure arithmetic, for tests and the docs).
 std::uint32_t rasterListCapacity(std::uint64_t segments, std::uint64_t tiles, std::uint64_t maxRangeBytes);
 }  // namespace hp::compute

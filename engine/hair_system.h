@@ -53,8 +53,9 @@ class HairSystem {
   void recordPrepareDraw(VkCommandBuffer cmd, const DrawView& view, vk::GpuProfiler* profiler = nullptr);
   void recordDraw(VkCommandBuffer cmd, const DrawView& view, vk::GpuProfiler* profiler = nullptr);
 
-  // Compute raster only. Outside the frame loop: (re)builds the rasterizer for this extent (when it
-  // changed) and binds the head's single-sample depth image view.
+  // Compute raster only. Outside the frame loop: the Renderer's raster target for this extent and the
+  // head's single-sample depth image view (Renderer::setRasterTarget with the one instance; a previous
+  // target is retired after its frames).
   void setRasterTarget(VkExtent2D extent, VkImageView depth);
   // After the head's recordDraw; the depth image in ImageUse::ComputeSampled. Leaves rasterImage() in
   // ImageUse::FragmentSampled.

@@ -31,8 +31,10 @@
 //
 // Errors (hp::Error): the constructor, createInstance and the instance setters (invalid parameters, device
 // limits, out of memory); recordShadows for an invalid light and recordDraw for an invalid view (checked
-// before anything is recorded); any record call for an instance of another Renderer. Nothing else in the
-// record calls throws.
+// before anything is recorded); any record call for an instance of another Renderer; setRasterTarget
+// (graphics mode, no instance, device limits) and recordRaster/recordComposite/rasterImage without a
+// raster target (none set, or dropped because one of its instances was destroyed without
+// destroyInstance). Nothing else in the record calls throws.
 #include <memory>
 #include <optional>
 #include <span>
