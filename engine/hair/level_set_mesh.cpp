@@ -182,9 +182,19 @@ class Mesher {
     return bricks_[std::size_t(slot)].base + std::uint32_t(local);
   }
 
+  // Per crossed cell: which corners are inside (bit n: corner n), and the vertices of its edges looked
+  // up once (key lower corner * 8 + upper corner), shared by its six tetrahedra.
+  struct CellCuts {
+    std::uint32_t inside = 0;
+    std::array<std::int64_t, 64> vertex;
+  };
+
   void triangulate(Brick& b) {
     forCrossedCells(b, [&](const glm::uvec3& c) {
-      for (const auto& t : kTets) tetrahedron(b, c, t);
+      CellCuts cell;
+      for (std::uint32_t n = 0; n < 8; ++n) cell.inside |= std::uint32_t(value(c + cornerOffset(n)) < 0.0f) << n;
+      cell.vertex.fill(-1);
+      for (const auto& t : kTets) tetrahedron(b, c, cell, t);
     });
   }
 
@@ -195,20 +205,23 @@ class Mesher {
     b.indices.insert(b.indices.end(), {v0, v1, v2});
   }
 
-  void tetrahedron(Brick& b, const glm::uvec3& c, const std::array<std::uint32_t, 4>& corner) const {
+  // Orientation from the corners' offsets in the cell (exact small integers: the same decisions as
+  // world positions, which are the offsets scaled by the cell and moved).
+  void tetrahedron(Brick& b, const glm::uvec3& c, CellCuts& cell, const std::array<std::uint32_t, 4>& corner) const {
     std::array<glm::vec3, 4> pos;
     std::array<int, 4> in{}, out{};
     int nIn = 0, nOut = 0;
     for (int v = 0; v < 4; ++v) {
-      const glm::uvec3 n = c + cornerOffset(corner[v]);
-      pos[v] = node(n);
-      (value(n) < 0.0f ? in[nIn++] : out[nOut++]) = v;
+      pos[v] = glm::vec3(cornerOffset(corner[v]));
+      ((cell.inside >> corner[v]) & 1u ? in[nIn++] : out[nOut++]) = v;
     }
     if (nIn == 0 || nOut == 0) return;
     auto cut = [&](int u, int v) {
       std::uint32_t lo = corner[u], hi = corner[v];
       if ((lo & hi) != lo) std::swap(lo, hi);  // the subset corner is the edge's lower node
-      return edgeVertex(c + cornerOffset(lo), lo ^ hi);
+      std::int64_t& known = cell.vertex[lo * 8 + hi];
+      if (known < 0) known = edgeVertex(c + cornerOffset(lo), lo ^ hi);
+      return std::uint32_t(known);
     };
     if (nIn == 1 || nOut == 1) {
       const int apex = nIn == 1 ? in[0] : out[0];
