@@ -48,6 +48,7 @@ struct Brick {
   glm::uvec3 cellLo{0}, cellHi{0};        // cells [cellLo, cellHi)
   std::vector<std::int32_t> edgeVertex;   // per cell of the brick and direction 1..7: local vertex or -1
   std::vector<std::uint32_t> edgeCell;    // per local vertex: cell (local index) * 8 + direction
+  std::vector<glm::uvec3> crossedCells;   // found by findEdges, triangulated later
   std::vector<std::uint32_t> indices;     // triangles, global vertex indices
   std::uint32_t base = 0;                 // global index of local vertex 0
 };
@@ -119,6 +120,7 @@ class Mesher {
     const glm::uvec3 s = brickSize(b);
     b.edgeVertex.assign(std::size_t(s.x) * s.y * s.z * 7, -1);
     forCrossedCells(b, [&](const glm::uvec3& c) {
+      b.crossedCells.push_back(c);
       const bool inside = value(c) < 0.0f;
       for (std::uint32_t d = 1; d < 8; ++d)
         if ((value(c + cornerOffset(d)) < 0.0f) != inside) {
@@ -190,12 +192,12 @@ class Mesher {
   };
 
   void triangulate(Brick& b) {
-    forCrossedCells(b, [&](const glm::uvec3& c) {
+    for (const glm::uvec3& c : b.crossedCells) {
       CellCuts cell;
       for (std::uint32_t n = 0; n < 8; ++n) cell.inside |= std::uint32_t(value(c + cornerOffset(n)) < 0.0f) << n;
       cell.vertex.fill(-1);
       for (const auto& t : kTets) tetrahedron(b, c, cell, t);
-    });
+    }
   }
 
   // Orientation is decided on the tetrahedron's corners, never on the (possibly tiny) triangle: a
