@@ -105,7 +105,9 @@ NarrowBandGrid makeDefaultHeadField() {
                           kDefaultHeadBrick);
 }
 
-HeadMesh makeDefaultHeadMesh(const NarrowBandGrid& field) { return meshZeroLevel(field.grid, field.band); }
+HeadMesh makeDefaultHeadMesh(const NarrowBandGrid& field) {
+  return meshZeroLevel(field.grid, field.band, kDefaultHeadMeshStride);
+}
 
 HairAsset buildDefaultHeadAsset(const GrowthOptions& growth, const DensityOptions& density) {
   growth.validate();

@@ -71,12 +71,27 @@ class RootBuckets {
     for (std::size_t i = 0; i < count.size(); ++i) start_[i + 1] = start_[i] + count[i];
     members_.resize(roots.size());
     for (std::uint32_t i = 0; i < roots.size(); ++i) members_[start_[index(cube(roots[i]))] + --count[index(cube(roots[i]))]] = i;
+    // Most of a head (face, neck, shoulders) is far from every root: one flag per cube says whether
+    // any of the 27 cubes around it holds a root, so those points skip the search.
+    rootsAround_.assign(count.size(), 0);
+    for (int z = 0; z < dims_.z; ++z)
+      for (int y = 0; y < dims_.y; ++y)
+        for (int x = 0; x < dims_.x; ++x) {
+          const std::size_t i = index({x, y, z});
+          if (start_[i] == start_[i + 1]) continue;
+          for (int dz = std::max(z - 1, 0); dz <= std::min(z + 1, dims_.z - 1); ++dz)
+            for (int dy = std::max(y - 1, 0); dy <= std::min(y + 1, dims_.y - 1); ++dy)
+              for (int dx = std::max(x - 1, 0); dx <= std::min(x + 1, dims_.x - 1); ++dx) rootsAround_[index({dx, dy, dz})] = 1;
+        }
   }
 
   // The distance to the nearest root if it is below `reach`, else `reach` or more.
   float nearest(const glm::vec3& p) const {
     float best = std::numeric_limits<float>::infinity();
     const glm::ivec3 c = cube(p);
+    // Outside the grid (the roots' box grown by reach) or no root in the cubes around: none within reach.
+    if (glm::any(glm::lessThan(c, glm::ivec3(0))) || glm::any(glm::greaterThanEqual(c, dims_)) || !rootsAround_[index(c)])
+      return best;
     for (int z = std::max(c.z - 1, 0); z <= std::min(c.z + 1, dims_.z - 1); ++z)
       for (int y = std::max(c.y - 1, 0); y <= std::min(c.y + 1, dims_.y - 1); ++y)
         for (int x = std::max(c.x - 1, 0); x <= std::min(c.x + 1, dims_.x - 1); ++x) {
@@ -92,6 +107,7 @@ class RootBuckets {
   float side_ = 1.0f;
   glm::ivec3 dims_{1};
   std::vector<std::uint32_t> start_, members_;  // roots of cube i: members_[start_[i] .. start_[i + 1])
+  std::vector<std::uint8_t> rootsAround_;        // per cube: 1 if it or a neighbour holds a root
 
   // Clamped one cube past the grid (monotone, so neighbours stay neighbours; those cubes are empty).
   glm::ivec3 cube(const glm::vec3& p) const {

@@ -74,6 +74,7 @@ glm::vec3 headSurfaceAlong(const glm::vec3& dir, glm::vec3* gradient) {
   const sdf::Program near = headField().specialise(glm::min(a, b) - pad, glm::max(a, b) + pad);
   for (int i = kWhole; i < kSteps; ++i) {
     const float mid = 0.5f * (inside + outside);
+    if (mid == inside || mid == outside) break;  // adjacent floats: further steps change nothing
     (near(kCraniumCenter + mid * dir) < 0.0f ? inside : outside) = mid;
   }
   const glm::vec3 surface = kCraniumCenter + outside * dir;

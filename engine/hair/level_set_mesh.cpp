@@ -48,13 +48,15 @@ struct Brick {
   glm::uvec3 cellLo{0}, cellHi{0};        // cells [cellLo, cellHi)
   std::vector<std::int32_t> edgeVertex;   // per cell of the brick and direction 1..7: local vertex or -1
   std::vector<std::uint32_t> edgeCell;    // per local vertex: cell (local index) * 8 + direction
+  std::vector<glm::uvec3> crossedCells;   // found by findEdges, triangulated later
   std::vector<std::uint32_t> indices;     // triangles, global vertex indices
   std::uint32_t base = 0;                 // global index of local vertex 0
 };
 
 class Mesher {
  public:
-  Mesher(const SdfGrid& g, const LevelSetBand& band) : g_(g), band_(band) {
+  Mesher(const SdfGrid& g, const LevelSetBand& band, std::uint32_t stride)
+      : g_(g), band_(band), s_(stride), dims_((g.dims - 1u) / stride + 1u), brickCells_(band.brickCells / stride) {
     for (std::uint32_t z = 0; z < band.bricks.z; ++z)
       for (std::uint32_t y = 0; y < band.bricks.y; ++y)
         for (std::uint32_t x = 0; x < band.bricks.x; ++x) {
@@ -62,8 +64,8 @@ class Mesher {
           if (slot < 0) continue;
           if (std::size_t(slot) >= bricks_.size()) bricks_.resize(std::size_t(slot) + 1);
           Brick& b = bricks_[std::size_t(slot)];
-          b.cellLo = glm::uvec3(x, y, z) * band.brickCells;
-          b.cellHi = glm::min(b.cellLo + band.brickCells, g.dims - 1u);
+          b.cellLo = glm::uvec3(x, y, z) * brickCells_;
+          b.cellHi = glm::max(glm::min(b.cellLo + brickCells_, dims_ - 1u), b.cellLo);  // may hold no mesh cell
         }
   }
 
@@ -82,6 +84,9 @@ class Mesher {
  private:
   const SdfGrid& g_;
   const LevelSetBand& band_;
+  const std::uint32_t s_;           // mesh nodes are every s_-th grid node
+  const glm::uvec3 dims_;           // mesh nodes per axis
+  const std::uint32_t brickCells_;  // mesh cells per brick side
   std::vector<Brick> bricks_;
   HeadMesh mesh_;
 
@@ -90,14 +95,15 @@ class Mesher {
     const glm::uvec3 s = brickSize(b), l = c - b.cellLo;
     return (l.z * s.y + l.y) * s.x + l.x;
   }
-  float value(const glm::uvec3& n) const { return g_.at(n.x, n.y, n.z); }
+  float value(const glm::uvec3& n) const { return g_.at(n.x * s_, n.y * s_, n.z * s_); }
+  glm::vec3 node(const glm::uvec3& n) const { return g_.node(n.x * s_, n.y * s_, n.z * s_); }
 
   // A cell the surface crosses: some corner inside, some not. Such a cell must not touch the boundary.
   bool crossed(const glm::uvec3& c) const {
     bool anyIn = false, anyOut = false;
     for (std::uint32_t n = 0; n < 8; ++n) (value(c + cornerOffset(n)) < 0.0f ? anyIn : anyOut) = true;
     if (!anyIn || !anyOut) return false;
-    if (c.x == 0 || c.y == 0 || c.z == 0 || c.x + 2 == g_.dims.x || c.y + 2 == g_.dims.y || c.z + 2 == g_.dims.z)
+    if (c.x == 0 || c.y == 0 || c.z == 0 || c.x + 2 == dims_.x || c.y + 2 == dims_.y || c.z + 2 == dims_.z)
       throw Error("level set mesh: the surface reaches the edge of the grid (it is not closed inside it)");
     return true;
   }
@@ -114,6 +120,7 @@ class Mesher {
     const glm::uvec3 s = brickSize(b);
     b.edgeVertex.assign(std::size_t(s.x) * s.y * s.z * 7, -1);
     forCrossedCells(b, [&](const glm::uvec3& c) {
+      b.crossedCells.push_back(c);
       const bool inside = value(c) < 0.0f;
       for (std::uint32_t d = 1; d < 8; ++d)
         if ((value(c + cornerOffset(d)) < 0.0f) != inside) {
@@ -132,7 +139,7 @@ class Mesher {
       const std::uint32_t cell = edge / 8;
       const glm::uvec3 c = b.cellLo + glm::uvec3(cell % s.x, (cell / s.x) % s.y, cell / (s.x * s.y));
       const glm::uvec3 e = c + cornerOffset(edge % 8);
-      edges.push_back({g_.node(c.x, c.y, c.z), g_.node(e.x, e.y, e.z), value(c), value(e)});
+      edges.push_back({node(c), node(e), value(c), value(e)});
     }
     std::vector<glm::vec3> points;
     std::vector<float> at;
@@ -147,7 +154,7 @@ class Mesher {
       for (std::size_t i = 0; i < active.size(); ++i) edges[active[i]].update(points[i], at[i]);
     }
     // Normals: central differences of the field, the six probes of every vertex in one batch.
-    const float h = 0.05f * g_.cell;
+    const float h = 0.05f * g_.cell;  // the grid's cell: the band's programs hold 0.1 of it past a brick
     points.clear();
     for (std::size_t v = 0; v < edges.size(); ++v) {
       const glm::vec3 p = edges[v].result();
@@ -169,7 +176,7 @@ class Mesher {
 
   // The vertex on the edge from node t to node t + offset(d), owned by the cell whose lowest node is t.
   std::uint32_t edgeVertex(const glm::uvec3& t, std::uint32_t d) const {
-    const glm::uvec3 brick = t / band_.brickCells;
+    const glm::uvec3 brick = t / brickCells_;
     const std::int32_t slot = band_.nearSlot[band_.brickIndex(brick)];
     const std::int32_t local =
         slot < 0 ? -1 : bricks_[std::size_t(slot)].edgeVertex[std::size_t(localCell(bricks_[std::size_t(slot)], t)) * 7 + d - 1];
@@ -177,10 +184,20 @@ class Mesher {
     return bricks_[std::size_t(slot)].base + std::uint32_t(local);
   }
 
+  // Per crossed cell: which corners are inside (bit n: corner n), and the vertices of its edges looked
+  // up once (key lower corner * 8 + upper corner), shared by its six tetrahedra.
+  struct CellCuts {
+    std::uint32_t inside = 0;
+    std::array<std::int64_t, 64> vertex;
+  };
+
   void triangulate(Brick& b) {
-    forCrossedCells(b, [&](const glm::uvec3& c) {
-      for (const auto& t : kTets) tetrahedron(b, c, t);
-    });
+    for (const glm::uvec3& c : b.crossedCells) {
+      CellCuts cell;
+      for (std::uint32_t n = 0; n < 8; ++n) cell.inside |= std::uint32_t(value(c + cornerOffset(n)) < 0.0f) << n;
+      cell.vertex.fill(-1);
+      for (const auto& t : kTets) tetrahedron(b, c, cell, t);
+    }
   }
 
   // Orientation is decided on the tetrahedron's corners, never on the (possibly tiny) triangle: a
@@ -190,20 +207,23 @@ class Mesher {
     b.indices.insert(b.indices.end(), {v0, v1, v2});
   }
 
-  void tetrahedron(Brick& b, const glm::uvec3& c, const std::array<std::uint32_t, 4>& corner) const {
+  // Orientation from the corners' offsets in the cell (exact small integers: the same decisions as
+  // world positions, which are the offsets scaled by the cell and moved).
+  void tetrahedron(Brick& b, const glm::uvec3& c, CellCuts& cell, const std::array<std::uint32_t, 4>& corner) const {
     std::array<glm::vec3, 4> pos;
     std::array<int, 4> in{}, out{};
     int nIn = 0, nOut = 0;
     for (int v = 0; v < 4; ++v) {
-      const glm::uvec3 n = c + cornerOffset(corner[v]);
-      pos[v] = g_.node(n.x, n.y, n.z);
-      (value(n) < 0.0f ? in[nIn++] : out[nOut++]) = v;
+      pos[v] = glm::vec3(cornerOffset(corner[v]));
+      ((cell.inside >> corner[v]) & 1u ? in[nIn++] : out[nOut++]) = v;
     }
     if (nIn == 0 || nOut == 0) return;
     auto cut = [&](int u, int v) {
       std::uint32_t lo = corner[u], hi = corner[v];
       if ((lo & hi) != lo) std::swap(lo, hi);  // the subset corner is the edge's lower node
-      return edgeVertex(c + cornerOffset(lo), lo ^ hi);
+      std::int64_t& known = cell.vertex[lo * 8 + hi];
+      if (known < 0) known = edgeVertex(c + cornerOffset(lo), lo ^ hi);
+      return std::uint32_t(known);
     };
     if (nIn == 1 || nOut == 1) {
       const int apex = nIn == 1 ? in[0] : out[0];
@@ -239,13 +259,17 @@ LevelSetBand wholeGridBand(const SdfGrid& grid, const DistanceFunction& field) {
   return band;
 }
 
-HeadMesh meshZeroLevel(const SdfGrid& grid, const LevelSetBand& band) {
+HeadMesh meshZeroLevel(const SdfGrid& grid, const LevelSetBand& band, std::uint32_t stride) {
   if (grid.empty() || glm::any(glm::lessThan(grid.dims, glm::uvec3(2)))) throw Error("level set mesh: the grid is empty");
+  if (stride == 0 || band.brickCells % stride != 0)
+    throw Error("level set mesh: the stride must divide the band's brick size");
+  if (glm::any(glm::lessThan((grid.dims - 1u) / stride, glm::uvec3(1))))
+    throw Error("level set mesh: the grid has fewer than two nodes per axis at this stride");
   if (band.brickCells == 0 || band.nearSlot.size() != std::size_t(band.bricks.x) * band.bricks.y * band.bricks.z ||
       glm::any(glm::lessThan(band.bricks * band.brickCells, grid.dims - 1u)))
     throw Error("level set mesh: the band's bricks do not cover the grid");
   if (!band.exact || !band.exactMany) throw Error("level set mesh: the band has no exact field");
-  return Mesher(grid, band).run();
+  return Mesher(grid, band, stride).run();
 }
 
 HeadMesh meshZeroLevel(const SdfGrid& grid, const DistanceFunction& field) {

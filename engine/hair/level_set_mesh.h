@@ -35,6 +35,9 @@ struct LevelSetBand {
 // Every brick near, the exact field = `field` everywhere.
 LevelSetBand wholeGridBand(const SdfGrid& grid, const DistanceFunction& field);
 
-HeadMesh meshZeroLevel(const SdfGrid& grid, const LevelSetBand& band);
+// stride > 1 meshes a coarser lattice: every stride-th node of the grid (stride must divide the band's
+// brickCells, so every mesh cell lies in one brick), the same exact field on its edges. The mesh's
+// resolution is then independent of the grid's (the collider keeps its fine cells).
+HeadMesh meshZeroLevel(const SdfGrid& grid, const LevelSetBand& band, std::uint32_t stride = 1);
 HeadMesh meshZeroLevel(const SdfGrid& grid, const DistanceFunction& field);
 }  // namespace hp

@@ -118,24 +118,6 @@ class Sampler {
     }
   }
 
-  // A near brick whose closed box holds node n (bricks on both sides of a brick face share its
-  // nodes), or -1.
-  std::int32_t nearBrickAt(const glm::uvec3& n) const {
-    std::array<std::array<std::uint32_t, 2>, 3> candidates{};
-    std::array<std::uint32_t, 3> count{};
-    for (int a = 0; a < 3; ++a) {
-      if (n[a] > 0 && n[a] % B_ == 0) candidates[a][count[a]++] = n[a] / B_ - 1u;
-      if (n[a] / B_ < bricks_[a]) candidates[a][count[a]++] = n[a] / B_;
-    }
-    for (std::uint32_t z = 0; z < count[2]; ++z)
-      for (std::uint32_t y = 0; y < count[1]; ++y)
-        for (std::uint32_t x = 0; x < count[0]; ++x) {
-          const std::int32_t slot = nearSlot_[brickIndex({candidates[0][x], candidates[1][y], candidates[2][z]})];
-          if (slot >= 0) return slot;
-        }
-    return -1;
-  }
-
   // Whether a near brick shares a node with brick b's lower faces (the bricks at -x, -y, -z and between).
   bool nearBelow(const glm::uvec3& b) const {
     for (std::uint32_t d = 1; d < 8; ++d) {
@@ -145,39 +127,73 @@ class Sampler {
     return false;
   }
 
-  static float trilinear(const FarBlock& f, const glm::uvec3& n) {
-    const glm::vec3 t = glm::vec3(n - f.cellLo) / glm::max(glm::vec3(f.cellHi - f.cellLo), glm::vec3(1.0f));
+  // The trilinear blend of the far block's corner values at every node of [lo, hi) (t = the node's
+  // fraction of the block per axis); the x blends are computed once per column, not per node.
+  void fillFar(const FarBlock& f, const glm::uvec3& lo, const glm::uvec3& hi) {
+    constexpr std::uint32_t kMax = 33;  // nodes a brick owns per axis (brickCells <= 32, plus the last node)
+    std::array<float, kMax> x00, x10, x01, x11;
+    const glm::vec3 span = glm::max(glm::vec3(f.cellHi - f.cellLo), glm::vec3(1.0f));
     const auto& v = f.corner;
-    const float x00 = glm::mix(v[0], v[1], t.x), x10 = glm::mix(v[2], v[3], t.x);
-    const float x01 = glm::mix(v[4], v[5], t.x), x11 = glm::mix(v[6], v[7], t.x);
-    return glm::mix(glm::mix(x00, x10, t.y), glm::mix(x01, x11, t.y), t.z);
+    for (std::uint32_t x = lo.x; x < hi.x; ++x) {
+      const float t = float(x - f.cellLo.x) / span.x;
+      x00[x - lo.x] = glm::mix(v[0], v[1], t), x10[x - lo.x] = glm::mix(v[2], v[3], t);
+      x01[x - lo.x] = glm::mix(v[4], v[5], t), x11[x - lo.x] = glm::mix(v[6], v[7], t);
+    }
+    for (std::uint32_t z = lo.z; z < hi.z; ++z) {
+      const float tz = float(z - f.cellLo.z) / span.z;
+      for (std::uint32_t y = lo.y; y < hi.y; ++y) {
+        const float ty = float(y - f.cellLo.y) / span.y;
+        float* row = &g_.values[g_.index(lo.x, y, z)];
+        for (std::uint32_t i = 0; i < hi.x - lo.x; ++i)
+          row[i] = glm::mix(glm::mix(x00[i], x10[i], ty), glm::mix(x01[i], x11[i], ty), tz);
+      }
+    }
   }
 
   // The nodes brick b owns: [b B, (b + 1) B) per axis, the last brick also the grid's last node. A near
-  // brick evaluates them all (one batch); a far one only those on its lower faces that a near
-  // neighbour shares, and blends the rest from its far block.
+  // brick evaluates them all (one batch); a far one blends them from its far block, then evaluates
+  // those on its lower faces that a near neighbour shares.
   std::size_t fillBrick(const glm::uvec3& b) {
     const glm::uvec3 lo = b * B_;
     const glm::uvec3 hi = glm::mix(glm::min((b + 1u) * B_, cells_), cells_ + 1u, glm::equal(b + 1u, bricks_));
     const std::int32_t own = nearSlot_[brickIndex(b)];
     if (own >= 0) return fillNearBrick(programs_[std::size_t(own)], lo, hi);
     const FarBlock& far = far_[std::size_t(brickFar_[brickIndex(b)])];
-    if (!nearBelow(b)) {
-      for (std::uint32_t z = lo.z; z < hi.z; ++z)
-        for (std::uint32_t y = lo.y; y < hi.y; ++y)
-          for (std::uint32_t x = lo.x; x < hi.x; ++x) g_.values[g_.index(x, y, z)] = trilinear(far, {x, y, z});
-      return 0;
-    }
+    fillFar(far, lo, hi);
+    return nearBelow(b) ? fillShared(b, lo, hi) : 0;
+  }
+
+  // The nodes of far brick b (owning [lo, hi)) on a face, edge or corner it shares with a near brick
+  // below it get the exact field, one batch per such neighbour, with the neighbour's program (every
+  // near program gives the field's own value there). Returns how many nodes became exact.
+  std::size_t fillShared(const glm::uvec3& b, const glm::uvec3& lo, const glm::uvec3& hi) {
+    const glm::uvec3 size = hi - lo;
+    std::vector<bool> done(std::size_t(size.x) * size.y * size.z, false);
+    std::vector<glm::vec3> points;
+    std::vector<std::size_t> where, local;
     std::size_t exact = 0;
-    for (std::uint32_t z = lo.z; z < hi.z; ++z)
-      for (std::uint32_t y = lo.y; y < hi.y; ++y)
-        for (std::uint32_t x = lo.x; x < hi.x; ++x) {
-          const glm::uvec3 n(x, y, z);
-          const bool shared = x % B_ == 0 || y % B_ == 0 || z % B_ == 0;  // on a face other bricks touch
-          const std::int32_t slot = shared ? nearBrickAt(n) : -1;
-          g_.values[g_.index(x, y, z)] = slot >= 0 ? programs_[std::size_t(slot)](node(n)) : trilinear(far, n);
-          exact += slot >= 0;
-        }
+    for (std::uint32_t d = 1; d < 8; ++d) {
+      const glm::uvec3 step(d & 1u, (d >> 1) & 1u, (d >> 2) & 1u);
+      if (!glm::all(glm::greaterThanEqual(b, step))) continue;
+      const std::int32_t slot = nearSlot_[brickIndex(b - step)];
+      if (slot < 0) continue;
+      // Shared with the neighbour: the lower face along each stepped axis, the whole range along the others.
+      const glm::uvec3 end = glm::mix(hi, lo + 1u, glm::equal(step, glm::uvec3(1u)));
+      points.clear(), where.clear(), local.clear();
+      for (std::uint32_t z = lo.z; z < end.z; ++z)
+        for (std::uint32_t y = lo.y; y < end.y; ++y)
+          for (std::uint32_t x = lo.x; x < end.x; ++x) {
+            const std::size_t l = (std::size_t(z - lo.z) * size.y + (y - lo.y)) * size.x + (x - lo.x);
+            if (done[l]) continue;
+            done[l] = true;
+            points.push_back(node({x, y, z}));
+            where.push_back(g_.index(x, y, z));
+          }
+      std::vector<float> values(points.size());
+      programs_[std::size_t(slot)].evaluate(points, values);
+      for (std::size_t i = 0; i < values.size(); ++i) g_.values[where[i]] = values[i];
+      exact += values.size();
+    }
     return exact;
   }
 

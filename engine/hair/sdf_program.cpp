@@ -189,27 +189,55 @@ float Program::operator()(const glm::vec3& p) const {
 namespace {
 constexpr std::size_t kBatch = 64;
 
-// One leaf at n points: the switch outside the loop.
-void leafBatch(const Op& op, const glm::vec3* p, float* out, std::size_t n) {
-  glm::vec3 q[kBatch];
-  for (std::size_t i = 0; i < n; ++i) q[i] = mirrorPoint(op, p[i]);
+// A batch of points as three arrays (x, |x| for mirrored leaves, y, z): the loops below are plain
+// float arithmetic over arrays, which the compiler turns into SIMD (this file is built with
+// -fno-math-errno -fno-trapping-math so sqrt and the selects vectorise). Each loop spells out the
+// same operations in the same order as the scalar primitive of sdf_primitives.h (glm::length is
+// sqrt((x*x + y*y) + z*z), glm::mix(a, b, t) is a*(1-t) + b*t), so the values are bit for bit those
+// of operator().
+struct SoaBatch {
+  alignas(16) float x[kBatch], ax[kBatch], y[kBatch], z[kBatch];
+};
+
+inline float len3(float x, float y, float z) { return std::sqrt(x * x + y * y + z * z); }
+
+void leafBatch(const Op& op, const SoaBatch& p, float* __restrict out, std::size_t n) {
+  const float* __restrict px = op.mirrorX ? p.ax : p.x;
+  const float* __restrict py = p.y;
+  const float* __restrict pz = p.z;
+  const glm::vec3 a = op.a, b = op.b;
   switch (op.kind) {
     case OpKind::Sphere:
-      for (std::size_t i = 0; i < n; ++i) out[i] = sphere(q[i], op.a, op.ra);
+      for (std::size_t i = 0; i < n; ++i) out[i] = len3(px[i] - a.x, py[i] - a.y, pz[i] - a.z) - op.ra;
       break;
-    case OpKind::Ellipsoid:
-      for (std::size_t i = 0; i < n; ++i) out[i] = ellipsoid(q[i], op.a, op.b);
+    case OpKind::Ellipsoid: {
+      const glm::vec3 rr = b * b;
+      const float rMin = std::min(b.x, std::min(b.y, b.z));
+      for (std::size_t i = 0; i < n; ++i) {
+        const float qx = px[i] - a.x, qy = py[i] - a.y, qz = pz[i] - a.z;
+        const float k0 = len3(qx / b.x, qy / b.y, qz / b.z), k1 = len3(qx / rr.x, qy / rr.y, qz / rr.z);
+        out[i] = k1 < 1e-12f ? -rMin : k0 * (k0 - 1.0f) / k1;
+      }
       break;
-    case OpKind::TaperedCapsule:
-      for (std::size_t i = 0; i < n; ++i) out[i] = taperedCapsule(q[i], op.a, op.b, op.ra, op.rb);
+    }
+    case OpKind::TaperedCapsule: {
+      const glm::vec3 ab = b - a;
+      const float abab = glm::dot(ab, ab);
+      for (std::size_t i = 0; i < n; ++i) {
+        const float dx = px[i] - a.x, dy = py[i] - a.y, dz = pz[i] - a.z;
+        const float t = glm::clamp((dx * ab.x + dy * ab.y + dz * ab.z) / abab, 0.0f, 1.0f);
+        const float ex = px[i] - (a.x + t * ab.x), ey = py[i] - (a.y + t * ab.y), ez = pz[i] - (a.z + t * ab.z);
+        out[i] = len3(ex, ey, ez) - glm::mix(op.ra, op.rb, t);
+      }
       break;
+    }
     default:
-      for (std::size_t i = 0; i < n; ++i) out[i] = op.ra - q[i].y;
+      for (std::size_t i = 0; i < n; ++i) out[i] = op.ra - py[i];
       break;
   }
 }
 
-void blendBatch(const Op& op, float* a, const float* b, std::size_t n) {
+void blendBatch(const Op& op, float* __restrict a, const float* __restrict b, std::size_t n) {
   switch (op.kind) {
     case OpKind::Union:
       for (std::size_t i = 0; i < n; ++i) a[i] = smoothUnion(a[i], b[i], op.k);
@@ -226,13 +254,18 @@ void blendBatch(const Op& op, float* a, const float* b, std::size_t n) {
 
 void Program::evaluate(std::span<const glm::vec3> points, std::span<float> out) const {
   if (out.size() != points.size()) throw Error("distance program: one output per point");
-  float stack[kMaxDepth + 1][kBatch];
+  alignas(16) float stack[kMaxDepth + 1][kBatch];
+  SoaBatch batch;
   for (std::size_t first = 0; first < points.size(); first += kBatch) {
     const std::size_t n = std::min(kBatch, points.size() - first);
+    for (std::size_t i = 0; i < n; ++i) {
+      const glm::vec3& p = points[first + i];
+      batch.x[i] = p.x, batch.ax[i] = std::abs(p.x), batch.y[i] = p.y, batch.z[i] = p.z;
+    }
     std::size_t depth = 0;
     for (const Op& op : ops_) {
       if (isLeaf(op.kind)) {
-        leafBatch(op, points.data() + first, stack[depth++], n);
+        leafBatch(op, batch, stack[depth++], n);
       } else {
         --depth;
         blendBatch(op, stack[depth - 1], stack[depth], n);

@@ -60,5 +60,14 @@ TEST(SdfProgram, NarrowBandOfABallMeshesLikeTheWholeGrid) {
   EXPECT_EQ(a.indices.size(), b.indices.size());
   EXPECT_EQ(a.positions.size(), b.positions.size());
   EXPECT_THROW(sampleNarrowBand(ball, glm::vec3(-0.7f), glm::vec3(0.7f), 0.02f, 0.0f), Error);
+  // Every second node (a render mesh coarser than the collider): the same on both grids, about a
+  // quarter of the triangles, vertices still on the exact surface; a stride must divide the brick.
+  const HeadMesh c = meshZeroLevel(band.grid, band.band, 2);
+  const HeadMesh d = meshZeroLevel(whole, wholeGridBand(whole, [&](const glm::vec3& p) { return ball(p); }), 2);
+  EXPECT_EQ(c.indices.size(), d.indices.size());
+  EXPECT_GT(c.indices.size(), a.indices.size() / 6);
+  EXPECT_LT(c.indices.size(), a.indices.size() / 3);
+  for (const glm::vec3& p : c.positions) ASSERT_LT(std::abs(ball(p)), 1e-5f);
+  EXPECT_THROW(meshZeroLevel(band.grid, band.band, 3), Error);
 }
 }  // namespace hp
