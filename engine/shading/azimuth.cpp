@@ -1,4 +1,5 @@
 #include "engine/shading/azimuth.h"
+#include "engine/shading/math_constants.h"
 
 #include <algorithm>
 #include <cmath>
@@ -6,8 +7,6 @@
 
 namespace hp::shading {
 namespace {
-constexpr double kPi = std::numbers::pi;
-
 struct CubicCoeffs {
   double a;  // linear coefficient
   double b;  // cubic coefficient (Phi = a g - b g^3 + p pi)

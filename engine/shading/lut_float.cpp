@@ -16,7 +16,7 @@ using shading::makeLutTexture;
 
 float quantise(double v, LutFormat f) { return shading::quantiseTexel(v, f); }
 
-LutTexture buildM(const HairMaterial& m, LutFormat f) {
+LutTexture buildFloatM(const HairMaterial& m, LutFormat f) {
   LutTexture t = makeLutTexture("M", gpu::MARSCHNER_FLOAT_M_WIDTH, 1, f);
   t.channelNames = {"M_R", "M_TT", "M_TRT", "unused"};
   t.uAxis = "signed pseudo-angle of theta_h: 0.5 + 0.5 sign(theta_h) P(|theta_h|), texel-centre mapped";
@@ -30,7 +30,7 @@ LutTexture buildM(const HairMaterial& m, LutFormat f) {
   return t;
 }
 
-void buildN(const HairMaterial& m, LutTexture& n0, LutTexture& n1) {
+void buildFloatN(const HairMaterial& m, LutTexture& n0, LutTexture& n1) {
   double limit = std::acos(kMinCosThetaD);
   for (std::uint32_t j = 0; j < n0.height; ++j) {
     double thetaD = std::min(shading::pseudoAngleInverse(shading::texelCentre(j, n0.height)), limit);
@@ -63,8 +63,8 @@ MarschnerLut buildFloatLut(const HairMaterial& material, LutFormat format) {
   n1.channelNames = {"N_TRT.r", "N_TRT.g", "N_TRT.b", "unused"};
   n0.uAxis = n1.uAxis = nu;
   n0.vAxis = n1.vAxis = nv;
-  buildN(material, n0, n1);
-  lut.textures = {buildM(material, format), std::move(n0), std::move(n1)};
+  buildFloatN(material, n0, n1);
+  lut.textures = {buildFloatM(material, format), std::move(n0), std::move(n1)};
   lut.parameterisation =
       "P(a) = sin(a)/sqrt2 for a <= pi/4, 1 - cos(a)/sqrt2 above, computed from cos(2a) with square "
       "roots only; x in [0,1] -> texture coordinate (x (n-1) + 0.5)/n. "

@@ -34,7 +34,7 @@ void normaliseToUnorm8(LutTexture& t, const std::array<bool, 4>& rescale) {
   }
 }
 
-LutTexture buildM(const HairMaterial& m, LutFormat f) {
+LutTexture buildPaperM(const HairMaterial& m, LutFormat f) {
   LutTexture t = makeTexture("M", f);
   t.channelNames = {"M_R", "M_TT", "M_TRT", "cos_theta_d"};
   t.uAxis = "sin(theta_i) * 0.5 + 0.5";
@@ -52,7 +52,7 @@ LutTexture buildM(const HairMaterial& m, LutFormat f) {
   return t;
 }
 
-LutTexture buildN(const HairMaterial& m, LutFormat f) {
+LutTexture buildPaperN(const HairMaterial& m, LutFormat f) {
   LutTexture t = makeTexture("N", f);
   t.channelNames = {"(N_TT + N_TRT).r", "(N_TT + N_TRT).g", "(N_TT + N_TRT).b", "N_R"};
   t.uAxis = "cos(phi) * 0.5 + 0.5";
@@ -76,7 +76,7 @@ MarschnerLut buildPaperLut(const HairMaterial& material, LutFormat format) {
   MarschnerLut lut;
   lut.mode = LutMode::Paper;
   lut.material = material;
-  lut.textures = {buildM(material, format), buildN(material, format)};
+  lut.textures = {buildPaperM(material, format), buildPaperN(material, format)};
   lut.parameterisation =
       "paper: m = M(sin theta_i, sin theta_r) * mScale; n = N(cos phi, m.a) * nScale; "
       "S = (m.r n.a + m.g n.rgb) / m.a^2 (M_TT stands in for M_TRT)";

@@ -1,4 +1,5 @@
 #include "engine/shading/marschner_terms.h"
+#include "engine/shading/math_constants.h"
 
 #include <algorithm>
 #include <cmath>
@@ -9,8 +10,6 @@
 
 namespace hp::shading {
 namespace {
-constexpr double kPi = std::numbers::pi;
-
 double wrapPi(double x) { return x - 2.0 * kPi * std::floor((x + kPi) / (2.0 * kPi)); }
 
 double smoothstep(double e0, double e1, double x) {

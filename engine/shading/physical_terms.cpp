@@ -1,5 +1,6 @@
 // Factors of the energy-conserving fibre model; see physical_terms.h for the conventions.
 #include "engine/shading/physical_terms.h"
+#include "engine/shading/math_constants.h"
 
 #include <algorithm>
 #include <cmath>
@@ -10,7 +11,6 @@
 
 namespace hp::shading {
 namespace {
-constexpr double kPi = 3.14159265358979323846;
 // Panels of the h integral (8 Gauss-Legendre nodes each) over gamma_o in [-pi/2, pi/2]; convergence
 // is checked in tests/shading/physical_test.cpp (the white furnace, which needs every lobe exact).
 constexpr int kAzimuthPanels = 32;

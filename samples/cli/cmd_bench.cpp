@@ -20,6 +20,8 @@
 #include "samples/cli/bench_plot.h"
 #include "samples/cli/command.h"
 
+namespace hp::cli::cmd_bench {  // per subcommand: file-local names stay apart in a unity build
+
 namespace {
 struct BenchOptions {
   std::vector<std::uint32_t> strands{20000};
@@ -156,3 +158,4 @@ void setup(CLI::App& app) {
 }  // namespace
 
 HP_CLI_COMMAND(setup);
+}  // namespace hp::cli::cmd_bench

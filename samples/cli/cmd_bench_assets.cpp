@@ -21,6 +21,8 @@
 #include "samples/cli/bench_context.h"
 #include "samples/cli/command.h"
 
+namespace hp::cli::cmd_bench_assets {  // per subcommand: file-local names stay apart in a unity build
+
 namespace {
 struct BenchOptions {
   std::uint32_t strands = 50000;
@@ -106,3 +108,4 @@ void setup(CLI::App& app) {
 }  // namespace
 
 HP_CLI_COMMAND(setup);
+}  // namespace hp::cli::cmd_bench_assets

@@ -19,6 +19,8 @@
 #include "samples/cli/bench_context.h"
 #include "samples/cli/command.h"
 
+namespace hp::cli::cmd_bench_head {  // per subcommand: file-local names stay apart in a unity build
+
 namespace {
 struct Options {
   std::uint32_t repeat = 3;
@@ -101,3 +103,4 @@ void setup(CLI::App& app) {
 }  // namespace
 
 HP_CLI_COMMAND(setup);
+}  // namespace hp::cli::cmd_bench_head

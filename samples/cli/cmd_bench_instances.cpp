@@ -27,6 +27,8 @@
 #include "samples/cli/command.h"
 #include "samples/tools/offscreen_renderer.h"
 
+namespace hp::cli::cmd_bench_instances {  // per subcommand: file-local names stay apart in a unity build
+
 namespace {
 using Clock = std::chrono::steady_clock;
 
@@ -140,3 +142,4 @@ void setup(CLI::App& app) {
 }  // namespace
 
 HP_CLI_COMMAND(setup);
+}  // namespace hp::cli::cmd_bench_instances

@@ -19,6 +19,8 @@
 #include "samples/cli/bench_context.h"
 #include "samples/cli/command.h"
 
+namespace hp::cli::cmd_bench_opacity {  // per subcommand: file-local names stay apart in a unity build
+
 namespace {
 struct BenchOptions {
   std::vector<std::uint32_t> strands{10000, 100000, 1000000};
@@ -93,3 +95,4 @@ void setup(CLI::App& app) {
 }  // namespace
 
 HP_CLI_COMMAND(setup);
+}  // namespace hp::cli::cmd_bench_opacity

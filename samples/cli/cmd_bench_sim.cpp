@@ -18,6 +18,8 @@
 #include "samples/cli/command.h"
 #include "samples/cli/bench_context.h"
 
+namespace hp::cli::cmd_bench_sim {  // per subcommand: file-local names stay apart in a unity build
+
 namespace {
 struct BenchOptions {
   std::string device;
@@ -109,3 +111,4 @@ void setupBench(CLI::App& app) {
 }  // namespace
 
 HP_CLI_COMMAND(setupBench);
+}  // namespace hp::cli::cmd_bench_sim

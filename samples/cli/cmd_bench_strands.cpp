@@ -27,6 +27,8 @@
 #include "samples/cli/bench_context.h"
 #include "samples/cli/command.h"
 
+namespace hp::cli::cmd_bench_strands {  // per subcommand: file-local names stay apart in a unity build
+
 namespace {
 constexpr VkDeviceSize kCopyBytes = 128ull << 20;
 
@@ -156,3 +158,4 @@ void setup(CLI::App& app) {
 }  // namespace
 
 HP_CLI_COMMAND(setup);
+}  // namespace hp::cli::cmd_bench_strands

@@ -25,6 +25,8 @@
 #include "samples/cli/material_options.h"
 #include "samples/cli/output_paths.h"
 
+namespace hp::cli::cmd_brdf {  // per subcommand: file-local names stay apart in a unity build
+
 namespace {
 struct BrdfOptions {
   std::string in;
@@ -92,3 +94,4 @@ void setupBrdf(CLI::App& app) {
 }  // namespace
 
 HP_CLI_COMMAND(setupBrdf);
+}  // namespace hp::cli::cmd_brdf

@@ -8,6 +8,8 @@
 #include "samples/cli/command.h"
 #include "samples/tools/image_compare.h"
 
+namespace hp::cli::cmd_compare {  // per subcommand: file-local names stay apart in a unity build
+
 namespace {
 struct CompareOptions {
   std::string image, reference, mask;
@@ -42,3 +44,4 @@ void setupCompare(CLI::App& app) {
 }  // namespace
 
 HP_CLI_COMMAND(setupCompare);
+}  // namespace hp::cli::cmd_compare

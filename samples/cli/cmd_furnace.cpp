@@ -14,6 +14,8 @@
 #include "samples/cli/command.h"
 #include "samples/cli/material_options.h"
 
+namespace hp::cli::cmd_furnace {  // per subcommand: file-local names stay apart in a unity build
+
 namespace {
 struct FurnaceOptions {
   std::string model = "physical";
@@ -53,3 +55,4 @@ void setupFurnace(CLI::App& app) {
 }  // namespace
 
 HP_CLI_COMMAND(setupFurnace);
+}  // namespace hp::cli::cmd_furnace

@@ -12,6 +12,8 @@
 #include "samples/cli/command.h"
 #include "samples/cli/output_paths.h"
 
+namespace hp::cli::cmd_grow {  // per subcommand: file-local names stay apart in a unity build
+
 namespace {
 struct GrowCommand {
   std::string scalp;
@@ -59,3 +61,4 @@ void setup(CLI::App& app) {
 }  // namespace
 
 HP_CLI_COMMAND(setup);
+}  // namespace hp::cli::cmd_grow

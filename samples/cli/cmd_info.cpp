@@ -10,6 +10,8 @@
 #include "engine/vk/instance_probe.h"
 #include "samples/cli/command.h"
 
+namespace hp::cli::cmd_info {  // per subcommand: file-local names stay apart in a unity build
+
 namespace {
 struct InfoOptions {
   bool json = false;
@@ -97,3 +99,4 @@ void setupInfo(CLI::App& app) {
 }  // namespace
 
 HP_CLI_COMMAND(setupInfo);
+}  // namespace hp::cli::cmd_info

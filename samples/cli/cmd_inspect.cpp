@@ -17,6 +17,8 @@
 #include "engine/hair/tfx_file.h"
 #include "samples/cli/command.h"
 
+namespace hp::cli::cmd_inspect {  // per subcommand: file-local names stay apart in a unity build
+
 namespace {
 struct InspectOptions {
   std::string file;
@@ -136,3 +138,4 @@ void setup(CLI::App& app) {
 }  // namespace
 
 HP_CLI_COMMAND(setup);
+}  // namespace hp::cli::cmd_inspect

@@ -19,6 +19,8 @@
 #include "samples/cli/material_options.h"
 #include "samples/cli/output_paths.h"
 
+namespace hp::cli::cmd_lut {  // per subcommand: file-local names stay apart in a unity build
+
 namespace {
 struct LutOptions {
   std::string out;
@@ -71,3 +73,4 @@ void setupLut(CLI::App& app) {
 }  // namespace
 
 HP_CLI_COMMAND(setupLut);
+}  // namespace hp::cli::cmd_lut

@@ -17,6 +17,8 @@
 #include "samples/tools/reference/fibre.h"
 #include "samples/tools/reference/path_tracer.h"
 
+namespace hp::cli::cmd_reference {  // per subcommand: file-local names stay apart in a unity build
+
 namespace {
 struct ReferenceOptions {
   hp::cli::FrameOptions frame;
@@ -98,3 +100,4 @@ void setupReference(CLI::App& app) {
 }  // namespace
 
 HP_CLI_COMMAND(setupReference);
+}  // namespace hp::cli::cmd_reference

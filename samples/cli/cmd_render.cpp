@@ -20,6 +20,8 @@
 #include "samples/tools/reference/fibre.h"
 #include "samples/cli/output_paths.h"
 
+namespace hp::cli::cmd_render {  // per subcommand: file-local names stay apart in a unity build
+
 namespace {
 struct RenderOptions {
   hp::cli::FrameOptions frame;
@@ -131,3 +133,4 @@ void setupRender(CLI::App& app) {
 }  // namespace
 
 HP_CLI_COMMAND(setupRender);
+}  // namespace hp::cli::cmd_render

@@ -13,6 +13,8 @@
 #include "samples/cli/scene_options.h"
 #include "samples/cli/output_paths.h"
 
+namespace hp::cli::cmd_simulate {  // per subcommand: file-local names stay apart in a unity build
+
 namespace {
 struct SimulateOptions {
   hp::cli::SceneOptions scene;
@@ -98,3 +100,4 @@ void setupSimulate(CLI::App& app) {
 }  // namespace
 
 HP_CLI_COMMAND(setupSimulate);
+}  // namespace hp::cli::cmd_simulate

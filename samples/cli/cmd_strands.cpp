@@ -20,6 +20,8 @@
 #include "shaders/shared/strands.h"
 #include "samples/cli/output_paths.h"
 
+namespace hp::cli::cmd_strands {  // per subcommand: file-local names stay apart in a unity build
+
 namespace {
 // Past this a dump is a mistake (2M x 36 vertices is already a 0.9 GB .hair file).
 constexpr std::int64_t kMaxDensity = 2'000'000;
@@ -114,3 +116,4 @@ void setupStrands(CLI::App& app) {
 }  // namespace
 
 HP_CLI_COMMAND(setupStrands);
+}  // namespace hp::cli::cmd_strands

@@ -15,6 +15,7 @@
 #include "tests/support/cli_runner.h"
 
 using hp::test::runCli;
+using hp::test::slurp;
 using hp::test::TempDir;
 using hp::test::writeText;
 
@@ -43,13 +44,6 @@ std::string csv(const std::vector<Row>& rows, bool header) {
     os << r.L.x << "," << r.L.y << "," << r.L.z << "," << r.V.x << "," << r.V.y << "," << r.V.z << "," << r.T.x << ","
        << r.T.y << "," << r.T.z << "\n";
   return os.str();
-}
-
-std::string slurp(const std::filesystem::path& p) {
-  std::ifstream f(p, std::ios::binary);
-  std::stringstream ss;
-  ss << f.rdbuf();
-  return ss.str();
 }
 
 std::vector<glm::dvec3> readS(const std::filesystem::path& p) {

@@ -7,15 +7,10 @@
 #include "tests/support/cli_runner.h"
 
 using hp::test::runCli;
+using hp::test::filesIn;
 
 namespace {
 const std::string kCap = std::string(HAIRPIPE_TEST_DATA_DIR) + "/scalp_cap.obj";
-
-std::size_t filesIn(const std::filesystem::path& dir) {
-  std::size_t n = 0;
-  for ([[maybe_unused]] const auto& e : std::filesystem::directory_iterator(dir)) ++n;
-  return n;
-}
 
 TEST(CliHairGrow, GrowsOneGuidePerScalpVertex) {
   hp::test::TempDir dir;

@@ -13,16 +13,11 @@
 #include "tests/support/cli_runner.h"
 
 using hp::test::runCli;
+using hp::test::slurp;
+using hp::test::filesIn;
 using hp::test::TempDir;
 
 namespace {
-std::string slurp(const std::filesystem::path& p) {
-  std::ifstream f(p, std::ios::binary);
-  std::stringstream ss;
-  ss << f.rdbuf();
-  return ss.str();
-}
-
 // PFM: "PF" (rgb) or "Pf" (grey), "W H", "-1.0" (little-endian), then rows bottom (v = 0) first.
 struct Pfm {
   std::string kind;
@@ -46,13 +41,6 @@ Pfm readPfm(const std::filesystem::path& p) {
 }
 
 bool isPng(const std::filesystem::path& p) { return slurp(p).rfind("\x89PNG\r\n\x1a\n", 0) == 0; }
-
-std::size_t filesIn(const std::filesystem::path& dir) {
-  if (!std::filesystem::exists(dir)) return 0;
-  std::size_t n = 0;
-  for ([[maybe_unused]] const auto& e : std::filesystem::directory_iterator(dir)) ++n;
-  return n;
-}
 
 TEST(CliLut, PaperModeWritesPfmPngAndJsonMatchingTheCpuBuild) {
   TempDir dir;

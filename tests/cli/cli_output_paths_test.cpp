@@ -12,7 +12,7 @@
 using hp::test::runCli;
 
 namespace {
-const std::string kCap = std::string(HAIRPIPE_TEST_DATA_DIR) + "/scalp_cap.obj";
+const std::string kCapObj = std::string(HAIRPIPE_TEST_DATA_DIR) + "/scalp_cap.obj";
 
 std::string contentsOf(const std::filesystem::path& p) {
   std::ifstream in(p, std::ios::binary);
@@ -32,7 +32,7 @@ void expectInputKept(const std::vector<std::string>& args, const std::filesystem
 
 TEST(CliOutputPaths, GrowRefusesToOverwriteItsScalp) {
   hp::test::TempDir dir;
-  std::filesystem::copy_file(kCap, dir / "a.obj");
+  std::filesystem::copy_file(kCapObj, dir / "a.obj");
   const std::string scalp = (dir / "a.obj").string();
   expectInputKept({"grow", "--scalp", scalp, "--out", scalp}, scalp, "is the input given by --scalp");
   // The same file through another spelling of its path.
@@ -43,7 +43,7 @@ TEST(CliOutputPaths, GrowRefusesToOverwriteItsScalp) {
 TEST(CliOutputPaths, RenderAndStrandsRefuseToOverwriteTheirModel) {
   hp::test::TempDir dir;
   const std::string hair = (dir / "m.hair").string();
-  ASSERT_EQ(runCli({"grow", "--scalp", kCap, "--out", hair, "--particles", "4"}).exitCode, 0);
+  ASSERT_EQ(runCli({"grow", "--scalp", kCapObj, "--out", hair, "--particles", "4"}).exitCode, 0);
   expectInputKept({"render", "--model", hair, "--out", hair, "--frames", "1"}, hair, "is the input given by --model");
   expectInputKept({"render", "--model", hair, "--dump-strands", hair, "--frames", "1"}, hair,
                   "--dump-strands " + hair + ": is the input given by --model");
@@ -53,7 +53,7 @@ TEST(CliOutputPaths, RenderAndStrandsRefuseToOverwriteTheirModel) {
 
 TEST(CliOutputPaths, SceneModelIsAnInputToo) {
   hp::test::TempDir dir;
-  ASSERT_EQ(runCli({"grow", "--scalp", kCap, "--out", (dir / "m.hair").string(), "--particles", "4"}).exitCode, 0);
+  ASSERT_EQ(runCli({"grow", "--scalp", kCapObj, "--out", (dir / "m.hair").string(), "--particles", "4"}).exitCode, 0);
   hp::test::writeText(dir / "s.json", R"({"model": "m.hair"})");
   expectInputKept({"strands", "--scene", (dir / "s.json").string(), "--out", (dir / "m.hair").string()},
                   dir / "m.hair", "is the input given by the scene's model");
@@ -71,14 +71,14 @@ TEST(CliOutputPaths, BrdfRefusesToOverwriteItsQueries) {
 TEST(CliOutputPaths, FoldersAndFilesAreNotConfused) {
   hp::test::TempDir dir;
   std::filesystem::create_directories(dir / "taken");
-  auto r = runCli({"grow", "--scalp", kCap, "--out", (dir / "taken").string()});
+  auto r = runCli({"grow", "--scalp", kCapObj, "--out", (dir / "taken").string()});
   EXPECT_EQ(r.exitCode, 1);
   EXPECT_NE(r.err.find("is a folder, expected a file name"), std::string::npos) << r.err;
   hp::test::writeText(dir / "file", "x");
   r = runCli({"lut", "--out", (dir / "file").string()});
   EXPECT_EQ(r.exitCode, 1);
   EXPECT_NE(r.err.find("is a file, expected a folder"), std::string::npos) << r.err;
-  r = runCli({"grow", "--scalp", kCap, "--out", (dir / "file" / "x.hair").string()});
+  r = runCli({"grow", "--scalp", kCapObj, "--out", (dir / "file" / "x.hair").string()});
   EXPECT_EQ(r.exitCode, 1);
   EXPECT_NE(r.err.find("cannot create the folder"), std::string::npos) << r.err;
 }
@@ -86,7 +86,7 @@ TEST(CliOutputPaths, FoldersAndFilesAreNotConfused) {
 TEST(CliOutputPaths, MissingFoldersAreCreated) {
   hp::test::TempDir dir;
   const auto out = dir / "a" / "b" / "g.hair";
-  const auto r = runCli({"grow", "--scalp", kCap, "--out", out.string(), "--particles", "4"});
+  const auto r = runCli({"grow", "--scalp", kCapObj, "--out", out.string(), "--particles", "4"});
   EXPECT_EQ(r.exitCode, 0) << r.err;
   EXPECT_TRUE(std::filesystem::is_regular_file(out));
 }

@@ -12,13 +12,13 @@
 
 namespace hp {
 namespace {
-Scene parse(const std::string& json) { return parseScene(json, "scene.json", "/base"); }
-std::string parseError(const std::string& json) {
-  return test::errorOf([&] { parse(json); });
+Scene parseSceneText(const std::string& json) { return parseScene(json, "scene.json", "/base"); }
+std::string sceneParseError(const std::string& json) {
+  return test::errorOf([&] { parseSceneText(json); });
 }
 
 TEST(Scene, EmptyObjectIsTheDefaultScene) {
-  Scene s = parse("{}");
+  Scene s = parseSceneText("{}");
   Scene d;
   EXPECT_EQ(s.model.kind, ModelSpec::Kind::Default);
   EXPECT_EQ(s.growth, d.growth);
@@ -31,7 +31,7 @@ TEST(Scene, EmptyObjectIsTheDefaultScene) {
 }
 
 TEST(Scene, ReadsEverySection) {
-  Scene s = parse(R"({
+  Scene s = parseSceneText(R"({
     "model": {"source": "models/curly.hair", "scale": 0.01, "up": "z", "translate": [0, -1.5, 0], "keepStrands": false},
     "growth": {"particles": 9, "length": 0.2, "lengthVariation": 0.1, "segmentRatio": 1.2, "bend": 0.3,
                "bendDirection": [0, -1, 0], "seed": 5},
@@ -70,69 +70,69 @@ TEST(Scene, ReadsEverySection) {
 }
 
 TEST(Scene, ModelShorthandAndDensityTotal) {
-  Scene s = parse(R"({"model": "scalp.OBJ", "density": {"totalStrands": 500}})");
+  Scene s = parseSceneText(R"({"model": "scalp.OBJ", "density": {"totalStrands": 500}})");
   EXPECT_EQ(s.model.kind, ModelSpec::Kind::Obj);
   EXPECT_EQ(s.density.mode, DensityOptions::Mode::Total);
   EXPECT_EQ(s.density.totalStrands, 500u);
 }
 
 TEST(Scene, SyntaxErrorNamesFileAndPosition) {
-  EXPECT_THAT_ERROR_CONTAINS_IMPL(parseError("{\"render\": {\"width\": 5,}}"), "scene.json: invalid JSON: ");
-  EXPECT_THAT_ERROR_CONTAINS_IMPL(parseError("{\"render\": "), "line 1, column 12");
+  EXPECT_THAT_ERROR_CONTAINS_IMPL(sceneParseError("{\"render\": {\"width\": 5,}}"), "scene.json: invalid JSON: ");
+  EXPECT_THAT_ERROR_CONTAINS_IMPL(sceneParseError("{\"render\": "), "line 1, column 12");
 }
 
 TEST(Scene, WrongTypesNameThePath) {
-  EXPECT_THAT_ERROR_CONTAINS_IMPL(parseError(R"({"simulation": {"dt": "fast"}})"),
+  EXPECT_THAT_ERROR_CONTAINS_IMPL(sceneParseError(R"({"simulation": {"dt": "fast"}})"),
                                   "scene.json: /simulation/dt: expected a number, got string");
-  EXPECT_THAT_ERROR_CONTAINS_IMPL(parseError(R"({"render": {"msaa": 2.5}})"),
+  EXPECT_THAT_ERROR_CONTAINS_IMPL(sceneParseError(R"({"render": {"msaa": 2.5}})"),
                                   "scene.json: /render/msaa: expected an integer in [0, 4294967295], got number 2.5");
-  EXPECT_THAT_ERROR_CONTAINS_IMPL(parseError(R"({"render": {"width": -3}})"), "/render/width: expected an integer");
-  EXPECT_THAT_ERROR_CONTAINS_IMPL(parseError(R"({"light": {"direction": [0, "up", 0]}})"),
+  EXPECT_THAT_ERROR_CONTAINS_IMPL(sceneParseError(R"({"render": {"width": -3}})"), "/render/width: expected an integer");
+  EXPECT_THAT_ERROR_CONTAINS_IMPL(sceneParseError(R"({"light": {"direction": [0, "up", 0]}})"),
                                   "scene.json: /light/direction/1: expected a number, got string");
-  EXPECT_THAT_ERROR_CONTAINS_IMPL(parseError(R"({"camera": {"target": [0, 1]}})"),
+  EXPECT_THAT_ERROR_CONTAINS_IMPL(sceneParseError(R"({"camera": {"target": [0, 1]}})"),
                                   "scene.json: /camera/target: expected an array of 3 numbers, got array");
-  EXPECT_THAT_ERROR_CONTAINS_IMPL(parseError(R"({"material": 3})"), "scene.json: /material: expected an object, got number");
-  EXPECT_THAT_ERROR_CONTAINS_IMPL(parseError(R"({"model": {"keepStrands": "yes"}})"),
+  EXPECT_THAT_ERROR_CONTAINS_IMPL(sceneParseError(R"({"material": 3})"), "scene.json: /material: expected an object, got number");
+  EXPECT_THAT_ERROR_CONTAINS_IMPL(sceneParseError(R"({"model": {"keepStrands": "yes"}})"),
                                   "scene.json: /model/keepStrands: expected true or false, got string");
-  EXPECT_THAT_ERROR_CONTAINS_IMPL(parseError(R"({"colliders": {"radius": 1}})"),
+  EXPECT_THAT_ERROR_CONTAINS_IMPL(sceneParseError(R"({"colliders": {"radius": 1}})"),
                                   "scene.json: /colliders: expected an array, got object");
-  EXPECT_THAT_ERROR_CONTAINS_IMPL(parseError("[1, 2]"), "scene.json: /: expected an object, got array");
+  EXPECT_THAT_ERROR_CONTAINS_IMPL(sceneParseError("[1, 2]"), "scene.json: /: expected an object, got array");
 }
 
 TEST(Scene, UnknownKeysAreErrors) {
-  EXPECT_THAT_ERROR_CONTAINS_IMPL(parseError(R"({"simulaton": {}})"), "scene.json: /simulaton: unknown key");
-  EXPECT_THAT_ERROR_CONTAINS_IMPL(parseError(R"({"simulation": {"dampnig": 0.1}})"),
+  EXPECT_THAT_ERROR_CONTAINS_IMPL(sceneParseError(R"({"simulaton": {}})"), "scene.json: /simulaton: unknown key");
+  EXPECT_THAT_ERROR_CONTAINS_IMPL(sceneParseError(R"({"simulation": {"dampnig": 0.1}})"),
                                   "scene.json: /simulation/dampnig: unknown key");
-  EXPECT_THAT_ERROR_CONTAINS_IMPL(parseError(R"({"colliders": [{"center": [0,0,0], "radius": 1, "r": 2}]})"),
+  EXPECT_THAT_ERROR_CONTAINS_IMPL(sceneParseError(R"({"colliders": [{"center": [0,0,0], "radius": 1, "r": 2}]})"),
                                   "scene.json: /colliders/0/r: unknown key");
 }
 
 TEST(Scene, OutOfRangeValuesNameThePath) {
-  EXPECT_THAT_ERROR_CONTAINS_IMPL(parseError(R"({"render": {"msaa": 3}})"),
+  EXPECT_THAT_ERROR_CONTAINS_IMPL(sceneParseError(R"({"render": {"msaa": 3}})"),
                                   "scene.json: /render/msaa: must be 1, 2, 4 or 8, got 3");
-  EXPECT_THAT_ERROR_CONTAINS_IMPL(parseError(R"({"render": {"width": 0}})"), "/render/width: must be in [1, 16384]");
-  EXPECT_THAT_ERROR_CONTAINS_IMPL(parseError(R"({"render": {"raster": "cuda"}})"),
+  EXPECT_THAT_ERROR_CONTAINS_IMPL(sceneParseError(R"({"render": {"width": 0}})"), "/render/width: must be in [1, 16384]");
+  EXPECT_THAT_ERROR_CONTAINS_IMPL(sceneParseError(R"({"render": {"raster": "cuda"}})"),
                                   "/render/raster: raster must be auto, compute or graphics, got 'cuda'");
-  EXPECT_THAT_ERROR_CONTAINS_IMPL(parseError(R"({"camera": {"fovDeg": 180}})"), "/camera/fovDeg: must be in (0, 180)");
-  EXPECT_THAT_ERROR_CONTAINS_IMPL(parseError(R"({"camera": {"distance": 0}})"), "/camera/distance: must be > 0");
-  EXPECT_THAT_ERROR_CONTAINS_IMPL(parseError(R"({"light": {"direction": [0, 0, 0]}})"),
+  EXPECT_THAT_ERROR_CONTAINS_IMPL(sceneParseError(R"({"camera": {"fovDeg": 180}})"), "/camera/fovDeg: must be in (0, 180)");
+  EXPECT_THAT_ERROR_CONTAINS_IMPL(sceneParseError(R"({"camera": {"distance": 0}})"), "/camera/distance: must be > 0");
+  EXPECT_THAT_ERROR_CONTAINS_IMPL(sceneParseError(R"({"light": {"direction": [0, 0, 0]}})"),
                                   "/light/direction: must be a non-zero vector");
-  EXPECT_THAT_ERROR_CONTAINS_IMPL(parseError(R"({"light": {"intensity": -1}})"), "/light/intensity: must be >= 0");
-  EXPECT_THAT_ERROR_CONTAINS_IMPL(parseError(R"({"colliders": [{"center": [0, 0, 0], "radius": -1}]})"),
+  EXPECT_THAT_ERROR_CONTAINS_IMPL(sceneParseError(R"({"light": {"intensity": -1}})"), "/light/intensity: must be >= 0");
+  EXPECT_THAT_ERROR_CONTAINS_IMPL(sceneParseError(R"({"colliders": [{"center": [0, 0, 0], "radius": -1}]})"),
                                   "/colliders/0/radius: must be > 0");
-  EXPECT_THAT_ERROR_CONTAINS_IMPL(parseError(R"({"colliders": [{"center": [0, 0, 0]}]})"),
+  EXPECT_THAT_ERROR_CONTAINS_IMPL(sceneParseError(R"({"colliders": [{"center": [0, 0, 0]}]})"),
                                   "/colliders/0/radius: is required");
-  EXPECT_THAT_ERROR_CONTAINS_IMPL(parseError(R"({"growth": {"particles": 80}})"),
+  EXPECT_THAT_ERROR_CONTAINS_IMPL(sceneParseError(R"({"growth": {"particles": 80}})"),
                                   "scene.json: /growth: growth options: particles per guide must be in [2, 64], got 80");
-  EXPECT_THAT_ERROR_CONTAINS_IMPL(parseError(R"({"density": {"strandsPerTriangle": 4, "totalStrands": 9}})"),
+  EXPECT_THAT_ERROR_CONTAINS_IMPL(sceneParseError(R"({"density": {"strandsPerTriangle": 4, "totalStrands": 9}})"),
                                   "/density/totalStrands: give either strandsPerTriangle or totalStrands, not both");
-  EXPECT_THAT_ERROR_CONTAINS_IMPL(parseError(R"({"model": {"source": "head.fbx"}})"),
+  EXPECT_THAT_ERROR_CONTAINS_IMPL(sceneParseError(R"({"model": {"source": "head.fbx"}})"),
                                   "/model/source: expected \"default\" or a path ending in .hair, .tfx or .obj, got \"head.fbx\"");
-  EXPECT_THAT_ERROR_CONTAINS_IMPL(parseError(R"({"model": {"up": "x"}})"), "/model/up: expected \"y\" or \"z\", got \"x\"");
-  EXPECT_THAT_ERROR_CONTAINS_IMPL(parseError(R"({"model": {"scale": 0}})"), "/model: model transform: scale must be positive");
-  EXPECT_THAT_ERROR_CONTAINS_IMPL(parseError(R"({"simulation": {"iterations": 0}})"),
+  EXPECT_THAT_ERROR_CONTAINS_IMPL(sceneParseError(R"({"model": {"up": "x"}})"), "/model/up: expected \"y\" or \"z\", got \"x\"");
+  EXPECT_THAT_ERROR_CONTAINS_IMPL(sceneParseError(R"({"model": {"scale": 0}})"), "/model: model transform: scale must be positive");
+  EXPECT_THAT_ERROR_CONTAINS_IMPL(sceneParseError(R"({"simulation": {"iterations": 0}})"),
                                   "scene.json: /simulation: simulation parameter iterations must be in [1, 1000], got 0");
-  EXPECT_THAT_ERROR_CONTAINS_IMPL(parseError(R"({"material": {"eta": -1}})"), "scene.json: /material: ");
+  EXPECT_THAT_ERROR_CONTAINS_IMPL(sceneParseError(R"({"material": {"eta": -1}})"), "scene.json: /material: ");
 }
 
 TEST(Scene, LoadsFromAFileAndResolvesPathsAgainstIt) {
@@ -145,7 +145,7 @@ TEST(Scene, LoadsFromAFileAndResolvesPathsAgainstIt) {
 }
 
 TEST(SceneAsset, BuildsTheDefaultHeadWithOverrides) {
-  Scene s = parse(R"({"density": {"totalStrands": 1000}, "colliders": [{"center": [0, 0, 0], "radius": 0.1}]})");
+  Scene s = parseSceneText(R"({"density": {"totalStrands": 1000}, "colliders": [{"center": [0, 0, 0], "radius": 0.1}]})");
   HairAsset a = buildSceneAsset(s);
   EXPECT_EQ(a.name, "default head");
   EXPECT_EQ(a.topology.strands.size(), 1000u);

@@ -17,7 +17,7 @@ using namespace hp;
 using hp::test::VulkanTest;
 
 namespace {
-constexpr std::uint32_t kWidth = 160, kHeight = 120;
+constexpr std::uint32_t kFramingWidth = 160, kFramingHeight = 120;
 
 // A head of radius 0.09 m (times 1/scale model units): 600 strands from the upper half of a sphere,
 // out and then down 0.3 m, in 8 points. Z up maps model (x, y, z) so that z is up.
@@ -72,14 +72,14 @@ TEST_F(VulkanTest, ModelsInAnyUnitsAndUpAxisAreGuessedAndFramed) {
       r.scene.model.path = path;
       r.scene.model.transform = guess.transform;
       r.scene.density.totalStrands = 3000;
-      r.scene.render = {kWidth, kHeight, 1};
+      r.scene.render = {kFramingWidth, kFramingHeight, 1};
       r.settleFrames = 0;
       r.opacity.enabled = false;
       r.look.ambient = 0.4f;  // hair facing away from the light shows through the ambient (sky albedo x 0.15)
       HairAsset asset = buildSceneAsset(r.scene);
       asset.head = {};  // count hair only
       fitCameraToPoints(r.scene.camera, asset.guides.positions);
-      ASSERT_GT(pointsInView(r.scene.camera, float(kWidth) / kHeight, asset.guides.positions), 0u);
+      ASSERT_GT(pointsInView(r.scene.camera, float(kFramingWidth) / kFramingHeight, asset.guides.positions), 0u);
       const double fraction = hairFraction(renderStill(*ctx, asset, r));
       EXPECT_GT(fraction, 0.05) << name;
       EXPECT_LT(fraction, 0.80) << name;

@@ -19,7 +19,7 @@
 using hp::test::VulkanTest;
 
 namespace {
-constexpr std::uint32_t kWidth = 160, kHeight = 120;
+constexpr std::uint32_t kOpacityWidth = 160, kOpacityHeight = 120;
 
 hp::HairAsset hairOnly() {
   hp::DensityOptions density;
@@ -31,7 +31,7 @@ hp::HairAsset hairOnly() {
 
 hp::RenderRequest request(const glm::vec3& towardLight, float orbitDeg, bool shadows, float strandOpacity = 0.3f) {
   hp::RenderRequest r;
-  r.scene.render = {kWidth, kHeight, 1};
+  r.scene.render = {kOpacityWidth, kOpacityHeight, 1};
   r.scene.light.direction = glm::normalize(towardLight);
   r.scene.camera.orbitDeg = orbitDeg;
   r.settleFrames = 0;
@@ -59,9 +59,9 @@ template <class Pick>
 Region sumRegion(const hp::RenderResult& on, const hp::RenderResult& off, Pick inRegion) {
   Region r;
   const double background = luminance(off.rgba, 0);
-  for (std::uint32_t y = 0; y < kHeight; ++y)
-    for (std::uint32_t x = 0; x < kWidth; ++x) {
-      const std::size_t px = std::size_t(y) * kWidth + x;
+  for (std::uint32_t y = 0; y < kOpacityHeight; ++y)
+    for (std::uint32_t x = 0; x < kOpacityWidth; ++x) {
+      const std::size_t px = std::size_t(y) * kOpacityWidth + x;
       if (!inRegion(x, y) || luminance(off.rgba, px) < background + 0.004) continue;
       r.on += luminance(on.rgba, px);
       r.off += luminance(off.rgba, px);
@@ -72,7 +72,7 @@ Region sumRegion(const hp::RenderResult& on, const hp::RenderResult& off, Pick i
 
 // Screen x (pixels) of the head centre moved toward the light: which half of the image is lit.
 bool lightOnTheRight(const hp::RenderRequest& r) {
-  const hp::CameraMatrices cam = hp::orbitCamera(r.scene.camera, float(kWidth) / float(kHeight));
+  const hp::CameraMatrices cam = hp::orbitCamera(r.scene.camera, float(kOpacityWidth) / float(kOpacityHeight));
   auto ndcX = [&](const glm::vec3& p) {
     const glm::vec4 c = cam.proj * cam.view * glm::vec4(p, 1.0f);
     return c.x / c.w;
@@ -88,8 +88,8 @@ TEST_F(VulkanTest, HairAwayFromTheLightIsDarkerThanTheLitSide) {
   const hp::RenderResult on = hp::renderStill(*ctx, asset, withShadows);
   const hp::RenderResult off = hp::renderStill(*ctx, asset, request(light, 180.0f, false));
   const bool right = lightOnTheRight(withShadows);
-  const Region lit = sumRegion(on, off, [&](std::uint32_t x, std::uint32_t) { return (x >= kWidth / 2) == right; });
-  const Region away = sumRegion(on, off, [&](std::uint32_t x, std::uint32_t) { return (x >= kWidth / 2) != right; });
+  const Region lit = sumRegion(on, off, [&](std::uint32_t x, std::uint32_t) { return (x >= kOpacityWidth / 2) == right; });
+  const Region away = sumRegion(on, off, [&](std::uint32_t x, std::uint32_t) { return (x >= kOpacityWidth / 2) != right; });
   ASSERT_GT(lit.pixels, 500u);
   ASSERT_GT(away.pixels, 500u);
   EXPECT_LT(away.meanOn(), 0.8 * lit.meanOn()) << "away " << away.meanOn() << " lit " << lit.meanOn();
@@ -109,17 +109,17 @@ TEST_F(VulkanTest, HairUnderOtherHairIsDarkerThanHairOnTop) {
   const hp::RenderResult on = hp::renderStill(*ctx, asset, onRequest);
   const hp::RenderResult off = hp::renderStill(*ctx, asset, request(light, 180.0f, false, 0.6f));
   // The image side the light comes from, from the light direction in view space.
-  const hp::CameraMatrices cam = hp::orbitCamera(onRequest.scene.camera, float(kWidth) / float(kHeight));
+  const hp::CameraMatrices cam = hp::orbitCamera(onRequest.scene.camera, float(kOpacityWidth) / float(kOpacityHeight));
   const bool lightFromRight = (cam.view * glm::vec4(light, 0.0f)).x > 0.0f;
   // Columns of the hair in the image, by pixel count: the quarter of the hair pixels nearest the light
   // (on top) against the quarter farthest from it (under).
-  std::vector<std::size_t> perColumn(kWidth, 0);
+  std::vector<std::size_t> perColumn(kOpacityWidth, 0);
   std::size_t total = 0;
   const double background = luminance(off.rgba, 0);
-  for (std::uint32_t y = 0; y < kHeight; ++y)
-    for (std::uint32_t x = 0; x < kWidth; ++x)
-      if (luminance(off.rgba, std::size_t(y) * kWidth + x) >= background + 0.004) ++perColumn[x], ++total;
-  std::uint32_t left = 0, right = kWidth - 1;
+  for (std::uint32_t y = 0; y < kOpacityHeight; ++y)
+    for (std::uint32_t x = 0; x < kOpacityWidth; ++x)
+      if (luminance(off.rgba, std::size_t(y) * kOpacityWidth + x) >= background + 0.004) ++perColumn[x], ++total;
+  std::uint32_t left = 0, right = kOpacityWidth - 1;
   for (std::size_t seen = 0; seen + perColumn[left] < total / 4; ++left) seen += perColumn[left];
   for (std::size_t seen = 0; seen + perColumn[right] < total / 4; --right) seen += perColumn[right];
   ASSERT_LT(left + 10, right);
@@ -142,15 +142,15 @@ TEST_F(VulkanTest, SpotLightsHairInsideItsConeOnly) {
   hp::RenderRequest r = request({0.0f, 0.0f, 1.0f}, 180.0f, true);
   // The bounds below were set with the paper model's direct/ambient balance; the cone is what is tested.
   r.lutMode = hp::LutMode::Float;
-  const hp::CameraMatrices cam = hp::orbitCamera(r.scene.camera, float(kWidth) / float(kHeight));
+  const hp::CameraMatrices cam = hp::orbitCamera(r.scene.camera, float(kOpacityWidth) / float(kOpacityHeight));
   const float cone = 8.0f;
   r.scene.light = hp::LightSpec::makeSpot(cam.position, r.scene.camera.target, cone);
   const hp::RenderResult narrow = hp::renderStill(*ctx, asset, r);
   r.scene.light.coneDeg = 60.0f;
   const hp::RenderResult wide = hp::renderStill(*ctx, asset, r);
-  const double radius = std::tan(glm::radians(double(cone))) / std::tan(0.5 * double(cam.fovY)) * 0.5 * kHeight;
+  const double radius = std::tan(glm::radians(double(cone))) / std::tan(0.5 * double(cam.fovY)) * 0.5 * kOpacityHeight;
   auto distance = [&](std::uint32_t x, std::uint32_t y) {
-    return std::hypot(x + 0.5 - 0.5 * kWidth, y + 0.5 - 0.5 * kHeight);
+    return std::hypot(x + 0.5 - 0.5 * kOpacityWidth, y + 0.5 - 0.5 * kOpacityHeight);
   };
   const Region inside = sumRegion(narrow, wide, [&](std::uint32_t x, std::uint32_t y) { return distance(x, y) < 0.6 * radius; });
   const Region outside = sumRegion(narrow, wide, [&](std::uint32_t x, std::uint32_t y) { return distance(x, y) > 1.3 * radius; });

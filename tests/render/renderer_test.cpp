@@ -25,7 +25,7 @@
 using hp::test::VulkanTest;
 
 namespace {
-constexpr std::uint32_t kWidth = 160, kHeight = 96;
+constexpr std::uint32_t kRendererWidth = 160, kRendererHeight = 96;
 
 hp::HairAsset head(std::uint32_t strands) {
   hp::DensityOptions density;
@@ -53,7 +53,7 @@ hp::View frontView(float targetX) {
   cam.elevationDeg = 0.0f;
   cam.distance = 1.1f;
   cam.target = {targetX, -0.05f, 0.0f};
-  return hp::View{hp::orbitCamera(cam, float(kWidth) / kHeight), {kWidth, kHeight}, false, 0};
+  return hp::View{hp::orbitCamera(cam, float(kRendererWidth) / kRendererHeight), {kRendererWidth, kRendererHeight}, false, 0};
 }
 
 double luminance(const std::vector<std::uint8_t>& rgba, std::size_t px) {
@@ -65,8 +65,8 @@ double luminance(const std::vector<std::uint8_t>& rgba, std::size_t px) {
 // Sum of linear luminance over the columns [x0, x1).
 double columnsLuminance(const std::vector<std::uint8_t>& rgba, std::uint32_t x0, std::uint32_t x1) {
   double sum = 0.0;
-  for (std::uint32_t y = 0; y < kHeight; ++y)
-    for (std::uint32_t x = x0; x < x1; ++x) sum += luminance(rgba, std::size_t(y) * kWidth + x);
+  for (std::uint32_t y = 0; y < kRendererHeight; ++y)
+    for (std::uint32_t x = x0; x < x1; ++x) sum += luminance(rgba, std::size_t(y) * kRendererWidth + x);
   return sum;
 }
 
@@ -100,7 +100,7 @@ TEST_F(VulkanTest, SecondInstanceBuildsNoPipelinesAndSharesItsMaterialsLuts) {
 }
 
 TEST_F(VulkanTest, TwoInstancesWithDifferentAssetsAndMaterialsShadowEachOther) {
-  hp::render::OffscreenRenderer target(*ctx, kWidth, kHeight, 1);
+  hp::render::OffscreenRenderer target(*ctx, kRendererWidth, kRendererHeight, 1);
   hp::Renderer renderer(*ctx, rendererSettings(target));
   // `near` stands between `far` and a light low on the +X side; both are drawn in every frame.
   const glm::mat4 nearHead = glm::translate(glm::mat4(1.0f), {0.36f, 0.0f, 0.0f});
@@ -128,8 +128,8 @@ TEST_F(VulkanTest, TwoInstancesWithDifferentAssetsAndMaterialsShadowEachOther) {
   const std::vector<std::uint8_t> shadowedByNear = render(both);
   const std::vector<std::uint8_t> alone = render(farOnly);
   const std::vector<std::uint8_t> nearCasting = render(nearOnly);
-  const double farShadowed = columnsLuminance(shadowedByNear, 0, kWidth / 2);
-  const double farAlone = columnsLuminance(alone, 0, kWidth / 2);
+  const double farShadowed = columnsLuminance(shadowedByNear, 0, kRendererWidth / 2);
+  const double farAlone = columnsLuminance(alone, 0, kRendererWidth / 2);
   // The near head and its hair take the light off the far head's lit side (measured 0.55 of the light it gets alone).
   EXPECT_LT(farShadowed, 0.8 * farAlone) << farShadowed << " vs " << farAlone;
   std::cout << "far head lit / shadowed by the near one: " << farAlone << " / " << farShadowed << "\n";
@@ -137,21 +137,21 @@ TEST_F(VulkanTest, TwoInstancesWithDifferentAssetsAndMaterialsShadowEachOther) {
   // no darker than when it casts alone. (It is brighter, measured 1.16x: one framing over both heads
   // spreads the 16 slices over twice the depth, so the 1-slice lookup bias skips more self-shadowing;
   // engine/render/README.md "Several instances".)
-  const double nearBoth = columnsLuminance(shadowedByNear, kWidth * 3 / 4, kWidth);
-  const double nearAlone = columnsLuminance(nearCasting, kWidth * 3 / 4, kWidth);
+  const double nearBoth = columnsLuminance(shadowedByNear, kRendererWidth * 3 / 4, kRendererWidth);
+  const double nearAlone = columnsLuminance(nearCasting, kRendererWidth * 3 / 4, kRendererWidth);
   EXPECT_GT(nearAlone, 0.0);
   EXPECT_GE(nearBoth, 0.98 * nearAlone) << nearBoth << " vs " << nearAlone;
 }
 
 TEST_F(VulkanTest, SeveralViewsOfOneFrameReuseItsShadows) {
-  hp::render::OffscreenRenderer left(*ctx, kWidth, kHeight, 1), right(*ctx, kWidth, kHeight, 1);
+  hp::render::OffscreenRenderer left(*ctx, kRendererWidth, kRendererHeight, 1), right(*ctx, kRendererWidth, kRendererHeight, 1);
   hp::Renderer renderer(*ctx, rendererSettings(left));
   auto hair = renderer.createInstance(head(1000), {});
   hp::HairInstance* one[] = {hair.get()};
   hp::View a = frontView(0.0f), b = frontView(0.0f);
   hp::CameraSpec side;
   side.orbitDeg = 90.0f;
-  b.camera = hp::orbitCamera(side, float(kWidth) / kHeight);
+  b.camera = hp::orbitCamera(side, float(kRendererWidth) / kRendererHeight);
   b.index = 1;
   hp::vk::submitAndWait(*ctx, [&](VkCommandBuffer cmd) {
     renderer.recordUpdate(cmd, 7, one);
@@ -161,7 +161,7 @@ TEST_F(VulkanTest, SeveralViewsOfOneFrameReuseItsShadows) {
   }, "two views");
   // Each view kept its own camera: the images differ, and the front view equals a frame drawn alone.
   const auto front = left.readDisplay();
-  EXPECT_GT(differingPixels(front, right.readDisplay()), std::size_t(kWidth * kHeight / 20));
+  EXPECT_GT(differingPixels(front, right.readDisplay()), std::size_t(kRendererWidth * kRendererHeight / 20));
   hp::vk::submitAndWait(*ctx, [&](VkCommandBuffer cmd) {
     left.record(cmd, [&](VkCommandBuffer c) { renderer.recordDraw(c, 7, a, one); }, 1.0f);
   }, "front again");

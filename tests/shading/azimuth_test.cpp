@@ -5,9 +5,10 @@
 #include <numbers>
 
 #include "engine/shading/azimuth.h"
+#include "engine/shading/math_constants.h"
 
 using namespace hp::shading;
-constexpr double kPi = std::numbers::pi;
+using hp::shading::kPi;  // one pi for every shading file (unity builds)
 
 TEST(Azimuth, DepressedCubicFindsAllRealRoots) {
   std::array<double, 3> r{};

@@ -8,11 +8,12 @@
 #include "engine/shading/fresnel.h"
 #include "engine/shading/marschner.h"
 #include "engine/shading/marschner_terms.h"
+#include "engine/shading/math_constants.h"
 #include "tests/shading/random_directions.h"
 
 using namespace hp;
 using namespace hp::shading;
-constexpr double kPi = std::numbers::pi;
+using hp::shading::kPi;  // one pi for every shading file (unity builds)
 
 TEST(Marschner, NRIsTheClosedForm) {
   HairMaterial m;

@@ -8,11 +8,12 @@
 #include "engine/shading/furnace.h"
 #include "engine/shading/physical.h"
 #include "engine/shading/quadrature.h"
+#include "engine/shading/math_constants.h"
 
 using namespace hp;
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
+using hp::shading::kPi;  // one pi for every shading file (unity builds)
 
 HairMaterial white() {
   HairMaterial m;

@@ -16,14 +16,19 @@
 #include <stdexcept>
 
 namespace hp::test {
-namespace {
-std::string slurp(const std::string& path) {
+std::string slurp(const std::filesystem::path& path) {
   std::ifstream f(path, std::ios::binary);
   std::stringstream ss;
   ss << f.rdbuf();
   return ss.str();
 }
-}  // namespace
+
+std::size_t filesIn(const std::filesystem::path& dir) {
+  if (!std::filesystem::exists(dir)) return 0;
+  std::size_t n = 0;
+  for ([[maybe_unused]] const auto& entry : std::filesystem::directory_iterator(dir)) ++n;
+  return n;
+}
 
 CliProcess::CliProcess(const std::vector<std::string>& args, const std::vector<std::string>& extraEnv) {
   char outTemplate[] = "/tmp/hairpipe-cli-out-XXXXXX";

@@ -46,6 +46,10 @@ class Xvfb {
   pid_t pid_ = 0;
   std::string display_;
 };
+// The whole file's bytes (empty when it cannot be read).
+std::string slurp(const std::filesystem::path& path);
+// How many entries a folder holds (0 when it does not exist).
+std::size_t filesIn(const std::filesystem::path& dir);
 // A path in this test process's own temp folder with nothing at it yet (removed when the process exits).
 std::filesystem::path freshTempPath(const std::string& name);
 
