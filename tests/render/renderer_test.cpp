@@ -283,12 +283,12 @@ struct HairColumns {
 };
 HairColumns hairColumns(const hp::vk::Context& ctx, const hp::Renderer& renderer, std::uint32_t x0, std::uint32_t x1) {
   const auto bytes = hp::vk::readbackImage(ctx, renderer.rasterImage(), hp::vk::ImageUse::FragmentSampled);
-  const auto rgb = hp::render::rgbOfHalfRgba(bytes, {kWidth, kHeight}, 0, 3);
-  const auto alpha = hp::render::rgbOfHalfRgba(bytes, {kWidth, kHeight}, 3, 1);
+  const auto rgb = hp::render::rgbOfHalfRgba(bytes, {kRendererWidth, kRendererHeight}, 0, 3);
+  const auto alpha = hp::render::rgbOfHalfRgba(bytes, {kRendererWidth, kRendererHeight}, 3, 1);
   HairColumns h;
-  for (std::uint32_t y = 0; y < kHeight; ++y)
+  for (std::uint32_t y = 0; y < kRendererHeight; ++y)
     for (std::uint32_t x = x0; x < x1; ++x) {
-      const std::size_t px = std::size_t(y) * kWidth + x;
+      const std::size_t px = std::size_t(y) * kRendererWidth + x;
       h.pixels += alpha.values[px] > 0.05f;
       h.radiance += rgb.values[px * 3] + rgb.values[px * 3 + 1] + rgb.values[px * 3 + 2];
     }
@@ -300,7 +300,7 @@ HairColumns hairColumns(const hp::vk::Context& ctx, const hp::Renderer& renderer
 // a target of one head draws that head only; a material change rebuilds the target (the changed head's
 // hair brightens, the other's does not change). Sync-validation clean (fixture).
 TEST_F(VulkanTest, TwoInstancesOnTheComputeRasterAreBothDrawnAndFollowAMaterialChange) {
-  hp::render::OffscreenRenderer target(*ctx, kWidth, kHeight, 1, hp::RasterMode::Compute);
+  hp::render::OffscreenRenderer target(*ctx, kRendererWidth, kRendererHeight, 1, hp::RasterMode::Compute);
   hp::RendererSettings settings = rendererSettings(target);
   settings.raster = hp::RasterMode::Compute;
   hp::Renderer renderer(*ctx, settings);
@@ -315,25 +315,25 @@ TEST_F(VulkanTest, TwoInstancesOnTheComputeRasterAreBothDrawnAndFollowAMaterialC
       target.record(cmd, renderer, f, view, both, 1.0f);
     }, "compute raster instances");
   };
-  const std::uint32_t half = kWidth / 2;
+  const std::uint32_t half = kRendererWidth / 2;
   target.attach(renderer, both);
   frame(0);
-  const HairColumns leftHair = hairColumns(*ctx, renderer, 0, half), rightHair = hairColumns(*ctx, renderer, half, kWidth);
+  const HairColumns leftHair = hairColumns(*ctx, renderer, 0, half), rightHair = hairColumns(*ctx, renderer, half, kRendererWidth);
   std::cout << "hair pixels: left " << leftHair.pixels << ", right " << rightHair.pixels << "\n";
-  EXPECT_GT(leftHair.pixels, std::size_t(kWidth * kHeight / 100));
-  EXPECT_GT(rightHair.pixels, std::size_t(kWidth * kHeight / 100));
+  EXPECT_GT(leftHair.pixels, std::size_t(kRendererWidth * kRendererHeight / 100));
+  EXPECT_GT(rightHair.pixels, std::size_t(kRendererWidth * kRendererHeight / 100));
 
   hp::HairInstance* leftOnly[] = {left.get()};
   target.attach(renderer, leftOnly);
   frame(1);
   EXPECT_GT(hairColumns(*ctx, renderer, 0, half).pixels, leftHair.pixels * 9 / 10);
-  EXPECT_LT(hairColumns(*ctx, renderer, half, kWidth).pixels, rightHair.pixels / 4);
+  EXPECT_LT(hairColumns(*ctx, renderer, half, kRendererWidth).pixels, rightHair.pixels / 4);
 
   target.attach(renderer, both);
   right->setMaterial(blonde(), hp::LutMode::Float);  // the Renderer rebuilds the target with the new LUTs
   frame(2);
   const double leftChange = hairColumns(*ctx, renderer, 0, half).radiance / leftHair.radiance;
-  const double rightChange = hairColumns(*ctx, renderer, half, kWidth).radiance / rightHair.radiance;
+  const double rightChange = hairColumns(*ctx, renderer, half, kRendererWidth).radiance / rightHair.radiance;
   std::cout << "hair radiance after / before the material change: left " << leftChange << ", right " << rightChange
             << "\n";
   EXPECT_NEAR(leftChange, 1.0, 0.1);
