@@ -2,7 +2,12 @@
 // fuzzed argument lists (NUL-separated). Callbacks are parked so nothing runs or writes; what is
 // fuzzed is option parsing and the option validators. A parse may only end in CLI11's usage errors
 // or hp::Error; anything else escapes and libFuzzer records it.
+// Each input gets a fresh app (no state carried between inputs), but when its first argument names a
+// subcommand only that subcommand is set up: building all of them cost ~10 ms an input (~100 inputs/s).
+// A later argument naming another subcommand is then parsed as an argument of the first, which the
+// real tool refuses too (it takes exactly one subcommand).
 #include <cstdint>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -39,6 +44,35 @@ void parkCallbacks(CLI::App& app, std::vector<std::function<void()>>& parked) {
     parkCallbacks(*sub, parked);
   }
 }
+// Subcommand name (and alias) -> index of the registry entry that sets it up; found once.
+const std::map<std::string, std::size_t>& setupIndexByName() {
+  static const std::map<std::string, std::size_t> index = [] {
+    std::map<std::string, std::size_t> names;
+    const auto& registry = hp::cli::commandRegistry();
+    for (std::size_t i = 0; i < registry.size(); ++i) {
+      CLI::App scratch;
+      registry[i](scratch);
+      for (const CLI::App* sub : scratch.get_subcommands([](CLI::App*) { return true; })) {
+        names.emplace(sub->get_name(), i);
+        for (const std::string& alias : sub->get_aliases()) names.emplace(alias, i);
+      }
+    }
+    return names;
+  }();
+  return index;
+}
+
+// Sets up the subcommand args[1] names, or every subcommand when it names none.
+void setUpCommands(CLI::App& app, const std::vector<std::string>& args) {
+  const auto& registry = hp::cli::commandRegistry();
+  const auto& index = setupIndexByName();
+  const auto named = args.size() > 1 ? index.find(args[1]) : index.end();
+  if (named != index.end()) {
+    registry[named->second](app);
+    return;
+  }
+  for (const auto& setup : registry) setup(app);
+}
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
@@ -46,9 +80,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   CLI::App app{"hairpipe"};
   app.require_subcommand(1);
   app.set_version_flag("--version", "hairpipe");
-  for (const auto& setup : hp::cli::commandRegistry()) setup(app);
-  parkCallbacks(app, parked);
   std::vector<std::string> args = splitArgs(data, size);
+  setUpCommands(app, args);
+  parkCallbacks(app, parked);
   std::vector<char*> argv;
   for (auto& a : args) argv.push_back(a.data());
   try {
