@@ -13,7 +13,19 @@ CLI::App* benchCommand(CLI::App& app) {
 }
 
 CLI::App* benchSuite(CLI::App& app, const std::string& suite, const std::string& description) {
-  return benchCommand(app)->add_subcommand(suite, description);
+  CLI::App* bench = benchCommand(app);
+  CLI::App* cmd = bench->add_subcommand(suite, description);
+  // `bench --strands 10 sim` gives --strands to the frame bench, which does not run when a suite does:
+  // refused before the suite runs instead of silently measuring something else.
+  cmd->parse_complete_callback([bench, suite] {
+    for (const CLI::Option* option : bench->get_options()) {
+      if (option->count() == 0 || option == bench->get_help_ptr()) continue;
+      throw Error("bench " + suite + ": " + option->get_name() +
+                  " before the suite name is an option of the whole-frame bench, not of this suite; put the "
+                  "suite's options after '" + suite + "' (see bench " + suite + " --help)");
+    }
+  });
+  return cmd;
 }
 
 std::unique_ptr<vk::Context> createBenchContext(const std::string& device, const std::string& command) {

@@ -66,6 +66,11 @@ TEST(CliBench, SuitesAreSubcommandsOfBench) {
   auto old = runCli({"bench-sim", "--frames", "1"});  // not a command: nothing runs
   EXPECT_EQ(old.exitCode, 1);
   EXPECT_NE(old.err.find("A subcommand is required"), std::string::npos) << old.err;
+  // An option of the frame bench before a suite's name would be ignored by the suite: refused.
+  auto misplaced = runCli({"bench", "--strands", "200", "assets", "--repeat", "1"});
+  EXPECT_EQ(misplaced.exitCode, 1);
+  EXPECT_NE(misplaced.err.find("bench assets: --strands before the suite name"), std::string::npos) << misplaced.err;
+  EXPECT_EQ(misplaced.out.find("read"), std::string::npos) << "the suite ran: " << misplaced.out;
   auto assets = runCli({"bench", "assets", "--strands", "200", "--points", "2000", "--repeat", "1", "--json"});
   ASSERT_EQ(assets.exitCode, 0) << assets.err;
   nlohmann::json parsed;
