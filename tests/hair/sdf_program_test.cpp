@@ -3,6 +3,8 @@
 // every value there; the narrow band holds the exact field near the surface and the right sign beyond.
 #include <gtest/gtest.h>
 
+#include <vector>
+
 #include "engine/error.h"
 #include "engine/hair/head_sdf.h"
 #include "engine/hair/level_set_mesh.h"
@@ -37,6 +39,18 @@ TEST(SdfProgram, SpecialisedToABoxItIsTheWholeFieldThereAndBoundsIt) {
     }
   }
   EXPECT_GT(pruned, 400u * head.leaves() * 2 / 5);  // boxes up to 13 cm: still ~half of the leaves drop out
+}
+
+// evaluate() re-spells every primitive over arrays so that it vectorises (sdf_program.cpp); it must
+// give operator()'s float bit for bit, for every kind of leaf the head uses (mirrored ones included).
+TEST(SdfProgram, BatchEvaluationIsThePointwiseValueBitForBit) {
+  const sdf::Program& head = headField();
+  std::vector<glm::vec3> points(1000);  // not a multiple of the batch: the last batch is partial
+  for (std::uint32_t i = 0; i < points.size(); ++i)
+    points[i] = kHeadFieldLow + (kHeadFieldHigh - kHeadFieldLow) * random3(i, 20);
+  std::vector<float> batch(points.size());
+  head.evaluate(points, batch);
+  for (std::size_t i = 0; i < points.size(); ++i) ASSERT_EQ(batch[i], head(points[i])) << "point " << i;
 }
 
 TEST(SdfProgram, BlendsFollowThePrimitives) {
