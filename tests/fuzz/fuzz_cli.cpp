@@ -44,17 +44,18 @@ void parkCallbacks(CLI::App& app, std::vector<std::function<void()>>& parked) {
     parkCallbacks(*sub, parked);
   }
 }
-// Subcommand name (and alias) -> index of the registry entry that sets it up; found once.
-const std::map<std::string, std::size_t>& setupIndexByName() {
-  static const std::map<std::string, std::size_t> index = [] {
-    std::map<std::string, std::size_t> names;
+// Subcommand name (and alias) -> the registry entries that add it; found once. A name can take several:
+// every `bench` suite registers itself under the `bench` subcommand.
+const std::map<std::string, std::vector<std::size_t>>& setupsByName() {
+  static const std::map<std::string, std::vector<std::size_t>> index = [] {
+    std::map<std::string, std::vector<std::size_t>> names;
     const auto& registry = hp::cli::commandRegistry();
     for (std::size_t i = 0; i < registry.size(); ++i) {
       CLI::App scratch;
       registry[i](scratch);
       for (const CLI::App* sub : scratch.get_subcommands([](CLI::App*) { return true; })) {
-        names.emplace(sub->get_name(), i);
-        for (const std::string& alias : sub->get_aliases()) names.emplace(alias, i);
+        names[sub->get_name()].push_back(i);
+        for (const std::string& alias : sub->get_aliases()) names[alias].push_back(i);
       }
     }
     return names;
@@ -62,13 +63,13 @@ const std::map<std::string, std::size_t>& setupIndexByName() {
   return index;
 }
 
-// Sets up the subcommand args[1] names, or every subcommand when it names none.
+// Sets up what args[1] names (every entry that adds it), or every subcommand when it names none.
 void setUpCommands(CLI::App& app, const std::vector<std::string>& args) {
   const auto& registry = hp::cli::commandRegistry();
-  const auto& index = setupIndexByName();
+  const auto& index = setupsByName();
   const auto named = args.size() > 1 ? index.find(args[1]) : index.end();
   if (named != index.end()) {
-    registry[named->second](app);
+    for (const std::size_t i : named->second) registry[i](app);
     return;
   }
   for (const auto& setup : registry) setup(app);
