@@ -55,7 +55,7 @@ test: build
 SAN_SCOPE ?= all
 HOST_FUZZERS := fuzz_hair fuzz_tfx fuzz_obj fuzz_scene fuzz_brdf_csv
 ifeq ($(SAN_SCOPE),host)
-SAN_TARGETS := hair_tests shading_tests $(HOST_FUZZERS)
+SAN_TARGETS := hair_tests shading_tests $(HOST_FUZZERS) hairpipe_keep_suppressed_libraries
 SAN_LABEL := -L host
 FUZZERS ?= $(HOST_FUZZERS)
 else
@@ -73,7 +73,8 @@ fuzz: configure-asan
 
 test-asan: configure-asan
 	cmake --build $(SAN_BUILD) -j $(JOBS) --target $(SAN_TARGETS)
-	cd $(SAN_BUILD) && ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 \
+	cd $(SAN_BUILD) && LD_PRELOAD=$(abspath $(SAN_BUILD))/libkeep_suppressed_libraries.so \
+		ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 \
 		LSAN_OPTIONS=suppressions=$(CURDIR)/tests/sanitizer/lsan.supp:print_suppressions=0 \
 		UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
 		ctest --output-on-failure -j $(JOBS) --timeout 900 $(SAN_LABEL)

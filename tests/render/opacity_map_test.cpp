@@ -4,7 +4,9 @@
 // of all hair and falling into the volume, and refused settings.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <iostream>
 #include <memory>
 #include <random>
@@ -146,17 +148,19 @@ hp::test::OpacityGrid referenceOf(const StrandSet& set, const OpacityCapture& c)
 }
 
 // Device vs CPU reference on one slice: the fraction of the reference's non-empty texels that differ
-// (relative 1e-3), the relative difference of the slice totals, and the relative L1 difference of
-// block x block sums (where the line and triangle rules pick a neighbouring texel, sums still agree).
+// (relative 1e-3), the texel-wise L1 difference relative to the slice's total, the relative difference
+// of the slice totals, and the relative L1 difference of block x block sums (where the line and
+// triangle rules pick a neighbouring texel, sums still agree).
 struct SliceError {
   double texelMismatch = 0.0;
+  double texelL1 = 0.0;
   double total = 0.0;
   double blockL1 = 0.0;
 };
 SliceError sliceError(const OpacityCapture& c, const hp::test::OpacityGrid& ref, std::uint32_t slice,
                       std::uint32_t block) {
   std::size_t mismatched = 0, nonEmpty = 0;
-  double dev = 0.0, cpu = 0.0, blockDiff = 0.0;
+  double dev = 0.0, cpu = 0.0, blockDiff = 0.0, texelDiff = 0.0;
   for (std::uint32_t by = 0; by < c.resolution; by += block)
     for (std::uint32_t bx = 0; bx < c.resolution; bx += block) {
       double devBlock = 0.0, cpuBlock = 0.0;
@@ -165,6 +169,7 @@ SliceError sliceError(const OpacityCapture& c, const hp::test::OpacityGrid& ref,
           const double d = c.at(slice, x, y), r = ref.at(slice, x, y);
           nonEmpty += r > 0.0;
           mismatched += std::abs(d - r) > 1e-3 * (1.0 + r);
+          texelDiff += std::abs(d - r);
           devBlock += d;
           cpuBlock += r;
         }
@@ -174,6 +179,7 @@ SliceError sliceError(const OpacityCapture& c, const hp::test::OpacityGrid& ref,
     }
   SliceError e;
   e.texelMismatch = nonEmpty ? double(mismatched) / double(nonEmpty) : double(mismatched);
+  e.texelL1 = cpu > 0.0 ? texelDiff / cpu : texelDiff;
   e.total = cpu > 0.0 ? std::abs(dev - cpu) / cpu : dev;
   e.blockL1 = cpu > 0.0 ? blockDiff / cpu : blockDiff;
   return e;
@@ -452,15 +458,22 @@ TEST_F(VulkanTest, OpacityOfASmallHeadSceneMatchesTheCpuReference) {
   std::vector<glm::dvec3> corners;
   for (std::uint32_t i : asset.head.indices) corners.emplace_back(asset.head.positions[i]);
   hp::test::rasterizeTriangles(ref, c.light, corners, settings.opacity.headOpacity);
-  // Tolerance: at most 6% of the non-empty texels differ (mostly the head's outline: triangle edge
-  // ties, 50 per texel), slice totals within 0.5%, 16x16 block sums within 3% (relative L1).
-  // Measured: <= 4.2% of texels, totals within 0.01%.
+  // Tolerance: the texel-wise L1 difference within 1% of the slice's total (where the device's
+  // fixed-point line rule and the strict-line rule pick a neighbouring texel, each such deposit counts
+  // twice), slice totals within 0.5%, 16x16 block sums within 3% (relative L1). Not the fraction of
+  // differing texels as in the sparse test above: here a texel sums many strands and differs if any one of
+  // them does, so that fraction grows with the hair's density and depth (1% in the first slice, 6% in the
+  // last) while the share of deposits that moved stays the same. Measured: L1 <= 0.34% (gcc), <= 0.42%
+  // (clang sanitizer build); texels differing up to 5.9% / 6.2%; totals within 0.01%.
+  double worstL1 = 0.0;
   for (std::uint32_t slice = 0; slice < 16; ++slice) {
     const SliceError e = sliceError(c, ref, slice, 16);
-    EXPECT_LE(e.texelMismatch, 0.06) << "slice " << slice + 1;
+    worstL1 = std::max(worstL1, e.texelL1);
+    EXPECT_LT(e.texelL1, 0.01) << "slice " << slice + 1;
     EXPECT_LT(e.total, 0.005) << "slice " << slice + 1;
     EXPECT_LT(e.blockL1, 0.03) << "slice " << slice + 1;
   }
+  std::printf("head scene: worst slice's texel L1 difference %.4f of its total\n", worstL1);
 }
 
 namespace {
