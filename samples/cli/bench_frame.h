@@ -33,7 +33,7 @@ struct FrameResult {
   double copyBytes = 0;
   double hostMs = 0;          // median wall time of a frame's submit-and-wait (driver compiles included)
   double residentMiB = 0;     // the process's resident memory after the last frame
-  double residentGrowthMiB = 0;  // per timed frame: (resident after the last - after the warm-up) / frames
+  double residentGrowthMiB = 0;  // per timed frame over the second half of the timed frames
 };
 
 FrameResult benchFrame(const vk::Context& ctx, const FrameCase& c);
