@@ -68,8 +68,10 @@ void expectSameFrames(const ExportedFrame& a, const ExportedFrame& b) {
 }
 
 // Measured on lavapipe with these settings (the paper's model, float LUTs, 16 spp, 4 bounces): real time against
-// the reference 22.2 dB, luminance ratio 1.04; seed 1 against seed 2: 21.4 dB, ratio 1.01 (16 spp is
-// noise-limited: against 256 spp the real-time image is at 23.6 dB).
+// the reference 21.3 dB, luminance ratio 0.866 (gcc; 21.1 dB and 0.849 in the clang sanitizer build, whose
+// CPU-built head and strands differ in the last bits); seed 1 against seed 2: 21.5 dB, ratio 1.01 (16 spp
+// is noise-limited). The ratio was 1.04 before the ambient term was made physical (docs/SHADING.md): the
+// real-time frame has no multiple scattering (issue 12), so it now sits near the lower bound.
 constexpr double kMinPsnrAgainstReference = 19.0, kMinPsnrBetweenSeeds = 19.0;
 constexpr double kLuminanceRatioLow = 0.85, kLuminanceRatioHigh = 1.25;
 
