@@ -1,5 +1,7 @@
 #include "engine/frame_recorder.h"
 
+#include <algorithm>
+
 #include "engine/vk/barriers.h"
 #include "shaders/shared/opacity.h"
 
@@ -26,6 +28,53 @@ compute::ShadowLight shadowLightOf(const LightSpec& light) {
   return compute::ShadowLight::makeSpot(light.position, toward, glm::radians(light.coneDeg));
 }
 
+namespace {
+void recordGraphicsOpacity(const vk::Context& ctx, VkCommandBuffer cmd, const render::ShadowMaps& maps,
+                           std::span<const ShadowCaster> casters) {
+  const VkImage image = maps.image().handle();
+  vk::imageBarrier(ctx, cmd, image, VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::FragmentSampled,
+                   vk::ImageUse::ColorAttachment, gpu::OPACITY_TARGETS);
+  maps.beginRendering(cmd);
+  for (const ShadowCaster& c : casters) c.opacity->recordDraws(cmd, c.headToWorld, c.strandWidth);
+  maps.endRendering(cmd);
+  vk::imageBarrier(ctx, cmd, image, VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::ColorAttachment,
+                   vk::ImageUse::FragmentSampled, gpu::OPACITY_TARGETS);
+}
+
+// Clear the bins, every caster's splats (atomics: ordered like any two writers), the resolve into the
+// maps, then the heads that go into the slices, drawn over the resolved maps.
+void recordComputeOpacity(const vk::Context& ctx, VkCommandBuffer cmd, const render::ShadowMaps& maps,
+                          std::span<const ShadowCaster> casters) {
+  const compute::OpacityResolvePass& resolve = *maps.resolvePass();
+  const VkBuffer bins = resolve.bins().handle();
+  const VkImage image = maps.image().handle();
+  vk::bufferBarrier(ctx, cmd, bins, vk::BufferUse::ComputeRead, vk::BufferUse::TransferDst);  // last frame's resolve
+  resolve.recordClear(cmd);
+  vk::bufferBarrier(ctx, cmd, bins, vk::BufferUse::TransferDst, vk::BufferUse::ComputeWrite);
+  for (std::size_t i = 0; i < casters.size(); ++i) {
+    if (i > 0) vk::bufferBarrier(ctx, cmd, bins, vk::BufferUse::ComputeWrite, vk::BufferUse::ComputeWrite);
+    casters[i].opacity->recordSplats(cmd, casters[i].strandWidth);
+  }
+  vk::bufferBarrier(ctx, cmd, bins, vk::BufferUse::ComputeWrite, vk::BufferUse::ComputeRead);
+  vk::imageBarrier(ctx, cmd, image, VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::FragmentSampledDiscard,
+                   vk::ImageUse::ComputeStorageWrite, gpu::OPACITY_TARGETS);
+  resolve.recordResolve(cmd);
+  const bool heads = std::any_of(casters.begin(), casters.end(), [](const ShadowCaster& c) { return c.opacity->drawsHead(); });
+  if (!heads) {
+    vk::imageBarrier(ctx, cmd, image, VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::ComputeStorageWrite,
+                     vk::ImageUse::FragmentSampled, gpu::OPACITY_TARGETS);
+    return;
+  }
+  vk::imageBarrier(ctx, cmd, image, VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::ComputeStorageWrite,
+                   vk::ImageUse::ColorAttachment, gpu::OPACITY_TARGETS);
+  maps.beginRendering(cmd, /*keep=*/true);
+  for (const ShadowCaster& c : casters) c.opacity->recordHeadDraw(cmd, c.headToWorld);
+  maps.endRendering(cmd);
+  vk::imageBarrier(ctx, cmd, image, VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::ColorAttachment,
+                   vk::ImageUse::FragmentSampled, gpu::OPACITY_TARGETS);
+}
+}  // namespace
+
 void recordShadowPasses(const vk::Context& ctx, VkCommandBuffer cmd, const render::ShadowMaps& maps,
                         std::span<const ShadowCaster> casters,
                         const compute::ShadowLight& shadowLight, const compute::BoundsFraming& framing,
@@ -42,17 +91,14 @@ void recordShadowPasses(const vk::Context& ctx, VkCommandBuffer cmd, const rende
   }
   casters.front().bounds->recordFinalize(cmd, shadowLight, framing);
   vk::bufferBarrier(ctx, cmd, light, vk::BufferUse::ComputeWrite, vk::BufferUse::VertexRead);
+  if (maps.resolvePass()) vk::bufferBarrier(ctx, cmd, light, vk::BufferUse::ComputeWrite, vk::BufferUse::ComputeRead);
   if (profiler) profiler->end(cmd);
 
-  const vk::Image& image = maps.image();
   if (profiler) profiler->begin(cmd, "opacity");
-  vk::imageBarrier(ctx, cmd, image.handle(), VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::FragmentSampled,
-                   vk::ImageUse::ColorAttachment, gpu::OPACITY_TARGETS);
-  maps.beginRendering(cmd);
-  for (const ShadowCaster& c : casters) c.opacity->recordDraws(cmd, c.headToWorld, c.strandWidth);
-  maps.endRendering(cmd);
-  vk::imageBarrier(ctx, cmd, image.handle(), VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::ColorAttachment,
-                   vk::ImageUse::FragmentSampled, gpu::OPACITY_TARGETS);
+  if (maps.resolvePass())
+    recordComputeOpacity(ctx, cmd, maps, casters);
+  else
+    recordGraphicsOpacity(ctx, cmd, maps, casters);
   if (profiler) profiler->end(cmd);
 
   if (headView.params.x == 0.0f) return;

@@ -6,10 +6,11 @@
 //                        Before: nothing (the previous frame's draws and compute are ordered here).
 //                        After: render strands in ComputeWrite.
 //   recordShadowPasses   bounds of every caster into the shared LightSpace, one finalize, then every
-//                        caster's strands and head into the shared opacity maps. The strand positions'
+//                        caster's strands and head into the shared opacity maps (drawn, or splatted in
+//                        compute and resolved: OpacitySettings::raster). The strand positions'
 //                        last ComputeWrite must be made visible to VertexRead first (makeStrandsDrawable);
-//                        this adds ComputeRead for the bounds. Leaves LightSpace in BufferUse::VertexRead
-//                        and the maps in ImageUse::FragmentSampled.
+//                        this adds ComputeRead for the bounds and splats. Leaves LightSpace in
+//                        BufferUse::VertexRead (and ComputeRead) and the maps in ImageUse::FragmentSampled.
 #include <volk.h>
 
 #include <glm/glm.hpp>

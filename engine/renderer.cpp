@@ -106,8 +106,8 @@ void Renderer::retire(std::shared_ptr<void> resource) {
 void Renderer::setOpacityTuning(const render::OpacitySettings& opacity) {
   const render::OpacitySettings& current = shadows_->settings();
   if (opacity.resolution != current.resolution || opacity.format != current.format ||
-      opacity.headShadowResolution != current.headShadowResolution)
-    throw Error("setOpacityTuning: the opacity maps' resolution and format are fixed for a Renderer");
+      opacity.headShadowResolution != current.headShadowResolution || opacity.raster != current.raster)
+    throw Error("setOpacityTuning: the opacity maps' resolution, format and raster are fixed for a Renderer");
   opacity.validate();
   shadows_->setTuning(opacity);
   settings_.opacity = opacity;

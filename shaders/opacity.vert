@@ -6,6 +6,7 @@
 // the light is ever depth-clipped (there is no depth test: opacity is additive, order-independent).
 // For a spot, parts behind it (w <= 0) are clipped: they cannot shadow anything in the cone.
 #include "shared/opacity.h"
+#include "opacity_footprint.glsl"
 
 layout(std430, binding = OPACITY_BINDING_POSITIONS) readonly buffer Positions { vec4 positions[]; };
 layout(std430, binding = OPACITY_BINDING_LIGHT) readonly buffer Light { LightSpace light; };
@@ -22,13 +23,7 @@ void main() {
   uint v = strand * q + k + (gl_VertexIndex & 1u);
   vec4 clip = light.viewProj * vec4(positions[v].xyz, 1.0);
   outSlice = clip.z * float(OPACITY_SLICES);
-  // Footprint: the strand's width over the texel's size at this depth (the box is in light x/y units,
-  // per unit depth for a spot, so the texel grows with clip.w). The per-strand width variation
-  // (widthScale, mean 1) is left out: its mean is what the map's density needs.
   float along = float(k + (uint(gl_VertexIndex) & 1u)) / float(q - 1u);
-  float width = push.footprint.x * mix(1.0, push.footprint.y, along);
-  vec2 texel = (light.extent.zw - light.extent.xy) * (push.footprint.z * clip.w);
-  float footprint = width / sqrt(max(texel.x * texel.y, 1e-20));
-  outOpacity = push.opacity * (push.footprint.w > 0.5 ? footprint : 1.0);
+  outOpacity = strandFragmentOpacity(light, push.footprint, push.opacity, along, clip.w);
   gl_Position = vec4(clip.xy, 0.5 * clip.w, clip.w);  // w = 1 (directional) or spot depth
 }

@@ -57,6 +57,9 @@ OpacityPass::OpacityPass(const vk::Context& ctx, const compute::StrandBuffers& s
   depth.pushSize = sizeof(glm::mat4);
   depth.name = "head shadow depth";
   headDepthPipeline_ = vk::makeGraphicsPipeline(ctx, library, depth);
+  if (const compute::OpacityResolvePass* resolve = maps.resolvePass())
+    splat_ = std::make_unique<compute::OpacitySplatPass>(ctx, strands, maps.lightSpace(), resolve->bins(),
+                                                         maps.settings().resolution, library);
 }
 
 HeadSphere OpacityPass::headSphere(const glm::mat4& headToWorld) const {
@@ -127,12 +130,24 @@ void OpacityPass::recordDraws(VkCommandBuffer cmd, const glm::mat4& headToWorld,
     strandPipeline_->push(cmd, push);
     strandPipeline_->draw(cmd, strands_->chunks()[c].range.strandCount * (q - 1) * 2);
   }
-  if (headIndexCount_ > 0 && settings.headOpacity > 0.0f) {
-    push.headToWorld = headToWorld;
-    push.opacity = settings.headOpacity;
-    headPipeline_->bind(cmd, headSet_.set(), extent);
-    headPipeline_->push(cmd, push);
-    headPipeline_->draw(cmd, headIndexCount_);
-  }
+  recordHeadDraw(cmd, headToWorld);
+}
+
+void OpacityPass::recordSplats(VkCommandBuffer cmd, const glm::vec2& strandWidth) const {
+  if (!splat_) throw Error("opacity pass: recordSplats needs maps on the compute path");
+  const OpacitySettings& settings = maps_.settings();
+  splat_->record(cmd, {settings.footprint, settings.strandOpacity, strandWidth});
+}
+
+bool OpacityPass::drawsHead() const { return headIndexCount_ > 0 && maps_.settings().headOpacity > 0.0f; }
+
+void OpacityPass::recordHeadDraw(VkCommandBuffer cmd, const glm::mat4& headToWorld) const {
+  if (!drawsHead()) return;
+  gpu::OpacityPush push{};
+  push.headToWorld = headToWorld;
+  push.opacity = maps_.settings().headOpacity;
+  headPipeline_->bind(cmd, headSet_.set(), maps_.image().extent());
+  headPipeline_->push(cmd, push);
+  headPipeline_->draw(cmd, headIndexCount_);
 }
 }  // namespace hp::render

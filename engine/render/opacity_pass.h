@@ -6,9 +6,12 @@
 // buffer on the device. Owns a copy of the head mesh and one descriptor set per chunk; the pipelines come
 // from the PipelineLibrary (shared by every instance) when one is given.
 //
-// recordDraws() goes between ShadowMaps::beginRendering and endRendering (hp::recordShadowPasses). It
-// inserts no barriers; the frame recorder guarantees strand positions and LightSpace visible to
-// BufferUse::VertexRead before it.
+// On the maps' compute path (ShadowMaps::raster()) the strands go through a compute::OpacitySplatPass
+// into the maps' bins instead (recordSplats), and only the head, if it has an opacity, is drawn.
+//
+// recordDraws() / recordHeadDraw() go between ShadowMaps::beginRendering and endRendering
+// (hp::recordShadowPasses). They insert no barriers; the frame recorder guarantees strand positions and
+// LightSpace visible to BufferUse::VertexRead before them (ComputeRead before recordSplats).
 #include <volk.h>
 
 #include <glm/glm.hpp>
@@ -16,6 +19,7 @@
 #include <memory>
 #include <vector>
 
+#include "compute/opacity_splat_pass.h"
 #include "compute/strand_buffers.h"
 #include "engine/hair/hair_asset.h"
 #include "engine/render/head_shadow_view.h"
@@ -35,6 +39,10 @@ class OpacityPass {
   // strandWidth: x = width at the root (scene units), y = tip / root (the instance's LookSettings), for
   // the footprint opacity (OpacitySettings::footprint).
   void recordDraws(VkCommandBuffer cmd, const glm::mat4& headToWorld, const glm::vec2& strandWidth) const;
+  // Compute path: the strands into the bins (ShadowMaps::resolvePass), then the head if drawsHead().
+  void recordSplats(VkCommandBuffer cmd, const glm::vec2& strandWidth) const;
+  bool drawsHead() const;  // the head goes into the slices (OpacitySettings::headOpacity > 0)
+  void recordHeadDraw(VkCommandBuffer cmd, const glm::mat4& headToWorld) const;
   // The head's back faces into ShadowMaps' head depth map (between beginHeadRendering and endRendering).
   void recordHeadDepth(VkCommandBuffer cmd, const glm::mat4& headToLightClip) const;
   HeadSphere headSphere(const glm::mat4& headToWorld) const;  // bounding sphere in world space
@@ -53,6 +61,7 @@ class OpacityPass {
   std::shared_ptr<const vk::GraphicsPipeline> strandPipeline_;
   std::shared_ptr<const vk::GraphicsPipeline> headPipeline_;
   std::shared_ptr<const vk::GraphicsPipeline> headDepthPipeline_;
+  std::unique_ptr<compute::OpacitySplatPass> splat_;  // the maps' compute path only
   HeadSphere sphere_;  // head space
 };
 }  // namespace hp::render

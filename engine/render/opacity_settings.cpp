@@ -19,6 +19,22 @@ void checkRange(float value, float lo, float hi, bool loOpen, const char* field)
 }
 }  // namespace
 
+OpacityRaster parseOpacityRaster(const std::string& text) {
+  if (text == "auto") return OpacityRaster::Auto;
+  if (text == "compute") return OpacityRaster::Compute;
+  if (text == "graphics") return OpacityRaster::Graphics;
+  throw Error("opacity raster must be auto, compute or graphics, got '" + text.substr(0, 40) + "'");
+}
+
+const char* opacityRasterName(OpacityRaster raster) {
+  switch (raster) {
+    case OpacityRaster::Auto: return "auto";
+    case OpacityRaster::Compute: return "compute";
+    case OpacityRaster::Graphics: return "graphics";
+  }
+  return "auto";
+}
+
 void OpacitySettings::validate() const {
   if (resolution < 16 || resolution > 4096)
     throw Error("opacity settings: resolution must be in [16, 4096], got " + std::to_string(resolution));
@@ -31,5 +47,7 @@ void OpacitySettings::validate() const {
   checkRange(biasSlices, 0.0f, float(gpu::OPACITY_SLICES), false, "biasSlices");
   if (format != VK_FORMAT_R32G32B32A32_SFLOAT && format != VK_FORMAT_R16G16B16A16_SFLOAT)
     throw Error("opacity settings: format must be RGBA32F or RGBA16F");
+  if (raster != OpacityRaster::Auto && raster != OpacityRaster::Compute && raster != OpacityRaster::Graphics)
+    throw Error("opacity settings: raster must be Auto, Compute or Graphics");
 }
 }  // namespace hp::render

@@ -4,8 +4,20 @@
 #include <volk.h>
 
 #include <cstdint>
+#include <string>
 
 namespace hp::render {
+// How strands reach the opacity maps: Compute splats each segment's fragments with one fixed-point atomic
+// add into one slice bin and resolves the bins (compute::OpacitySplatPass / OpacityResolvePass); Graphics
+// draws them as lines blended additively into all 16 slices. The same rasterization rule and opacities,
+// so the maps agree up to the fixed point's rounding; compute is 2-4x faster on lavapipe (docs/
+// PERFORMANCE.md "Opacity maps"). Its bins (resolution^2 x 64 bytes) must fit the device's
+// maxStorageBufferRange (128 MiB on lavapipe: up to 1448^2); Auto (the default) takes Compute where they
+// fit and Graphics otherwise (ShadowMaps::raster() says which); Compute past the limit is refused.
+enum class OpacityRaster { Auto, Compute, Graphics };
+OpacityRaster parseOpacityRaster(const std::string& text);  // "auto", "compute", "graphics"; else hp::Error
+const char* opacityRasterName(OpacityRaster raster);
+
 struct OpacitySettings {
   bool enabled = true;
   std::uint32_t resolution = 512;   // texels per side, [16, 4096] (docs/PERFORMANCE.md "Opacity maps")
@@ -24,6 +36,7 @@ struct OpacitySettings {
   // RGBA32F: accurate additive sums (RGBA16F rounds each 0.04 by 17% past alpha 16 and drops it past
   // 128) and measured faster on lavapipe. RGBA16F is accepted for devices where bandwidth matters more.
   VkFormat format = VK_FORMAT_R32G32B32A32_SFLOAT;
+  OpacityRaster raster = OpacityRaster::Auto;  // fixed for a Renderer, like resolution and format
   void validate() const;            // throws hp::Error naming the field
 };
 }  // namespace hp::render

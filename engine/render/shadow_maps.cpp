@@ -14,6 +14,11 @@ const OpacitySettings& validated(const OpacitySettings& s) {
   return s;
 }
 
+bool onCompute(const vk::Context& ctx, const OpacitySettings& s) {
+  if (s.raster == OpacityRaster::Auto) return compute::OpacityResolvePass::fits(ctx, s.resolution);
+  return s.raster == OpacityRaster::Compute;
+}
+
 vk::Image makeImage(const vk::Context& ctx, const OpacitySettings& settings) {
   vk::ImageDesc desc;
   desc.width = desc.height = settings.resolution;
@@ -21,6 +26,7 @@ vk::Image makeImage(const vk::Context& ctx, const OpacitySettings& settings) {
   desc.format = settings.format;
   desc.usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
                VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+  if (onCompute(ctx, settings)) desc.usage |= VK_IMAGE_USAGE_STORAGE_BIT;
   desc.name = "opacity maps";
   return vk::Image(ctx, desc);
 }
@@ -34,11 +40,11 @@ vk::Image makeHeadImage(const vk::Context& ctx, const OpacitySettings& settings)
   return vk::Image(ctx, desc);
 }
 
-VkRenderingAttachmentInfo sliceAttachment(VkImageView view) {
+VkRenderingAttachmentInfo sliceAttachment(VkImageView view, bool keep) {
   VkRenderingAttachmentInfo a{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
   a.imageView = view;
   a.imageLayout = vk::imageLayout(vk::ImageUse::ColorAttachment);
-  a.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+  a.loadOp = keep ? VK_ATTACHMENT_LOAD_OP_LOAD : VK_ATTACHMENT_LOAD_OP_CLEAR;
   a.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
   a.clearValue.color = {{0.0f, 0.0f, 0.0f, 0.0f}};
   return a;
@@ -55,6 +61,8 @@ ShadowMaps::ShadowMaps(const vk::Context& ctx, const OpacitySettings& settings)
       sampler_(ctx, "opacity sampler"),
       headImage_(makeHeadImage(ctx, settings_)),
       headSampler_(ctx, "head shadow sampler", VK_COMPARE_OP_LESS_OR_EQUAL) {
+  if (onCompute(ctx, settings_))
+    resolve_ = std::make_unique<compute::OpacityResolvePass>(ctx, settings_.resolution, settings_.format, image_.view());
   const gpu::LightSpace initial = compute::initialLightSpace();
   vk::submitAndWait(ctx, [&](VkCommandBuffer cmd) {
     ctx.fn().vkCmdUpdateBuffer(cmd, lightSpace_.handle(), 0, sizeof(initial), &initial);
@@ -75,9 +83,9 @@ ShadowMaps::ShadowMaps(const vk::Context& ctx, const OpacitySettings& settings)
   }, "clear opacity maps");
 }
 
-void ShadowMaps::beginRendering(VkCommandBuffer cmd) const {
+void ShadowMaps::beginRendering(VkCommandBuffer cmd, bool keep) const {
   VkRenderingAttachmentInfo attachments[gpu::OPACITY_TARGETS];
-  for (std::uint32_t t = 0; t < gpu::OPACITY_TARGETS; ++t) attachments[t] = sliceAttachment(image_.layerView(t));
+  for (std::uint32_t t = 0; t < gpu::OPACITY_TARGETS; ++t) attachments[t] = sliceAttachment(image_.layerView(t), keep);
   VkRenderingInfo info{VK_STRUCTURE_TYPE_RENDERING_INFO};
   info.renderArea = {{0, 0}, image_.extent()};
   info.layerCount = 1;

@@ -8,10 +8,15 @@
 // (hp::recordShadowPasses) owns them.
 // Also owns the heads' depth shadow map (D32, back faces, head_shadow.glsl) every instance's head is
 // drawn into, with its compare sampler: the head occludes hair and itself through it, not the slices.
+// On the compute path (OpacityRaster::Compute, or Auto where the bins fit the device) it also owns the bins
+// and resolve pass (compute::OpacityResolvePass) and the image has storage usage.
 // Construction clears the image (alpha = 0, T = 1) and the head map (far plane: lit) and leaves them in
 // ImageUse::FragmentSampled, and
 // uploads an armed LightSpace (compute::initialLightSpace) left in BufferUse::VertexRead, so a frame with
 // shadows off samples valid data. One blocking submission. Throws hp::Error on invalid settings.
+#include <memory>
+
+#include "compute/opacity_resolve_pass.h"
 #include "engine/render/opacity_settings.h"
 #include "engine/render/shadow_inputs.h"
 #include "engine/vk/buffer.h"
@@ -29,7 +34,8 @@ class ShadowMaps {
   // New opacities, k, bias or on/off with the same resolution and format (read at record time).
   void setTuning(const OpacitySettings& settings) { settings_ = settings; }
 
-  void beginRendering(VkCommandBuffer cmd) const;
+  // keep: load the layers (the compute resolve wrote them) instead of clearing them to 0.
+  void beginRendering(VkCommandBuffer cmd, bool keep = false) const;
   void endRendering(VkCommandBuffer cmd) const;
   // The heads' depth map (back faces, cleared to the far plane): OpacityPass::recordHeadDepth between.
   void beginHeadRendering(VkCommandBuffer cmd) const;
@@ -37,10 +43,14 @@ class ShadowMaps {
   const vk::Image& image() const { return image_; }
   const vk::Image& headImage() const { return headImage_; }
   const vk::Buffer& lightSpace() const { return lightSpace_; }
+  // The compute path: the bins the instances' splats add into and their resolve; null otherwise.
+  const compute::OpacityResolvePass* resolvePass() const { return resolve_.get(); }
   ShadowInputs inputs() const {
     return {image_.view(), sampler_.handle(), lightSpace_.handle(), headImage_.view(), headSampler_.handle()};
   }
   const OpacitySettings& settings() const { return settings_; }
+  // The path taken: settings().raster, with Auto resolved for this device and resolution.
+  OpacityRaster raster() const { return resolve_ ? OpacityRaster::Compute : OpacityRaster::Graphics; }
 
  private:
   const vk::Context* ctx_;
@@ -50,5 +60,6 @@ class ShadowMaps {
   vk::Sampler sampler_;
   vk::Image headImage_;    // D32, settings.headShadowResolution^2
   vk::Sampler headSampler_;  // depth compare
+  std::unique_ptr<compute::OpacityResolvePass> resolve_;
 };
 }  // namespace hp::render

@@ -34,13 +34,15 @@ double residentMiB() {
 
 // Compulsory bytes per frame of the compute passes: every input read once, every output written once
 // (formulas as bench strands / bench sim; raster: vertex records 16 + 8 bytes, list entries 8 bytes; the
-// shade step is counted as if every vertex were listed).
+// shade step is counted as if every vertex were listed; compute opacity: positions, then the bins cleared,
+// read by the resolve and the maps written, 64 bytes a texel each, the atomics not counted).
 void countBytes(FrameResult& r, const compute::StrandLayout& l) {
   const double g = l.guideCount, p = l.particlesPerGuide, q = l.verticesPerStrand, s = l.strandCount;
   const double v = s * q, e = double(r.rasterEntries);
   const double tiles = double((r.c.width + 7) / 8) * double((r.c.height + 7) / 8);
   const double pixels = double(r.c.width) * r.c.height;
-  const std::map<std::string, double> bytes = {
+  const double mapTexels = double(render::OpacitySettings{}.resolution) * render::OpacitySettings{}.resolution;
+  std::map<std::string, double> bytes = {
       {"simulate", g * p * 16 * 5},
       {"tessellate", g * p * 16 + g * q * 32},
       {"interpolate", s * 16 + l.triangleCount * 16.0 + g * q * 32 + s * (q * 32 + 16)},
@@ -50,6 +52,7 @@ void countBytes(FrameResult& r, const compute::StrandLayout& l) {
       {"raster bin", 2 * v * 16 + tiles * gpu::RASTER_DEPTH_BINS * 16 + e * 8},
       {"raster fine", e * 8 + e * 2 * 16 + pixels * (4 + 8)},
   };
+  if (r.opacityRaster == render::OpacityRaster::Compute) bytes["opacity"] = v * 16 + 3 * mapTexels * 64;
   for (auto& [name, t] : r.passes)
     if (auto it = bytes.find(name); it != bytes.end()) t.bytes = it->second;
 }
@@ -64,6 +67,7 @@ FrameResult benchFrame(const vk::Context& ctx, const FrameCase& c) {
   HairSystemSettings settings;
   settings.formats = renderer.formats();
   settings.raster = c.raster;
+  settings.opacity.raster = c.opacityRaster;
   HairSystem hair(ctx, asset, settings);
   renderer.attach(hair);
   DrawView view;
@@ -112,6 +116,7 @@ FrameResult benchFrame(const vk::Context& ctx, const FrameCase& c) {
     r.rasterEntries = stats.kept;
     r.rasterOverflow = stats.overflow();
   }
+  r.opacityRaster = hair.shadows().raster();
   r.copyBytes = copy.bytesMoved();
   countBytes(r, hair.strands().layout());
   return r;

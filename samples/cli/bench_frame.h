@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "engine/hair/scene.h"
+#include "engine/render/opacity_settings.h"
 #include "engine/vk/context.h"
 
 namespace hp::cli {
@@ -19,6 +20,7 @@ struct FrameCase {
   RasterMode raster = RasterMode::Compute;
   std::uint32_t msaa = 4;  // graphics only
   std::uint32_t frames = 3;
+  render::OpacityRaster opacityRaster = render::OpacityRaster::Auto;  // how strands reach the opacity maps
 };
 
 struct PassTiming {
@@ -30,6 +32,7 @@ struct FrameResult {
   FrameCase c;
   std::map<std::string, PassTiming> passes;  // "frame" is the whole frame; "copy" the reference
   std::uint64_t rasterEntries = 0, rasterOverflow = 0;
+  render::OpacityRaster opacityRaster = render::OpacityRaster::Graphics;  // the path taken (Auto resolved)
   double copyBytes = 0;
   double hostMs = 0;          // median wall time of a frame's submit-and-wait (driver compiles included)
   double residentMiB = 0;     // the process's resident memory after the last frame

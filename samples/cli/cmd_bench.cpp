@@ -29,6 +29,7 @@ struct BenchOptions {
   std::uint32_t frames = 3;
   std::vector<std::string> raster{"compute", "graphics"};
   std::vector<std::uint32_t> msaa{4};
+  std::string opacityRaster = "auto";
   std::string json, plot, device;
 };
 
@@ -47,6 +48,7 @@ std::vector<hp::cli::FrameCase> cases(const BenchOptions& o) {
   hp::cli::FrameCase base;
   base.frames = o.frames;
   parseResolution(o.resolution, base.width, base.height);
+  base.opacityRaster = hp::render::parseOpacityRaster(o.opacityRaster);
   std::vector<hp::cli::FrameCase> out;
   for (std::uint32_t s : o.strands) {
     if (s == 0 || s > 4'000'000) throw hp::Error("bench: --strands values must be in [1, 4000000]");
@@ -85,6 +87,7 @@ nlohmann::json toJson(const hp::cli::FrameResult& r) {
   }
   return {{"strands", r.c.strands},      {"width", r.c.width},
           {"height", r.c.height},        {"raster", hp::cli::frameCaseName(r.c)},
+          {"opacity_raster", hp::render::opacityRasterName(r.opacityRaster)},
           {"frame_ms", r.passes.at("frame").medianMs}, {"copy_gb_per_s", copyGbs},
           {"raster_entries", r.rasterEntries},         {"raster_overflow", r.rasterOverflow},
           {"host_frame_ms", r.hostMs},                 {"resident_mib", r.residentMiB},
@@ -147,6 +150,8 @@ void setup(CLI::App& app) {
   cmd->add_option("--raster", o->raster, "Raster paths: compute, graphics (comma separated)")->delimiter(',')
       ->capture_default_str();
   cmd->add_option("--msaa", o->msaa, "Sample counts for the graphics path (comma separated)")->delimiter(',')
+      ->capture_default_str();
+  cmd->add_option("--opacity-raster", o->opacityRaster, "How strands reach the opacity maps: auto, compute or graphics")
       ->capture_default_str();
   cmd->add_option("--json", o->json, "Write the report as JSON to this file");
   cmd->add_option("--plot", o->plot, "Write an SVG of ms per pass against strand count to this file");

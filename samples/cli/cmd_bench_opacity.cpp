@@ -1,7 +1,7 @@
 // `hairpipe bench opacity [--strands 10000,100000,1000000] [--resolutions 512,1024] [--frames F]
-// [--half] [--json]`: GPU time of the bounds and opacity passes (GpuProfiler timestamps, median of F
-// frames after one warm-up frame) on the default head in its rest pose, for each render-strand count
-// and opacity-map resolution. Each frame is interpolate -> bounds -> opacity, as HairSystem records it.
+// [--half] [--raster compute,graphics] [--json]`: GPU time of the bounds and opacity passes (GpuProfiler timestamps, median of F
+// frames after one warm-up frame) on the default head in its rest pose, for each render-strand count,
+// opacity-map resolution and way into the maps (compute splats or graphics lines), measured in one run. Each frame is interpolate -> bounds -> opacity, as HairSystem records it.
 #include <algorithm>
 #include <cstdio>
 #include <iostream>
@@ -26,15 +26,17 @@ struct BenchOptions {
   std::vector<std::uint32_t> strands{10000, 100000, 1000000};
   std::vector<std::uint32_t> resolutions{512, 1024};
   std::uint32_t frames = 3;
+  std::vector<std::string> rasters{"compute", "graphics"};
   bool half = false;
   bool json = false;
   std::string device;
 };
 
 nlohmann::json benchOne(const hp::vk::Context& ctx, const hp::HairAsset& asset, std::uint32_t resolution,
-                        const BenchOptions& o) {
+                        hp::render::OpacityRaster raster, const BenchOptions& o) {
   hp::HairSystemSettings settings;
   settings.opacity.resolution = resolution;
+  settings.opacity.raster = raster;
   if (o.half) settings.opacity.format = VK_FORMAT_R16G16B16A16_SFLOAT;
   hp::HairSystem hair(ctx, asset, settings);
   hp::DrawView view;
@@ -53,6 +55,7 @@ nlohmann::json benchOne(const hp::vk::Context& ctx, const hp::HairAsset& asset, 
           {"chunks", hair.strands().layout().chunks.size()},
           {"resolution", resolution},
           {"format", o.half ? "RGBA16F" : "RGBA32F"},
+          {"raster", hp::render::opacityRasterName(raster)},
           {"bounds_ms", hp::vk::median(times["bounds"])},
           {"opacity_ms", hp::vk::median(times["opacity"])}};
 }
@@ -61,6 +64,8 @@ void run(const BenchOptions& o) {
   if (o.frames == 0 || o.frames > 100) throw hp::Error("bench opacity: --frames must be in [1, 100]");
   for (std::uint32_t s : o.strands)
     if (s == 0 || s > 4'000'000) throw hp::Error("bench opacity: --strands values must be in [1, 4000000]");
+  std::vector<hp::render::OpacityRaster> rasters;
+  for (const std::string& r : o.rasters) rasters.push_back(hp::render::parseOpacityRaster(r));
   auto ctx = hp::cli::createBenchContext(o.device, "bench opacity");
   nlohmann::json report = {{"device", ctx->properties().deviceName}, {"frames", o.frames},
                            {"results", nlohmann::json::array()}};
@@ -68,15 +73,16 @@ void run(const BenchOptions& o) {
     hp::DensityOptions density;
     density.totalStrands = s;
     const hp::HairAsset asset = hp::buildDefaultHeadAsset(hp::defaultHeadGrowth(), density);
-    for (std::uint32_t r : o.resolutions) {
-      nlohmann::json row = benchOne(*ctx, asset, r, o);
-      if (!o.json)
-        std::printf("%8u strands  %4u^2 %s  bounds %8.2f ms  opacity %9.2f ms\n", s, r,
-                    row["format"].get<std::string>().c_str(), row["bounds_ms"].get<double>(),
-                    row["opacity_ms"].get<double>());
-      std::fflush(stdout);
-      report["results"].push_back(row);
-    }
+    for (std::uint32_t r : o.resolutions)
+      for (hp::render::OpacityRaster raster : rasters) {
+        nlohmann::json row = benchOne(*ctx, asset, r, raster, o);
+        if (!o.json)
+          std::printf("%8u strands  %4u^2 %s %-8s  bounds %8.2f ms  opacity %9.2f ms\n", s, r,
+                      row["format"].get<std::string>().c_str(), row["raster"].get<std::string>().c_str(),
+                      row["bounds_ms"].get<double>(), row["opacity_ms"].get<double>());
+        std::fflush(stdout);
+        report["results"].push_back(row);
+      }
   }
   if (o.json) std::cout << report.dump(2) << "\n";
 }
@@ -88,6 +94,8 @@ void setup(CLI::App& app) {
   cmd->add_option("--resolutions", o->resolutions, "Opacity map sizes, comma separated")->delimiter(',')->capture_default_str();
   cmd->add_option("--frames", o->frames, "Timed frames per case (median), after one warm-up")->capture_default_str();
   cmd->add_flag("--half", o->half, "RGBA16F opacity maps instead of RGBA32F");
+  cmd->add_option("--raster", o->rasters, "Ways into the maps: compute, graphics (comma separated)")
+      ->delimiter(',')->capture_default_str();
   cmd->add_flag("--json", o->json, "Print JSON");
   cmd->add_option("--device", o->device, "Vulkan device: index or name substring (env HAIRPIPE_DEVICE)");
   cmd->callback([o] { run(*o); });

@@ -90,7 +90,8 @@ void runRender(const RenderOptions& o, const CLI::App& cmd) {
                            {"guides", result.guides}, {"strands", result.strands},
                            {"vertices_per_strand", result.verticesPerStrand},
                            {"lut_mode", o.frame.lutMode}, {"device", ctx->properties().deviceName},
-                           {"gpu_ms", passes}, {"raster", hp::rasterModeName(result.raster)}};
+                           {"gpu_ms", passes}, {"raster", hp::rasterModeName(result.raster)},
+                           {"opacity_raster", hp::render::opacityRasterName(result.opacityRaster)}};
   if (!guessed.empty()) report["guessed"] = guessed;
   if (result.rasterStats) {
     const auto& s = *result.rasterStats;
@@ -107,7 +108,8 @@ void runRender(const RenderOptions& o, const CLI::App& cmd) {
   }
   std::cout << "wrote " << o.out << " (" << result.width << "x" << result.height << ", " << result.strands
             << " strands from " << result.guides << " guides) on " << ctx->properties().deviceName << "\n";
-  std::cout << "  raster: " << hp::rasterModeName(result.raster) << "\n";
+  std::cout << "  raster: " << hp::rasterModeName(result.raster)
+            << ", opacity maps: " << hp::render::opacityRasterName(result.opacityRaster) << "\n";
   if (result.rasterStats)
     std::cout << "  tile lists: " << result.rasterStats->kept << " entries kept of " << result.rasterStats->requested
               << ", overflow " << result.rasterStats->overflow() << " (tile budget "

@@ -26,6 +26,7 @@ hp::render::OpacitySettings opacitySettings(const FrameOptions& o) {
   hp::render::OpacitySettings s;
   s.enabled = !o.noShadows;
   if (o.opacityResolution) s.resolution = *o.opacityResolution;
+  if (o.opacityRaster) s.raster = hp::render::parseOpacityRaster(*o.opacityRaster);
   if (o.strandOpacity) {
     s.footprint = false;  // a constant per crossing replaces the width / texel-size footprint
     s.strandOpacity = *o.strandOpacity;
@@ -163,6 +164,8 @@ void addFrameOptions(CLI::App& cmd, FrameOptions& o) {
   cmd.add_flag("--guides-only", o.guidesOnly, "Draw the smoothed guides only (no interpolation)");
   cmd.add_flag("--no-shadows", o.noShadows, "Turn the opacity shadow maps off");
   cmd.add_option("--opacity-resolution", o.opacityResolution, "Opacity map texels per side, 16-4096 (default 512)");
+  cmd.add_option("--opacity-raster", o.opacityRaster,
+                 "How strands reach the opacity maps: auto (default: compute where its bins fit the device), compute (splats) or graphics (lines)");
   cmd.add_option("--strand-opacity", o.strandOpacity, "Constant opacity a strand adds per opacity-map texel instead of its footprint (width / texel size, the default)");
   cmd.add_option("--shadow-k", o.shadowK, "Extinction k in T = exp(-k alpha) (default 1)");
   cmd.add_option("--shadow-bias", o.shadowBias, "Shadow lookup bias toward the light, in slices (default 1)");

@@ -33,7 +33,7 @@ struct FrameOptions {
   bool noShadows = false;
   std::optional<std::uint32_t> opacityResolution;
   std::optional<float> strandOpacity, shadowK, shadowBias;
-  std::optional<std::string> raster;
+  std::optional<std::string> raster, opacityRaster;
   std::optional<std::uint32_t> tileBudget;
 };
 

@@ -58,6 +58,7 @@ struct RenderSession {
     result.strands = hair.strands().layout().strandCount;
     result.verticesPerStrand = hair.strands().layout().verticesPerStrand;
     result.raster = hair.raster();
+    result.opacityRaster = hair.shadows().raster();
     return result;
   }
 

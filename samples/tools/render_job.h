@@ -40,6 +40,7 @@ struct RenderResult {
   std::uint32_t strands = 0;
   std::uint32_t verticesPerStrand = 0;
   RasterMode raster = RasterMode::Graphics;          // the path that drew the hair (Auto resolved)
+  render::OpacityRaster opacityRaster = render::OpacityRaster::Graphics;  // the path into the opacity maps
   std::optional<compute::RasterStats> rasterStats;   // compute raster: tile-list entries and overflow
   std::optional<render::OpacityCapture> opacity;  // with captureOpacity and shadows on
   std::optional<HairFileData> strandDump;         // with captureStrands: Q points per render strand

@@ -36,6 +36,25 @@ HP_CONST(uint, OPACITY_BINDING_POSITIONS, 0)  // strands: vec4[chunk strands * Q
 HP_CONST(uint, OPACITY_BINDING_INDICES, 1)    // head only: uint indices (triangle list)
 HP_CONST(uint, OPACITY_BINDING_LIGHT, 2)      // LightSpace (read)
 
+// Opacity pass (compute, OpacityRaster::Compute): each segment's fragments (the texel centres inside the
+// 1-texel-wide rectangle along it: the strict-line rule of the graphics pass) add their opacity in fixed
+// point to ONE bin per texel, the first slice at or behind them; the resolve turns the 16 bins of a texel
+// into the cumulative alpha(z_i) of the graphics pass and writes the maps. Bins: uint[res * res * 16],
+// texel-major (texel (x, y) row y from the top, then slice).
+HP_CONST(uint, OPACITY_SPLAT_WORKGROUP_SIZE, 64)
+HP_CONST(uint, OPACITY_RESOLVE_WORKGROUP_SIZE, 64)
+HP_CONST(uint, OPACITY_SPLAT_BINDING_POSITIONS, 0)  // vec4[chunk strands * Q] render strand positions
+HP_CONST(uint, OPACITY_SPLAT_BINDING_LIGHT, 1)      // LightSpace (read)
+HP_CONST(uint, OPACITY_SPLAT_BINDING_BINS, 2)       // uint bins (atomic adds)
+HP_CONST(uint, OPACITY_RESOLVE_BINDING_BINS, 0)     // uint bins (read)
+HP_CONST(uint, OPACITY_RESOLVE_BINDING_MAPS, 1)     // the maps as a storage image2DArray (written)
+// Fixed point: a bin holds opacity x 2^16 (a fragment of 0.04 rounds by < 2e-4 of itself). A bin that
+// reaches OPACITY_BIN_SATURATED (alpha 32768: T = 0 for any k >= 0.003) takes no more adds and resolves
+// to OPACITY_SATURATED_ALPHA, so an absurd pile-up saturates instead of wrapping around.
+HP_CONST(float, OPACITY_FIXED_ONE, 65536.0f)
+HP_CONST(uint, OPACITY_BIN_SATURATED, 0x80000000u)
+HP_CONST(float, OPACITY_SATURATED_ALPHA, 32768.0f)
+
 // Light-space framing, written on the device by the bounds pass and read by every later pass.
 struct LightSpace {
   mat4 viewProj;      // world -> light clip (orthographic, or perspective for a spot); see the header comment
@@ -70,6 +89,17 @@ struct OpacityPush {
   // w = 1: a fragment adds opacity x width / texel size (the fraction of the texel the strand covers
   // per texel of its length: Beer-Lambert alpha = covered area / texel area); w = 0: adds `opacity`.
   vec4 footprint;
+};
+struct OpacitySplatPush {
+  vec4 footprint;          // as OpacityPush::footprint
+  float opacity;           // as OpacityPush::opacity (strands)
+  uint verticesPerStrand;  // Q
+  uint segmentCount;       // segments in this chunk: strands x (Q - 1)
+  uint resolution;         // map texels per side
+};
+
+struct OpacityResolvePush {
+  uint resolution;         // map texels per side
 };
 HP_END
 
@@ -108,5 +138,6 @@ static_assert(offsetof(hp::gpu::BoundsPush, vertexCount) == 48);
 static_assert(sizeof(hp::gpu::OpacityPush) == 96);
 static_assert(offsetof(hp::gpu::OpacityPush, footprint) == 80);
 static_assert(offsetof(hp::gpu::OpacityPush, opacity) == 64);
+static_assert(sizeof(hp::gpu::OpacitySplatPush) == 32);
 #endif
 #endif

@@ -100,6 +100,7 @@ TEST(CliRenderOpacity, RefusesBadShadowOptions) {
       {{"--strand-opacity", "nan"}, "strandOpacity"},
       {{"--shadow-k", "-2"}, "k must be"},
       {{"--shadow-bias", "40"}, "biasSlices"},
+      {{"--opacity-raster", "splat"}, "opacity raster must be auto, compute or graphics"},
       {{"--no-shadows", "--dump-opacity", (dir / "x").string()}, "--dump-opacity"},
   };
   for (const auto& [extra, needle] : cases) {

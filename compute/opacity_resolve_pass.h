@@ -1,0 +1,43 @@
+#pragma once
+// Contract: the end of the compute opacity pass (shaders/opacity_resolve.glsl, shared/opacity.h). Owns
+// the bins every instance's OpacitySplatPass adds into (uint[resolution^2 x 16], fixed point) and turns
+// them into the opacity maps: per texel the prefix sum over its 16 slices, written as the 4 RGBA layers
+// the graphics pass would have blended (RGBA32F or RGBA16F; storage usage required).
+//
+// Recording, barriers by the caller (the frame recorder): recordClear (a transfer fill of the bins;
+// before it the previous frame's resolve reads are done: ComputeRead -> TransferDst), the splats
+// (TransferDst -> ComputeWrite before them), then recordResolve (bins ComputeWrite -> ComputeRead, the
+// maps in ImageUse::ComputeStorageWrite). Throws hp::Error if the bins exceed maxStorageBufferRange.
+#include <volk.h>
+
+#include <memory>
+
+#include "engine/vk/buffer.h"
+#include "engine/vk/descriptors.h"
+#include "engine/vk/pipeline_library.h"
+
+namespace hp::compute {
+class OpacityResolvePass {
+ public:
+  // The bins' size for a map resolution, and whether the device can bind them (maxStorageBufferRange).
+  static VkDeviceSize binBytes(std::uint32_t resolution);
+  static bool fits(const vk::Context& ctx, std::uint32_t resolution);
+
+  // maps: a 2D-array view of the OPACITY_TARGETS layers in `format` (the pass writes it as a storage image).
+  OpacityResolvePass(const vk::Context& ctx, std::uint32_t resolution, VkFormat format, VkImageView maps,
+                     vk::PipelineLibrary* library = nullptr);
+  OpacityResolvePass(const OpacityResolvePass&) = delete;
+  OpacityResolvePass& operator=(const OpacityResolvePass&) = delete;
+
+  const vk::Buffer& bins() const { return bins_; }
+  void recordClear(VkCommandBuffer cmd) const;
+  void recordResolve(VkCommandBuffer cmd) const;
+
+ private:
+  const vk::Context* ctx_;
+  std::uint32_t resolution_;
+  vk::Buffer bins_;
+  vk::DescriptorSet set_;
+  std::shared_ptr<const vk::ComputePipeline> pipeline_;
+};
+}  // namespace hp::compute
