@@ -1,7 +1,7 @@
 // The radiance a hair fibre sends toward the camera (REFERENCES.md §3-4), GLSL only, shared by the graphics
 // strand shader (strands.frag, per fragment) and the compute rasterizer (raster_shade.comp, per vertex):
-// S(L, V, T) cos(theta_i) x light x transmittance + sky albedo x ambient x RENDER_HAIR_SKY_VISIBILITY, times the
-// strand's lightness variation.
+// S(L, V, T) cos(theta_i) x light x transmittance [+ the light the hair in front scattered forward, dual
+// scattering] + sky albedo x ambient x RENDER_HAIR_SKY_VISIBILITY, times the strand's lightness variation.
 // The includer declares `frame` (RenderFrame), `marschner` (MarschnerParams), the LUT samplers
 // lutM, lutN0, lutN1 and `headShadowMap` (the head's depth map) before including this file; `alpha` is
 // the opacity-map lookup at the point. The transmittance is the hair's (opacity maps) times the head's.
@@ -18,9 +18,18 @@ vec3 hairRadiance(vec3 world, vec3 tangent, float colorScale, float alpha) {
   vec3 S = marschnerEvaluate(marschner.control.x, L, V, T, lutM, lutN0, lutN1, marschner);
   float sinThetaI = clamp(dot(L, T), -1.0, 1.0);
   float cosThetaI = sqrt(1.0 - sinThetaI * sinThetaI);
-  float transmittance = exp(-frame.strand.z * alpha) *
-                        headVisibility(headShadowMap, frame.headShadowViewProj, frame.headShadow, world, L);
-  vec3 direct = S * cosThetaI * frame.lightRadiance.rgb * (light.scale * transmittance);
+  float tau = frame.strand.z * alpha;  // optical depth toward the light: the mean number of fibres crossed
+  float head = headVisibility(headShadowMap, frame.headShadowViewProj, frame.headShadow, world, L);
+  vec3 incident = frame.lightRadiance.rgb * (light.scale * head);
+  vec3 direct = S * cosThetaI * incident * exp(-tau);
+  // Multiple scattering (dual; docs/SHADING.md "Multiple scattering"): of the light that hits N fibres on
+  // its way (N Poisson with mean tau), a fraction d_f a_f^N goes on forward, spread around the fibre:
+  // E[a_f^N; N >= 1] = exp(-tau (1 - a_f)) - exp(-tau).
+  if (frame.options.z == RENDER_SCATTERING_DUAL && marschner.control.x == MARSCHNER_MODE_LUT_PHYSICAL) {
+    vec3 af = marschnerForwardAlbedo(sinThetaI, marschner);
+    vec3 spread = MARSCHNER_FORWARD_DENSITY * max(exp(-tau * (1.0 - af)) - exp(-tau), vec3(0.0));
+    direct += marschnerPhysicalSpreadResponse(L, V, T, lutM, marschner) * incident * spread;
+  }
   // The ambient is a uniform white sky: an unoccluded fibre returns the model's sky albedo times its
   // radiance, a fibre of a head of hair the mean visible fraction of it (shared/render.h).
   vec3 ambient = marschner.skyAlbedo.rgb * (frame.hairColor.w * RENDER_HAIR_SKY_VISIBILITY);

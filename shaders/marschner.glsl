@@ -245,6 +245,34 @@ vec3 marschnerLutPhysical(vec3 L, vec3 V, vec3 T, sampler2D mTex, sampler2D n0Te
   return (m.x * n0.w + m.y * n0.xyz + m.z * n1.xyz) * marschnerPhysicalInvCosI(ang);
 }
 
+// Multiple scattering (physical mode; docs/SHADING.md "Multiple scattering"). The spread tables hold
+// MARSCHNER_SPREAD_ENTRIES values over sin theta in [-1, 1]: entry x and x + 1, mixed by y.
+vec2 marschnerSpreadCoord(float sinTheta) {
+  float x = clamp(sinTheta * 0.5 + 0.5, 0.0, 1.0) * float(MARSCHNER_SPREAD_ENTRIES - 1u);
+  float i = min(floor(x), float(MARSCHNER_SPREAD_ENTRIES - 2u));
+  return vec2(i, x - i);
+}
+
+// The fraction a_f of light arriving at sin theta that one fibre scatters on forward (|phi| > pi/2).
+vec3 marschnerForwardAlbedo(float sinTheta, MarschnerParams prm) {
+  vec2 c = marschnerSpreadCoord(sinTheta);
+  uint i = uint(c.x);
+  return mix(prm.forwardAlbedo[i].rgb, prm.forwardAlbedo[i + 1u].rgb, c.y);
+}
+
+// What a fibre sends toward V per unit light arriving at L's theta from every azimuth at once (light the
+// hair in front has spread around it): sum_p M_p(theta_i, theta_r) x the mean of N_p over phi. The
+// counterpart of S cos theta_i for a single direction.
+vec3 marschnerPhysicalSpreadResponse(vec3 L, vec3 V, vec3 T, sampler2D mTex, MarschnerParams prm) {
+  vec4 ang = marschnerAngles(L, V, T);
+  vec4 m = textureLod(mTex, marschnerPhysicalCoords(ang).xy, 0.0) * prm.mScale;
+  vec2 c = marschnerSpreadCoord(ang.y);
+  uint i = uint(c.x);
+  vec4 rtt = mix(prm.meanRTT[i], prm.meanRTT[i + 1u], c.y);
+  vec3 trt = mix(prm.meanTRT[i].rgb, prm.meanTRT[i + 1u].rgb, c.y);
+  return m.x * rtt.x + m.y * rtt.yzw + m.z * trt;
+}
+
 // The ONE shading entry point of every hair shading path (mode = MARSCHNER_MODE_*; paper mode reads
 // mTex and n0Tex only, direct none).
 vec3 marschnerEvaluate(uint mode, vec3 L, vec3 V, vec3 T, sampler2D mTex, sampler2D n0Tex,

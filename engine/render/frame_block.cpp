@@ -9,12 +9,21 @@ namespace {
 constexpr float kSpotInnerFraction = 0.8f;  // full radiance inside 80% of the half-angle (shaders/light.glsl)
 }  // namespace
 
+Scattering parseScattering(const std::string& text) {
+  if (text == "single") return Scattering::Single;
+  if (text == "dual") return Scattering::Dual;
+  throw Error("scattering must be single or dual, got '" + text.substr(0, 40) + "'");
+}
+
+const char* scatteringName(Scattering s) { return s == Scattering::Dual ? "dual" : "single"; }
+
 void LookSettings::validate() const {
   auto positiveFinite = [](float v) { return std::isfinite(v) && v > 0.0f; };
   if (!positiveFinite(strandWidth) || strandWidth > 0.01f) throw Error("strand width must be in (0, 0.01] scene units");
   if (!(tipWidthFraction >= 0.0f && tipWidthFraction <= 1.0f)) throw Error("tip width fraction must be in [0, 1]");
   if (!(wrap >= 0.0f && wrap <= 1.0f)) throw Error("wrap must be in [0, 1]");
   if (!(ambient >= 0.0f && ambient <= 10.0f)) throw Error("ambient must be in [0, 10]");
+  if (scattering != Scattering::Single && scattering != Scattering::Dual) throw Error("scattering must be Single or Dual");
   for (int i = 0; i < 3; ++i)
     if (!(skinColor[i] >= 0.0f && skinColor[i] <= 1.0f)) throw Error("skin colour components must be in [0, 1]");
 }
@@ -39,7 +48,9 @@ gpu::RenderFrame makeRenderFrame(const CameraMatrices& camera, VkExtent2D extent
   f.hairColor = glm::vec4(glm::vec3(albedo), look.ambient);
   f.skinColor = glm::vec4(look.skinColor, look.wrap);
   f.strand = glm::vec4(look.strandWidth, look.tipWidthFraction, opacity.k, opacity.biasSlices);
-  f.options = glm::uvec4(verticesPerStrand, opacity.enabled ? 1u : 0u, 0u, 0u);
+  f.options = glm::uvec4(verticesPerStrand, opacity.enabled ? 1u : 0u,
+                         look.scattering == Scattering::Dual ? gpu::RENDER_SCATTERING_DUAL : gpu::RENDER_SCATTERING_SINGLE,
+                         0u);
   return f;
 }
 }  // namespace hp::render

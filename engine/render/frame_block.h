@@ -5,9 +5,16 @@
 #include "engine/render/camera.h"
 #include "engine/render/opacity_settings.h"
 #include <volk.h>
+
+#include <string>
+
 #include "shaders/shared/render.h"
 
 namespace hp::render {
+enum class Scattering { Single, Dual };
+Scattering parseScattering(const std::string& text);  // "single", "dual"; else hp::Error
+const char* scatteringName(Scattering s);
+
 struct LookSettings {
   // Ribbon width at the root (scene units). Real hair is 50-120 um, but a render strand stands for a
   // few hundred real ones (20k of them replace ~100k hairs), so it is drawn as a thin clump.
@@ -16,6 +23,9 @@ struct LookSettings {
   glm::vec3 skinColor{0.62f, 0.45f, 0.36f};
   float wrap = 0.5f;                 // the paper's wrap term for the head, [0, 1]
   float ambient = 0.06f;             // constant fill light, relative to the hair/skin albedo
+  // Dual: add the light the hair in front of a fibre scattered forward onto it (physical fibre model
+  // only; the others draw single scattering either way). docs/SHADING.md "Multiple scattering".
+  Scattering scattering = Scattering::Single;
   void validate() const;             // throws hp::Error naming the field
 };
 

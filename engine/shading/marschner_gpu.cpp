@@ -2,6 +2,7 @@
 
 #include "engine/shading/fibre_model.h"
 #include "engine/shading/furnace.h"
+#include "engine/shading/multiple_scattering.h"
 #include "shaders/shared/brdf_eval.h"
 
 namespace hp {
@@ -34,6 +35,13 @@ gpu::MarschnerParams marschnerGpuParams(const MarschnerLut& lut) {
   }
   p.control = glm::uvec4(gpuModeOf(lut.mode), 0u, 0u, 0u);
   p.skyAlbedo = glm::vec4(glm::vec3(skyAlbedo(fibreModelOf(lut.mode), m)), 0.0f);
+  if (lut.mode != LutMode::Physical) return p;
+  const MultipleScatteringTables t = multipleScatteringTables(m, int(gpu::MARSCHNER_SPREAD_ENTRIES));
+  for (std::uint32_t k = 0; k < gpu::MARSCHNER_SPREAD_ENTRIES; ++k) {
+    p.forwardAlbedo[k] = glm::vec4(glm::vec3(t.forwardAlbedo[k]), 0.0f);
+    p.meanRTT[k] = glm::vec4(float(t.meanR[k]), glm::vec3(t.meanTT[k]));
+    p.meanTRT[k] = glm::vec4(glm::vec3(t.meanTRT[k]), 0.0f);
+  }
   return p;
 }
 }  // namespace hp

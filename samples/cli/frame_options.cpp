@@ -104,6 +104,11 @@ hp::RenderRequest makeRenderRequest(const FrameOptions& o, const CLI::App& cmd) 
   r.guidesOnly = o.guidesOnly;
   r.exposure = o.exposure;
   if (o.ambient) r.look.ambient = *o.ambient;
+  if (o.scattering) {
+    r.look.scattering = hp::render::parseScattering(*o.scattering);
+    if (r.look.scattering == hp::render::Scattering::Dual && o.lutMode != "physical")
+      throw hp::Error("--scattering dual needs the physical fibre model (--lut-mode physical)");
+  }
   r.look.validate();
   r.opacity = opacitySettings(o);
   applyRaster(o, r);
@@ -160,6 +165,8 @@ void addFrameOptions(CLI::App& cmd, FrameOptions& o) {
   cmd.add_option("--exposure", o.exposure, "Exposure multiplier before tonemapping (default 1)");
   cmd.add_option("--ambient", o.ambient,
                  "Ambient fill light in [0, 10] (default 0.06; the reference's uniform sky radiance)");
+  cmd.add_option("--scattering", o.scattering,
+                 "single, or dual: adds the light the hair in front scattered forward (physical fibre model)");
   cmd.add_flag("--lines", o.lines, "Draw strands as lines instead of ribbons");
   cmd.add_flag("--guides-only", o.guidesOnly, "Draw the smoothed guides only (no interpolation)");
   cmd.add_flag("--no-shadows", o.noShadows, "Turn the opacity shadow maps off");

@@ -25,6 +25,7 @@ struct FrameOptions {
   std::optional<float> spotAngle, spotRange;
   std::optional<float> orbit;
   std::optional<float> ambient;
+  std::optional<std::string> scattering;
   std::string lutMode = "physical";
   std::string animate = "none";
   float exposure = 1.0f;

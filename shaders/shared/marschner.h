@@ -61,6 +61,12 @@ HP_CONST(float, MARSCHNER_PHYSICAL_MIN_COS_I, 1e-4f)
 
 HP_CONST(float, MARSCHNER_INV_SQRT2, 0.70710678f)
 
+// Multiple scattering (physical mode; engine/shading/multiple_scattering.h, docs/SHADING.md "Multiple
+// scattering"): tables at MARSCHNER_SPREAD_ENTRIES sines of theta evenly spaced over [-1, 1], linearly
+// interpolated; the forward density factor d_f of Zinke et al. 2008.
+HP_CONST(uint, MARSCHNER_SPREAD_ENTRIES, 32u)
+HP_CONST(float, MARSCHNER_FORWARD_DENSITY, 0.7f)
+
 // GPU block: material and the factors that undo the LUT rescaling.
 struct MarschnerParams {
   vec4 absorption;    // xyz = sigma_a per unit fibre radius (RGB), w = eta
@@ -71,6 +77,10 @@ struct MarschnerParams {
   vec4 n1Scale;       // same for the second N texture (float mode only)
   uvec4 control;      // x = MARSCHNER_MODE_*, yzw = 0
   vec4 skyAlbedo;     // rgb = the fibre's albedo under a uniform white sky (hp::skyAlbedo), w = 0
+  // Physical mode only (zero otherwise), at sin theta = -1 + 2k / (MARSCHNER_SPREAD_ENTRIES - 1):
+  vec4 forwardAlbedo[MARSCHNER_SPREAD_ENTRIES];  // rgb = a_f(theta) of the light's theta, w = 0
+  vec4 meanRTT[MARSCHNER_SPREAD_ENTRIES];        // x = mean N_R, yzw = mean N_TT (rgb), at theta_r
+  vec4 meanTRT[MARSCHNER_SPREAD_ENTRIES];        // rgb = mean (N_TRT + N_res), w = 0, at theta_r
 };
 
 // Pseudo-angle of a in [0, pi/2] from cos(2a): sin(a)/sqrt2 below pi/4, 1 - cos(a)/sqrt2 above.

@@ -30,6 +30,11 @@ HP_CONST(uint, TONEMAP_BINDING_HDR, 0)
 // = (1 - ln 2) / 2. docs/SHADING.md "Ambient" compares it with the path-traced reference's sky.
 HP_CONST(float, RENDER_HAIR_SKY_VISIBILITY, 0.15342641f)
 
+// RenderFrame.options.z: single scattering, or with dual scattering's global forward part (physical
+// fibre model only; hair_shading.glsl, docs/SHADING.md "Multiple scattering").
+HP_CONST(uint, RENDER_SCATTERING_SINGLE, 0u)
+HP_CONST(uint, RENDER_SCATTERING_DUAL, 1u)
+
 HP_CONST(uint, STRAND_VERTICES_PER_QUAD, 6)
 HP_CONST(uint, STRAND_VERTICES_PER_LINE, 2)
 
@@ -43,7 +48,8 @@ struct RenderFrame {
   vec4 skinColor;        // rgb albedo of the head; w = wrap in [0, 1]
   vec4 strand;           // x = width at the root (scene units), y = width at the tip / root, z = shadow k
                          // (T = exp(-k alpha)), w = shadow bias in slices (lookups move this far toward the light)
-  uvec4 options;         // x = vertices per strand Q, y = 1 when opacity shadows are on, zw = 0
+  uvec4 options;         // x = vertices per strand Q, y = 1 when opacity shadows are on,
+                         // z = RENDER_SCATTERING_*, w = 0
   vec4 lightPosition;    // xyz world position of a spot; w = 1 for a spot, 0 for a directional light
   vec4 lightSpot;        // spot: x = cos(cone half-angle), y = cos(inner angle, full radiance inside),
                          // z = range of the inverse-square falloff (0: none), w = 0 (shaders/light.glsl)

@@ -101,6 +101,8 @@ TEST(CliRenderOpacity, RefusesBadShadowOptions) {
       {{"--shadow-k", "-2"}, "k must be"},
       {{"--shadow-bias", "40"}, "biasSlices"},
       {{"--opacity-raster", "splat"}, "opacity raster must be auto, compute or graphics"},
+      {{"--scattering", "triple"}, "scattering must be single or dual"},
+      {{"--scattering", "dual", "--lut-mode", "float"}, "--scattering dual needs the physical fibre model"},
       {{"--no-shadows", "--dump-opacity", (dir / "x").string()}, "--dump-opacity"},
   };
   for (const auto& [extra, needle] : cases) {

@@ -200,3 +200,35 @@ TEST_F(VulkanTest, TwoShadowedFramesInOneCommandBufferAreSyncClean) {
     EXPECT_EQ(renderer.readDisplay().size(), 64u * 48u * 4u);
   }
 }
+
+// Dual scattering adds the light the hair in front scattered forward (hair_shading.glsl): never less light
+// than single scattering, more where the hair is in other hair's shadow (the side away from the light),
+// and nothing without shadows (no optical depth, nothing in front).
+TEST_F(VulkanTest, DualScatteringAddsLightInTheHairsShadowOnly) {
+  const hp::HairAsset asset = hairOnly();
+  const glm::vec3 light(1.0f, 0.3f, 0.0f);
+  auto frame = [&](bool shadows, hp::render::Scattering s) {
+    hp::RenderRequest r = request(light, 180.0f, shadows);
+    r.look.scattering = s;
+    return hp::renderStill(*ctx, asset, r);
+  };
+  const hp::RenderResult single = frame(true, hp::render::Scattering::Single);
+  const hp::RenderResult dual = frame(true, hp::render::Scattering::Dual);
+  const hp::RenderResult off = frame(false, hp::render::Scattering::Single);
+  const bool right = lightOnTheRight(request(light, 180.0f, true));
+  auto away = [&](std::uint32_t x, std::uint32_t) { return (x >= kOpacityWidth / 2) != right; };
+  auto lit = [&](std::uint32_t x, std::uint32_t) { return (x >= kOpacityWidth / 2) == right; };
+  const Region awaySingle = sumRegion(single, off, away), awayDual = sumRegion(dual, off, away);
+  const Region litSingle = sumRegion(single, off, lit), litDual = sumRegion(dual, off, lit);
+  ASSERT_GT(awaySingle.pixels, 500u);
+  std::printf("dual / single: away from the light %.4f, lit side %.4f\n", awayDual.on / awaySingle.on,
+              litDual.on / litSingle.on);
+  EXPECT_GT(awayDual.on, 1.01 * awaySingle.on);
+  EXPECT_GE(litDual.on, litSingle.on * (1.0 - 1e-6));
+  EXPECT_GT(awayDual.on / awaySingle.on, litDual.on / litSingle.on);
+  // Without shadows: no optical depth, nothing scattered forward (the same frame up to the compute raster's
+  // run-to-run order of segments within a depth bin).
+  const hp::RenderResult offDual = frame(false, hp::render::Scattering::Dual);
+  const Region all = sumRegion(offDual, off, [](std::uint32_t, std::uint32_t) { return true; });
+  EXPECT_NEAR(all.ratio(), 1.0, 1e-3);
+}
