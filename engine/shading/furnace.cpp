@@ -18,20 +18,7 @@ glm::dvec3 physicalFurnace(double sinThetaR, const HairMaterial& m, int panels) 
     for (int p = 0; p < 3; ++p) mInt[p] += w * c * shading::physicalM(p, s, sinThetaR, m);
   });
   // N is even in phi: int over [-pi, pi] = 2 int over [0, pi].
-  std::vector<double> phis, weights;
-  shading::gaussLegendre(0.0, kPi, panels, [&](double phi, double w) {
-    phis.push_back(phi);
-    weights.push_back(2.0 * w);
-  });
-  std::vector<shading::PhysicalN> n(phis.size());
-  shading::physicalNRow(sinThetaR, m, phis.data(), int(phis.size()), n.data());
-  shading::PhysicalN nInt;
-  for (std::size_t k = 0; k < n.size(); ++k) {
-    nInt.r += weights[k] * n[k].r;
-    nInt.tt += weights[k] * n[k].tt;
-    nInt.trt += weights[k] * n[k].trt;
-    nInt.res += weights[k] * n[k].res;
-  }
+  const shading::PhysicalN nInt = shading::physicalNIntegral(sinThetaR, m, 0.0, kPi, panels);
   return mInt[0] * nInt.r + mInt[1] * nInt.tt + mInt[2] * (nInt.trt + nInt.res);
 }
 

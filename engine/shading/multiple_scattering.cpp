@@ -22,24 +22,6 @@ glm::dvec3 longitudinalIntegrals(double sinTheta, const HairMaterial& m) {
   return sum;
 }
 
-// int N_p d phi over the far half, |phi| in [pi/2, pi] (N is even in phi), per lobe.
-shading::PhysicalN forwardAzimuthal(double sinTheta, const HairMaterial& m) {
-  std::vector<double> phis, weights;
-  shading::gaussLegendre(0.5 * shading::kPi, shading::kPi, kPanels, [&](double phi, double w) {
-    phis.push_back(phi);
-    weights.push_back(2.0 * w);
-  });
-  std::vector<shading::PhysicalN> n(phis.size());
-  shading::physicalNRow(sinTheta, m, phis.data(), int(phis.size()), n.data());
-  shading::PhysicalN sum;
-  for (std::size_t k = 0; k < n.size(); ++k) {
-    sum.r += weights[k] * n[k].r;
-    sum.tt += weights[k] * n[k].tt;
-    sum.trt += weights[k] * n[k].trt;
-    sum.res += weights[k] * n[k].res;
-  }
-  return sum;
-}
 }  // namespace
 
 MultipleScatteringTables multipleScatteringTables(const HairMaterial& m, int entries) {
@@ -49,7 +31,7 @@ MultipleScatteringTables multipleScatteringTables(const HairMaterial& m, int ent
   for (int k = 0; k < entries; ++k) {
     const double s = std::clamp(-1.0 + 2.0 * k / (entries - 1), -kEdgeSine, kEdgeSine);
     const glm::dvec3 mInt = longitudinalIntegrals(s, m);
-    const shading::PhysicalN far = forwardAzimuthal(s, m);
+    const shading::PhysicalN far = shading::physicalNIntegral(s, m, 0.5 * shading::kPi, shading::kPi, kPanels);
     t.forwardAlbedo.push_back(mInt[0] * far.r + mInt[1] * far.tt + mInt[2] * (far.trt + far.res));
     const auto energy = shading::physicalLobeEnergy(s, m);  // int N_p d phi over the whole circle
     t.meanR.push_back(energy[0].x / (2.0 * shading::kPi));

@@ -124,6 +124,24 @@ PhysicalN physicalN(double phi, double sinThetaR, const HairMaterial& m) {
   return n;
 }
 
+PhysicalN physicalNIntegral(double sinThetaR, const HairMaterial& m, double phiLo, double phiHi, int panels) {
+  std::vector<double> phis, weights;
+  gaussLegendre(phiLo, phiHi, panels, [&](double phi, double w) {
+    phis.push_back(phi);
+    weights.push_back(2.0 * w);
+  });
+  std::vector<PhysicalN> n(phis.size());
+  physicalNRow(sinThetaR, m, phis.data(), int(phis.size()), n.data());
+  PhysicalN sum;
+  for (std::size_t k = 0; k < n.size(); ++k) {
+    sum.r += weights[k] * n[k].r;
+    sum.tt += weights[k] * n[k].tt;
+    sum.trt += weights[k] * n[k].trt;
+    sum.res += weights[k] * n[k].res;
+  }
+  return sum;
+}
+
 std::array<glm::dvec3, kPhysicalLobes> physicalLobeEnergy(double sinThetaR, const HairMaterial& m) {
   PhysicalFibre f = physicalFibre(sinThetaR, m);
   std::array<glm::dvec3, kPhysicalLobes> e{};

@@ -57,6 +57,9 @@ struct PhysicalN {
 PhysicalN physicalN(double phi, double sinThetaR, const HairMaterial& m);
 // The same for many phi at one theta_r (the attenuations at the quadrature nodes are shared): out[k] at phis[k].
 void physicalNRow(double sinThetaR, const HairMaterial& m, const double* phis, int count, PhysicalN* out);
+// int N_p d phi over |phi| in [phiLo, phiHi] (both signs: N is even in phi), per lobe, by composite
+// Gauss-Legendre with `panels` panels (one physicalNRow).
+PhysicalN physicalNIntegral(double sinThetaR, const HairMaterial& m, double phiLo, double phiHi, int panels);
 // (1/2) int A_p dh per lobe: the fraction of light each lobe carries (sums to 1 without absorption).
 std::array<glm::dvec3, kPhysicalLobes> physicalLobeEnergy(double sinThetaR, const HairMaterial& m);
 }  // namespace hp::shading
