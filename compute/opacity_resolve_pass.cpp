@@ -12,6 +12,7 @@ constexpr VkShaderStageFlags kCompute = VK_SHADER_STAGE_COMPUTE_BIT;
 const vk::Binding kBindings[] = {
     {gpu::OPACITY_RESOLVE_BINDING_BINS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kCompute},
     {gpu::OPACITY_RESOLVE_BINDING_MAPS, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, kCompute},
+    {gpu::OPACITY_RESOLVE_BINDING_FIRST, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kCompute},
 };
 
 VkDeviceSize checkedBinBytes(const vk::Context& ctx, std::uint32_t resolution) {
@@ -40,24 +41,30 @@ bool OpacityResolvePass::fits(const vk::Context& ctx, std::uint32_t resolution) 
 }
 
 OpacityResolvePass::OpacityResolvePass(const vk::Context& ctx, std::uint32_t resolution, VkFormat format,
-                                       VkImageView maps, vk::PipelineLibrary* library)
+                                       VkImageView maps, bool deep, vk::PipelineLibrary* library)
     : ctx_(&ctx),
       resolution_(resolution),
+      deep_(deep),
       bins_(ctx, checkedBinBytes(ctx, resolution), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
             vk::MemoryKind::DeviceLocal, "opacity bins"),
+      first_(ctx, VkDeviceSize(resolution) * resolution * sizeof(std::uint32_t),
+             VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT, vk::MemoryKind::DeviceLocal,
+             "opacity first hair"),
       set_(ctx, kBindings, "opacity resolve") {
   set_.writeStorageBuffer(gpu::OPACITY_RESOLVE_BINDING_BINS, bins_.handle());
   set_.writeStorageImage(gpu::OPACITY_RESOLVE_BINDING_MAPS, maps);
+  set_.writeStorageBuffer(gpu::OPACITY_RESOLVE_BINDING_FIRST, first_.handle());
   pipeline_ = vk::makeComputePipeline(ctx, library, resolveShader(format), gpu::OPACITY_RESOLVE_WORKGROUP_SIZE,
                                       {set_.layout()}, sizeof(gpu::OpacityResolvePush), "opacity resolve");
 }
 
 void OpacityResolvePass::recordClear(VkCommandBuffer cmd) const {
   ctx_->fn().vkCmdFillBuffer(cmd, bins_.handle(), 0, VK_WHOLE_SIZE, 0u);
+  ctx_->fn().vkCmdFillBuffer(cmd, first_.handle(), 0, VK_WHOLE_SIZE, 0xFFFFFFFFu);  // no hair yet
 }
 
 void OpacityResolvePass::recordResolve(VkCommandBuffer cmd) const {
-  const gpu::OpacityResolvePush push{resolution_};
+  const gpu::OpacityResolvePush push{resolution_, deep_ ? 1u : 0u};
   pipeline_->bind(cmd, set_.set());
   pipeline_->push(cmd, push);
   pipeline_->dispatch(cmd, resolution_ * resolution_);

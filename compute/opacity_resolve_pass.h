@@ -4,7 +4,8 @@
 // them into the opacity maps: per texel the prefix sum over its 16 slices, written as the 4 RGBA layers
 // the graphics pass would have blended (RGBA32F or RGBA16F; storage usage required).
 //
-// Recording, barriers by the caller (the frame recorder): recordClear (a transfer fill of the bins;
+// Recording, barriers by the caller (the frame recorder): recordClear (transfer fills of the bins and the
+// first-hair buffer;
 // before it the previous frame's resolve reads are done: ComputeRead -> TransferDst), the splats
 // (TransferDst -> ComputeWrite before them), then recordResolve (bins ComputeWrite -> ComputeRead, the
 // maps in ImageUse::ComputeStorageWrite). Throws hp::Error if the bins exceed maxStorageBufferRange.
@@ -24,19 +25,25 @@ class OpacityResolvePass {
   static bool fits(const vk::Context& ctx, std::uint32_t resolution);
 
   // maps: a 2D-array view of the OPACITY_TARGETS layers in `format` (the pass writes it as a storage image).
-  OpacityResolvePass(const vk::Context& ctx, std::uint32_t resolution, VkFormat format, VkImageView maps,
+  // deep: deep opacity maps (the splats run OPACITY_SPLAT_MODE_FIRST, then _DEEP; the last layer gets the
+  // first-hair buffer).
+  OpacityResolvePass(const vk::Context& ctx, std::uint32_t resolution, VkFormat format, VkImageView maps, bool deep,
                      vk::PipelineLibrary* library = nullptr);
   OpacityResolvePass(const OpacityResolvePass&) = delete;
   OpacityResolvePass& operator=(const OpacityResolvePass&) = delete;
 
   const vk::Buffer& bins() const { return bins_; }
+  const vk::Buffer& first() const { return first_; }  // uint[resolution^2]: each texel's first hair
+  bool deep() const { return deep_; }
   void recordClear(VkCommandBuffer cmd) const;
   void recordResolve(VkCommandBuffer cmd) const;
 
  private:
   const vk::Context* ctx_;
   std::uint32_t resolution_;
+  bool deep_;
   vk::Buffer bins_;
+  vk::Buffer first_;
   vk::DescriptorSet set_;
   std::shared_ptr<const vk::ComputePipeline> pipeline_;
 };

@@ -13,11 +13,13 @@ const vk::Binding kBindings[] = {
     {gpu::OPACITY_SPLAT_BINDING_POSITIONS, kStorage, kCompute},
     {gpu::OPACITY_SPLAT_BINDING_LIGHT, kStorage, kCompute},
     {gpu::OPACITY_SPLAT_BINDING_BINS, kStorage, kCompute},
+    {gpu::OPACITY_SPLAT_BINDING_FIRST, kStorage, kCompute},
 };
 }  // namespace
 
 OpacitySplatPass::OpacitySplatPass(const vk::Context& ctx, const StrandBuffers& strands, const vk::Buffer& lightSpace,
-                                   const vk::Buffer& bins, std::uint32_t resolution, vk::PipelineLibrary* library)
+                                   const vk::Buffer& bins, const vk::Buffer& first, std::uint32_t resolution,
+                                   vk::PipelineLibrary* library)
     : ctx_(&ctx), resolution_(resolution), verticesPerStrand_(strands.layout().verticesPerStrand) {
   for (const StrandChunk& c : strands.chunks()) {
     Chunk chunk{vk::DescriptorSet(ctx, kBindings, "opacity splat [chunk " + std::to_string(chunks_.size()) + "]"),
@@ -25,18 +27,20 @@ OpacitySplatPass::OpacitySplatPass(const vk::Context& ctx, const StrandBuffers& 
     chunk.set.writeStorageBuffer(gpu::OPACITY_SPLAT_BINDING_POSITIONS, c.positions.handle());
     chunk.set.writeStorageBuffer(gpu::OPACITY_SPLAT_BINDING_LIGHT, lightSpace.handle());
     chunk.set.writeStorageBuffer(gpu::OPACITY_SPLAT_BINDING_BINS, bins.handle());
+    chunk.set.writeStorageBuffer(gpu::OPACITY_SPLAT_BINDING_FIRST, first.handle());
     chunks_.push_back(std::move(chunk));
   }
   pipeline_ = vk::makeComputePipeline(ctx, library, "opacity_splat.comp", gpu::OPACITY_SPLAT_WORKGROUP_SIZE,
                                       {chunks_.front().set.layout()}, sizeof(gpu::OpacitySplatPush), "opacity splat");
 }
 
-void OpacitySplatPass::record(VkCommandBuffer cmd, const SplatFootprint& f) const {
+void OpacitySplatPass::record(VkCommandBuffer cmd, const SplatFootprint& f, std::uint32_t mode) const {
   gpu::OpacitySplatPush push{};
   push.footprint = glm::vec4(f.strandWidth, 1.0f / float(resolution_), f.footprint ? 1.0f : 0.0f);
   push.opacity = f.footprint ? 1.0f : f.opacity;
   push.verticesPerStrand = verticesPerStrand_;
   push.resolution = resolution_;
+  push.mode = mode;
   for (std::size_t i = 0; i < chunks_.size(); ++i) {
     if (i > 0) vk::memoryBarrier(*ctx_, cmd, vk::BufferUse::ComputeWrite, vk::BufferUse::ComputeWrite);
     push.segmentCount = chunks_[i].segmentCount;

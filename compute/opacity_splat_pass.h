@@ -31,13 +31,16 @@ struct SplatFootprint {
 
 class OpacitySplatPass {
  public:
-  // lightSpace: gpu::LightSpace; bins: uint[resolution^2 x 16], storage usage; both outlive the pass.
+  // lightSpace: gpu::LightSpace; bins: uint[resolution^2 x 16]; first: uint[resolution^2] (deep maps); all
+  // with storage usage, all outliving the pass.
   OpacitySplatPass(const vk::Context& ctx, const StrandBuffers& strands, const vk::Buffer& lightSpace,
-                   const vk::Buffer& bins, std::uint32_t resolution, vk::PipelineLibrary* library = nullptr);
+                   const vk::Buffer& bins, const vk::Buffer& first, std::uint32_t resolution,
+                   vk::PipelineLibrary* library = nullptr);
   OpacitySplatPass(const OpacitySplatPass&) = delete;
   OpacitySplatPass& operator=(const OpacitySplatPass&) = delete;
 
-  void record(VkCommandBuffer cmd, const SplatFootprint& footprint) const;
+  // mode: gpu::OPACITY_SPLAT_MODE_* (deep maps: _FIRST for every instance, a barrier, then _DEEP).
+  void record(VkCommandBuffer cmd, const SplatFootprint& footprint, std::uint32_t mode) const;
 
  private:
   struct Chunk {

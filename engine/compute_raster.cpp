@@ -80,11 +80,11 @@ void ComputeRaster::record(VkCommandBuffer cmd, const View& view, const LightSpe
   vk::imageBarrier(ctx_, cmd, head, VK_IMAGE_ASPECT_DEPTH_BIT, vk::ImageUse::FragmentSampled, vk::ImageUse::ComputeSampled);
   vk::bufferBarrier(ctx_, cmd, lightSpace, vk::BufferUse::VertexRead, vk::BufferUse::ComputeRead);
   vk::imageBarrier(ctx_, cmd, maps, VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::FragmentSampled,
-                   vk::ImageUse::ComputeSampled, gpu::OPACITY_TARGETS);
+                   vk::ImageUse::ComputeSampled, gpu::OPACITY_LAYERS);
   pass_.record(cmd, profiler);
   vk::bufferBarrier(ctx_, cmd, lightSpace, vk::BufferUse::ComputeRead, vk::BufferUse::VertexRead);
   vk::imageBarrier(ctx_, cmd, maps, VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::ComputeSampled,
-                   vk::ImageUse::FragmentSampled, gpu::OPACITY_TARGETS);
+                   vk::ImageUse::FragmentSampled, gpu::OPACITY_LAYERS);
   vk::imageBarrier(ctx_, cmd, head, VK_IMAGE_ASPECT_DEPTH_BIT, vk::ImageUse::ComputeSampled, vk::ImageUse::FragmentSampled);
 }
 

@@ -33,12 +33,12 @@ void recordGraphicsOpacity(const vk::Context& ctx, VkCommandBuffer cmd, const re
                            std::span<const ShadowCaster> casters) {
   const VkImage image = maps.image().handle();
   vk::imageBarrier(ctx, cmd, image, VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::FragmentSampled,
-                   vk::ImageUse::ColorAttachment, gpu::OPACITY_TARGETS);
+                   vk::ImageUse::ColorAttachment, gpu::OPACITY_LAYERS);
   maps.beginRendering(cmd);
   for (const ShadowCaster& c : casters) c.opacity->recordDraws(cmd, c.headToWorld, c.strandWidth);
   maps.endRendering(cmd);
   vk::imageBarrier(ctx, cmd, image, VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::ColorAttachment,
-                   vk::ImageUse::FragmentSampled, gpu::OPACITY_TARGETS);
+                   vk::ImageUse::FragmentSampled, gpu::OPACITY_LAYERS);
 }
 
 // Clear the bins, every caster's splats (atomics: ordered like any two writers), the resolve into the
@@ -46,32 +46,40 @@ void recordGraphicsOpacity(const vk::Context& ctx, VkCommandBuffer cmd, const re
 void recordComputeOpacity(const vk::Context& ctx, VkCommandBuffer cmd, const render::ShadowMaps& maps,
                           std::span<const ShadowCaster> casters) {
   const compute::OpacityResolvePass& resolve = *maps.resolvePass();
-  const VkBuffer bins = resolve.bins().handle();
+  const VkBuffer bins = resolve.bins().handle(), first = resolve.first().handle();
   const VkImage image = maps.image().handle();
-  vk::bufferBarrier(ctx, cmd, bins, vk::BufferUse::ComputeRead, vk::BufferUse::TransferDst);  // last frame's resolve
+  for (VkBuffer b : {bins, first})  // last frame's resolve and deep splats read them
+    vk::bufferBarrier(ctx, cmd, b, vk::BufferUse::ComputeRead, vk::BufferUse::TransferDst);
   resolve.recordClear(cmd);
-  vk::bufferBarrier(ctx, cmd, bins, vk::BufferUse::TransferDst, vk::BufferUse::ComputeWrite);
-  for (std::size_t i = 0; i < casters.size(); ++i) {
-    if (i > 0) vk::bufferBarrier(ctx, cmd, bins, vk::BufferUse::ComputeWrite, vk::BufferUse::ComputeWrite);
-    casters[i].opacity->recordSplats(cmd, casters[i].strandWidth);
+  for (VkBuffer b : {bins, first}) vk::bufferBarrier(ctx, cmd, b, vk::BufferUse::TransferDst, vk::BufferUse::ComputeWrite);
+  auto splatAll = [&](std::uint32_t mode, VkBuffer target) {
+    for (std::size_t i = 0; i < casters.size(); ++i) {
+      if (i > 0) vk::bufferBarrier(ctx, cmd, target, vk::BufferUse::ComputeWrite, vk::BufferUse::ComputeWrite);
+      casters[i].opacity->recordSplats(cmd, casters[i].strandWidth, mode);
+    }
+  };
+  if (resolve.deep()) {  // every instance's first hair per texel before any deep slice is measured from it
+    splatAll(gpu::OPACITY_SPLAT_MODE_FIRST, first);
+    vk::bufferBarrier(ctx, cmd, first, vk::BufferUse::ComputeWrite, vk::BufferUse::ComputeRead);
   }
+  splatAll(resolve.deep() ? gpu::OPACITY_SPLAT_MODE_DEEP : gpu::OPACITY_SPLAT_MODE_PLAIN, bins);
   vk::bufferBarrier(ctx, cmd, bins, vk::BufferUse::ComputeWrite, vk::BufferUse::ComputeRead);
   vk::imageBarrier(ctx, cmd, image, VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::FragmentSampledDiscard,
-                   vk::ImageUse::ComputeStorageWrite, gpu::OPACITY_TARGETS);
+                   vk::ImageUse::ComputeStorageWrite, gpu::OPACITY_LAYERS);
   resolve.recordResolve(cmd);
   const bool heads = std::any_of(casters.begin(), casters.end(), [](const ShadowCaster& c) { return c.opacity->drawsHead(); });
   if (!heads) {
     vk::imageBarrier(ctx, cmd, image, VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::ComputeStorageWrite,
-                     vk::ImageUse::FragmentSampled, gpu::OPACITY_TARGETS);
+                     vk::ImageUse::FragmentSampled, gpu::OPACITY_LAYERS);
     return;
   }
   vk::imageBarrier(ctx, cmd, image, VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::ComputeStorageWrite,
-                   vk::ImageUse::ColorAttachment, gpu::OPACITY_TARGETS);
+                   vk::ImageUse::ColorAttachment, gpu::OPACITY_LAYERS);
   maps.beginRendering(cmd, /*keep=*/true);
   for (const ShadowCaster& c : casters) c.opacity->recordHeadDraw(cmd, c.headToWorld);
   maps.endRendering(cmd);
   vk::imageBarrier(ctx, cmd, image, VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::ColorAttachment,
-                   vk::ImageUse::FragmentSampled, gpu::OPACITY_TARGETS);
+                   vk::ImageUse::FragmentSampled, gpu::OPACITY_LAYERS);
 }
 }  // namespace
 

@@ -104,10 +104,11 @@ void Renderer::retire(std::shared_ptr<void> resource) {
 }
 
 void Renderer::setOpacityTuning(const render::OpacitySettings& opacity) {
-  const render::OpacitySettings& current = shadows_->settings();
+  const render::OpacitySettings& current = settings_.opacity;  // as asked for (the maps' may differ in `deep`)
   if (opacity.resolution != current.resolution || opacity.format != current.format ||
-      opacity.headShadowResolution != current.headShadowResolution || opacity.raster != current.raster)
-    throw Error("setOpacityTuning: the opacity maps' resolution, format and raster are fixed for a Renderer");
+      opacity.headShadowResolution != current.headShadowResolution || opacity.raster != current.raster ||
+      opacity.deep != current.deep)
+    throw Error("setOpacityTuning: the opacity maps' resolution, format, raster and depth mode are fixed for a Renderer");
   opacity.validate();
   shadows_->setTuning(opacity);
   settings_.opacity = opacity;

@@ -16,6 +16,7 @@ layout(location = 1) in float inScalp;
 layout(location = 2) in vec3 inLightUvw;
 layout(location = 3) in vec4 inSliceWeights[4];
 layout(location = 7) in vec3 inWorld;
+layout(location = 8) in float inSlice;
 layout(location = 0) out vec4 outColor;
 
 void main() {
@@ -25,8 +26,10 @@ void main() {
   float diffuse = light.scale * max((wrap + dot(N, light.L)) / (1.0 + wrap), 0.0);
   // Under the hair the scalp takes the hair's albedo, darkened as the hair's own shadow would.
   vec3 albedo = mix(frame.skinColor.rgb, 0.5 * frame.hairColor.rgb, inScalp);
-  float alpha = opacityAlphaSoft(opacityMaps, inLightUvw, inSliceWeights[0], inSliceWeights[1], inSliceWeights[2],
-                             inSliceWeights[3]);
+  float alpha = frame.options.w != 0u
+                    ? opacityAlphaDeepSoft(opacityMaps, inLightUvw, inSlice, frame.strand.w)
+                    : opacityAlphaSoft(opacityMaps, inLightUvw, inSliceWeights[0], inSliceWeights[1], inSliceWeights[2],
+                                       inSliceWeights[3]);
   float transmittance = exp(-frame.strand.z * alpha) *
                         headVisibility(headShadowMap, frame.headShadowViewProj, frame.headShadow, inWorld, light.L);
   outColor = vec4(albedo * (transmittance * diffuse * frame.lightRadiance.rgb / 3.14159265 + frame.hairColor.w), 1.0);

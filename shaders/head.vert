@@ -15,6 +15,7 @@ layout(location = 1) out float outScalp;  // 1 where hair grows
 layout(location = 2) out vec3 outLightUvw;  // opacity-map lookup (opacity_lookup.glsl)
 layout(location = 3) out vec4 outSliceWeights[4];
 layout(location = 7) out vec3 outWorld;  // for a spot's per-fragment L
+layout(location = 8) out float outSlice;  // OpacityVertex::s (deep opacity maps)
 
 void main() {
   uint i = indices[gl_VertexIndex];
@@ -23,6 +24,7 @@ void main() {
   outScalp = normals[i].w;
   OpacityVertex o = opacityVertex(light, world.xyz, frame.strand.w, frame.options.y != 0u);
   outLightUvw = o.uvw;
+  outSlice = o.s;
   outWorld = world.xyz;
   outSliceWeights = vec4[4](o.w0, o.w1, o.w2, o.w3);
   gl_Position = frame.proj * frame.view * world;

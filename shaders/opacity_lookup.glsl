@@ -12,6 +12,7 @@
 struct OpacityVertex {
   vec3 uvw;  // uv = uvw.xy / uvw.z (shared/opacity.h: clip.xy / clip.w, y flipped)
   vec4 w0, w1, w2, w3;  // slices 1-4, 5-8, 9-12, 13-16
+  float s;              // the point's own slice coordinate, unbiased (deep maps: the lookup starts there); -1: off
 };
 
 // `enabled` false gives zero weights (T = 1) with the same varyings.
@@ -21,6 +22,7 @@ OpacityVertex opacityVertex(LightSpace light, vec3 world, float bias, bool enabl
   // uv = (clip.xy / w) * (0.5, -0.5) + 0.5: the pass's viewport flips y (clip +Y is up).
   o.uvw = vec3(clip.x * 0.5 + 0.5 * clip.w, 0.5 * clip.w - clip.y * 0.5, clip.w);
   // Behind z_far the last slice holds all the hair; in front of z_near (s <= 0) there is none.
+  o.s = enabled ? clip.z * float(OPACITY_SLICES) : -1.0;
   float s = clamp(clip.z * float(OPACITY_SLICES) - bias, 0.0, float(OPACITY_SLICES));
   const vec4 first = vec4(1.0, 2.0, 3.0, 4.0);
   float on = enabled ? 1.0 : 0.0;
@@ -49,6 +51,34 @@ float opacityAlphaSoft(sampler2DArray maps, vec3 uvw, vec4 w0, vec4 w1, vec4 w2,
   for (int k = 0; k < 4; ++k) {
     vec2 o = vec2((k & 1) == 0 ? -d.x : d.x, k < 2 ? -d.y : d.y);
     sum += opacityAlpha(maps, vec3(uvw.xy + o * uvw.z, uvw.z), w0, w1, w2, w3);
+  }
+  return 0.25 * sum;
+}
+
+// Deep opacity maps (OpacitySettings::deep, shared/opacity.h): the slices start at the first hair of the
+// texel the point falls in (nearest texel of the last layer), so the weights are made here from the
+// point's slice coordinate s (OpacityVertex::s) rather than per vertex. bias: in deep slices.
+float opacityAlphaDeep(sampler2DArray maps, vec3 uvw, float s, float bias) {
+  if (!(uvw.z > 0.0) || s < 0.0) return 0.0;
+  vec2 uv = uvw.xy / uvw.z;
+  if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) return 0.0;
+  ivec2 size = textureSize(maps, 0).xy;
+  ivec2 texel = clamp(ivec2(uv * vec2(size)), ivec2(0), size - 1);
+  float s0 = texelFetch(maps, ivec3(texel, int(OPACITY_TARGETS)), 0).x;
+  float d = clamp((s - s0) * OPACITY_DEEP_FACTOR - bias, 0.0, float(OPACITY_SLICES));
+  const vec4 first = vec4(1.0, 2.0, 3.0, 4.0);
+  return opacityAlpha(maps, uvw, max(vec4(0.0), 1.0 - abs(d - first)), max(vec4(0.0), 1.0 - abs(d - (first + 4.0))),
+                      max(vec4(0.0), 1.0 - abs(d - (first + 8.0))), max(vec4(0.0), 1.0 - abs(d - (first + 12.0))));
+}
+
+// opacityAlphaSoft's 4 taps for deep maps (opaque receivers: the head).
+float opacityAlphaDeepSoft(sampler2DArray maps, vec3 uvw, float s, float bias) {
+  if (!(uvw.z > 0.0)) return 0.0;
+  vec2 d = 1.5 / vec2(textureSize(maps, 0).xy);
+  float sum = 0.0;
+  for (int k = 0; k < 4; ++k) {
+    vec2 o = vec2((k & 1) == 0 ? -d.x : d.x, k < 2 ? -d.y : d.y);
+    sum += opacityAlphaDeep(maps, vec3(uvw.xy + o * uvw.z, uvw.z), s, bias);
   }
   return 0.25 * sum;
 }

@@ -2,13 +2,15 @@
 // format (opacity_resolve_rgba32f.comp / _rgba16f.comp define OPACITY_MAPS_FORMAT first, since a storage
 // image's format is part of its declaration). One invocation per texel: the prefix sum of its 16 bins,
 // from fixed point, is alpha(z_i) for i = 1..16, written to the 4 RGBA layers as the graphics pass
-// blends them. A saturated bin makes its slice and every one behind it OPACITY_SATURATED_ALPHA.
+// blends them. A saturated bin makes its slice and every one behind it OPACITY_SATURATED_ALPHA. The last
+// layer gets each texel's first hair (deep maps) or OPACITY_NO_HAIR.
 #include "shared/opacity.h"
 #include "common.glsl"
 
 layout(local_size_x = OPACITY_RESOLVE_WORKGROUP_SIZE) in;
 layout(std430, binding = OPACITY_RESOLVE_BINDING_BINS) readonly buffer Bins { uint bins[]; };
 layout(binding = OPACITY_RESOLVE_BINDING_MAPS, OPACITY_MAPS_FORMAT) uniform writeonly image2DArray maps;
+layout(std430, binding = OPACITY_RESOLVE_BINDING_FIRST) readonly buffer First { uint first[]; };
 layout(push_constant) uniform Push { OpacityResolvePush push; };
 
 void main() {
@@ -28,4 +30,7 @@ void main() {
     }
     imageStore(maps, ivec3(xy, int(layer)), slices);
   }
+  // Deep maps: the first hair's s (the buffer starts at the largest uint: none there).
+  float s0 = push.deep != 0u && first[texel] != 0xFFFFFFFFu ? floatFromOrdered(first[texel]) : OPACITY_NO_HAIR;
+  imageStore(maps, ivec3(xy, int(OPACITY_TARGETS)), vec4(s0, 0.0, 0.0, 0.0));
 }

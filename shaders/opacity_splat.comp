@@ -6,7 +6,8 @@
 // interpolates them), and adds the opacity in fixed point to the texel's bin of the first slice at or
 // behind s: one atomic per fragment where the graphics pass blends 16 slices; opacity_resolve.glsl makes
 // the sums cumulative. A spot's segments are clipped at its plane (w > 0) like the graphics pass's;
-// texels outside the map are skipped; a segment with a non-finite end adds nothing.
+// texels outside the map are skipped; a segment with a non-finite end adds nothing. Deep opacity maps run it
+// twice: OPACITY_SPLAT_MODE_FIRST, then _DEEP (shared/opacity.h).
 #include "shared/opacity.h"
 #include "common.glsl"
 #include "opacity_footprint.glsl"
@@ -15,6 +16,7 @@ layout(local_size_x = OPACITY_SPLAT_WORKGROUP_SIZE) in;
 layout(std430, binding = OPACITY_SPLAT_BINDING_POSITIONS) readonly buffer Positions { vec4 positions[]; };
 layout(std430, binding = OPACITY_SPLAT_BINDING_LIGHT) readonly buffer Light { LightSpace light; };
 layout(std430, binding = OPACITY_SPLAT_BINDING_BINS) buffer Bins { uint bins[]; };
+layout(std430, binding = OPACITY_SPLAT_BINDING_FIRST) buffer First { uint first[]; };
 layout(push_constant) uniform Push { OpacitySplatPush push; };
 
 const float MIN_W = 1.0e-6;
@@ -36,12 +38,19 @@ End endOf(vec4 clip, float opacity) {
 }
 
 // Adds a fragment like opacity.frag: to every slice i >= s - epsilon, i.e. to the bin of the first one.
+// Deep maps: step 1 only keeps the texel's nearest s; step 2 measures s from it, OPACITY_DEEP_FACTOR finer.
 void addFragment(ivec2 texel, float s, float opacity) {
+  uint at = uint(texel.y) * push.resolution + uint(texel.x);
+  if (push.mode == OPACITY_SPLAT_MODE_FIRST) {
+    if (s >= 0.0 && s <= float(OPACITY_SLICES)) atomicMin(first[at], orderedFromFloat(s));
+    return;
+  }
+  if (push.mode == OPACITY_SPLAT_MODE_DEEP) s = (s - floatFromOrdered(first[at])) * OPACITY_DEEP_FACTOR;
   float behind = s - OPACITY_SLICE_EPSILON;
   if (!(behind <= float(OPACITY_SLICES)) || !(opacity > 0.0)) return;  // past the last slice, or nothing
   uint slice = uint(max(ceil(behind), 1.0)) - 1u;
   uint value = uint(min(opacity * OPACITY_FIXED_ONE + 0.5, float(OPACITY_BIN_SATURATED)));
-  uint index = (uint(texel.y) * push.resolution + uint(texel.x)) * OPACITY_SLICES + slice;
+  uint index = at * OPACITY_SLICES + slice;
   if (value == 0u) return;
   // A bin already saturated takes the add back (rare), so it can never wrap around.
   if ((atomicAdd(bins[index], value) & OPACITY_BIN_SATURATED) != 0u) atomicAdd(bins[index], -value);

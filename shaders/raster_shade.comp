@@ -37,7 +37,8 @@ void main() {
   uint i = global - params.firstVertex;
   vec4 pos = positions[i];
   OpacityVertex o = opacityVertex(light, pos.xyz, frame.strand.w, frame.options.y != 0u);
-  float alpha = opacityAlpha(opacityMaps, o.uvw, o.w0, o.w1, o.w2, o.w3);
+  float alpha = frame.options.w != 0u ? opacityAlphaDeep(opacityMaps, o.uvw, o.s, frame.strand.w)
+                                      : opacityAlpha(opacityMaps, o.uvw, o.w0, o.w1, o.w2, o.w3);
   vec3 radiance = hairRadiance(pos.xyz, tangents[i].xyz, attributes[i / params.verticesPerStrand].colorScale, alpha);
   colors[global] = uvec2(packHalf2x16(radiance.rg), packHalf2x16(vec2(radiance.b, 0.0)));
 }

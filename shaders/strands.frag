@@ -25,6 +25,7 @@ layout(location = 3) in float inColorScale;
 layout(location = 4) in vec3 inLightUvw;
 layout(location = 5) in vec4 inSliceWeights[4];
 layout(location = 9) flat in uint inStrand;
+layout(location = 10) in float inSlice;
 layout(push_constant) uniform Push { StrandDrawPush push; };
 layout(location = 0) out vec4 outColor;
 #include "hair_shading.glsl"
@@ -43,8 +44,10 @@ uint coverageMask(float coverage, uint samples) {
 }
 
 void main() {
-  float alpha = opacityAlpha(opacityMaps, inLightUvw, inSliceWeights[0], inSliceWeights[1], inSliceWeights[2],
-                             inSliceWeights[3]);
+  float alpha = frame.options.w != 0u
+                    ? opacityAlphaDeep(opacityMaps, inLightUvw, inSlice, frame.strand.w)
+                    : opacityAlpha(opacityMaps, inLightUvw, inSliceWeights[0], inSliceWeights[1], inSliceWeights[2],
+                                   inSliceWeights[3]);
   vec3 radiance = hairRadiance(inWorld, inTangent, inColorScale, alpha);
   if (push.samples > 1u) {
     uint mask = coverageMask(inCoverage, push.samples);

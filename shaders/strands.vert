@@ -23,6 +23,7 @@ layout(location = 3) out float outColorScale;
 layout(location = 4) out vec3 outLightUvw;
 layout(location = 5) out vec4 outSliceWeights[4];
 layout(location = 9) flat out uint outStrand;  // global strand index: keys the coverage dither
+layout(location = 10) out float outSlice;      // OpacityVertex::s (deep opacity maps)
 
 void main() {
   uint q = frame.options.x;
@@ -58,6 +59,7 @@ void main() {
   outStrand = push.firstStrand + strand;
   OpacityVertex o = opacityVertex(light, p, frame.strand.w, frame.options.y != 0u);
   outLightUvw = o.uvw;
+  outSlice = o.s;
   outSliceWeights = vec4[4](o.w0, o.w1, o.w2, o.w3);
   gl_Position = frame.proj * frame.view * vec4(p, 1.0);
 }

@@ -50,7 +50,7 @@ gpu::RenderFrame makeRenderFrame(const CameraMatrices& camera, VkExtent2D extent
   f.strand = glm::vec4(look.strandWidth, look.tipWidthFraction, opacity.k, opacity.biasSlices);
   f.options = glm::uvec4(verticesPerStrand, opacity.enabled ? 1u : 0u,
                          look.scattering == Scattering::Dual ? gpu::RENDER_SCATTERING_DUAL : gpu::RENDER_SCATTERING_SINGLE,
-                         0u);
+                         opacity.deep ? 1u : 0u);
   return f;
 }
 }  // namespace hp::render

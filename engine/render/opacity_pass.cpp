@@ -59,7 +59,7 @@ OpacityPass::OpacityPass(const vk::Context& ctx, const compute::StrandBuffers& s
   headDepthPipeline_ = vk::makeGraphicsPipeline(ctx, library, depth);
   if (const compute::OpacityResolvePass* resolve = maps.resolvePass())
     splat_ = std::make_unique<compute::OpacitySplatPass>(ctx, strands, maps.lightSpace(), resolve->bins(),
-                                                         maps.settings().resolution, library);
+                                                         resolve->first(), maps.settings().resolution, library);
 }
 
 HeadSphere OpacityPass::headSphere(const glm::mat4& headToWorld) const {
@@ -133,10 +133,10 @@ void OpacityPass::recordDraws(VkCommandBuffer cmd, const glm::mat4& headToWorld,
   recordHeadDraw(cmd, headToWorld);
 }
 
-void OpacityPass::recordSplats(VkCommandBuffer cmd, const glm::vec2& strandWidth) const {
+void OpacityPass::recordSplats(VkCommandBuffer cmd, const glm::vec2& strandWidth, std::uint32_t mode) const {
   if (!splat_) throw Error("opacity pass: recordSplats needs maps on the compute path");
   const OpacitySettings& settings = maps_.settings();
-  splat_->record(cmd, {settings.footprint, settings.strandOpacity, strandWidth});
+  splat_->record(cmd, {settings.footprint, settings.strandOpacity, strandWidth}, mode);
 }
 
 bool OpacityPass::drawsHead() const { return headIndexCount_ > 0 && maps_.settings().headOpacity > 0.0f; }

@@ -40,7 +40,7 @@ class OpacityPass {
   // the footprint opacity (OpacitySettings::footprint).
   void recordDraws(VkCommandBuffer cmd, const glm::mat4& headToWorld, const glm::vec2& strandWidth) const;
   // Compute path: the strands into the bins (ShadowMaps::resolvePass), then the head if drawsHead().
-  void recordSplats(VkCommandBuffer cmd, const glm::vec2& strandWidth) const;
+  void recordSplats(VkCommandBuffer cmd, const glm::vec2& strandWidth, std::uint32_t mode) const;
   bool drawsHead() const;  // the head goes into the slices (OpacitySettings::headOpacity > 0)
   void recordHeadDraw(VkCommandBuffer cmd, const glm::mat4& headToWorld) const;
   // The head's back faces into ShadowMaps' head depth map (between beginHeadRendering and endRendering).

@@ -37,6 +37,13 @@ struct OpacitySettings {
   // 128) and measured faster on lavapipe. RGBA16F is accepted for devices where bandwidth matters more.
   VkFormat format = VK_FORMAT_R32G32B32A32_SFLOAT;
   OpacityRaster raster = OpacityRaster::Auto;  // fixed for a Renderer, like resolution and format
+  // Deep opacity maps (Yuksel & Keyser 2008), on the compute path (the graphics path draws global slices:
+  // ShadowMaps::settings() says which are in effect): the slices start at each texel's first hair and
+  // are OPACITY_DEEP_FACTOR times finer, following the hair's surface instead of cutting the whole head
+  // into 16 (docs/SHADING.md "Deep opacity maps"); biasSlices then counts deep slices. Off by default until
+  // multiple scattering lands: measured closer to the reference's direct light, but the missing
+  // multiply-scattered light then shows as a darker frame (docs/SHADING.md).
+  bool deep = false;
   void validate() const;            // throws hp::Error naming the field
 };
 }  // namespace hp::render

@@ -1,6 +1,7 @@
 #include "engine/render/shadow_maps.h"
 
 #include "compute/bounds_pass.h"
+#include "engine/error.h"
 #include "engine/vk/attachments.h"
 #include "engine/vk/barriers.h"
 #include "engine/vk/context.h"
@@ -22,7 +23,7 @@ bool onCompute(const vk::Context& ctx, const OpacitySettings& s) {
 vk::Image makeImage(const vk::Context& ctx, const OpacitySettings& settings) {
   vk::ImageDesc desc;
   desc.width = desc.height = settings.resolution;
-  desc.layers = gpu::OPACITY_TARGETS;
+  desc.layers = gpu::OPACITY_LAYERS;
   desc.format = settings.format;
   desc.usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
                VK_IMAGE_USAGE_TRANSFER_DST_BIT;
@@ -62,18 +63,20 @@ ShadowMaps::ShadowMaps(const vk::Context& ctx, const OpacitySettings& settings)
       headImage_(makeHeadImage(ctx, settings_)),
       headSampler_(ctx, "head shadow sampler", VK_COMPARE_OP_LESS_OR_EQUAL) {
   if (onCompute(ctx, settings_))
-    resolve_ = std::make_unique<compute::OpacityResolvePass>(ctx, settings_.resolution, settings_.format, image_.view());
+    resolve_ = std::make_unique<compute::OpacityResolvePass>(ctx, settings_.resolution, settings_.format, image_.view(),
+                                                             settings_.deep);
+  settings_.deep = settings_.deep && resolve_ != nullptr;  // the graphics path draws global slices
   const gpu::LightSpace initial = compute::initialLightSpace();
   vk::submitAndWait(ctx, [&](VkCommandBuffer cmd) {
     ctx.fn().vkCmdUpdateBuffer(cmd, lightSpace_.handle(), 0, sizeof(initial), &initial);
     vk::bufferBarrier(ctx, cmd, lightSpace_.handle(), vk::BufferUse::TransferDst, vk::BufferUse::VertexRead);
     vk::imageBarrier(ctx, cmd, image_.handle(), VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::Undefined,
-                     vk::ImageUse::TransferDst, gpu::OPACITY_TARGETS);
+                     vk::ImageUse::TransferDst, gpu::OPACITY_LAYERS);
     const VkClearColorValue zero{{0.0f, 0.0f, 0.0f, 0.0f}};
-    const VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, gpu::OPACITY_TARGETS};
+    const VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, gpu::OPACITY_LAYERS};
     ctx.fn().vkCmdClearColorImage(cmd, image_.handle(), vk::imageLayout(vk::ImageUse::TransferDst), &zero, 1, &range);
     vk::imageBarrier(ctx, cmd, image_.handle(), VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::TransferDst,
-                     vk::ImageUse::FragmentSampled, gpu::OPACITY_TARGETS);
+                     vk::ImageUse::FragmentSampled, gpu::OPACITY_LAYERS);
     vk::imageBarrier(ctx, cmd, headImage_.handle(), VK_IMAGE_ASPECT_DEPTH_BIT, vk::ImageUse::Undefined,
                      vk::ImageUse::DepthAttachment);
     beginHeadRendering(cmd);

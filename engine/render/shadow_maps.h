@@ -32,7 +32,11 @@ class ShadowMaps {
   ShadowMaps& operator=(const ShadowMaps&) = delete;
 
   // New opacities, k, bias or on/off with the same resolution and format (read at record time).
-  void setTuning(const OpacitySettings& settings) { settings_ = settings; }
+  void setTuning(const OpacitySettings& settings) {
+    const bool deep = settings_.deep;
+    settings_ = settings;
+    settings_.deep = deep;
+  }
 
   // keep: load the layers (the compute resolve wrote them) instead of clearing them to 0.
   void beginRendering(VkCommandBuffer cmd, bool keep = false) const;
@@ -48,6 +52,7 @@ class ShadowMaps {
   ShadowInputs inputs() const {
     return {image_.view(), sampler_.handle(), lightSpace_.handle(), headImage_.view(), headSampler_.handle()};
   }
+  // The settings in effect: as given, but `deep` only where the compute path was taken.
   const OpacitySettings& settings() const { return settings_; }
   // The path taken: settings().raster, with Auto resolved for this device and resolution.
   OpacityRaster raster() const { return resolve_ ? OpacityRaster::Compute : OpacityRaster::Graphics; }

@@ -27,6 +27,7 @@ hp::render::OpacitySettings opacitySettings(const FrameOptions& o) {
   s.enabled = !o.noShadows;
   if (o.opacityResolution) s.resolution = *o.opacityResolution;
   if (o.opacityRaster) s.raster = hp::render::parseOpacityRaster(*o.opacityRaster);
+  s.deep = o.deepOpacity;
   if (o.strandOpacity) {
     s.footprint = false;  // a constant per crossing replaces the width / texel-size footprint
     s.strandOpacity = *o.strandOpacity;
@@ -171,6 +172,8 @@ void addFrameOptions(CLI::App& cmd, FrameOptions& o) {
   cmd.add_flag("--guides-only", o.guidesOnly, "Draw the smoothed guides only (no interpolation)");
   cmd.add_flag("--no-shadows", o.noShadows, "Turn the opacity shadow maps off");
   cmd.add_option("--opacity-resolution", o.opacityResolution, "Opacity map texels per side, 16-4096 (default 512)");
+  cmd.add_flag("--deep-opacity", o.deepOpacity,
+               "Deep opacity maps: slices start at each texel's first hair, 4x finer (compute opacity path)");
   cmd.add_option("--opacity-raster", o.opacityRaster,
                  "How strands reach the opacity maps: auto (default: compute where its bins fit the device), compute (splats) or graphics (lines)");
   cmd.add_option("--strand-opacity", o.strandOpacity, "Constant opacity a strand adds per opacity-map texel instead of its footprint (width / texel size, the default)");

@@ -114,6 +114,10 @@ OpacityCapture captureOpacity(const vk::Context& ctx, const vk::Image& maps, con
     for (std::uint32_t ch = 0; ch < 4; ++ch)
       for (std::size_t t = 0; t < perSlice; ++t) c.alpha[(layer * 4 + ch) * perSlice + t] = rgba[t * 4 + ch];
   }
+  const std::vector<float> first =
+      texelsAsFloat(vk::readbackImage(ctx, maps, vk::ImageUse::FragmentSampled, gpu::OPACITY_TARGETS), maps.desc().format);
+  c.firstHair.resize(perSlice);
+  for (std::size_t t = 0; t < perSlice; ++t) c.firstHair[t] = first[t * 4];
   c.light = vk::readback<gpu::LightSpace>(ctx, lightSpace, vk::BufferUse::VertexRead, 1).front();
   return c;
 }

@@ -18,7 +18,13 @@
 
 HP_BEGIN
 HP_CONST(uint, OPACITY_SLICES, 16)
-HP_CONST(uint, OPACITY_TARGETS, 4)            // RGBA layers: OPACITY_SLICES / 4
+HP_CONST(uint, OPACITY_TARGETS, 4)            // RGBA layers of slices: OPACITY_SLICES / 4
+// The image has one layer more: deep opacity maps (OpacitySettings::deep) keep each texel's first hair
+// there, as its global slice coordinate s0 in .x (OPACITY_NO_HAIR where none); the slices then start at s0
+// and are OPACITY_DEEP_FACTOR times finer: deep slice coordinate = (s - s0) x OPACITY_DEEP_FACTOR.
+HP_CONST(uint, OPACITY_LAYERS, 5)
+HP_CONST(float, OPACITY_DEEP_FACTOR, 4.0f)
+HP_CONST(float, OPACITY_NO_HAIR, 1.0e6f)
 // A fragment at slice coordinate s adds to slice i when s <= i + OPACITY_SLICE_EPSILON, so hair at
 // exactly z_far (s = 16 up to rounding) still lands in slice 16.
 HP_CONST(float, OPACITY_SLICE_EPSILON, 1.0e-3f)
@@ -46,8 +52,13 @@ HP_CONST(uint, OPACITY_RESOLVE_WORKGROUP_SIZE, 64)
 HP_CONST(uint, OPACITY_SPLAT_BINDING_POSITIONS, 0)  // vec4[chunk strands * Q] render strand positions
 HP_CONST(uint, OPACITY_SPLAT_BINDING_LIGHT, 1)      // LightSpace (read)
 HP_CONST(uint, OPACITY_SPLAT_BINDING_BINS, 2)       // uint bins (atomic adds)
+HP_CONST(uint, OPACITY_SPLAT_BINDING_FIRST, 3)      // uint[res * res]: each texel's first hair (atomicMin, ordered s)
+HP_CONST(uint, OPACITY_SPLAT_MODE_PLAIN, 0)         // bins of the global slices
+HP_CONST(uint, OPACITY_SPLAT_MODE_FIRST, 1)         // deep maps, step 1: only the first hair per texel
+HP_CONST(uint, OPACITY_SPLAT_MODE_DEEP, 2)          // deep maps, step 2: bins of the slices from the first hair
 HP_CONST(uint, OPACITY_RESOLVE_BINDING_BINS, 0)     // uint bins (read)
 HP_CONST(uint, OPACITY_RESOLVE_BINDING_MAPS, 1)     // the maps as a storage image2DArray (written)
+HP_CONST(uint, OPACITY_RESOLVE_BINDING_FIRST, 2)    // the first-hair buffer (read; deep maps)
 // Fixed point: a bin holds opacity x 2^16 (a fragment of 0.04 rounds by < 2e-4 of itself). A bin that
 // reaches OPACITY_BIN_SATURATED (alpha 32768: T = 0 for any k >= 0.003) takes no more adds and resolves
 // to OPACITY_SATURATED_ALPHA, so an absurd pile-up saturates instead of wrapping around.
@@ -96,10 +107,15 @@ struct OpacitySplatPush {
   uint verticesPerStrand;  // Q
   uint segmentCount;       // segments in this chunk: strands x (Q - 1)
   uint resolution;         // map texels per side
+  uint mode;               // OPACITY_SPLAT_MODE_*
+  uint pad0;
+  uint pad1;
+  uint pad2;
 };
 
 struct OpacityResolvePush {
   uint resolution;         // map texels per side
+  uint deep;               // 1: write the first-hair layer from the first-hair buffer
 };
 HP_END
 
@@ -138,6 +154,6 @@ static_assert(offsetof(hp::gpu::BoundsPush, vertexCount) == 48);
 static_assert(sizeof(hp::gpu::OpacityPush) == 96);
 static_assert(offsetof(hp::gpu::OpacityPush, footprint) == 80);
 static_assert(offsetof(hp::gpu::OpacityPush, opacity) == 64);
-static_assert(sizeof(hp::gpu::OpacitySplatPush) == 32);
+static_assert(sizeof(hp::gpu::OpacitySplatPush) == 48);
 #endif
 #endif

@@ -49,7 +49,7 @@ struct RenderFrame {
   vec4 strand;           // x = width at the root (scene units), y = width at the tip / root, z = shadow k
                          // (T = exp(-k alpha)), w = shadow bias in slices (lookups move this far toward the light)
   uvec4 options;         // x = vertices per strand Q, y = 1 when opacity shadows are on,
-                         // z = RENDER_SCATTERING_*, w = 0
+                         // z = RENDER_SCATTERING_*, w = 1 for deep opacity maps (OpacitySettings::deep)
   vec4 lightPosition;    // xyz world position of a spot; w = 1 for a spot, 0 for a directional light
   vec4 lightSpot;        // spot: x = cos(cone half-angle), y = cos(inner angle, full radiance inside),
                          // z = range of the inverse-square falloff (0: none), w = 0 (shaders/light.glsl)

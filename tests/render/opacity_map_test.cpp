@@ -83,6 +83,7 @@ struct ShadowRig {
 namespace {
 OpacitySettings smallSettings(std::uint32_t resolution, float strandOpacity) {
   OpacitySettings s;
+  s.deep = false;  // the global slices (deep maps: DeepOpacityMapsStartAtEachTexelsFirstHair)
   s.resolution = resolution;
   s.footprint = false;  // the constant-per-crossing mode: alpha is exactly crossings x strandOpacity
   s.strandOpacity = strandOpacity;
@@ -449,6 +450,7 @@ TEST_P(OpacityMapTest, OpacityOfASmallHeadSceneMatchesTheCpuReference) {
   settings.opacity.footprint = false;
   settings.opacity.strandOpacity = 0.1f;
   settings.opacity.raster = GetParam();
+  settings.opacity.deep = false;  // the CPU reference slices the whole depth
   hp::HairSystem hair(*ctx, asset, settings);
   hp::DrawView view;
   view.light.direction = glm::normalize(glm::vec3(0.4f, 0.7f, -0.6f));
@@ -515,6 +517,7 @@ double meanTransmittanceBehind(const OpacityCapture& c) {
 
 OpacitySettings footprintSettings(std::uint32_t resolution) {
   OpacitySettings s;
+  s.deep = false;
   s.resolution = resolution;
   return s;
 }
@@ -582,6 +585,7 @@ TEST_F(VulkanTest, ComputeAndGraphicsOpacityMapsAgreeOnTheDefaultHead) {
   };
   for (const Case& k : {Case{"sun", sun, 0.0f}, Case{"spot", spot, 0.0f}, Case{"sun, head in slices", sun, 5.0f}}) {
     OpacitySettings s;
+    s.deep = false;  // the graphics path has global slices only
     s.resolution = 256;
     s.headOpacity = k.headOpacity;
     s.raster = hp::render::OpacityRaster::Compute;
@@ -614,6 +618,7 @@ TEST_F(VulkanTest, ComputeOpacityBinsSaturateInsteadOfWrappingAround) {
   for (int i = 0; i < 700; ++i) set.addStraight({-0.5f, 0.013f, 0.0f}, {0.5f, 0.013f, 0.0f});
   set.addStraight({-0.5f, 0.4f, -1.0f}, {0.5f, 0.4f, -1.0f});  // a second depth: the framing spans [0, 1]
   OpacitySettings s;
+  s.deep = false;
   s.resolution = 64;
   s.footprint = false;
   s.strandOpacity = 100.0f;
@@ -664,4 +669,45 @@ TEST_F(VulkanTest, OpacityRasterAutoFallsBackToGraphicsWhereTheBinsExceedTheDevi
   }
   EXPECT_EQ(hp::render::parseOpacityRaster("auto"), hp::render::OpacityRaster::Auto);
   EXPECT_THROW(hp::render::parseOpacityRaster("splat"), hp::Error);
+}
+
+// Deep opacity maps (compute path): the slices start at each texel's first hair and are
+// OPACITY_DEEP_FACTOR (4) times finer. Four layers of 40 strands at light depths 0, 0.05, 0.1 and 1
+// (global slice coordinates 0, 0.8, 1.6, 16) are at deep coordinates 0, 3.2, 6.4 and 64 from the first:
+// slices 1-16 hold the first layer, 4-16 the second, 7-16 the third, and none the last; the last image
+// layer holds s0 = 0 on the strands' rows and OPACITY_NO_HAIR elsewhere. The graphics path keeps global
+// slices (settings().deep false).
+TEST_F(VulkanTest, DeepOpacityMapsStartAtEachTexelsFirstHair) {
+  StrandSet set;
+  set.q = 4;
+  for (float z : {0.0f, -0.05f, -0.1f, -1.0f})
+    for (int j = 0; j < 40; ++j) set.addStraight({-0.5f, -0.5f + float(j) / 39.0f, z}, {0.5f, -0.5f + float(j) / 39.0f, z});
+  OpacitySettings s = smallSettings(64, 0.25f);
+  s.deep = true;
+  s.raster = hp::render::OpacityRaster::Graphics;
+  EXPECT_FALSE(ShadowRig(*ctx, set, s).maps->settings().deep);
+  s.raster = hp::render::OpacityRaster::Compute;
+  ShadowRig rig(*ctx, set, s);
+  ASSERT_TRUE(rig.maps->settings().deep);
+  const OpacityCapture c = rig.run(*ctx, glm::vec3(0.0f, 0.0f, 1.0f));
+  const auto [count, ambiguous] = strandRows(c.light);
+  std::size_t checked = 0, wrong = 0;
+  for (std::uint32_t y = 0; y < 64; ++y) {
+    if (ambiguous[y]) continue;
+    for (std::uint32_t x = 5; x < 59; ++x) {
+      const float s0 = c.firstHair[std::size_t(y) * 64 + x];
+      if (count[y] == 0) {
+        EXPECT_GE(s0, hp::gpu::OPACITY_NO_HAIR) << x << "," << y;
+        continue;
+      }
+      EXPECT_NEAR(s0, 0.0f, 1e-4f) << x << "," << y;
+      for (std::uint32_t i = 1; i <= 16; ++i) {
+        const float expected = 0.25f * count[y] * (1.0f + (i >= 4 ? 1.0f : 0.0f) + (i >= 7 ? 1.0f : 0.0f));
+        ++checked;
+        if (std::abs(c.at(i - 1, x, y) - expected) > 1e-4f) ++wrong;
+      }
+    }
+  }
+  EXPECT_GT(checked, 16u * 54u * 30u);
+  EXPECT_EQ(wrong, 0u);
 }

@@ -232,3 +232,29 @@ TEST_F(VulkanTest, DualScatteringAddsLightInTheHairsShadowOnly) {
   const Region all = sumRegion(offDual, off, [](std::uint32_t, std::uint32_t) { return true; });
   EXPECT_NEAR(all.ratio(), 1.0, 1e-3);
 }
+
+// Deep opacity maps through the whole frame (both hair rasters, the head's lookups): the side away from the
+// light still loses more of its light to the shadows than the lit side.
+TEST_F(VulkanTest, DeepOpacityMapsDarkenTheFarSideOnBothRasters) {
+  hp::DensityOptions density;
+  density.totalStrands = 3000;
+  const hp::HairAsset asset = hp::buildDefaultHeadAsset(hp::defaultHeadGrowth(), density);  // with its head
+  const glm::vec3 light(1.0f, 0.3f, 0.0f);
+  for (const hp::RasterMode raster : {hp::RasterMode::Compute, hp::RasterMode::Graphics}) {
+    auto frame = [&](bool shadows) {
+      hp::RenderRequest r = request(light, 180.0f, shadows);
+      r.opacity.deep = true;
+      r.opacity.raster = hp::render::OpacityRaster::Compute;
+      r.scene.render.raster = raster;
+      return hp::renderStill(*ctx, asset, r);
+    };
+    const hp::RenderResult on = frame(true), off = frame(false);
+    const bool right = lightOnTheRight(request(light, 180.0f, true));
+    const Region lit = sumRegion(on, off, [&](std::uint32_t x, std::uint32_t) { return (x >= kOpacityWidth / 2) == right; });
+    const Region away = sumRegion(on, off, [&](std::uint32_t x, std::uint32_t) { return (x >= kOpacityWidth / 2) != right; });
+    ASSERT_GT(away.pixels, 500u) << hp::rasterModeName(raster);
+    EXPECT_LT(away.ratio(), lit.ratio() - 0.1) << hp::rasterModeName(raster) << ": away " << away.ratio() << " lit "
+                                              << lit.ratio();
+    EXPECT_LT(lit.ratio(), 1.0 + 1e-9);
+  }
+}

@@ -73,7 +73,7 @@ void RasterRig::run(float headNdcDepth, bool binOnly) {
     // Uploads were transfers of earlier submissions; the rasterizer reads them in compute.
     vk::memoryBarrier(ctx, cmd, vk::BufferUse::TransferDst, vk::BufferUse::ComputeRead);
     vk::imageBarrier(ctx, cmd, shadows.image().handle(), VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::FragmentSampled,
-                     vk::ImageUse::ComputeSampled, gpu::OPACITY_TARGETS);
+                     vk::ImageUse::ComputeSampled, gpu::OPACITY_LAYERS);
     vk::imageBarrier(ctx, cmd, depth.handle(), VK_IMAGE_ASPECT_DEPTH_BIT, vk::ImageUse::Undefined,
                      vk::ImageUse::TransferDst);
     const VkClearDepthStencilValue clear{headNdcDepth, 0};
@@ -86,7 +86,7 @@ void RasterRig::run(float headNdcDepth, bool binOnly) {
     else
       pass->record(cmd);
     vk::imageBarrier(ctx, cmd, shadows.image().handle(), VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::ComputeSampled,
-                     vk::ImageUse::FragmentSampled, gpu::OPACITY_TARGETS);
+                     vk::ImageUse::FragmentSampled, gpu::OPACITY_LAYERS);
   }, "raster rig");
 }
 
