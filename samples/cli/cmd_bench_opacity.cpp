@@ -28,6 +28,7 @@ struct BenchOptions {
   std::uint32_t frames = 3;
   std::vector<std::string> rasters{"compute", "graphics"};
   bool half = false;
+  bool deep = false;
   bool json = false;
   std::string device;
 };
@@ -37,6 +38,7 @@ nlohmann::json benchOne(const hp::vk::Context& ctx, const hp::HairAsset& asset, 
   hp::HairSystemSettings settings;
   settings.opacity.resolution = resolution;
   settings.opacity.raster = raster;
+  settings.opacity.deep = o.deep;
   if (o.half) settings.opacity.format = VK_FORMAT_R16G16B16A16_SFLOAT;
   hp::HairSystem hair(ctx, asset, settings);
   hp::DrawView view;
@@ -56,6 +58,7 @@ nlohmann::json benchOne(const hp::vk::Context& ctx, const hp::HairAsset& asset, 
           {"resolution", resolution},
           {"format", o.half ? "RGBA16F" : "RGBA32F"},
           {"raster", hp::render::opacityRasterName(raster)},
+          {"deep", hair.shadows().settings().deep},
           {"bounds_ms", hp::vk::median(times["bounds"])},
           {"opacity_ms", hp::vk::median(times["opacity"])}};
 }
@@ -77,9 +80,10 @@ void run(const BenchOptions& o) {
       for (hp::render::OpacityRaster raster : rasters) {
         nlohmann::json row = benchOne(*ctx, asset, r, raster, o);
         if (!o.json)
-          std::printf("%8u strands  %4u^2 %s %-8s  bounds %8.2f ms  opacity %9.2f ms\n", s, r,
+          std::printf("%8u strands  %4u^2 %s %-8s%s  bounds %8.2f ms  opacity %9.2f ms\n", s, r,
                       row["format"].get<std::string>().c_str(), row["raster"].get<std::string>().c_str(),
-                      row["bounds_ms"].get<double>(), row["opacity_ms"].get<double>());
+                      row["deep"].get<bool>() ? " deep" : "", row["bounds_ms"].get<double>(),
+                      row["opacity_ms"].get<double>());
         std::fflush(stdout);
         report["results"].push_back(row);
       }
@@ -94,6 +98,7 @@ void setup(CLI::App& app) {
   cmd->add_option("--resolutions", o->resolutions, "Opacity map sizes, comma separated")->delimiter(',')->capture_default_str();
   cmd->add_option("--frames", o->frames, "Timed frames per case (median), after one warm-up")->capture_default_str();
   cmd->add_flag("--half", o->half, "RGBA16F opacity maps instead of RGBA32F");
+  cmd->add_flag("--deep", o->deep, "Deep opacity maps (the compute path; the graphics path keeps global slices)");
   cmd->add_option("--raster", o->rasters, "Ways into the maps: compute, graphics (comma separated)")
       ->delimiter(',')->capture_default_str();
   cmd->add_flag("--json", o->json, "Print JSON");
