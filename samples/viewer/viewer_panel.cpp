@@ -85,6 +85,11 @@ void lookSection(Tunables& t, PanelChanges& c) {
   ImGui::SliderFloat("exposure", &t.exposure, 0.1f, 8.0f, "%.2f", ImGuiSliderFlags_Logarithmic);
   c.look |= ImGui::SliderFloat("ambient", &t.look.ambient, 0.0f, 0.5f);
   c.look |= ImGui::SliderFloat("strand width", &t.look.strandWidth, 0.0001f, 0.003f, "%.4f");
+  bool dual = t.look.scattering == render::Scattering::Dual;
+  if (ImGui::Checkbox("dual scattering (physical model)", &dual)) {
+    t.look.scattering = dual ? render::Scattering::Dual : render::Scattering::Single;
+    c.look = true;
+  }
 }
 
 void timingSection(const PanelStatus& s) {
