@@ -67,7 +67,9 @@ void recordComputeOpacity(const vk::Context& ctx, VkCommandBuffer cmd, const ren
   vk::imageBarrier(ctx, cmd, image, VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::FragmentSampledDiscard,
                    vk::ImageUse::ComputeStorageWrite, gpu::OPACITY_LAYERS);
   resolve.recordResolve(cmd);
-  const bool heads = std::any_of(casters.begin(), casters.end(), [](const ShadowCaster& c) { return c.opacity->drawsHead(); });
+  // Heads in the slices (headOpacity > 0) are drawn at global slice coordinates: not into deep maps.
+  const bool heads = !resolve.deep() && std::any_of(casters.begin(), casters.end(),
+                                                    [](const ShadowCaster& c) { return c.opacity->drawsHead(); });
   if (!heads) {
     vk::imageBarrier(ctx, cmd, image, VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::ComputeStorageWrite,
                      vk::ImageUse::FragmentSampled, gpu::OPACITY_LAYERS);

@@ -38,26 +38,32 @@ End endOf(vec4 clip, float opacity) {
 }
 
 // Adds a fragment like opacity.frag: to every slice i >= s - epsilon, i.e. to the bin of the first one.
-// Deep maps: step 1 only keeps the texel's nearest s; step 2 measures s from it, OPACITY_DEEP_FACTOR finer.
+// Deep maps: step 1 only keeps the texel's nearest s (every fragment step 2 will see: s0 always exists);
+// step 2 measures s from it, OPACITY_DEEP_FACTOR finer, and the last slice takes everything farther (its
+// layer reaches to infinity, as Yuksel & Keyser's last layer does).
 void addFragment(ivec2 texel, float s, float opacity) {
   uint at = uint(texel.y) * push.resolution + uint(texel.x);
   if (push.mode == OPACITY_SPLAT_MODE_FIRST) {
-    if (s >= 0.0 && s <= float(OPACITY_SLICES)) atomicMin(first[at], orderedFromFloat(s));
+    atomicMin(first[at], orderedFromFloat(clamp(s, 0.0, float(OPACITY_SLICES))));
     return;
   }
-  if (push.mode == OPACITY_SPLAT_MODE_DEEP) s = (s - floatFromOrdered(first[at])) * OPACITY_DEEP_FACTOR;
+  if (push.mode == OPACITY_SPLAT_MODE_DEEP)
+    s = min((s - floatFromOrdered(first[at])) * OPACITY_DEEP_FACTOR, float(OPACITY_SLICES));
   float behind = s - OPACITY_SLICE_EPSILON;
   if (!(behind <= float(OPACITY_SLICES)) || !(opacity > 0.0)) return;  // past the last slice, or nothing
   uint slice = uint(max(ceil(behind), 1.0)) - 1u;
-  uint value = uint(min(opacity * OPACITY_FIXED_ONE + 0.5, float(OPACITY_BIN_SATURATED)));
+  // One add is at most OPACITY_MAX_FRAGMENT_FIXED (alpha 256: T = 0 already), so a bin past the saturation
+  // bit, which takes each later add back, could only wrap with 128 such adds in flight at once.
+  uint value = uint(min(opacity * OPACITY_FIXED_ONE + 0.5, float(OPACITY_MAX_FRAGMENT_FIXED)));
   uint index = at * OPACITY_SLICES + slice;
   if (value == 0u) return;
-  // A bin already saturated takes the add back (rare), so it can never wrap around.
   if ((atomicAdd(bins[index], value) & OPACITY_BIN_SATURATED) != 0u) atomicAdd(bins[index], -value);
 }
 
-// First and last index (inclusive) of the texel centres k + 0.5 in [lo, hi), clamped to the map.
+// First and last index (inclusive) of the texel centres k + 0.5 in [lo, hi), clamped to the map; none
+// for NaN bounds.
 ivec2 centresIn(float lo, float hi) {
+  if (!(lo <= hi)) return ivec2(0, -1);
   float n = float(push.resolution);
   return ivec2(clamp(ceil(lo - 0.5), 0.0, n), clamp(ceil(hi - 0.5), 0.0, n) - 1.0);
 }
@@ -96,6 +102,16 @@ void splat(End a, End b) {
   }
 }
 
+// Liang-Barsky against one plane, inside where the distance is >= 0 (d0, d1 at the ends): narrows the
+// parameter range t; false when nothing is left (or a distance is not finite).
+bool clipTo(float d0, float d1, inout vec2 t) {
+  if (!(d0 == d0) || !(d1 == d1)) return false;
+  if (d0 < 0.0 && d1 < 0.0) return false;
+  if (d0 < 0.0) t.x = max(t.x, d0 / (d0 - d1));
+  else if (d1 < 0.0) t.y = min(t.y, d0 / (d0 - d1));
+  return t.x <= t.y;
+}
+
 void main() {
   uint segment = hpThreadId(OPACITY_SPLAT_WORKGROUP_SIZE);
   if (segment >= push.segmentCount) return;
@@ -106,18 +122,14 @@ void main() {
   vec4 c1 = light.viewProj * vec4(positions[v + 1u].xyz, 1.0);
   float o0 = strandFragmentOpacity(light, push.footprint, push.opacity, float(k) / float(q - 1u), c0.w);
   float o1 = strandFragmentOpacity(light, push.footprint, push.opacity, float(k + 1u) / float(q - 1u), c1.w);
-  if (!(c0.w >= MIN_W) && !(c1.w >= MIN_W)) return;  // behind a spot (or not finite)
-  if (!(c0.w >= MIN_W) || !(c1.w >= MIN_W)) {         // clip at the spot's plane, in clip space
-    float t = (MIN_W - c0.w) / (c1.w - c0.w);
-    vec4 c = mix(c0, c1, t);
-    float o = mix(o0, o1, t);
-    if (c0.w < MIN_W) {
-      c0 = c;
-      o0 = o;
-    } else {
-      c1 = c;
-      o1 = o;
-    }
-  }
-  splat(endOf(c0, o0), endOf(c1, o1));
+  // Clip in clip space (attributes linear there, as the graphics clipper does) to the spot's plane and to
+  // the map's frustum, with a margin, so projected ends stay within a few map widths (float precision).
+  vec2 t = vec2(0.0, 1.0);
+  if (!clipTo(c0.w - MIN_W, c1.w - MIN_W, t)) return;
+  const float reach = 1.5;
+  if (!clipTo(reach * c0.w - c0.x, reach * c1.w - c1.x, t) || !clipTo(reach * c0.w + c0.x, reach * c1.w + c1.x, t) ||
+      !clipTo(reach * c0.w - c0.y, reach * c1.w - c1.y, t) || !clipTo(reach * c0.w + c0.y, reach * c1.w + c1.y, t))
+    return;
+  vec4 a = mix(c0, c1, t.x), b = mix(c0, c1, t.y);
+  splat(endOf(a, mix(o0, o1, t.x)), endOf(b, mix(o0, o1, t.y)));
 }

@@ -42,7 +42,8 @@ struct OpacitySettings {
   // are OPACITY_DEEP_FACTOR times finer, following the hair's surface instead of cutting the whole head
   // into 16 (docs/SHADING.md "Deep opacity maps"); biasSlices then counts deep slices. Off by default until
   // multiple scattering lands: measured closer to the reference's direct light, but the missing
-  // multiply-scattered light then shows as a darker frame (docs/SHADING.md).
+  // multiply-scattered light then shows as a darker frame (docs/SHADING.md). headOpacity (the head in the
+  // slices, drawn at global slice coordinates) does not apply to deep maps.
   bool deep = false;
   void validate() const;            // throws hp::Error naming the field
 };

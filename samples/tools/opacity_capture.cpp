@@ -77,7 +77,13 @@ nlohmann::json sliceJson(const OpacityCapture& c) {
     viewProj.push_back({l.viewProj[0][row], l.viewProj[1][row], l.viewProj[2][row], l.viewProj[3][row]});
   return {{"resolution", c.resolution},
           {"slices", gpu::OPACITY_SLICES},
-          {"depth_convention", "light depth d = -dot(L, p), growing away from the light; z_i = z_near + i d_z"},
+          {"depth_convention", c.settings.deep
+                                   ? "deep: slice i of a texel at light depth s0 + i d_z / OPACITY_DEEP_FACTOR "
+                                     "(s0 its first hair, in slices of d_z from z_near); the last "
+                                     "slice reaches to infinity"
+                                   : "light depth d = -dot(L, p), growing away from the light; z_i = z_near + i d_z"},
+          {"deep", c.settings.deep},
+          {"deep_factor", gpu::OPACITY_DEEP_FACTOR},
           {"z_near", l.depthRange.x},
           {"z_far", l.depthRange.y},
           {"d_z", l.depthRange.z},

@@ -22,8 +22,8 @@ struct OpacityCapture {
   std::uint32_t resolution = 0;
   std::vector<float> alpha;  // alpha(z_i): slice-major (i = 1..16 -> index 0..15), rows top to bottom
                              // (row 0 is light-space +y, clip y = +1), resolution^2 per slice
-  std::vector<float> firstHair;  // per texel, rows top to bottom: the deep maps' first-hair slice coordinate
-                                 // s0 (OPACITY_NO_HAIR where none, or where the maps are global)
+  std::vector<float> firstHair;  // per texel, rows top to bottom: deep maps (settings.deep) only, the first
+                                 // hair's global slice coordinate s0 (OPACITY_NO_HAIR where none)
   gpu::LightSpace light{};
   OpacitySettings settings;
   glm::vec3 towardLight{0.0f, 0.0f, 1.0f};

@@ -122,7 +122,7 @@ RenderResult renderStill(const vk::Context& ctx, const HairAsset& asset, const R
                                                          "hairpipe render: render strands of the drawn frame");
   if (request.captureFrame) result.frame = captureFrame(ctx, hair, session.renderer, session.view(motion));
   if (request.captureOpacity && request.opacity.enabled)
-    result.opacity = render::captureOpacity(ctx, hair.shadows().image(), hair.shadows().lightSpace(), request.opacity,
+    result.opacity = render::captureOpacity(ctx, hair.shadows().image(), hair.shadows().lightSpace(), hair.shadows().settings(),
                                             glm::normalize(request.scene.light.direction));
   return result;
 }

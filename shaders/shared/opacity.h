@@ -24,7 +24,7 @@ HP_CONST(uint, OPACITY_TARGETS, 4)            // RGBA layers of slices: OPACITY_
 // and are OPACITY_DEEP_FACTOR times finer: deep slice coordinate = (s - s0) x OPACITY_DEEP_FACTOR.
 HP_CONST(uint, OPACITY_LAYERS, 5)
 HP_CONST(float, OPACITY_DEEP_FACTOR, 4.0f)
-HP_CONST(float, OPACITY_NO_HAIR, 1.0e6f)
+HP_CONST(float, OPACITY_NO_HAIR, 1.0e4f)           // exact in RGBA16F too
 // A fragment at slice coordinate s adds to slice i when s <= i + OPACITY_SLICE_EPSILON, so hair at
 // exactly z_far (s = 16 up to rounding) still lands in slice 16.
 HP_CONST(float, OPACITY_SLICE_EPSILON, 1.0e-3f)
@@ -65,6 +65,7 @@ HP_CONST(uint, OPACITY_RESOLVE_BINDING_FIRST, 2)    // the first-hair buffer (re
 HP_CONST(float, OPACITY_FIXED_ONE, 65536.0f)
 HP_CONST(uint, OPACITY_BIN_SATURATED, 0x80000000u)
 HP_CONST(float, OPACITY_SATURATED_ALPHA, 32768.0f)
+HP_CONST(float, OPACITY_MAX_FRAGMENT_FIXED, 16777216.0f)  // 2^24: one fragment adds at most alpha 256
 
 // Light-space framing, written on the device by the bounds pass and read by every later pass.
 struct LightSpace {

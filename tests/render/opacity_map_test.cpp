@@ -674,9 +674,9 @@ TEST_F(VulkanTest, OpacityRasterAutoFallsBackToGraphicsWhereTheBinsExceedTheDevi
 // Deep opacity maps (compute path): the slices start at each texel's first hair and are
 // OPACITY_DEEP_FACTOR (4) times finer. Four layers of 40 strands at light depths 0, 0.05, 0.1 and 1
 // (global slice coordinates 0, 0.8, 1.6, 16) are at deep coordinates 0, 3.2, 6.4 and 64 from the first:
-// slices 1-16 hold the first layer, 4-16 the second, 7-16 the third, and none the last; the last image
-// layer holds s0 = 0 on the strands' rows and OPACITY_NO_HAIR elsewhere. The graphics path keeps global
-// slices (settings().deep false).
+// slices 1-16 hold the first layer, 4-16 the second, 7-16 the third, and the last slice also the fourth
+// (it reaches to infinity); the last image layer holds s0 = 0 on the strands' rows and OPACITY_NO_HAIR
+// elsewhere. The graphics path keeps global slices (settings().deep false).
 TEST_F(VulkanTest, DeepOpacityMapsStartAtEachTexelsFirstHair) {
   StrandSet set;
   set.q = 4;
@@ -702,7 +702,8 @@ TEST_F(VulkanTest, DeepOpacityMapsStartAtEachTexelsFirstHair) {
       }
       EXPECT_NEAR(s0, 0.0f, 1e-4f) << x << "," << y;
       for (std::uint32_t i = 1; i <= 16; ++i) {
-        const float expected = 0.25f * count[y] * (1.0f + (i >= 4 ? 1.0f : 0.0f) + (i >= 7 ? 1.0f : 0.0f));
+        const float expected =
+            0.25f * count[y] * (1.0f + (i >= 4 ? 1.0f : 0.0f) + (i >= 7 ? 1.0f : 0.0f) + (i == 16 ? 1.0f : 0.0f));
         ++checked;
         if (std::abs(c.at(i - 1, x, y) - expected) > 1e-4f) ++wrong;
       }
