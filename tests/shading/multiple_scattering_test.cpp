@@ -4,6 +4,7 @@
 // furnace, and absorption orders it red > green > blue.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
