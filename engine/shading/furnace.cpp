@@ -11,17 +11,6 @@ namespace hp {
 namespace {
 constexpr double kPi = 3.14159265358979323846;
 
-glm::dvec3 physicalFurnace(double sinThetaR, const HairMaterial& m, int panels) {
-  double mInt[3] = {0, 0, 0};
-  shading::gaussLegendre(-0.5 * kPi, 0.5 * kPi, 2 * panels, [&](double ti, double w) {
-    double s = std::sin(ti), c = std::cos(ti);
-    for (int p = 0; p < 3; ++p) mInt[p] += w * c * shading::physicalM(p, s, sinThetaR, m);
-  });
-  // N is even in phi: int over [-pi, pi] = 2 int over [0, pi].
-  const shading::PhysicalN nInt = shading::physicalNIntegral(sinThetaR, m, 0.0, kPi, panels);
-  return mInt[0] * nInt.r + mInt[1] * nInt.tt + mInt[2] * (nInt.trt + nInt.res);
-}
-
 glm::dvec3 marschnerFurnace(double sinThetaR, const HairMaterial& m, int panels) {
   glm::dvec3 sum(0.0);
   shading::gaussLegendre(-0.5 * kPi, 0.5 * kPi, panels, [&](double ti, double wt) {
@@ -34,9 +23,22 @@ glm::dvec3 marschnerFurnace(double sinThetaR, const HairMaterial& m, int panels)
 }
 }  // namespace
 
+glm::dvec3 physicalFurnaceOver(double sinThetaR, const HairMaterial& m, double phiLo, double phiHi, int panels) {
+  m.validate();
+  double mInt[3] = {0, 0, 0};
+  shading::gaussLegendre(-0.5 * kPi, 0.5 * kPi, 2 * panels, [&](double ti, double w) {
+    double s = std::sin(ti), c = std::cos(ti);
+    for (int p = 0; p < 3; ++p) mInt[p] += w * c * shading::physicalM(p, s, sinThetaR, m);
+  });
+  const shading::PhysicalN nInt = shading::physicalNIntegral(sinThetaR, m, phiLo, phiHi, panels);
+  return mInt[0] * nInt.r + mInt[1] * nInt.tt + mInt[2] * (nInt.trt + nInt.res);
+}
+
 glm::dvec3 whiteFurnace(FibreModel model, double sinThetaR, const HairMaterial& m, int panels) {
   m.validate();
-  return model == FibreModel::Physical ? physicalFurnace(sinThetaR, m, panels) : marschnerFurnace(sinThetaR, m, panels);
+  // N is even in phi: int over [-pi, pi] = 2 int over [0, pi].
+  return model == FibreModel::Physical ? physicalFurnaceOver(sinThetaR, m, 0.0, kPi, panels)
+                                       : marschnerFurnace(sinThetaR, m, panels);
 }
 
 glm::dvec3 skyAlbedo(FibreModel model, const HairMaterial& m) {

@@ -16,6 +16,10 @@
 namespace hp {
 glm::dvec3 whiteFurnace(FibreModel model, double sinThetaR, const HairMaterial& m, int panels = 64);
 
+// The physical model's W restricted to incoming azimuths |phi| in [phiLo, phiHi] (whiteFurnace: [0, pi]);
+// [pi/2, pi] is the light one fibre scatters on forward (engine/shading/multiple_scattering.h).
+glm::dvec3 physicalFurnaceOver(double sinThetaR, const HairMaterial& m, double phiLo, double phiHi, int panels);
+
 // The fibre's albedo under a uniform white sky of radiance 1, seen from a uniformly random direction:
 // W(theta_r) averaged over the sphere of outgoing directions, (1/2) int W cos(theta_r) d theta_r over
 // [-90, 90] deg (16 Gauss-Legendre nodes). What the real-time ambient term multiplies by the sky's
