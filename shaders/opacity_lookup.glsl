@@ -15,6 +15,11 @@ struct OpacityVertex {
   float s;              // the point's own slice coordinate, unbiased (deep maps: the lookup starts there); -1: off
 };
 
+// The hat weights max(0, 1 - |s - i|) of the four slices i = first .. first + 3.
+vec4 opacitySliceWeights(float s, float first) {
+  return max(vec4(0.0), 1.0 - abs(s - (vec4(0.0, 1.0, 2.0, 3.0) + first)));
+}
+
 // `enabled` false gives zero weights (T = 1) with the same varyings.
 OpacityVertex opacityVertex(LightSpace light, vec3 world, float bias, bool enabled) {
   vec4 clip = light.viewProj * vec4(world, 1.0);
@@ -24,19 +29,29 @@ OpacityVertex opacityVertex(LightSpace light, vec3 world, float bias, bool enabl
   // Behind z_far the last slice holds all the hair; in front of z_near (s <= 0) there is none.
   o.s = enabled ? clip.z * float(OPACITY_SLICES) : -1.0;
   float s = clamp(clip.z * float(OPACITY_SLICES) - bias, 0.0, float(OPACITY_SLICES));
-  const vec4 first = vec4(1.0, 2.0, 3.0, 4.0);
   float on = enabled ? 1.0 : 0.0;
-  o.w0 = on * max(vec4(0.0), 1.0 - abs(s - first));
-  o.w1 = on * max(vec4(0.0), 1.0 - abs(s - (first + 4.0)));
-  o.w2 = on * max(vec4(0.0), 1.0 - abs(s - (first + 8.0)));
-  o.w3 = on * max(vec4(0.0), 1.0 - abs(s - (first + 12.0)));
+  o.w0 = on * opacitySliceWeights(s, 1.0);
+  o.w1 = on * opacitySliceWeights(s, 5.0);
+  o.w2 = on * opacitySliceWeights(s, 9.0);
+  o.w3 = on * opacitySliceWeights(s, 13.0);
   return o;
 }
 
+// The map's uv of a lookup; false outside the map's x/y box or behind a spot (no hair there: alpha = 0).
+bool opacityUv(vec3 uvw, out vec2 uv) {
+  uv = uvw.xy / uvw.z;
+  return uvw.z > 0.0 && all(greaterThanEqual(uv, vec2(0.0))) && all(lessThanEqual(uv, vec2(1.0)));
+}
+
+// One of the soft lookups' 4 taps: 1.5 texels from the receiver diagonally.
+vec3 opacitySoftTap(sampler2DArray maps, vec3 uvw, int k) {
+  vec2 d = 1.5 / vec2(textureSize(maps, 0).xy);
+  return vec3(uvw.xy + vec2((k & 1) == 0 ? -d.x : d.x, k < 2 ? -d.y : d.y) * uvw.z, uvw.z);
+}
+
 float opacityAlpha(sampler2DArray maps, vec3 uvw, vec4 w0, vec4 w1, vec4 w2, vec4 w3) {
-  if (!(uvw.z > 0.0)) return 0.0;
-  vec2 uv = uvw.xy / uvw.z;
-  if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) return 0.0;
+  vec2 uv;
+  if (!opacityUv(uvw, uv)) return 0.0;
   return dot(w0, textureLod(maps, vec3(uv, 0.0), 0.0)) + dot(w1, textureLod(maps, vec3(uv, 1.0), 0.0)) +
          dot(w2, textureLod(maps, vec3(uv, 2.0), 0.0)) + dot(w3, textureLod(maps, vec3(uv, 3.0), 0.0));
 }
@@ -46,12 +61,8 @@ float opacityAlpha(sampler2DArray maps, vec3 uvw, vec4 w0, vec4 w1, vec4 w2, vec
 // soft. (Strand receivers keep the sharp lookup: it is what separates strands from the ones above them.)
 float opacityAlphaSoft(sampler2DArray maps, vec3 uvw, vec4 w0, vec4 w1, vec4 w2, vec4 w3) {
   if (!(uvw.z > 0.0)) return 0.0;
-  vec2 d = 1.5 / vec2(textureSize(maps, 0).xy);
   float sum = 0.0;
-  for (int k = 0; k < 4; ++k) {
-    vec2 o = vec2((k & 1) == 0 ? -d.x : d.x, k < 2 ? -d.y : d.y);
-    sum += opacityAlpha(maps, vec3(uvw.xy + o * uvw.z, uvw.z), w0, w1, w2, w3);
-  }
+  for (int k = 0; k < 4; ++k) sum += opacityAlpha(maps, opacitySoftTap(maps, uvw, k), w0, w1, w2, w3);
   return 0.25 * sum;
 }
 
@@ -59,27 +70,21 @@ float opacityAlphaSoft(sampler2DArray maps, vec3 uvw, vec4 w0, vec4 w1, vec4 w2,
 // texel the point falls in (nearest texel of the last layer), so the weights are made here from the
 // point's slice coordinate s (OpacityVertex::s) rather than per vertex. bias: in deep slices.
 float opacityAlphaDeep(sampler2DArray maps, vec3 uvw, float s, float bias) {
-  if (!(uvw.z > 0.0) || s < 0.0) return 0.0;
-  vec2 uv = uvw.xy / uvw.z;
-  if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) return 0.0;
+  vec2 uv;
+  if (s < 0.0 || !opacityUv(uvw, uv)) return 0.0;
   ivec2 size = textureSize(maps, 0).xy;
   ivec2 texel = clamp(ivec2(uv * vec2(size)), ivec2(0), size - 1);
   float s0 = texelFetch(maps, ivec3(texel, int(OPACITY_TARGETS)), 0).x;
   float d = clamp((s - s0) * OPACITY_DEEP_FACTOR - bias, 0.0, float(OPACITY_SLICES));
-  const vec4 first = vec4(1.0, 2.0, 3.0, 4.0);
-  return opacityAlpha(maps, uvw, max(vec4(0.0), 1.0 - abs(d - first)), max(vec4(0.0), 1.0 - abs(d - (first + 4.0))),
-                      max(vec4(0.0), 1.0 - abs(d - (first + 8.0))), max(vec4(0.0), 1.0 - abs(d - (first + 12.0))));
+  return opacityAlpha(maps, uvw, opacitySliceWeights(d, 1.0), opacitySliceWeights(d, 5.0), opacitySliceWeights(d, 9.0),
+                      opacitySliceWeights(d, 13.0));
 }
 
 // opacityAlphaSoft's 4 taps for deep maps (opaque receivers: the head).
 float opacityAlphaDeepSoft(sampler2DArray maps, vec3 uvw, float s, float bias) {
   if (!(uvw.z > 0.0)) return 0.0;
-  vec2 d = 1.5 / vec2(textureSize(maps, 0).xy);
   float sum = 0.0;
-  for (int k = 0; k < 4; ++k) {
-    vec2 o = vec2((k & 1) == 0 ? -d.x : d.x, k < 2 ? -d.y : d.y);
-    sum += opacityAlphaDeep(maps, vec3(uvw.xy + o * uvw.z, uvw.z), s, bias);
-  }
+  for (int k = 0; k < 4; ++k) sum += opacityAlphaDeep(maps, opacitySoftTap(maps, uvw, k), s, bias);
   return 0.25 * sum;
 }
 #endif
