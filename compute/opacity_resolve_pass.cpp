@@ -60,7 +60,7 @@ OpacityResolvePass::OpacityResolvePass(const vk::Context& ctx, std::uint32_t res
 
 void OpacityResolvePass::recordClear(VkCommandBuffer cmd) const {
   ctx_->fn().vkCmdFillBuffer(cmd, bins_.handle(), 0, VK_WHOLE_SIZE, 0u);
-  ctx_->fn().vkCmdFillBuffer(cmd, first_.handle(), 0, VK_WHOLE_SIZE, 0xFFFFFFFFu);  // no hair yet
+  if (deep_) ctx_->fn().vkCmdFillBuffer(cmd, first_.handle(), 0, VK_WHOLE_SIZE, 0xFFFFFFFFu);  // no hair yet
 }
 
 void OpacityResolvePass::recordResolve(VkCommandBuffer cmd) const {

@@ -4,9 +4,9 @@
 // them into the opacity maps: per texel the prefix sum over its 16 slices, written as the 4 RGBA layers
 // the graphics pass would have blended (RGBA32F or RGBA16F; storage usage required).
 //
-// Recording, barriers by the caller (the frame recorder): recordClear (transfer fills of the bins and the
-// first-hair buffer;
-// before it the previous frame's resolve reads are done: ComputeRead -> TransferDst), the splats
+// Recording, barriers by the caller (the frame recorder): recordClear (transfer fills of the bins and, for
+// deep maps, the first-hair buffer; before it the previous frame's reads are done: ComputeRead ->
+// TransferDst), the splats
 // (TransferDst -> ComputeWrite before them), then recordResolve (bins ComputeWrite -> ComputeRead, the
 // maps in ImageUse::ComputeStorageWrite). Throws hp::Error if the bins exceed maxStorageBufferRange.
 #include <volk.h>

@@ -1,6 +1,7 @@
 #include "engine/frame_recorder.h"
 
 #include <algorithm>
+#include <span>
 
 #include "engine/vk/barriers.h"
 #include "shaders/shared/opacity.h"
@@ -48,10 +49,13 @@ void recordComputeOpacity(const vk::Context& ctx, VkCommandBuffer cmd, const ren
   const compute::OpacityResolvePass& resolve = *maps.resolvePass();
   const VkBuffer bins = resolve.bins().handle(), first = resolve.first().handle();
   const VkImage image = maps.image().handle();
-  for (VkBuffer b : {bins, first})  // last frame's resolve and deep splats read them
+  // What recordClear fills: the bins, and the first-hair buffer for deep maps only.
+  const VkBuffer fills[] = {bins, first};
+  const std::span<const VkBuffer> cleared(fills, resolve.deep() ? 2 : 1);
+  for (VkBuffer b : cleared)  // last frame's resolve and deep splats read them
     vk::bufferBarrier(ctx, cmd, b, vk::BufferUse::ComputeRead, vk::BufferUse::TransferDst);
   resolve.recordClear(cmd);
-  for (VkBuffer b : {bins, first}) vk::bufferBarrier(ctx, cmd, b, vk::BufferUse::TransferDst, vk::BufferUse::ComputeWrite);
+  for (VkBuffer b : cleared) vk::bufferBarrier(ctx, cmd, b, vk::BufferUse::TransferDst, vk::BufferUse::ComputeWrite);
   auto splatAll = [&](std::uint32_t mode, VkBuffer target) {
     for (std::size_t i = 0; i < casters.size(); ++i) {
       if (i > 0) vk::bufferBarrier(ctx, cmd, target, vk::BufferUse::ComputeWrite, vk::BufferUse::ComputeWrite);

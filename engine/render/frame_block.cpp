@@ -15,8 +15,6 @@ Scattering parseScattering(const std::string& text) {
   throw Error("scattering must be single or dual, got '" + text.substr(0, 40) + "'");
 }
 
-const char* scatteringName(Scattering s) { return s == Scattering::Dual ? "dual" : "single"; }
-
 void LookSettings::validate() const {
   auto positiveFinite = [](float v) { return std::isfinite(v) && v > 0.0f; };
   if (!positiveFinite(strandWidth) || strandWidth > 0.01f) throw Error("strand width must be in (0, 0.01] scene units");

@@ -13,7 +13,6 @@
 namespace hp::render {
 enum class Scattering { Single, Dual };
 Scattering parseScattering(const std::string& text);  // "single", "dual"; else hp::Error
-const char* scatteringName(Scattering s);
 
 struct LookSettings {
   // Ribbon width at the root (scene units). Real hair is 50-120 um, but a render strand stands for a
