@@ -48,6 +48,8 @@ const vk::Binding kBindings[] = {
     {gpu::RASTER_BINDING_SHADE_FLAGS, kStorage, kCompute},
     {gpu::RASTER_BINDING_SHADE_LIST, kStorage, kCompute},
     {gpu::RASTER_BINDING_SHADE_ARGS, kStorage, kCompute},
+    {gpu::RASTER_BINDING_BOUNCE_FLUX, kSampled, kCompute},
+    {gpu::RASTER_BINDING_BOUNCE_POSITION, kSampled, kCompute},
 };
 constexpr VkBufferUsageFlags kStorageUsage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
 constexpr VkBufferUsageFlags kArmedUsage =

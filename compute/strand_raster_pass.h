@@ -46,8 +46,9 @@ struct RasterStats {
 };
 
 // Writes the shading bindings of shaders/shared/render.h (frame block and Marschner parameters as STORAGE
-// buffers, the LUTs, opacity maps, LightSpace, the head's depth shadow map) into a raster descriptor set:
-// what hairRadiance reads.
+// buffers, the LUTs, opacity maps, LightSpace, the head's depth shadow map) and the head bounce map's two
+// images (RASTER_BINDING_BOUNCE_*, engine/render/head_bounce_map.h) into a raster descriptor set: what
+// hairRadiance and the skin's bounce read.
 using ShadingWriter = std::function<void(const vk::DescriptorSet&)>;
 
 // One head's strands and the shading resources its segments are shaded with.

@@ -1,7 +1,8 @@
 // The radiance a hair fibre sends toward the camera (REFERENCES.md §3-4), GLSL only, shared by the graphics
 // strand shader (strands.frag, per fragment) and the compute rasterizer (raster_shade.comp, per vertex):
 // S(L, V, T) cos(theta_i) x light x transmittance [+ the light the hair in front scattered forward, dual
-// scattering] + sky albedo x ambient x RENDER_HAIR_SKY_VISIBILITY, times the strand's lightness variation.
+// scattering] + sky albedo x (ambient x RENDER_HAIR_SKY_VISIBILITY + `bounce`), times the strand's lightness
+// variation. `bounce` is the mean radiance the skin sends the point (head_bounce.glsl; vec3(0) without it).
 // The includer declares `frame` (RenderFrame), `marschner` (MarschnerParams), the LUT samplers
 // lutM, lutN0, lutN1 and `headShadowMap` (the head's depth map) before including this file; `alpha` is
 // the opacity-map lookup at the point. The transmittance is the hair's (opacity maps) times the head's.
@@ -10,7 +11,7 @@
 #include "head_shadow.glsl"
 #include "light.glsl"
 
-vec3 hairRadiance(vec3 world, vec3 tangent, float colorScale, float alpha) {
+vec3 hairRadiance(vec3 world, vec3 tangent, float colorScale, float alpha, vec3 bounce) {
   vec3 T = normalize(tangent);
   LightSample light = sampleLight(frame.lightDirection, frame.lightPosition, frame.lightSpot, world);
   vec3 L = light.L;
@@ -32,7 +33,8 @@ vec3 hairRadiance(vec3 world, vec3 tangent, float colorScale, float alpha) {
   }
   // The ambient is a uniform white sky: an unoccluded fibre returns the model's sky albedo times its
   // radiance, a fibre of a head of hair the mean visible fraction of it (shared/render.h).
-  vec3 ambient = marschner.skyAlbedo.rgb * (frame.hairColor.w * RENDER_HAIR_SKY_VISIBILITY);
+  // The skin's bounce is treated the same way: the fibre's response to it is the sky albedo times its mean.
+  vec3 ambient = marschner.skyAlbedo.rgb * (frame.hairColor.w * RENDER_HAIR_SKY_VISIBILITY + bounce);
   return (direct + ambient) * colorScale;
 }
 #endif

@@ -48,7 +48,7 @@ void main() {
                     ? opacityAlphaDeep(opacityMaps, inLightUvw, inSlice, frame.strand.w)
                     : opacityAlpha(opacityMaps, inLightUvw, inSliceWeights[0], inSliceWeights[1], inSliceWeights[2],
                                    inSliceWeights[3]);
-  vec3 radiance = hairRadiance(inWorld, inTangent, inColorScale, alpha);
+  vec3 radiance = hairRadiance(inWorld, inTangent, inColorScale, alpha, vec3(0.0));  // no skin bounce here
   if (push.samples > 1u) {
     uint mask = coverageMask(inCoverage, push.samples);
     if (mask == 0u) discard;

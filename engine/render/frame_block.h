@@ -25,6 +25,9 @@ struct LookSettings {
   // Dual: add the light the hair in front of a fibre scattered forward onto it (physical fibre model
   // only; the others draw single scattering either way). docs/SHADING.md "Multiple scattering".
   Scattering scattering = Scattering::Single;
+  // Add the sunlight the skin reflects onto the hair (one bounce from the head bounce map; compute raster
+  // only, the graphics raster ignores it). docs/SHADING.md "Skin bounce".
+  bool skinBounce = false;
   void validate() const;             // throws hp::Error naming the field
 };
 

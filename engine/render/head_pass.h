@@ -24,6 +24,11 @@ class HeadPass {
            const AttachmentFormats& formats, vk::PipelineLibrary* library = nullptr);
   void draw(VkCommandBuffer cmd, VkExtent2D extent, const glm::mat4& headToWorld, std::uint32_t frameOffset) const;
   bool empty() const { return indexCount_ == 0; }
+  // The mesh as uploaded (positions; normals with the scalp weight in w; indices), for other head draws.
+  const vk::Buffer& positions() const { return positions_; }
+  const vk::Buffer& normals() const { return normals_; }
+  const vk::Buffer& indices() const { return indices_; }
+  std::uint32_t indexCount() const { return indexCount_; }
 
  private:
   std::uint32_t indexCount_ = 0;

@@ -46,6 +46,7 @@ HeadShadowView headShadowView(const LightSpec& light, const HeadSphere& heads, s
     texelWorld = 2.0f * std::tan(half) * dist / float(resolution);
   }
   v.params = glm::vec4(1.0f, kOffsetTexels * texelWorld, 1.0f / float(resolution), 0.0f);
+  v.extentWorld = texelWorld * float(resolution);
   return v;
 }
 }  // namespace hp::render

@@ -20,6 +20,7 @@ HeadSphere enclose(const HeadSphere& a, const HeadSphere& b);
 struct HeadShadowView {
   glm::mat4 viewProj{1.0f};  // world -> map clip (Vulkan depth [0, 1])
   glm::vec4 params{0.0f};    // RenderFrame::headShadow; x = 0: off
+  float extentWorld = 0.0f;  // the map's width at the heads' centre, scene units
 };
 HeadShadowView headShadowView(const LightSpec& light, const HeadSphere& heads, std::uint32_t resolution);
 }  // namespace hp::render

@@ -110,6 +110,11 @@ hp::RenderRequest makeRenderRequest(const FrameOptions& o, const CLI::App& cmd) 
     if (r.look.scattering == hp::render::Scattering::Dual && o.lutMode != "physical")
       throw hp::Error("--scattering dual needs the physical fibre model (--lut-mode physical)");
   }
+  if (o.skinBounce) {
+    if (*o.skinBounce != "on" && *o.skinBounce != "off")
+      throw hp::Error("--skin-bounce must be on or off, got '" + o.skinBounce->substr(0, 40) + "'");
+    r.look.skinBounce = *o.skinBounce == "on";
+  }
   r.look.validate();
   r.opacity = opacitySettings(o);
   applyRaster(o, r);
@@ -168,6 +173,8 @@ void addFrameOptions(CLI::App& cmd, FrameOptions& o) {
                  "Ambient fill light in [0, 10] (default 0.06; the reference's uniform sky radiance)");
   cmd.add_option("--scattering", o.scattering,
                  "single, or dual: adds the light the hair in front scattered forward (physical fibre model)");
+  cmd.add_option("--skin-bounce", o.skinBounce,
+                 "on or off: adds the sunlight the skin reflects onto the hair (compute raster; default off)");
   cmd.add_flag("--lines", o.lines, "Draw strands as lines instead of ribbons");
   cmd.add_flag("--guides-only", o.guidesOnly, "Draw the smoothed guides only (no interpolation)");
   cmd.add_flag("--no-shadows", o.noShadows, "Turn the opacity shadow maps off");

@@ -26,6 +26,7 @@ struct FrameOptions {
   std::optional<float> orbit;
   std::optional<float> ambient;
   std::optional<std::string> scattering;
+  std::optional<std::string> skinBounce;  // on | off
   std::string lutMode = "physical";
   std::string animate = "none";
   float exposure = 1.0f;

@@ -35,6 +35,14 @@ HP_CONST(float, RENDER_HAIR_SKY_VISIBILITY, 0.15342641f)
 HP_CONST(uint, RENDER_SCATTERING_SINGLE, 0u)
 HP_CONST(uint, RENDER_SCATTERING_DUAL, 1u)
 
+// The head bounce map (engine/render/head_bounce_map.h, shaders/head_bounce.glsl): the skin seen from the
+// light, texels per side (framed like the head's depth map), and the gather's pattern around the point's
+// texel: RINGS rings of SPOKES samples, ring j at radius RADIUS x ((j + 1/2) / RINGS)^2 texels.
+HP_CONST(uint, RENDER_BOUNCE_RESOLUTION, 128)
+HP_CONST(uint, RENDER_BOUNCE_RINGS, 6)
+HP_CONST(uint, RENDER_BOUNCE_SPOKES, 8)
+HP_CONST(float, RENDER_BOUNCE_RADIUS, 40.0f)
+
 HP_CONST(uint, STRAND_VERTICES_PER_QUAD, 6)
 HP_CONST(uint, STRAND_VERTICES_PER_LINE, 2)
 
@@ -56,6 +64,8 @@ struct RenderFrame {
   mat4 headShadowViewProj;  // world -> clip of the head's depth shadow map (engine/render/shadow_maps.h, head_shadow_view.h)
   vec4 headShadow;          // x = 1: the head occludes the light (0: no map), y = receiver offset toward the
                             // light (scene units), z = 1 / map resolution, w = 0
+  vec4 headBounce;          // x = 1: the hair adds the light the skin reflects (compute raster; head_bounce.glsl),
+                            // y = the bounce map's texel size at the heads (scene units), z = w = 0
 };
 
 struct StrandDrawPush {
@@ -79,7 +89,8 @@ static_assert(offsetof(hp::gpu::RenderFrame, cameraPosition) == 128);
 static_assert(offsetof(hp::gpu::RenderFrame, options) == 224);
 static_assert(offsetof(hp::gpu::RenderFrame, lightPosition) == 240);
 static_assert(offsetof(hp::gpu::RenderFrame, headShadowViewProj) == 272);
-static_assert(sizeof(hp::gpu::RenderFrame) == 352);
+static_assert(offsetof(hp::gpu::RenderFrame, headBounce) == 352);
+static_assert(sizeof(hp::gpu::RenderFrame) == 368);
 static_assert(sizeof(hp::gpu::StrandDrawPush) == 16);
 static_assert(sizeof(hp::gpu::TonemapPush) == 16);
 #endif

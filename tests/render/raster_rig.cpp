@@ -9,6 +9,7 @@
 #include "engine/vk/context.h"
 #include "engine/vk/submit.h"
 #include "engine/vk/transfer.h"
+#include "shaders/shared/raster.h"
 
 namespace hp::test {
 namespace {
@@ -50,6 +51,7 @@ RasterRig::RasterRig(const vk::Context& c, const compute::StrandBuffers& strands
       frameBlock(c, sizeof(gpu::RenderFrame), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                  vk::MemoryKind::DeviceLocal, "rig frame"),
       shadows(c, shadowsOff()),
+      bounce(c),
       depth(c, {e.width, e.height, 1, VK_FORMAT_D32_SFLOAT,
                 VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
                 VK_SAMPLE_COUNT_1_BIT, "rig head depth"}) {
@@ -63,6 +65,8 @@ RasterRig::RasterRig(const vk::Context& c, const compute::StrandBuffers& strands
     set.writeSampledImage(gpu::RENDER_BINDING_OPACITY, inputs.opacityView, inputs.sampler);
     set.writeStorageBuffer(gpu::RENDER_BINDING_LIGHT, inputs.lightSpace);
     set.writeSampledImage(gpu::RENDER_BINDING_HEAD_SHADOW, inputs.headShadowView, inputs.headShadowSampler);
+    set.writeSampledImage(gpu::RASTER_BINDING_BOUNCE_FLUX, bounce.fluxView(), bounce.sampler());
+    set.writeSampledImage(gpu::RASTER_BINDING_BOUNCE_POSITION, bounce.positionView(), bounce.sampler());
   };
   pass = std::make_unique<compute::StrandRasterPass>(c, strands, shading, e, settings);
   pass->setDepth(depth.view());

@@ -1,0 +1,27 @@
+#pragma once
+// Contract: draws one instance's head into the head bounce map (HeadBounceMap, shaders/head_bounce.vert/.frag)
+// from the light: the head mesh buffers of its HeadPass, the instance's compute-raster frame block (a
+// storage buffer holding its RenderFrame: light, skin and hair colours, opacity settings, the map's framing
+// headShadowViewProj) and the shadows' opacity maps and LightSpace. draw() goes between
+// HeadBounceMap::begin and end. Owns its descriptor set and pipeline.
+#include <glm/glm.hpp>
+
+#include <memory>
+
+#include "engine/render/head_pass.h"
+#include "engine/render/shadow_inputs.h"
+#include "engine/vk/descriptors.h"
+#include "engine/vk/pipeline.h"
+
+namespace hp::render {
+class HeadBouncePass {
+ public:
+  HeadBouncePass(const vk::Context& ctx, const HeadPass& head, VkBuffer frameBlock, const ShadowInputs& shadows);
+  void draw(VkCommandBuffer cmd, const glm::mat4& headToWorld) const;
+
+ private:
+  const HeadPass* head_;
+  vk::DescriptorSet set_;
+  std::shared_ptr<const vk::GraphicsPipeline> pipeline_;
+};
+}  // namespace hp::render
