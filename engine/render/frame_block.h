@@ -27,7 +27,7 @@ struct LookSettings {
   Scattering scattering = Scattering::Single;
   // Add the sunlight the skin reflects onto the hair (one bounce from the head bounce map; compute raster
   // only, the graphics raster ignores it). docs/SHADING.md "Skin bounce".
-  bool skinBounce = false;
+  bool skinBounce = true;
   void validate() const;             // throws hp::Error naming the field
 };
 

@@ -45,6 +45,7 @@ void OpacitySettings::validate() const {
                 std::to_string(headShadowResolution));
   checkRange(k, 0.0f, 1.0e3f, false, "k");
   checkRange(biasSlices, 0.0f, float(gpu::OPACITY_SLICES), false, "biasSlices");
+  checkRange(deepBiasSlices, 0.0f, float(gpu::OPACITY_SLICES), false, "deepBiasSlices");
   if (format != VK_FORMAT_R32G32B32A32_SFLOAT && format != VK_FORMAT_R16G16B16A16_SFLOAT)
     throw Error("opacity settings: format must be RGBA32F or RGBA16F");
   if (raster != OpacityRaster::Auto && raster != OpacityRaster::Compute && raster != OpacityRaster::Graphics)

@@ -32,7 +32,8 @@ struct OpacitySettings {
   float headOpacity = 0.0f;         // per head fragment, [0, 1e4]
   std::uint32_t headShadowResolution = 1024;  // head depth map texels per side, [16, 8192]
   float k = 1.0f;                   // T = exp(-k alpha), [0, 1e3]
-  float biasSlices = 1.0f;          // lookups move this many slices toward the light, [0, 16]
+  float biasSlices = 1.0f;          // global slices: lookups move this many slices toward the light, [0, 16]
+  float deepBiasSlices = 0.5f;      // deep maps: the same in deep slices, [0, 16] (docs/SHADING.md "Skin bounce")
   // RGBA32F: accurate additive sums (RGBA16F rounds each 0.04 by 17% past alpha 16 and drops it past
   // 128) and measured faster on lavapipe. RGBA16F is accepted for devices where bandwidth matters more.
   VkFormat format = VK_FORMAT_R32G32B32A32_SFLOAT;
@@ -40,11 +41,12 @@ struct OpacitySettings {
   // Deep opacity maps (Yuksel & Keyser 2008), on the compute path (the graphics path draws global slices:
   // ShadowMaps::settings() says which are in effect): the slices start at each texel's first hair and
   // are OPACITY_DEEP_FACTOR times finer, following the hair's surface instead of cutting the whole head
-  // into 16 (docs/SHADING.md "Deep opacity maps"); biasSlices then counts deep slices. Off by default until
-  // multiple scattering lands: measured closer to the reference's direct light, but the missing
-  // multiply-scattered light then shows as a darker frame (docs/SHADING.md). headOpacity (the head in the
-  // slices, drawn at global slice coordinates) does not apply to deep maps.
-  bool deep = false;
+  // into 16 (docs/SHADING.md "Deep opacity maps"); deepBiasSlices is their bias. On by default since the
+  // skin's bounce (LookSettings::skinBounce) supplies the light the reference's multiple scattering adds:
+  // together they are closer to the reference in every view measured (docs/SHADING.md "Skin bounce").
+  // headOpacity (the head in the slices, drawn at global slice coordinates) does not apply to deep maps.
+  bool deep = true;
+  float lookupBias() const { return deep ? deepBiasSlices : biasSlices; }  // the bias of the slices in effect
   void validate() const;            // throws hp::Error naming the field
 };
 }  // namespace hp::render

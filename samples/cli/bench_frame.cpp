@@ -68,6 +68,7 @@ FrameResult benchFrame(const vk::Context& ctx, const FrameCase& c) {
   settings.formats = renderer.formats();
   settings.raster = c.raster;
   settings.opacity.raster = c.opacityRaster;
+  settings.look.skinBounce = c.skinBounce;
   HairSystem hair(ctx, asset, settings);
   renderer.attach(hair);
   DrawView view;

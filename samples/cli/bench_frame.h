@@ -21,6 +21,7 @@ struct FrameCase {
   std::uint32_t msaa = 4;  // graphics only
   std::uint32_t frames = 3;
   render::OpacityRaster opacityRaster = render::OpacityRaster::Auto;  // how strands reach the opacity maps
+  bool skinBounce = true;  // compute only: LookSettings::skinBounce
 };
 
 struct PassTiming {

@@ -20,7 +20,7 @@ std::string fmt(const char* f, double a, double b) {
 }  // namespace
 
 std::string frameCaseName(const FrameCase& c) {
-  if (c.raster == RasterMode::Compute) return "compute";
+  if (c.raster == RasterMode::Compute) return c.skinBounce ? "compute" : "compute, no skin bounce";
   return "graphics msaa" + std::to_string(c.msaa);
 }
 

@@ -1,4 +1,5 @@
-// `hairpipe bench [--strands LIST] [--resolution WxH] [--frames N] [--raster LIST] [--msaa LIST] [--json F]
+// `hairpipe bench [--strands LIST] [--resolution WxH] [--frames N] [--raster LIST] [--msaa LIST]
+// [--skin-bounce off,on] [--json F]
 // [--plot F.svg]`: the whole frame on the default head (bench_frame.h) for each strand count and raster
 // path (graphics once per --msaa value), after one warm-up frame: per pass the GPU-timestamp median
 // (min/max) of N frames, the frame total, each compute pass's achieved bytes/s as a fraction of a
@@ -30,6 +31,7 @@ struct BenchOptions {
   std::vector<std::string> raster{"compute", "graphics"};
   std::vector<std::uint32_t> msaa{4};
   std::string opacityRaster = "auto";
+  std::vector<std::string> skinBounce{"on"};
   std::string json, plot, device;
 };
 
@@ -59,7 +61,11 @@ std::vector<hp::cli::FrameCase> cases(const BenchOptions& o) {
       c.strands = s;
       c.raster = mode;
       if (mode == hp::RasterMode::Compute) {
-        out.push_back(c);
+        for (const std::string& b : o.skinBounce) {
+          if (b != "off" && b != "on") throw hp::Error("bench: --skin-bounce takes off and/or on, got '" + b.substr(0, 40) + "'");
+          c.skinBounce = b == "on";
+          out.push_back(c);
+        }
         continue;
       }
       for (std::uint32_t m : o.msaa) {
@@ -152,6 +158,10 @@ void setup(CLI::App& app) {
   cmd->add_option("--msaa", o->msaa, "Sample counts for the graphics path (comma separated)")->delimiter(',')
       ->capture_default_str();
   cmd->add_option("--opacity-raster", o->opacityRaster, "How strands reach the opacity maps: auto, compute or graphics")
+      ->capture_default_str();
+  cmd->add_option("--skin-bounce", o->skinBounce,
+                  "Compute raster: the skin's bounce off and/or on (comma separated)")
+      ->delimiter(',')
       ->capture_default_str();
   cmd->add_option("--json", o->json, "Write the report as JSON to this file");
   cmd->add_option("--plot", o->plot, "Write an SVG of ms per pass against strand count to this file");

@@ -33,7 +33,7 @@ hp::render::OpacitySettings opacitySettings(const FrameOptions& o) {
     s.strandOpacity = *o.strandOpacity;
   }
   if (o.shadowK) s.k = *o.shadowK;
-  if (o.shadowBias) s.biasSlices = *o.shadowBias;
+  if (o.shadowBias) s.biasSlices = s.deepBiasSlices = *o.shadowBias;  // in the slices in effect
   s.validate();
   return s;
 }
@@ -174,17 +174,18 @@ void addFrameOptions(CLI::App& cmd, FrameOptions& o) {
   cmd.add_option("--scattering", o.scattering,
                  "single, or dual: adds the light the hair in front scattered forward (physical fibre model)");
   cmd.add_option("--skin-bounce", o.skinBounce,
-                 "on or off: adds the sunlight the skin reflects onto the hair (compute raster; default off)");
+                 "on or off: adds the sunlight the skin reflects onto the hair (compute raster; default on)");
   cmd.add_flag("--lines", o.lines, "Draw strands as lines instead of ribbons");
   cmd.add_flag("--guides-only", o.guidesOnly, "Draw the smoothed guides only (no interpolation)");
   cmd.add_flag("--no-shadows", o.noShadows, "Turn the opacity shadow maps off");
   cmd.add_option("--opacity-resolution", o.opacityResolution, "Opacity map texels per side, 16-4096 (default 512)");
-  cmd.add_flag("--deep-opacity", o.deepOpacity,
-               "Deep opacity maps: slices start at each texel's first hair, 4x finer (compute opacity path)");
+  cmd.add_flag("--deep-opacity,!--global-opacity", o.deepOpacity,
+               "Deep opacity maps (default; compute opacity path): slices start at each texel's first hair, 4x finer; "
+               "--global-opacity: 16 slices over the whole hair");
   cmd.add_option("--opacity-raster", o.opacityRaster,
                  "How strands reach the opacity maps: auto (default: compute where its bins fit the device), compute (splats) or graphics (lines)");
   cmd.add_option("--strand-opacity", o.strandOpacity, "Constant opacity a strand adds per opacity-map texel instead of its footprint (width / texel size, the default)");
   cmd.add_option("--shadow-k", o.shadowK, "Extinction k in T = exp(-k alpha) (default 1)");
-  cmd.add_option("--shadow-bias", o.shadowBias, "Shadow lookup bias toward the light, in slices (default 1)");
+  cmd.add_option("--shadow-bias", o.shadowBias, "Shadow lookup bias toward the light, in the slices in effect (default: 0.5 deep slices, 1 global slice)");
 }
 }  // namespace hp::cli

@@ -33,7 +33,7 @@ struct FrameOptions {
   bool lines = false;
   bool guidesOnly = false;
   bool noShadows = false;
-  bool deepOpacity = false;
+  bool deepOpacity = true;
   std::optional<std::uint32_t> opacityResolution;
   std::optional<float> strandOpacity, shadowK, shadowBias;
   std::optional<std::string> raster, opacityRaster;

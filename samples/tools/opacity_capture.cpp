@@ -96,7 +96,8 @@ nlohmann::json sliceJson(const OpacityCapture& c) {
           {"strand_opacity", c.settings.strandOpacity},
           {"strand_opacity_mode", c.settings.footprint ? "footprint" : "constant"},
           {"head_opacity", c.settings.headOpacity},
-          {"bias_slices", c.settings.biasSlices}};
+          {"bias_slices", c.settings.biasSlices},
+          {"deep_bias_slices", c.settings.deepBiasSlices}};
 }
 
 std::vector<std::byte> bytesOf(const std::string& s) {

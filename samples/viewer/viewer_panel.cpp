@@ -77,7 +77,8 @@ void shadowSection(Tunables& t, PanelChanges& c) {
   c.opacity |= ImGui::SliderFloat("strand opacity", &t.opacity.strandOpacity, 0.001f, 0.5f, "%.3f",
                                   ImGuiSliderFlags_Logarithmic);
   c.opacity |= ImGui::SliderFloat("extinction k", &t.opacity.k, 0.0f, 4.0f);
-  c.opacity |= ImGui::SliderFloat("bias (slices)", &t.opacity.biasSlices, 0.0f, 4.0f);
+  float& bias = t.opacity.deep ? t.opacity.deepBiasSlices : t.opacity.biasSlices;
+  c.opacity |= ImGui::SliderFloat(t.opacity.deep ? "bias (deep slices)" : "bias (slices)", &bias, 0.0f, 4.0f);
 }
 
 void lookSection(Tunables& t, PanelChanges& c) {

@@ -39,6 +39,7 @@ RenderRequest smallFrame() {
   // The paper's model: its exact S costs ~1 us on the CPU, the physical model's far more (its frames are
   // measured against the reference in docs/SHADING.md, not here).
   r.lutMode = LutMode::Float;
+  r.opacity.deep = false;  // see kLuminanceRatioLow
   return r;
 }
 
@@ -67,11 +68,13 @@ void expectSameFrames(const ExportedFrame& a, const ExportedFrame& b) {
   EXPECT_EQ(a.fibreModel, b.fibreModel);
 }
 
-// Measured on lavapipe with these settings (the paper's model, float LUTs, 16 spp, 4 bounces): real time against
-// the reference 21.3 dB, luminance ratio 0.866 (gcc; 21.1 dB and 0.849 in the clang sanitizer build, whose
-// CPU-built head and strands differ in the last bits); seed 1 against seed 2: 21.5 dB, ratio 1.01 (16 spp
-// is noise-limited). The ratio was 1.04 before the ambient term was made physical (docs/SHADING.md): the
-// real-time frame has no multiple scattering (issue 12), so it now sits near the lower bound.
+// Measured on lavapipe with these settings (the paper's model, float LUTs, global opacity slices, the skin's
+// bounce on; 16 spp, 4 bounces): real time against the reference 21.6 dB, luminance ratio 0.890; seed 1
+// against seed 2: 21.5 dB, ratio 1.01 (16 spp is noise-limited). Without the skin's bounce it was 0.866
+// (0.849 in the clang sanitizer build, whose CPU-built head and strands differ in the last bits). The test
+// keeps global slices, the lighting its bounds were set for: with the default deep maps (bias 0.5) this
+// sparse 2,000-strand frame measures 0.805; the default lighting is measured against the reference by the
+// physical-model tests below and in docs/SHADING.md "Skin bounce".
 constexpr double kMinPsnrAgainstReference = 19.0, kMinPsnrBetweenSeeds = 19.0;
 constexpr double kLuminanceRatioLow = 0.85, kLuminanceRatioHigh = 1.25;
 
@@ -147,8 +150,8 @@ TEST_F(VulkanTest, FrameExportRoundTripsAndTheRealTimeHairMatchesTheReference) {
   std::filesystem::remove_all(dir);
 }
 
-// Measured on lavapipe at 64x48, 4 spp: luminance ratio 0.84, red/blue 1.33 against 1.77 (the missing
-// multiple scattering); with the old ambient term, albedo exp(-2 sigma_a) unoccluded (80x60, 16 spp): 1.45 and 3.19 against
+// Measured on lavapipe at 64x48, 4 spp: luminance ratio 0.847, red/blue 1.46 against 1.74 with the default
+// deep maps and skin bounce (0.84 and 1.33 against 1.77 with global slices and no bounce); with the old ambient term, albedo exp(-2 sigma_a) unoccluded (80x60, 16 spp): 1.45 and 3.19 against
 // 1.80. The bounds separate the two.
 TEST_F(VulkanTest, DensePhysicalHairMatchesTheReferenceLuminanceAndHue) {
   RenderRequest request;
@@ -188,9 +191,8 @@ TEST_F(VulkanTest, SkinBounceBringsTheDefaultViewTowardTheReferencesSkinLight) {
   request.captureFrame = true;
   request.look.ambient = 0.0f;
   request.opacity.raster = render::OpacityRaster::Compute;
-  request.opacity.deep = true;
-  request.opacity.biasSlices = 0.5f;
   const HairAsset asset = buildSceneAsset(request.scene);
+  request.look.skinBounce = false;
   const RenderResult without = renderStill(*ctx, asset, request);
   request.look.skinBounce = true;
   const RenderResult with = renderStill(*ctx, asset, request);

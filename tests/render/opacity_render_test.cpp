@@ -98,16 +98,22 @@ TEST_F(VulkanTest, HairAwayFromTheLightIsDarkerThanTheLitSide) {
   EXPECT_LT(lit.ratio(), 1.0 + 1e-9);
 }
 
-TEST_F(VulkanTest, HairUnderOtherHairIsDarkerThanHairOnTop) {
+// Global and deep slices. "Hair on top is mostly lit" (> 0.6 of its unshadowed light) holds for global
+// slices, for which this test's doubled constant opacity was sized; deep slices, 4x finer and starting at
+// the hair's surface, count the strands beside a fibre in its own deep slice with that large constant per
+// crossing: measured 0.35 at their default bias of 0.5 (0.43 at 1). With the physical footprint opacity
+// the default deep maps match the reference's direct light on the lit surface (0.99, docs/SHADING.md).
+void expectHairUnderOtherHairDarker(const hp::vk::Context& ctx, bool deep) {
   const hp::HairAsset asset = hairOnly();
   // Light from the side, seen from behind: the groom hangs down the back of the head, so the strands
   // nearest the light are on top and the ones across the hair volume from it are under it. (A light
   // from above ran along the hanging strands of the combed-back groom and lit neither.) Twice the
   // opacity of the other test makes the layering of only 3,000 strands measurable.
   const glm::vec3 light(1.0f, 0.1f, 0.0f);
-  const hp::RenderRequest onRequest = request(light, 180.0f, true, 0.6f);
-  const hp::RenderResult on = hp::renderStill(*ctx, asset, onRequest);
-  const hp::RenderResult off = hp::renderStill(*ctx, asset, request(light, 180.0f, false, 0.6f));
+  hp::RenderRequest onRequest = request(light, 180.0f, true, 0.6f);
+  onRequest.opacity.deep = deep;
+  const hp::RenderResult on = hp::renderStill(ctx, asset, onRequest);
+  const hp::RenderResult off = hp::renderStill(ctx, asset, request(light, 180.0f, false, 0.6f));
   // The image side the light comes from, from the light direction in view space.
   const hp::CameraMatrices cam = hp::orbitCamera(onRequest.scene.camera, float(kOpacityWidth) / float(kOpacityHeight));
   const bool lightFromRight = (cam.view * glm::vec4(light, 0.0f)).x > 0.0f;
@@ -129,8 +135,15 @@ TEST_F(VulkanTest, HairUnderOtherHairIsDarkerThanHairOnTop) {
   const Region lower = sumRegion(on, off, farFromLight);
   ASSERT_GT(upper.pixels, 100u);
   ASSERT_GT(lower.pixels, 100u);
+  std::printf("%s slices: under %.3f, on top %.3f of their unshadowed light\n", deep ? "deep" : "global",
+              lower.ratio(), upper.ratio());
   EXPECT_LT(lower.ratio(), upper.ratio() - 0.1) << "under " << lower.ratio() << " on top " << upper.ratio();
-  EXPECT_GT(upper.ratio(), 0.6) << "hair on top is mostly lit";
+  EXPECT_GT(upper.ratio(), deep ? 0.3 : 0.6) << "hair on top keeps the most light";
+}
+
+TEST_F(VulkanTest, HairUnderOtherHairIsDarkerThanHairOnTop) {
+  expectHairUnderOtherHairDarker(*ctx, false);
+  expectHairUnderOtherHairDarker(*ctx, true);
 }
 
 // A narrow spot at the camera, aimed at the camera's target (the back of the hair): its cone
