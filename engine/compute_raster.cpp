@@ -20,7 +20,7 @@ std::vector<vk::Buffer> ComputeRaster::makeFrameBlocks(const vk::Context& ctx, s
 
 ComputeRaster::ComputeRaster(const vk::Context& ctx, const RendererSettings& settings,
                              const render::ShadowMaps& shadows, VkExtent2D extent, VkImageView depth,
-                             std::span<HairInstance* const> instances)
+                             std::span<HairInstance* const> instances, vk::PipelineLibrary* library)
     : ctx_(ctx),
       shadows_(shadows),
       instances_(instances.begin(), instances.end()),
@@ -28,7 +28,7 @@ ComputeRaster::ComputeRaster(const vk::Context& ctx, const RendererSettings& set
       depth_(depth),
       bounceMap_(ctx),
       pass_(ctx, sources(), extent, settings.rasterSettings),
-      bounce_(makeBouncePasses()),
+      bounce_(makeBouncePasses(library)),
       composite_(ctx, settings.formats) {
   pass_.setDepth(depth);
   composite_.setInput(pass_.output().view());
@@ -59,11 +59,11 @@ std::vector<compute::RasterSource> ComputeRaster::sources() const {
   return sources;
 }
 
-std::vector<render::HeadBouncePass> ComputeRaster::makeBouncePasses() const {
+std::vector<render::HeadBouncePass> ComputeRaster::makeBouncePasses(vk::PipelineLibrary* library) const {
   std::vector<render::HeadBouncePass> passes;
   passes.reserve(instances_.size());
   for (std::size_t i = 0; i < instances_.size(); ++i)
-    passes.emplace_back(ctx_, instances_[i]->headPass(), frames_[i].handle(), shadows_.inputs());
+    passes.emplace_back(ctx_, instances_[i]->headPass(), frames_[i].handle(), shadows_.inputs(), library);
   return passes;
 }
 

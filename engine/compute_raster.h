@@ -28,8 +28,10 @@ class HairInstance;
 
 class ComputeRaster {
  public:
+  // library: where the head bounce pipeline is shared (the Renderer's; null: made here).
   ComputeRaster(const vk::Context& ctx, const RendererSettings& settings, const render::ShadowMaps& shadows,
-                VkExtent2D extent, VkImageView depth, std::span<HairInstance* const> instances);
+                VkExtent2D extent, VkImageView depth, std::span<HairInstance* const> instances,
+                vk::PipelineLibrary* library = nullptr);
 
   void record(VkCommandBuffer cmd, const View& view, const LightSpec& light, const render::HeadShadowView& headShadow,
               vk::GpuProfiler* profiler) const;
@@ -45,7 +47,7 @@ class ComputeRaster {
  private:
   static std::vector<vk::Buffer> makeFrameBlocks(const vk::Context& ctx, std::size_t count);
   std::vector<compute::RasterSource> sources() const;
-  std::vector<render::HeadBouncePass> makeBouncePasses() const;
+  std::vector<render::HeadBouncePass> makeBouncePasses(vk::PipelineLibrary* library) const;
   void recordFrameBlocks(VkCommandBuffer cmd, const View& view, const LightSpec& light,
                          const render::HeadShadowView& headShadow, bool bounce) const;
   void recordBounce(VkCommandBuffer cmd, vk::GpuProfiler* profiler) const;

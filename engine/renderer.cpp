@@ -46,7 +46,7 @@ void Renderer::setRasterTarget(VkExtent2D extent, VkImageView depth, std::span<H
   if (raster_ != RasterMode::Compute) throw Error("Renderer::setRasterTarget: the raster mode is not compute");
   for (const HairInstance* i : instances)
     if (!i || &i->renderer_ != this) throw Error("Renderer: an instance is null or belongs to another Renderer");
-  auto target = std::make_shared<ComputeRaster>(ctx_, settings_, *shadows_, extent, depth, instances);
+  auto target = std::make_shared<ComputeRaster>(ctx_, settings_, *shadows_, extent, depth, instances, &pipelines_);
   if (rasterTarget_) retire(rasterTarget_);  // frames in flight may still use its buffers and descriptors
   rasterTarget_ = std::move(target);
 }

@@ -41,7 +41,7 @@ vec3 headBounceSkinBelow(vec3 p, vec3 L) {
 vec3 headBounceLight(vec3 p, float alphaHere, float alphaLayer) {
   vec2 centre;
   if (frame.headBounce.x == 0.0 || !headBounceTexel(p, centre)) return vec3(0.0);
-  float lift = frame.headBounce.y;
+  float lift = max(frame.headBounce.y, 1e-6);  // > 0: no division by zero for a patch at p
   const float PI = 3.14159265;
   const float rings = float(RENDER_BOUNCE_RINGS), spokes = float(RENDER_BOUNCE_SPOKES);
   vec3 sum = vec3(0.0);

@@ -26,7 +26,8 @@ struct LookSettings {
   // only; the others draw single scattering either way). docs/SHADING.md "Multiple scattering".
   Scattering scattering = Scattering::Single;
   // Add the sunlight the skin reflects onto the hair (one bounce from the head bounce map; compute raster
-  // only, the graphics raster ignores it). docs/SHADING.md "Skin bounce".
+  // only, the graphics raster ignores it; needs the shadows on and a head, as the map is framed by the
+  // head's depth shadow map). docs/SHADING.md "Skin bounce".
   bool skinBounce = true;
   void validate() const;             // throws hp::Error naming the field
 };

@@ -20,7 +20,7 @@ const vk::Binding kBindings[] = {
 }  // namespace
 
 HeadBouncePass::HeadBouncePass(const vk::Context& ctx, const HeadPass& head, VkBuffer frameBlock,
-                               const ShadowInputs& shadows)
+                               const ShadowInputs& shadows, vk::PipelineLibrary* library)
     : head_(&head), set_(ctx, kBindings, "head bounce") {
   set_.writeStorageBuffer(gpu::RENDER_BINDING_FRAME, frameBlock);
   set_.writeSampledImage(gpu::RENDER_BINDING_OPACITY, shadows.opacityView, shadows.sampler);
@@ -40,7 +40,7 @@ HeadBouncePass::HeadBouncePass(const vk::Context& ctx, const HeadPass& head, VkB
   desc.sets = {set_.layout()};
   desc.pushSize = sizeof(glm::mat4);
   desc.name = "head bounce";
-  pipeline_ = vk::makeGraphicsPipeline(ctx, nullptr, desc);
+  pipeline_ = vk::makeGraphicsPipeline(ctx, library, desc);
 }
 
 void HeadBouncePass::draw(VkCommandBuffer cmd, const glm::mat4& headToWorld) const {

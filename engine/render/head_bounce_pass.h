@@ -12,11 +12,13 @@
 #include "engine/render/shadow_inputs.h"
 #include "engine/vk/descriptors.h"
 #include "engine/vk/pipeline.h"
+#include "engine/vk/pipeline_library.h"
 
 namespace hp::render {
 class HeadBouncePass {
  public:
-  HeadBouncePass(const vk::Context& ctx, const HeadPass& head, VkBuffer frameBlock, const ShadowInputs& shadows);
+  HeadBouncePass(const vk::Context& ctx, const HeadPass& head, VkBuffer frameBlock, const ShadowInputs& shadows,
+                 vk::PipelineLibrary* library = nullptr);
   void draw(VkCommandBuffer cmd, const glm::mat4& headToWorld) const;
 
  private:

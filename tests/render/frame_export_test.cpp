@@ -191,6 +191,8 @@ TEST_F(VulkanTest, SkinBounceBringsTheDefaultViewTowardTheReferencesSkinLight) {
   request.captureFrame = true;
   request.look.ambient = 0.0f;
   request.opacity.raster = render::OpacityRaster::Compute;
+  request.opacity.deep = true;  // the lighting measured (the defaults today, pinned)
+  request.opacity.deepBiasSlices = 0.5f;
   const HairAsset asset = buildSceneAsset(request.scene);
   request.look.skinBounce = false;
   const RenderResult without = renderStill(*ctx, asset, request);

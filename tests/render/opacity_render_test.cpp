@@ -39,6 +39,7 @@ hp::RenderRequest request(const glm::vec3& towardLight, float orbitDeg, bool sha
   r.opacity.resolution = 256;
   r.opacity.footprint = false;
   r.opacity.strandOpacity = strandOpacity;  // 0.3: 3,000 strands stand in for the default 20,000 at 0.04
+  r.look.skinBounce = false;  // on/off ratios measure the shadows alone (the bounce needs shadows on)
   return r;
 }
 
