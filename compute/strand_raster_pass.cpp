@@ -18,6 +18,7 @@ constexpr VkDescriptorType kStorage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
 constexpr VkDescriptorType kSampled = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
 // The raster's own bindings follow the shading bindings of shaders/shared/render.h in one set.
 static_assert(gpu::RASTER_BINDING_SCREEN > gpu::RENDER_BINDING_HEAD_SHADOW, "raster bindings overlap render.h's");
+static_assert(gpu::RASTER_BINDING_SHADE_ARGS < gpu::RENDER_BINDING_BOUNCE_FLUX, "raster bindings overlap render.h's");
 // No uniform buffers and no push constants: lavapipe would recompile each step per dispatch
 // (docs/DESIGN.md, driver notes); the frame block, the Marschner block and the per-chunk parameters are
 // read-only storage buffers.
@@ -48,8 +49,8 @@ const vk::Binding kBindings[] = {
     {gpu::RASTER_BINDING_SHADE_FLAGS, kStorage, kCompute},
     {gpu::RASTER_BINDING_SHADE_LIST, kStorage, kCompute},
     {gpu::RASTER_BINDING_SHADE_ARGS, kStorage, kCompute},
-    {gpu::RASTER_BINDING_BOUNCE_FLUX, kSampled, kCompute},
-    {gpu::RASTER_BINDING_BOUNCE_POSITION, kSampled, kCompute},
+    {gpu::RENDER_BINDING_BOUNCE_FLUX, kSampled, kCompute},
+    {gpu::RENDER_BINDING_BOUNCE_POSITION, kSampled, kCompute},
 };
 constexpr VkBufferUsageFlags kStorageUsage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
 constexpr VkBufferUsageFlags kArmedUsage =

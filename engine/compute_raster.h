@@ -7,8 +7,8 @@
 // retired after its frames) when an instance in it changes its strands or material or is destroyed.
 //   record(cmd, view, light, headShadow)  outside rendering, after the heads were drawn into the depth
 //                                         image (in ImageUse::ComputeSampled): per-instance frame blocks,
-//                                         the head bounce map when an instance's look asks for the skin's
-//                                         bounce, then the rasterizer; leaves image() in ImageUse::FragmentSampled
+//                                         then the rasterizer (which gathers the skin's bounce from the
+//                                         shadows' head bounce map); leaves image() in ImageUse::FragmentSampled
 //   recordComposite(cmd, extent)          inside a rendering of the application's attachments
 #include <memory>
 #include <span>
@@ -16,8 +16,6 @@
 
 #include "compute/strand_raster_pass.h"
 #include "engine/render/composite_pass.h"
-#include "engine/render/head_bounce_map.h"
-#include "engine/render/head_bounce_pass.h"
 #include "engine/render/head_shadow_view.h"
 #include "engine/render/shadow_maps.h"
 #include "engine/renderer_settings.h"
@@ -28,10 +26,8 @@ class HairInstance;
 
 class ComputeRaster {
  public:
-  // library: where the head bounce pipeline is shared (the Renderer's; null: made here).
   ComputeRaster(const vk::Context& ctx, const RendererSettings& settings, const render::ShadowMaps& shadows,
-                VkExtent2D extent, VkImageView depth, std::span<HairInstance* const> instances,
-                vk::PipelineLibrary* library = nullptr);
+                VkExtent2D extent, VkImageView depth, std::span<HairInstance* const> instances);
 
   void record(VkCommandBuffer cmd, const View& view, const LightSpec& light, const render::HeadShadowView& headShadow,
               vk::GpuProfiler* profiler) const;
@@ -47,20 +43,15 @@ class ComputeRaster {
  private:
   static std::vector<vk::Buffer> makeFrameBlocks(const vk::Context& ctx, std::size_t count);
   std::vector<compute::RasterSource> sources() const;
-  std::vector<render::HeadBouncePass> makeBouncePasses(vk::PipelineLibrary* library) const;
   void recordFrameBlocks(VkCommandBuffer cmd, const View& view, const LightSpec& light,
-                         const render::HeadShadowView& headShadow, bool bounce) const;
-  void recordBounce(VkCommandBuffer cmd, vk::GpuProfiler* profiler) const;
-  bool wantsBounce(const render::HeadShadowView& headShadow) const;
+                         const render::HeadShadowView& headShadow) const;
 
   const vk::Context& ctx_;
   const render::ShadowMaps& shadows_;
   std::vector<HairInstance*> instances_;
   std::vector<vk::Buffer> frames_;  // per instance: its gpu::RenderFrame, written with vkCmdUpdateBuffer per view
   VkImageView depth_;
-  render::HeadBounceMap bounceMap_;  // before pass_: its descriptors name the map
   compute::StrandRasterPass pass_;
-  std::vector<render::HeadBouncePass> bounce_;  // per instance
   render::CompositePass composite_;
 };
 }  // namespace hp

@@ -97,14 +97,14 @@ void recordShadowPasses(const vk::Context& ctx, VkCommandBuffer cmd, const rende
   const VkBuffer light = maps.lightSpace().handle();
   if (profiler) profiler->begin(cmd, "bounds");
   vk::memoryBarrier(ctx, cmd, vk::BufferUse::ComputeWrite, vk::BufferUse::ComputeRead);        // strand positions
-  vk::bufferBarrier(ctx, cmd, light, vk::BufferUse::VertexRead, vk::BufferUse::ComputeWrite);  // last frame's readers
+  vk::bufferBarrier(ctx, cmd, light, vk::BufferUse::GraphicsRead, vk::BufferUse::ComputeWrite);  // last frame's readers
   for (const ShadowCaster& c : casters) {
     c.bounds->recordReduce(cmd, shadowLight);
     // Atomics of the next caster after these: order them like any two writers.
     vk::bufferBarrier(ctx, cmd, light, vk::BufferUse::ComputeWrite, vk::BufferUse::ComputeWrite);
   }
   casters.front().bounds->recordFinalize(cmd, shadowLight, framing);
-  vk::bufferBarrier(ctx, cmd, light, vk::BufferUse::ComputeWrite, vk::BufferUse::VertexRead);
+  vk::bufferBarrier(ctx, cmd, light, vk::BufferUse::ComputeWrite, vk::BufferUse::GraphicsRead);
   if (maps.resolvePass()) vk::bufferBarrier(ctx, cmd, light, vk::BufferUse::ComputeWrite, vk::BufferUse::ComputeRead);
   if (profiler) profiler->end(cmd);
 

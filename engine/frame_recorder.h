@@ -10,7 +10,7 @@
 //                        compute and resolved: OpacitySettings::raster). The strand positions'
 //                        last ComputeWrite must be made visible to VertexRead first (makeStrandsDrawable);
 //                        this adds ComputeRead for the bounds and splats. Leaves LightSpace in
-//                        BufferUse::VertexRead (and ComputeRead) and the maps in ImageUse::FragmentSampled.
+//                        BufferUse::GraphicsRead (and ComputeRead) and the maps in ImageUse::FragmentSampled.
 #include <volk.h>
 
 #include <glm/glm.hpp>

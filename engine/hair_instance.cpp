@@ -52,6 +52,10 @@ HairInstance::HairInstance(Renderer& renderer, const HairAsset& asset, const Ins
                                 strands().layout().verticesPerStrand, renderer.shadows().settings());
   head_ = std::make_shared<render::HeadPass>(ctx, asset.head, frames_, renderer.shadows().inputs(),
                                              rs.formats, &renderer.pipelines());
+  bounceFrame_ = vk::Buffer(ctx, sizeof(gpu::RenderFrame), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                            vk::MemoryKind::DeviceLocal, "head bounce frame");
+  bounce_ = std::make_unique<render::HeadBouncePass>(ctx, *head_, bounceFrame_.handle(), renderer.shadows().inputs(),
+                                                     &renderer.pipelines());
   strandPass_ = makeStrandPass(*geometry_, *marschner_);
 }
 

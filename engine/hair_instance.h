@@ -16,6 +16,7 @@
 #include "compute/strand_buffers.h"
 #include "compute/tessellate_pass.h"
 #include "engine/hair/hair_asset.h"
+#include "engine/render/head_bounce_pass.h"
 #include "engine/render/head_pass.h"
 #include "engine/render/marschner_textures.h"
 #include "engine/render/opacity_pass.h"
@@ -88,6 +89,10 @@ class HairInstance {
   vk::Buffer frames_;  // framesInFlight x maxViewsPerFrame gpu::RenderFrame slots, persistently mapped
   std::uint32_t frameStride_ = 0;
   std::shared_ptr<render::HeadPass> head_;
+  // The head bounce map's draw of this head and the frame block it reads (light, colours, opacity settings,
+  // the map's framing), written by Renderer::recordShadows with vkCmdUpdateBuffer.
+  vk::Buffer bounceFrame_;
+  std::unique_ptr<render::HeadBouncePass> bounce_;
   std::shared_ptr<render::StrandPass> strandPass_;
 };
 }  // namespace hp

@@ -46,7 +46,7 @@ void Renderer::setRasterTarget(VkExtent2D extent, VkImageView depth, std::span<H
   if (raster_ != RasterMode::Compute) throw Error("Renderer::setRasterTarget: the raster mode is not compute");
   for (const HairInstance* i : instances)
     if (!i || &i->renderer_ != this) throw Error("Renderer: an instance is null or belongs to another Renderer");
-  auto target = std::make_shared<ComputeRaster>(ctx_, settings_, *shadows_, extent, depth, instances, &pipelines_);
+  auto target = std::make_shared<ComputeRaster>(ctx_, settings_, *shadows_, extent, depth, instances);
   if (rasterTarget_) retire(rasterTarget_);  // frames in flight may still use its buffers and descriptors
   rasterTarget_ = std::move(target);
 }
@@ -157,6 +157,32 @@ void Renderer::recordShadows(VkCommandBuffer cmd, std::uint64_t frame, const Lig
   framing.resolution = opacity.resolution;
   framing.marginWorld = 0.5f * widest * gpu::WIDTH_SCALE_MAX;
   recordShadowPasses(ctx_, cmd, *shadows_, casters, shadowLightOf(light), framing, profiler, headView);
+  recordHeadBounce(cmd, light, instances, headView, profiler);
+}
+
+void Renderer::recordHeadBounce(VkCommandBuffer cmd, const LightSpec& light, std::span<HairInstance* const> instances,
+                                const render::HeadShadowView& headView, vk::GpuProfiler* profiler) {
+  const bool wanted = std::any_of(instances.begin(), instances.end(),
+                                  [](const HairInstance* i) { return i->settings_.look.skinBounce; });
+  if (!wanted || headView.params.x == 0.0f) return;  // no head (or shadows off): nothing to bounce from
+  if (profiler) profiler->begin(cmd, "head bounce");
+  // The blocks the bounce draws read: the light, colours and opacity settings, the map's framing.
+  for (HairInstance* i : instances) {
+    gpu::RenderFrame block = render::makeRenderFrame(CameraMatrices{}, {1, 1}, light, i->settings_.material,
+                                                     i->settings_.look, i->strands().layout().verticesPerStrand,
+                                                     shadows_->settings());
+    block.headShadowViewProj = headView.viewProj;
+    block.headShadow = headView.params;
+    const VkBuffer buffer = i->bounceFrame_.handle();
+    vk::bufferBarrier(ctx_, cmd, buffer, vk::BufferUse::GraphicsRead, vk::BufferUse::TransferDst);
+    ctx_.fn().vkCmdUpdateBuffer(cmd, buffer, 0, sizeof(block), &block);
+    vk::bufferBarrier(ctx_, cmd, buffer, vk::BufferUse::TransferDst, vk::BufferUse::GraphicsRead);
+  }
+  const render::HeadBounceMap& map = shadows_->bounceMap();
+  map.begin(cmd);
+  for (HairInstance* i : instances) i->bounce_->draw(cmd, i->headToWorld());
+  map.end(cmd);
+  if (profiler) profiler->end(cmd);
 }
 
 void Renderer::recordDraw(VkCommandBuffer cmd, std::uint64_t frame, const View& view,
@@ -171,6 +197,7 @@ void Renderer::recordDraw(VkCommandBuffer cmd, std::uint64_t frame, const View& 
                                      i->strands().layout().verticesPerStrand, shadows_->settings());
     block->headShadowViewProj = headView.viewProj;
     block->headShadow = headView.params;
+    block->headBounce = render::headBounceParams(headView, i->settings_.look.skinBounce);
     const std::uint32_t offset = i->frameOffset(frame, view.index);
     if (profiler) profiler->begin(cmd, "head");
     i->head_->draw(cmd, view.extent, i->headToWorld(), offset);

@@ -106,6 +106,9 @@ class Renderer {
   // rebuilt: nothing may throw here); recordRaster then asks for setRasterTarget().
   void forgetInstance(const HairInstance& instance) noexcept;
   const ComputeRaster& target() const;
+  // The heads into the head bounce map when an instance's look asks for the skin's bounce (after the shadows).
+  void recordHeadBounce(VkCommandBuffer cmd, const LightSpec& light, std::span<HairInstance* const> instances,
+                        const render::HeadShadowView& headView, vk::GpuProfiler* profiler);
 
   struct Lut {
     HairMaterial material;

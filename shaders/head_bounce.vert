@@ -4,7 +4,7 @@
 #include "shared/render.h"
 #include "opacity_lookup.glsl"
 
-// Storage blocks: the compute raster's frame block (engine/compute_raster.cpp) is a storage buffer.
+// A storage block: the instance's head bounce frame block (engine/hair_instance.h), written on the device.
 layout(std140, binding = RENDER_BINDING_FRAME) readonly buffer Frame { RenderFrame frame; };
 layout(std430, binding = RENDER_BINDING_POSITIONS) readonly buffer Positions { vec4 positions[]; };
 layout(std430, binding = RENDER_BINDING_TANGENTS) readonly buffer Normals { vec4 normals[]; };

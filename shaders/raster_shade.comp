@@ -22,8 +22,8 @@ layout(binding = RENDER_BINDING_LUT_N0) uniform sampler2D lutN0;
 layout(binding = RENDER_BINDING_LUT_N1) uniform sampler2D lutN1;
 layout(binding = RENDER_BINDING_OPACITY) uniform sampler2DArray opacityMaps;
 layout(binding = RENDER_BINDING_HEAD_SHADOW) uniform sampler2DShadow headShadowMap;
-layout(binding = RASTER_BINDING_BOUNCE_FLUX) uniform sampler2D bounceFlux;
-layout(binding = RASTER_BINDING_BOUNCE_POSITION) uniform sampler2D bouncePosition;
+layout(binding = RENDER_BINDING_BOUNCE_FLUX) uniform sampler2D bounceFlux;
+layout(binding = RENDER_BINDING_BOUNCE_POSITION) uniform sampler2D bouncePosition;
 layout(std430, binding = RENDER_BINDING_LIGHT) readonly buffer Light { LightSpace light; };
 layout(std430, binding = RENDER_BINDING_POSITIONS) readonly buffer Positions { vec4 positions[]; };
 layout(std430, binding = RENDER_BINDING_TANGENTS) readonly buffer Tangents { vec4 tangents[]; };
@@ -34,27 +34,14 @@ layout(std430, binding = RASTER_BINDING_SHADE_ARGS) readonly buffer ShadeArgs { 
 #include "hair_shading.glsl"
 #include "head_bounce.glsl"
 
-float alphaAt(OpacityVertex o) {
-  return frame.options.w != 0u ? opacityAlphaDeep(opacityMaps, o.uvw, o.s, frame.strand.w)
-                               : opacityAlpha(opacityMaps, o.uvw, o.w0, o.w1, o.w2, o.w3);
-}
-
 void main() {
   uint n = hpThreadId(RASTER_WORKGROUP_SIZE);
   if (n >= shadeArgs[params.chunkIndex].w) return;
   uint global = shadeList[params.firstVertex + n];
   uint i = global - params.firstVertex;
   vec4 pos = positions[i];
-  OpacityVertex o = opacityVertex(light, pos.xyz, frame.strand.w, frame.options.y != 0u);
-  float alpha = alphaAt(o);
-  vec3 bounce = vec3(0.0);
-  if (frame.headBounce.x != 0.0) {
-    vec3 L = sampleLight(frame.lightDirection, frame.lightPosition, frame.lightSpot, pos.xyz).L;
-    vec3 below = headBounceSkinBelow(pos.xyz, L);
-    float layer = alphaAt(opacityVertex(light, below, frame.strand.w, frame.options.y != 0u)) - alpha;
-    bounce = headBounceLight(pos.xyz, alpha, max(layer, 0.0));
-  }
+  float alpha = frameOpacityAlpha(pos.xyz);
   vec3 radiance = hairRadiance(pos.xyz, tangents[i].xyz, attributes[i / params.verticesPerStrand].colorScale, alpha,
-                               bounce);
+                               headBounceAt(pos.xyz, alpha));
   colors[global] = uvec2(packHalf2x16(radiance.rg), packHalf2x16(vec2(radiance.b, 0.0)));
 }

@@ -3,7 +3,7 @@
 // rasterizer's), L and the light's cone/distance scale per fragment for a spot. The ribbon's pixel coverage becomes a
 // sample mask with MSAA (dithered per strand and pixel, see coverageMask), alpha without. Transmittance T = exp(-k alpha) from the opacity maps with the
 // per-vertex slice weights (opacity_lookup.glsl), times the head's occlusion (head_shadow.glsl); the
-// ambient term is not shadowed.
+// ambient term is not shadowed. Plus the sunlight the skin reflects (head_bounce.glsl) when the frame asks.
 #include "shared/render.h"
 #include "shared/marschner.h"
 #include "marschner.glsl"
@@ -17,6 +17,9 @@ layout(binding = RENDER_BINDING_LUT_N0) uniform sampler2D lutN0;
 layout(binding = RENDER_BINDING_LUT_N1) uniform sampler2D lutN1;
 layout(binding = RENDER_BINDING_OPACITY) uniform sampler2DArray opacityMaps;
 layout(binding = RENDER_BINDING_HEAD_SHADOW) uniform sampler2DShadow headShadowMap;
+layout(binding = RENDER_BINDING_BOUNCE_FLUX) uniform sampler2D bounceFlux;
+layout(binding = RENDER_BINDING_BOUNCE_POSITION) uniform sampler2D bouncePosition;
+layout(std430, binding = RENDER_BINDING_LIGHT) readonly buffer Light { LightSpace light; };
 
 layout(location = 0) in vec3 inWorld;
 layout(location = 1) in vec3 inTangent;
@@ -29,6 +32,7 @@ layout(location = 10) in float inSlice;
 layout(push_constant) uniform Push { StrandDrawPush push; };
 layout(location = 0) out vec4 outColor;
 #include "hair_shading.glsl"
+#include "head_bounce.glsl"
 
 // Coverage c of n samples as a mask of round(c n + dither) bits, rotated by a hash of the strand and
 // the pixel. Plain alpha-to-coverage gives every strand with the same alpha the same mask, so stacked
@@ -48,7 +52,7 @@ void main() {
                     ? opacityAlphaDeep(opacityMaps, inLightUvw, inSlice, frame.strand.w)
                     : opacityAlpha(opacityMaps, inLightUvw, inSliceWeights[0], inSliceWeights[1], inSliceWeights[2],
                                    inSliceWeights[3]);
-  vec3 radiance = hairRadiance(inWorld, inTangent, inColorScale, alpha, vec3(0.0));  // no skin bounce here
+  vec3 radiance = hairRadiance(inWorld, inTangent, inColorScale, alpha, headBounceAt(inWorld, alpha));
   if (push.samples > 1u) {
     uint mask = coverageMask(inCoverage, push.samples);
     if (mask == 0u) discard;

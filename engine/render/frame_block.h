@@ -25,9 +25,9 @@ struct LookSettings {
   // Dual: add the light the hair in front of a fibre scattered forward onto it (physical fibre model
   // only; the others draw single scattering either way). docs/SHADING.md "Multiple scattering".
   Scattering scattering = Scattering::Single;
-  // Add the sunlight the skin reflects onto the hair (one bounce from the head bounce map; compute raster
-  // only, the graphics raster ignores it; needs the shadows on and a head, as the map is framed by the
-  // head's depth shadow map). docs/SHADING.md "Skin bounce".
+  // Add the sunlight the skin reflects onto the hair (one bounce from the head bounce map, both rasters;
+  // needs the shadows on and a head, as the map is drawn with the head's depth shadow map and framed by
+  // it). docs/SHADING.md "Skin bounce".
   bool skinBounce = true;
   void validate() const;             // throws hp::Error naming the field
 };

@@ -29,6 +29,11 @@ VkRenderingAttachmentInfo cleared(VkImageView view) {
 constexpr VkImageUsageFlags kColorUsage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT;
 }  // namespace
 
+glm::vec4 headBounceParams(const HeadShadowView& view, bool skinBounce) {
+  const bool on = skinBounce && view.params.x != 0.0f;
+  return {on ? 1.0f : 0.0f, view.extentWorld / float(gpu::RENDER_BOUNCE_RESOLUTION), 0.0f, 0.0f};
+}
+
 HeadBounceMap::HeadBounceMap(const vk::Context& ctx)
     : ctx_(&ctx),
       flux_(makeImage(ctx, kFormat, kColorUsage, "head bounce flux")),
@@ -37,7 +42,7 @@ HeadBounceMap::HeadBounceMap(const vk::Context& ctx)
       sampler_(ctx, "head bounce sampler", VK_FILTER_NEAREST) {
   vk::submitAndWait(ctx, [&](VkCommandBuffer cmd) {
     for (VkImage image : {flux_.handle(), position_.handle()})
-      vk::imageBarrier(ctx, cmd, image, VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::Undefined, vk::ImageUse::ComputeSampled);
+      vk::imageBarrier(ctx, cmd, image, VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::Undefined, vk::ImageUse::FragmentSampled);
     vk::imageBarrier(ctx, cmd, depth_.handle(), VK_IMAGE_ASPECT_DEPTH_BIT, vk::ImageUse::Undefined,
                      vk::ImageUse::DepthAttachment);
     begin(cmd);  // clears: no skin until a frame draws it
@@ -46,7 +51,7 @@ HeadBounceMap::HeadBounceMap(const vk::Context& ctx)
 }
 
 void HeadBounceMap::transition(VkCommandBuffer cmd, bool toAttachments) const {
-  const vk::ImageUse sampled = vk::ImageUse::ComputeSampled, attachment = vk::ImageUse::ColorAttachment;
+  const vk::ImageUse sampled = vk::ImageUse::FragmentSampled, attachment = vk::ImageUse::ColorAttachment;
   for (VkImage image : {flux_.handle(), position_.handle()})
     vk::imageBarrier(*ctx_, cmd, image, VK_IMAGE_ASPECT_COLOR_BIT, toAttachments ? sampled : attachment,
                      toAttachments ? attachment : sampled);

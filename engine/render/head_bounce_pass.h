@@ -1,9 +1,9 @@
 #pragma once
 // Contract: draws one instance's head into the head bounce map (HeadBounceMap, shaders/head_bounce.vert/.frag)
-// from the light: the head mesh buffers of its HeadPass, the instance's compute-raster frame block (a
-// storage buffer holding its RenderFrame: light, skin and hair colours, opacity settings, the map's framing
-// headShadowViewProj) and the shadows' opacity maps and LightSpace. draw() goes between
-// HeadBounceMap::begin and end. Owns its descriptor set and pipeline.
+// from the light: the head mesh buffers of its HeadPass, a frame block of the instance's (a storage buffer
+// holding a RenderFrame: light, skin and hair colours, opacity settings, the map's framing
+// headShadowViewProj; Renderer::recordShadows writes it) and the shadows' opacity maps and LightSpace.
+// draw() goes between HeadBounceMap::begin and end. Owns its descriptor set; the pipeline is the library's.
 #include <glm/glm.hpp>
 
 #include <memory>

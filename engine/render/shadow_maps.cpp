@@ -61,7 +61,8 @@ ShadowMaps::ShadowMaps(const vk::Context& ctx, const OpacitySettings& settings)
       image_(makeImage(ctx, settings_)),
       sampler_(ctx, "opacity sampler"),
       headImage_(makeHeadImage(ctx, settings_)),
-      headSampler_(ctx, "head shadow sampler", VK_COMPARE_OP_LESS_OR_EQUAL) {
+      headSampler_(ctx, "head shadow sampler", VK_COMPARE_OP_LESS_OR_EQUAL),
+      bounce_(ctx) {
   if (onCompute(ctx, settings_))
     resolve_ = std::make_unique<compute::OpacityResolvePass>(ctx, settings_.resolution, settings_.format, image_.view(),
                                                              settings_.deep);
@@ -69,7 +70,7 @@ ShadowMaps::ShadowMaps(const vk::Context& ctx, const OpacitySettings& settings)
   const gpu::LightSpace initial = compute::initialLightSpace();
   vk::submitAndWait(ctx, [&](VkCommandBuffer cmd) {
     ctx.fn().vkCmdUpdateBuffer(cmd, lightSpace_.handle(), 0, sizeof(initial), &initial);
-    vk::bufferBarrier(ctx, cmd, lightSpace_.handle(), vk::BufferUse::TransferDst, vk::BufferUse::VertexRead);
+    vk::bufferBarrier(ctx, cmd, lightSpace_.handle(), vk::BufferUse::TransferDst, vk::BufferUse::GraphicsRead);
     vk::imageBarrier(ctx, cmd, image_.handle(), VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::Undefined,
                      vk::ImageUse::TransferDst, gpu::OPACITY_LAYERS);
     const VkClearColorValue zero{{0.0f, 0.0f, 0.0f, 0.0f}};

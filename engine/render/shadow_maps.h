@@ -7,16 +7,18 @@
 // the instances' OpacityPass::recordDraws go between them. Inserts no barriers: the frame recorder
 // (hp::recordShadowPasses) owns them.
 // Also owns the heads' depth shadow map (D32, back faces, head_shadow.glsl) every instance's head is
-// drawn into, with its compare sampler: the head occludes hair and itself through it, not the slices.
+// drawn into, with its compare sampler: the head occludes hair and itself through it, not the slices; and
+// the head bounce map (HeadBounceMap, the skin seen from the light) the hair gathers the skin's light from.
 // On the compute path (OpacityRaster::Compute, or Auto where the bins fit the device) it also owns the bins
 // and resolve pass (compute::OpacityResolvePass) and the image has storage usage.
 // Construction clears the image (alpha = 0, T = 1) and the head map (far plane: lit) and leaves them in
 // ImageUse::FragmentSampled, and
-// uploads an armed LightSpace (compute::initialLightSpace) left in BufferUse::VertexRead, so a frame with
+// uploads an armed LightSpace (compute::initialLightSpace) left in BufferUse::GraphicsRead, so a frame with
 // shadows off samples valid data. One blocking submission. Throws hp::Error on invalid settings.
 #include <memory>
 
 #include "compute/opacity_resolve_pass.h"
+#include "engine/render/head_bounce_map.h"
 #include "engine/render/opacity_settings.h"
 #include "engine/render/shadow_inputs.h"
 #include "engine/vk/buffer.h"
@@ -47,10 +49,13 @@ class ShadowMaps {
   const vk::Image& image() const { return image_; }
   const vk::Image& headImage() const { return headImage_; }
   const vk::Buffer& lightSpace() const { return lightSpace_; }
+  const HeadBounceMap& bounceMap() const { return bounce_; }
   // The compute path: the bins the instances' splats add into and their resolve; null otherwise.
   const compute::OpacityResolvePass* resolvePass() const { return resolve_.get(); }
   ShadowInputs inputs() const {
-    return {image_.view(), sampler_.handle(), lightSpace_.handle(), headImage_.view(), headSampler_.handle()};
+    return {image_.view(),          sampler_.handle(),        lightSpace_.handle(),
+            headImage_.view(),      headSampler_.handle(),    bounce_.fluxView(),
+            bounce_.positionView(), bounce_.sampler()};
   }
   // The settings in effect: as given, but `deep` only where the compute path was taken.
   const OpacitySettings& settings() const { return settings_; }
@@ -65,6 +70,7 @@ class ShadowMaps {
   vk::Sampler sampler_;
   vk::Image headImage_;    // D32, settings.headShadowResolution^2
   vk::Sampler headSampler_;  // depth compare
+  HeadBounceMap bounce_;
   std::unique_ptr<compute::OpacityResolvePass> resolve_;
 };
 }  // namespace hp::render

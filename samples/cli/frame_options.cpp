@@ -174,7 +174,7 @@ void addFrameOptions(CLI::App& cmd, FrameOptions& o) {
   cmd.add_option("--scattering", o.scattering,
                  "single, or dual: adds the light the hair in front scattered forward (physical fibre model)");
   cmd.add_option("--skin-bounce", o.skinBounce,
-                 "on or off: adds the sunlight the skin reflects onto the hair (compute raster; default on)");
+                 "on or off: adds the sunlight the skin reflects onto the hair (default on)");
   cmd.add_flag("--lines", o.lines, "Draw strands as lines instead of ribbons");
   cmd.add_flag("--guides-only", o.guidesOnly, "Draw the smoothed guides only (no interpolation)");
   cmd.add_flag("--no-shadows", o.noShadows, "Turn the opacity shadow maps off");

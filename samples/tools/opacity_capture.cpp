@@ -125,7 +125,7 @@ OpacityCapture captureOpacity(const vk::Context& ctx, const vk::Image& maps, con
       texelsAsFloat(vk::readbackImage(ctx, maps, vk::ImageUse::FragmentSampled, gpu::OPACITY_TARGETS), maps.desc().format);
   c.firstHair.resize(perSlice);
   for (std::size_t t = 0; t < perSlice; ++t) c.firstHair[t] = first[t * 4];
-  c.light = vk::readback<gpu::LightSpace>(ctx, lightSpace, vk::BufferUse::VertexRead, 1).front();
+  c.light = vk::readback<gpu::LightSpace>(ctx, lightSpace, vk::BufferUse::GraphicsRead, 1).front();
   return c;
 }
 

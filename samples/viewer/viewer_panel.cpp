@@ -91,7 +91,7 @@ void lookSection(Tunables& t, PanelChanges& c) {
     t.look.scattering = dual ? render::Scattering::Dual : render::Scattering::Single;
     c.look = true;
   }
-  c.look |= ImGui::Checkbox("skin bounce (compute raster)", &t.look.skinBounce);
+  c.look |= ImGui::Checkbox("skin bounce", &t.look.skinBounce);
 }
 
 void timingSection(const PanelStatus& s) {

@@ -65,8 +65,6 @@ HP_CONST(uint, RASTER_BINDING_TILE_DEPTH, 22)  // float[tiles]: the farthest hea
 HP_CONST(uint, RASTER_BINDING_SHADE_FLAGS, 23) // uint[V]: 1 once a vertex is listed for shading
 HP_CONST(uint, RASTER_BINDING_SHADE_LIST, 24)  // uint[V]: per chunk from its firstVertex, the vertices to shade
 HP_CONST(uint, RASTER_BINDING_SHADE_ARGS, 25)  // uvec4[chunks]: x, y, z = the shade dispatch, w = listed
-HP_CONST(uint, RASTER_BINDING_BOUNCE_FLUX, 26)      // sampler2D: the head bounce map's flux (head_bounce.glsl)
-HP_CONST(uint, RASTER_BINDING_BOUNCE_POSITION, 27)  // sampler2D: its positions and normals
 
 // The composite pass (composite.frag) samples the output image.
 HP_CONST(uint, COMPOSITE_BINDING_HAIR, 0)

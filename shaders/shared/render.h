@@ -20,6 +20,10 @@ HP_CONST(uint, RENDER_BINDING_POSITIONS, 7)   // strands: vec4[S*Q]; head: vec4 
 HP_CONST(uint, RENDER_BINDING_TANGENTS, 8)    // strands: vec4[S*Q]; head: vec4 normals
 HP_CONST(uint, RENDER_BINDING_ATTRIBUTES, 9)  // strands: StrandAttributes[S]; head: uint indices
 HP_CONST(uint, RENDER_BINDING_HEAD_SHADOW, 10)  // sampler2DShadow: the head's depth shadow map (head_shadow.glsl)
+// The head bounce map (head_bounce.glsl), numbered after the compute raster's own bindings
+// (shared/raster.h, 11-25), which share that raster's set.
+HP_CONST(uint, RENDER_BINDING_BOUNCE_FLUX, 26)      // sampler2D: flux, a = 1 + the hair's opacity (0: no skin)
+HP_CONST(uint, RENDER_BINDING_BOUNCE_POSITION, 27)  // sampler2D: positions, w = the encoded normal
 // The tonemap pass reads the resolved HDR image.
 HP_CONST(uint, TONEMAP_BINDING_HDR, 0)
 

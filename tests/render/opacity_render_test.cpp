@@ -221,9 +221,10 @@ TEST_F(VulkanTest, TwoShadowedFramesInOneCommandBufferAreSyncClean) {
 TEST_F(VulkanTest, DualScatteringAddsLightInTheHairsShadowOnly) {
   const hp::HairAsset asset = hairOnly();
   const glm::vec3 light(1.0f, 0.3f, 0.0f);
-  auto frame = [&](bool shadows, hp::render::Scattering s) {
+  auto frame = [&](bool shadows, hp::render::Scattering s, hp::RasterMode raster = hp::RasterMode::Auto) {
     hp::RenderRequest r = request(light, 180.0f, shadows);
     r.look.scattering = s;
+    if (raster != hp::RasterMode::Auto) r.scene.render.raster = raster;
     return hp::renderStill(*ctx, asset, r);
   };
   const hp::RenderResult single = frame(true, hp::render::Scattering::Single);
@@ -240,11 +241,14 @@ TEST_F(VulkanTest, DualScatteringAddsLightInTheHairsShadowOnly) {
   EXPECT_GT(awayDual.on, 1.01 * awaySingle.on);
   EXPECT_GE(litDual.on, litSingle.on * (1.0 - 1e-6));
   EXPECT_GT(awayDual.on / awaySingle.on, litDual.on / litSingle.on);
-  // Without shadows: no optical depth, nothing scattered forward (the same frame up to the compute raster's
-  // run-to-run order of segments within a depth bin).
-  const hp::RenderResult offDual = frame(false, hp::render::Scattering::Dual);
-  const Region all = sumRegion(offDual, off, [](std::uint32_t, std::uint32_t) { return true; });
-  EXPECT_NEAR(all.ratio(), 1.0, 1e-3);
+  // Without shadows: no optical depth, nothing scattered forward. On the graphics raster, whose frames repeat
+  // exactly: the compute raster's order of segments within a depth bin varies from run to run (0.1-0.16% of
+  // this sum was measured between two such frames, over the 1e-3 this check allowed before).
+  const hp::RenderResult offSingle = frame(false, hp::render::Scattering::Single, hp::RasterMode::Graphics);
+  const hp::RenderResult offDual = frame(false, hp::render::Scattering::Dual, hp::RasterMode::Graphics);
+  const Region all = sumRegion(offDual, offSingle, [](std::uint32_t, std::uint32_t) { return true; });
+  EXPECT_GT(all.pixels, 500u);
+  EXPECT_NEAR(all.ratio(), 1.0, 1e-6);
 }
 
 // Deep opacity maps through the whole frame (both hair rasters, the head's lookups): the side away from the

@@ -51,7 +51,6 @@ RasterRig::RasterRig(const vk::Context& c, const compute::StrandBuffers& strands
       frameBlock(c, sizeof(gpu::RenderFrame), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                  vk::MemoryKind::DeviceLocal, "rig frame"),
       shadows(c, shadowsOff()),
-      bounce(c),
       depth(c, {e.width, e.height, 1, VK_FORMAT_D32_SFLOAT,
                 VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
                 VK_SAMPLE_COUNT_1_BIT, "rig head depth"}) {
@@ -65,8 +64,8 @@ RasterRig::RasterRig(const vk::Context& c, const compute::StrandBuffers& strands
     set.writeSampledImage(gpu::RENDER_BINDING_OPACITY, inputs.opacityView, inputs.sampler);
     set.writeStorageBuffer(gpu::RENDER_BINDING_LIGHT, inputs.lightSpace);
     set.writeSampledImage(gpu::RENDER_BINDING_HEAD_SHADOW, inputs.headShadowView, inputs.headShadowSampler);
-    set.writeSampledImage(gpu::RASTER_BINDING_BOUNCE_FLUX, bounce.fluxView(), bounce.sampler());
-    set.writeSampledImage(gpu::RASTER_BINDING_BOUNCE_POSITION, bounce.positionView(), bounce.sampler());
+    set.writeSampledImage(gpu::RENDER_BINDING_BOUNCE_FLUX, inputs.bounceFluxView, inputs.bounceSampler);
+    set.writeSampledImage(gpu::RENDER_BINDING_BOUNCE_POSITION, inputs.bouncePositionView, inputs.bounceSampler);
   };
   pass = std::make_unique<compute::StrandRasterPass>(c, strands, shading, e, settings);
   pass->setDepth(depth.view());

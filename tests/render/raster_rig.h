@@ -7,7 +7,6 @@
 
 #include "compute/strand_raster_pass.h"
 #include "engine/render/frame_block.h"
-#include "engine/render/head_bounce_map.h"
 #include "engine/render/marschner_textures.h"
 #include "engine/render/shadow_maps.h"
 
@@ -27,7 +26,6 @@ struct RasterRig {
   render::MarschnerTextures marschner;
   vk::Buffer frameBlock;
   render::ShadowMaps shadows;  // off: bound for the layout, never looked up
-  render::HeadBounceMap bounce;  // cleared (no skin): bound for the layout, never gathered
   vk::Image depth;
   std::unique_ptr<compute::StrandRasterPass> pass;
 };
