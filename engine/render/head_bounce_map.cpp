@@ -17,15 +17,6 @@ vk::Image makeImage(const vk::Context& ctx, VkFormat format, VkImageUsageFlags u
   return vk::Image(ctx, desc);
 }
 
-VkRenderingAttachmentInfo cleared(VkImageView view) {
-  VkRenderingAttachmentInfo a{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
-  a.imageView = view;
-  a.imageLayout = vk::imageLayout(vk::ImageUse::ColorAttachment);
-  a.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
-  a.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-  a.clearValue.color = {{0.0f, 0.0f, 0.0f, 0.0f}};
-  return a;
-}
 constexpr VkImageUsageFlags kColorUsage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT;
 }  // namespace
 
@@ -62,7 +53,8 @@ void HeadBounceMap::begin(VkCommandBuffer cmd) const {
   // The last draw's depth writes finish before this one's clear.
   vk::imageBarrier(*ctx_, cmd, depth_.handle(), VK_IMAGE_ASPECT_DEPTH_BIT, vk::ImageUse::DepthAttachmentDiscard,
                    vk::ImageUse::DepthAttachment);
-  const VkRenderingAttachmentInfo colors[] = {cleared(flux_.view()), cleared(position_.view())};
+  const VkRenderingAttachmentInfo colors[] = {vk::colorAttachment(flux_.view(), VK_ATTACHMENT_LOAD_OP_CLEAR),
+                                              vk::colorAttachment(position_.view(), VK_ATTACHMENT_LOAD_OP_CLEAR)};
   const VkRenderingAttachmentInfo depth =
       vk::depthAttachment(depth_.view(), VK_ATTACHMENT_LOAD_OP_CLEAR, VK_ATTACHMENT_STORE_OP_DONT_CARE);
   VkRenderingInfo info{VK_STRUCTURE_TYPE_RENDERING_INFO};

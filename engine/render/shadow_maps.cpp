@@ -41,15 +41,6 @@ vk::Image makeHeadImage(const vk::Context& ctx, const OpacitySettings& settings)
   return vk::Image(ctx, desc);
 }
 
-VkRenderingAttachmentInfo sliceAttachment(VkImageView view, bool keep) {
-  VkRenderingAttachmentInfo a{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
-  a.imageView = view;
-  a.imageLayout = vk::imageLayout(vk::ImageUse::ColorAttachment);
-  a.loadOp = keep ? VK_ATTACHMENT_LOAD_OP_LOAD : VK_ATTACHMENT_LOAD_OP_CLEAR;
-  a.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-  a.clearValue.color = {{0.0f, 0.0f, 0.0f, 0.0f}};
-  return a;
-}
 }  // namespace
 
 ShadowMaps::ShadowMaps(const vk::Context& ctx, const OpacitySettings& settings)
@@ -89,7 +80,8 @@ ShadowMaps::ShadowMaps(const vk::Context& ctx, const OpacitySettings& settings)
 
 void ShadowMaps::beginRendering(VkCommandBuffer cmd, bool keep) const {
   VkRenderingAttachmentInfo attachments[gpu::OPACITY_TARGETS];
-  for (std::uint32_t t = 0; t < gpu::OPACITY_TARGETS; ++t) attachments[t] = sliceAttachment(image_.layerView(t), keep);
+  for (std::uint32_t t = 0; t < gpu::OPACITY_TARGETS; ++t)
+    attachments[t] = vk::colorAttachment(image_.layerView(t), keep ? VK_ATTACHMENT_LOAD_OP_LOAD : VK_ATTACHMENT_LOAD_OP_CLEAR);
   VkRenderingInfo info{VK_STRUCTURE_TYPE_RENDERING_INFO};
   info.renderArea = {{0, 0}, image_.extent()};
   info.layerCount = 1;

@@ -1,9 +1,12 @@
 #pragma once
-// Contract: the dynamic-rendering attachment description of a depth image in the DepthAttachment layout
-// (engine/vk/barriers.h), cleared to 1 (the far plane) when `load` is CLEAR. One definition for every
-// depth target hairpipe and its tools draw into (the head shadow map, the offscreen renderer).
+// Contract: the dynamic-rendering attachment descriptions hairpipe and its tools draw into, one definition
+// each: a depth image in the DepthAttachment layout, cleared to 1 (the far plane) when `load` is CLEAR
+// (the head shadow map, the head bounce map, the offscreen renderer); a colour image in the ColorAttachment
+// layout, stored, cleared to `clear` when `load` is CLEAR (the opacity slices, the head bounce map, the
+// offscreen renderer).
 #include <volk.h>
 
 namespace hp::vk {
 VkRenderingAttachmentInfo depthAttachment(VkImageView view, VkAttachmentLoadOp load, VkAttachmentStoreOp store);
+VkRenderingAttachmentInfo colorAttachment(VkImageView view, VkAttachmentLoadOp load, VkClearColorValue clear = {});
 }  // namespace hp::vk

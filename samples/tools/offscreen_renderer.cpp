@@ -13,16 +13,6 @@ namespace hp::render {
 namespace {
 constexpr VkClearColorValue kBackground = {{kBackgroundRadiance.x, kBackgroundRadiance.y, kBackgroundRadiance.z, 1.0f}};
 
-VkRenderingAttachmentInfo colorAttachment(VkImageView view, VkClearColorValue clear) {
-  VkRenderingAttachmentInfo a{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
-  a.imageView = view;
-  a.imageLayout = vk::imageLayout(vk::ImageUse::ColorAttachment);
-  a.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
-  a.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-  a.clearValue.color = clear;
-  return a;
-}
-
 // The compute path draws one sample; a bad --msaa is still refused there.
 std::uint32_t targetSamples(std::uint32_t msaa, RasterMode raster) {
   (void)sampleCountFlag(msaa);
@@ -100,7 +90,7 @@ void OffscreenRenderer::recordComputeScene(VkCommandBuffer cmd, const Record& dr
                    vk::ImageUse::ColorAttachment);
   vk::imageBarrier(ctx_, cmd, depthImage, VK_IMAGE_ASPECT_DEPTH_BIT, vk::ImageUse::DepthAttachmentDiscard,
                    vk::ImageUse::DepthAttachment);
-  VkRenderingAttachmentInfo color = colorAttachment(targets_.hdr.view(), kBackground);
+  VkRenderingAttachmentInfo color = vk::colorAttachment(targets_.hdr.view(), VK_ATTACHMENT_LOAD_OP_CLEAR, kBackground);
   VkRenderingAttachmentInfo depth = vk::depthAttachment(targets_.depth.view(), VK_ATTACHMENT_LOAD_OP_CLEAR,
                                                     VK_ATTACHMENT_STORE_OP_STORE);
   VkRenderingInfo info = renderingInfo(extent(), &color, &depth);
@@ -143,7 +133,7 @@ void OffscreenRenderer::recordScene(VkCommandBuffer cmd, const std::function<voi
   if (msaa)
     vk::imageBarrier(ctx_, cmd, targets_.resolved.handle(), VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::FragmentSampledDiscard,
                      vk::ImageUse::ColorAttachment);
-  VkRenderingAttachmentInfo color = colorAttachment(targets_.hdr.view(), kBackground);
+  VkRenderingAttachmentInfo color = vk::colorAttachment(targets_.hdr.view(), VK_ATTACHMENT_LOAD_OP_CLEAR, kBackground);
   if (msaa) {
     color.resolveMode = VK_RESOLVE_MODE_AVERAGE_BIT;
     color.resolveImageView = targets_.resolved.view();
@@ -163,7 +153,7 @@ void OffscreenRenderer::recordScene(VkCommandBuffer cmd, const std::function<voi
 void OffscreenRenderer::recordTonemap(VkCommandBuffer cmd, float exposure) const {
   vk::imageBarrier(ctx_, cmd, targets_.display.handle(), VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::ColorAttachmentDiscard,
                    vk::ImageUse::ColorAttachment);
-  VkRenderingAttachmentInfo color = colorAttachment(targets_.display.view(), {{0, 0, 0, 1}});
+  VkRenderingAttachmentInfo color = vk::colorAttachment(targets_.display.view(), VK_ATTACHMENT_LOAD_OP_CLEAR, {{0, 0, 0, 1}});
   VkRenderingInfo info = renderingInfo(extent(), &color, nullptr);
   ctx_.fn().vkCmdBeginRendering(cmd, &info);
   tonemap_.draw(cmd, extent(), exposure);
