@@ -47,7 +47,7 @@ struct RasterStats {
 
 // Writes the shading bindings of shaders/shared/render.h (frame block and Marschner parameters as STORAGE
 // buffers, the LUTs, opacity maps, LightSpace, the head's depth shadow map) and the head bounce map's two
-// images (RASTER_BINDING_BOUNCE_*, engine/render/head_bounce_map.h) into a raster descriptor set: what
+// images (RENDER_BINDING_BOUNCE_*, engine/render/head_bounce_map.h) into a raster descriptor set: what
 // hairRadiance and the skin's bounce read.
 using ShadingWriter = std::function<void(const vk::DescriptorSet&)>;
 

@@ -6,7 +6,6 @@
 #include "engine/hair_instance.h"
 #include "engine/vk/barriers.h"
 #include "engine/vk/context.h"
-#include "shaders/shared/raster.h"
 #include "shaders/shared/render.h"
 
 namespace hp {
@@ -68,9 +67,7 @@ void ComputeRaster::recordFrameBlocks(VkCommandBuffer cmd, const View& view, con
     gpu::RenderFrame frame = render::makeRenderFrame(view.camera, view.extent, light, instance.settings().material,
                                                      instance.settings().look,
                                                      instance.strands().layout().verticesPerStrand, shadows_.settings());
-    frame.headShadowViewProj = headShadow.viewProj;
-    frame.headShadow = headShadow.params;
-    frame.headBounce = render::headBounceParams(headShadow, instance.settings().look.skinBounce);
+    render::setHeadMaps(frame, headShadow, instance.settings().look.skinBounce);
     const VkBuffer block = frames_[i].handle();
     vk::bufferBarrier(ctx_, cmd, block, vk::BufferUse::ComputeRead, vk::BufferUse::TransferDst);
     ctx_.fn().vkCmdUpdateBuffer(cmd, block, 0, sizeof(frame), &frame);
@@ -92,11 +89,9 @@ void ComputeRaster::record(VkCommandBuffer cmd, const View& view, const LightSpe
   vk::imageBarrier(ctx_, cmd, maps, VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::FragmentSampled,
                    vk::ImageUse::ComputeSampled, gpu::OPACITY_LAYERS);
   const render::HeadBounceMap& bounce = shadows_.bounceMap();
-  for (VkImage image : {bounce.fluxImage(), bounce.positionImage()})
-    vk::imageBarrier(ctx_, cmd, image, VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::FragmentSampled, vk::ImageUse::ComputeSampled);
+  bounce.transition(cmd, vk::ImageUse::FragmentSampled, vk::ImageUse::ComputeSampled);
   pass_.record(cmd, profiler);
-  for (VkImage image : {bounce.fluxImage(), bounce.positionImage()})
-    vk::imageBarrier(ctx_, cmd, image, VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::ComputeSampled, vk::ImageUse::FragmentSampled);
+  bounce.transition(cmd, vk::ImageUse::ComputeSampled, vk::ImageUse::FragmentSampled);
   vk::bufferBarrier(ctx_, cmd, lightSpace, vk::BufferUse::ComputeRead, vk::BufferUse::GraphicsRead);
   vk::imageBarrier(ctx_, cmd, maps, VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::ComputeSampled,
                    vk::ImageUse::FragmentSampled, gpu::OPACITY_LAYERS);

@@ -51,7 +51,6 @@ class HairInstance {
 
   const InstanceSettings& settings() const { return settings_; }
   const glm::mat4& headToWorld() const { return motion_.to; }
-  const render::HeadPass& headPass() const { return *head_; }
   const compute::StrandBuffers& strands() const { return geometry_->buffers; }
   const render::MarschnerTextures& marschner() const { return *marschner_; }
   const SimulatePass& simulation() const { return simulate_; }

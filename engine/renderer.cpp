@@ -171,8 +171,7 @@ void Renderer::recordHeadBounce(VkCommandBuffer cmd, const LightSpec& light, std
     gpu::RenderFrame block = render::makeRenderFrame(CameraMatrices{}, {1, 1}, light, i->settings_.material,
                                                      i->settings_.look, i->strands().layout().verticesPerStrand,
                                                      shadows_->settings());
-    block.headShadowViewProj = headView.viewProj;
-    block.headShadow = headView.params;
+    render::setHeadMaps(block, headView, i->settings_.look.skinBounce);
     const VkBuffer buffer = i->bounceFrame_.handle();
     vk::bufferBarrier(ctx_, cmd, buffer, vk::BufferUse::GraphicsRead, vk::BufferUse::TransferDst);
     ctx_.fn().vkCmdUpdateBuffer(cmd, buffer, 0, sizeof(block), &block);
@@ -195,9 +194,7 @@ void Renderer::recordDraw(VkCommandBuffer cmd, std::uint64_t frame, const View& 
     gpu::RenderFrame* block = i->frameSlot(frame, view.index);
     *block = render::makeRenderFrame(view.camera, view.extent, light, i->settings_.material, i->settings_.look,
                                      i->strands().layout().verticesPerStrand, shadows_->settings());
-    block->headShadowViewProj = headView.viewProj;
-    block->headShadow = headView.params;
-    block->headBounce = render::headBounceParams(headView, i->settings_.look.skinBounce);
+    render::setHeadMaps(*block, headView, i->settings_.look.skinBounce);
     const std::uint32_t offset = i->frameOffset(frame, view.index);
     if (profiler) profiler->begin(cmd, "head");
     i->head_->draw(cmd, view.extent, i->headToWorld(), offset);

@@ -20,9 +20,11 @@ vk::Image makeImage(const vk::Context& ctx, VkFormat format, VkImageUsageFlags u
 constexpr VkImageUsageFlags kColorUsage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT;
 }  // namespace
 
-glm::vec4 headBounceParams(const HeadShadowView& view, bool skinBounce) {
+void setHeadMaps(gpu::RenderFrame& frame, const HeadShadowView& view, bool skinBounce) {
+  frame.headShadowViewProj = view.viewProj;
+  frame.headShadow = view.params;
   const bool on = skinBounce && view.params.x != 0.0f;
-  return {on ? 1.0f : 0.0f, view.extentWorld / float(gpu::RENDER_BOUNCE_RESOLUTION), 0.0f, 0.0f};
+  frame.headBounce = glm::vec4(on ? 1.0f : 0.0f, view.extentWorld / float(gpu::RENDER_BOUNCE_RESOLUTION), 0.0f, 0.0f);
 }
 
 HeadBounceMap::HeadBounceMap(const vk::Context& ctx)
@@ -32,8 +34,7 @@ HeadBounceMap::HeadBounceMap(const vk::Context& ctx)
       depth_(makeImage(ctx, kDepthFormat, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT, "head bounce depth")),
       sampler_(ctx, "head bounce sampler", VK_FILTER_NEAREST) {
   vk::submitAndWait(ctx, [&](VkCommandBuffer cmd) {
-    for (VkImage image : {flux_.handle(), position_.handle()})
-      vk::imageBarrier(ctx, cmd, image, VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::Undefined, vk::ImageUse::FragmentSampled);
+    transition(cmd, vk::ImageUse::Undefined, vk::ImageUse::FragmentSampled);
     vk::imageBarrier(ctx, cmd, depth_.handle(), VK_IMAGE_ASPECT_DEPTH_BIT, vk::ImageUse::Undefined,
                      vk::ImageUse::DepthAttachment);
     begin(cmd);  // clears: no skin until a frame draws it
@@ -41,15 +42,13 @@ HeadBounceMap::HeadBounceMap(const vk::Context& ctx)
   }, "clear head bounce map");
 }
 
-void HeadBounceMap::transition(VkCommandBuffer cmd, bool toAttachments) const {
-  const vk::ImageUse sampled = vk::ImageUse::FragmentSampled, attachment = vk::ImageUse::ColorAttachment;
+void HeadBounceMap::transition(VkCommandBuffer cmd, vk::ImageUse from, vk::ImageUse to) const {
   for (VkImage image : {flux_.handle(), position_.handle()})
-    vk::imageBarrier(*ctx_, cmd, image, VK_IMAGE_ASPECT_COLOR_BIT, toAttachments ? sampled : attachment,
-                     toAttachments ? attachment : sampled);
+    vk::imageBarrier(*ctx_, cmd, image, VK_IMAGE_ASPECT_COLOR_BIT, from, to);
 }
 
 void HeadBounceMap::begin(VkCommandBuffer cmd) const {
-  transition(cmd, true);
+  transition(cmd, vk::ImageUse::FragmentSampled, vk::ImageUse::ColorAttachment);
   // The last draw's depth writes finish before this one's clear.
   vk::imageBarrier(*ctx_, cmd, depth_.handle(), VK_IMAGE_ASPECT_DEPTH_BIT, vk::ImageUse::DepthAttachmentDiscard,
                    vk::ImageUse::DepthAttachment);
@@ -68,6 +67,6 @@ void HeadBounceMap::begin(VkCommandBuffer cmd) const {
 
 void HeadBounceMap::end(VkCommandBuffer cmd) const {
   ctx_->fn().vkCmdEndRendering(cmd);
-  transition(cmd, false);
+  transition(cmd, vk::ImageUse::ColorAttachment, vk::ImageUse::FragmentSampled);
 }
 }  // namespace hp::render

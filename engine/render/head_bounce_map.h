@@ -9,12 +9,15 @@
 #include <glm/glm.hpp>
 
 #include "engine/render/head_shadow_view.h"
+#include "engine/vk/barriers.h"
 #include "engine/vk/image.h"
+#include "shaders/shared/render.h"
 
 namespace hp::render {
-// RenderFrame::headBounce of a frame whose heads' depth map is framed by `view`: on only where the look
-// asks for the bounce and there is a head map (the bounce map is framed by it and drawn with it).
-glm::vec4 headBounceParams(const HeadShadowView& view, bool skinBounce);
+// A frame block's head maps: the heads' depth map framed by `view` (headShadowViewProj, headShadow) and the
+// bounce map framed like it (headBounce: on only where the look asks for the bounce and there is a head
+// map, as the bounce map is drawn with it).
+void setHeadMaps(gpu::RenderFrame& frame, const HeadShadowView& view, bool skinBounce);
 
 class HeadBounceMap {
  public:
@@ -27,14 +30,13 @@ class HeadBounceMap {
 
   void begin(VkCommandBuffer cmd) const;
   void end(VkCommandBuffer cmd) const;
-  VkImage fluxImage() const { return flux_.handle(); }
-  VkImage positionImage() const { return position_.handle(); }
+  // Both colour images from one use to another (e.g. a compute reader between frames' draws).
+  void transition(VkCommandBuffer cmd, vk::ImageUse from, vk::ImageUse to) const;
   VkImageView fluxView() const { return flux_.view(); }
   VkImageView positionView() const { return position_.view(); }
   VkSampler sampler() const { return sampler_.handle(); }
 
  private:
-  void transition(VkCommandBuffer cmd, bool toAttachments) const;
   const vk::Context* ctx_;
   vk::Image flux_, position_, depth_;
   vk::Sampler sampler_;  // nearest: the gather fetches texels (texelFetch)

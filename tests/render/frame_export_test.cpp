@@ -183,24 +183,38 @@ TEST_F(VulkanTest, DensePhysicalHairMatchesTheReferenceLuminanceAndHue) {
 // the reference's luminance, with it 0.867; PSNR 25.33 -> 25.39 dB (per-fibre speckle dominates it; the
 // 160x120 frames of docs/SHADING.md "Skin bounce" gain 0.5 dB). Asserted: the bounce moves the ratio toward 1 by at least
 // half of what was measured, does not overshoot past 1.2, and PSNR does not drop by more than the noise.
-TEST_F(VulkanTest, SkinBounceBringsTheDefaultViewTowardTheReferencesSkinLight) {
-  RenderRequest request;
-  request.scene.render.width = 128;
-  request.scene.render.height = 96;
+// The same frame without and with the skin's bounce (a small compute-raster frame, sky off, captured).
+// `request` is left as the second frame was rendered, for the export.
+struct BounceFrames {
+  HairAsset asset;
+  RenderResult without, with;
+};
+BounceFrames renderWithAndWithoutBounce(const vk::Context& ctx, RenderRequest& request, std::uint32_t width,
+                                        std::uint32_t height) {
+  request.scene.render.width = width;
+  request.scene.render.height = height;
   request.scene.render.raster = RasterMode::Compute;
   request.settleFrames = 2;
   request.captureFrame = true;
   request.look.ambient = 0.0f;
+  BounceFrames f{buildSceneAsset(request.scene), {}, {}};
+  request.look.skinBounce = false;
+  f.without = renderStill(ctx, f.asset, request);
+  request.look.skinBounce = true;
+  f.with = renderStill(ctx, f.asset, request);
+  return f;
+}
+
+TEST_F(VulkanTest, SkinBounceBringsTheDefaultViewTowardTheReferencesSkinLight) {
+  RenderRequest request;
   request.opacity.raster = render::OpacityRaster::Compute;
   request.opacity.deep = true;  // the lighting measured (the defaults today, pinned)
   request.opacity.deepBiasSlices = 0.5f;
-  const HairAsset asset = buildSceneAsset(request.scene);
-  request.look.skinBounce = false;
-  const RenderResult without = renderStill(*ctx, asset, request);
-  request.look.skinBounce = true;
-  const RenderResult with = renderStill(*ctx, asset, request);
+  const BounceFrames frames = renderWithAndWithoutBounce(*ctx, request, 128, 96);
+  const RenderResult& without = frames.without;
+  const RenderResult& with = frames.with;
   ASSERT_TRUE(without.frame && with.frame);  // the same strands (coverage up to the raster's atomics order)
-  const ExportedFrame frame = makeExportedFrame(request, asset, *with.frame, "physical");
+  const ExportedFrame frame = makeExportedFrame(request, frames.asset, *with.frame, "physical");
   const reference::TraceResult ref = reference::traceReference(frame, {16, 2, 1, 0, nullptr});
   const ImageComparison off =
       compareImages(without.frame->linear, ref.radiance, without.frame->hairAlpha, frame.exposure);
@@ -218,18 +232,10 @@ TEST_F(VulkanTest, SkinBounceBringsTheDefaultViewTowardTheReferencesSkinLight) {
 // lavapipe: +7.0% over the hair pixels; asserted > +1%).
 TEST_F(VulkanTest, SkinBounceUnderASpotIsFiniteAndAddsLight) {
   RenderRequest request;
-  request.scene.render.width = 96;
-  request.scene.render.height = 72;
-  request.scene.render.raster = RasterMode::Compute;
   request.scene.light = LightSpec::makeSpot({0.3f, 0.4f, 0.6f}, {0.0f, -0.08f, 0.0f}, 40.0f);
-  request.settleFrames = 2;
-  request.captureFrame = true;
-  request.look.ambient = 0.0f;
-  const HairAsset asset = buildSceneAsset(request.scene);
-  request.look.skinBounce = false;
-  const RenderResult without = renderStill(*ctx, asset, request);
-  request.look.skinBounce = true;
-  const RenderResult with = renderStill(*ctx, asset, request);
+  const BounceFrames frames = renderWithAndWithoutBounce(*ctx, request, 96, 72);
+  const RenderResult& without = frames.without;
+  const RenderResult& with = frames.with;
   ASSERT_TRUE(without.frame && with.frame);
   for (std::size_t i = 0; i < with.frame->linear.values.size(); ++i)
     ASSERT_TRUE(std::isfinite(with.frame->linear.values[i])) << "value " << i;
