@@ -78,3 +78,11 @@ TEST(CliBench, SuitesAreSubcommandsOfBench) {
   EXPECT_TRUE(parsed.is_object()) << assets.out;
   EXPECT_EQ(assets.out.find("median of"), std::string::npos) << "the frame bench ran too";
 }
+
+// `bench --skin-bounce` takes off and/or on; anything else is refused by name before a frame runs.
+TEST(CliBench, RefusesABadSkinBounceValue) {
+  auto r = runCli({"bench", "--raster", "compute", "--skin-bounce", "off,maybe", "--frames", "1"});
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_NE(r.err.find("bench: --skin-bounce takes off and/or on, got 'maybe'"), std::string::npos) << r.err;
+  EXPECT_EQ(r.out.find("median of"), std::string::npos) << "a frame ran: " << r.out;
+}

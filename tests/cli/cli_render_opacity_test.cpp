@@ -102,6 +102,7 @@ TEST(CliRenderOpacity, RefusesBadShadowOptions) {
       {{"--shadow-bias", "40"}, "biasSlices"},
       {{"--opacity-raster", "splat"}, "opacity raster must be auto, compute or graphics"},
       {{"--scattering", "triple"}, "scattering must be single or dual"},
+      {{"--skin-bounce", "maybe"}, "--skin-bounce must be on or off, got 'maybe'"},
       {{"--scattering", "dual", "--lut-mode", "float"}, "--scattering dual needs the physical fibre model"},
       {{"--no-shadows", "--dump-opacity", (dir / "x").string()}, "--dump-opacity"},
   };
@@ -113,4 +114,25 @@ TEST(CliRenderOpacity, RefusesBadShadowOptions) {
     EXPECT_NE(r.err.find(needle), std::string::npos) << extra.front() << ": " << r.err;
   }
   EXPECT_FALSE(fs::exists(dir / "img.png")) << "no output after a refused option";
+}
+
+// Deep opacity maps are the default (with their own bias, 0.5 deep slices); --global-opacity turns them off
+// and --shadow-bias sets the bias of the slices in effect. The dump records what the frame used.
+TEST(CliRenderOpacity, DeepMapsByDefaultGlobalOnRequest) {
+  const fs::path dir = tempDir("deep");
+  auto dumped = [&](std::vector<std::string> extra) {
+    auto args = baseArgs(dir);
+    args.insert(args.end(), {"--opacity-raster", "compute", "--dump-opacity", (dir / "maps").string()});
+    args.insert(args.end(), extra.begin(), extra.end());
+    auto r = runCli(args);
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    return nlohmann::json::parse(std::ifstream(dir / "maps" / "opacity_slices.json"));
+  };
+  const auto byDefault = dumped({});
+  EXPECT_TRUE(byDefault["deep"].get<bool>());
+  EXPECT_FLOAT_EQ(byDefault["deep_bias_slices"].get<float>(), 0.5f);
+  EXPECT_FLOAT_EQ(byDefault["bias_slices"].get<float>(), 1.0f);
+  const auto global = dumped({"--global-opacity", "--shadow-bias", "0.75"});
+  EXPECT_FALSE(global["deep"].get<bool>());
+  EXPECT_FLOAT_EQ(global["bias_slices"].get<float>(), 0.75f);
 }

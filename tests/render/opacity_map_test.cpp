@@ -233,6 +233,9 @@ TEST(OpacitySettings, RefusesBadValuesNamingTheField) {
     s = {};
     s.biasSlices = v;
     refuses(s, "biasSlices");
+    s = {};
+    s.deepBiasSlices = v;
+    refuses(s, "deepBiasSlices");
   }
   s = {};
   s.format = VK_FORMAT_R8G8B8A8_UNORM;
