@@ -6,6 +6,7 @@
 #include "engine/hair/head_mesh.h"
 #include "engine/hair/head_sdf.h"
 #include "engine/hair/level_set_mesh.h"
+#include "engine/hair/parallel_for.h"
 
 namespace hp {
 namespace {
@@ -78,22 +79,28 @@ GrowthOptions defaultHeadGrowth() {
 }
 
 ScalpMesh makeDefaultScalp(std::uint32_t sphereSamples) {
-  std::vector<glm::dvec3> dirs = fibonacciSphere(sphereSamples);
+  const std::vector<glm::dvec3> dirs = fibonacciSphere(sphereSamples);
+  // Every direction above the hairline meets the surface (on threads: each ray is independent); the
+  // mesh keeps those that a scalp triangle uses, numbered in the order the triangles first use them.
+  std::vector<std::uint8_t> onScalp(dirs.size());
+  std::vector<glm::vec3> surface(dirs.size()), gradient(dirs.size());
+  for (std::size_t i = 0; i < dirs.size(); ++i) onScalp[i] = aboveHairline(glm::vec3(dirs[i]));
+  parallelFor(dirs.size(), [&](std::size_t i) {
+    if (onScalp[i]) surface[i] = headSurfaceAlong(glm::vec3(dirs[i]), &gradient[i]);
+  }, 64);
   std::vector<std::int64_t> remap(dirs.size(), -1);
   std::vector<glm::vec3> positions, normals;
   std::vector<glm::uvec3> triangles;
   auto vertex = [&](std::uint32_t i) {
     if (remap[i] < 0) {
       remap[i] = static_cast<std::int64_t>(positions.size());
-      glm::vec3 gradient;
-      positions.push_back(headSurfaceAlong(glm::vec3(dirs[i]), &gradient));
-      normals.push_back(glm::normalize(gradient));
+      positions.push_back(surface[i]);
+      normals.push_back(glm::normalize(gradient[i]));
     }
     return static_cast<std::uint32_t>(remap[i]);
   };
-  auto onScalp = [&](std::uint32_t i) { return aboveHairline(glm::vec3(dirs[i])); };
   for (const auto& t : convexHull(dirs)) {
-    if (!onScalp(t.x) || !onScalp(t.y) || !onScalp(t.z)) continue;
+    if (!onScalp[t.x] || !onScalp[t.y] || !onScalp[t.z]) continue;
     const glm::uvec3 tri(vertex(t.x), vertex(t.y), vertex(t.z));
     if (!straddlesPart(positions[tri.x], positions[tri.y], positions[tri.z])) triangles.push_back(tri);
   }

@@ -1,10 +1,12 @@
 #include "engine/hair/level_set_mesh.h"
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <vector>
 
 #include "engine/error.h"
+#include "engine/hair/marching_cubes_table.h"
 #include "engine/hair/parallel_for.h"
 
 namespace hp {
@@ -12,7 +14,7 @@ namespace {
 // The zero of the field on an edge a-b whose grid values fa, fb differ in sign, to 1 micrometre of
 // field value: regula falsi from the grid's linear estimate, bracket kept, Illinois-style (an end kept
 // twice has its value halved, so a curved field does not stall one end). Staying on the edge keeps
-// every triangle wound like its tetrahedron. All edges of a brick step together, one batch per step.
+// every triangle wound as its case in the table says. All edges of a brick step together, one batch per step.
 struct EdgeZero {
   glm::vec3 a, b;
   float fa, fb;
@@ -35,20 +37,15 @@ struct EdgeZero {
   glm::vec3 result() const { return done ? a : guess(); }
 };
 
-// The six tetrahedra of a cube (corner n = x + 2y + 4z): paths 0 -> 0+e_a -> 0+e_a+e_b -> 7. Every
-// edge joins a corner u to a corner v ⊃ u (as bit sets), i.e. node c+u to node c+u+d with d = v ^ u:
-// one of the 7 edges leaving node c+u in a positive direction, which lie in the cell whose lowest node
-// is c+u. That cell owns the edge's vertex.
-constexpr std::array<std::array<std::uint32_t, 4>, 6> kTets{{
-    {0, 1, 3, 7}, {0, 1, 5, 7}, {0, 2, 3, 7}, {0, 2, 6, 7}, {0, 4, 5, 7}, {0, 4, 6, 7}}};
-
 glm::uvec3 cornerOffset(std::uint32_t n) { return {n & 1u, (n >> 1) & 1u, (n >> 2) & 1u}; }
 
+// A crossed axis edge's vertex belongs to the cell whose lowest node is the edge's lower end (its
+// first corner): each cell owns the three edges leaving its corner 0 in +x, +y, +z.
 struct Brick {
   glm::uvec3 cellLo{0}, cellHi{0};        // cells [cellLo, cellHi)
-  std::vector<std::int32_t> edgeVertex;   // per cell of the brick and direction 1..7: local vertex or -1
-  std::vector<std::uint32_t> edgeCell;    // per local vertex: cell (local index) * 8 + direction
-  std::vector<glm::uvec3> crossedCells;   // found by findEdges, triangulated later
+  std::vector<std::int32_t> edgeVertex;   // per cell of the brick (local index) * 3 + axis: local vertex or -1
+  std::vector<std::uint32_t> edgeOwner;   // per local vertex: local cell * 3 + axis
+  std::vector<std::uint32_t> crossed;     // crossed cells: local cell << 8 | case (inside corners)
   std::vector<std::uint32_t> indices;     // triangles, global vertex indices
   std::uint32_t base = 0;                 // global index of local vertex 0
 };
@@ -72,11 +69,14 @@ class Mesher {
   HeadMesh run() {
     parallelFor(bricks_.size(), [&](std::size_t s) { findEdges(bricks_[s]); }, 4);
     std::uint32_t vertices = 0;
-    for (Brick& b : bricks_) b.base = vertices, vertices += std::uint32_t(b.edgeCell.size());
+    for (Brick& b : bricks_) b.base = vertices, vertices += std::uint32_t(b.edgeOwner.size());
     mesh_.positions.resize(vertices);
     mesh_.normals.resize(vertices);
     parallelFor(bricks_.size(), [&](std::size_t s) { placeVertices(std::int32_t(s)); }, 4);
     parallelFor(bricks_.size(), [&](std::size_t s) { triangulate(bricks_[s]); }, 4);
+    std::size_t indices = 0;
+    for (const Brick& b : bricks_) indices += b.indices.size();
+    mesh_.indices.reserve(indices);
     for (Brick& b : bricks_) mesh_.indices.insert(mesh_.indices.end(), b.indices.begin(), b.indices.end());
     return std::move(mesh_);
   }
@@ -90,55 +90,57 @@ class Mesher {
   std::vector<Brick> bricks_;
   HeadMesh mesh_;
 
-  glm::uvec3 brickSize(const Brick& b) const { return b.cellHi - b.cellLo; }
-  std::uint32_t localCell(const Brick& b, const glm::uvec3& c) const {
-    const glm::uvec3 s = brickSize(b), l = c - b.cellLo;
-    return (l.z * s.y + l.y) * s.x + l.x;
+  static std::uint32_t local(const glm::uvec3& l, const glm::uvec3& size) { return (l.z * size.y + l.y) * size.x + l.x; }
+  glm::uvec3 cellOf(const Brick& b, std::uint32_t l) const {
+    const glm::uvec3 s = b.cellHi - b.cellLo;
+    return b.cellLo + glm::uvec3(l % s.x, (l / s.x) % s.y, l / (s.x * s.y));
   }
   float value(const glm::uvec3& n) const { return g_.at(n.x * s_, n.y * s_, n.z * s_); }
   glm::vec3 node(const glm::uvec3& n) const { return g_.node(n.x * s_, n.y * s_, n.z * s_); }
 
-  // A cell the surface crosses: some corner inside, some not. Such a cell must not touch the boundary.
-  bool crossed(const glm::uvec3& c) const {
-    bool anyIn = false, anyOut = false;
-    for (std::uint32_t n = 0; n < 8; ++n) (value(c + cornerOffset(n)) < 0.0f ? anyIn : anyOut) = true;
-    if (!anyIn || !anyOut) return false;
+  // A crossed cell must not touch the grid's boundary (its upper neighbours own some of its edges).
+  void checkInside(const glm::uvec3& c) const {
     if (c.x == 0 || c.y == 0 || c.z == 0 || c.x + 2 == dims_.x || c.y + 2 == dims_.y || c.z + 2 == dims_.z)
       throw Error("level set mesh: the surface reaches the edge of the grid (it is not closed inside it)");
-    return true;
   }
 
-  template <typename Visit>
-  void forCrossedCells(const Brick& b, Visit&& visit) const {
-    for (std::uint32_t z = b.cellLo.z; z < b.cellHi.z; ++z)
-      for (std::uint32_t y = b.cellLo.y; y < b.cellHi.y; ++y)
-        for (std::uint32_t x = b.cellLo.x; x < b.cellHi.x; ++x)
-          if (crossed({x, y, z})) visit(glm::uvec3(x, y, z));
-  }
-
+  // The brick's nodes' signs (read once each), then per cell its case and its crossed edges.
   void findEdges(Brick& b) {
-    const glm::uvec3 s = brickSize(b);
-    b.edgeVertex.assign(std::size_t(s.x) * s.y * s.z * 7, -1);
-    forCrossedCells(b, [&](const glm::uvec3& c) {
-      b.crossedCells.push_back(c);
-      const bool inside = value(c) < 0.0f;
-      for (std::uint32_t d = 1; d < 8; ++d)
-        if ((value(c + cornerOffset(d)) < 0.0f) != inside) {
-          b.edgeVertex[std::size_t(localCell(b, c)) * 7 + d - 1] = std::int32_t(b.edgeCell.size());
-          b.edgeCell.push_back(localCell(b, c) * 8 + d);
+    const glm::uvec3 s = b.cellHi - b.cellLo, n = s + 1u;
+    if (s.x == 0 || s.y == 0 || s.z == 0) return;
+    std::vector<std::uint8_t> in(std::size_t(n.x) * n.y * n.z);
+    for (std::uint32_t z = 0; z < n.z; ++z)
+      for (std::uint32_t y = 0; y < n.y; ++y)
+        for (std::uint32_t x = 0; x < n.x; ++x)
+          in[local({x, y, z}, n)] = value(b.cellLo + glm::uvec3(x, y, z)) < 0.0f;
+    if (std::all_of(in.begin(), in.end(), [&](std::uint8_t i) { return i == in[0]; })) return;  // in the band, not crossed
+    const std::uint32_t step[3] = {1u, n.x, n.x * n.y};
+    b.edgeVertex.assign(std::size_t(s.x) * s.y * s.z * 3, -1);
+    for (std::uint32_t z = 0; z < s.z; ++z)
+      for (std::uint32_t y = 0; y < s.y; ++y)
+        for (std::uint32_t x = 0; x < s.x; ++x) {
+          const std::uint32_t c0 = local({x, y, z}, n);
+          std::uint32_t inside = 0;
+          for (std::uint32_t k = 0; k < 8; ++k)
+            inside |= std::uint32_t(in[c0 + (k & 1u) * step[0] + ((k >> 1) & 1u) * step[1] + (k >> 2) * step[2]]) << k;
+          if (inside == 0 || inside == 255) continue;
+          checkInside(b.cellLo + glm::uvec3(x, y, z));
+          const std::uint32_t cell = local({x, y, z}, s);
+          b.crossed.push_back(cell << 8 | inside);
+          for (std::uint32_t axis = 0; axis < 3; ++axis)
+            if (((inside >> (1u << axis)) & 1u) != (inside & 1u)) {
+              b.edgeVertex[cell * 3 + axis] = std::int32_t(b.edgeOwner.size());
+              b.edgeOwner.push_back(cell * 3 + axis);
+            }
         }
-    });
   }
 
   void placeVertices(std::int32_t slot) {
     const Brick& b = bricks_[std::size_t(slot)];
-    const glm::uvec3 s = brickSize(b);
     std::vector<EdgeZero> edges;
-    edges.reserve(b.edgeCell.size());
-    for (std::uint32_t edge : b.edgeCell) {
-      const std::uint32_t cell = edge / 8;
-      const glm::uvec3 c = b.cellLo + glm::uvec3(cell % s.x, (cell / s.x) % s.y, cell / (s.x * s.y));
-      const glm::uvec3 e = c + cornerOffset(edge % 8);
+    edges.reserve(b.edgeOwner.size());
+    for (std::uint32_t owner : b.edgeOwner) {
+      const glm::uvec3 c = cellOf(b, owner / 3), e = c + cornerOffset(1u << (owner % 3));
       edges.push_back({node(c), node(e), value(c), value(e)});
     }
     std::vector<glm::vec3> points;
@@ -174,75 +176,34 @@ class Mesher {
     }
   }
 
-  // The vertex on the edge from node t to node t + offset(d), owned by the cell whose lowest node is t.
-  std::uint32_t edgeVertex(const glm::uvec3& t, std::uint32_t d) const {
-    const glm::uvec3 brick = t / brickCells_;
-    const std::int32_t slot = band_.nearSlot[band_.brickIndex(brick)];
-    const std::int32_t local =
-        slot < 0 ? -1 : bricks_[std::size_t(slot)].edgeVertex[std::size_t(localCell(bricks_[std::size_t(slot)], t)) * 7 + d - 1];
-    if (local < 0) throw Error("level set mesh: a crossed edge has no vertex (the band misses a crossed cell)");
-    return bricks_[std::size_t(slot)].base + std::uint32_t(local);
+  // The vertex on the edge from mesh node t along axis: owned by the cell whose lowest node is t,
+  // in this brick or (on its upper faces) in a neighbouring one.
+  std::uint32_t edgeVertex(const Brick& b, const glm::uvec3& t, std::uint32_t axis) const {
+    const Brick* owner = &b;
+    if (glm::any(glm::greaterThanEqual(t, b.cellHi))) {
+      const std::int32_t slot = band_.nearSlot[band_.brickIndex(t / brickCells_)];
+      owner = slot < 0 ? nullptr : &bricks_[std::size_t(slot)];
+    }
+    const std::int32_t v = owner && !owner->edgeVertex.empty()
+                               ? owner->edgeVertex[local(t - owner->cellLo, owner->cellHi - owner->cellLo) * 3 + axis]
+                               : -1;
+    if (v < 0) throw Error("level set mesh: a crossed edge has no vertex (the band misses a crossed cell)");
+    return owner->base + std::uint32_t(v);
   }
 
-  // Per crossed cell: which corners are inside (bit n: corner n), and the vertices of its edges looked
-  // up once (key lower corner * 8 + upper corner), shared by its six tetrahedra.
-  struct CellCuts {
-    std::uint32_t inside = 0;
-    std::array<std::int64_t, 64> vertex;
-  };
-
+  // Each crossed cell's case from the table; its edges' vertices looked up once per cell.
   void triangulate(Brick& b) {
-    for (const glm::uvec3& c : b.crossedCells) {
-      CellCuts cell;
-      for (std::uint32_t n = 0; n < 8; ++n) cell.inside |= std::uint32_t(value(c + cornerOffset(n)) < 0.0f) << n;
-      cell.vertex.fill(-1);
-      for (const auto& t : kTets) tetrahedron(b, c, cell, t);
+    for (std::uint32_t entry : b.crossed) {
+      const glm::uvec3 c = cellOf(b, entry >> 8);
+      const MarchingCase& mc = marchingCase(entry & 255u);
+      std::array<std::int64_t, 12> vertex;
+      vertex.fill(-1);
+      for (std::uint32_t i = 0; i < 3u * mc.triangleCount; ++i) {
+        const std::uint32_t e = mc.edges[i];
+        if (vertex[e] < 0) vertex[e] = edgeVertex(b, c + cornerOffset(edgeCorner(e)), edgeAxis(e));
+        b.indices.push_back(std::uint32_t(vertex[e]));
+      }
     }
-  }
-
-  // Orientation is decided on the tetrahedron's corners, never on the (possibly tiny) triangle: a
-  // vertex cut on edge a-b moves from a toward b, so the cut triangle is wound like its corners.
-  static void emit(Brick& b, std::uint32_t v0, std::uint32_t v1, std::uint32_t v2, bool flip) {
-    if (flip) std::swap(v1, v2);
-    b.indices.insert(b.indices.end(), {v0, v1, v2});
-  }
-
-  // Orientation from the corners' offsets in the cell (exact small integers: the same decisions as
-  // world positions, which are the offsets scaled by the cell and moved).
-  void tetrahedron(Brick& b, const glm::uvec3& c, CellCuts& cell, const std::array<std::uint32_t, 4>& corner) const {
-    std::array<glm::vec3, 4> pos;
-    std::array<int, 4> in{}, out{};
-    int nIn = 0, nOut = 0;
-    for (int v = 0; v < 4; ++v) {
-      pos[v] = glm::vec3(cornerOffset(corner[v]));
-      ((cell.inside >> corner[v]) & 1u ? in[nIn++] : out[nOut++]) = v;
-    }
-    if (nIn == 0 || nOut == 0) return;
-    auto cut = [&](int u, int v) {
-      std::uint32_t lo = corner[u], hi = corner[v];
-      if ((lo & hi) != lo) std::swap(lo, hi);  // the subset corner is the edge's lower node
-      std::int64_t& known = cell.vertex[lo * 8 + hi];
-      if (known < 0) known = edgeVertex(c + cornerOffset(lo), lo ^ hi);
-      return std::uint32_t(known);
-    };
-    if (nIn == 1 || nOut == 1) {
-      const int apex = nIn == 1 ? in[0] : out[0];
-      const std::array<int, 3> r = nIn == 1 ? std::array<int, 3>{out[0], out[1], out[2]}
-                                            : std::array<int, 3>{in[0], in[1], in[2]};
-      const glm::vec3 n = glm::cross(pos[r[1]] - pos[r[0]], pos[r[2]] - pos[r[0]]);
-      const bool facesAwayFromApex = glm::dot(n, pos[r[0]] - pos[apex]) > 0.0f;
-      // Outside is away from a lone inside corner, toward a lone outside one.
-      emit(b, cut(apex, r[0]), cut(apex, r[1]), cut(apex, r[2]), facesAwayFromApex != (nIn == 1));
-      return;
-    }
-    // Two in, two out: the quad through the four crossed edges, in cyclic order. Its normal is that
-    // of the midpoint parallelogram, (o1 - o0) x (i1 - i0); outside is toward the out corners.
-    const glm::vec3 &i0 = pos[in[0]], &i1 = pos[in[1]], &o0 = pos[out[0]], &o1 = pos[out[1]];
-    const bool flip = glm::dot(glm::cross(o1 - o0, i1 - i0), (o0 + o1) - (i0 + i1)) < 0.0f;
-    const std::uint32_t q0 = cut(in[0], out[0]), q1 = cut(in[0], out[1]), q2 = cut(in[1], out[1]),
-                        q3 = cut(in[1], out[0]);
-    emit(b, q0, q1, q2, flip);
-    emit(b, q0, q2, q3, flip);
   }
 };
 }  // namespace

@@ -1,12 +1,11 @@
 #pragma once
-// Contract: meshes the zero level set of an SdfGrid by marching tetrahedra: every grid cell is split
-// into the six tetrahedra of the Kuhn triangulation (all around the cell's main diagonal, so
-// neighbouring cells split their shared face the same way), and every tetrahedron the surface crosses
-// gives one or two triangles with vertices on its edges. Vertices are shared between tetrahedra (one
-// per crossed grid edge), so the mesh is closed and manifold with no ambiguous cases; each vertex is
-// the zero of the exact field on its edge (regula falsi; the grid's nodes must be samples of it).
-// Triangles are counter-clockwise seen from outside (the positive side); normals are the field's
-// normalized gradient. A surface that reaches the grid's boundary throws hp::Error.
+// Contract: meshes the zero level set of an SdfGrid by marching cubes (marching_cubes_table.h: a
+// table generated from one face rule, so cells that share a face cut it the same way, ambiguous faces
+// included). Every crossed grid edge holds one vertex, shared by the cells around it, so the mesh is
+// closed and manifold; each vertex is the zero of the exact field on its edge (regula falsi; the
+// grid's nodes must be samples of it). Triangles are counter-clockwise seen from outside (the
+// positive side); normals are the field's normalized gradient. A surface that reaches the grid's
+// boundary throws hp::Error.
 // Only the cells of "near" bricks are visited (LevelSetBand): bricks of cubes of cells in which the
 // grid's sign is known to be constant are skipped. Bricks are meshed on parallelFor's threads and
 // joined in brick order, so the mesh is the same for any thread count. Deterministic.

@@ -1,0 +1,26 @@
+#pragma once
+// Contract: the marching-cubes case table, generated once (not typed in) from one rule, so it is
+// consistent by construction. Cube corner n = x + 2y + 4z; a case is the set of inside corners (bit n:
+// corner n has a negative value). Edge e joins corner edgeCorner(e) to edgeCorner(e) + axis e / 4.
+// On each cube face the crossed edges are joined by segments that cut off the face's inside corners,
+// chains of adjacent inside corners together; a face with two diagonal inside corners (ambiguous)
+// therefore always separates them. The decision depends only on the face's four signs, so the two
+// cells that share a face cut it the same way: meshes are closed and manifold. Each closed loop of
+// segments is one polygon, triangulated by cutting alternate ears (fewer slivers than a fan); every
+// triangle is counter-clockwise seen from outside (the positive side). Pure and deterministic.
+#include <array>
+#include <cstdint>
+
+namespace hp {
+struct MarchingCase {
+  std::uint8_t triangleCount = 0;
+  std::array<std::uint8_t, 36> edges{};  // triangle t: edges[3t], edges[3t + 1], edges[3t + 2]
+};
+
+// Edge e in [0, 12): axis e / 4 (0 x, 1 y, 2 z), from the corner edgeCorner(e), whose bit for that axis is 0.
+std::uint32_t edgeAxis(std::uint32_t e);
+std::uint32_t edgeCorner(std::uint32_t e);
+
+// The triangles of the case whose inside corners are the set bits of `inside`.
+const MarchingCase& marchingCase(std::uint32_t inside);
+}  // namespace hp
