@@ -83,19 +83,25 @@ ScalpMesh makeDefaultScalp(std::uint32_t sphereSamples) {
   // Every direction above the hairline meets the surface (on threads: each ray is independent); the
   // mesh keeps those that a scalp triangle uses, numbered in the order the triangles first use them.
   std::vector<std::uint8_t> onScalp(dirs.size());
-  std::vector<glm::vec3> surface(dirs.size()), gradient(dirs.size());
-  for (std::size_t i = 0; i < dirs.size(); ++i) onScalp[i] = aboveHairline(glm::vec3(dirs[i]));
-  parallelFor(dirs.size(), [&](std::size_t i) {
-    if (onScalp[i]) surface[i] = headSurfaceAlong(glm::vec3(dirs[i]), &gradient[i]);
-  }, 64);
+  std::vector<glm::vec3> rays;  // the directions above the hairline, in order
+  std::vector<std::uint32_t> ray(dirs.size(), 0);
+  for (std::size_t i = 0; i < dirs.size(); ++i)
+    if ((onScalp[i] = aboveHairline(glm::vec3(dirs[i])))) ray[i] = std::uint32_t(rays.size()), rays.push_back(glm::vec3(dirs[i]));
+  std::vector<glm::vec3> surface(rays.size()), gradient(rays.size());
+  constexpr std::size_t kChunk = 256;  // rays per batch
+  parallelFor((rays.size() + kChunk - 1) / kChunk, [&](std::size_t c) {
+    const std::size_t first = c * kChunk, n = std::min(kChunk, rays.size() - first);
+    headSurfacesAlong(std::span(rays).subspan(first, n), std::span(surface).subspan(first, n),
+                      std::span(gradient).subspan(first, n));
+  }, 1);
   std::vector<std::int64_t> remap(dirs.size(), -1);
   std::vector<glm::vec3> positions, normals;
   std::vector<glm::uvec3> triangles;
   auto vertex = [&](std::uint32_t i) {
     if (remap[i] < 0) {
       remap[i] = static_cast<std::int64_t>(positions.size());
-      positions.push_back(surface[i]);
-      normals.push_back(glm::normalize(gradient[i]));
+      positions.push_back(surface[ray[i]]);
+      normals.push_back(glm::normalize(gradient[ray[i]]));
     }
     return static_cast<std::uint32_t>(remap[i]);
   };

@@ -1,6 +1,7 @@
 #include "engine/hair/head_sdf.h"
 
 #include <cmath>
+#include <vector>
 
 namespace hp {
 namespace {
@@ -62,23 +63,85 @@ glm::vec3 centralDifference(const F& f, const glm::vec3& p) {
 
 glm::vec3 headGradient(const glm::vec3& p) { return centralDifference(headDistance, p); }
 
-glm::vec3 headSurfaceAlong(const glm::vec3& dir, glm::vec3* gradient) {
+namespace {
+// One ray's root: bisection to a 5 mm bracket, then regula falsi (Illinois: an end kept twice has its
+// value halved) until |field| < 0.1 um or no float is left between the ends.
+struct RayZero {
   float inside = 0.0f, outside = 0.3f;  // the center is inside, 0.3 m out is past every feature
-  // Once the bracket is short, the field specialised to a box around it gives the same values, faster.
-  constexpr int kWhole = 6, kSteps = 40;
-  for (int i = 0; i < kWhole; ++i) {
-    const float mid = 0.5f * (inside + outside);
-    (headDistance(kCraniumCenter + mid * dir) < 0.0f ? inside : outside) = mid;
+  float fIn = 0.0f, fOut = 0.0f, t = 0.0f;
+  int kept = 0;
+  bool done = false;
+  float falsePosition() const {
+    const float x = (inside * fOut - outside * fIn) / (fOut - fIn);
+    return x > inside && x < outside ? x : 0.5f * (inside + outside);
   }
-  const glm::vec3 a = kCraniumCenter + inside * dir, b = kCraniumCenter + outside * dir, pad(1e-3f);
-  const sdf::Program near = headField().specialise(glm::min(a, b) - pad, glm::max(a, b) + pad);
-  for (int i = kWhole; i < kSteps; ++i) {
-    const float mid = 0.5f * (inside + outside);
-    if (mid == inside || mid == outside) break;  // adjacent floats: further steps change nothing
-    (near(kCraniumCenter + mid * dir) < 0.0f ? inside : outside) = mid;
+  void update(float f) {
+    if (std::abs(f) < 1e-7f || t == inside || t == outside) {
+      done = true;
+    } else if (f < 0.0f) {
+      inside = t, fIn = f, kept = kept < 0 ? kept - 1 : -1;
+      if (kept <= -2) fOut *= 0.5f;
+    } else {
+      outside = t, fOut = f, kept = kept > 0 ? kept + 1 : 1;
+      if (kept >= 2) fIn *= 0.5f;
+    }
   }
-  const glm::vec3 surface = kCraniumCenter + outside * dir;
-  if (gradient) *gradient = centralDifference(near, surface);  // == headGradient(surface): probes within the pad
+};
+
+// The field at kCraniumCenter + t(ray) dir for every ray `pick` selects, in one batch.
+template <typename T, typename Pick>
+std::vector<float> alongRays(std::span<const glm::vec3> dirs, std::span<RayZero> rays, T t, Pick pick) {
+  std::vector<glm::vec3> points;
+  for (std::size_t i = 0; i < rays.size(); ++i)
+    if (pick(rays[i])) points.push_back(kCraniumCenter + t(rays[i]) * dirs[i]);
+  std::vector<float> values(points.size());
+  headField().evaluate(points, values);
+  return values;
+}
+}  // namespace
+
+void headSurfacesAlong(std::span<const glm::vec3> dirs, std::span<glm::vec3> surfaces, std::span<glm::vec3> gradients) {
+  std::vector<RayZero> rays(dirs.size());
+  auto all = [](const RayZero&) { return true; };
+  for (int i = 0; i < 6; ++i) {
+    auto mid = [](const RayZero& r) { return 0.5f * (r.inside + r.outside); };
+    const std::vector<float> f = alongRays(dirs, rays, mid, all);
+    for (std::size_t r = 0; r < rays.size(); ++r) (f[r] < 0.0f ? rays[r].inside : rays[r].outside) = mid(rays[r]);
+  }
+  const std::vector<float> fIn = alongRays(dirs, rays, [](const RayZero& r) { return r.inside; }, all);
+  const std::vector<float> fOut = alongRays(dirs, rays, [](const RayZero& r) { return r.outside; }, all);
+  for (std::size_t r = 0; r < rays.size(); ++r) rays[r].fIn = fIn[r], rays[r].fOut = fOut[r], rays[r].t = rays[r].outside;
+  auto active = [](const RayZero& r) { return !r.done; };
+  for (int step = 0; step < 24; ++step) {
+    for (RayZero& r : rays)
+      if (!r.done) r.t = r.falsePosition();
+    const std::vector<float> f = alongRays(dirs, rays, [](const RayZero& r) { return r.t; }, active);
+    if (f.empty()) break;
+    std::size_t k = 0;
+    for (RayZero& r : rays)
+      if (!r.done) r.update(f[k++]);
+  }
+  // Gradients: headGradient's six probes per point, one batch.
+  constexpr float h = 2e-4f;
+  std::vector<glm::vec3> probes;
+  for (std::size_t r = 0; r < rays.size(); ++r) {
+    surfaces[r] = kCraniumCenter + rays[r].t * dirs[r];
+    for (int axis = 0; axis < 3; ++axis) {
+      glm::vec3 o(0.0f);
+      o[axis] = h;
+      probes.push_back(surfaces[r] + o), probes.push_back(surfaces[r] - o);
+    }
+  }
+  std::vector<float> f(probes.size());
+  headField().evaluate(probes, f);
+  for (std::size_t r = 0; r < rays.size() && !gradients.empty(); ++r)
+    gradients[r] = glm::vec3(f[6 * r] - f[6 * r + 1], f[6 * r + 2] - f[6 * r + 3], f[6 * r + 4] - f[6 * r + 5]) / (2.0f * h);
+}
+
+glm::vec3 headSurfaceAlong(const glm::vec3& dir, glm::vec3* gradient) {
+  glm::vec3 surface, g;
+  headSurfacesAlong({&dir, 1}, {&surface, 1}, {&g, 1});
+  if (gradient) *gradient = g;
   return surface;
 }
 

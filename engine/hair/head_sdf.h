@@ -6,6 +6,8 @@
 // hairline and the face region are read from the same field. Pure and deterministic.
 #include <glm/glm.hpp>
 
+#include <span>
+
 #include "engine/hair/sdf_program.h"
 
 namespace hp {
@@ -20,9 +22,12 @@ inline constexpr glm::vec3 kHeadFieldHigh{0.27f, 0.115f, 0.16f};
 // The cranium's center: rays from here meet the scalp.
 inline constexpr glm::vec3 kCraniumCenter{0.0f, 0.005f, -0.012f};
 
-// The surface point on the ray from kCraniumCenter along unit `dir` (bisection on the field), and
+// The surface point on the ray from kCraniumCenter along unit `dir` (|field| < 0.1 um), and
 // headGradient there when `gradient` is given.
 glm::vec3 headSurfaceAlong(const glm::vec3& dir, glm::vec3* gradient = nullptr);
+// The same for many rays, evaluated in batches (several times faster per ray); gradients may be empty,
+// else one per ray like surfaces.
+void headSurfacesAlong(std::span<const glm::vec3> dirs, std::span<glm::vec3> surfaces, std::span<glm::vec3> gradients);
 
 // Hair grows where the direction from the cranium center is above the hairline: high at the
 // forehead, above the ears at the sides, low at the nape.

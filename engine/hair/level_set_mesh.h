@@ -23,6 +23,11 @@ struct LevelSetBand {
   std::uint32_t brickCells = 4;
   glm::uvec3 bricks{0};
   std::vector<std::int32_t> nearSlot;  // per brick: -1 where the sign is constant in the brick, else its slot
+  // Per brick, of the nodes it owns ([b, b + 1) brickCells per axis, the last brick also the grid's
+  // last node): bit kSomeInside if one is negative, bit kSomeOutside if one is not. Empty: not known.
+  // Lets the mesher skip a near brick whose nodes all have one sign without reading them.
+  std::vector<std::uint8_t> signs;
+  static constexpr std::uint8_t kSomeInside = 1, kSomeOutside = 2;
   // The exact field near slot's brick (its box grown by a tenth of a cell on every side): at one
   // point, and at many (out[i] = exact(slot, points[i])).
   std::function<float(std::int32_t slot, const glm::vec3& p)> exact;

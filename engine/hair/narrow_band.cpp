@@ -22,6 +22,18 @@ struct NearBrick {
   sdf::Program program;
 };
 
+// Buffers a thread reuses from brick to brick (no allocation per brick once they have grown).
+struct Scratch {
+  std::vector<glm::vec3> points;
+  std::vector<std::size_t> where;
+  std::vector<float> values;
+  std::vector<std::uint8_t> done;
+};
+Scratch& scratch() {
+  thread_local Scratch s;
+  return s;
+}
+
 struct Found {
   std::vector<FarBlock> far;
   std::vector<NearBrick> near;
@@ -42,9 +54,11 @@ class Sampler {
     }, 1);
     collect(found);
     std::vector<std::size_t> exact(brickFar_.size(), 0);
-    parallelFor(brickFar_.size(), [&](std::size_t b) { exact[b] = fillBrick(brickCoords(b)); }, 16);
+    signs_.assign(brickFar_.size(), 0);
+    parallelFor(brickFar_.size(), [&](std::size_t b) { exact[b] = fillBrick(brickCoords(b), signs_[b]); }, 16);
     NarrowBandGrid out;
     for (std::size_t e : exact) out.exactNodes += e;
+    out.band.signs = std::move(signs_);
     out.band.brickCells = B_;
     out.band.bricks = bricks_;
     out.band.nearSlot = std::move(nearSlot_);
@@ -66,6 +80,7 @@ class Sampler {
   std::vector<FarBlock> far_;
   std::vector<sdf::Program> programs_;
   std::vector<std::int32_t> brickFar_, nearSlot_;  // per brick: its far block, or its near slot (else -1)
+  std::vector<std::uint8_t> signs_;                // per brick: LevelSetBand::signs
 
   std::size_t brickIndex(const glm::uvec3& b) const { return (std::size_t(b.z) * bricks_.y + b.y) * bricks_.x + b.x; }
   glm::uvec3 brickCoords(std::size_t i) const {
@@ -82,8 +97,9 @@ class Sampler {
     sdf::Program p = parent.specialise(node(c0) - pad, node(c1) + pad, &range);
     if (range.lo > band_ || range.hi < -band_) {
       FarBlock f{c0, c1, {}};
-      for (std::uint32_t n = 0; n < 8; ++n)
-        f.corner[n] = p(node({n & 1u ? c1.x : c0.x, n & 2u ? c1.y : c0.y, n & 4u ? c1.z : c0.z}));
+      std::array<glm::vec3, 8> corners;
+      for (std::uint32_t n = 0; n < 8; ++n) corners[n] = node({n & 1u ? c1.x : c0.x, n & 2u ? c1.y : c0.y, n & 4u ? c1.z : c0.z});
+      p.evaluate(corners, f.corner);
       out.far.push_back(f);
       return;
     }
@@ -153,12 +169,13 @@ class Sampler {
   // The nodes brick b owns: [b B, (b + 1) B) per axis, the last brick also the grid's last node. A near
   // brick evaluates them all (one batch); a far one blends them from its far block, then evaluates
   // those on its lower faces that a near neighbour shares.
-  std::size_t fillBrick(const glm::uvec3& b) {
+  std::size_t fillBrick(const glm::uvec3& b, std::uint8_t& signs) {
     const glm::uvec3 lo = b * B_;
     const glm::uvec3 hi = glm::mix(glm::min((b + 1u) * B_, cells_), cells_ + 1u, glm::equal(b + 1u, bricks_));
     const std::int32_t own = nearSlot_[brickIndex(b)];
-    if (own >= 0) return fillNearBrick(programs_[std::size_t(own)], lo, hi);
+    if (own >= 0) return fillNearBrick(programs_[std::size_t(own)], lo, hi, signs);
     const FarBlock& far = far_[std::size_t(brickFar_[brickIndex(b)])];
+    signs = far.corner[0] < 0.0f ? LevelSetBand::kSomeInside : LevelSetBand::kSomeOutside;  // sign-definite
     fillFar(far, lo, hi);
     return nearBelow(b) ? fillShared(b, lo, hi) : 0;
   }
@@ -168,9 +185,8 @@ class Sampler {
   // near program gives the field's own value there). Returns how many nodes became exact.
   std::size_t fillShared(const glm::uvec3& b, const glm::uvec3& lo, const glm::uvec3& hi) {
     const glm::uvec3 size = hi - lo;
-    std::vector<bool> done(std::size_t(size.x) * size.y * size.z, false);
-    std::vector<glm::vec3> points;
-    std::vector<std::size_t> where, local;
+    auto& [points, where, values, done] = scratch();
+    done.assign(std::size_t(size.x) * size.y * size.z, 0);
     std::size_t exact = 0;
     for (std::uint32_t d = 1; d < 8; ++d) {
       const glm::uvec3 step(d & 1u, (d >> 1) & 1u, (d >> 2) & 1u);
@@ -179,17 +195,17 @@ class Sampler {
       if (slot < 0) continue;
       // Shared with the neighbour: the lower face along each stepped axis, the whole range along the others.
       const glm::uvec3 end = glm::mix(hi, lo + 1u, glm::equal(step, glm::uvec3(1u)));
-      points.clear(), where.clear(), local.clear();
+      points.clear(), where.clear();
       for (std::uint32_t z = lo.z; z < end.z; ++z)
         for (std::uint32_t y = lo.y; y < end.y; ++y)
           for (std::uint32_t x = lo.x; x < end.x; ++x) {
             const std::size_t l = (std::size_t(z - lo.z) * size.y + (y - lo.y)) * size.x + (x - lo.x);
             if (done[l]) continue;
-            done[l] = true;
+            done[l] = 1;
             points.push_back(node({x, y, z}));
             where.push_back(g_.index(x, y, z));
           }
-      std::vector<float> values(points.size());
+      values.resize(points.size());
       programs_[std::size_t(slot)].evaluate(points, values);
       for (std::size_t i = 0; i < values.size(); ++i) g_.values[where[i]] = values[i];
       exact += values.size();
@@ -197,18 +213,21 @@ class Sampler {
     return exact;
   }
 
-  std::size_t fillNearBrick(const sdf::Program& program, const glm::uvec3& lo, const glm::uvec3& hi) {
-    std::vector<glm::vec3> points;
-    std::vector<std::size_t> where;
+  std::size_t fillNearBrick(const sdf::Program& program, const glm::uvec3& lo, const glm::uvec3& hi, std::uint8_t& signs) {
+    auto& [points, where, values, done] = scratch();
+    points.clear(), where.clear();
     for (std::uint32_t z = lo.z; z < hi.z; ++z)
       for (std::uint32_t y = lo.y; y < hi.y; ++y)
         for (std::uint32_t x = lo.x; x < hi.x; ++x) {
           points.push_back(node({x, y, z}));
           where.push_back(g_.index(x, y, z));
         }
-    std::vector<float> values(points.size());
+    values.resize(points.size());
     program.evaluate(points, values);
-    for (std::size_t i = 0; i < values.size(); ++i) g_.values[where[i]] = values[i];
+    for (std::size_t i = 0; i < values.size(); ++i) {
+      g_.values[where[i]] = values[i];
+      signs |= values[i] < 0.0f ? LevelSetBand::kSomeInside : LevelSetBand::kSomeOutside;
+    }
     return values.size();
   }
 };

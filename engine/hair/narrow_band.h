@@ -7,9 +7,10 @@
 // distance for collisions). Every other brick is "near": its nodes get the exact field, evaluated by
 // the program specialised to the brick (bit-for-bit program(p)). So every node within `band` of the
 // zero level holds the exact value and every cell the surface crosses lies in a near brick; the
-// returned LevelSetBand lets level_set_mesh visit only those, with their fast programs. Bricks run on
-// parallelFor's threads; each node is written by one brick only, so the result never depends on the
-// thread count. Deterministic.
+// returned LevelSetBand lets level_set_mesh visit only those, with their fast programs, and says per
+// brick which signs its nodes have (near bricks the surface does not cross are skipped unread).
+// Bricks run on parallelFor's threads; each node is written by one brick only, so the result never
+// depends on the thread count. Deterministic.
 #include <cstddef>
 
 #include "engine/hair/level_set_mesh.h"
