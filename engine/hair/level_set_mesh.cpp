@@ -88,6 +88,7 @@ class Mesher {
   const std::uint32_t s_;           // mesh nodes are every s_-th grid node
   const glm::uvec3 dims_;           // mesh nodes per axis
   const std::uint32_t brickCells_;  // mesh cells per brick side
+  const std::array<MarchingCase, 256>& cases_ = marchingCases();
   std::vector<Brick> bricks_;
   HeadMesh mesh_;
 
@@ -118,38 +119,47 @@ class Mesher {
     return signs == (LevelSetBand::kSomeInside | LevelSetBand::kSomeOutside);
   }
 
-  // The brick's nodes' signs (read once each), then per cell its case and its crossed edges.
+  // The brick's nodes' signs (read once each) as one bit mask per row of nodes along x, then per cell
+  // its case and its crossed edges; rows of cells whose four node rows agree are skipped.
   void findEdges(Brick& b) {
-    const glm::uvec3 s = b.cellHi - b.cellLo, n = s + 1u;
+    const glm::uvec3 s = b.cellHi - b.cellLo, n = s + 1u;  // n.x <= 33: a row fits in 64 bits
     if (s.x == 0 || s.y == 0 || s.z == 0 || !mayCross(b)) return;
-    thread_local std::vector<std::uint8_t> in;
-    in.resize(std::size_t(n.x) * n.y * n.z);
+    thread_local std::vector<std::uint64_t> rows;  // bit x of rows[y + n.y z]: node cellLo + (x, y, z) is inside
+    rows.resize(std::size_t(n.y) * n.z);
+    const std::size_t rowStep = std::size_t(s_) * g_.dims.x, sliceStep = rowStep * g_.dims.y;
+    const float* first = &g_.values[g_.index(b.cellLo.x * s_, b.cellLo.y * s_, b.cellLo.z * s_)];
+    const std::uint64_t full = (std::uint64_t(1) << n.x) - 1u;
+    std::uint64_t some = 0, every = full;
     for (std::uint32_t z = 0; z < n.z; ++z)
-      for (std::uint32_t y = 0; y < n.y; ++y)
-        for (std::uint32_t x = 0; x < n.x; ++x)
-          in[local({x, y, z}, n)] = value(b.cellLo + glm::uvec3(x, y, z)) < 0.0f;
-    if (std::all_of(in.begin(), in.end(), [&](std::uint8_t i) { return i == in[0]; })) return;  // in the band, not crossed
-    const std::uint32_t step[3] = {1u, n.x, n.x * n.y};
+      for (std::uint32_t y = 0; y < n.y; ++y) {
+        const float* row = first + z * sliceStep + y * rowStep;
+        std::uint64_t mask = 0;
+        for (std::uint32_t x = 0; x < n.x; ++x) mask |= std::uint64_t(row[std::size_t(x) * s_] < 0.0f) << x;
+        rows[y + n.y * z] = mask, some |= mask, every &= mask;
+      }
+    if (some == 0 || every == full) return;  // in the band, not crossed
     b.edgeVertex.assign(std::size_t(s.x) * s.y * s.z * 3, -1);
     std::size_t triangles = 0;
     for (std::uint32_t z = 0; z < s.z; ++z)
-      for (std::uint32_t y = 0; y < s.y; ++y)
+      for (std::uint32_t y = 0; y < s.y; ++y) {
+        const std::uint64_t r00 = rows[y + n.y * z], r10 = rows[y + 1 + n.y * z], r01 = rows[y + n.y * (z + 1)],
+                            r11 = rows[y + 1 + n.y * (z + 1)];
+        if ((r00 | r10 | r01 | r11) == 0 || (r00 & r10 & r01 & r11) == full) continue;
         for (std::uint32_t x = 0; x < s.x; ++x) {
-          const std::uint32_t c0 = local({x, y, z}, n);
-          std::uint32_t inside = 0;
-          for (std::uint32_t k = 0; k < 8; ++k)
-            inside |= std::uint32_t(in[c0 + (k & 1u) * step[0] + ((k >> 1) & 1u) * step[1] + (k >> 2) * step[2]]) << k;
+          const std::uint32_t inside = std::uint32_t((r00 >> x) & 3u) | std::uint32_t((r10 >> x) & 3u) << 2 |
+                                       std::uint32_t((r01 >> x) & 3u) << 4 | std::uint32_t((r11 >> x) & 3u) << 6;
           if (inside == 0 || inside == 255) continue;
           checkInside(b.cellLo + glm::uvec3(x, y, z));
           const std::uint32_t cell = local({x, y, z}, s);
           b.crossed.push_back(cell << 8 | inside);
-          triangles += marchingCase(inside).triangleCount;
+          triangles += cases_[inside].triangleCount;
           for (std::uint32_t axis = 0; axis < 3; ++axis)
             if (((inside >> (1u << axis)) & 1u) != (inside & 1u)) {
               b.edgeVertex[cell * 3 + axis] = std::int32_t(b.edgeOwner.size());
               b.edgeOwner.push_back(cell * 3 + axis);
             }
         }
+      }
     b.indices.reserve(3 * triangles);
   }
 
@@ -218,7 +228,7 @@ class Mesher {
   void triangulate(Brick& b) {
     for (std::uint32_t entry : b.crossed) {
       const glm::uvec3 c = cellOf(b, entry >> 8);
-      const MarchingCase& mc = marchingCase(entry & 255u);
+      const MarchingCase& mc = cases_[entry & 255u];
       std::array<std::int64_t, 12> vertex;
       vertex.fill(-1);
       for (std::uint32_t i = 0; i < 3u * mc.triangleCount; ++i) {

@@ -134,15 +134,8 @@ std::array<MarchingCase, 256> buildTable() {
 }
 }  // namespace
 
-std::uint32_t edgeAxis(std::uint32_t e) { return e / 4; }
-
-std::uint32_t edgeCorner(std::uint32_t e) {
-  const std::uint32_t axis = e / 4, k = e % 4;
-  return ((k & 1u) << ((axis + 1) % 3)) | (((k >> 1) & 1u) << ((axis + 2) % 3));
-}
-
-const MarchingCase& marchingCase(std::uint32_t inside) {
+const std::array<MarchingCase, 256>& marchingCases() {
   static const std::array<MarchingCase, 256> table = buildTable();
-  return table[inside & 255u];
+  return table;
 }
 }  // namespace hp

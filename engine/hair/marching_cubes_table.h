@@ -17,10 +17,14 @@ struct MarchingCase {
   std::array<std::uint8_t, 36> edges{};  // triangle t: edges[3t], edges[3t + 1], edges[3t + 2]
 };
 
-// Edge e in [0, 12): axis e / 4 (0 x, 1 y, 2 z), from the corner edgeCorner(e), whose bit for that axis is 0.
-std::uint32_t edgeAxis(std::uint32_t e);
-std::uint32_t edgeCorner(std::uint32_t e);
+// Edge e in [0, 12): axis e / 4 (0 x, 1 y, 2 z), from the corner edgeCorner(e), whose bits on the two
+// other axes (in cyclic order after the axis) are the bits of e % 4; its bit for the axis is 0.
+constexpr std::uint32_t edgeAxis(std::uint32_t e) { return e / 4; }
+constexpr std::uint32_t edgeCorner(std::uint32_t e) {
+  return ((e & 1u) << ((e / 4 + 1) % 3)) | (((e >> 1) & 1u) << ((e / 4 + 2) % 3));
+}
 
-// The triangles of the case whose inside corners are the set bits of `inside`.
-const MarchingCase& marchingCase(std::uint32_t inside);
+// The table: entry c holds the triangles of the case whose inside corners are the set bits of c.
+const std::array<MarchingCase, 256>& marchingCases();
+inline const MarchingCase& marchingCase(std::uint32_t inside) { return marchingCases()[inside & 255u]; }
 }  // namespace hp

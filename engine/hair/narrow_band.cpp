@@ -42,7 +42,10 @@ struct Found {
 class Sampler {
  public:
   Sampler(const sdf::Program& field, SdfGrid& grid, std::uint32_t brickCells, float band)
-      : field_(field), g_(grid), B_(brickCells), cells_(grid.dims - 1u), bricks_((cells_ + B_ - 1u) / B_), band_(band) {}
+      : field_(field), g_(grid), B_(brickCells), cells_(grid.dims - 1u), bricks_((cells_ + B_ - 1u) / B_), band_(band) {
+    for (int axis = 0; axis < 3; ++axis)
+      for (std::uint32_t i = 0; i < grid.dims[axis]; ++i) coord_[axis].push_back(grid.node(i, i, i)[axis]);
+  }
 
   NarrowBandGrid run() {
     const std::uint32_t topBricks = std::max(1u, kTopCells / B_);
@@ -55,6 +58,11 @@ class Sampler {
     collect(found);
     std::vector<std::size_t> exact(brickFar_.size(), 0);
     signs_.assign(brickFar_.size(), 0);
+    // Far blocks first, whole (long rows), then the near bricks and the far nodes they share.
+    parallelFor(far_.size(), [&](std::size_t f) {
+      const FarBlock& block = far_[f];
+      fillFar(block, block.cellLo, glm::mix(block.cellHi, cells_ + 1u, glm::equal(block.cellHi, cells_)));
+    }, 4);
     parallelFor(brickFar_.size(), [&](std::size_t b) { exact[b] = fillBrick(brickCoords(b), signs_[b]); }, 16);
     NarrowBandGrid out;
     for (std::size_t e : exact) out.exactNodes += e;
@@ -81,13 +89,14 @@ class Sampler {
   std::vector<sdf::Program> programs_;
   std::vector<std::int32_t> brickFar_, nearSlot_;  // per brick: its far block, or its near slot (else -1)
   std::vector<std::uint8_t> signs_;                // per brick: LevelSetBand::signs
+  std::array<std::vector<float>, 3> coord_;        // per axis, the nodes' coordinates (SdfGrid::node's values)
 
   std::size_t brickIndex(const glm::uvec3& b) const { return (std::size_t(b.z) * bricks_.y + b.y) * bricks_.x + b.x; }
   glm::uvec3 brickCoords(std::size_t i) const {
     return {std::uint32_t(i % bricks_.x), std::uint32_t((i / bricks_.x) % bricks_.y),
             std::uint32_t(i / (std::size_t(bricks_.x) * bricks_.y))};
   }
-  glm::vec3 node(const glm::uvec3& n) const { return g_.node(n.x, n.y, n.z); }
+  glm::vec3 node(const glm::uvec3& n) const { return {coord_[0][n.x], coord_[1][n.y], coord_[2][n.z]}; }
 
   // Bricks [b0, b1): far as a whole, one near brick, or split in halves along each axis.
   void classify(const glm::uvec3& b0, const glm::uvec3& b1, const sdf::Program& parent, Found& out) const {
@@ -146,7 +155,7 @@ class Sampler {
   // The trilinear blend of the far block's corner values at every node of [lo, hi) (t = the node's
   // fraction of the block per axis); the x blends are computed once per column, not per node.
   void fillFar(const FarBlock& f, const glm::uvec3& lo, const glm::uvec3& hi) {
-    constexpr std::uint32_t kMax = 33;  // nodes a brick owns per axis (brickCells <= 32, plus the last node)
+    constexpr std::uint32_t kMax = kTopCells + 1;  // nodes a far block owns per axis (at most a top box, plus the last node)
     std::array<float, kMax> x00, x10, x01, x11;
     const glm::vec3 span = glm::max(glm::vec3(f.cellHi - f.cellLo), glm::vec3(1.0f));
     const auto& v = f.corner;
@@ -167,8 +176,8 @@ class Sampler {
   }
 
   // The nodes brick b owns: [b B, (b + 1) B) per axis, the last brick also the grid's last node. A near
-  // brick evaluates them all (one batch); a far one blends them from its far block, then evaluates
-  // those on its lower faces that a near neighbour shares.
+  // brick evaluates them all (one batch); in a far one (already blended with its far block) those on
+  // its lower faces that a near neighbour shares are evaluated.
   std::size_t fillBrick(const glm::uvec3& b, std::uint8_t& signs) {
     const glm::uvec3 lo = b * B_;
     const glm::uvec3 hi = glm::mix(glm::min((b + 1u) * B_, cells_), cells_ + 1u, glm::equal(b + 1u, bricks_));
@@ -176,7 +185,6 @@ class Sampler {
     if (own >= 0) return fillNearBrick(programs_[std::size_t(own)], lo, hi, signs);
     const FarBlock& far = far_[std::size_t(brickFar_[brickIndex(b)])];
     signs = far.corner[0] < 0.0f ? LevelSetBand::kSomeInside : LevelSetBand::kSomeOutside;  // sign-definite
-    fillFar(far, lo, hi);
     return nearBelow(b) ? fillShared(b, lo, hi) : 0;
   }
 
@@ -215,19 +223,21 @@ class Sampler {
 
   std::size_t fillNearBrick(const sdf::Program& program, const glm::uvec3& lo, const glm::uvec3& hi, std::uint8_t& signs) {
     auto& [points, where, values, done] = scratch();
-    points.clear(), where.clear();
+    points.clear();
     for (std::uint32_t z = lo.z; z < hi.z; ++z)
       for (std::uint32_t y = lo.y; y < hi.y; ++y)
-        for (std::uint32_t x = lo.x; x < hi.x; ++x) {
-          points.push_back(node({x, y, z}));
-          where.push_back(g_.index(x, y, z));
-        }
+        for (std::uint32_t x = lo.x; x < hi.x; ++x) points.push_back(node({x, y, z}));
     values.resize(points.size());
     program.evaluate(points, values);
-    for (std::size_t i = 0; i < values.size(); ++i) {
-      g_.values[where[i]] = values[i];
-      signs |= values[i] < 0.0f ? LevelSetBand::kSomeInside : LevelSetBand::kSomeOutside;
-    }
+    const float* value = values.data();
+    for (std::uint32_t z = lo.z; z < hi.z; ++z)
+      for (std::uint32_t y = lo.y; y < hi.y; ++y) {
+        float* row = &g_.values[g_.index(lo.x, y, z)];
+        for (std::uint32_t x = 0; x < hi.x - lo.x; ++x, ++value) {
+          row[x] = *value;
+          signs |= *value < 0.0f ? LevelSetBand::kSomeInside : LevelSetBand::kSomeOutside;
+        }
+      }
     return values.size();
   }
 };

@@ -1,6 +1,6 @@
 // `hairpipe bench head [--repeat R] [--triangles N] [--json]`: host times of the distance-field work
 // done at load time: sampling the default head's field on its grid (narrow band), meshing it (marching
-// tetrahedra), projecting the scalp and marking the mesh's scalp vertices (together: the head build),
+// cubes), projecting the scalp and marking the mesh's scalp vertices (together: the head build),
 // and building a distance grid from a closed collider mesh of about N triangles (a UV sphere, 64 cells
 // on its longest side). Best of R runs per stage, wall clock and process CPU time.
 #include <algorithm>

@@ -1,4 +1,4 @@
-// The default head's signed distance field and its marching-tetrahedra mesh: a closed, consistently wound
+// The default head's signed distance field and its marching-cubes mesh: a closed, consistently wound
 // mesh on the zero level set, with the silhouette of a head and shoulders (nose in profile, neck
 // narrower than the head, shoulders wider), built deterministically.
 #include <gtest/gtest.h>
