@@ -3,6 +3,8 @@
 #include <cmath>
 #include <vector>
 
+#include "engine/error.h"
+
 namespace hp {
 namespace {
 using glm::vec3;
@@ -101,6 +103,8 @@ std::vector<float> alongRays(std::span<const glm::vec3> dirs, std::span<RayZero>
 }  // namespace
 
 void headSurfacesAlong(std::span<const glm::vec3> dirs, std::span<glm::vec3> surfaces, std::span<glm::vec3> gradients) {
+  if (surfaces.size() != dirs.size() || (!gradients.empty() && gradients.size() != dirs.size()))
+    throw Error("head surface: one surface point (and gradient, if any) per ray");
   std::vector<RayZero> rays(dirs.size());
   auto all = [](const RayZero&) { return true; };
   for (int i = 0; i < 6; ++i) {
@@ -121,6 +125,8 @@ void headSurfacesAlong(std::span<const glm::vec3> dirs, std::span<glm::vec3> sur
     for (RayZero& r : rays)
       if (!r.done) r.update(f[k++]);
   }
+  for (RayZero& r : rays)
+    if (!r.done) r.t = r.outside;  // no root found in the steps: the bracket's outer end
   // Gradients: headGradient's six probes per point, one batch.
   constexpr float h = 2e-4f;
   std::vector<glm::vec3> probes;

@@ -72,7 +72,6 @@ class Mesher {
     for (Brick& b : bricks_) b.base = vertices, vertices += std::uint32_t(b.edgeOwner.size());
     mesh_.positions.resize(vertices);
     mesh_.normals.resize(vertices);
-    // Triangles first: the edge tables that findEdges just wrote are still in cache.
     parallelFor(bricks_.size(), [&](std::size_t s) { placeVertices(std::int32_t(s)); }, 4);
     parallelFor(bricks_.size(), [&](std::size_t s) { triangulate(bricks_[s]); }, 4);
     std::size_t indices = 0;
@@ -255,6 +254,8 @@ LevelSetBand wholeGridBand(const SdfGrid& grid, const DistanceFunction& field) {
 
 HeadMesh meshZeroLevel(const SdfGrid& grid, const LevelSetBand& band, std::uint32_t stride) {
   if (grid.empty() || glm::any(glm::lessThan(grid.dims, glm::uvec3(2)))) throw Error("level set mesh: the grid is empty");
+  if (band.brickCells == 0 || band.brickCells > 32)
+    throw Error("level set mesh: bricks of 1 to 32 cells (a row of a brick's nodes is one 64-bit mask)");
   if (stride == 0 || band.brickCells % stride != 0)
     throw Error("level set mesh: the stride must divide the band's brick size");
   if (glm::any(glm::lessThan((grid.dims - 1u) / stride, glm::uvec3(1))))
@@ -262,6 +263,8 @@ HeadMesh meshZeroLevel(const SdfGrid& grid, const LevelSetBand& band, std::uint3
   if (band.brickCells == 0 || band.nearSlot.size() != std::size_t(band.bricks.x) * band.bricks.y * band.bricks.z ||
       glm::any(glm::lessThan(band.bricks * band.brickCells, grid.dims - 1u)))
     throw Error("level set mesh: the band's bricks do not cover the grid");
+  if (!band.signs.empty() && band.signs.size() != band.nearSlot.size())
+    throw Error("level set mesh: the band's sign summaries are not one per brick");
   if (!band.exact || !band.exactMany) throw Error("level set mesh: the band has no exact field");
   return Mesher(grid, band, stride).run();
 }

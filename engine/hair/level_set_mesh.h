@@ -20,12 +20,14 @@
 namespace hp {
 // The grid's cells in bricks of brickCells^3 (the last ones per axis may be partial), x fastest.
 struct LevelSetBand {
-  std::uint32_t brickCells = 4;
+  std::uint32_t brickCells = 4;  // 1 to 32
   glm::uvec3 bricks{0};
   std::vector<std::int32_t> nearSlot;  // per brick: -1 where the sign is constant in the brick, else its slot
-  // Per brick, of the nodes it owns ([b, b + 1) brickCells per axis, the last brick also the grid's
-  // last node): bit kSomeInside if one is negative, bit kSomeOutside if one is not. Empty: not known.
-  // Lets the mesher skip a near brick whose nodes all have one sign without reading them.
+  // Per brick (far ones too), of the nodes it owns ([b, b + 1) brickCells per axis, the last brick also
+  // the grid's last node): bit kSomeInside if one is negative, bit kSomeOutside if one is not. Empty: not
+  // known. The mesher ORs a near brick's entry with those of its up to 7 upper neighbours (whose nodes
+  // close its cells) and skips the brick, unread, when only one bit is set: so every entry must hold
+  // at least the signs its nodes have.
   std::vector<std::uint8_t> signs;
   static constexpr std::uint8_t kSomeInside = 1, kSomeOutside = 2;
   // The exact field near slot's brick (its box grown by a tenth of a cell on every side): at one

@@ -5,9 +5,12 @@
 // On each cube face the crossed edges are joined by segments that cut off the face's inside corners,
 // chains of adjacent inside corners together; a face with two diagonal inside corners (ambiguous)
 // therefore always separates them. The decision depends only on the face's four signs, so the two
-// cells that share a face cut it the same way: meshes are closed and manifold. Each closed loop of
-// segments is one polygon, triangulated by cutting alternate ears (fewer slivers than a fan); every
-// triangle is counter-clockwise seen from outside (the positive side). Pure and deterministic.
+// cells that share a face cut it the same way. Each closed loop of segments is one polygon,
+// triangulated by cutting alternate ears (fewer slivers than a fan), or else by a fan, from the first
+// start whose inner diagonals never join two vertices on one cube face: the cell across an ambiguous
+// face could join the same two, and the edge would have four triangles. With both rules meshes are
+// closed and manifold. Every triangle is counter-clockwise seen from outside (the positive side).
+// Pure and deterministic.
 #include <array>
 #include <cstdint>
 

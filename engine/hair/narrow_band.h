@@ -9,8 +9,9 @@
 // zero level holds the exact value and every cell the surface crosses lies in a near brick; the
 // returned LevelSetBand lets level_set_mesh visit only those, with their fast programs, and says per
 // brick which signs its nodes have (near bricks the surface does not cross are skipped unread).
-// Bricks run on parallelFor's threads; each node is written by one brick only, so the result never
-// depends on the thread count. Deterministic.
+// Far blocks, then bricks, run on parallelFor's threads; within each pass a node is written by one
+// block or brick only (a far node shared with a near brick is rewritten, exactly, in the second pass),
+// so the result never depends on the thread count. Deterministic.
 #include <cstddef>
 
 #include "engine/hair/level_set_mesh.h"

@@ -5,8 +5,10 @@
 #include <map>
 #include <utility>
 
+#include "engine/error.h"
 #include "engine/hair/level_set_mesh.h"
 #include "engine/hair/marching_cubes_table.h"
+#include "engine/hair/narrow_band.h"
 #include "engine/hair/rng.h"
 #include "engine/hair/sdf_grid.h"
 
@@ -59,6 +61,18 @@ TEST(MarchingCubes, EveryCaseUsesExactlyItsCrossedEdges) {
   }
 }
 
+TEST(MarchingCubes, DiagonalInsideCornersOfAFaceAreCutOffSeparately) {
+  // Corners 0 and 3 are diagonal on the face z = 0: two separate corner triangles, sharing no edge
+  // (joining them through the face would make a tunnel, and the cell below would disagree).
+  for (std::uint32_t c : {0b1001u, 0b0110u, 0b00010100u}) {  // z = 0 both ways, and corners 2, 4 on x = 0
+    const MarchingCase& mc = marchingCase(c);
+    ASSERT_EQ(mc.triangleCount, 2u) << "case " << c;
+    std::uint32_t first = 0, second = 0;
+    for (int k = 0; k < 3; ++k) first |= 1u << mc.edges[k], second |= 1u << mc.edges[3 + k];
+    EXPECT_EQ(first & second, 0u) << "case " << c;
+  }
+}
+
 TEST(MarchingCubes, TrianglesFaceThePositiveSide) {
   // Where one corner, or two along an edge, differ from the rest the surface is a plane-like patch:
   // each triangle (edge midpoints) must face away from the inside corners.
@@ -82,18 +96,52 @@ TEST(MarchingCubes, TrianglesFaceThePositiveSide) {
 }
 
 TEST(MarchingCubes, RandomFieldsMeshClosedAndConsistentlyWound) {
-  // Random node values (every ambiguous face and cell occurs), positive in the grid's two outer layers
-  // of nodes (a crossed cell must not touch the boundary); the exact field is the grid's own trilinear interpolation.
+  // Random node values (every ambiguous face and cell occurs), positive in the grid's four outer layers
+  // of nodes (a crossed cell must not touch the boundary, also at stride 2); the exact field is the grid's own trilinear interpolation.
   for (std::uint32_t seed = 1; seed <= 4; ++seed) {
-    SdfGrid grid = sampleField([](const glm::vec3&) { return 1.0f; }, glm::vec3(0.0f), glm::vec3(1.4f), 0.1f);
-    for (std::uint32_t k = 2; k + 2 < grid.dims.z; ++k)
-      for (std::uint32_t j = 2; j + 2 < grid.dims.y; ++j)
-        for (std::uint32_t i = 2; i + 2 < grid.dims.x; ++i)
+    SdfGrid grid = sampleField([](const glm::vec3&) { return 1.0f; }, glm::vec3(0.0f), glm::vec3(1.8f), 0.1f);
+    for (std::uint32_t k = 4; k + 4 < grid.dims.z; ++k)
+      for (std::uint32_t j = 4; j + 4 < grid.dims.y; ++j)
+        for (std::uint32_t i = 4; i + 4 < grid.dims.x; ++i)
           grid.values[grid.index(i, j, k)] = hashRandom(seed, std::uint32_t(grid.index(i, j, k)), 0) - 0.5f;
-    const HeadMesh m = meshZeroLevel(grid, [&](const glm::vec3& p) { return grid.sample(p); });
+    const DistanceFunction field = [&](const glm::vec3& p) { return grid.sample(p); };
+    const HeadMesh m = meshZeroLevel(grid, field);
     ASSERT_GT(m.indices.size(), 300u);
     EXPECT_EQ(unpairedEdges(m.indices), 0u) << "seed " << seed;
     for (const glm::vec3& p : m.positions) ASSERT_LT(std::abs(grid.sample(p)), 1e-3f);
+    // Every second node: a coarser random field, still closed.
+    const HeadMesh coarse = meshZeroLevel(grid, wholeGridBand(grid, field), 2);
+    ASSERT_GT(coarse.indices.size(), 30u);
+    EXPECT_EQ(unpairedEdges(coarse.indices), 0u) << "seed " << seed << ", stride 2";
   }
+}
+
+TEST(MarchingCubes, BricksSkippedByTheirSignsMeshLikeBricksReadNodeByNode) {
+  // A ball off the grid's centre on a grid whose last bricks are partial: the band's per-brick signs
+  // let the mesher skip bricks unread; without them (empty) it reads every near brick. Same mesh, for
+  // several brick sizes and strides.
+  sdf::Program ball;
+  ball.sphere({0.013f, -0.021f, 0.008f}, 0.31f);
+  for (std::uint32_t brick : {1u, 2u, 3u, 4u, 8u, 32u}) {
+    const NarrowBandGrid band = sampleNarrowBand(ball, glm::vec3(-0.43f), glm::vec3(0.47f), 0.017f, 0.04f, brick);
+    ASSERT_EQ(band.band.signs.size(), band.band.nearSlot.size());
+    LevelSetBand unknown = band.band;
+    unknown.signs.clear();
+    for (std::uint32_t stride : {1u, 2u, 4u}) {
+      if (brick % stride != 0) continue;
+      const HeadMesh skipped = meshZeroLevel(band.grid, band.band, stride), read = meshZeroLevel(band.grid, unknown, stride);
+      ASSERT_GT(skipped.indices.size(), 30u) << "brick " << brick << ", stride " << stride;
+      EXPECT_EQ(skipped.indices, read.indices) << "brick " << brick << ", stride " << stride;
+      EXPECT_EQ(skipped.positions, read.positions) << "brick " << brick << ", stride " << stride;
+      EXPECT_EQ(unpairedEdges(skipped.indices), 0u) << "brick " << brick << ", stride " << stride;
+    }
+  }
+  LevelSetBand wrong = sampleNarrowBand(ball, glm::vec3(-0.43f), glm::vec3(0.47f), 0.017f, 0.04f).band;
+  wrong.signs.pop_back();
+  const NarrowBandGrid ok = sampleNarrowBand(ball, glm::vec3(-0.43f), glm::vec3(0.47f), 0.017f, 0.04f);
+  EXPECT_THROW(meshZeroLevel(ok.grid, wrong), Error);
+  wrong = ok.band;
+  wrong.brickCells = 64;
+  EXPECT_THROW(meshZeroLevel(ok.grid, wrong), Error);
 }
 }  // namespace hp
