@@ -1,10 +1,13 @@
 #version 460
 // Compute rasterizer, one workgroup per 8x8 tile, one invocation per pixel: walks the tile's list (depth
-// bins near to far) and composites front to back, C += T a c, T *= 1 - a, until T < 1/255. a is the
+// bins near to far) and composites front to back, C += a s c, A += a s, until A > 1 - 1/255. a is the
 // exact area of the pixel covered by the segment's band (rasterBandCoverage, shared/raster.h) at the
-// width interpolated along it (the tip taper); a pixel centre belongs to the segment it projects onto
-// within [0, 1), so the segments of a strand neither overlap nor leave gaps. Fragments at or behind the
-// head's depth are hidden. Output: premultiplied radiance C and alpha 1 - T.
+// width interpolated along it (the tip taper); s, the share of it not hidden by the strands in front, is
+// 1 - A for independent strands, corrected by an 8 x 8 sample mask of the pixel for strands that overlap
+// more or less than independence says (rasterVisibleShare: coincident strands of a sheet seen edge-on).
+// A pixel centre belongs to the segment it projects onto within [0, 1), so the segments of a strand
+// neither overlap nor leave gaps. Fragments at or behind the head's depth are hidden. Output:
+// premultiplied radiance C and alpha A.
 #include "shared/raster.h"
 #include "common.glsl"
 
@@ -33,13 +36,14 @@ void main() {
   uint start = tiles[tile].x + blocks[tile / RASTER_SCAN_SIZE];
   uint end = min(start + tiles[tile].y, params.capacity);
   vec3 color = vec3(0.0);
-  float T = 1.0;
+  float alpha = 0.0;
+  uvec2 covered = uvec2(0u);  // the overlap mask's samples covered so far (rows 0-3, 4-7)
   // Entries that touch none of this pixel's row are skipped in a tight loop before the body: a row of the
   // tile is one 8-wide SIMD vector on lavapipe (whose branches are predicated: a `continue` would still run
   // the body), and on GPUs the skip is as cheap as the body's first test.
   uint rowBit = 1u << (lane / RASTER_TILE_SIZE);
   uint e = start;
-  while (T >= RASTER_OPAQUE_T) {
+  while (alpha <= 1.0 - RASTER_OPAQUE_T) {
     while (e < end && (list[e].y & rowBit) == 0u) ++e;
     if (e >= end) break;
     uint entry = list[e++].x;
@@ -58,9 +62,18 @@ void main() {
     if (mix(a.z, b.z, t) >= occluder) continue;
     float coverage = rasterBandCoverage(d, w, n.x, n.y);
     if (coverage <= 0.0) continue;
+    uvec2 band = uvec2(0u);
+    for (uint row = 0u; row < RASTER_MASK_SIDE; ++row)
+      band[row >> 2u] |= rasterBandRowBits(d, w, n.x, n.y, row) << ((row & 3u) * 8u);
+    uint samples = uint(bitCount(band.x) + bitCount(band.y));
+    uint before = uint(bitCount(covered.x) + bitCount(covered.y));
+    uvec2 overlap = band & covered;
+    float share = rasterVisibleShare(samples, before, uint(bitCount(overlap.x) + bitCount(overlap.y)), alpha);
+    covered |= band;
+    float visible = coverage * share;
     vec3 c = mix(radianceOf(colors[v]), radianceOf(colors[v + 1u]), t);
-    color += T * coverage * c;
-    T *= 1.0 - coverage;
+    color += visible * c;
+    alpha = min(alpha + visible, 1.0);
   }
-  imageStore(outImage, ivec2(pixel), vec4(color, 1.0 - T));
+  imageStore(outImage, ivec2(pixel), vec4(color, alpha));
 }

@@ -35,6 +35,8 @@ using glm::clamp;
 using glm::max;
 using glm::min;
 using std::abs;
+using std::ceil;
+using std::floor;
 }  // namespace hp::gpu
 #else
 #define HP_RASTER_FN
@@ -47,6 +49,7 @@ HP_CONST(uint, RASTER_DEPTH_BINS, 32)           // depth bins per tile across th
 HP_CONST(uint, RASTER_WORKGROUP_SIZE, 64)       // vertex and segment passes
 HP_CONST(uint, RASTER_SCAN_SIZE, 256)           // tiles per scan block; the block scan is one workgroup
 HP_CONST(float, RASTER_OPAQUE_T, 1.0f / 255.0f) // a pixel stops compositing below this transmittance
+HP_CONST(uint, RASTER_MASK_SIDE, 8)             // samples per side of a pixel's overlap mask (8 x 8: 2 words)
 HP_CONST(uint, RASTER_LAST_SEGMENT, 0x80000000u) // list entry flag: the segment ends at the strand's tip
 
 // Set 0 of every raster pipeline; 0-10 are the strand shading bindings (shared/render.h), same numbers.
@@ -126,6 +129,38 @@ HP_RASTER_FN float rasterBandCoverage(float d, float w, float nx, float ny) {
   float a = 0.5f * abs(nx);
   float b = 0.5f * abs(ny);
   return max(rasterSquareCdf(d + 0.5f * w, a, b) - rasterSquareCdf(d - 0.5f * w, a, b), 0.0f);
+}
+
+// Which strands overlap in a pixel. Alpha compositing, T *= 1 - a, treats the strands in a pixel as
+// independent; strands interpolated between the same guides lie in sheets and, seen edge-on, cover the
+// same part of a pixel far more often (docs/SHADING.md "silhouette pixels"). So each fragment also marks
+// the samples of an 8 x 8 grid in the pixel (sample (i, j) at ((i + 0.5) / 8 - 0.5, (j + 0.5) / 8 - 0.5)
+// from the centre) that its band covers, and the share of it still visible is measured against the
+// samples covered in front of it. Row `row` of the band's mask: bit i = sample (i, row) is inside.
+HP_RASTER_FN uint rasterBandRowBits(float d, float w, float nx, float ny, uint row) {
+  float c = d + ((float(row) + 0.5f) / float(RASTER_MASK_SIDE) - 0.5f) * ny;  // at the row's centre
+  if (abs(nx) < 1.0e-6f) return abs(c) < 0.5f * w ? 0xFFu : 0u;
+  // |c + sx nx| < w / 2 for sx = (i + 0.5) / 8 - 0.5: i strictly between 8 lo + 3.5 and 8 hi + 3.5.
+  float lo = (-0.5f * w - c) / nx;
+  float hi = (0.5f * w - c) / nx;
+  float first = min(lo, hi) * float(RASTER_MASK_SIDE) + 0.5f * float(RASTER_MASK_SIDE) - 0.5f;
+  float last = max(lo, hi) * float(RASTER_MASK_SIDE) + 0.5f * float(RASTER_MASK_SIDE) - 0.5f;
+  float i0 = max(floor(first) + 1.0f, 0.0f);
+  float i1 = min(ceil(last) - 1.0f, float(RASTER_MASK_SIDE - 1u));
+  if (i0 > i1) return 0u;
+  return ((2u << uint(i1)) - 1u) & ~((1u << uint(i0)) - 1u);
+}
+
+// The share of a fragment still visible: 1 - U for a strand independent of those in front (U = the
+// pixel's alpha so far), scaled by how much more (or less) its samples overlap the covered ones than
+// independence predicts: rho = (overlap / samples) / (covered / all samples). Coincident strands get
+// 0, disjoint ones 1, and crossing ones (a band across the pixel meets every row or column alike) stay
+// at 1 - U. Without samples on either side: independence.
+HP_RASTER_FN float rasterVisibleShare(uint bandSamples, uint coveredSamples, uint overlapSamples, float alpha) {
+  if (bandSamples == 0u || coveredSamples == 0u) return 1.0f - alpha;
+  float rho = float(overlapSamples) * float(RASTER_MASK_SIDE * RASTER_MASK_SIDE) /
+              (float(bandSamples) * float(coveredSamples));
+  return 1.0f - min(alpha * rho, 1.0f);
 }
 HP_END
 

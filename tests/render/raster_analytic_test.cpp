@@ -1,8 +1,9 @@
 // The compute rasterizer against analytic references (REFERENCES.md §8): the coverage formula against a
 // supersampled pixel on the CPU; on the device, one straight strand of known width at known angles
 // (per-pixel coverage within 2% of a supersampled reference), two crossing strands (the front-to-back
-// composite equals the analytic "over" within 1%), a strand behind the head's depth hidden, and the
-// tip taper.
+// composite equals the analytic "over" within 1%), parallel strands (their union, not the independent
+// "over"), a strand behind the head's depth hidden, and the tip taper; the overlap mask's rows against
+// its samples.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -116,6 +117,40 @@ TEST(RasterCoverage, BandCoverageIsTheExactPixelAreaAtAnyAngle) {
       }
 }
 
+TEST(RasterCoverage, BandRowBitsAreTheSamplesInsideTheBand) {
+  // The overlap mask's rows against testing each of the 8 x 8 samples, for bands at many angles,
+  // widths and offsets (samples within 1e-4 of the band's edge are not asserted: float rounding).
+  int checked = 0;
+  for (int angle = 0; angle < 180; angle += 7)
+    for (float w : {0.05f, 0.1f, 0.3f, 0.8f, 1.7f})
+      for (float d = -1.2f; d <= 1.2f; d += 0.0731f) {
+        const float rad = glm::radians(float(angle));
+        const glm::vec2 n(std::cos(rad), std::sin(rad));
+        for (std::uint32_t row = 0; row < hp::gpu::RASTER_MASK_SIDE; ++row) {
+          const std::uint32_t bits = hp::gpu::rasterBandRowBits(d, w, n.x, n.y, row);
+          for (std::uint32_t i = 0; i < hp::gpu::RASTER_MASK_SIDE; ++i) {
+            const glm::vec2 s((i + 0.5f) / 8.0f - 0.5f, (row + 0.5f) / 8.0f - 0.5f);
+            const float edge = std::abs(d + glm::dot(s, n)) - 0.5f * w;
+            if (std::abs(edge) < 1e-4f) continue;
+            ASSERT_EQ((bits >> i) & 1u, edge < 0.0f ? 1u : 0u) << angle << " deg, w " << w << ", d " << d << ", row " << row;
+            ++checked;
+          }
+        }
+      }
+  EXPECT_GT(checked, 100000);
+}
+
+TEST(RasterCoverage, VisibleShareIsIndependenceCorrectedByTheSamplesOverlap) {
+  using hp::gpu::rasterVisibleShare;
+  EXPECT_FLOAT_EQ(rasterVisibleShare(0u, 10u, 0u, 0.3f), 0.7f);   // no samples: independence
+  EXPECT_FLOAT_EQ(rasterVisibleShare(8u, 0u, 0u, 0.0f), 1.0f);    // nothing in front
+  EXPECT_FLOAT_EQ(rasterVisibleShare(8u, 8u, 8u, 0.125f), 0.0f);  // the same samples: hidden
+  EXPECT_FLOAT_EQ(rasterVisibleShare(8u, 8u, 0u, 0.125f), 1.0f);  // disjoint: all visible
+  // A row crossing a column: 1 of its 8 samples covered, as independence predicts (8 / 64).
+  EXPECT_FLOAT_EQ(rasterVisibleShare(8u, 8u, 1u, 0.125f), 0.875f);
+  EXPECT_GE(rasterVisibleShare(64u, 8u, 8u, 0.9f), 0.0f);          // never negative
+}
+
 TEST_F(VulkanTest, OneStrandCoversEachPixelByItsAreaWithinTwoPercent) {
   const hp::CameraMatrices camera = hp::test::rigCamera(kExtent, kFov);
   const glm::vec2 centre(31.3f, 23.6f);
@@ -182,6 +217,32 @@ TEST_F(VulkanTest, CrossingStrandsCompositeFrontToBackAsTheAnalyticOver) {
       }
     }
   EXPECT_GE(checked, 8);
+}
+
+TEST_F(VulkanTest, ParallelStrandsCoverTheirUnionNotTheirIndependentOver) {
+  // Strands of a sheet seen edge-on: two at the same place cover what one does (alpha compositing's
+  // independent "over" would give 1 - (1 - a)^2), two side by side within a pixel cover the sum.
+  const hp::CameraMatrices camera = hp::test::rigCamera(kExtent, kFov);
+  const float y = 20.3f, width = 0.4f;
+  auto measure = [&](const std::vector<PixelStrand>& strands) {
+    auto buffers = makeStrands(*ctx, camera, strands);
+    hp::test::RasterRig rig(*ctx, *buffers, kExtent, camera, rigLook(camera), darkLight());
+    rig.run();
+    return rig.image();
+  };
+  const auto one = measure({{{-10.0f, y}, {80.0f, y}, 1.0f, width, 1.0f}});
+  const auto same = measure({{{-10.0f, y}, {80.0f, y}, 1.0f, width, 1.0f}, {{-10.0f, y}, {80.0f, y}, 1.2f, width, 1.0f}});
+  const auto apart = measure({{{-10.0f, y - 0.22f}, {80.0f, y - 0.22f}, 1.0f, width, 1.0f},
+                              {{-10.0f, y + 0.22f}, {80.0f, y + 0.22f}, 1.2f, width, 1.0f}});
+  // Row 20 holds all of the single strand and of the lower neighbour, part of the upper one:
+  // union 0.28 + 0.4 = 0.68, where independence would give 0.57.
+  const double a = boxCoverage(y - 20.5, width);
+  const double union2 = boxCoverage(y - 0.22 - 20.5, width) + boxCoverage(y + 0.22 - 20.5, width);
+  for (int x = 5; x < 60; x += 6) {
+    ASSERT_NEAR(one[at(x, 20)].a, a, 0.01) << "column " << x;
+    EXPECT_NEAR(same[at(x, 20)].a, a, 0.02) << "coincident strands, column " << x;
+    EXPECT_NEAR(apart[at(x, 20)].a, union2, 0.02) << "side by side, column " << x;
+  }
 }
 
 TEST_F(VulkanTest, AStrandBehindTheHeadsDepthIsHidden) {

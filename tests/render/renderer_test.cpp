@@ -320,8 +320,11 @@ TEST_F(VulkanTest, TwoInstancesOnTheComputeRasterAreBothDrawnAndFollowAMaterialC
   frame(0);
   const HairColumns leftHair = hairColumns(*ctx, renderer, 0, half), rightHair = hairColumns(*ctx, renderer, half, kRendererWidth);
   std::cout << "hair pixels: left " << leftHair.pixels << ", right " << rightHair.pixels << "\n";
-  EXPECT_GT(leftHair.pixels, std::size_t(kRendererWidth * kRendererHeight / 100));
-  EXPECT_GT(rightHair.pixels, std::size_t(kRendererWidth * kRendererHeight / 100));
+  // Each head drawn: 0.5% of the frame above alpha 0.05 (216 and 151 pixels of 15,360; the sparser 500
+  // strands fell under 1% when overlapping strands stopped adding up as independent ones, raster_fine).
+  // What separates drawn from not drawn is the detach below (a detached head keeps < 1/4 of its pixels).
+  EXPECT_GT(leftHair.pixels, std::size_t(kRendererWidth * kRendererHeight / 200));
+  EXPECT_GT(rightHair.pixels, std::size_t(kRendererWidth * kRendererHeight / 200));
 
   hp::HairInstance* leftOnly[] = {left.get()};
   target.attach(renderer, leftOnly);
