@@ -1,9 +1,11 @@
 #include "engine/hair/head_sdf.h"
 
+#include <array>
 #include <cmath>
 #include <vector>
 
 #include "engine/error.h"
+#include "engine/hair/illinois_bracket.h"
 
 namespace hp {
 namespace {
@@ -54,39 +56,45 @@ const sdf::Program& headField() {
 float headDistance(const glm::vec3& p) { return headField()(p); }
 
 namespace {
-template <typename F>
-glm::vec3 centralDifference(const F& f, const glm::vec3& p) {
-  const float h = 2e-4f;
-  return glm::vec3(f(p + vec3(h, 0, 0)) - f(p - vec3(h, 0, 0)), f(p + vec3(0, h, 0)) - f(p - vec3(0, h, 0)),
-                   f(p + vec3(0, 0, h)) - f(p - vec3(0, 0, h))) /
-         (2.0f * h);
+constexpr float kGradientStep = 2e-4f;  // headGradient's central differences (m)
+
+// The six probes of the central differences at p: +x, -x, +y, -y, +z, -z.
+std::array<glm::vec3, 6> gradientProbes(const glm::vec3& p) {
+  std::array<glm::vec3, 6> probes;
+  for (int axis = 0; axis < 3; ++axis) {
+    glm::vec3 o(0.0f);
+    o[axis] = kGradientStep;
+    probes[std::size_t(2 * axis)] = p + o, probes[std::size_t(2 * axis + 1)] = p - o;
+  }
+  return probes;
+}
+
+glm::vec3 gradientOfProbes(const float* f) {
+  return glm::vec3(f[0] - f[1], f[2] - f[3], f[4] - f[5]) / (2.0f * kGradientStep);
 }
 }  // namespace
 
-glm::vec3 headGradient(const glm::vec3& p) { return centralDifference(headDistance, p); }
+glm::vec3 headGradient(const glm::vec3& p) {
+  const std::array<glm::vec3, 6> probes = gradientProbes(p);
+  float f[6];
+  for (std::size_t i = 0; i < 6; ++i) f[i] = headDistance(probes[i]);
+  return gradientOfProbes(f);
+}
 
 namespace {
-// One ray's root: bisection to a 5 mm bracket, then regula falsi (Illinois: an end kept twice has its
-// value halved) until |field| < 0.1 um or no float is left between the ends.
+// One ray's root, as a parameter t along it: bisection to a 5 mm bracket (a: inside, the center; b: 0.3 m
+// out, past every feature), then regula falsi until |field| < 0.1 um or no float is left between the ends.
 struct RayZero {
-  float inside = 0.0f, outside = 0.3f;  // the center is inside, 0.3 m out is past every feature
-  float fIn = 0.0f, fOut = 0.0f, t = 0.0f;
-  int kept = 0;
+  IllinoisBracket<float> e{0.0f, 0.3f};
+  float t = 0.0f;
   bool done = false;
   float falsePosition() const {
-    const float x = (inside * fOut - outside * fIn) / (fOut - fIn);
-    return x > inside && x < outside ? x : 0.5f * (inside + outside);
+    const float x = (e.a * e.fb - e.b * e.fa) / (e.fb - e.fa);
+    return x > e.a && x < e.b ? x : 0.5f * (e.a + e.b);
   }
   void update(float f) {
-    if (std::abs(f) < 1e-7f || t == inside || t == outside) {
-      done = true;
-    } else if (f < 0.0f) {
-      inside = t, fIn = f, kept = kept < 0 ? kept - 1 : -1;
-      if (kept <= -2) fOut *= 0.5f;
-    } else {
-      outside = t, fOut = f, kept = kept > 0 ? kept + 1 : 1;
-      if (kept >= 2) fIn *= 0.5f;
-    }
+    if (std::abs(f) < 1e-7f || t == e.a || t == e.b) done = true;
+    else e.narrow(t, f);
   }
 };
 
@@ -108,13 +116,13 @@ void headSurfacesAlong(std::span<const glm::vec3> dirs, std::span<glm::vec3> sur
   std::vector<RayZero> rays(dirs.size());
   auto all = [](const RayZero&) { return true; };
   for (int i = 0; i < 6; ++i) {
-    auto mid = [](const RayZero& r) { return 0.5f * (r.inside + r.outside); };
+    auto mid = [](const RayZero& r) { return 0.5f * (r.e.a + r.e.b); };
     const std::vector<float> f = alongRays(dirs, rays, mid, all);
-    for (std::size_t r = 0; r < rays.size(); ++r) (f[r] < 0.0f ? rays[r].inside : rays[r].outside) = mid(rays[r]);
+    for (std::size_t r = 0; r < rays.size(); ++r) (f[r] < 0.0f ? rays[r].e.a : rays[r].e.b) = mid(rays[r]);
   }
-  const std::vector<float> fIn = alongRays(dirs, rays, [](const RayZero& r) { return r.inside; }, all);
-  const std::vector<float> fOut = alongRays(dirs, rays, [](const RayZero& r) { return r.outside; }, all);
-  for (std::size_t r = 0; r < rays.size(); ++r) rays[r].fIn = fIn[r], rays[r].fOut = fOut[r], rays[r].t = rays[r].outside;
+  const std::vector<float> fIn = alongRays(dirs, rays, [](const RayZero& r) { return r.e.a; }, all);
+  const std::vector<float> fOut = alongRays(dirs, rays, [](const RayZero& r) { return r.e.b; }, all);
+  for (std::size_t r = 0; r < rays.size(); ++r) rays[r].e.fa = fIn[r], rays[r].e.fb = fOut[r], rays[r].t = rays[r].e.b;
   auto active = [](const RayZero& r) { return !r.done; };
   for (int step = 0; step < 24; ++step) {
     for (RayZero& r : rays)
@@ -125,30 +133,17 @@ void headSurfacesAlong(std::span<const glm::vec3> dirs, std::span<glm::vec3> sur
     for (RayZero& r : rays)
       if (!r.done) r.update(f[k++]);
   }
-  for (RayZero& r : rays)
-    if (!r.done) r.t = r.outside;  // no root found in the steps: the bracket's outer end
-  // Gradients: headGradient's six probes per point, one batch.
-  constexpr float h = 2e-4f;
-  std::vector<glm::vec3> probes;
-  for (std::size_t r = 0; r < rays.size(); ++r) {
-    surfaces[r] = kCraniumCenter + rays[r].t * dirs[r];
-    for (int axis = 0; axis < 3; ++axis) {
-      glm::vec3 o(0.0f);
-      o[axis] = h;
-      probes.push_back(surfaces[r] + o), probes.push_back(surfaces[r] - o);
-    }
+  for (std::size_t r = 0; r < rays.size(); ++r)  // a ray with no root in the steps: the bracket's outer end
+    surfaces[r] = kCraniumCenter + (rays[r].done ? rays[r].t : rays[r].e.b) * dirs[r];
+  if (gradients.empty()) return;
+  std::vector<glm::vec3> probes;  // headGradient's probes, all rays in one batch
+  for (const glm::vec3& s : surfaces) {
+    const std::array<glm::vec3, 6> six = gradientProbes(s);
+    probes.insert(probes.end(), six.begin(), six.end());
   }
   std::vector<float> f(probes.size());
   headField().evaluate(probes, f);
-  for (std::size_t r = 0; r < rays.size() && !gradients.empty(); ++r)
-    gradients[r] = glm::vec3(f[6 * r] - f[6 * r + 1], f[6 * r + 2] - f[6 * r + 3], f[6 * r + 4] - f[6 * r + 5]) / (2.0f * h);
-}
-
-glm::vec3 headSurfaceAlong(const glm::vec3& dir, glm::vec3* gradient) {
-  glm::vec3 surface, g;
-  headSurfacesAlong({&dir, 1}, {&surface, 1}, {&g, 1});
-  if (gradient) *gradient = g;
-  return surface;
+  for (std::size_t r = 0; r < rays.size(); ++r) gradients[r] = gradientOfProbes(&f[6 * r]);
 }
 
 bool aboveHairline(const glm::vec3& dir) {

@@ -22,13 +22,11 @@ inline constexpr glm::vec3 kHeadFieldHigh{0.27f, 0.115f, 0.16f};
 // The cranium's center: rays from here meet the scalp.
 inline constexpr glm::vec3 kCraniumCenter{0.0f, 0.005f, -0.012f};
 
-// The surface point on the ray from kCraniumCenter along unit `dir`: a point with |field| < 0.1 um (on
-// either side) where the ray leaves the field within 0.3 m (every direction to the scalp does), else
-// the outer end of the last bracket (0.3 m out for a ray still inside there, e.g. into the chest); and
-// headGradient there when `gradient` is given.
-glm::vec3 headSurfaceAlong(const glm::vec3& dir, glm::vec3* gradient = nullptr);
-// The same for many rays, evaluated in batches (several times faster per ray). surfaces holds one
-// point per ray; gradients is empty or one per ray (else hp::Error).
+// For each unit direction, the surface point on the ray from kCraniumCenter along it: a point with
+// |field| < 0.1 um (on either side) where the ray leaves the field within 0.3 m (every direction to the
+// scalp does), else the outer end of the last bracket (0.3 m out for a ray still inside there, e.g. into
+// the chest); and headGradient there. Evaluated in batches over the rays. surfaces holds one point per
+// ray; gradients is empty (not computed) or one per ray (else hp::Error).
 void headSurfacesAlong(std::span<const glm::vec3> dirs, std::span<glm::vec3> surfaces, std::span<glm::vec3> gradients);
 
 // Hair grows where the direction from the cranium center is above the hairline: high at the

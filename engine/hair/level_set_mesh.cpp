@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "engine/error.h"
+#include "engine/hair/illinois_bracket.h"
 #include "engine/hair/marching_cubes_table.h"
 #include "engine/hair/parallel_for.h"
 
@@ -16,25 +17,17 @@ namespace {
 // twice has its value halved, so a curved field does not stall one end). Staying on the edge keeps
 // every triangle wound as its case in the table says. All edges of a brick step together, one batch per step.
 struct EdgeZero {
-  glm::vec3 a, b;
-  float fa, fb;
-  int kept = 0;  // +n: a kept n times in a row, -n: b
+  IllinoisBracket<glm::vec3> e;
   bool done = false;
-  glm::vec3 guess() const { return glm::mix(a, b, fa / (fa - fb)); }
+  glm::vec3 guess() const { return glm::mix(e.a, e.b, e.fa / (e.fa - e.fb)); }
   void update(const glm::vec3& p, float fp) {
     if (std::abs(fp) < 1e-6f) {
-      a = b = p, done = true;
+      e.a = e.b = p, done = true;
       return;
     }
-    if ((fp < 0.0f) == (fa < 0.0f)) {
-      a = p, fa = fp, kept = kept < 0 ? kept - 1 : -1;
-      if (kept <= -2) fb *= 0.5f;
-    } else {
-      b = p, fb = fp, kept = kept > 0 ? kept + 1 : 1;
-      if (kept >= 2) fa *= 0.5f;
-    }
+    e.narrow(p, fp);
   }
-  glm::vec3 result() const { return done ? a : guess(); }
+  glm::vec3 result() const { return done ? e.a : guess(); }
 };
 
 glm::uvec3 cornerOffset(std::uint32_t n) { return {n & 1u, (n >> 1) & 1u, (n >> 2) & 1u}; }
@@ -178,7 +171,7 @@ class Mesher {
     edges.clear();
     for (std::uint32_t owner : b.edgeOwner) {
       const glm::uvec3 c = cellOf(b, owner / 3), e = c + cornerOffset(1u << (owner % 3));
-      edges.push_back({node(c), node(e), value(c), value(e)});
+      edges.push_back({{node(c), node(e), value(c), value(e)}});
     }
     for (int step = 0; step < 10; ++step) {
       points.clear(), active.clear();

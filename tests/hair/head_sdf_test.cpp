@@ -3,8 +3,12 @@
 // narrower than the head, shoulders wider), built deterministically.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <map>
+#include <span>
+#include <string>
 #include <utility>
+#include <vector>
 
 #include "engine/error.h"
 #include "engine/hair/default_head.h"
@@ -162,6 +166,35 @@ TEST(HeadSdf, BuildIsDeterministic) {
   EXPECT_EQ(again.positions, mesh().positions);
   EXPECT_EQ(again.normals, mesh().normals);
   EXPECT_EQ(again.indices, mesh().indices);
+}
+
+TEST(HeadSdf, RaysFromTheCraniumMeetTheSurfaceWithItsGradient) {
+  // Directions over the upper half (the scalp's) and one straight down into the chest, which is still
+  // inside 0.3 m out: the first ones land within 0.1 um of the surface with headGradient there, the last
+  // returns the bracket's outer end.
+  std::vector<glm::vec3> dirs;
+  for (int i = 0; i < 200; ++i) {
+    const float azimuth = 0.0314f * float(i), elevation = 0.1f + 1.3f * float(i % 17) / 17.0f;
+    dirs.push_back({std::cos(elevation) * std::sin(azimuth), std::sin(elevation), std::cos(elevation) * std::cos(azimuth)});
+  }
+  dirs.push_back({0.0f, -1.0f, 0.0f});
+  std::vector<glm::vec3> surfaces(dirs.size()), gradients(dirs.size());
+  headSurfacesAlong(dirs, surfaces, gradients);
+  for (std::size_t i = 0; i + 1 < dirs.size(); ++i) {
+    ASSERT_LT(std::abs(headDistance(surfaces[i])), 1e-7f) << "ray " << i;
+    ASSERT_EQ(gradients[i], headGradient(surfaces[i])) << "ray " << i;
+  }
+  EXPECT_LT(headDistance(kCraniumCenter + 0.3f * dirs.back()), 0.0f);
+  EXPECT_EQ(surfaces.back(), kCraniumCenter + 0.3f * dirs.back());
+  std::vector<glm::vec3> alone(1);
+  headSurfacesAlong(std::span(dirs).first(1), alone, {});  // no gradients asked: the same point
+  EXPECT_EQ(alone[0], surfaces[0]);
+  try {
+    headSurfacesAlong(dirs, std::span(surfaces).first(3), {});
+    ADD_FAILURE() << "a short span of surface points was accepted";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("one surface point"), std::string::npos) << e.what();
+  }
 }
 
 TEST(HeadSdf, SurfaceNetsRefuseASurfaceCutByTheGrid) {
