@@ -22,6 +22,7 @@ layout(binding = RASTER_BINDING_OUTPUT, rgba16f) uniform writeonly image2D outIm
 layout(std430, binding = RASTER_BINDING_PARAMS) readonly buffer Params { RasterParams params; };
 
 vec3 radianceOf(uvec2 c) { return vec3(unpackHalf2x16(c.x), unpackHalf2x16(c.y).x); }
+uint samplesIn(uvec2 mask) { return uint(bitCount(mask.x) + bitCount(mask.y)); }  // of the 8 x 8 overlap mask
 
 void main() {
   uint invocation = hpThreadId(RASTER_FINE_SIZE);
@@ -65,10 +66,7 @@ void main() {
     uvec2 band = uvec2(0u);
     for (uint row = 0u; row < RASTER_MASK_SIDE; ++row)
       band[row >> 2u] |= rasterBandRowBits(d, w, n.x, n.y, row) << ((row & 3u) * 8u);
-    uint samples = uint(bitCount(band.x) + bitCount(band.y));
-    uint before = uint(bitCount(covered.x) + bitCount(covered.y));
-    uvec2 overlap = band & covered;
-    float share = rasterVisibleShare(samples, before, uint(bitCount(overlap.x) + bitCount(overlap.y)), alpha);
+    float share = rasterVisibleShare(samplesIn(band), samplesIn(covered), samplesIn(band & covered), alpha);
     covered |= band;
     float visible = coverage * share;
     vec3 c = mix(radianceOf(colors[v]), radianceOf(colors[v + 1u]), t);
