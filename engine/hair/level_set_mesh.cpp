@@ -1,6 +1,5 @@
 #include "engine/hair/level_set_mesh.h"
 
-#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <vector>
