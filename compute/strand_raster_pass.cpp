@@ -1,10 +1,13 @@
 #include "compute/strand_raster_pass.h"
 
 #include <algorithm>
+#include <bit>
+#include <cstring>
 #include <utility>
 #include <string>
 
 #include "engine/error.h"
+#include "engine/shading/half_float.h"
 #include "engine/vk/barriers.h"
 #include "engine/vk/context.h"
 #include "engine/vk/transfer.h"
@@ -44,6 +47,8 @@ const vk::Binding kBindings[] = {
     {gpu::RASTER_BINDING_LIST, kStorage, kCompute},
     {gpu::RASTER_BINDING_DEPTH, kSampled, kCompute},
     {gpu::RASTER_BINDING_OUTPUT, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, kCompute},
+    {gpu::RASTER_BINDING_OUTPUT_NEAR, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, kCompute},
+    {gpu::RASTER_BINDING_NEAR_MASK, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, kCompute},
     {gpu::RASTER_BINDING_PARAMS, kStorage, kCompute},
     {gpu::RASTER_BINDING_TILE_DEPTH, kStorage, kCompute},
     {gpu::RASTER_BINDING_SHADE_FLAGS, kStorage, kCompute},
@@ -71,6 +76,16 @@ vk::Buffer deviceBuffer(const vk::Context& ctx, VkDeviceSize bytes, VkBufferUsag
                 " bytes, more than the device's maxStorageBufferRange (" + std::to_string(limit) +
                 "); use fewer strands or --raster graphics");
   return vk::Buffer(ctx, std::max<VkDeviceSize>(bytes, 16), usage, vk::MemoryKind::DeviceLocal, "raster " + name);
+}
+
+constexpr VkImageUsageFlags kOutputUsage =
+    VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
+
+// An output image of the frame's size, or of 1 x 1 where it only fills a binding (the near layer and
+// mask under a single-sample head depth, which the composite never reads).
+vk::Image outputImage(const vk::Context& ctx, VkExtent2D extent, bool used, VkFormat format, const std::string& name) {
+  return vk::Image(ctx, {used ? extent.width : 1u, used ? extent.height : 1u, 1, format, kOutputUsage,
+                         VK_SAMPLE_COUNT_1_BIT, name});
 }
 
 gpu::RasterParams baseParams(std::uint32_t tilesX, std::uint32_t tilesY, std::uint32_t budget,
@@ -106,9 +121,12 @@ std::uint32_t rasterListCapacity(std::uint64_t segments, std::uint64_t tiles, st
 }
 
 StrandRasterPass::StrandRasterPass(const vk::Context& ctx, std::span<const RasterSource> sources, VkExtent2D extent,
-                                   const RasterSettings& settings)
-    : ctx_(ctx), extent_(extent), settings_(settings) {
+                                   const RasterSettings& settings, std::uint32_t headSamples)
+    : ctx_(ctx), extent_(extent), settings_(settings), headSamples_(headSamples) {
   settings.validate();
+  if (headSamples == 0 || headSamples > gpu::RASTER_MAX_HEAD_SAMPLES || (headSamples & (headSamples - 1)) != 0)
+    throw Error("compute raster: the head depth's sample count must be a power of two in [1, " +
+                std::to_string(gpu::RASTER_MAX_HEAD_SAMPLES) + "], got " + std::to_string(headSamples));
   if (extent.width == 0 || extent.height == 0) throw Error("compute raster: the extent must be non-zero");
   if (sources.empty()) throw Error("compute raster: no strand source");
   tilesX_ = divUp(extent.width, gpu::RASTER_TILE_SIZE);
@@ -136,9 +154,8 @@ StrandRasterPass::StrandRasterPass(const vk::Context& ctx, std::span<const Raste
   tileDepth_ = deviceBuffer(ctx, tiles * 4, kStorageUsage, "tile head depth", limit);
   blocks_ = deviceBuffer(ctx, divUp(std::uint32_t(tiles), gpu::RASTER_SCAN_SIZE) * 4, kStorageUsage, "blocks", limit);
   list_ = deviceBuffer(ctx, VkDeviceSize(capacity_) * 8, kStorageUsage, "tile lists", limit);
-  output_ = vk::Image(ctx, {extent.width, extent.height, 1, VK_FORMAT_R16G16B16A16_SFLOAT,
-                            VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
-                            VK_SAMPLE_COUNT_1_BIT, "raster hair image"});
+  output_ = outputImage(ctx, extent, true, VK_FORMAT_R16G16B16A16_SFLOAT, "raster hair image");
+  makeNearLayer();
   sampler_ = vk::Sampler(ctx, "raster depth sampler", VK_FILTER_NEAREST);  // D32 cannot filter
   const gpu::RasterState armed = armedState();
   vk::uploadBytes(ctx, state_, &armed, sizeof(armed), vk::BufferUse::ComputeWrite);
@@ -149,14 +166,21 @@ StrandRasterPass::StrandRasterPass(const vk::Context& ctx, std::span<const Raste
   };
   project_ = pipeline("raster_project.comp", gpu::RASTER_WORKGROUP_SIZE, "raster project");
   shade_ = pipeline("raster_shade.comp", gpu::RASTER_WORKGROUP_SIZE, "raster shade");
-  tileDepthPipeline_ = pipeline("raster_tile_depth.comp", gpu::RASTER_WORKGROUP_SIZE, "raster tile depth");
+  tileDepthPipeline_ = pipeline(multisampled() ? "raster_tile_depth_ms.comp" : "raster_tile_depth.comp",
+                                gpu::RASTER_WORKGROUP_SIZE, "raster tile depth");
   count_ = vk::ComputePipeline(ctx, "raster_bin.comp", gpu::RASTER_WORKGROUP_SIZE, {setLayout}, 0, "raster count",
                                {gpu::RASTER_MODE_COUNT});
   scatter_ = vk::ComputePipeline(ctx, "raster_bin.comp", gpu::RASTER_WORKGROUP_SIZE, {setLayout}, 0, "raster scatter",
                                  {gpu::RASTER_MODE_SCATTER});
   scanTiles_ = pipeline("raster_scan_tiles.comp", gpu::RASTER_SCAN_SIZE, "raster scan tiles");
   scanBlocks_ = pipeline("raster_scan_blocks.comp", gpu::RASTER_SCAN_SIZE, "raster scan blocks");
-  fine_ = pipeline("raster_fine.comp", gpu::RASTER_FINE_SIZE, "raster fine");
+  fine_ = pipeline(multisampled() ? "raster_fine_ms.comp" : "raster_fine.comp", gpu::RASTER_FINE_SIZE, "raster fine");
+}
+
+void StrandRasterPass::makeNearLayer() {
+  const bool used = multisampled();
+  nearOutput_ = outputImage(ctx_, extent_, used, VK_FORMAT_R16G16B16A16_SFLOAT, "raster hair image (near layer)");
+  nearMask_ = outputImage(ctx_, extent_, used, VK_FORMAT_R32_UINT, "raster near-layer sample mask");
 }
 
 void StrandRasterPass::bind(std::span<const RasterSource> sources) {
@@ -208,6 +232,8 @@ void StrandRasterPass::writeChunkSet(const vk::DescriptorSet& set, const Shading
         {gpu::RASTER_BINDING_SHADE_LIST, &shadeList_}, {gpu::RASTER_BINDING_SHADE_ARGS, &shadeArgs_}})
     set.writeStorageBuffer(binding, buffer->handle());
   set.writeStorageImage(gpu::RASTER_BINDING_OUTPUT, output_.view());
+  set.writeStorageImage(gpu::RASTER_BINDING_OUTPUT_NEAR, nearOutput_.view());
+  set.writeStorageImage(gpu::RASTER_BINDING_NEAR_MASK, nearMask_.view());
   if (depth_ != VK_NULL_HANDLE) set.writeSampledImage(gpu::RASTER_BINDING_DEPTH, depth_, sampler_.handle());
 }
 
@@ -233,9 +259,10 @@ void StrandRasterPass::recordArm(VkCommandBuffer cmd) const {
   ctx_.fn().vkCmdFillBuffer(cmd, shadeFlags_.handle(), 0, VK_WHOLE_SIZE, 0u);
   for (const vk::Buffer* b : {&state_, &counts_, &shadeFlags_, &shadeArgs_})
     vk::bufferBarrier(ctx_, cmd, b->handle(), vk::BufferUse::TransferDst, vk::BufferUse::ComputeWrite);
-  // The previous frame's composite sampled the output; its contents are rewritten in full.
-  vk::imageBarrier(ctx_, cmd, output_.handle(), VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::FragmentSampledDiscard,
-                   vk::ImageUse::ComputeStorageWrite);
+  // The previous frame's composite sampled the outputs; their contents are rewritten in full.
+  for (const vk::Image* image : outputs())
+    vk::imageBarrier(ctx_, cmd, image->handle(), VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::FragmentSampledDiscard,
+                     vk::ImageUse::ComputeStorageWrite);
 }
 
 void StrandRasterPass::recordPerChunk(VkCommandBuffer cmd, const vk::ComputePipeline& pipeline,
@@ -299,9 +326,35 @@ void StrandRasterPass::recordFine(VkCommandBuffer cmd, vk::GpuProfiler* profiler
   begin(cmd, profiler, "raster fine");
   chain(ctx_, cmd);
   recordOnce(cmd, fine_, tilesX_ * tilesY_ * gpu::RASTER_FINE_SIZE);
-  vk::imageBarrier(ctx_, cmd, output_.handle(), VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::ComputeStorageWrite,
-                   vk::ImageUse::FragmentSampled);
+  for (const vk::Image* image : outputs())
+    vk::imageBarrier(ctx_, cmd, image->handle(), VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::ComputeStorageWrite,
+                     vk::ImageUse::FragmentSampled);
   end(cmd, profiler);
+}
+
+std::vector<float> StrandRasterPass::readCoverage() const {
+  const std::size_t pixels = std::size_t(extent_.width) * extent_.height;
+  const auto alphas = [&](const vk::Image& image) {
+    const std::vector<std::byte> bytes = vk::readbackImage(ctx_, image, vk::ImageUse::FragmentSampled);
+    std::vector<float> a(pixels);
+    for (std::size_t i = 0; i < pixels; ++i) {
+      std::uint16_t half;
+      std::memcpy(&half, bytes.data() + (i * 4 + 3) * sizeof(half), sizeof(half));
+      a[i] = shading::halfToFloat(half);
+    }
+    return a;
+  };
+  std::vector<float> coverage = alphas(output_);
+  if (!multisampled()) return coverage;
+  const std::vector<float> near = alphas(nearOutput_);
+  const std::vector<std::byte> maskBytes = vk::readbackImage(ctx_, nearMask_, vk::ImageUse::FragmentSampled);
+  for (std::size_t i = 0; i < pixels; ++i) {
+    std::uint32_t mask;
+    std::memcpy(&mask, maskBytes.data() + i * sizeof(mask), sizeof(mask));
+    const float nearShare = float(std::popcount(mask)) / float(headSamples_);
+    coverage[i] = nearShare * near[i] + (1.0f - nearShare) * coverage[i];
+  }
+  return coverage;
 }
 
 RasterStats StrandRasterPass::readStats() const {

@@ -11,7 +11,9 @@
 //   shade    per listed vertex (indirect dispatch): radiance by the graphics path's hairRadiance (opacity
 //            maps looked up at the vertex: strand-space shading);
 //   fine     per pixel: exact band coverage, hidden at or behind the head's depth, composited front to
-//            back until T < 1/255, into output(): RGBA16F, premultiplied radiance, alpha = 1 - T.
+//            back until T < 1/255, into output(): RGBA16F, premultiplied radiance, alpha = 1 - T. With a
+//            multisampled head depth (headSamples > 1) also nearOutput() and nearMask(): the hair in front
+//            of every head sample and the samples that take it (shaders/shared/raster.h, the two layers).
 // The pass owns every buffer and image it writes and the barriers between its own steps. The frame
 // recorder guarantees before record(): strand buffers, the frame block, LightSpace and the opacity maps
 // visible to compute reads (maps in ImageUse::ComputeSampled), the depth image given to setDepth() in
@@ -20,6 +22,7 @@
 // budget and past the list capacity (capacity derived from the segment count and the frame size).
 #include <volk.h>
 
+#include <array>
 #include <functional>
 #include <span>
 #include <vector>
@@ -59,16 +62,18 @@ struct RasterSource {
 
 class StrandRasterPass {
  public:
-  // Throws hp::Error for no source, a zero extent, bad settings or buffers past maxStorageBufferRange.
+  // headSamples: the sample count of the depth image setDepth() will get (1 to RASTER_MAX_HEAD_SAMPLES).
+  // Throws hp::Error for no source, a zero extent, bad settings or sample count, or buffers past
+  // maxStorageBufferRange.
   StrandRasterPass(const vk::Context& ctx, std::span<const RasterSource> sources, VkExtent2D extent,
-                   const RasterSettings& settings);
+                   const RasterSettings& settings, std::uint32_t headSamples = 1);
   StrandRasterPass(const vk::Context& ctx, const StrandBuffers& strands, const ShadingWriter& shading,
-                   VkExtent2D extent, const RasterSettings& settings)
+                   VkExtent2D extent, const RasterSettings& settings, std::uint32_t headSamples = 1)
       : StrandRasterPass(ctx, std::span<const RasterSource>(std::vector<RasterSource>{{&strands, shading}}), extent,
-                         settings) {}
+                         settings, headSamples) {}
   // Outside the frame loop: rewrite descriptors after the shading resources changed (same strand sizes).
   void bind(std::span<const RasterSource> sources);
-  // The head's depth (single sample, D32); 1.0 where nothing was drawn. Must be set before record().
+  // The head's depth (D32, headSamples samples); 1.0 where nothing was drawn. Must be set before record().
   void setDepth(VkImageView depth);
 
   void record(VkCommandBuffer cmd, vk::GpuProfiler* profiler = nullptr) const {
@@ -80,10 +85,18 @@ class StrandRasterPass {
   void recordFine(VkCommandBuffer cmd, vk::GpuProfiler* profiler = nullptr) const;
 
   const vk::Image& output() const { return output_; }
+  // The near layer and its sample mask (R32_UINT); 1 x 1 and never written for a single-sample head depth.
+  const vk::Image& nearOutput() const { return nearOutput_; }
+  const vk::Image& nearMask() const { return nearMask_; }
+  std::uint32_t headSamples() const { return headSamples_; }
+  bool multisampled() const { return headSamples_ > 1; }
   VkExtent2D extent() const { return extent_; }
   std::uint32_t capacity() const { return capacity_; }
   // Blocking readback of the last recorded frame's statistics (outside the frame loop).
   RasterStats readStats() const;
+  // Blocking readback of the last frame's hair coverage per pixel (rows top to bottom), averaged over the
+  // head's samples: the alpha of the layer each sample takes. Outside the frame loop, after record().
+  std::vector<float> readCoverage() const;
 
  private:
   struct Chunk {
@@ -92,6 +105,8 @@ class StrandRasterPass {
     std::uint32_t strandCount;
     std::uint32_t verticesPerStrand;
   };
+  void makeNearLayer();
+  std::array<const vk::Image*, 3> outputs() const { return {&output_, &nearOutput_, &nearMask_}; }
   void recordArm(VkCommandBuffer cmd) const;
   void writeChunkSet(const vk::DescriptorSet& set, const ShadingWriter& shading, const StrandChunk& c,
                      const vk::Buffer& params) const;
@@ -102,11 +117,12 @@ class StrandRasterPass {
   const vk::Context& ctx_;
   VkExtent2D extent_;
   RasterSettings settings_;
+  std::uint32_t headSamples_;
   std::uint32_t tilesX_, tilesY_, capacity_ = 0;
   std::vector<std::uint32_t> sourceVertices_;  // render vertices of each source (bind() must match)
   vk::Buffer screen_, colors_, state_, counts_, keys_, tiles_, blocks_, list_, tileDepth_;
   vk::Buffer shadeFlags_, shadeList_, shadeArgs_;
-  vk::Image output_;
+  vk::Image output_, nearOutput_, nearMask_;
   vk::Sampler sampler_;
   VkImageView depth_ = VK_NULL_HANDLE;
   std::vector<Chunk> chunks_;

@@ -25,10 +25,10 @@ ComputeRaster::ComputeRaster(const vk::Context& ctx, const RendererSettings& set
       instances_(instances.begin(), instances.end()),
       frames_(makeFrameBlocks(ctx, instances.size())),
       depth_(depth),
-      pass_(ctx, sources(), extent, settings.rasterSettings),
+      pass_(ctx, sources(), extent, settings.rasterSettings, std::uint32_t(settings.formats.samples)),
       composite_(ctx, settings.formats) {
   pass_.setDepth(depth);
-  composite_.setInput(pass_.output().view());
+  composite_.setInput(pass_.output().view(), pass_.nearOutput().view(), pass_.nearMask().view());
 }
 
 std::vector<compute::RasterSource> ComputeRaster::sources() const {

@@ -39,6 +39,7 @@ class ComputeRaster {
   VkImageView depth() const { return depth_; }
   const vk::Image& image() const { return pass_.output(); }
   compute::RasterStats readStats() const { return pass_.readStats(); }
+  std::vector<float> readCoverage() const { return pass_.readCoverage(); }
 
  private:
   static std::vector<vk::Buffer> makeFrameBlocks(const vk::Context& ctx, std::size_t count);

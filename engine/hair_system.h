@@ -54,8 +54,8 @@ class HairSystem {
   void recordDraw(VkCommandBuffer cmd, const DrawView& view, vk::GpuProfiler* profiler = nullptr);
 
   // Compute raster only. Outside the frame loop: the Renderer's raster target for this extent and the
-  // head's single-sample depth image view (Renderer::setRasterTarget with the one instance; a previous
-  // target is retired after its frames).
+  // head's depth image view, of the settings' AttachmentFormats sample count (Renderer::setRasterTarget
+  // with the one instance; a previous target is retired after its frames).
   void setRasterTarget(VkExtent2D extent, VkImageView depth);
   // After the head's recordDraw; the depth image in ImageUse::ComputeSampled. Leaves rasterImage() in
   // ImageUse::FragmentSampled.
@@ -64,6 +64,7 @@ class HairSystem {
   RasterMode raster() const { return renderer_.raster(); }
   const vk::Image& rasterImage() const { return renderer_.rasterImage(); }
   compute::RasterStats rasterStats() const { return renderer_.rasterStats(); }  // blocking readback
+  std::vector<float> rasterCoverage() const { return renderer_.rasterCoverage(); }  // blocking readback
 
   // Between frames, with earlier frames possibly in flight: the old textures are retired, not idled on.
   void setMaterial(const HairMaterial& material, LutMode mode);

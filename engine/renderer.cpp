@@ -88,6 +88,7 @@ void Renderer::recordComposite(VkCommandBuffer cmd, VkExtent2D extent, vk::GpuPr
 const vk::Image& Renderer::rasterImage() const { return target().image(); }
 
 compute::RasterStats Renderer::rasterStats() const { return target().readStats(); }
+std::vector<float> Renderer::rasterCoverage() const { return target().readCoverage(); }
 
 std::shared_ptr<render::MarschnerTextures> Renderer::marschner(const HairMaterial& material, LutMode mode) {
   std::erase_if(luts_, [](const Lut& l) { return l.textures.expired(); });

@@ -68,8 +68,10 @@ class Renderer {
                   std::span<HairInstance* const> instances, vk::GpuProfiler* profiler = nullptr);
 
   // Compute raster only, outside the frame loop: rasterize `instances` (all in one set of tile lists)
-  // into an image of `extent` against the single-sample depth image view `depth`. Rebuilt by the Renderer
-  // when one of them changes strands or material or is destroyed; call again for another extent or set.
+  // into an image of `extent` against the depth image view `depth`, which has the settings'
+  // AttachmentFormats sample count: multisampled, the head's edges over the hair are antialiased by its
+  // samples (the composite then draws into attachments of that count). Rebuilt by the Renderer when one of
+  // them changes strands or material or is destroyed; call again for another extent or set.
   void setRasterTarget(VkExtent2D extent, VkImageView depth, std::span<HairInstance* const> instances);
   // After recordDraw of the frame's view (heads drawn, depth in ImageUse::ComputeSampled), with the
   // light recordShadows was given; leaves rasterImage() in ImageUse::FragmentSampled. View::index is unused
@@ -79,6 +81,9 @@ class Renderer {
   RasterMode raster() const { return raster_; }
   const vk::Image& rasterImage() const;
   compute::RasterStats rasterStats() const;  // blocking readback of the last frame's tile-list statistics
+  // Blocking readback of the last frame's hair coverage per pixel (rows top to bottom), averaged over the
+  // depth's samples (compute::StrandRasterPass::readCoverage).
+  std::vector<float> rasterCoverage() const;
 
   // Shadow tuning that keeps the maps' resolution and format (strand/head opacity, k, bias, on/off).
   void setOpacityTuning(const render::OpacitySettings& opacity);

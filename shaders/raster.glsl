@@ -37,12 +37,12 @@ Footprint segmentFootprint(uint v) {
 }
 
 // The rows of a tile that can hold a pixel the segment covers and the head does not hide: bit r set when
-// row r may (0: the segment stays out of the tile's list). raster_fine.comp composites a pixel centre c
+// row r may (0: the segment stays out of the tile's list). raster_fine.glsl composites a pixel centre c
 // only when its foot point s on the segment (t in [0, 1]) is within half the width + 0.75 px (`reach`)
 // of c; with c in the tile's columns, s lies on the part of the segment within `reach` of those columns in
 // x, and c within `reach` of that part's y range: one clip gives a conservative run of rows (the same in
 // the count and scatter modes). A segment whose nearer end is at or behind the farthest head depth in the
-// tile (raster_tile_depth.comp) is out: every fragment it could give there fails raster_fine's depth test.
+// tile (raster_tile_depth.glsl) is out: every fragment it could give there fails raster_fine's depth test.
 uint footprintRows(Footprint f, uvec2 tile) {
   if (min(f.a.z, f.b.z) >= tileDepth[tile.y * params.tilesX + tile.x]) return 0u;
   float reach = 0.5 * max(f.a.w, f.b.w) + 0.75 + 1e-3;

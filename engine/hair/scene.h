@@ -64,7 +64,7 @@ const char* rasterModeName(RasterMode mode);
 struct RenderSpec {
   std::uint32_t width = 1280;
   std::uint32_t height = 720;
-  std::uint32_t msaa = 4;  // 1, 2, 4 or 8; the graphics path's samples (the compute path draws 1)
+  std::uint32_t msaa = 4;  // 1, 2, 4 or 8: the samples of the head (both paths) and of the graphics path's hair
   RasterMode raster = RasterMode::Auto;
 };
 

@@ -153,7 +153,7 @@ void addFrameOptions(CLI::App& cmd, FrameOptions& o) {
                  "Frames simulated before the rendered one (default 90); with render --sequence, the frames rendered");
   cmd.add_option("--width", o.width, "Image width (default: scene, 1280)");
   cmd.add_option("--height", o.height, "Image height (default: scene, 720)");
-  cmd.add_option("--msaa", o.msaa, "Samples per pixel of the graphics raster: 1, 2, 4 or 8 (default: scene, 4)");
+  cmd.add_option("--msaa", o.msaa, "Samples per pixel: 1, 2, 4 or 8 (default: scene, 4); the head's in both rasters (the compute raster's hair is analytic and reads them at the head's edges), the hair's in the graphics raster");
   cmd.add_option("--raster", o.raster,
                  "Hair drawing: compute (tile rasterizer, analytic coverage), graphics (MSAA ribbons) or auto "
                  "(default: scene, auto = compute)");

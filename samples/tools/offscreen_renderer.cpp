@@ -13,11 +13,6 @@ namespace hp::render {
 namespace {
 constexpr VkClearColorValue kBackground = {{kBackgroundRadiance.x, kBackgroundRadiance.y, kBackgroundRadiance.z, 1.0f}};
 
-// The compute path draws one sample; a bad --msaa is still refused there.
-std::uint32_t targetSamples(std::uint32_t msaa, RasterMode raster) {
-  (void)sampleCountFlag(msaa);
-  return raster == RasterMode::Compute ? 1 : msaa;
-}
 
 VkRenderingInfo renderingInfo(VkExtent2D extent, const VkRenderingAttachmentInfo* color,
                               const VkRenderingAttachmentInfo* depth) {
@@ -35,7 +30,7 @@ OffscreenRenderer::OffscreenRenderer(const vk::Context& ctx, std::uint32_t width
                                      std::uint32_t msaa, RasterMode raster)
     : ctx_(ctx),
       raster_(raster),
-      targets_(ctx, width, height, targetSamples(msaa, raster), raster == RasterMode::Compute),
+      targets_(ctx, width, height, msaa, raster == RasterMode::Compute),
       tonemap_(ctx, kDisplayFormat) {
   if (raster == RasterMode::Auto) throw Error("OffscreenRenderer: resolve RasterMode::Auto first (resolveRasterMode)");
   tonemap_.setInput(hdrInput().view());
@@ -82,11 +77,14 @@ void OffscreenRenderer::record(VkCommandBuffer cmd, Renderer& renderer, std::uin
   recordTonemap(cmd, exposure);
 }
 
-// Single sample: head (depth stored), the rasterizer reads the depth, then the composite over the colour.
+// Head (depth stored), the rasterizer reads the depth, then the composite over the colour (and, with
+// MSAA, the resolve: the head's samples antialias its edges over the background and over the hair).
 void OffscreenRenderer::recordComputeScene(VkCommandBuffer cmd, const Record& drawHeads, const Record& raster,
                                            const Record& composite) const {
+  const bool msaa = bool(targets_.resolved);
   const VkImage hdr = targets_.hdr.handle(), depthImage = targets_.depth.handle();
-  vk::imageBarrier(ctx_, cmd, hdr, VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::FragmentSampledDiscard,
+  vk::imageBarrier(ctx_, cmd, hdr, VK_IMAGE_ASPECT_COLOR_BIT,
+                   msaa ? vk::ImageUse::ColorAttachmentDiscard : vk::ImageUse::FragmentSampledDiscard,
                    vk::ImageUse::ColorAttachment);
   vk::imageBarrier(ctx_, cmd, depthImage, VK_IMAGE_ASPECT_DEPTH_BIT, vk::ImageUse::DepthAttachmentDiscard,
                    vk::ImageUse::DepthAttachment);
@@ -104,12 +102,26 @@ void OffscreenRenderer::recordComputeScene(VkCommandBuffer cmd, const Record& dr
                    vk::ImageUse::DepthAttachment);
   // The head's colour writes before the composite's blend reads them (separate rendering instances).
   vk::imageBarrier(ctx_, cmd, hdr, VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::ColorAttachment, vk::ImageUse::ColorAttachment);
+  // The previous frame's tonemap may still sample the resolve target: wait for it before discarding it.
+  if (msaa)
+    vk::imageBarrier(ctx_, cmd, targets_.resolved.handle(), VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::FragmentSampledDiscard,
+                     vk::ImageUse::ColorAttachment);
   color.loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;
+  resolveInto(color);
   depth = vk::depthAttachment(targets_.depth.view(), VK_ATTACHMENT_LOAD_OP_LOAD, VK_ATTACHMENT_STORE_OP_DONT_CARE);
   ctx_.fn().vkCmdBeginRendering(cmd, &info);
   composite(cmd);
   ctx_.fn().vkCmdEndRendering(cmd);
-  vk::imageBarrier(ctx_, cmd, hdr, VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::ColorAttachment, vk::ImageUse::FragmentSampled);
+  vk::imageBarrier(ctx_, cmd, hdrInput().handle(), VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::ColorAttachment,
+                   vk::ImageUse::FragmentSampled);
+}
+
+void OffscreenRenderer::resolveInto(VkRenderingAttachmentInfo& color) const {
+  if (!targets_.resolved) return;
+  color.resolveMode = VK_RESOLVE_MODE_AVERAGE_BIT;
+  color.resolveImageView = targets_.resolved.view();
+  color.resolveImageLayout = vk::imageLayout(vk::ImageUse::ColorAttachment);
+  color.storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;  // only the resolve is kept
 }
 
 void OffscreenRenderer::record(VkCommandBuffer cmd, const std::function<void(VkCommandBuffer)>& draws,
@@ -134,12 +146,7 @@ void OffscreenRenderer::recordScene(VkCommandBuffer cmd, const std::function<voi
     vk::imageBarrier(ctx_, cmd, targets_.resolved.handle(), VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::FragmentSampledDiscard,
                      vk::ImageUse::ColorAttachment);
   VkRenderingAttachmentInfo color = vk::colorAttachment(targets_.hdr.view(), VK_ATTACHMENT_LOAD_OP_CLEAR, kBackground);
-  if (msaa) {
-    color.resolveMode = VK_RESOLVE_MODE_AVERAGE_BIT;
-    color.resolveImageView = targets_.resolved.view();
-    color.resolveImageLayout = vk::imageLayout(vk::ImageUse::ColorAttachment);
-    color.storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;  // only the resolve is kept
-  }
+  resolveInto(color);
   VkRenderingAttachmentInfo depth =
       vk::depthAttachment(targets_.depth.view(), VK_ATTACHMENT_LOAD_OP_CLEAR, VK_ATTACHMENT_STORE_OP_DONT_CARE);
   VkRenderingInfo info = renderingInfo(extent(), &color, &depth);

@@ -3,9 +3,10 @@
 // offscreen targets (RenderTargets) and the tonemap pass, and records, into the caller's command
 // buffer after HairSystem::recordPrepareDraw: clear, head + hair with MSAA into linear HDR, resolve,
 // tonemap to sRGB. readDisplay() then returns the image (blocking; outside the frame loop).
-// With RasterMode::Compute the targets are single-sample (hair coverage is analytic; the head's edges
-// are not anti-aliased) and a HairSystem frame is: head, the compute rasterizer reading the head's depth,
-// the composite of the hair image over the colour, tonemap. attach(hair) once binds the rasterizer's target.
+// With RasterMode::Compute a HairSystem frame is: head (MSAA), the compute rasterizer reading the head's
+// depth samples (hair coverage is analytic; the head's samples antialias its edges over the hair), the
+// composite of the hair layers over the colour, resolve, tonemap. attach(hair) once binds the
+// rasterizer's target.
 #include <functional>
 #include <span>
 #include <vector>
@@ -52,6 +53,8 @@ class OffscreenRenderer {
   void recordComputeScene(VkCommandBuffer cmd, const Record& drawHeads, const Record& raster,
                           const Record& composite) const;
   void recordTonemap(VkCommandBuffer cmd, float exposure) const;
+  // With MSAA: the colour attachment resolves (average) into the resolve target, its samples discarded.
+  void resolveInto(VkRenderingAttachmentInfo& color) const;
   const vk::Image& hdrInput() const { return targets_.resolved ? targets_.resolved : targets_.hdr; }
 
   const vk::Context& ctx_;

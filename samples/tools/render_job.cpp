@@ -101,9 +101,10 @@ FrameCapture captureFrame(const vk::Context& ctx, const HairSystem& hair, const 
   f.headToWorld = view.headToWorld;
   f.camera = view.camera;
   f.linear = renderer.readLinear();
-  if (hair.raster() == RasterMode::Compute)
-    f.hairAlpha = render::rgbOfHalfRgba(vk::readbackImage(ctx, hair.rasterImage(), vk::ImageUse::FragmentSampled),
-                                        renderer.extent(), 3, 1);
+  if (hair.raster() == RasterMode::Compute) {
+    f.hairAlpha = LinearImage(renderer.extent().width, renderer.extent().height, 1);
+    f.hairAlpha.values = hair.rasterCoverage();
+  }
   return f;
 }
 }  // namespace

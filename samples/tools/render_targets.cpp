@@ -35,6 +35,9 @@ RenderTargets::RenderTargets(const vk::Context& ctx, std::uint32_t width, std::u
   const auto& limits = ctx.properties().limits;
   if (!(limits.framebufferColorSampleCounts & samples) || !(limits.framebufferDepthSampleCounts & samples))
     throw Error("msaa " + std::to_string(msaa) + "x is not supported by this device");
+  if (sampledDepth && !(limits.sampledImageDepthSampleCounts & samples))
+    throw Error("msaa " + std::to_string(msaa) + "x: this device cannot sample a depth image of that many samples "
+                "(the compute raster reads the head's depth); use a lower --msaa");
   // Transfer source: the linear HDR image is read back for frame exports (render --export-frame).
   const VkImageUsageFlags resolveUsage =
       VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;

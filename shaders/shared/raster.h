@@ -61,16 +61,27 @@ HP_CONST(uint, RASTER_BINDING_KEYS, 15)
 HP_CONST(uint, RASTER_BINDING_TILES, 16)
 HP_CONST(uint, RASTER_BINDING_BLOCKS, 17)
 HP_CONST(uint, RASTER_BINDING_LIST, 18)
-HP_CONST(uint, RASTER_BINDING_DEPTH, 19)   // sampler2D: the head's depth (single sample), 1 = nothing
+HP_CONST(uint, RASTER_BINDING_DEPTH, 19)   // sampler2D(MS): the head's depth, 1 = nothing (raster_head_depth.glsl)
 HP_CONST(uint, RASTER_BINDING_OUTPUT, 20)  // storage image rgba16f: premultiplied hair radiance, a = 1 - T
 HP_CONST(uint, RASTER_BINDING_PARAMS, 21)  // RasterParams of the set's chunk (read-only storage buffer)
 HP_CONST(uint, RASTER_BINDING_TILE_DEPTH, 22)  // float[tiles]: the farthest head depth in each tile
 HP_CONST(uint, RASTER_BINDING_SHADE_FLAGS, 23) // uint[V]: 1 once a vertex is listed for shading
 HP_CONST(uint, RASTER_BINDING_SHADE_LIST, 24)  // uint[V]: per chunk from its firstVertex, the vertices to shade
 HP_CONST(uint, RASTER_BINDING_SHADE_ARGS, 25)  // uvec4[chunks]: x, y, z = the shade dispatch, w = listed
+// 26, 27: shared/render.h's bounce map. A multisampled head depth splits a pixel's samples in two layers:
+// the far layer (OUTPUT) is the hair in front of the farthest head sample; the samples of NEAR_MASK, where
+// the head hides hair the far samples see, take the near layer: the hair in front of every head sample.
+HP_CONST(uint, RASTER_BINDING_OUTPUT_NEAR, 28)  // storage image rgba16f: the near layer, as OUTPUT
+HP_CONST(uint, RASTER_BINDING_NEAR_MASK, 29)    // storage image r32ui: the samples that take the near layer
+HP_CONST(uint, RASTER_MAX_HEAD_SAMPLES, 16)     // head depth samples per pixel the raster reads
 
-// The composite pass (composite.frag) samples the output image.
+// The composite pass (composite.frag) samples the output images; its push constant picks the layer.
 HP_CONST(uint, COMPOSITE_BINDING_HAIR, 0)
+HP_CONST(uint, COMPOSITE_BINDING_NEAR, 1)
+HP_CONST(uint, COMPOSITE_BINDING_NEAR_MASK, 2)
+HP_CONST(uint, COMPOSITE_EVERY_SAMPLE, 0)  // the far layer into every sample (single-sample head depth)
+HP_CONST(uint, COMPOSITE_FAR_SAMPLES, 1)   // the far layer into the samples outside the near mask
+HP_CONST(uint, COMPOSITE_NEAR_SAMPLES, 2)  // the near layer into the near mask's samples
 
 // raster_bin.comp's specialization constant 0.
 HP_CONST(uint, RASTER_MODE_COUNT, 1)    // per segment: count into (tile, bin) keys

@@ -153,38 +153,84 @@ TEST_F(VulkanTest, FrameExportRoundTripsAndTheRealTimeHairMatchesTheReference) {
   std::filesystem::remove_all(dir);
 }
 
-// Measured on lavapipe at 64x48, 4 spp: luminance ratio 0.847, red/blue 1.46 against 1.74 with the default
-// deep maps and skin bounce (0.84 and 1.33 against 1.77 with global slices and no bounce); with the old ambient term, albedo exp(-2 sigma_a) unoccluded (80x60, 16 spp): 1.45 and 3.19 against
-// 1.80. The bounds separate the two.
-TEST_F(VulkanTest, DensePhysicalHairMatchesTheReferenceLuminanceAndHue) {
+// The default scene at 64x48 after 2 settling frames, captured for a comparison with the reference.
+RenderRequest smallCapturedFrame() {
   RenderRequest request;
   request.scene.render.width = 64;
   request.scene.render.height = 48;
   request.settleFrames = 2;
   request.captureFrame = true;
+  return request;
+}
+
+// The default frame (physical fibres, deep maps, skin bounce, compute raster over a 4-sample head) against
+// the reference over the hair, 64x48, reference 32 spp / 4 bounces (4 spp was too noisy: its luminance
+// ratio spread 1.04-1.28 over three seeds). Measured on lavapipe over seeds 1-3: 30.3-30.8 dB, luminance
+// 1.02-1.09, red/blue 1.48 against 1.82-1.90. With a single-sample head (the head's edges over the hair
+// aliased, half-skin pixels drawn as hair): 22.0-22.4 dB, luminance 0.73-0.75, which fails both bounds;
+// with the old ambient term, albedo exp(-2 sigma_a) unoccluded (80x60, 16 spp): luminance 1.45, red/blue
+// 3.19 against 1.80, which fails the luminance and hue bounds.
+TEST_F(VulkanTest, DensePhysicalHairMatchesTheReferenceLuminanceAndHue) {
+  RenderRequest request = smallCapturedFrame();
   ASSERT_EQ(request.lutMode, LutMode::Physical);
+  ASSERT_EQ(request.scene.render.msaa, 4u);
   const HairAsset asset = buildSceneAsset(request.scene);
   const RenderResult result = renderStill(*ctx, asset, request);
   ASSERT_TRUE(result.frame);
   const ExportedFrame frame = makeExportedFrame(request, asset, *result.frame, "physical");
-  const reference::TraceResult ref = reference::traceReference(frame, {4, 4, 1, 0, nullptr});
+  const reference::TraceResult ref = reference::traceReference(frame, {32, 4, 1, 0, nullptr});
   const ImageComparison c = compareImages(result.frame->linear, ref.radiance, result.frame->hairAlpha, frame.exposure);
   std::cout << "physical, dense hair: " << c.psnrDb << " dB, luminance " << c.luminanceRatio << ", red/blue "
             << c.redBlueImage << " vs " << c.redBlueReference << ", " << c.pixels << " hair pixels\n";
   EXPECT_GT(c.pixels, 200u);
-  EXPECT_GT(c.luminanceRatio, 0.6);
-  EXPECT_LT(c.luminanceRatio, 1.25);
+  EXPECT_GT(c.psnrDb, 28.0);
+  EXPECT_GT(c.luminanceRatio, 0.9);
+  EXPECT_LT(c.luminanceRatio, 1.2);
   EXPECT_GT(c.redBlueImage / c.redBlueReference, 0.6);
   EXPECT_LT(c.redBlueImage / c.redBlueReference, 1.4);
 }
 
-// The skin's bounce (LookSettings::skinBounce, shaders/head_bounce.glsl) against the reference's light that
-// reached the hair by way of at most one other surface (2 bounces: on this head that is the skin, hair to
-// hair is ~0), sky off, default view (the face and shoulders lit beside the hair), 2 settling frames.
-// Measured on lavapipe at 128x96, 16 spp (deep maps, bias 0.5): without the bounce the hair has 0.738 of
-// the reference's luminance, with it 0.867; PSNR 25.33 -> 25.39 dB (per-fibre speckle dominates it; the
-// 160x120 frames of docs/SHADING.md "Skin bounce" gain 0.5 dB). Asserted: the bounce moves the ratio toward 1 by at least
-// half of what was measured, does not overshoot past 1.2, and PSNR does not drop by more than the noise.
+// The compute raster reads the head's depth samples: where the skin's edge is in front of hair (the jaw
+// and neck over the hair behind them) each sample takes the hair in front of it, so those pixels mix skin
+// and hair as the reference's do, instead of all hair (sample at the centre behind the skin's edge: the
+// pixel drawn as hair) or all skin. The same 64x48 frame with 4 head samples and with 1, against one
+// reference (32 spp, 4 bounces). Measured on lavapipe: 30.3 against 22.4 dB, luminance ratio 1.02 against
+// 0.73 (docs/SHADING.md "The head's edges over the hair").
+TEST_F(VulkanTest, HeadSamplesAntialiasTheSkinsEdgeOverTheHair) {
+  RenderRequest request = smallCapturedFrame();
+  const HairAsset asset = buildSceneAsset(request.scene);
+  const RenderResult multisampled = renderStill(*ctx, asset, request);
+  request.scene.render.msaa = 1;
+  const RenderResult single = renderStill(*ctx, asset, request);
+  ASSERT_TRUE(multisampled.frame && single.frame);
+  const ExportedFrame frame = makeExportedFrame(request, asset, *multisampled.frame, "physical");
+  const reference::TraceResult ref = reference::traceReference(frame, {32, 4, 1, 0, nullptr});
+  const auto against = [&](const RenderResult& r) {
+    return compareImages(r.frame->linear, ref.radiance, r.frame->hairAlpha, frame.exposure);
+  };
+  const ImageComparison four = against(multisampled), one = against(single);
+  std::cout << "head samples 4: " << four.psnrDb << " dB, luminance " << four.luminanceRatio << "; 1: " << one.psnrDb
+            << " dB, luminance " << one.luminanceRatio << "\n";
+  EXPECT_GT(four.psnrDb, one.psnrDb + 4.0);
+  EXPECT_LT(std::abs(four.luminanceRatio - 1.0), std::abs(one.luminanceRatio - 1.0) - 0.1);
+  // Coverage at the head's edges comes in quarters of the samples, never above one.
+  std::size_t partial = 0;
+  for (float a : multisampled.frame->hairAlpha.values) {
+    EXPECT_LE(a, 1.0f + 1e-3f);
+    partial += (a > 0.02f && a < 0.98f) ? 1 : 0;
+  }
+  EXPECT_GT(partial, 10u);
+}
+
+// The skin's bounce (LookSettings::skinBounce, shaders/head_bounce.glsl) against the light the reference's
+// second bounce adds (2 bounces against 1: on this head that is the skin's, hair to hair is ~0), sky off,
+// default view (the face and shoulders lit beside the hair), 2 settling frames, 128x96, 16 spp, the same
+// mask (the frame's hair coverage) for every image. Measured on lavapipe (deep maps, bias 0.5, 4 head
+// samples): the bounce adds 0.65 of the reference's second-bounce light (0.153 of the 2-bounce
+// reference's luminance against 0.235); PSNR against the 2-bounce reference 30.9 -> 31.0 dB. Asserted:
+// it adds between 0.4 and 1.1 of it, and PSNR does not drop by more than the noise. (The frame's
+// luminance ratio against the 2-bounce reference goes 0.95 -> 1.10: the direct light, 1.24x the
+// single-scattering reference at this view, is too strong; docs/SHADING.md.)
 // The same frame without and with the skin's bounce (a small compute-raster frame, sky off, captured).
 // `request` is left as the second frame was rendered, for the export.
 struct BounceFrames {
@@ -207,7 +253,7 @@ BounceFrames renderWithAndWithoutBounce(const vk::Context& ctx, RenderRequest& r
   return f;
 }
 
-TEST_F(VulkanTest, SkinBounceBringsTheDefaultViewTowardTheReferencesSkinLight) {
+TEST_F(VulkanTest, SkinBounceAddsTheReferencesSecondBounceOffTheSkin) {
   RenderRequest request;
   request.opacity.raster = render::OpacityRaster::Compute;
   request.opacity.deep = true;  // the lighting measured (the defaults today, pinned)
@@ -218,14 +264,19 @@ TEST_F(VulkanTest, SkinBounceBringsTheDefaultViewTowardTheReferencesSkinLight) {
   ASSERT_TRUE(without.frame && with.frame);  // the same strands (coverage up to the raster's atomics order)
   const ExportedFrame frame = makeExportedFrame(request, frames.asset, *with.frame, "physical");
   const reference::TraceResult ref = reference::traceReference(frame, {16, 2, 1, 0, nullptr});
-  const ImageComparison off =
-      compareImages(without.frame->linear, ref.radiance, without.frame->hairAlpha, frame.exposure);
-  const ImageComparison on = compareImages(with.frame->linear, ref.radiance, with.frame->hairAlpha, frame.exposure);
+  const reference::TraceResult single = reference::traceReference(frame, {16, 1, 1, 0, nullptr});
+  const LinearImage& mask = with.frame->hairAlpha;
+  const ImageComparison off = compareImages(without.frame->linear, ref.radiance, mask, frame.exposure);
+  const ImageComparison on = compareImages(with.frame->linear, ref.radiance, mask, frame.exposure);
+  const double secondBounce = 1.0 - compareImages(single.radiance, ref.radiance, mask, frame.exposure).luminanceRatio;
+  const double added = on.luminanceRatio - off.luminanceRatio;
   std::cout << "skin bounce off: " << off.psnrDb << " dB, luminance " << off.luminanceRatio << "; on: " << on.psnrDb
-            << " dB, luminance " << on.luminanceRatio << ", " << on.pixels << " hair pixels\n";
+            << " dB, luminance " << on.luminanceRatio << ", " << on.pixels << " hair pixels; adds " << added
+            << " of the 2-bounce reference's luminance, its second bounce " << secondBounce << "\n";
   EXPECT_GT(on.pixels, 200u);
-  EXPECT_GT(on.luminanceRatio - off.luminanceRatio, 0.065);
-  EXPECT_LT(on.luminanceRatio, 1.2);
+  ASSERT_GT(secondBounce, 0.1);
+  EXPECT_GT(added / secondBounce, 0.4);
+  EXPECT_LT(added / secondBounce, 1.1);
   EXPECT_GT(on.psnrDb, off.psnrDb - 0.3);
 }
 
@@ -234,7 +285,9 @@ TEST_F(VulkanTest, SkinBounceBringsTheDefaultViewTowardTheReferencesSkinLight) {
 // the hair covers only partly in the reference: the silhouettes and sparse tips. Strands interpolated
 // between the same guides lie in sheets; alpha compositing's independent "over" counted their overlap
 // as if independent and covered these 377 pixels 0.631 against the reference's 0.574 (lavapipe); the
-// 8 x 8 overlap mask of raster_fine.comp gives 0.572. Asserted: within 0.03 (16 rays a pixel: ~0.01 noise).
+// 8 x 8 overlap mask of raster_fine.glsl gives 0.572 over a single-sample head, 0.556 over the default 4
+// samples (whose skin edges hide hair per sample, like the reference's rays). Asserted: within 0.03 (16 rays
+// a pixel: ~0.01 noise).
 TEST_F(VulkanTest, ComputeRasterCoversSilhouettePixelsLikeThePathTracer) {
   RenderRequest request;
   request.scene.render.width = 128;

@@ -1,0 +1,123 @@
+// Compute rasterizer, one workgroup per 8x8 tile, one invocation per pixel: walks the tile's list (depth
+// bins near to far) and composites front to back, C += a s c, A += a s, until A > 1 - 1/255. a is the
+// exact area of the pixel covered by the segment's band (rasterBandCoverage, shared/raster.h) at the
+// width interpolated along it (the tip taper); s, the share of it not hidden by the strands in front, is
+// 1 - A for independent strands, corrected by an 8 x 8 sample mask of the pixel for strands that overlap
+// more or less than independence says (rasterVisibleShare: coincident strands of a sheet seen edge-on).
+// A pixel centre belongs to the segment it projects onto within [0, 1), so the segments of a strand
+// neither overlap nor leave gaps. Fragments at or behind the head's depth are hidden. Output:
+// premultiplied radiance C and alpha A.
+// With a multisampled head depth a pixel whose head samples hide some of its hair (the skin's edge in
+// front of hair behind it) writes two layers: the far one, every fragment in front of the farthest head
+// sample, and the near one, the fragments in front of every head sample, with the mask of the samples
+// that hide hair; the composite gives each sample its layer (shared/raster.h), so the head's edge over
+// the hair is antialiased like its edge over the background.
+#include "shared/raster.h"
+#include "common.glsl"
+
+layout(local_size_x = RASTER_FINE_SIZE) in;
+layout(std430, binding = RASTER_BINDING_SCREEN) readonly buffer Screen { vec4 screen[]; };
+layout(std430, binding = RASTER_BINDING_COLORS) readonly buffer Colors { uvec2 colors[]; };
+layout(std430, binding = RASTER_BINDING_TILES) readonly buffer Tiles { uvec2 tiles[]; };
+layout(std430, binding = RASTER_BINDING_BLOCKS) readonly buffer Blocks { uint blocks[]; };
+layout(std430, binding = RASTER_BINDING_LIST) readonly buffer List { uvec2 list[]; };
+#include "raster_head_depth.glsl"
+layout(binding = RASTER_BINDING_OUTPUT, rgba16f) uniform writeonly image2D outImage;
+#ifdef RASTER_HEAD_MULTISAMPLED
+layout(binding = RASTER_BINDING_OUTPUT_NEAR, rgba16f) uniform writeonly image2D nearImage;
+layout(binding = RASTER_BINDING_NEAR_MASK, r32ui) uniform writeonly uimage2D nearMaskImage;
+#endif
+layout(std430, binding = RASTER_BINDING_PARAMS) readonly buffer Params { RasterParams params; };
+
+vec3 radianceOf(uvec2 c) { return vec3(unpackHalf2x16(c.x), unpackHalf2x16(c.y).x); }
+uint samplesIn(uvec2 mask) { return uint(bitCount(mask.x) + bitCount(mask.y)); }  // of the 8 x 8 overlap mask
+
+// Hair composited front to back so far: premultiplied radiance, alpha, the overlap mask's covered samples.
+struct Layer {
+  vec3 color;
+  float alpha;
+  uvec2 covered;
+};
+
+// Adds a fragment of exact area `coverage` and overlap-mask samples `band` behind what the layer holds.
+void composite(inout Layer layer, float coverage, uvec2 band, vec3 c) {
+  float share = rasterVisibleShare(samplesIn(band), samplesIn(layer.covered), samplesIn(band & layer.covered), layer.alpha);
+  layer.covered |= band;
+  float visible = coverage * share;
+  layer.color += visible * c;
+  layer.alpha = min(layer.alpha + visible, 1.0);
+}
+
+// The head samples of `pixel` at or in front of depth z (multisampled head depth only).
+uint headSamplesInFront(ivec2 pixel, float z) {
+  uint mask = 0u;
+  for (uint s = 0u; s < headSamples(); ++s)
+    if (headDepthAt(pixel, s) <= z) mask |= 1u << s;
+  return mask;
+}
+
+void main() {
+  uint invocation = hpThreadId(RASTER_FINE_SIZE);
+  uint tile = invocation / RASTER_FINE_SIZE;
+  uint lane = invocation % RASTER_FINE_SIZE;
+  if (tile >= params.tilesX * params.tilesY) return;
+  uvec2 pixel = uvec2(tile % params.tilesX, tile / params.tilesX) * RASTER_TILE_SIZE +
+                uvec2(lane % RASTER_TILE_SIZE, lane / RASTER_TILE_SIZE);
+  if (pixel.x >= params.width || pixel.y >= params.height) return;
+  vec2 centre = vec2(pixel) + 0.5;
+  float farthest = 0.0, nearest = 1.0;  // over the pixel's head samples
+  for (uint s = 0u; s < headSamples(); ++s) {
+    farthest = max(farthest, headDepthAt(ivec2(pixel), s));
+    nearest = min(nearest, headDepthAt(ivec2(pixel), s));
+  }
+  uint start = tiles[tile].x + blocks[tile / RASTER_SCAN_SIZE];
+  uint end = min(start + tiles[tile].y, params.capacity);
+  Layer far = Layer(vec3(0.0), 0.0, uvec2(0u));  // rows 0-3, 4-7 of the overlap mask
+  Layer near = far;
+  bool split = false;  // whether a fragment was hidden at some head samples (then `near` is its own layer)
+  uint nearMask = 0u;
+  // Entries that touch none of this pixel's row are skipped in a tight loop before the body: a row of the
+  // tile is one 8-wide SIMD vector on lavapipe (whose branches are predicated: a `continue` would still run
+  // the body), and on GPUs the skip is as cheap as the body's first test.
+  uint rowBit = 1u << (lane / RASTER_TILE_SIZE);
+  uint e = start;
+  while (far.alpha <= 1.0 - RASTER_OPAQUE_T) {
+    while (e < end && (list[e].y & rowBit) == 0u) ++e;
+    if (e >= end) break;
+    uint entry = list[e++].x;
+    uint v = entry & ~RASTER_LAST_SEGMENT;
+    vec4 a = screen[v];
+    vec4 b = screen[v + 1u];
+    vec2 ab = b.xy - a.xy;
+    float len2 = dot(ab, ab);
+    if (len2 < 1e-12) continue;
+    float t = dot(centre - a.xy, ab) / len2;
+    if (t < 0.0 || t > 1.0 || (t == 1.0 && entry < RASTER_LAST_SEGMENT)) continue;
+    vec2 n = vec2(-ab.y, ab.x) * inversesqrt(len2);
+    float d = dot(centre - a.xy, n);
+    float w = mix(a.w, b.w, t);
+    if (abs(d) > 0.5 * w + 0.75) continue;
+    float z = mix(a.z, b.z, t);
+    if (z >= farthest) continue;
+    float coverage = rasterBandCoverage(d, w, n.x, n.y);
+    if (coverage <= 0.0) continue;
+    uvec2 band = uvec2(0u);
+    for (uint row = 0u; row < RASTER_MASK_SIDE; ++row)
+      band[row >> 2u] |= rasterBandRowBits(d, w, n.x, n.y, row) << ((row & 3u) * 8u);
+    vec3 c = mix(radianceOf(colors[v]), radianceOf(colors[v + 1u]), t);
+    if (z >= nearest) {  // hidden at some head samples: those keep only the hair in front of all of them
+      if (!split) near = far;
+      split = true;
+      nearMask |= headSamplesInFront(ivec2(pixel), z);
+    } else if (split) {
+      composite(near, coverage, band, c);
+    }
+    composite(far, coverage, band, c);
+  }
+  imageStore(outImage, ivec2(pixel), vec4(far.color, far.alpha));
+#ifdef RASTER_HEAD_MULTISAMPLED
+  if (!split) near = far;
+  imageStore(nearImage, ivec2(pixel), vec4(near.color, near.alpha));
+  imageStore(nearMaskImage, ivec2(pixel), uvec4(nearMask));
+#endif
+}
