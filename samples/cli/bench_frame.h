@@ -18,7 +18,7 @@ struct FrameCase {
   std::uint32_t strands = 20000;
   std::uint32_t width = 640, height = 480;
   RasterMode raster = RasterMode::Compute;
-  std::uint32_t msaa = 4;  // graphics only
+  std::uint32_t msaa = 4;  // the head's samples (both paths) and the graphics path's hair samples
   std::uint32_t frames = 3;
   render::OpacityRaster opacityRaster = render::OpacityRaster::Auto;  // how strands reach the opacity maps
   bool skinBounce = true;  // compute only: LookSettings::skinBounce

@@ -20,7 +20,10 @@ std::string fmt(const char* f, double a, double b) {
 }  // namespace
 
 std::string frameCaseName(const FrameCase& c) {
-  if (c.raster == RasterMode::Compute) return c.skinBounce ? "compute" : "compute, no skin bounce";
+  if (c.raster == RasterMode::Compute) {
+    const std::string head = c.msaa == 4 ? "" : " head msaa" + std::to_string(c.msaa);
+    return (c.skinBounce ? "compute" : "compute, no skin bounce") + head;
+  }
   return "graphics msaa" + std::to_string(c.msaa);
 }
 

@@ -1,7 +1,7 @@
 // `hairpipe bench [--strands LIST] [--resolution WxH] [--frames N] [--raster LIST] [--msaa LIST]
 // [--skin-bounce off,on] [--json F]
 // [--plot F.svg]`: the whole frame on the default head (bench_frame.h) for each strand count and raster
-// path (graphics once per --msaa value), after one warm-up frame: per pass the GPU-timestamp median
+// path (once per --msaa value: the head's samples, and the graphics path's hair samples), after one warm-up frame: per pass the GPU-timestamp median
 // (min/max) of N frames, the frame total, each compute pass's achieved bytes/s as a fraction of a
 // vkCmdCopyBuffer timed in the same frames, the host time and resident-memory growth per frame, the
 // device and driver. --json writes the report to F, --plot an SVG of ms per pass against strand count.
@@ -64,7 +64,10 @@ std::vector<hp::cli::FrameCase> cases(const BenchOptions& o) {
         for (const std::string& b : o.skinBounce) {
           if (b != "off" && b != "on") throw hp::Error("bench: --skin-bounce takes off and/or on, got '" + b.substr(0, 40) + "'");
           c.skinBounce = b == "on";
-          out.push_back(c);
+          for (std::uint32_t m : o.msaa) {  // the head's samples, which the rasterizer reads
+            c.msaa = m;
+            out.push_back(c);
+          }
         }
         continue;
       }
@@ -155,7 +158,7 @@ void setup(CLI::App& app) {
   cmd->add_option("--frames", o->frames, "Timed frames per case (median), after one warm-up")->capture_default_str();
   cmd->add_option("--raster", o->raster, "Raster paths: compute, graphics (comma separated)")->delimiter(',')
       ->capture_default_str();
-  cmd->add_option("--msaa", o->msaa, "Sample counts for the graphics path (comma separated)")->delimiter(',')
+  cmd->add_option("--msaa", o->msaa, "Sample counts (comma separated): the head's in both paths, the hair's in the graphics path")->delimiter(',')
       ->capture_default_str();
   cmd->add_option("--opacity-raster", o->opacityRaster, "How strands reach the opacity maps: auto, compute or graphics")
       ->capture_default_str();
