@@ -155,7 +155,8 @@ StrandRasterPass::StrandRasterPass(const vk::Context& ctx, std::span<const Raste
   blocks_ = deviceBuffer(ctx, divUp(std::uint32_t(tiles), gpu::RASTER_SCAN_SIZE) * 4, kStorageUsage, "blocks", limit);
   list_ = deviceBuffer(ctx, VkDeviceSize(capacity_) * 8, kStorageUsage, "tile lists", limit);
   output_ = outputImage(ctx, extent, true, VK_FORMAT_R16G16B16A16_SFLOAT, "raster hair image");
-  makeNearLayer();
+  nearOutput_ = outputImage(ctx, extent, multisampled(), VK_FORMAT_R16G16B16A16_SFLOAT, "raster hair image (near layer)");
+  nearMask_ = outputImage(ctx, extent, multisampled(), VK_FORMAT_R32_UINT, "raster near-layer sample mask");
   sampler_ = vk::Sampler(ctx, "raster depth sampler", VK_FILTER_NEAREST);  // D32 cannot filter
   const gpu::RasterState armed = armedState();
   vk::uploadBytes(ctx, state_, &armed, sizeof(armed), vk::BufferUse::ComputeWrite);
@@ -175,12 +176,6 @@ StrandRasterPass::StrandRasterPass(const vk::Context& ctx, std::span<const Raste
   scanTiles_ = pipeline("raster_scan_tiles.comp", gpu::RASTER_SCAN_SIZE, "raster scan tiles");
   scanBlocks_ = pipeline("raster_scan_blocks.comp", gpu::RASTER_SCAN_SIZE, "raster scan blocks");
   fine_ = pipeline(multisampled() ? "raster_fine_ms.comp" : "raster_fine.comp", gpu::RASTER_FINE_SIZE, "raster fine");
-}
-
-void StrandRasterPass::makeNearLayer() {
-  const bool used = multisampled();
-  nearOutput_ = outputImage(ctx_, extent_, used, VK_FORMAT_R16G16B16A16_SFLOAT, "raster hair image (near layer)");
-  nearMask_ = outputImage(ctx_, extent_, used, VK_FORMAT_R32_UINT, "raster near-layer sample mask");
 }
 
 void StrandRasterPass::bind(std::span<const RasterSource> sources) {

@@ -88,7 +88,6 @@ class StrandRasterPass {
   // The near layer and its sample mask (R32_UINT); 1 x 1 and never written for a single-sample head depth.
   const vk::Image& nearOutput() const { return nearOutput_; }
   const vk::Image& nearMask() const { return nearMask_; }
-  std::uint32_t headSamples() const { return headSamples_; }
   bool multisampled() const { return headSamples_ > 1; }
   VkExtent2D extent() const { return extent_; }
   std::uint32_t capacity() const { return capacity_; }
@@ -105,7 +104,6 @@ class StrandRasterPass {
     std::uint32_t strandCount;
     std::uint32_t verticesPerStrand;
   };
-  void makeNearLayer();
   std::array<const vk::Image*, 3> outputs() const { return {&output_, &nearOutput_, &nearMask_}; }
   void recordArm(VkCommandBuffer cmd) const;
   void writeChunkSet(const vk::DescriptorSet& set, const ShadingWriter& shading, const StrandChunk& c,

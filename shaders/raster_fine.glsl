@@ -48,13 +48,15 @@ void composite(inout Layer layer, float coverage, uvec2 band, vec3 c) {
   layer.alpha = min(layer.alpha + visible, 1.0);
 }
 
-// The head samples of `pixel` at or in front of depth z (multisampled head depth only).
+#ifdef RASTER_HEAD_MULTISAMPLED
+// The head samples of `pixel` at or in front of depth z.
 uint headSamplesInFront(ivec2 pixel, float z) {
   uint mask = 0u;
   for (uint s = 0u; s < headSamples(); ++s)
     if (headDepthAt(pixel, s) <= z) mask |= 1u << s;
   return mask;
 }
+#endif
 
 void main() {
   uint invocation = hpThreadId(RASTER_FINE_SIZE);
@@ -67,15 +69,18 @@ void main() {
   vec2 centre = vec2(pixel) + 0.5;
   float farthest = 0.0, nearest = 1.0;  // over the pixel's head samples
   for (uint s = 0u; s < headSamples(); ++s) {
-    farthest = max(farthest, headDepthAt(ivec2(pixel), s));
-    nearest = min(nearest, headDepthAt(ivec2(pixel), s));
+    float depth = headDepthAt(ivec2(pixel), s);
+    farthest = max(farthest, depth);
+    nearest = min(nearest, depth);
   }
   uint start = tiles[tile].x + blocks[tile / RASTER_SCAN_SIZE];
   uint end = min(start + tiles[tile].y, params.capacity);
   Layer far = Layer(vec3(0.0), 0.0, uvec2(0u));  // rows 0-3, 4-7 of the overlap mask
+#ifdef RASTER_HEAD_MULTISAMPLED
   Layer near = far;
   bool split = false;  // whether a fragment was hidden at some head samples (then `near` is its own layer)
   uint nearMask = 0u;
+#endif
   // Entries that touch none of this pixel's row are skipped in a tight loop before the body: a row of the
   // tile is one 8-wide SIMD vector on lavapipe (whose branches are predicated: a `continue` would still run
   // the body), and on GPUs the skip is as cheap as the body's first test.
@@ -105,6 +110,7 @@ void main() {
     for (uint row = 0u; row < RASTER_MASK_SIDE; ++row)
       band[row >> 2u] |= rasterBandRowBits(d, w, n.x, n.y, row) << ((row & 3u) * 8u);
     vec3 c = mix(radianceOf(colors[v]), radianceOf(colors[v + 1u]), t);
+#ifdef RASTER_HEAD_MULTISAMPLED  // one sample: nearest == farthest, nothing is hidden at some samples only
     if (z >= nearest) {  // hidden at some head samples: those keep only the hair in front of all of them
       if (!split) near = far;
       split = true;
@@ -112,6 +118,7 @@ void main() {
     } else if (split) {
       composite(near, coverage, band, c);
     }
+#endif
     composite(far, coverage, band, c);
   }
   imageStore(outImage, ivec2(pixel), vec4(far.color, far.alpha));

@@ -3,22 +3,25 @@
 #include "engine/vk/barriers.h"
 
 namespace hp::vk {
-VkRenderingAttachmentInfo depthAttachment(VkImageView view, VkAttachmentLoadOp load, VkAttachmentStoreOp store) {
+namespace {
+VkRenderingAttachmentInfo attachment(VkImageView view, ImageUse use, VkAttachmentLoadOp load, VkAttachmentStoreOp store) {
   VkRenderingAttachmentInfo a{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
   a.imageView = view;
-  a.imageLayout = imageLayout(ImageUse::DepthAttachment);
+  a.imageLayout = imageLayout(use);
   a.loadOp = load;
   a.storeOp = store;
+  return a;
+}
+}  // namespace
+
+VkRenderingAttachmentInfo depthAttachment(VkImageView view, VkAttachmentLoadOp load, VkAttachmentStoreOp store) {
+  VkRenderingAttachmentInfo a = attachment(view, ImageUse::DepthAttachment, load, store);
   a.clearValue.depthStencil = {1.0f, 0};
   return a;
 }
 
 VkRenderingAttachmentInfo colorAttachment(VkImageView view, VkAttachmentLoadOp load, VkClearColorValue clear) {
-  VkRenderingAttachmentInfo a{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
-  a.imageView = view;
-  a.imageLayout = imageLayout(ImageUse::ColorAttachment);
-  a.loadOp = load;
-  a.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+  VkRenderingAttachmentInfo a = attachment(view, ImageUse::ColorAttachment, load, VK_ATTACHMENT_STORE_OP_STORE);
   a.clearValue.color = clear;
   return a;
 }

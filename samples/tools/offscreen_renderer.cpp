@@ -81,13 +81,8 @@ void OffscreenRenderer::record(VkCommandBuffer cmd, Renderer& renderer, std::uin
 // MSAA, the resolve: the head's samples antialias its edges over the background and over the hair).
 void OffscreenRenderer::recordComputeScene(VkCommandBuffer cmd, const Record& drawHeads, const Record& raster,
                                            const Record& composite) const {
-  const bool msaa = bool(targets_.resolved);
   const VkImage hdr = targets_.hdr.handle(), depthImage = targets_.depth.handle();
-  vk::imageBarrier(ctx_, cmd, hdr, VK_IMAGE_ASPECT_COLOR_BIT,
-                   msaa ? vk::ImageUse::ColorAttachmentDiscard : vk::ImageUse::FragmentSampledDiscard,
-                   vk::ImageUse::ColorAttachment);
-  vk::imageBarrier(ctx_, cmd, depthImage, VK_IMAGE_ASPECT_DEPTH_BIT, vk::ImageUse::DepthAttachmentDiscard,
-                   vk::ImageUse::DepthAttachment);
+  discardTargets(cmd);
   VkRenderingAttachmentInfo color = vk::colorAttachment(targets_.hdr.view(), VK_ATTACHMENT_LOAD_OP_CLEAR, kBackground);
   VkRenderingAttachmentInfo depth = vk::depthAttachment(targets_.depth.view(), VK_ATTACHMENT_LOAD_OP_CLEAR,
                                                     VK_ATTACHMENT_STORE_OP_STORE);
@@ -102,10 +97,6 @@ void OffscreenRenderer::recordComputeScene(VkCommandBuffer cmd, const Record& dr
                    vk::ImageUse::DepthAttachment);
   // The head's colour writes before the composite's blend reads them (separate rendering instances).
   vk::imageBarrier(ctx_, cmd, hdr, VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::ColorAttachment, vk::ImageUse::ColorAttachment);
-  // The previous frame's tonemap may still sample the resolve target: wait for it before discarding it.
-  if (msaa)
-    vk::imageBarrier(ctx_, cmd, targets_.resolved.handle(), VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::FragmentSampledDiscard,
-                     vk::ImageUse::ColorAttachment);
   color.loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;
   resolveInto(color);
   depth = vk::depthAttachment(targets_.depth.view(), VK_ATTACHMENT_LOAD_OP_LOAD, VK_ATTACHMENT_STORE_OP_DONT_CARE);
@@ -114,6 +105,21 @@ void OffscreenRenderer::recordComputeScene(VkCommandBuffer cmd, const Record& dr
   ctx_.fn().vkCmdEndRendering(cmd);
   vk::imageBarrier(ctx_, cmd, hdrInput().handle(), VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::ColorAttachment,
                    vk::ImageUse::FragmentSampled);
+}
+
+void OffscreenRenderer::discardTargets(VkCommandBuffer cmd) const {
+  const bool msaa = bool(targets_.resolved);
+  // Earlier frames recorded into the same images: their writes (and, without MSAA, the tonemap's reads
+  // of the HDR image) finish before the transitions discard the contents.
+  vk::imageBarrier(ctx_, cmd, targets_.hdr.handle(), VK_IMAGE_ASPECT_COLOR_BIT,
+                   msaa ? vk::ImageUse::ColorAttachmentDiscard : vk::ImageUse::FragmentSampledDiscard,
+                   vk::ImageUse::ColorAttachment);
+  vk::imageBarrier(ctx_, cmd, targets_.depth.handle(), VK_IMAGE_ASPECT_DEPTH_BIT, vk::ImageUse::DepthAttachmentDiscard,
+                   vk::ImageUse::DepthAttachment);
+  // The previous frame's tonemap may still sample the resolve target: wait for it before discarding it.
+  if (msaa)
+    vk::imageBarrier(ctx_, cmd, targets_.resolved.handle(), VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::FragmentSampledDiscard,
+                     vk::ImageUse::ColorAttachment);
 }
 
 void OffscreenRenderer::resolveInto(VkRenderingAttachmentInfo& color) const {
@@ -133,18 +139,7 @@ void OffscreenRenderer::record(VkCommandBuffer cmd, const std::function<void(VkC
 }
 
 void OffscreenRenderer::recordScene(VkCommandBuffer cmd, const std::function<void(VkCommandBuffer)>& draws) const {
-  const bool msaa = bool(targets_.resolved);
-  // Earlier frames recorded into the same images: their writes (and, without MSAA, the tonemap's reads
-  // of the HDR image) finish before the transitions discard the contents.
-  vk::imageBarrier(ctx_, cmd, targets_.hdr.handle(), VK_IMAGE_ASPECT_COLOR_BIT,
-                   msaa ? vk::ImageUse::ColorAttachmentDiscard : vk::ImageUse::FragmentSampledDiscard,
-                   vk::ImageUse::ColorAttachment);
-  vk::imageBarrier(ctx_, cmd, targets_.depth.handle(), VK_IMAGE_ASPECT_DEPTH_BIT, vk::ImageUse::DepthAttachmentDiscard,
-                   vk::ImageUse::DepthAttachment);
-  // The previous frame's tonemap may still sample the HDR input: wait for it before discarding it.
-  if (msaa)
-    vk::imageBarrier(ctx_, cmd, targets_.resolved.handle(), VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::FragmentSampledDiscard,
-                     vk::ImageUse::ColorAttachment);
+  discardTargets(cmd);
   VkRenderingAttachmentInfo color = vk::colorAttachment(targets_.hdr.view(), VK_ATTACHMENT_LOAD_OP_CLEAR, kBackground);
   resolveInto(color);
   VkRenderingAttachmentInfo depth =

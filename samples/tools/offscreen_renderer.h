@@ -53,6 +53,8 @@ class OffscreenRenderer {
   void recordComputeScene(VkCommandBuffer cmd, const Record& drawHeads, const Record& raster,
                           const Record& composite) const;
   void recordTonemap(VkCommandBuffer cmd, float exposure) const;
+  // A frame's first use of the colour, depth and resolve targets: their old contents discarded.
+  void discardTargets(VkCommandBuffer cmd) const;
   // With MSAA: the colour attachment resolves (average) into the resolve target, its samples discarded.
   void resolveInto(VkRenderingAttachmentInfo& color) const;
   const vk::Image& hdrInput() const { return targets_.resolved ? targets_.resolved : targets_.hdr; }
