@@ -8,7 +8,9 @@
 
 #include <cmath>
 #include <memory>
+#include <string>
 
+#include "engine/error.h"
 #include "engine/vk/transfer.h"
 #include "shaders/shared/raster.h"
 #include "tests/render/raster_rig.h"
@@ -261,4 +263,23 @@ TEST_F(VulkanTest, AStrandBehindTheHeadsDepthIsHidden) {
   for (int x = 0; x < int(kExtent.width); ++x) EXPECT_NEAR(image[at(x, 20)].a, 1.0f, 1e-3) << "front strand, column " << x;
   rig.run(1.0f);  // nothing drawn: both show
   EXPECT_NEAR(rig.image()[at(30, 5)].a, 1.0f, 1e-3);
+}
+
+// The head depth's sample count is refused, by its message, unless a power of two up to
+// RASTER_MAX_HEAD_SAMPLES (the fine pass's near mask and loops are sized by it).
+TEST_F(VulkanTest, ARasterRefusesAHeadSampleCountItCannotRead) {
+  const hp::CameraMatrices camera = hp::test::rigCamera(kExtent, kFov);
+  auto buffers = makeStrands(*ctx, camera, {PixelStrand{{0.0f, 0.0f}, {1.0f, 1.0f}}});
+  const hp::compute::ShadingWriter unused = [](const hp::vk::DescriptorSet&) {};
+  for (std::uint32_t samples : {0u, 3u, 2u * hp::gpu::RASTER_MAX_HEAD_SAMPLES}) {
+    try {
+      hp::compute::StrandRasterPass pass(*ctx, *buffers, unused, kExtent, {}, samples);
+      ADD_FAILURE() << samples << " head samples were accepted";
+    } catch (const hp::Error& e) {
+      EXPECT_NE(std::string(e.what()).find("sample count must be a power of two in [1, 16], got " +
+                                           std::to_string(samples)),
+                std::string::npos)
+          << e.what();
+    }
+  }
 }
