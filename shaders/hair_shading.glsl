@@ -1,7 +1,7 @@
 // The radiance a hair fibre sends toward the camera (REFERENCES.md §3-4), GLSL only, shared by the graphics
 // strand shader (strands.frag, per fragment) and the compute rasterizer (raster_shade.comp, per vertex):
-// S(L, V, T) cos(theta_i) x light x transmittance [+ the light the hair in front scattered forward, dual
-// scattering] + sky albedo x (ambient x RENDER_HAIR_SKY_VISIBILITY + `bounce`), times the strand's lightness
+// S(L, V, T) cos(theta_i) x light x transmittance [+ the light the hair in front scattered forward and the
+// light the hair around scatters back, dual scattering] + sky albedo x (ambient x RENDER_HAIR_SKY_VISIBILITY + `bounce`), times the strand's lightness
 // variation. `bounce` is the mean radiance the skin sends the point (head_bounce.glsl; vec3(0) without it).
 // The includer declares `frame` (RenderFrame), `marschner` (MarschnerParams), the LUT samplers
 // lutM, lutN0, lutN1 and `headShadowMap` (the head's depth map) before including this file; `alpha` is
@@ -25,11 +25,13 @@ vec3 hairRadiance(vec3 world, vec3 tangent, float colorScale, float alpha, vec3 
   vec3 direct = S * cosThetaI * incident * exp(-tau);
   // Multiple scattering (dual; docs/SHADING.md "Multiple scattering"): of the light that hits N fibres on
   // its way (N Poisson with mean tau), a fraction d_f a_f^N goes on forward, spread around the fibre:
-  // E[a_f^N; N >= 1] = exp(-tau (1 - a_f)) - exp(-tau).
+  // E[a_f^N; N >= 1] = exp(-tau (1 - a_f)) - exp(-tau). The hair around the fibre scatters back A_b of
+  // both the unscattered light and that spread light (local back-scattering).
   if (frame.options.z == RENDER_SCATTERING_DUAL && marschner.control.x == MARSCHNER_MODE_LUT_PHYSICAL) {
     vec3 af = marschnerForwardAlbedo(sinThetaI, marschner);
     vec3 spread = MARSCHNER_FORWARD_DENSITY * max(exp(-tau * (1.0 - af)) - exp(-tau), vec3(0.0));
     direct += marschnerPhysicalSpreadResponse(L, V, T, lutM, marschner) * incident * spread;
+    direct += marschnerPhysicalBackResponse(L, V, T, exp(-tau), spread, marschner) * incident;
   }
   // The ambient is a uniform white sky: an unoccluded fibre returns the model's sky albedo times its
   // radiance, a fibre of a head of hair the mean visible fraction of it (shared/render.h).

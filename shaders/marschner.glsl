@@ -273,6 +273,22 @@ vec3 marschnerPhysicalSpreadResponse(vec3 L, vec3 V, vec3 T, sampler2D mTex, Mar
   return m.x * rtt.x + m.y * rtt.yzw + m.z * trt;
 }
 
+// Local back-scattering (Zinke's A_b; engine/shading/multiple_scattering.h): what the hair around a fibre
+// sends back toward V, per unit light arriving from L (`lit`: the share that arrives unscattered, from
+// L's azimuth) or spread around the fibre by the hair in front (`spread`). Longitudinally a Gaussian in
+// theta_i + theta_r normalised against cos theta_r; in azimuth (1 + cos phi) / 2 pi for light from one
+// azimuth (the back half, smoothly; unit area) and 1 / 2 pi for spread light; times d_b.
+vec3 marschnerPhysicalBackResponse(vec3 L, vec3 V, vec3 T, float lit, vec3 spread, MarschnerParams prm) {
+  vec4 ang = marschnerAngles(L, V, T);
+  vec2 c = marschnerSpreadCoord(ang.x);
+  uint i = uint(c.x);
+  vec3 A = mix(prm.backScatter[i].rgb, prm.backScatter[i + 1u].rgb, c.y);
+  vec3 lobe = mix(prm.backLobe[i].xyz, prm.backLobe[i + 1u].xyz, c.y);
+  float m = lobe.z * marschnerGaussian(lobe.y, marschnerAsin(ang.x) + marschnerAsin(ang.y) - lobe.x);
+  vec3 azimuth = (lit * (1.0 + ang.z) + spread) / MARSCHNER_TWO_PI;
+  return MARSCHNER_BACK_DENSITY * A * m * azimuth;
+}
+
 // The ONE shading entry point of every hair shading path (mode = MARSCHNER_MODE_*; paper mode reads
 // mTex and n0Tex only, direct none).
 vec3 marschnerEvaluate(uint mode, vec3 L, vec3 V, vec3 T, sampler2D mTex, sampler2D n0Tex,

@@ -23,7 +23,8 @@ glm::dvec3 marschnerFurnace(double sinThetaR, const HairMaterial& m, int panels)
 }
 }  // namespace
 
-glm::dvec3 physicalFurnaceOver(double sinThetaR, const HairMaterial& m, double phiLo, double phiHi, int panels) {
+std::array<glm::dvec3, 3> physicalLobeFurnaceOver(double sinThetaR, const HairMaterial& m, double phiLo,
+                                                  double phiHi, int panels) {
   m.validate();
   double mInt[3] = {0, 0, 0};
   shading::gaussLegendre(-0.5 * kPi, 0.5 * kPi, 2 * panels, [&](double ti, double w) {
@@ -31,7 +32,12 @@ glm::dvec3 physicalFurnaceOver(double sinThetaR, const HairMaterial& m, double p
     for (int p = 0; p < 3; ++p) mInt[p] += w * c * shading::physicalM(p, s, sinThetaR, m);
   });
   const shading::PhysicalN nInt = shading::physicalNIntegral(sinThetaR, m, phiLo, phiHi, panels);
-  return mInt[0] * nInt.r + mInt[1] * nInt.tt + mInt[2] * (nInt.trt + nInt.res);
+  return {glm::dvec3(mInt[0] * nInt.r), mInt[1] * nInt.tt, mInt[2] * (nInt.trt + nInt.res)};
+}
+
+glm::dvec3 physicalFurnaceOver(double sinThetaR, const HairMaterial& m, double phiLo, double phiHi, int panels) {
+  const auto lobes = physicalLobeFurnaceOver(sinThetaR, m, phiLo, phiHi, panels);
+  return lobes[0] + lobes[1] + lobes[2];
 }
 
 glm::dvec3 whiteFurnace(FibreModel model, double sinThetaR, const HairMaterial& m, int panels) {

@@ -9,6 +9,8 @@
 //    identities are not assumed);
 //  - Marschner (the paper's model, REFERENCES §3): S does not factor (1/cos^2 theta_d), so W is a
 //    2D quadrature over (theta_i, phi) of the exact S; `panels` 8-node panels per axis.
+#include <array>
+
 #include <glm/glm.hpp>
 
 #include "engine/shading/fibre_model.h"
@@ -19,6 +21,9 @@ glm::dvec3 whiteFurnace(FibreModel model, double sinThetaR, const HairMaterial& 
 // The physical model's W restricted to incoming azimuths |phi| in [phiLo, phiHi] (whiteFurnace: [0, pi]);
 // [pi/2, pi] is the light one fibre scatters on forward (engine/shading/multiple_scattering.h).
 glm::dvec3 physicalFurnaceOver(double sinThetaR, const HairMaterial& m, double phiLo, double phiHi, int panels);
+// The same per lobe (R, TT, TRT with the residual, which shares its M): the terms the sum above adds.
+std::array<glm::dvec3, 3> physicalLobeFurnaceOver(double sinThetaR, const HairMaterial& m, double phiLo,
+                                                  double phiHi, int panels);
 
 // The fibre's albedo under a uniform white sky of radiance 1, seen from a uniformly random direction:
 // W(theta_r) averaged over the sphere of outgoing directions, (1/2) int W cos(theta_r) d theta_r over

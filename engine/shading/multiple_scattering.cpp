@@ -1,15 +1,65 @@
 #include "engine/shading/multiple_scattering.h"
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 
 #include "engine/error.h"
 #include "engine/shading/furnace.h"
 #include "engine/shading/math_constants.h"
 #include "engine/shading/physical_terms.h"
+#include "engine/shading/quadrature.h"
 
 namespace hp {
 namespace {
 constexpr int kPanels = 16;
+using Lobes = std::array<glm::dvec3, 3>;
+
+// Mean and variance of theta_i + theta_r after one scattering event into one half of the azimuths: the
+// lobes' shifts and variances mixed by the energy each lobe sends there (per RGB).
+struct EventSpread {
+  glm::dvec3 mean{0.0}, variance{0.0};
+};
+EventSpread eventSpread(const Lobes& energy, const HairMaterial& m) {
+  glm::dvec3 total(0.0), first(0.0), second(0.0);
+  for (int p = 0; p < 3; ++p) {
+    const double s = shading::physicalShift(p, m), v = shading::physicalVariance(p, m);
+    total += energy[p];
+    first += energy[p] * s;
+    second += energy[p] * (v + s * s);
+  }
+  const glm::dvec3 safe = glm::max(total, glm::dvec3(1e-300));
+  return {first / safe, second / safe - (first / safe) * (first / safe)};
+}
+
+// int G(theta_i + theta_r - shift; width) cos theta_r d theta_r over theta_r in [-pi/2, pi/2].
+double backLobeIntegral(double thetaI, double shift, double width) {
+  double sum = 0.0;
+  shading::gaussLegendre(-0.5 * shading::kPi, 0.5 * shading::kPi, kPanels, [&](double tr, double w) {
+    const double x = (thetaI + tr - shift) / width;
+    sum += w * std::cos(tr) * std::exp(-0.5 * x * x) / (width * std::sqrt(2.0 * shading::kPi));
+  });
+  return sum;
+}
+
+void addBackScattering(MultipleScatteringTables& t, double sinTheta, const Lobes& fwd, const Lobes& back,
+                       const HairMaterial& m) {
+  const glm::dvec3 af = fwd[0] + fwd[1] + fwd[2], ab = back[0] + back[1] + back[2];
+  const glm::dvec3 q = glm::min(af * af, glm::dvec3(0.999));  // a_f^2 < 1: some light is absorbed or lost
+  const glm::dvec3 A = ab * q / (1.0 - q) + ab * ab * ab * q / ((1.0 - q) * (1.0 - q) * (1.0 - q));
+  const EventSpread f = eventSpread(fwd, m), b = eventSpread(back, m);
+  const glm::dvec3 pairs = 1.0 / (1.0 - q), pairsVariance = q / ((1.0 - q) * (1.0 - q));
+  const glm::dvec3 mean = b.mean + 2.0 * pairs * f.mean;
+  const glm::dvec3 variance = b.variance + 2.0 * pairs * f.variance + 4.0 * f.mean * f.mean * pairsVariance;
+  const double weight = std::max(A.r + A.g + A.b, 1e-300);
+  const double shift = glm::dot(A, mean) / weight;
+  const double width = std::sqrt(std::max(glm::dot(A, variance) / weight, 1e-8));
+  t.backAlbedo.push_back(ab);
+  t.backScatter.push_back(A);
+  t.backShift.push_back(shift);
+  t.backWidth.push_back(width);
+  t.backNorm.push_back(1.0 / backLobeIntegral(std::asin(sinTheta), shift, width));
+}
 }  // namespace
 
 MultipleScatteringTables multipleScatteringTables(const HairMaterial& m, int entries) {
@@ -18,7 +68,10 @@ MultipleScatteringTables multipleScatteringTables(const HairMaterial& m, int ent
   MultipleScatteringTables t;
   for (int k = 0; k < entries; ++k) {
     const double s = std::clamp(-1.0 + 2.0 * k / (entries - 1), -kEdgeSine, kEdgeSine);
-    t.forwardAlbedo.push_back(physicalFurnaceOver(s, m, 0.5 * shading::kPi, shading::kPi, kPanels));
+    const Lobes fwd = physicalLobeFurnaceOver(s, m, 0.5 * shading::kPi, shading::kPi, kPanels);
+    const Lobes back = physicalLobeFurnaceOver(s, m, 0.0, 0.5 * shading::kPi, kPanels);
+    t.forwardAlbedo.push_back(fwd[0] + fwd[1] + fwd[2]);
+    addBackScattering(t, s, fwd, back, m);
     const auto energy = shading::physicalLobeEnergy(s, m);  // int N_p d phi over the whole circle
     t.meanR.push_back(energy[0].x / (2.0 * shading::kPi));
     t.meanTT.push_back(energy[1] / (2.0 * shading::kPi));

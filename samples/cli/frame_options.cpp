@@ -115,6 +115,7 @@ hp::RenderRequest makeRenderRequest(const FrameOptions& o, const CLI::App& cmd) 
       throw hp::Error("--skin-bounce must be on or off, got '" + o.skinBounce->substr(0, 40) + "'");
     r.look.skinBounce = *o.skinBounce == "on";
   }
+  if (o.skinColor) r.look.skinColor = vec3Option(*o.skinColor, "--skin-color");
   r.look.validate();
   r.opacity = opacitySettings(o);
   applyRaster(o, r);
@@ -172,9 +173,12 @@ void addFrameOptions(CLI::App& cmd, FrameOptions& o) {
   cmd.add_option("--ambient", o.ambient,
                  "Ambient fill light in [0, 10] (default 0.06; the reference's uniform sky radiance)");
   cmd.add_option("--scattering", o.scattering,
-                 "single, or dual: adds the light the hair in front scattered forward (physical fibre model)");
+                 "single, or dual: adds the light the hair in front scattered forward and the hair around scattered back "
+                 "(physical fibre model)");
   cmd.add_option("--skin-bounce", o.skinBounce,
                  "on or off: adds the sunlight the skin reflects onto the hair (default on)");
+  cmd.add_option("--skin-color", o.skinColor, "Skin albedo R,G,B, each in [0, 1] (default 0.62,0.45,0.36)")
+      ->delimiter(',')->expected(3);
   cmd.add_flag("--lines", o.lines, "Draw strands as lines instead of ribbons");
   cmd.add_flag("--guides-only", o.guidesOnly, "Draw the smoothed guides only (no interpolation)");
   cmd.add_flag("--no-shadows", o.noShadows, "Turn the opacity shadow maps off");

@@ -27,6 +27,7 @@ struct FrameOptions {
   std::optional<float> ambient;
   std::optional<std::string> scattering;
   std::optional<std::string> skinBounce;  // on | off
+  std::optional<std::vector<float>> skinColor;
   std::string lutMode = "physical";
   std::string animate = "none";
   float exposure = 1.0f;

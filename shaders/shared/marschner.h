@@ -66,6 +66,8 @@ HP_CONST(float, MARSCHNER_INV_SQRT2, 0.70710678f)
 // interpolated; the forward density factor d_f of Zinke et al. 2008.
 HP_CONST(uint, MARSCHNER_SPREAD_ENTRIES, 32u)
 HP_CONST(float, MARSCHNER_FORWARD_DENSITY, 0.7f)
+// Zinke's back-scattering density factor d_b: the local back-scattering term's share of A_b.
+HP_CONST(float, MARSCHNER_BACK_DENSITY, 0.7f)
 
 // GPU block: material and the factors that undo the LUT rescaling.
 struct MarschnerParams {
@@ -81,6 +83,8 @@ struct MarschnerParams {
   vec4 forwardAlbedo[MARSCHNER_SPREAD_ENTRIES];  // rgb = a_f(theta) of the light's theta, w = 0
   vec4 meanRTT[MARSCHNER_SPREAD_ENTRIES];        // x = mean N_R, yzw = mean N_TT (rgb), at theta_r
   vec4 meanTRT[MARSCHNER_SPREAD_ENTRIES];        // rgb = mean (N_TRT + N_res), w = 0, at theta_r
+  vec4 backScatter[MARSCHNER_SPREAD_ENTRIES];    // rgb = A_b (local back-scattering) of the light's theta
+  vec4 backLobe[MARSCHNER_SPREAD_ENTRIES];       // x = shift, y = width (radians), z = norm, w = 0
 };
 
 // Pseudo-angle of a in [0, pi/2] from cos(2a): sin(a)/sqrt2 below pi/4, 1 - cos(a)/sqrt2 above.

@@ -14,6 +14,7 @@
 #include "samples/tools/offscreen_renderer.h"
 #include "samples/tools/render_job.h"
 #include "engine/vk/submit.h"
+#include "tests/support/rgba_luminance.h"
 #include "tests/support/vk_fixture.h"
 
 using hp::test::VulkanTest;
@@ -43,10 +44,7 @@ hp::RenderRequest request(const glm::vec3& towardLight, float orbitDeg, bool sha
   return r;
 }
 
-double linear(std::uint8_t v) { return std::pow(v / 255.0, 2.2); }
-double luminance(const std::vector<std::uint8_t>& rgba, std::size_t px) {
-  return linear(rgba[px * 4]) + linear(rgba[px * 4 + 1]) + linear(rgba[px * 4 + 2]);
-}
+using hp::test::rgbaLinearSum;
 
 // Sums of linear luminance over the hair pixels (unlike the background corner in `off`) of a region.
 struct Region {
@@ -59,13 +57,13 @@ struct Region {
 template <class Pick>
 Region sumRegion(const hp::RenderResult& on, const hp::RenderResult& off, Pick inRegion) {
   Region r;
-  const double background = luminance(off.rgba, 0);
+  const double background = rgbaLinearSum(off.rgba, 0);
   for (std::uint32_t y = 0; y < kOpacityHeight; ++y)
     for (std::uint32_t x = 0; x < kOpacityWidth; ++x) {
       const std::size_t px = std::size_t(y) * kOpacityWidth + x;
-      if (!inRegion(x, y) || luminance(off.rgba, px) < background + 0.004) continue;
-      r.on += luminance(on.rgba, px);
-      r.off += luminance(off.rgba, px);
+      if (!inRegion(x, y) || rgbaLinearSum(off.rgba, px) < background + 0.004) continue;
+      r.on += rgbaLinearSum(on.rgba, px);
+      r.off += rgbaLinearSum(off.rgba, px);
       ++r.pixels;
     }
   return r;
@@ -122,10 +120,10 @@ void expectHairUnderOtherHairDarker(const hp::vk::Context& ctx, bool deep) {
   // (on top) against the quarter farthest from it (under).
   std::vector<std::size_t> perColumn(kOpacityWidth, 0);
   std::size_t total = 0;
-  const double background = luminance(off.rgba, 0);
+  const double background = rgbaLinearSum(off.rgba, 0);
   for (std::uint32_t y = 0; y < kOpacityHeight; ++y)
     for (std::uint32_t x = 0; x < kOpacityWidth; ++x)
-      if (luminance(off.rgba, std::size_t(y) * kOpacityWidth + x) >= background + 0.004) ++perColumn[x], ++total;
+      if (rgbaLinearSum(off.rgba, std::size_t(y) * kOpacityWidth + x) >= background + 0.004) ++perColumn[x], ++total;
   std::uint32_t left = 0, right = kOpacityWidth - 1;
   for (std::size_t seen = 0; seen + perColumn[left] < total / 4; ++left) seen += perColumn[left];
   for (std::size_t seen = 0; seen + perColumn[right] < total / 4; --right) seen += perColumn[right];
@@ -215,9 +213,10 @@ TEST_F(VulkanTest, TwoShadowedFramesInOneCommandBufferAreSyncClean) {
   }
 }
 
-// Dual scattering adds the light the hair in front scattered forward (hair_shading.glsl): never less light
-// than single scattering, more where the hair is in other hair's shadow (the side away from the light),
-// and nothing without shadows (no optical depth, nothing in front).
+// Dual scattering adds the light the hair in front scattered forward and the hair around scattered back
+// (hair_shading.glsl): never less light than single scattering, more where the hair is in other hair's
+// shadow (the side away from the light); without shadows (no optical depth, nothing in front) only the
+// local back-scattering, a few percent for this brown hair.
 TEST_F(VulkanTest, DualScatteringAddsLightInTheHairsShadowOnly) {
   const hp::HairAsset asset = hairOnly();
   const glm::vec3 light(1.0f, 0.3f, 0.0f);
@@ -248,7 +247,9 @@ TEST_F(VulkanTest, DualScatteringAddsLightInTheHairsShadowOnly) {
   const hp::RenderResult offDual = frame(false, hp::render::Scattering::Dual, hp::RasterMode::Graphics);
   const Region all = sumRegion(offDual, offSingle, [](std::uint32_t, std::uint32_t) { return true; });
   EXPECT_GT(all.pixels, 500u);
-  EXPECT_NEAR(all.ratio(), 1.0, 1e-6);
+  std::printf("without shadows, dual / single %.4f\n", all.ratio());
+  EXPECT_GT(all.ratio(), 1.0 + 1e-3);  // the local back-scattering does not need the shadows: 1.0185 measured
+  EXPECT_LT(all.ratio(), 1.05);        // (brown: A_b 0.006 of the light in red); nothing scattered forward
 }
 
 // Deep opacity maps through the whole frame (both hair rasters, the head's lookups): the side away from the

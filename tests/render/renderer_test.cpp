@@ -20,6 +20,7 @@
 #include "engine/vk/check.h"
 #include "engine/vk/submit.h"
 #include "engine/vk/transfer.h"
+#include "tests/support/rgba_luminance.h"
 #include "tests/support/vk_fixture.h"
 
 using hp::test::VulkanTest;
@@ -56,17 +57,13 @@ hp::View frontView(float targetX) {
   return hp::View{hp::orbitCamera(cam, float(kRendererWidth) / kRendererHeight), {kRendererWidth, kRendererHeight}, false, 0};
 }
 
-double luminance(const std::vector<std::uint8_t>& rgba, std::size_t px) {
-  double sum = 0.0;
-  for (int c = 0; c < 3; ++c) sum += std::pow(rgba[px * 4 + c] / 255.0, 2.2);
-  return sum;
-}
+using hp::test::rgbaLinearSum;
 
 // Sum of linear luminance over the columns [x0, x1).
 double columnsLuminance(const std::vector<std::uint8_t>& rgba, std::uint32_t x0, std::uint32_t x1) {
   double sum = 0.0;
   for (std::uint32_t y = 0; y < kRendererHeight; ++y)
-    for (std::uint32_t x = x0; x < x1; ++x) sum += luminance(rgba, std::size_t(y) * kRendererWidth + x);
+    for (std::uint32_t x = x0; x < x1; ++x) sum += rgbaLinearSum(rgba, std::size_t(y) * kRendererWidth + x);
   return sum;
 }
 

@@ -10,6 +10,7 @@
 
 #include "engine/error.h"
 #include "engine/shading/furnace.h"
+#include "engine/shading/material_color.h"
 #include "engine/shading/math_constants.h"
 #include "engine/shading/multiple_scattering.h"
 #include "engine/shading/physical.h"
@@ -64,6 +65,49 @@ TEST(MultipleScattering, ForwardAlbedoMatchesABruteForceQuadratureAndStaysUnderT
     }
     EXPECT_GT(t.forwardAlbedo[k].r, t.forwardAlbedo[k].g);  // brown absorbs blue most
     EXPECT_GT(t.forwardAlbedo[k].g, t.forwardAlbedo[k].b);
+  }
+}
+
+TEST(MultipleScattering, ForwardAndBackAlbedoAddUpToTheWhiteFurnace) {
+  const HairMaterial brown;
+  const MultipleScatteringTables t = multipleScatteringTables(brown, kEntries);
+  for (int k = 0; k < kEntries; ++k) {
+    const glm::dvec3 furnace = whiteFurnace(FibreModel::Physical, sineOf(k), brown);
+    for (int c = 0; c < 3; ++c) {
+      EXPECT_NEAR(t.forwardAlbedo[k][c] + t.backAlbedo[k][c], furnace[c], 2e-3) << "entry " << k << " channel " << c;
+      EXPECT_GT(t.backAlbedo[k][c], 0.0);
+    }
+  }
+}
+
+// Zinke's local back-scattering: tiny for dark hair, a large share of the light for light hair (the
+// series a_f^2 / (1 - a_f^2) grows fast as a_f -> 1), never more than the light a fibre returns at all.
+TEST(MultipleScattering, BackScatteringGrowsWithLighterHairAndStaysUnderTheFurnace) {
+  HairMaterial brown, blonde, white;
+  blonde.absorption = absorptionFromColor(glm::dvec3(0.8, 0.65, 0.45));
+  white.absorption = glm::dvec3(0.0);
+  const int mid = kEntries / 2;
+  double previous = 0.0;
+  for (const HairMaterial* m : {&brown, &blonde, &white}) {
+    const MultipleScatteringTables t = multipleScatteringTables(*m, kEntries);
+    const glm::dvec3 A = t.backScatter[mid], af = t.forwardAlbedo[mid], ab = t.backAlbedo[mid];
+    std::printf("a_f %.3f %.3f %.3f  a_b %.3f %.3f %.3f  A_b %.4f %.4f %.4f  shift %.1f deg  width %.1f deg\n",
+                af.r, af.g, af.b, ab.r, ab.g, ab.b, A.r, A.g, A.b, glm::degrees(t.backShift[mid]),
+                glm::degrees(t.backWidth[mid]));
+    EXPECT_GT(A.g, previous);
+    previous = A.g;
+    for (int c = 0; c < 3; ++c) EXPECT_LT(A[c], 1.0);
+  }
+}
+
+TEST(MultipleScattering, BackLobeIsCentredWithoutACuticleTilt) {
+  HairMaterial m;
+  m.alphaR = 0.0;
+  const MultipleScatteringTables t = multipleScatteringTables(m, kEntries);
+  for (int k = 0; k < kEntries; ++k) {
+    EXPECT_NEAR(t.backShift[k], 0.0, 1e-12);
+    EXPECT_GT(t.backWidth[k], 0.0);
+    EXPECT_GE(t.backNorm[k], 1.0);  // the cos theta_r weight only takes away
   }
 }
 
