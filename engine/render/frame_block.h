@@ -22,9 +22,10 @@ struct LookSettings {
   glm::vec3 skinColor{0.62f, 0.45f, 0.36f};
   float wrap = 0.5f;                 // the paper's wrap term for the head, [0, 1]
   float ambient = 0.06f;             // constant fill light, relative to the hair/skin albedo
-  // Dual: add the light the hair in front of a fibre scattered forward onto it (physical fibre model
-  // only; the others draw single scattering either way). docs/SHADING.md "Multiple scattering".
-  Scattering scattering = Scattering::Single;
+  // Dual (default): add the light the hair in front of a fibre scattered forward onto it and the light the
+  // hair around it scattered back (physical fibre model only; the others draw single scattering either
+  // way). docs/SHADING.md "Multiple scattering", "Local back-scattering".
+  Scattering scattering = Scattering::Dual;
   // Add the sunlight the skin reflects onto the hair (one bounce from the head bounce map, both rasters;
   // needs the shadows on and a head, as the map is drawn with the head's depth shadow map and framed by
   // it). docs/SHADING.md "Skin bounce".

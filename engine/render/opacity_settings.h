@@ -33,7 +33,9 @@ struct OpacitySettings {
   std::uint32_t headShadowResolution = 1024;  // head depth map texels per side, [16, 8192]
   float k = 1.0f;                   // T = exp(-k alpha), [0, 1e3]
   float biasSlices = 1.0f;          // global slices: lookups move this many slices toward the light, [0, 16]
-  float deepBiasSlices = 0.5f;      // deep maps: the same in deep slices, [0, 16] (docs/SHADING.md "Skin bounce")
+  // Deep maps: the same in deep slices, [0, 16]. 0.25 with dual scattering: docs/SHADING.md "Local
+  // back-scattering" (0.5 before, the choice of "Skin bounce").
+  float deepBiasSlices = 0.25f;
   // RGBA32F: accurate additive sums (RGBA16F rounds each 0.04 by 17% past alpha 16 and drops it past
   // 128) and measured faster on lavapipe. RGBA16F is accepted for devices where bandwidth matters more.
   VkFormat format = VK_FORMAT_R32G32B32A32_SFLOAT;

@@ -69,6 +69,7 @@ FrameResult benchFrame(const vk::Context& ctx, const FrameCase& c) {
   settings.raster = c.raster;
   settings.opacity.raster = c.opacityRaster;
   settings.look.skinBounce = c.skinBounce;
+  settings.look.scattering = c.scattering;
   HairSystem hair(ctx, asset, settings);
   renderer.attach(hair);
   DrawView view;

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "engine/hair/scene.h"
+#include "engine/render/frame_block.h"
 #include "engine/render/opacity_settings.h"
 #include "engine/vk/context.h"
 
@@ -22,6 +23,7 @@ struct FrameCase {
   std::uint32_t frames = 3;
   render::OpacityRaster opacityRaster = render::OpacityRaster::Auto;  // how strands reach the opacity maps
   bool skinBounce = true;  // compute only: LookSettings::skinBounce
+  render::Scattering scattering = render::LookSettings{}.scattering;  // both paths
 };
 
 struct PassTiming {

@@ -20,11 +20,14 @@ std::string fmt(const char* f, double a, double b) {
 }  // namespace
 
 std::string frameCaseName(const FrameCase& c) {
+  const std::string scattering = c.scattering == render::LookSettings{}.scattering ? ""
+                                 : c.scattering == render::Scattering::Dual      ? ", dual scattering"
+                                                                                 : ", single scattering";
   if (c.raster == RasterMode::Compute) {
     const std::string head = c.msaa == 4 ? "" : " head msaa" + std::to_string(c.msaa);
-    return (c.skinBounce ? "compute" : "compute, no skin bounce") + head;
+    return (c.skinBounce ? "compute" : "compute, no skin bounce") + head + scattering;
   }
-  return "graphics msaa" + std::to_string(c.msaa);
+  return "graphics msaa" + std::to_string(c.msaa) + scattering;
 }
 
 std::string benchPlotSvg(const std::vector<FrameResult>& results) {

@@ -1,5 +1,5 @@
 // `hairpipe bench [--strands LIST] [--resolution WxH] [--frames N] [--raster LIST] [--msaa LIST]
-// [--skin-bounce off,on] [--json F]
+// [--skin-bounce off,on] [--scattering single,dual] [--json F]
 // [--plot F.svg]`: the whole frame on the default head (bench_frame.h) for each strand count and raster
 // path (once per --msaa value: the head's samples, and the graphics path's hair samples), after one warm-up frame: per pass the GPU-timestamp median
 // (min/max) of N frames, the frame total, each compute pass's achieved bytes/s as a fraction of a
@@ -32,6 +32,7 @@ struct BenchOptions {
   std::vector<std::uint32_t> msaa{4};
   std::string opacityRaster = "auto";
   std::vector<std::string> skinBounce{"on"};
+  std::vector<std::string> scattering{"dual"};
   std::string json, plot, device;
 };
 
@@ -43,6 +44,13 @@ void parseResolution(const std::string& text, std::uint32_t& w, std::uint32_t& h
     throw hp::Error("bench: --resolution must be WxH with each in [1, 16384], got '" + text + "'");
   w = a;
   h = b;
+}
+
+void addSampleCounts(hp::cli::FrameCase c, const std::vector<std::uint32_t>& msaa, std::vector<hp::cli::FrameCase>& out) {
+  for (std::uint32_t m : msaa) {
+    c.msaa = m;
+    out.push_back(c);
+  }
 }
 
 std::vector<hp::cli::FrameCase> cases(const BenchOptions& o) {
@@ -60,20 +68,17 @@ std::vector<hp::cli::FrameCase> cases(const BenchOptions& o) {
       hp::cli::FrameCase c = base;
       c.strands = s;
       c.raster = mode;
-      if (mode == hp::RasterMode::Compute) {
-        for (const std::string& b : o.skinBounce) {
-          if (b != "off" && b != "on") throw hp::Error("bench: --skin-bounce takes off and/or on, got '" + b.substr(0, 40) + "'");
-          c.skinBounce = b == "on";
-          for (std::uint32_t m : o.msaa) {  // the head's samples, which the rasterizer reads
-            c.msaa = m;
-            out.push_back(c);
+      for (const std::string& s : o.scattering) {
+        c.scattering = hp::render::parseScattering(s);
+        if (mode == hp::RasterMode::Compute) {
+          for (const std::string& b : o.skinBounce) {
+            if (b != "off" && b != "on") throw hp::Error("bench: --skin-bounce takes off and/or on, got '" + b.substr(0, 40) + "'");
+            c.skinBounce = b == "on";
+            addSampleCounts(c, o.msaa, out);  // the head's samples, which the rasterizer reads
           }
+          continue;
         }
-        continue;
-      }
-      for (std::uint32_t m : o.msaa) {
-        c.msaa = m;
-        out.push_back(c);
+        addSampleCounts(c, o.msaa, out);
       }
     }
   }
@@ -164,6 +169,9 @@ void setup(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--skin-bounce", o->skinBounce,
                   "Compute raster: the skin's bounce off and/or on (comma separated)")
+      ->delimiter(',')
+      ->capture_default_str();
+  cmd->add_option("--scattering", o->scattering, "single and/or dual (comma separated; physical fibre model)")
       ->delimiter(',')
       ->capture_default_str();
   cmd->add_option("--json", o->json, "Write the report as JSON to this file");

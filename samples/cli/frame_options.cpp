@@ -173,8 +173,8 @@ void addFrameOptions(CLI::App& cmd, FrameOptions& o) {
   cmd.add_option("--ambient", o.ambient,
                  "Ambient fill light in [0, 10] (default 0.06; the reference's uniform sky radiance)");
   cmd.add_option("--scattering", o.scattering,
-                 "single, or dual: adds the light the hair in front scattered forward and the hair around scattered back "
-                 "(physical fibre model)");
+                 "dual (default): adds the light the hair in front scattered forward and the hair around scattered "
+                 "back (physical fibre model), or single");
   cmd.add_option("--skin-bounce", o.skinBounce,
                  "on or off: adds the sunlight the skin reflects onto the hair (default on)");
   cmd.add_option("--skin-color", o.skinColor, "Skin albedo R,G,B, each in [0, 1] (default 0.62,0.45,0.36)")
@@ -190,6 +190,6 @@ void addFrameOptions(CLI::App& cmd, FrameOptions& o) {
                  "How strands reach the opacity maps: auto (default: compute where its bins fit the device), compute (splats) or graphics (lines)");
   cmd.add_option("--strand-opacity", o.strandOpacity, "Constant opacity a strand adds per opacity-map texel instead of its footprint (width / texel size, the default)");
   cmd.add_option("--shadow-k", o.shadowK, "Extinction k in T = exp(-k alpha) (default 1)");
-  cmd.add_option("--shadow-bias", o.shadowBias, "Shadow lookup bias toward the light, in the slices in effect (default: 0.5 deep slices, 1 global slice)");
+  cmd.add_option("--shadow-bias", o.shadowBias, "Shadow lookup bias toward the light, in the slices in effect (default: 0.25 deep slices, 1 global slice)");
 }
 }  // namespace hp::cli

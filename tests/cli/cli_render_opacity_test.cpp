@@ -130,7 +130,7 @@ TEST(CliRenderOpacity, DeepMapsByDefaultGlobalOnRequest) {
   };
   const auto byDefault = dumped({});
   EXPECT_TRUE(byDefault["deep"].get<bool>());
-  EXPECT_FLOAT_EQ(byDefault["deep_bias_slices"].get<float>(), 0.5f);
+  EXPECT_FLOAT_EQ(byDefault["deep_bias_slices"].get<float>(), 0.25f);
   EXPECT_FLOAT_EQ(byDefault["bias_slices"].get<float>(), 1.0f);
   const auto global = dumped({"--global-opacity", "--shadow-bias", "0.75"});
   EXPECT_FALSE(global["deep"].get<bool>());
