@@ -30,8 +30,7 @@ vec3 hairRadiance(vec3 world, vec3 tangent, float colorScale, float alpha, vec3 
   if (frame.options.z == RENDER_SCATTERING_DUAL && marschner.control.x == MARSCHNER_MODE_LUT_PHYSICAL) {
     vec3 af = marschnerForwardAlbedo(sinThetaI, marschner);
     vec3 spread = MARSCHNER_FORWARD_DENSITY * max(exp(-tau * (1.0 - af)) - exp(-tau), vec3(0.0));
-    direct += marschnerPhysicalSpreadResponse(L, V, T, lutM, marschner) * incident * spread;
-    direct += marschnerPhysicalBackResponse(L, V, T, exp(-tau), spread, marschner) * incident;
+    direct += marschnerPhysicalMultipleResponse(L, V, T, exp(-tau), spread, lutM, marschner) * incident;
   }
   // The ambient is a uniform white sky: an unoccluded fibre returns the model's sky albedo times its
   // radiance, a fibre of a head of hair the mean visible fraction of it (shared/render.h).

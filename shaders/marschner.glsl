@@ -260,33 +260,27 @@ vec3 marschnerForwardAlbedo(float sinTheta, MarschnerParams prm) {
   return mix(prm.forwardAlbedo[i].rgb, prm.forwardAlbedo[i + 1u].rgb, c.y);
 }
 
-// What a fibre sends toward V per unit light arriving at L's theta from every azimuth at once (light the
-// hair in front has spread around it): sum_p M_p(theta_i, theta_r) x the mean of N_p over phi. The
-// counterpart of S cos theta_i for a single direction.
-vec3 marschnerPhysicalSpreadResponse(vec3 L, vec3 V, vec3 T, sampler2D mTex, MarschnerParams prm) {
+// Multiple scattering's response (physical mode; the counterpart of S cos theta_i), per unit light that
+// arrives from L's theta, `lit` of it unscattered from L's azimuth and `spread` of it spread around the
+// fibre by the hair in front (Zinke's T_f; docs/SHADING.md "Multiple scattering", "Local back-scattering"):
+//  - the spread light: sum_p M_p(theta_i, theta_r) x the mean of N_p over phi;
+//  - the light the hair around scatters back (A_b of the light's theta): d_b A_b M_back(theta_i, theta_r)
+//    x (1 + cos phi) / 2 pi for the unscattered light (the near half of the azimuths, smoothly; unit
+//    area) and 1 / 2 pi for the spread light. M_back is the M texture's fourth channel.
+vec3 marschnerPhysicalMultipleResponse(vec3 L, vec3 V, vec3 T, float lit, vec3 spread, sampler2D mTex,
+                                       MarschnerParams prm) {
   vec4 ang = marschnerAngles(L, V, T);
   vec4 m = textureLod(mTex, marschnerPhysicalCoords(ang).xy, 0.0) * prm.mScale;
-  vec2 c = marschnerSpreadCoord(ang.y);
-  uint i = uint(c.x);
-  vec4 rtt = mix(prm.meanRTT[i], prm.meanRTT[i + 1u], c.y);
-  vec3 trt = mix(prm.meanTRT[i].rgb, prm.meanTRT[i + 1u].rgb, c.y);
-  return m.x * rtt.x + m.y * rtt.yzw + m.z * trt;
-}
-
-// Local back-scattering (Zinke's A_b; engine/shading/multiple_scattering.h): what the hair around a fibre
-// sends back toward V, per unit light arriving from L (`lit`: the share that arrives unscattered, from
-// L's azimuth) or spread around the fibre by the hair in front (`spread`). Longitudinally a Gaussian in
-// theta_i + theta_r normalised against cos theta_r; in azimuth (1 + cos phi) / 2 pi for light from one
-// azimuth (the back half, smoothly; unit area) and 1 / 2 pi for spread light; times d_b.
-vec3 marschnerPhysicalBackResponse(vec3 L, vec3 V, vec3 T, float lit, vec3 spread, MarschnerParams prm) {
-  vec4 ang = marschnerAngles(L, V, T);
+  vec2 r = marschnerSpreadCoord(ang.y);
+  uint j = uint(r.x);
+  vec4 rtt = mix(prm.meanRTT[j], prm.meanRTT[j + 1u], r.y);
+  vec3 trt = mix(prm.meanTRT[j].rgb, prm.meanTRT[j + 1u].rgb, r.y);
+  vec3 forward = (m.x * rtt.x + m.y * rtt.yzw + m.z * trt) * spread;
   vec2 c = marschnerSpreadCoord(ang.x);
   uint i = uint(c.x);
   vec3 A = mix(prm.backScatter[i].rgb, prm.backScatter[i + 1u].rgb, c.y);
-  vec3 lobe = mix(prm.backLobe[i].xyz, prm.backLobe[i + 1u].xyz, c.y);
-  float m = lobe.z * marschnerGaussian(lobe.y, marschnerAsin(ang.x) + marschnerAsin(ang.y) - lobe.x);
-  vec3 azimuth = (lit * (1.0 + ang.z) + spread) / MARSCHNER_TWO_PI;
-  return MARSCHNER_BACK_DENSITY * A * m * azimuth;
+  vec3 back = MARSCHNER_BACK_DENSITY * A * m.w * (lit * (1.0 + ang.z) + spread) / MARSCHNER_TWO_PI;
+  return forward + back;
 }
 
 // The ONE shading entry point of every hair shading path (mode = MARSCHNER_MODE_*; paper mode reads

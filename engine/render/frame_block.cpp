@@ -9,6 +9,8 @@ namespace {
 constexpr float kSpotInnerFraction = 0.8f;  // full radiance inside 80% of the half-angle (shaders/light.glsl)
 }  // namespace
 
+const char* scatteringName(Scattering s) { return s == Scattering::Dual ? "dual" : "single"; }
+
 Scattering parseScattering(const std::string& text) {
   if (text == "single") return Scattering::Single;
   if (text == "dual") return Scattering::Dual;

@@ -13,6 +13,7 @@
 namespace hp::render {
 enum class Scattering { Single, Dual };
 Scattering parseScattering(const std::string& text);  // "single", "dual"; else hp::Error
+const char* scatteringName(Scattering s);              // the names parseScattering reads
 
 struct LookSettings {
   // Ribbon width at the root (scene units). Real hair is 50-120 um, but a render strand stands for a

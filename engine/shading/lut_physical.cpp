@@ -2,12 +2,14 @@
 // pseudo-angle of theta_i, of theta_r), N0/N1 over (pseudo-angle of phi/2, of |theta_r|).
 // Shader side: marschnerPhysicalCoords in shaders/shared/marschner.h, marschnerLutPhysical in
 // shaders/marschner.glsl.
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
 #include "engine/shading/lut.h"
 #include "engine/shading/lut_param.h"
 #include "engine/shading/lut_texture.h"
+#include "engine/shading/multiple_scattering.h"
 #include "engine/shading/physical_terms.h"
 #include "shaders/shared/marschner.h"
 
@@ -19,10 +21,39 @@ double signedAxisSine(std::uint32_t i, std::uint32_t n) {
   return std::copysign(std::sin(shading::pseudoAngleInverse(std::abs(w))), w);
 }
 
+// The local back-scattering's longitudinal lobe (multiple_scattering.h) in column i (theta_i): a Gaussian
+// in theta_i + theta_r, normalised so that its sum over the column's texels against cos theta_r d theta_r is
+// 1 (the lobe may reach past a pole; a lobe narrower than a texel lands on the nearest one).
+void fillBackLobe(LutTexture& t, const MultipleScatteringTables& tables, const std::vector<double>& theta) {
+  const std::uint32_t n = t.width;
+  std::vector<double> weight(n), g(n);  // cos theta_r d theta_r per texel, the lobe
+  for (std::uint32_t j = 0; j < n; ++j) {
+    const double lo = theta[j == 0 ? 0 : j - 1], hi = theta[j + 1 == n ? j : j + 1];
+    weight[j] = std::cos(theta[j]) * (hi - lo) / (j == 0 || j + 1 == n ? 1.0 : 2.0);
+  }
+  for (std::uint32_t i = 0; i < n; ++i) {
+    const glm::dvec2 lobe = backLobeAt(tables, std::sin(theta[i]));
+    double sum = 0.0;
+    for (std::uint32_t j = 0; j < n; ++j) {
+      const double x = (theta[i] + theta[j] - lobe.x) / lobe.y;
+      g[j] = std::exp(-0.5 * x * x);
+      sum += g[j] * weight[j];
+    }
+    if (!(sum > 1e-200)) {  // nothing sampled: the whole lobe on the texel nearest its centre
+      const double centre = std::clamp(lobe.x - theta[i], theta.front(), theta.back());
+      const auto k = std::lower_bound(theta.begin(), theta.end(), centre) - theta.begin();
+      std::fill(g.begin(), g.end(), 0.0);
+      g[std::min<std::size_t>(k, n - 1)] = 1.0;
+      sum = weight[std::min<std::size_t>(k, n - 1)];
+    }
+    for (std::uint32_t j = 0; j < n; ++j) t.texel(i, j)[3] = shading::quantiseTexel(g[j] / sum, t.format);
+  }
+}
+
 LutTexture buildM(const HairMaterial& m, LutFormat f) {
   const std::uint32_t n = gpu::MARSCHNER_PHYSICAL_M_SIZE;
   LutTexture t = shading::makeLutTexture("M", n, n, f);
-  t.channelNames = {"M_R", "M_TT", "M_TRT", "unused"};
+  t.channelNames = {"M_R", "M_TT", "M_TRT", "M_back (local back-scattering)"};
   t.uAxis = "signed pseudo-angle of theta_i: 0.5 + 0.5 sign P(|theta_i|), texel-centre mapped";
   t.vAxis = "signed pseudo-angle of theta_r, same map";
   for (std::uint32_t j = 0; j < n; ++j) {
@@ -33,6 +64,9 @@ LutTexture buildM(const HairMaterial& m, LutFormat f) {
       for (int p = 0; p < 3; ++p) px[p] = shading::quantiseTexel(shading::physicalM(p, si, sr, m), f);
     }
   }
+  std::vector<double> theta(n);
+  for (std::uint32_t j = 0; j < n; ++j) theta[j] = std::asin(signedAxisSine(j, n));
+  fillBackLobe(t, multipleScatteringTables(m, int(gpu::MARSCHNER_SPREAD_ENTRIES)), theta);
   return t;
 }
 

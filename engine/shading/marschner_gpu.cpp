@@ -42,7 +42,6 @@ gpu::MarschnerParams marschnerGpuParams(const MarschnerLut& lut) {
     p.meanRTT[k] = glm::vec4(float(t.meanR[k]), glm::vec3(t.meanTT[k]));
     p.meanTRT[k] = glm::vec4(glm::vec3(t.meanTRT[k]), 0.0f);
     p.backScatter[k] = glm::vec4(glm::vec3(t.backScatter[k]), 0.0f);
-    p.backLobe[k] = glm::vec4(float(t.backShift[k]), float(t.backWidth[k]), float(t.backNorm[k]), 0.0f);
   }
   return p;
 }

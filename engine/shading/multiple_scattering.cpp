@@ -8,7 +8,6 @@
 #include "engine/shading/furnace.h"
 #include "engine/shading/math_constants.h"
 #include "engine/shading/physical_terms.h"
-#include "engine/shading/quadrature.h"
 
 namespace hp {
 namespace {
@@ -32,21 +31,14 @@ EventSpread eventSpread(const Lobes& energy, const HairMaterial& m) {
   return {first / safe, second / safe - (first / safe) * (first / safe)};
 }
 
-// int G(theta_i + theta_r - shift; width) cos theta_r d theta_r over theta_r in [-pi/2, pi/2].
-double backLobeIntegral(double thetaI, double shift, double width) {
-  double sum = 0.0;
-  shading::gaussLegendre(-0.5 * shading::kPi, 0.5 * shading::kPi, kPanels, [&](double tr, double w) {
-    const double x = (thetaI + tr - shift) / width;
-    sum += w * std::cos(tr) * std::exp(-0.5 * x * x) / (width * std::sqrt(2.0 * shading::kPi));
-  });
-  return sum;
-}
-
-void addBackScattering(MultipleScatteringTables& t, double sinTheta, const Lobes& fwd, const Lobes& back,
+void addBackScattering(MultipleScatteringTables& t, const Lobes& fwd, const Lobes& back,
                        const HairMaterial& m) {
-  const glm::dvec3 af = fwd[0] + fwd[1] + fwd[2], ab = back[0] + back[1] + back[2];
+  // Each albedo is at most 1; the quadrature of a lobe narrower than its panels can overshoot.
+  const glm::dvec3 af = glm::clamp(fwd[0] + fwd[1] + fwd[2], 0.0, 1.0);
+  const glm::dvec3 ab = glm::clamp(back[0] + back[1] + back[2], 0.0, 1.0);
   const glm::dvec3 q = glm::min(af * af, glm::dvec3(0.999));  // a_f^2 < 1: some light is absorbed or lost
-  const glm::dvec3 A = ab * q / (1.0 - q) + ab * ab * ab * q / ((1.0 - q) * (1.0 - q) * (1.0 - q));
+  const glm::dvec3 A = glm::min(ab * q / (1.0 - q) + ab * ab * ab * q / ((1.0 - q) * (1.0 - q) * (1.0 - q)),
+                                glm::dvec3(1.0));
   const EventSpread f = eventSpread(fwd, m), b = eventSpread(back, m);
   const glm::dvec3 pairs = 1.0 / (1.0 - q), pairsVariance = q / ((1.0 - q) * (1.0 - q));
   const glm::dvec3 mean = b.mean + 2.0 * pairs * f.mean;
@@ -58,7 +50,6 @@ void addBackScattering(MultipleScatteringTables& t, double sinTheta, const Lobes
   t.backScatter.push_back(A);
   t.backShift.push_back(shift);
   t.backWidth.push_back(width);
-  t.backNorm.push_back(1.0 / backLobeIntegral(std::asin(sinTheta), shift, width));
 }
 }  // namespace
 
@@ -70,13 +61,22 @@ MultipleScatteringTables multipleScatteringTables(const HairMaterial& m, int ent
     const double s = std::clamp(-1.0 + 2.0 * k / (entries - 1), -kEdgeSine, kEdgeSine);
     const Lobes fwd = physicalLobeFurnaceOver(s, m, 0.5 * shading::kPi, shading::kPi, kPanels);
     const Lobes back = physicalLobeFurnaceOver(s, m, 0.0, 0.5 * shading::kPi, kPanels);
-    t.forwardAlbedo.push_back(fwd[0] + fwd[1] + fwd[2]);
-    addBackScattering(t, s, fwd, back, m);
+    t.forwardAlbedo.push_back(glm::clamp(fwd[0] + fwd[1] + fwd[2], 0.0, 1.0));  // see addBackScattering
+    addBackScattering(t, fwd, back, m);
     const auto energy = shading::physicalLobeEnergy(s, m);  // int N_p d phi over the whole circle
     t.meanR.push_back(energy[0].x / (2.0 * shading::kPi));
     t.meanTT.push_back(energy[1] / (2.0 * shading::kPi));
     t.meanTRT.push_back((energy[2] + energy[3]) / (2.0 * shading::kPi));
   }
   return t;
+}
+
+glm::dvec2 backLobeAt(const MultipleScatteringTables& t, double sinTheta) {
+  const int n = int(t.backShift.size());
+  if (n < 2) throw Error("backLobeAt: the tables need at least 2 entries");
+  const double x = std::clamp(0.5 * sinTheta + 0.5, 0.0, 1.0) * (n - 1);
+  const int i = std::min(int(x), n - 2);
+  const double f = x - i;
+  return {(1.0 - f) * t.backShift[i] + f * t.backShift[i + 1], (1.0 - f) * t.backWidth[i] + f * t.backWidth[i + 1]};
 }
 }  // namespace hp

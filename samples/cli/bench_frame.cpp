@@ -70,6 +70,7 @@ FrameResult benchFrame(const vk::Context& ctx, const FrameCase& c) {
   settings.opacity.raster = c.opacityRaster;
   settings.look.skinBounce = c.skinBounce;
   settings.look.scattering = c.scattering;
+  settings.lutMode = c.lutMode;
   HairSystem hair(ctx, asset, settings);
   renderer.attach(hair);
   DrawView view;

@@ -12,6 +12,7 @@
 #include "engine/hair/scene.h"
 #include "engine/render/frame_block.h"
 #include "engine/render/opacity_settings.h"
+#include "engine/shading/lut.h"
 #include "engine/vk/context.h"
 
 namespace hp::cli {
@@ -24,6 +25,7 @@ struct FrameCase {
   render::OpacityRaster opacityRaster = render::OpacityRaster::Auto;  // how strands reach the opacity maps
   bool skinBounce = true;  // compute only: LookSettings::skinBounce
   render::Scattering scattering = render::LookSettings{}.scattering;  // both paths
+  LutMode lutMode = LutMode::Physical;  // the fibre model's device form (dual needs physical)
 };
 
 struct PassTiming {

@@ -20,14 +20,16 @@ std::string fmt(const char* f, double a, double b) {
 }  // namespace
 
 std::string frameCaseName(const FrameCase& c) {
-  const std::string scattering = c.scattering == render::LookSettings{}.scattering ? ""
+  const bool defaultScattering = c.lutMode != LutMode::Physical || c.scattering == render::LookSettings{}.scattering;
+  const std::string scattering = defaultScattering ? ""
                                  : c.scattering == render::Scattering::Dual      ? ", dual scattering"
                                                                                  : ", single scattering";
+  const std::string shading = (c.lutMode == LutMode::Physical ? std::string() : std::string(", ") + lutModeName(c.lutMode)) + scattering;
   if (c.raster == RasterMode::Compute) {
     const std::string head = c.msaa == 4 ? "" : " head msaa" + std::to_string(c.msaa);
-    return (c.skinBounce ? "compute" : "compute, no skin bounce") + head + scattering;
+    return (c.skinBounce ? "compute" : "compute, no skin bounce") + head + shading;
   }
-  return "graphics msaa" + std::to_string(c.msaa) + scattering;
+  return "graphics msaa" + std::to_string(c.msaa) + shading;
 }
 
 std::string benchPlotSvg(const std::vector<FrameResult>& results) {

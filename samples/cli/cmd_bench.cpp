@@ -1,5 +1,5 @@
 // `hairpipe bench [--strands LIST] [--resolution WxH] [--frames N] [--raster LIST] [--msaa LIST]
-// [--skin-bounce off,on] [--scattering single,dual] [--json F]
+// [--skin-bounce off,on] [--scattering single,dual] [--lut-mode LIST] [--json F]
 // [--plot F.svg]`: the whole frame on the default head (bench_frame.h) for each strand count and raster
 // path (once per --msaa value: the head's samples, and the graphics path's hair samples), after one warm-up frame: per pass the GPU-timestamp median
 // (min/max) of N frames, the frame total, each compute pass's achieved bytes/s as a fraction of a
@@ -8,6 +8,7 @@
 // Suites over other axes are its subcommands (bench_context.h): `bench strands` (tessellate/interpolate
 // to 1M strands), `bench opacity` (map sizes), `bench sim` (guide counts), `bench instances` (heads per
 // Renderer), `bench head` and `bench assets` (host work).
+#include <algorithm>
 #include <cstdio>
 #include <iostream>
 
@@ -32,7 +33,8 @@ struct BenchOptions {
   std::vector<std::uint32_t> msaa{4};
   std::string opacityRaster = "auto";
   std::vector<std::string> skinBounce{"on"};
-  std::vector<std::string> scattering{"dual"};
+  std::vector<std::string> scattering{hp::render::scatteringName(hp::render::LookSettings{}.scattering)};
+  std::vector<std::string> lutModes{hp::lutModeName(hp::cli::FrameCase{}.lutMode)};
   std::string json, plot, device;
 };
 
@@ -53,12 +55,38 @@ void addSampleCounts(hp::cli::FrameCase c, const std::vector<std::uint32_t>& msa
   }
 }
 
+// A parser's error, prefixed with the option it came from.
+template <class F>
+auto named(const char* option, F&& parse) {
+  try {
+    return parse();
+  } catch (const hp::Error& e) {
+    throw hp::Error(std::string("bench: ") + option + ": " + e.what());
+  }
+}
+
+// Each --lut-mode with each --scattering; dual needs the physical model, so the other models get single
+// scattering once.
+std::vector<std::pair<hp::LutMode, hp::render::Scattering>> shadings(const BenchOptions& o) {
+  std::vector<std::pair<hp::LutMode, hp::render::Scattering>> out;
+  for (const std::string& m : o.lutModes) {
+    const hp::LutMode lut = named("--lut-mode", [&] { return hp::parseLutMode(m); });
+    for (const std::string& s : o.scattering) {
+      hp::render::Scattering scattering = named("--scattering", [&] { return hp::render::parseScattering(s); });
+      if (lut != hp::LutMode::Physical) scattering = hp::render::Scattering::Single;
+      if (std::find(out.begin(), out.end(), std::pair{lut, scattering}) == out.end()) out.emplace_back(lut, scattering);
+    }
+  }
+  return out;
+}
+
 std::vector<hp::cli::FrameCase> cases(const BenchOptions& o) {
   if (o.frames == 0 || o.frames > 1000) throw hp::Error("bench: --frames must be in [1, 1000]");
   hp::cli::FrameCase base;
   base.frames = o.frames;
   parseResolution(o.resolution, base.width, base.height);
   base.opacityRaster = hp::render::parseOpacityRaster(o.opacityRaster);
+  const auto shadingList = shadings(o);
   std::vector<hp::cli::FrameCase> out;
   for (std::uint32_t s : o.strands) {
     if (s == 0 || s > 4'000'000) throw hp::Error("bench: --strands values must be in [1, 4000000]");
@@ -68,8 +96,9 @@ std::vector<hp::cli::FrameCase> cases(const BenchOptions& o) {
       hp::cli::FrameCase c = base;
       c.strands = s;
       c.raster = mode;
-      for (const std::string& s : o.scattering) {
-        c.scattering = hp::render::parseScattering(s);
+      for (const auto& [lut, scattering] : shadingList) {
+        c.lutMode = lut;
+        c.scattering = scattering;
         if (mode == hp::RasterMode::Compute) {
           for (const std::string& b : o.skinBounce) {
             if (b != "off" && b != "on") throw hp::Error("bench: --skin-bounce takes off and/or on, got '" + b.substr(0, 40) + "'");
@@ -101,6 +130,8 @@ nlohmann::json toJson(const hp::cli::FrameResult& r) {
   }
   return {{"strands", r.c.strands},      {"width", r.c.width},
           {"height", r.c.height},        {"raster", hp::cli::frameCaseName(r.c)},
+          {"lut_mode", hp::lutModeName(r.c.lutMode)},
+          {"scattering", hp::render::scatteringName(r.c.scattering)},
           {"opacity_raster", hp::render::opacityRasterName(r.opacityRaster)},
           {"frame_ms", r.passes.at("frame").medianMs}, {"copy_gb_per_s", copyGbs},
           {"raster_entries", r.rasterEntries},         {"raster_overflow", r.rasterOverflow},
@@ -172,6 +203,9 @@ void setup(CLI::App& app) {
       ->delimiter(',')
       ->capture_default_str();
   cmd->add_option("--scattering", o->scattering, "single and/or dual (comma separated; physical fibre model)")
+      ->delimiter(',')
+      ->capture_default_str();
+  cmd->add_option("--lut-mode", o->lutModes, "Fibre models' device forms: physical, float, paper and/or direct (comma separated)")
       ->delimiter(',')
       ->capture_default_str();
   cmd->add_option("--json", o->json, "Write the report as JSON to this file");

@@ -115,7 +115,11 @@ hp::RenderRequest makeRenderRequest(const FrameOptions& o, const CLI::App& cmd) 
       throw hp::Error("--skin-bounce must be on or off, got '" + o.skinBounce->substr(0, 40) + "'");
     r.look.skinBounce = *o.skinBounce == "on";
   }
-  if (o.skinColor) r.look.skinColor = vec3Option(*o.skinColor, "--skin-color");
+  if (o.skinColor) {
+    r.look.skinColor = vec3Option(*o.skinColor, "--skin-color");
+    if (glm::any(glm::lessThan(r.look.skinColor, glm::vec3(0.0f))) || glm::any(glm::greaterThan(r.look.skinColor, glm::vec3(1.0f))))
+      throw hp::Error("--skin-color components must be in [0, 1]");
+  }
   r.look.validate();
   r.opacity = opacitySettings(o);
   applyRaster(o, r);

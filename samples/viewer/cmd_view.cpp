@@ -24,7 +24,7 @@ struct ViewOptions {
   std::optional<std::uint32_t> width, height, msaa, density, opacityResolution;
   bool noShadows = false;
   std::optional<std::string> raster;
-  std::string lutMode = "float";
+  std::string lutMode = "physical";
   std::string animate = "none";
   float exposure = 1.0f;
   std::uint32_t frames = 0;
@@ -160,7 +160,7 @@ void setupView(CLI::App& app) {
   cmd->add_option("--density", o->density, "Render strands in total (default: scene, 20000)");
   cmd->add_option("--opacity-resolution", o->opacityResolution, "Opacity map texels per side, 16-4096 (default 512)");
   cmd->add_flag("--no-shadows", o->noShadows, "Start with the opacity shadow maps off");
-  cmd->add_option("--lut-mode", o->lutMode, "Marschner evaluation: float, paper or direct (default float)");
+  cmd->add_option("--lut-mode", o->lutMode, "fibre model: physical (energy-conserving, default; dual scattering needs it), or the paper's model as float, paper or direct");
   cmd->add_option("--animate", o->animate, "Head motion at the start: none, nod, turn, shake");
   cmd->add_option("--exposure", o->exposure, "Exposure multiplier before tonemapping (default 1)");
   cmd->add_option("--frames", o->frames, "Stop after N frames (default 0: when the window closes)");

@@ -20,7 +20,7 @@ struct Tunables {
   double windStrength = 4.0;         // what W turns on (scene units / s^2)
   std::uint32_t density = 20000;     // render strands in total
   HairMaterial material;
-  LutMode lutMode = LutMode::Float;
+  LutMode lutMode = LutMode::Physical;
   render::OpacitySettings opacity;
   render::LookSettings look;
   float exposure = 1.0f;

@@ -50,7 +50,8 @@ HP_CONST(uint, MARSCHNER_FLOAT_N_WIDTH, 256u)
 HP_CONST(uint, MARSCHNER_FLOAT_N_HEIGHT, 128u)
 
 // `physical` mode (RGBA16F; docs/SHADING.md "physical"):
-//   M  : M_SIZE x M_SIZE, (M_R, M_TT, M_TRT, 0) over (signed pseudo-angle of theta_i, of theta_r);
+//   M  : M_SIZE x M_SIZE, (M_R, M_TT, M_TRT, M_back) over (signed pseudo-angle of theta_i, of theta_r);
+//        M_back: the local back-scattering's lobe (engine/shading/multiple_scattering.h), dual scattering;
 //   N0 : N_WIDTH x N_HEIGHT, (N_TT.rgb, N_R); N1: same size, (N_TRT + N_res).rgb;
 //        u = pseudo-angle of phi/2, v = pseudo-angle of |theta_r| (the attenuations depend on theta_r).
 // S = (M_R N_R + M_TT N_TT + M_TRT (N_TRT + N_res)) / cos theta_i, cos theta_i = sqrt(1 - sin^2).
@@ -83,8 +84,7 @@ struct MarschnerParams {
   vec4 forwardAlbedo[MARSCHNER_SPREAD_ENTRIES];  // rgb = a_f(theta) of the light's theta, w = 0
   vec4 meanRTT[MARSCHNER_SPREAD_ENTRIES];        // x = mean N_R, yzw = mean N_TT (rgb), at theta_r
   vec4 meanTRT[MARSCHNER_SPREAD_ENTRIES];        // rgb = mean (N_TRT + N_res), w = 0, at theta_r
-  vec4 backScatter[MARSCHNER_SPREAD_ENTRIES];    // rgb = A_b (local back-scattering) of the light's theta
-  vec4 backLobe[MARSCHNER_SPREAD_ENTRIES];       // x = shift, y = width (radians), z = norm, w = 0
+  vec4 backScatter[MARSCHNER_SPREAD_ENTRIES];    // rgb = A_b (local back-scattering) of the light's theta, w = 0
 };
 
 // Pseudo-angle of a in [0, pi/2] from cos(2a): sin(a)/sqrt2 below pi/4, 1 - cos(a)/sqrt2 above.

@@ -1,4 +1,8 @@
+// The info, devices and bench commands' front ends.
 #include <gtest/gtest.h>
+
+#include <fstream>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -85,4 +89,30 @@ TEST(CliBench, RefusesABadSkinBounceValue) {
   EXPECT_EQ(r.exitCode, 1);
   EXPECT_NE(r.err.find("bench: --skin-bounce takes off and/or on, got 'maybe'"), std::string::npos) << r.err;
   EXPECT_EQ(r.out.find("median of"), std::string::npos) << "a frame ran: " << r.out;
+}
+
+// `bench --scattering` and `--lut-mode` are refused by name before a frame runs; dual with a model other than
+// the physical one (which has no dual tables) is benchmarked as single scattering, once.
+TEST(CliBench, ScatteringAndLutModeListsAreCheckedThenCombined) {
+  auto scattering = runCli({"bench", "--raster", "compute", "--scattering", "dual,triple", "--frames", "1"});
+  EXPECT_EQ(scattering.exitCode, 1);
+  EXPECT_NE(scattering.err.find("bench: --scattering: scattering must be single or dual, got 'triple'"), std::string::npos)
+      << scattering.err;
+  auto lut = runCli({"bench", "--raster", "compute", "--lut-mode", "physical,glossy", "--frames", "1"});
+  EXPECT_EQ(lut.exitCode, 1);
+  EXPECT_NE(lut.err.find("bench: --lut-mode: unknown LUT mode 'glossy'"), std::string::npos) << lut.err;
+  EXPECT_EQ(lut.out.find("median of"), std::string::npos) << "a frame ran: " << lut.out;
+  const std::string json = ::testing::TempDir() + "bench_shadings.json";
+  auto run = runCli({"bench", "--raster", "compute", "--strands", "100", "--resolution", "32x24", "--frames", "1",
+                     "--lut-mode", "float,physical", "--scattering", "single,dual", "--json", json});
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  std::ifstream in(json);
+  const nlohmann::json report = nlohmann::json::parse(in);
+  std::vector<std::string> names, scatterings;
+  for (const auto& row : report["results"]) {
+    names.push_back(row["raster"].get<std::string>());
+    scatterings.push_back(row["scattering"].get<std::string>());
+  }
+  EXPECT_EQ(names, (std::vector<std::string>{"compute, float", "compute, single scattering", "compute"}));
+  EXPECT_EQ(scatterings, (std::vector<std::string>{"single", "single", "dual"}));
 }

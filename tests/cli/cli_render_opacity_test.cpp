@@ -103,6 +103,8 @@ TEST(CliRenderOpacity, RefusesBadShadowOptions) {
       {{"--opacity-raster", "splat"}, "opacity raster must be auto, compute or graphics"},
       {{"--scattering", "triple"}, "scattering must be single or dual"},
       {{"--skin-bounce", "maybe"}, "--skin-bounce must be on or off, got 'maybe'"},
+      {{"--skin-color", "2,0,0"}, "--skin-color components must be in [0, 1]"},
+      {{"--skin-color", "0.5,nan,0.5"}, "--skin-color must be finite"},
       {{"--scattering", "dual", "--lut-mode", "float"}, "--scattering dual needs the physical fibre model"},
       {{"--no-shadows", "--dump-opacity", (dir / "x").string()}, "--dump-opacity"},
   };
@@ -116,7 +118,7 @@ TEST(CliRenderOpacity, RefusesBadShadowOptions) {
   EXPECT_FALSE(fs::exists(dir / "img.png")) << "no output after a refused option";
 }
 
-// Deep opacity maps are the default (with their own bias, 0.5 deep slices); --global-opacity turns them off
+// Deep opacity maps are the default (with their own bias, 0.25 deep slices); --global-opacity turns them off
 // and --shadow-bias sets the bias of the slices in effect. The dump records what the frame used.
 TEST(CliRenderOpacity, DeepMapsByDefaultGlobalOnRequest) {
   const fs::path dir = tempDir("deep");

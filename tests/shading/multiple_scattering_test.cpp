@@ -7,14 +7,18 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <random>
 
 #include "engine/error.h"
 #include "engine/shading/furnace.h"
+#include "engine/shading/lut.h"
+#include "engine/shading/lut_sampler.h"
 #include "engine/shading/material_color.h"
 #include "engine/shading/math_constants.h"
 #include "engine/shading/multiple_scattering.h"
 #include "engine/shading/physical.h"
 #include "engine/shading/quadrature.h"
+#include "shaders/shared/marschner.h"
 
 using namespace hp;
 
@@ -100,15 +104,92 @@ TEST(MultipleScattering, BackScatteringGrowsWithLighterHairAndStaysUnderTheFurna
   }
 }
 
-TEST(MultipleScattering, BackLobeIsCentredWithoutACuticleTilt) {
-  HairMaterial m;
-  m.alphaR = 0.0;
-  const MultipleScatteringTables t = multipleScatteringTables(m, kEntries);
-  for (int k = 0; k < kEntries; ++k) {
-    EXPECT_NEAR(t.backShift[k], 0.0, 1e-12);
-    EXPECT_GT(t.backWidth[k], 0.0);
-    EXPECT_GE(t.backNorm[k], 1.0);  // the cos theta_r weight only takes away
+// Zinke's A_b against the paths of a layered hair counted one by one: fibres at depths 1, 2, ...; a crossing
+// goes on (a_f) or turns back (a_b). A_1: down to depth d >= 2, back, up; A_3: down to d1, back, up to d2,
+// back, down to d3, back, up (d2 < d1, d3). The table's closed forms must equal the sums.
+TEST(MultipleScattering, BackScatteringIsTheSumOverThePathsOfALayeredHair) {
+  HairMaterial blonde;
+  blonde.absorption = absorptionFromColor(glm::dvec3(0.8, 0.65, 0.45));
+  const MultipleScatteringTables t = multipleScatteringTables(blonde, kEntries);
+  for (int k : {2, 4}) {
+    for (int c = 0; c < 3; ++c) {
+      const double af = t.forwardAlbedo[k][c], ab = t.backAlbedo[k][c];
+      double once = 0.0, thrice = 0.0;
+      for (int d = 2; d < 400; ++d) once += ab * std::pow(af, 2 * (d - 1));
+      for (int d2 = 1; d2 < 120; ++d2)
+        for (int d1 = d2 + 1; d1 < d2 + 120; ++d1)
+          for (int d3 = d2 + 1; d3 < d2 + 120; ++d3)
+            thrice += ab * ab * ab * std::pow(af, (d1 - 1) + (d1 - d2 - 1) + (d3 - d2 - 1) + (d3 - 1));
+      EXPECT_NEAR(t.backScatter[k][c], once + thrice, 1e-6 * (once + thrice)) << "entry " << k << " channel " << c;
+    }
   }
+}
+
+// The back lobe's shift and width against a simulation of A_1's paths: n >= 1 with P(n) ~ a_f^2n, then
+// 2n forward events and one back event, each drawing its lobe by the energy the lobe sends into that half
+// of the azimuths and adding its shift plus a normal deviate of its variance; per channel, then weighted
+// by A_b over RGB as the tables are.
+TEST(MultipleScattering, BackLobeSpreadMatchesASimulationOfThePaths) {
+  HairMaterial blonde;
+  blonde.absorption = absorptionFromColor(glm::dvec3(0.8, 0.65, 0.45));
+  const MultipleScatteringTables t = multipleScatteringTables(blonde, kEntries);
+  const int k = kEntries / 2;
+  const auto fwd = physicalLobeFurnaceOver(sineOf(k), blonde, 0.5 * shading::kPi, shading::kPi, 16);
+  const auto back = physicalLobeFurnaceOver(sineOf(k), blonde, 0.0, 0.5 * shading::kPi, 16);
+  std::mt19937_64 rng(7);
+  std::normal_distribution<double> normal;
+  double weight = 0.0, mean = 0.0, second = 0.0;
+  for (int c = 0; c < 3; ++c) {
+    const auto pick = [&](const std::array<glm::dvec3, 3>& energy) {
+      std::discrete_distribution<int> lobe({energy[0][c], energy[1][c], energy[2][c]});
+      const int p = lobe(rng);
+      return shading::physicalShift(p, blonde) + std::sqrt(shading::physicalVariance(p, blonde)) * normal(rng);
+    };
+    const double q = std::pow(t.forwardAlbedo[k][c], 2);
+    std::geometric_distribution<int> extra(1.0 - q);  // n - 1 >= 0 with P ~ q^(n - 1)
+    double sum = 0.0, sum2 = 0.0;
+    const int paths = 200000;
+    for (int i = 0; i < paths; ++i) {
+      const int n = 1 + extra(rng);
+      double x = pick(back);
+      for (int e = 0; e < 2 * n; ++e) x += pick(fwd);
+      sum += x, sum2 += x * x;
+    }
+    const double A = t.backScatter[k][c];
+    weight += A, mean += A * sum / paths, second += A * (sum2 / paths - (sum / paths) * (sum / paths));
+  }
+  std::printf("shift %.2f deg (simulated %.2f), width %.2f deg (simulated %.2f)\n", glm::degrees(t.backShift[k]),
+              glm::degrees(mean / weight), glm::degrees(t.backWidth[k]), glm::degrees(std::sqrt(second / weight)));
+  EXPECT_NEAR(t.backShift[k], mean / weight, 0.01 * std::abs(mean / weight) + glm::radians(0.2));
+  EXPECT_NEAR(t.backWidth[k], std::sqrt(second / weight), 0.02 * std::sqrt(second / weight));
+}
+
+// The device form of the back lobe (the physical M texture's fourth channel, sampled the way the shader
+// samples it) integrates to 1 against cos theta_r d theta_r for every theta_i, so the back-scattered
+// energy is A_b; and a material whose lobes are far narrower than the texels still gets finite values.
+TEST(MultipleScattering, BackLobeTextureIntegratesToOneAgainstCosThetaR) {
+  HairMaterial brown, blonde, narrow;
+  blonde.absorption = absorptionFromColor(glm::dvec3(0.8, 0.65, 0.45));
+  narrow.alphaR = 0.0;
+  narrow.betaR = glm::radians(0.01);
+  for (const HairMaterial* m : {&brown, &blonde}) {
+    const MarschnerLut lut = buildPhysicalLut(*m, LutFormat::RGBA16F);
+    for (double degrees : {-85.0, -60.0, -20.0, 0.0, 35.0, 70.0, 88.0}) {
+      const float si = float(std::sin(glm::radians(degrees)));
+      double integral = 0.0;
+      shading::gaussLegendre(-0.5 * shading::kPi, 0.5 * shading::kPi, 64, [&](double tr, double w) {
+        const glm::vec4 c = gpu::marschnerPhysicalCoords(glm::vec4(si, float(std::sin(tr)), 0.0f, 0.0f));
+        integral += w * std::cos(tr) * sampleBilinear(lut.textures[0], c.x, c.y).w;
+      });
+      EXPECT_NEAR(integral, 1.0, 0.03) << "theta_i " << degrees;
+    }
+  }
+  const MarschnerLut lut = buildPhysicalLut(narrow, LutFormat::RGBA16F);
+  const MultipleScatteringTables t = multipleScatteringTables(narrow, kEntries);
+  const std::vector<float>& m = lut.textures[0].data;
+  for (std::size_t i = 0; i < m.size(); ++i) ASSERT_TRUE(std::isfinite(m[i])) << "channel " << i % 4 << " texel " << i / 4 << " " << m[i];
+  for (const glm::dvec3& A : t.backScatter)
+    for (int c = 0; c < 3; ++c) EXPECT_TRUE(A[c] >= 0.0 && A[c] <= 1.0) << A[c];
 }
 
 TEST(MultipleScattering, RefusesABadTableSize) {
