@@ -1,8 +1,9 @@
 // The radiance a hair fibre sends toward the camera (REFERENCES.md §3-4), GLSL only, shared by the graphics
 // strand shader (strands.frag, per fragment) and the compute rasterizer (raster_shade.comp, per vertex):
 // S(L, V, T) cos(theta_i) x light x transmittance [+ the light the hair in front scattered forward and the
-// light the hair around scatters back, dual scattering] + sky albedo x (ambient x RENDER_HAIR_SKY_VISIBILITY + `bounce`), times the strand's lightness
-// variation. `bounce` is the mean radiance the skin sends the point (head_bounce.glsl; vec3(0) without it).
+// light the hair around scatters back, dual scattering] + sky albedo x (ambient x RENDER_HAIR_SKY_VISIBILITY
+// + `bounce`), times the strand's lightness variation. `bounce` is the mean radiance the skin sends the point
+// (head_bounce.glsl; vec3(0) without it).
 // The includer declares `frame` (RenderFrame), `marschner` (MarschnerParams), the LUT samplers
 // lutM, lutN0, lutN1 and `headShadowMap` (the head's depth map) before including this file; `alpha` is
 // the opacity-map lookup at the point. The transmittance is the hair's (opacity maps) times the head's.

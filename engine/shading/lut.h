@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "engine/shading/material.h"
+#include "engine/shading/multiple_scattering.h"
 
 namespace hp {
 enum class LutMode { Direct, Paper, Float, Physical };
@@ -47,6 +48,9 @@ struct MarschnerLut {
   HairMaterial material;
   std::vector<LutTexture> textures;  // paper: {M, N}; float, physical: {M, N0, N1}; direct: {}
   std::string parameterisation;      // human-readable summary
+  // Physical only (empty otherwise): the dual-scattering tables, built once for both of their users, the M
+  // texture's back lobe and the GPU block (marschner_gpu.h).
+  MultipleScatteringTables multipleScattering;
 };
 
 struct LutBuildOptions {

@@ -50,7 +50,7 @@ void fillBackLobe(LutTexture& t, const MultipleScatteringTables& tables, const s
   }
 }
 
-LutTexture buildM(const HairMaterial& m, LutFormat f) {
+LutTexture buildM(const HairMaterial& m, const MultipleScatteringTables& tables, LutFormat f) {
   const std::uint32_t n = gpu::MARSCHNER_PHYSICAL_M_SIZE;
   LutTexture t = shading::makeLutTexture("M", n, n, f);
   t.channelNames = {"M_R", "M_TT", "M_TRT", "M_back (local back-scattering)"};
@@ -66,7 +66,7 @@ LutTexture buildM(const HairMaterial& m, LutFormat f) {
   }
   std::vector<double> theta(n);
   for (std::uint32_t j = 0; j < n; ++j) theta[j] = std::asin(signedAxisSine(j, n));
-  fillBackLobe(t, multipleScatteringTables(m, int(gpu::MARSCHNER_SPREAD_ENTRIES)), theta);
+  fillBackLobe(t, tables, theta);
   return t;
 }
 
@@ -105,7 +105,8 @@ MarschnerLut buildPhysicalLut(const HairMaterial& material, LutFormat format) {
   n0.uAxis = n1.uAxis = "pseudo-angle P(phi/2): 0 at phi = 0, 1 at phi = pi, texel-centre mapped";
   n0.vAxis = n1.vAxis = "pseudo-angle P(|theta_r|): 0 at theta_r = 0, 1 at 90 deg, texel-centre mapped";
   buildN(material, n0, n1);
-  lut.textures = {buildM(material, format), std::move(n0), std::move(n1)};
+  lut.multipleScattering = multipleScatteringTables(material, int(gpu::MARSCHNER_SPREAD_ENTRIES));
+  lut.textures = {buildM(material, lut.multipleScattering, format), std::move(n0), std::move(n1)};
   lut.parameterisation =
       "physical (d'Eon 2011 M, Chiang 2016 A_p and residual): P(a) = sin(a)/sqrt2 for a <= pi/4, "
       "1 - cos(a)/sqrt2 above, from sines with square roots only; S = (M_R N_R + M_TT N_TT + "

@@ -1,5 +1,6 @@
 #include "engine/shading/marschner_gpu.h"
 
+#include "engine/error.h"
 #include "engine/shading/fibre_model.h"
 #include "engine/shading/furnace.h"
 #include "engine/shading/multiple_scattering.h"
@@ -36,7 +37,9 @@ gpu::MarschnerParams marschnerGpuParams(const MarschnerLut& lut) {
   p.control = glm::uvec4(gpuModeOf(lut.mode), 0u, 0u, 0u);
   p.skyAlbedo = glm::vec4(glm::vec3(skyAlbedo(fibreModelOf(lut.mode), m)), 0.0f);
   if (lut.mode != LutMode::Physical) return p;
-  const MultipleScatteringTables t = multipleScatteringTables(m, int(gpu::MARSCHNER_SPREAD_ENTRIES));
+  const MultipleScatteringTables& t = lut.multipleScattering;
+  if (t.forwardAlbedo.size() != gpu::MARSCHNER_SPREAD_ENTRIES)
+    throw Error("marschnerGpuParams: a physical LUT without its multiple-scattering tables");
   for (std::uint32_t k = 0; k < gpu::MARSCHNER_SPREAD_ENTRIES; ++k) {
     p.forwardAlbedo[k] = glm::vec4(glm::vec3(t.forwardAlbedo[k]), 0.0f);
     p.meanRTT[k] = glm::vec4(float(t.meanR[k]), glm::vec3(t.meanTT[k]));

@@ -31,8 +31,9 @@ EventSpread eventSpread(const Lobes& energy, const HairMaterial& m) {
   return {first / safe, second / safe - (first / safe) * (first / safe)};
 }
 
-void addBackScattering(MultipleScatteringTables& t, const Lobes& fwd, const Lobes& back,
-                       const HairMaterial& m) {
+// a_f, a_b, A_b and its lobe's shift and width, from the lobes' energies into the far and near halves.
+void addAlbedosAndBackScattering(MultipleScatteringTables& t, const Lobes& fwd, const Lobes& back,
+                                 const HairMaterial& m) {
   // Each albedo is at most 1; the quadrature of a lobe narrower than its panels can overshoot.
   const glm::dvec3 af = glm::clamp(fwd[0] + fwd[1] + fwd[2], 0.0, 1.0);
   const glm::dvec3 ab = glm::clamp(back[0] + back[1] + back[2], 0.0, 1.0);
@@ -46,6 +47,7 @@ void addBackScattering(MultipleScatteringTables& t, const Lobes& fwd, const Lobe
   const double weight = std::max(A.r + A.g + A.b, 1e-300);
   const double shift = glm::dot(A, mean) / weight;
   const double width = std::sqrt(std::max(glm::dot(A, variance) / weight, 1e-8));
+  t.forwardAlbedo.push_back(af);
   t.backAlbedo.push_back(ab);
   t.backScatter.push_back(A);
   t.backShift.push_back(shift);
@@ -61,8 +63,7 @@ MultipleScatteringTables multipleScatteringTables(const HairMaterial& m, int ent
     const double s = std::clamp(-1.0 + 2.0 * k / (entries - 1), -kEdgeSine, kEdgeSine);
     const Lobes fwd = physicalLobeFurnaceOver(s, m, 0.5 * shading::kPi, shading::kPi, kPanels);
     const Lobes back = physicalLobeFurnaceOver(s, m, 0.0, 0.5 * shading::kPi, kPanels);
-    t.forwardAlbedo.push_back(glm::clamp(fwd[0] + fwd[1] + fwd[2], 0.0, 1.0));  // see addBackScattering
-    addBackScattering(t, fwd, back, m);
+    addAlbedosAndBackScattering(t, fwd, back, m);
     const auto energy = shading::physicalLobeEnergy(s, m);  // int N_p d phi over the whole circle
     t.meanR.push_back(energy[0].x / (2.0 * shading::kPi));
     t.meanTT.push_back(energy[1] / (2.0 * shading::kPi));

@@ -24,7 +24,8 @@ std::string frameCaseName(const FrameCase& c) {
   const std::string scattering = defaultScattering ? ""
                                  : c.scattering == render::Scattering::Dual      ? ", dual scattering"
                                                                                  : ", single scattering";
-  const std::string shading = (c.lutMode == LutMode::Physical ? std::string() : std::string(", ") + lutModeName(c.lutMode)) + scattering;
+  const std::string model = c.lutMode == LutMode::Physical ? std::string() : std::string(", ") + lutModeName(c.lutMode);
+  const std::string shading = model + scattering;
   if (c.raster == RasterMode::Compute) {
     const std::string head = c.msaa == 4 ? "" : " head msaa" + std::to_string(c.msaa);
     return (c.skinBounce ? "compute" : "compute, no skin bounce") + head + shading;

@@ -1,9 +1,9 @@
 // `hairpipe bench [--strands LIST] [--resolution WxH] [--frames N] [--raster LIST] [--msaa LIST]
 // [--skin-bounce off,on] [--scattering single,dual] [--lut-mode LIST] [--json F]
 // [--plot F.svg]`: the whole frame on the default head (bench_frame.h) for each strand count and raster
-// path (once per --msaa value: the head's samples, and the graphics path's hair samples), after one warm-up frame: per pass the GPU-timestamp median
-// (min/max) of N frames, the frame total, each compute pass's achieved bytes/s as a fraction of a
-// vkCmdCopyBuffer timed in the same frames, the host time and resident-memory growth per frame, the
+// path (once per --msaa value: the head's samples, and the graphics path's hair samples; once per fibre model
+// and scattering), after one warm-up frame: per pass the GPU-timestamp median (min/max) of N frames, the
+// frame total, each compute pass's achieved bytes/s as a fraction of a vkCmdCopyBuffer timed in the same frames, the host time and resident-memory growth per frame, the
 // device and driver. --json writes the report to F, --plot an SVG of ms per pass against strand count.
 // Suites over other axes are its subcommands (bench_context.h): `bench strands` (tessellate/interpolate
 // to 1M strands), `bench opacity` (map sizes), `bench sim` (guide counts), `bench instances` (heads per
@@ -80,6 +80,16 @@ std::vector<std::pair<hp::LutMode, hp::render::Scattering>> shadings(const Bench
   return out;
 }
 
+// --skin-bounce as values (the compute path's; the graphics path keeps FrameCase's default).
+std::vector<bool> skinBounces(const BenchOptions& o) {
+  std::vector<bool> out;
+  for (const std::string& b : o.skinBounce) {
+    if (b != "off" && b != "on") throw hp::Error("bench: --skin-bounce takes off and/or on, got '" + b.substr(0, 40) + "'");
+    out.push_back(b == "on");
+  }
+  return out;
+}
+
 std::vector<hp::cli::FrameCase> cases(const BenchOptions& o) {
   if (o.frames == 0 || o.frames > 1000) throw hp::Error("bench: --frames must be in [1, 1000]");
   hp::cli::FrameCase base;
@@ -87,6 +97,7 @@ std::vector<hp::cli::FrameCase> cases(const BenchOptions& o) {
   parseResolution(o.resolution, base.width, base.height);
   base.opacityRaster = hp::render::parseOpacityRaster(o.opacityRaster);
   const auto shadingList = shadings(o);
+  const std::vector<bool> computeBounces = skinBounces(o), graphicsBounces{base.skinBounce};
   std::vector<hp::cli::FrameCase> out;
   for (std::uint32_t s : o.strands) {
     if (s == 0 || s > 4'000'000) throw hp::Error("bench: --strands values must be in [1, 4000000]");
@@ -99,15 +110,10 @@ std::vector<hp::cli::FrameCase> cases(const BenchOptions& o) {
       for (const auto& [lut, scattering] : shadingList) {
         c.lutMode = lut;
         c.scattering = scattering;
-        if (mode == hp::RasterMode::Compute) {
-          for (const std::string& b : o.skinBounce) {
-            if (b != "off" && b != "on") throw hp::Error("bench: --skin-bounce takes off and/or on, got '" + b.substr(0, 40) + "'");
-            c.skinBounce = b == "on";
-            addSampleCounts(c, o.msaa, out);  // the head's samples, which the rasterizer reads
-          }
-          continue;
+        for (const bool bounce : mode == hp::RasterMode::Compute ? computeBounces : graphicsBounces) {
+          c.skinBounce = bounce;
+          addSampleCounts(c, o.msaa, out);  // the head's samples (both paths), the graphics path's hair's
         }
-        addSampleCounts(c, o.msaa, out);
       }
     }
   }

@@ -64,7 +64,8 @@ void materialSection(Tunables& t, PanelChanges& c) {
   editDegrees("beta R (width)", t.material.betaR, 2.0f, 20.0f);
   editDouble("glint kG", t.material.kG, 0.0f, 2.0f);
   editDegrees("glint width wc", t.material.wc, 5.0f, 30.0f);
-  const char* modes[] = {"direct", "paper", "float", "physical"};  // LutMode's order
+  const char* modes[] = {lutModeName(LutMode::Direct), lutModeName(LutMode::Paper), lutModeName(LutMode::Float),
+                         lutModeName(LutMode::Physical)};  // LutMode's order: the combo's index is the mode
   int m = int(t.lutMode);
   ImGui::Combo("lookup", &m, modes, 4);
   t.lutMode = LutMode(m);
