@@ -41,6 +41,6 @@ inline constexpr double kEdgeSine = 0.999;
 MultipleScatteringTables multipleScatteringTables(const HairMaterial& m, int entries);
 
 // The back-scattered lobe's (shift, width) at sin theta, linear between the tables' entries (as the shader
-// reads its tables).
+// reads the other tables); what the M texture's back-lobe columns are built from.
 glm::dvec2 backLobeAt(const MultipleScatteringTables& t, double sinTheta);
 }  // namespace hp

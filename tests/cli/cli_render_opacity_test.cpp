@@ -1,6 +1,7 @@
 // `hairpipe render --dump-opacity DIR`: the 16 slices as PFM (size, finite, non-decreasing in i), the
 // contact sheet PNG and the slice depths JSON (z_i = z_near + i d_z), the bounds and opacity passes
 // in the reported GPU times; refused shadow options exit 1 naming the option or field.
+// --skin-color reaches the exported frame.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -11,6 +12,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "samples/tools/frame_export.h"
 #include "samples/tools/png_file.h"
 #include "tests/support/cli_runner.h"
 
@@ -137,4 +139,19 @@ TEST(CliRenderOpacity, DeepMapsByDefaultGlobalOnRequest) {
   const auto global = dumped({"--global-opacity", "--shadow-bias", "0.75"});
   EXPECT_FALSE(global["deep"].get<bool>());
   EXPECT_FLOAT_EQ(global["bias_slices"].get<float>(), 0.75f);
+}
+
+// --skin-color reaches the frame: the export's skin colour and head albedo (away from the scalp) are the
+// given colour (the refusals are in the list above).
+TEST(CliRenderOpacity, SkinColorReachesTheExportedFrame) {
+  const fs::path dir = tempDir("skin");
+  auto args = baseArgs(dir);
+  args.insert(args.end(), {"--skin-color", "0.2,0.3,0.4", "--export-frame", (dir / "frame").string()});
+  auto r = runCli(args);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const hp::ExportedFrame frame = hp::readFrameExport(dir / "frame");
+  EXPECT_EQ(frame.skinColor, glm::vec3(0.2f, 0.3f, 0.4f));
+  std::size_t skin = 0;
+  for (const glm::vec3& a : frame.headAlbedo) skin += a == glm::vec3(0.2f, 0.3f, 0.4f) ? 1 : 0;
+  EXPECT_GT(skin, frame.headAlbedo.size() / 2);
 }
