@@ -16,7 +16,7 @@
 // to ComputeRead and the previous frame's reads of lightSpace() are done (-> ComputeWrite); between
 // the steps, lightSpace() ComputeWrite -> ComputeWrite; after recordFinalize, ComputeWrite -> the
 // readers' use. The buffer starts armed: initialLightSpace() (ShadowMaps uploads it).
-#include <volk.h>
+#include "hairpipe_volk.h"
 
 #include <glm/glm.hpp>
 

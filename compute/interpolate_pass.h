@@ -1,5 +1,5 @@
 #pragma once
-// Contract: the interpolation pass (REFERENCES.md §1, shaders/interpolate.comp). Fills every scalp
+// Contract: the interpolation pass (docs/THEORY.md §1.4, shaders/interpolate.comp). Fills every scalp
 // triangle with render strands K_j = X1 A_j + X2 B_j + X3 C_j from its three smoothed guides, with
 // renormalised blended tangents and per-strand attributes (random, width and colour scales; see
 // makeStrandAttributes in shaders/shared/strands.h). In guides-only layouts (StrandOptions::guidesOnly)
@@ -11,7 +11,7 @@
 //                  render strand buffers no longer read by the previous frame (last use -> ComputeWrite).
 //   after record:  chunk positions, tangents and attributes are in BufferUse::ComputeWrite; barrier
 //                  them to VertexRead/GraphicsRead for the draw passes (or TransferSrc for readback).
-#include <volk.h>
+#include "hairpipe_volk.h"
 
 #include <vector>
 

@@ -9,7 +9,7 @@
 // TransferDst), the splats
 // (TransferDst -> ComputeWrite before them), then recordResolve (bins ComputeWrite -> ComputeRead, the
 // maps in ImageUse::ComputeStorageWrite). Throws hp::Error if the bins exceed maxStorageBufferRange.
-#include <volk.h>
+#include "hairpipe_volk.h"
 
 #include <memory>
 

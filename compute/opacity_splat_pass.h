@@ -9,7 +9,7 @@
 // the bins cleared and visible to ComputeWrite. Between its own chunks the pass orders the atomics with
 // ComputeWrite -> ComputeWrite barriers (atomics are writes to synchronization validation); after it the
 // bins' last use is ComputeWrite.
-#include <volk.h>
+#include "hairpipe_volk.h"
 
 #include <glm/glm.hpp>
 

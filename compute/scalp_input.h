@@ -11,7 +11,7 @@
 // The roots follow exactly (the root particle is pinned to the skinned root at every substep end).
 // ScalpState owns the buffers behind the mode (the previous root frames, the bone matrices, the weights)
 // and records the per-frame bone upload; the simulate pass binds them.
-#include <volk.h>
+#include "hairpipe_volk.h"
 
 #include <glm/glm.hpp>
 

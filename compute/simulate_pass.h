@@ -1,5 +1,5 @@
 #pragma once
-// Contract: the guide simulation on the device (REFERENCES.md §2). Owns the guide particle buffers
+// Contract: the guide simulation on the device (docs/THEORY.md §2). Owns the guide particle buffers
 // (positions, previous, rest; layout in shaders/shared/simulate.h), its frame uniform block, pipeline
 // and descriptor set. record() writes this frame's constants into the command buffer and dispatches
 // one invocation per guide; nothing is read back. positions() is what tessellation reads. The asset's

@@ -1,5 +1,5 @@
 #pragma once
-// Contract: the compute strand rasterizer for the camera view (REFERENCES.md §8; layouts and the coverage
+// Contract: the compute strand rasterizer for the camera view (docs/THEORY.md §7; layouts and the coverage
 // formula in shaders/shared/raster.h). Over the render strands of every chunk of every source (one source
 // per hair instance: its strands and its shading resources; all share one set of tile lists, so hair of
 // different heads interleaves correctly by depth) it
@@ -20,7 +20,7 @@
 // ImageUse::ComputeSampled. After record(): output() in ImageUse::FragmentSampled, every own buffer's
 // last use ComputeWrite. List overflow is never silent: readStats() reports entries dropped by the tile
 // budget and past the list capacity (capacity derived from the segment count and the frame size).
-#include <volk.h>
+#include "hairpipe_volk.h"
 
 #include <array>
 #include <functional>

@@ -1,5 +1,5 @@
 #pragma once
-// Contract: the tessellation pass (REFERENCES.md §1, shaders/tessellate.comp). Turns the simulated
+// Contract: the tessellation pass (docs/THEORY.md §1.3, shaders/tessellate.comp). Turns the simulated
 // guides (P particles each) into smooth guides of Q vertices: cubic Beziers from central-difference
 // tangents, every particle hit exactly (sample distribution in shaders/shared/strands.h), unit
 // tangents. Owns its pipeline and descriptor set; record() adds one dispatch (G x Q invocations) to
@@ -8,7 +8,7 @@
 //                  smoothed guides no longer read by the previous frame (their last use -> ComputeWrite).
 //   after record:  smoothed guides (StrandBuffers::guidePositions/guideTangents) are in
 //                  BufferUse::ComputeWrite; barrier them to ComputeRead before InterpolatePass.
-#include <volk.h>
+#include "hairpipe_volk.h"
 
 #include "compute/strand_buffers.h"
 #include "engine/vk/descriptors.h"

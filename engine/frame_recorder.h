@@ -11,7 +11,7 @@
 //                        last ComputeWrite must be made visible to VertexRead first (makeStrandsDrawable);
 //                        this adds ComputeRead for the bounds and splats. Leaves LightSpace in
 //                        BufferUse::GraphicsRead (and ComputeRead) and the maps in ImageUse::FragmentSampled.
-#include <volk.h>
+#include "hairpipe_volk.h"
 
 #include <glm/glm.hpp>
 

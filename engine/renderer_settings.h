@@ -2,7 +2,7 @@
 // Contract: the parameters of hp::Renderer (per device and attachment formats), of each hp::HairInstance
 // (per head) and of one view of a frame. Pure host data; validate() throws hp::Error naming the field,
 // and the Renderer/instance calls that take them validate them there, so recording never throws for them.
-#include <volk.h>
+#include "hairpipe_volk.h"
 
 #include <cstdint>
 

@@ -117,7 +117,7 @@ void finalize() {
   float margin = spot ? push.marginWorld / lo.z : push.marginWorld;
   vec2 pad = vec2(margin) + size * (push.marginTexels / float(push.resolution));
   vec2 xyLo = lo.xy - pad, xyHi = hi.xy + pad;
-  // Depth: exactly [z_near, z_far] of the vertices (REFERENCES §4), never a zero-thick range.
+  // Depth: exactly [z_near, z_far] of the vertices (docs/THEORY.md §5.2), never a zero-thick range.
   float zNear = lo.z;
   float zFar = max(hi.z, zNear + max(1e-6, abs(zNear) * 1e-6));
   float dz = (zFar - zNear) / float(OPACITY_SLICES);

@@ -1,4 +1,4 @@
-// The radiance a hair fibre sends toward the camera (REFERENCES.md §3-4), GLSL only, shared by the graphics
+// The radiance a hair fibre sends toward the camera (docs/THEORY.md §3-6), GLSL only, shared by the graphics
 // strand shader (strands.frag, per fragment) and the compute rasterizer (raster_shade.comp, per vertex):
 // S(L, V, T) cos(theta_i) x light x transmittance [+ the light the hair in front scattered forward and the
 // light the hair around scatters back, dual scattering] + sky albedo x (ambient x RENDER_HAIR_SKY_VISIBILITY

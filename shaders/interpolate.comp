@@ -1,5 +1,5 @@
 #version 460
-// Interpolation (REFERENCES.md §1): render strand s of a scalp triangle with guides A, B, C and
+// Interpolation (docs/THEORY.md §1.4): render strand s of a scalp triangle with guides A, B, C and
 // barycentrics X is K_j = X1 A_j + X2 B_j + X3 C_j for every vertex j of the smoothed guides.
 // Tangents: the guides' unit tangents blended with the same weights and renormalised (A's tangent if
 // the blend vanishes). Also writes the strand's attributes (makeStrandAttributes, shared/strands.h).

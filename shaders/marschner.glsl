@@ -1,9 +1,9 @@
-// Marschner hair shading for GLSL (REFERENCES.md §3): ONE include used by the strand fragment shader
+// Marschner hair shading for GLSL (docs/THEORY.md §3): ONE include used by the strand fragment shader
 // and by the brdf_eval compute kernel. Interface (all take UNnormalised-OK L, V, T, non-zero):
 //   vec3 marschnerDirect  (L, V, T, MarschnerParams p)                          analytic S, no textures
 //   vec3 marschnerLutPaper(L, V, T, sampler2D mTex, sampler2D nTex, p)            paper, RGBA8 128x128
 //   vec3 marschnerLutFloat(L, V, T, sampler2D mTex, sampler2D n0Tex, sampler2D n1Tex, p)  RGBA16F
-//   vec3 marschnerLutPhysical(L, V, T, mTex, n0Tex, n1Tex, p)   the physical model (REFERENCES §3b), RGBA16F
+//   vec3 marschnerLutPhysical(L, V, T, mTex, n0Tex, n1Tex, p)   the physical model (docs/THEORY.md §4), RGBA16F
 //   vec3 marschnerEvaluate(mode, L, V, T, mTex, n0Tex, n1Tex, p)                 switch on MARSCHNER_MODE_*
 // Samplers: linear min/mag filter, CLAMP_TO_EDGE, normalised coordinates, one mip level. Sampled with
 // textureLod(.., 0) so the same code is valid in compute shaders.
@@ -48,7 +48,7 @@ float marschnerGaussian(float b, float x) {
   return exp(-x * x / (2.0 * b * b)) / (b * MARSCHNER_SQRT_2PI);
 }
 
-// Fresnel of REFERENCES §3: mean of s (index n1) and p (index n2) reflectance, 1 under TIR.
+// Fresnel of docs/THEORY.md §3.4: mean of s (index n1) and p (index n2) reflectance, 1 under TIR.
 float marschnerFresnelS(float n, float cosI) {
   float sinT2 = (1.0 - cosI * cosI) / (n * n);
   if (sinT2 >= 1.0) return 1.0;
@@ -151,7 +151,7 @@ float marschnerWrapPi(float x) {
   return x - MARSCHNER_TWO_PI * floor((x + MARSCHNER_PI) / MARSCHNER_TWO_PI);
 }
 
-// N_TRT with the caustic handling of REFERENCES §3.
+// N_TRT with the caustic handling of docs/THEORY.md §3.5.
 vec3 marschnerNTRT(float phi, MarschnerFiber f, MarschnerParams prm) {
   float kG = prm.longitudinal.z, wc = prm.longitudinal.w;
   float dEta = prm.caustic.x, dhM = prm.caustic.y;
@@ -233,7 +233,7 @@ vec3 marschnerLutFloat(vec3 L, vec3 V, vec3 T, sampler2D mTex, sampler2D n0Tex, 
   return (m.x * n0.w + m.y * n0.xyz + m.z * n1.xyz) * c.w;
 }
 
-// The physical model (REFERENCES §3b): M = (M_R, M_TT, M_TRT) over (theta_i, theta_r), N0 = (N_TT, N_R),
+// The physical model (docs/THEORY.md §4): M = (M_R, M_TT, M_TRT) over (theta_i, theta_r), N0 = (N_TT, N_R),
 // N1 = N_TRT + N_res over (phi/2, |theta_r|); S = (M_R N_R + M_TT N_TT + M_TRT N1) / cos theta_i.
 vec3 marschnerLutPhysical(vec3 L, vec3 V, vec3 T, sampler2D mTex, sampler2D n0Tex, sampler2D n1Tex,
                           MarschnerParams prm) {

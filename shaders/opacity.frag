@@ -1,7 +1,7 @@
 #version 460
 // Opacity maps: a fragment at slice coordinate s adds its opacity to every slice at or behind it
 // (slice i at s = i, i = 1..16), so with additive blending target t channel c holds alpha(z_{4t+c+1})
-// directly (REFERENCES.md §4); no prefix sum afterwards.
+// directly (docs/THEORY.md §5); no prefix sum afterwards.
 #include "shared/opacity.h"
 
 layout(location = 0) in float inSlice;

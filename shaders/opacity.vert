@@ -1,5 +1,5 @@
 #version 460
-// Opacity maps, strands (REFERENCES.md §4): every segment of every render strand as a line seen from
+// Opacity maps, strands (docs/THEORY.md §5): every segment of every render strand as a line seen from
 // the light, pulled from the chunk's position buffer (line list, 2 vertices per segment). The light
 // depth travels as the slice coordinate s = 16 clip.z (linear in light depth, so perspective-correct
 // interpolation keeps it exact for a spot); clip z is half of w so no hair or head part in front of

@@ -1,4 +1,4 @@
-// The opacity one fragment of a strand adds to the opacity maps (REFERENCES.md §4; shared/opacity.h),
+// The opacity one fragment of a strand adds to the opacity maps (docs/THEORY.md §5.1; shared/opacity.h),
 // GLSL only: the graphics pass (opacity.vert, per vertex) and the compute pass (opacity_splat.comp, per
 // segment end) both call it, so the two paths cannot drift apart.
 // Footprint mode (footprint.w = 1): the strand's width over the texel's size at this depth (the box is

@@ -1,4 +1,4 @@
-// Opacity shadow map lookup (REFERENCES.md §4 eq. 10), GLSL only, for the shading passes.
+// Opacity shadow map lookup (docs/THEORY.md §5.3, the paper's eq. 10), GLSL only, for the shading passes.
 // Per vertex: the light clip (x, y, w) and the 16 interpolation weights w_i = max(0, 1 - |s - i|) of the slice
 // coordinate s (shared/opacity.h), moved `bias` slices toward the light so a strand does not shadow
 // itself. Per fragment: alpha = sum_i w_i alpha(z_i) as 4 dot products, T = exp(-k alpha).

@@ -1,5 +1,5 @@
 #version 460
-// Opacity maps in compute (shared/opacity.h, REFERENCES.md §4): one invocation per strand segment of a
+// Opacity maps in compute (shared/opacity.h, docs/THEORY.md §5): one invocation per strand segment of a
 // chunk. It rasterizes the segment as seen from the light by the graphics pass's rule (strict lines: the
 // texel centres inside the 1-texel-wide rectangle along the segment), takes the slice coordinate s and
 // the opacity at each centre's projection onto the segment (perspective-correct, as the graphics pass

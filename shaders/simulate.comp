@@ -1,5 +1,5 @@
 #version 460
-// One invocation simulates one guide for one frame (REFERENCES.md §2): per substep, pin the root to
+// One invocation simulates one guide for one frame (docs/THEORY.md §2): per substep, pin the root to
 // the moving scalp, Verlet-integrate the free particles (gravity, wind, damping, speed clamp), pull
 // mildly toward the rest pose, then iterate length constraints (Gauss-Seidel, root to tip; the last
 // sweep follow-the-leader) and pearl collisions, collisions last so the final state is outside every
@@ -108,7 +108,7 @@ void satisfyLengths(uint base, uint n, bool leaderOnly) {
   }
 }
 
-// Where a pearl inside a collider goes: onto the collider surface (REFERENCES.md §2). Of the surface
+// Where a pearl inside a collider goes: onto the collider surface (docs/THEORY.md §2.4). Of the surface
 // points, it takes the one at the segment's rest length from its parent that is nearest to it (the
 // two spheres meet in a circle), so a strand lying on the head keeps its length; where the spheres
 // do not meet it falls back to the paper's radial push.

@@ -1,5 +1,5 @@
 #version 460
-// Tessellation (REFERENCES.md §1): every guide of P particles becomes Q vertices on the C1 chain of
+// Tessellation (docs/THEORY.md §1.3): every guide of P particles becomes Q vertices on the C1 chain of
 // cubic Beziers through its particles. One invocation per output vertex (guide g, vertex j).
 // Tangents at particles: central differences, one-sided at root and tip. Segment i between p_i and
 // p_(i+1), d = p_(i+1) - p_i: b0 = p_i, b1 = p_i + t_i |d|/3, b2 = p_(i+1) - t_(i+1) |d|/3, b3 = p_(i+1).

@@ -1,6 +1,6 @@
 #pragma once
 // Contract: a sphere collider in head space (the asset's own space, metres for the default head).
-// The simulation keeps every particle's pearl outside every collider (REFERENCES.md §2).
+// The simulation keeps every particle's pearl outside every collider (docs/THEORY.md §2.4).
 #include <glm/glm.hpp>
 
 namespace hp {

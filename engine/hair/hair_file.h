@@ -1,5 +1,5 @@
 #pragma once
-// Contract: Cem Yuksel's .hair format (REFERENCES.md §5), in memory. Arrays that the file lacks are
+// Contract: Cem Yuksel's .hair format (docs/THEORY.md §8.1), in memory. Arrays that the file lacks are
 // empty vectors; the header defaults stand in for them. encodeHair(decodeHair(bytes)) == bytes for
 // every file decodeHair accepts (the info block is kept verbatim), so a round trip is byte-exact.
 // decodeHair validates everything before trusting it and throws hp::Error naming the source and the

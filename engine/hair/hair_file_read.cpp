@@ -1,4 +1,4 @@
-// Decoding and validation of .hair files (REFERENCES.md §5).
+// Decoding and validation of .hair files (docs/THEORY.md §8.1).
 #include <bit>
 #include <cmath>
 #include <cstring>

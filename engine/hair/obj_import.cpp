@@ -1,5 +1,8 @@
 #include "engine/hair/obj_import.h"
 
+// tinyobjloader (libtinyobjloader-dev) is compiled into hairpipe here, so the library carries it and an
+// application links nothing for it (this file is kept out of unity batches: the macro must not leak).
+#define TINYOBJLOADER_IMPLEMENTATION
 #include <tiny_obj_loader.h>
 
 #include <cmath>

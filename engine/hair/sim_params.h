@@ -1,5 +1,5 @@
 #pragma once
-// Contract: parameters of the guide simulation (REFERENCES.md §2). Units are scene units (metres for
+// Contract: parameters of the guide simulation (docs/THEORY.md §2). Units are scene units (metres for
 // the default head) and seconds. validate() throws hp::Error naming the first bad field: NaN/Inf,
 // dt <= 0, iterations outside [1, 1000], negative radii, damping outside [0, 1], and so on.
 #include <glm/glm.hpp>

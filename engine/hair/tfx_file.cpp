@@ -1,4 +1,4 @@
-// Decoding and validation of TressFX .tfx files (REFERENCES.md §9).
+// Decoding and validation of TressFX .tfx files (docs/THEORY.md §8.2).
 #include "engine/hair/tfx_file.h"
 
 #include <bit>

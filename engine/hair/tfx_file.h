@@ -1,5 +1,5 @@
 #pragma once
-// Contract: AMD TressFX 4 asset files (.tfx, REFERENCES.md §9), little-endian: a 160-byte header
+// Contract: AMD TressFX 4 asset files (.tfx, docs/THEORY.md §8.2), little-endian: a 160-byte header
 // (version, numHairStrands, numVerticesPerStrand, byte offsets of positions, strand UVs, vertex
 // UVs, strand thickness, vertex colours; 0 = absent), then the arrays where the offsets say.
 // decodeTfx validates everything before allocating: header size, strand count > 0, vertices per

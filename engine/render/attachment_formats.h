@@ -1,7 +1,7 @@
 #pragma once
 // Contract: what the draw passes render into: colour and depth formats and the sample count. Given
 // by the embedding application (its own attachments) or by RenderTargets (hairpipe's offscreen ones).
-#include <volk.h>
+#include "hairpipe_volk.h"
 
 namespace hp::render {
 struct AttachmentFormats {

@@ -17,8 +17,8 @@ CameraMatrices orbitCamera(const CameraSpec& c, float aspect) {
   CameraMatrices m;
   m.position = c.target + offset * c.distance;
   m.fovY = glm::radians(c.fovDeg);
-  m.view = glm::lookAt(m.position, c.target, glm::vec3(0, 1, 0));
-  m.proj = glm::perspective(m.fovY, aspect, 0.02f * c.distance, 20.0f * c.distance);
+  m.view = glm::lookAtRH(m.position, c.target, glm::vec3(0, 1, 0));
+  m.proj = glm::perspectiveRH_ZO(m.fovY, aspect, 0.02f * c.distance, 20.0f * c.distance);
   return m;
 }
 }  // namespace hp

@@ -4,7 +4,7 @@
 #include "engine/hair/scene.h"
 #include "engine/render/camera.h"
 #include "engine/render/opacity_settings.h"
-#include <volk.h>
+#include "hairpipe_volk.h"
 
 #include <string>
 

@@ -35,14 +35,14 @@ HeadShadowView headShadowView(const LightSpec& light, const HeadSphere& heads, s
   float texelWorld = 2.0f * r / float(resolution);
   if (light.type == LightSpec::Type::Directional) {
     const glm::vec3 eye = heads.centre + toward * (2.0f * r);
-    v.viewProj = glm::orthoRH_ZO(-r, r, -r, r, r, 3.0f * r) * glm::lookAt(eye, heads.centre, perpendicular(toward));
+    v.viewProj = glm::orthoRH_ZO(-r, r, -r, r, r, 3.0f * r) * glm::lookAtRH(eye, heads.centre, perpendicular(toward));
   } else {
     const glm::vec3 eye = light.position;
     const float dist = glm::length(heads.centre - eye);
     const float half = dist > 1.05f * r ? std::asin(r / dist) : glm::radians(std::min(light.coneDeg + 5.0f, 85.0f));
     const glm::vec3 axis = dist > 1e-6f ? (heads.centre - eye) / dist : -toward;
     v.viewProj = glm::perspectiveRH_ZO(2.0f * half, 1.0f, std::max(dist - r, 0.01f * r), dist + r) *
-                 glm::lookAt(eye, eye + axis, perpendicular(axis));
+                 glm::lookAtRH(eye, eye + axis, perpendicular(axis));
     texelWorld = 2.0f * std::tan(half) * dist / float(resolution);
   }
   v.params = glm::vec4(1.0f, kOffsetTexels * texelWorld, 1.0f / float(resolution), 0.0f);

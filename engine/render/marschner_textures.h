@@ -1,5 +1,5 @@
 #pragma once
-// Contract: the device side of one Marschner material in one LutMode (REFERENCES §3, docs/SHADING.md):
+// Contract: the device side of one Marschner material in one LutMode (docs/THEORY.md §3.7, docs/SHADING.md):
 // the lookup textures built on the CPU by buildLut() and uploaded as sampled images (RGBA8 UNORM for
 // paper, RGBA16F for float; formats and sizes come from the LutTexture), one linear clamp-to-edge
 // sampler, a 1x1 dummy image for the slots a mode does not sample (direct: all three; paper: N1), and
@@ -21,7 +21,7 @@
 // that returned true. An invalid material, or a LUT format the device cannot filter linearly (RGBA32F
 // on request), throws hp::Error and leaves the old state; a Vulkan failure during the upload itself
 // throws too and leaves the textures unusable.
-#include <volk.h>
+#include "hairpipe_volk.h"
 
 #include <cstdint>
 

@@ -1,5 +1,5 @@
 #pragma once
-// Contract: one hair instance's part of the opacity pass (REFERENCES.md §4, shaders/opacity*.vert/.frag,
+// Contract: one hair instance's part of the opacity pass (docs/THEORY.md §5, shaders/opacity*.vert/.frag,
 // shaders/shared/opacity.h): draws its render strands (lines, one draw per chunk) and its head mesh (an
 // occluder with a large opacity) from the light into the shared ShadowMaps with additive blending, so
 // slice i holds alpha(z_i) of every instance together. The light framing comes from the maps' LightSpace
@@ -12,7 +12,7 @@
 // recordDraws() / recordHeadDraw() go between ShadowMaps::beginRendering and endRendering
 // (hp::recordShadowPasses). They insert no barriers; the frame recorder guarantees strand positions and
 // LightSpace visible to BufferUse::VertexRead before them (ComputeRead before recordSplats).
-#include <volk.h>
+#include "hairpipe_volk.h"
 
 #include <glm/glm.hpp>
 

@@ -1,7 +1,7 @@
 #pragma once
-// Contract: the opacity shadow map settings of a HairSystem (REFERENCES.md §4; engine/render/README.md
+// Contract: the opacity shadow map settings of a HairSystem (docs/THEORY.md §5; engine/render/README.md
 // "Opacity shadow maps"). Pure host data; validate() throws hp::Error naming the field.
-#include <volk.h>
+#include "hairpipe_volk.h"
 
 #include <cstdint>
 #include <string>

@@ -4,7 +4,7 @@
 // depth shadow map with its compare sampler (fragment shader, head_shadow.glsl), and the head bounce map's
 // two images (head_bounce.glsl). Handles owned by ShadowMaps (opacity image, LightSpace, head depth map,
 // bounce map); valid while the Renderer lives.
-#include <volk.h>
+#include "hairpipe_volk.h"
 
 namespace hp::render {
 struct ShadowInputs {

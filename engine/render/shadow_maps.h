@@ -1,6 +1,6 @@
 #pragma once
 // Contract: the opacity shadow maps of one light, shared by every hair instance a Renderer draws, so
-// heads shadow each other (REFERENCES.md §4; engine/render/README.md "Opacity shadow maps"). Owns the
+// heads shadow each other (docs/THEORY.md §5; engine/render/README.md "Opacity shadow maps"). Owns the
 // LightSpace buffer the bounds pass of every instance reduces into (one framing over all of them), the
 // 2D-array image of 4 RGBA layers = 16 slices every instance's OpacityPass draws into, and its sampler.
 // beginRendering()/endRendering() open and close the additive rendering into the 4 layers (cleared to 0);

@@ -1,5 +1,5 @@
 #pragma once
-// Contract: the exit azimuth Phi(p, gamma_i) of REFERENCES §3 and the root finding that N_p needs.
+// Contract: the exit azimuth Phi(p, gamma_i) of docs/THEORY.md §3.4 and the root finding that N_p needs.
 // Cubic form: Phi(p, g) = (6pc/pi - 2) g - (8pc/pi^3) g^3 + p pi, c = asin(1/eta').
 // azimuthRoots() returns every gamma in [-pi/2, pi/2] with Phi(p, gamma) = phi + 2 pi k for ANY
 // integer k (p = 0, 1, 2 ...), each polished by Newton steps. The exact TRT form

@@ -1,7 +1,7 @@
 #pragma once
 // Contract: the two fibre models and their exact (double) S behind one call. Physical is the
-// energy-conserving model (physical.h, REFERENCES §3b, LutMode::Physical); Marschner is the paper's
-// 2003 model (marschner.h, §3) that the direct, paper and float modes evaluate.
+// energy-conserving model (physical.h, docs/THEORY.md §4, LutMode::Physical); Marschner is the paper's
+// 2003 model (marschner.h, §3 there) that the direct, paper and float modes evaluate.
 #include <glm/glm.hpp>
 
 #include "engine/shading/lut.h"

@@ -7,7 +7,7 @@
 //  - Physical: S cos theta_i = sum_p M_p(theta_i, theta_r) N_p(phi, theta_r) exactly, so W is
 //    sum_p [int M_p cos theta_i d theta_i] [int N_p d phi], each integral numerical (the model's own
 //    identities are not assumed);
-//  - Marschner (the paper's model, REFERENCES §3): S does not factor (1/cos^2 theta_d), so W is a
+//  - Marschner (the paper's model, docs/THEORY.md §3): S does not factor (1/cos^2 theta_d), so W is a
 //    2D quadrature over (theta_i, phi) of the exact S; `panels` 8-node panels per axis.
 #include <array>
 

@@ -1,12 +1,12 @@
 #pragma once
-// Contract: CPU construction of the Marschner lookup textures (REFERENCES §3, docs/SHADING.md).
+// Contract: CPU construction of the Marschner lookup textures (docs/THEORY.md §3.7, docs/SHADING.md).
 //  - LutMode::Paper: the paper's two RGBA8 128x128 textures (M over (sin theta_i, sin theta_r) with
 //    cos theta_d in alpha; N over (cos phi, cos theta_d) with N_R in alpha and N_TT + N_TRT in rgb),
 //    each channel rescaled into [0, 1] by its own factor (LutTexture::scale undoes it).
 //  - LutMode::Float: RGBA16F (or RGBA32F on request) M (1D) and N0/N1 (2D) over the pseudo-angle
 //    parameterisation of shaders/shared/marschner.h; separate lobes; scale = 1.
 //  - LutMode::Direct: no textures.
-//  - LutMode::Physical: the energy-conserving model (REFERENCES §3b), RGBA16F M (2D over theta_i,
+//  - LutMode::Physical: the energy-conserving model (docs/THEORY.md §4), RGBA16F M (2D over theta_i,
 //    theta_r) and N0/N1 (over phi, theta_r); scale = 1. The other three modes are the paper's model.
 // Texel data are floats already quantised to the GPU format (RGBA8: k/255), row-major, 4 channels,
 // row 0 at v = 0; texel (i, j) sits at texture coordinate ((i + 0.5)/width, (j + 0.5)/height).

@@ -1,4 +1,4 @@
-// `physical` mode LUT (REFERENCES §3b, the paper's two-texture structure): M over (signed
+// `physical` mode LUT (docs/THEORY.md §4.6, the paper's two-texture structure): M over (signed
 // pseudo-angle of theta_i, of theta_r), N0/N1 over (pseudo-angle of phi/2, of |theta_r|).
 // Shader side: marschnerPhysicalCoords in shaders/shared/marschner.h, marschnerLutPhysical in
 // shaders/marschner.glsl.

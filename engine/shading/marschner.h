@@ -1,5 +1,5 @@
 #pragma once
-// Contract: the exact Marschner scattering function S of REFERENCES §3, double precision, per RGB.
+// Contract: the exact Marschner scattering function S of docs/THEORY.md §3, double precision, per RGB.
 //   S = sum_p M_p(theta_h) N_p(theta_d, phi) / cos^2(theta_d),  p in {R, TT, TRT}.
 // Inputs: L (toward light), V (toward eye), T (tangent); need not be normalised, must be non-zero.
 // Degenerate cases are finite, never NaN:

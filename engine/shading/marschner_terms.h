@@ -1,5 +1,5 @@
 #pragma once
-// Contract: the separate factors of the exact Marschner S (REFERENCES §3), double precision, for one
+// Contract: the separate factors of the exact Marschner S (docs/THEORY.md §3), double precision, for one
 // material. Angles in radians; theta_h, theta_d as defined there; phi in [0, pi] (N_p is even in phi
 // and in theta_d, so callers may pass either sign). lobe p: 0 = R, 1 = TT, 2 = TRT.
 // N_p is the sum over ALL roots of the cubic Phi; N_TRT includes the caustic handling.
@@ -11,7 +11,7 @@
 namespace hp::shading {
 inline constexpr double kMinDPhi = 1e-12;
 
-double gaussian(double beta, double x);  // g(b, x) of REFERENCES §3
+double gaussian(double beta, double x);  // g(b, x) of docs/THEORY.md §3.3
 double longitudinalAlpha(int p, const HairMaterial& m);
 double longitudinalBeta(int p, const HairMaterial& m);
 double lobeM(int p, double thetaH, const HairMaterial& m);

@@ -1,6 +1,6 @@
 #pragma once
-// Contract: the hair fibre material of the Marschner model (REFERENCES.md §3) and of the physical
-// model (§3b: the same eta, absorption, alpha_R, beta_R, plus the azimuthal width betaN). Angles are stored in
+// Contract: the hair fibre material of the Marschner model (docs/THEORY.md §3.6) and of the physical
+// model (§4: the same eta, absorption, alpha_R, beta_R, plus the azimuthal width betaN). Angles are stored in
 // radians; absorption sigma_a is per unit fibre radius, per RGB channel. validate() throws hp::Error
 // naming the first bad field (NaN, negative, or outside the physically meaningful range).
 #include <glm/glm.hpp>
@@ -15,7 +15,7 @@ struct HairMaterial {
   double wc = glm::radians(15.0);                     // caustic azimuthal width (radians)
   double dEta = 0.3;                                  // caustic fade range for eta'
   double dhM = 0.5;                                   // caustic maximum h range
-  // Physical model only (REFERENCES §3b): std. dev. of the azimuthal scattering lobe D (radians).
+  // Physical model only (docs/THEORY.md §4.2): std. dev. of the azimuthal scattering lobe D (radians).
   double betaN = glm::radians(10.0);
 
   void validate() const;

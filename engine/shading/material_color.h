@@ -3,7 +3,7 @@
 //
 // Meaning of the colour (documented choice): rgb is the fraction of light that survives ONE straight
 // pass through the centre of the fibre at normal incidence (theta_d = 0, h = 0, chord = 2 radii),
-// Fresnel ignored. With REFERENCES §3's T = exp(-2 sigma_a' cos gamma_t) at gamma_t = 0 that gives
+// Fresnel ignored. With docs/THEORY.md §3.4's T = exp(-2 sigma_a' cos gamma_t) at gamma_t = 0 that gives
 //     sigma_a = -ln(c) / 2     (per unit fibre radius).
 // Why this and not Chiang et al. 2016's sigma_a = (ln c / f(beta_n))^2: that fit targets the
 // multiple-scattering colour of a rough d'Eon/Chiang fibre and depends on its azimuthal roughness

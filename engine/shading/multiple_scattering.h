@@ -1,6 +1,6 @@
 #pragma once
 // Contract: the per-material tables of hairpipe's multiple-scattering term for the physical fibre model
-// (REFERENCES.md §7: Zinke et al. 2008's dual scattering; docs/SHADING.md "Multiple scattering"), in
+// (docs/THEORY.md §6: Zinke et al. 2008's dual scattering; docs/SHADING.md "Multiple scattering"), in
 // double precision, at `entries` sines of theta evenly spaced over [-1, 1] (the ends evaluated at
 // +-kEdgeSine, where cos theta > 0):
 //  - forwardAlbedo a_f: the fraction of the light arriving at theta that one fibre sends on into the far

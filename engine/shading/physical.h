@@ -1,6 +1,6 @@
 #pragma once
 // Contract: the exact (double precision) S of the energy-conserving `physical` fibre model
-// (REFERENCES.md §3b; conventions in engine/shading/physical_terms.h):
+// (docs/THEORY.md §4; conventions in engine/shading/physical_terms.h):
 //   S = [M_R N_R + M_TT N_TT + M_TRT (N_TRT + N_res)] / cos theta_i,
 // so that the shaders' radiance S cos(theta_i) E is the fibre's far-field scattering and
 // int S cos(theta_i) d omega_i <= 1 (= 1 without absorption). The residual (p >= 3) takes the TRT

@@ -1,5 +1,5 @@
 #pragma once
-// Contract: the factors of the energy-conserving fibre model (REFERENCES.md §3b: d'Eon et al. 2011
+// Contract: the factors of the energy-conserving fibre model (docs/THEORY.md §4: d'Eon et al. 2011
 // longitudinal terms, Chiang et al. 2016 / pbrt-v3 attenuations and residual), double precision.
 // Conventions (docs/SHADING.md "physical"):
 //  - theta_i, theta_r are the longitudinal angles of L and V (sin = dot with the unit tangent), phi the

@@ -4,7 +4,7 @@
 // (the head shadow map, the head bounce map, the offscreen renderer); a colour image in the ColorAttachment
 // layout, stored, cleared to `clear` when `load` is CLEAR (the opacity slices, the head bounce map, the
 // offscreen renderer).
-#include <volk.h>
+#include "hairpipe_volk.h"
 
 namespace hp::vk {
 VkRenderingAttachmentInfo depthAttachment(VkImageView view, VkAttachmentLoadOp load, VkAttachmentStoreOp store);

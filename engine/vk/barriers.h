@@ -3,7 +3,7 @@
 // A use is a small semantic enum; the one switch in barriers.cpp maps it to stage, access and (for
 // images) layout, so a barrier reads as "from what to what" and cannot mismatch stage and access.
 // The context gives the device's function table (cmd is one of its command buffers).
-#include <volk.h>
+#include "hairpipe_volk.h"
 
 #include <cstdint>
 

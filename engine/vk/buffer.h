@@ -2,7 +2,7 @@
 // Contract: a VkBuffer with its own VkDeviceMemory, move-only, destroyed with its owner. The caller
 // guarantees the GPU no longer uses it when it is destroyed (frame owners wait on their fences).
 // Host-visible kinds are persistently mapped; `mapped()` is null for device-local memory.
-#include <volk.h>
+#include "hairpipe_volk.h"
 
 #include <cstdint>
 

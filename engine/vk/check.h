@@ -1,7 +1,7 @@
 #pragma once
 // Contract: every VkResult hairpipe receives goes through check(). A failure throws hp::Error whose
 // message names the call and the VkResult (e.g. "vkAllocateMemory failed: VK_ERROR_OUT_OF_DEVICE_MEMORY").
-#include <volk.h>
+#include "hairpipe_volk.h"
 
 #include <cstdint>
 

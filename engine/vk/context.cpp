@@ -57,6 +57,14 @@ void initializeLoader() {
   loaded = true;
 }
 
+// hairpipe's private volk copy (hpvk_* symbols) holds the instance-level functions; device functions go
+// into each context's table. The application's own loader or volk globals are other symbols, never touched.
+void loadInstanceFunctions(PFN_vkGetInstanceProcAddr getInstanceProcAddr, VkInstance instance) {
+  if (volkGetLoadedInstance() == instance) return;
+  volkInitializeCustom(getInstanceProcAddr);
+  volkLoadInstanceOnly(instance);
+}
+
 bool instanceLayerAvailable(const char* name) {
   initializeLoader();
   std::uint32_t count = 0;
@@ -83,12 +91,7 @@ std::unique_ptr<Context> Context::adopt(const ExternalDevice& external) {
       !external.queue)
     throw Error("Context::adopt: every handle of ExternalDevice (getInstanceProcAddr, instance, physicalDevice, "
                 "device, queue) must be set");
-  // The application may use volk itself: its instance functions stay as they are when it loaded this
-  // instance; its device functions are never touched (hairpipe's are in ctx->fn_).
-  if (volkGetLoadedInstance() != external.instance) {
-    volkInitializeCustom(external.getInstanceProcAddr);
-    volkLoadInstanceOnly(external.instance);
-  }
+  loadInstanceFunctions(external.getInstanceProcAddr, external.instance);
   std::unique_ptr<Context> ctx(new Context());
   ctx->instance_ = external.instance;
   ctx->physical_ = external.physicalDevice;

@@ -1,15 +1,17 @@
 #pragma once
 // Contract: the Vulkan instance/device hairpipe works with, either created headless by hairpipe
 // (createHeadless) or handed over by the embedding application (adopt). It owns only what it created.
-// Device functions are called through the context's own table (volk's VolkDeviceTable, fn()), never
-// through volk's process-wide pointers: adopt() leaves an application's volk globals as they are (it
-// loads volk's instance-level functions only when volk has no instance loaded, or another one), and
-// several contexts may drive several devices in one process. createHeadless also loads the volk globals
-// for its device: a headless context is its program's only device (the tool, the tests).
+// Device functions are called through the context's own table (volk's VolkDeviceTable, fn()), so several
+// contexts may drive several devices in one process. Instance-level functions live in hairpipe's private
+// copy of volk (third_party/volk: its globals are renamed hpvk_*), loaded from the vkGetInstanceProcAddr
+// the application hands over (adopt) or from libvulkan (createHeadless); an application's own loader
+// symbols or volk globals are never defined or touched by hairpipe. createHeadless also loads the
+// private device-level globals for its device: a headless context is its program's only device (the
+// tool, the tests).
 // Required: Vulkan 1.3 with dynamicRendering and synchronization2 enabled, and a graphics+compute queue.
 // With validation on, VK_LAYER_KHRONOS_validation runs with synchronization validation and every
 // message lands in validationLog(); a missing layer is an error, never a silent downgrade.
-#include <volk.h>
+#include "hairpipe_volk.h"
 
 #include <cstdint>
 
@@ -129,5 +131,7 @@ class Context {
 
 // Loads the Vulkan loader through volk once per process; throws hp::Error when it is missing.
 void initializeLoader();
+// Loads hairpipe's instance-level functions for `instance` through the application's loader entry point.
+void loadInstanceFunctions(PFN_vkGetInstanceProcAddr getInstanceProcAddr, VkInstance instance);
 bool instanceLayerAvailable(const char* name);
 }  // namespace hp::vk

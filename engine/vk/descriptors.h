@@ -2,7 +2,7 @@
 // Contract: one descriptor set together with its layout and a pool sized exactly for it, move-only.
 // Passes declare their bindings once (numbers from the shared GLSL/C++ header) and write resources
 // whenever the buffers behind them change; writes happen outside command recording.
-#include <volk.h>
+#include "hairpipe_volk.h"
 
 #include <cstdint>
 

@@ -1,7 +1,7 @@
 #pragma once
 // Contract: reads what each physical device offers (for selection and for `hairpipe info`) and decides
 // what hairpipe needs that it lacks. Needs a live instance; the decision logic is in device_selection.
-#include <volk.h>
+#include "hairpipe_volk.h"
 
 #include <cstdint>
 

@@ -5,7 +5,7 @@
 // fired. Arm only calls that have completed their work when they return (vkWaitForFences,
 // vkAllocateMemory...), so the state left behind is what a real failure of that call leaves. hairpipe's
 // tests use it for VK_ERROR_DEVICE_LOST; an application may use it to exercise its own handling.
-#include <volk.h>
+#include "hairpipe_volk.h"
 
 #include <string>
 

@@ -2,7 +2,7 @@
 // Contract: a 2D (array) image with its own device-local memory and views, move-only. view() covers all
 // layers (2D, or 2D_ARRAY when layers > 1); layerView(i) is a 2D view of one layer for attachments.
 // Layout tracking is the caller's job, through the named transitions in barriers.h.
-#include <volk.h>
+#include "hairpipe_volk.h"
 
 #include <cstdint>
 

@@ -1,7 +1,7 @@
 #pragma once
 // Contract: a bare instance for looking at devices (no device created, no validation), used by
 // `hairpipe info`. Destroys its instance on scope exit.
-#include <volk.h>
+#include "hairpipe_volk.h"
 
 #include <cstdint>
 

@@ -4,7 +4,7 @@
 // vertex pulling (no vertex input state); viewport and scissor are dynamic.
 // ComputePipeline knows its workgroup size (from the shared GLSL/C++ header), so dispatch() takes a
 // thread count and never a restated literal.
-#include <volk.h>
+#include "hairpipe_volk.h"
 
 #include <cstdint>
 

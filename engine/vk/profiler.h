@@ -3,7 +3,7 @@
 // begin()/end() around each scope (they may nest), results() after the submission has completed.
 // Times come from timestampPeriod and the queue's valid bits; on a device without timestamps every
 // call is a no-op and results() is empty (supported() says which).
-#include <volk.h>
+#include "hairpipe_volk.h"
 
 #include <cstdint>
 

@@ -9,7 +9,7 @@
 // first (they need the results). Object construction (Renderer, createInstance) opens one, so its
 // uploads cost one submission and one wait. A context is used by one thread at a time (its command
 // pool is not externally synchronized), so the open batch is per context.
-#include <volk.h>
+#include "hairpipe_volk.h"
 
 #include <cstdint>
 

@@ -1,7 +1,7 @@
 #pragma once
 // Contract: collects every message the validation layer (via VK_EXT_debug_utils) reports, thread-safely.
 // Tests fail on any warning or error recorded here; the CLI prints them to stderr.
-#include <volk.h>
+#include "hairpipe_volk.h"
 
 #include <cstdint>
 

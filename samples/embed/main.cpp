@@ -1,18 +1,20 @@
 // The embedding sample: an application that owns its Vulkan instance, device, queue, attachments and
-// command buffers, built against the installed package (find_package(hairpipe), <hairpipe/...> headers).
-// The application:
-//   1. creates its Vulkan 1.3 device (dynamicRendering + synchronization2, a graphics+compute queue) and
-//      loads it into volk's global functions for its own calls, as engines using volk do,
-//   2. hands the handles to hp::vk::Context::adopt (hairpipe keeps its own per-device function table) and
-//      creates one hp::Renderer for its attachment formats,
+// command buffers, built against the installed package (find_package(hairpipe), <hairpipe/hairpipe.h>).
+// It calls Vulkan through the loader (libvulkan) as many engines do; hairpipe loads its own functions
+// from the vkGetInstanceProcAddr it is handed. The application:
+//   1. creates its Vulkan 1.3 device (dynamicRendering + synchronization2, a graphics+compute queue),
+//   2. hands the handles to hairpipe::Context::adopt and creates one hairpipe::Renderer for its formats,
 //   3. creates two hair instances: one whose lower scalp is skinned to a jaw/neck bone, one rigid head,
 //   4. each frame records hairpipe's update, shadows and draw into ITS command buffer and ITS rendering,
-//      with two frames in flight (a command buffer and fence per slot),
+//      with two frames in flight (a command buffer and fence per slot); with --raster compute the hair
+//      is drawn by the compute rasterizer between two renderings, with the barriers the contract in
+//      <hairpipe/renderer.h> lists, written here in plain Vulkan,
 //   5. reads its colour attachment back, writes a PNG (libpng, its own), destroys hairpipe before its device.
-// Usage: hairpipe_embed [--validation] [--frames N] [--out FILE.png]
+// Every hairpipe call returns a Status or Result (no exceptions cross the boundary).
+// Usage: hairpipe_embed [--validation] [--frames N] [--raster graphics|compute] [--out FILE.png]
 // With --validation, VK_LAYER_KHRONOS_validation runs with synchronization validation; any message fails.
 #include <png.h>
-#include <volk.h>
+#include <vulkan/vulkan.h>
 
 #include <algorithm>
 #include <cmath>
@@ -24,16 +26,9 @@
 #include <string>
 #include <vector>
 
-#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/matrix_transform.hpp>  // the application's own math library
 
-#include <hairpipe/error.h>
-#include <hairpipe/hair/default_head.h>
-#include <hairpipe/hair/head_sdf.h>
-#include <hairpipe/renderer.h>
-#include <hairpipe/shading/material_color.h>
-#include <hairpipe/sim/head_animation.h>
-#include <hairpipe/vk/context.h>
-#include <hairpipe/vk/device_probe.h>
+#include <hairpipe/hairpipe.h>
 
 namespace {
 constexpr std::uint32_t kWidth = 160, kHeight = 120;
@@ -43,6 +38,20 @@ constexpr std::uint32_t kFramesInFlight = 2;
 
 void check(VkResult result, const char* what) {
   if (result != VK_SUCCESS) throw std::runtime_error(std::string(what) + " failed: VkResult " + std::to_string(result));
+}
+// hairpipe reports failures as values; this application turns them into its own exceptions.
+void check(const hairpipe::Status& status) {
+  if (!status) throw std::runtime_error(status.message());
+}
+template <class T>
+T take(hairpipe::Result<T> result) {
+  if (!result) throw std::runtime_error(result.message());
+  return std::move(result).value();
+}
+hairpipe::Mat4 toHairpipe(const glm::mat4& m) {
+  hairpipe::Mat4 out;
+  std::memcpy(out.m, &m, sizeof(out.m));  // both column-major
+  return out;
 }
 
 std::uint32_t validationMessages = 0;
@@ -78,7 +87,6 @@ struct App {
   Attachment color, depth;
 
   void createInstance(bool validation) {
-    check(volkInitialize(), "volkInitialize (no Vulkan loader)");
     VkApplicationInfo appInfo{VK_STRUCTURE_TYPE_APPLICATION_INFO};
     appInfo.pApplicationName = "hairpipe_embed";
     appInfo.apiVersion = VK_API_VERSION_1_3;
@@ -94,13 +102,14 @@ struct App {
     ii.enabledExtensionCount = 1;
     ii.ppEnabledExtensionNames = &ext;
     check(vkCreateInstance(&ii, nullptr, &instance), "vkCreateInstance");
-    volkLoadInstance(instance);
     if (validation) {
+      auto createMessenger = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
+          vkGetInstanceProcAddr(instance, "vkCreateDebugUtilsMessengerEXT"));
       VkDebugUtilsMessengerCreateInfoEXT mi{VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
       mi.messageSeverity = VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
       mi.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT;
       mi.pfnUserCallback = onMessage;
-      check(vkCreateDebugUtilsMessengerEXT(instance, &mi, nullptr, &messenger), "vkCreateDebugUtilsMessengerEXT");
+      check(createMessenger(instance, &mi, nullptr, &messenger), "vkCreateDebugUtilsMessengerEXT");
     }
   }
 
@@ -110,7 +119,7 @@ struct App {
     std::vector<VkPhysicalDevice> devices(count);
     check(vkEnumeratePhysicalDevices(instance, &count, devices.data()), "vkEnumeratePhysicalDevices");
     for (VkPhysicalDevice d : devices)  // the first device hairpipe can run on
-      if (hp::vk::unfitReasons(d).empty()) {
+      if (hairpipe::unfitReasons(vkGetInstanceProcAddr, instance, d).empty()) {
         physical = d;
         break;
       }
@@ -131,13 +140,12 @@ struct App {
     qi.queueCount = 1;
     qi.pQueuePriorities = &priority;
     VkPhysicalDeviceVulkan13Features v13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
-    v13.dynamicRendering = VK_TRUE;  // what hp::vk::requirements() lists
+    v13.dynamicRendering = VK_TRUE;  // what hairpipe::requirements() lists
     v13.synchronization2 = VK_TRUE;
     VkDeviceCreateInfo di{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO, &v13};
     di.queueCreateInfoCount = 1;
     di.pQueueCreateInfos = &qi;
     check(vkCreateDevice(physical, &di, nullptr, &device), "vkCreateDevice");
-    volkLoadDevice(device);  // the application's own calls go through volk's globals
     vkGetDeviceQueue(device, family, 0, &queue);
     VkCommandPoolCreateInfo pi{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
     pi.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
@@ -224,7 +232,9 @@ struct App {
       if (f) vkDestroyFence(device, f, nullptr);
     if (pool) vkDestroyCommandPool(device, pool, nullptr);
     if (device) vkDestroyDevice(device, nullptr);
-    if (messenger) vkDestroyDebugUtilsMessengerEXT(instance, messenger, nullptr);
+    if (messenger)
+      reinterpret_cast<PFN_vkDestroyDebugUtilsMessengerEXT>(
+          vkGetInstanceProcAddr(instance, "vkDestroyDebugUtilsMessengerEXT"))(instance, messenger, nullptr);
     if (instance) vkDestroyInstance(instance, nullptr);
     *this = {};
   }
@@ -279,21 +289,24 @@ VkRenderingAttachmentInfo attachmentInfo(VkImageView view, VkImageLayout layout,
 
 // [embed-readme-begin]
 // One frame of the application: hairpipe's update and shadows outside rendering, then the application's
-// own rendering (its colour + depth attachments) with hairpipe's draw inside it.
-void recordFrame(VkCommandBuffer cmd, const App& app, hp::Renderer& renderer, std::uint64_t frame,
-                 std::span<hp::HairInstance* const> heads, const hp::LightSpec& light, const hp::View& view) {
+// own rendering (its colour + depth attachments) with hairpipe's draw inside it. With the compute
+// rasterizer, the hair is drawn between that rendering and a second one of the same attachments.
+void recordFrame(VkCommandBuffer cmd, const App& app, hairpipe::Renderer& renderer, std::uint64_t frame,
+                 std::span<hairpipe::Instance* const> heads, const hairpipe::Light& light,
+                 const hairpipe::View& view) {
+  const bool compute = renderer.raster() == hairpipe::RasterMode::Compute;
   VkCommandBufferBeginInfo bi{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
   bi.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
   check(vkBeginCommandBuffer(cmd, &bi), "vkBeginCommandBuffer");
-  renderer.recordUpdate(cmd, frame, heads);          // simulate, tessellate, interpolate
-  renderer.recordShadows(cmd, frame, light, heads);  // one opacity map set: heads shadow each other
+  check(renderer.recordUpdate(cmd, frame, heads));          // simulate, tessellate, interpolate
+  check(renderer.recordShadows(cmd, frame, light, heads));  // one opacity map set: heads shadow each other
   beginAttachments(cmd, app);
   VkRenderingAttachmentInfo color = attachmentInfo(app.color.view, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
                                                    VK_ATTACHMENT_STORE_OP_STORE, {{{0.2f, 0.25f, 0.3f, 1.0f}}});
   VkClearValue far{};
   far.depthStencil = {1.0f, 0};
   VkRenderingAttachmentInfo depth = attachmentInfo(app.depth.view, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL,
-                                                   VK_ATTACHMENT_STORE_OP_DONT_CARE, far);
+                                                   compute ? VK_ATTACHMENT_STORE_OP_STORE : VK_ATTACHMENT_STORE_OP_DONT_CARE, far);
   VkRenderingInfo ri{VK_STRUCTURE_TYPE_RENDERING_INFO};
   ri.renderArea = {{0, 0}, {kWidth, kHeight}};
   ri.layerCount = 1;
@@ -301,8 +314,28 @@ void recordFrame(VkCommandBuffer cmd, const App& app, hp::Renderer& renderer, st
   ri.pColorAttachments = &color;
   ri.pDepthAttachment = &depth;
   vkCmdBeginRendering(cmd, &ri);
-  renderer.recordDraw(cmd, frame, view, heads);      // heads + hair; more views: View::index 1, 2...
+  check(renderer.recordDraw(cmd, frame, view, heads));      // heads (+ hair ribbons in graphics mode)
   vkCmdEndRendering(cmd);
+  if (compute) {
+    constexpr VkPipelineStageFlags2 kDepthStages =
+        VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT;
+    transition(cmd, app.depth.image, VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL,
+               VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, kDepthStages, VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
+               VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
+    check(renderer.recordRaster(cmd, frame, view));         // the hair of every head, against the depth
+    transition(cmd, app.depth.image, VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+               VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_NONE,
+               kDepthStages, VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT | VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT);
+    transition(cmd, app.color.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+               VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+               VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+               VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT);
+    color.loadOp = depth.loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;
+    depth.storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
+    vkCmdBeginRendering(cmd, &ri);
+    check(renderer.recordComposite(cmd, {kWidth, kHeight}));  // the hair over the colour
+    vkCmdEndRendering(cmd);
+  }
   check(vkEndCommandBuffer(cmd), "vkEndCommandBuffer");
 }
 
@@ -315,52 +348,54 @@ glm::mat4 jawBone(const glm::vec3& pivot, double t) {
 
 // Skinning data as an application's exporter would give it: roots below the cranium's centre follow the
 // jaw bone (1), those well above it the skull (0), blended in between; up to 4 bones per guide root.
-hp::ScalpInput jawSkin(const hp::HairAsset& asset, const glm::vec3& pivot) {
-  hp::ScalpInput scalp;
-  scalp.kind = hp::ScalpInput::Kind::Bones;  // or RootFrames (your skinning's buffer), or Rigid
+hairpipe::ScalpInput jawSkin(const hairpipe::Asset& asset, const glm::vec3& pivot) {
+  hairpipe::ScalpInput scalp;
+  scalp.kind = hairpipe::ScalpInput::Kind::Bones;  // or RootFrames (your skinning's buffer), or Rigid
   scalp.boneCount = 2;
-  for (std::uint32_t g = 0; g < asset.guides.guideCount(); ++g) {
-    const float w = std::clamp((pivot.y + 0.04f - asset.guides.guide(g)[0].y) / 0.04f, 0.0f, 1.0f);
-    scalp.skin.push_back({glm::uvec4(0, 1, 0, 0), glm::vec4(1.0f - w, w, 0.0f, 0.0f)});
+  for (const hairpipe::Vec3& root : asset.guideRoots()) {
+    const float w = std::clamp((pivot.y + 0.04f - root.y) / 0.04f, 0.0f, 1.0f);
+    scalp.skin.push_back({{0, 1, 0, 0}, {1.0f - w, w, 0.0f, 0.0f}});
   }
   return scalp;
 }
 
-void renderFrames(App& app, std::uint32_t frames) {
+// A nodding head: +-0.1 rad about the x axis at 1 Hz.
+glm::mat4 nod(double t) { return glm::rotate(glm::mat4(1.0f), 0.1f * float(std::sin(6.2831853 * t)), {1, 0, 0}); }
+
+void renderFrames(App& app, std::uint32_t frames, hairpipe::RasterMode raster) {
   // Your device: Vulkan 1.3, dynamicRendering + synchronization2 enabled, a graphics+compute queue.
-  auto ctx = hp::vk::Context::adopt(
-      {vkGetInstanceProcAddr, app.instance, app.physical, app.device, app.family, app.queue, true});
-  hp::RendererSettings rs;
+  hairpipe::Context ctx = take(hairpipe::Context::adopt(
+      {vkGetInstanceProcAddr, app.instance, app.physical, app.device, app.family, app.queue, true}));
+  hairpipe::RendererSettings rs;
   rs.formats = {kColor, kDepth, VK_SAMPLE_COUNT_1_BIT};  // your attachments
   rs.framesInFlight = kFramesInFlight;
-  hp::Renderer renderer(*ctx, rs);
+  rs.raster = raster;
+  hairpipe::Renderer renderer = take(hairpipe::Renderer::create(ctx, rs));
 
   // One asset (guides, head mesh, interpolation topology), two heads with their own state and material.
-  const hp::HairAsset asset =
-      hp::buildDefaultHeadAsset(hp::defaultHeadGrowth(), {hp::DensityOptions::Mode::Total, 8, 2000, 7});
-  const glm::vec3 pivot = hp::kCraniumCenter;  // the jaw bone turns about the cranium's centre
-  hp::InstanceSettings skinned;                // material, simulation, look, strand options
+  const hairpipe::Asset asset = take(hairpipe::defaultHeadAsset({hairpipe::Density::Mode::Total, 8, 2000, 7}));
+  const glm::vec3 pivot{0.0f, 0.005f, -0.012f};  // the jaw bone turns about the cranium's centre
+  hairpipe::InstanceSettings skinned;            // material, simulation, look, scalp input
   skinned.scalp = jawSkin(asset, pivot);
-  hp::InstanceSettings rigid;
-  rigid.material.absorption = hp::absorptionFromColor({0.85, 0.7, 0.45});  // blonde
+  hairpipe::InstanceSettings rigid;
+  rigid.material.absorption = take(hairpipe::absorptionFromColor(0.85f, 0.7f, 0.45f));  // blonde
   const glm::mat4 rigidPlace = glm::translate(glm::mat4(1.0f), {0.32f, 0.0f, -0.1f});
-  auto jaw = renderer.createInstance(asset, skinned);
-  auto other = renderer.createInstance(asset, rigid, rigidPlace);
-  hp::HairInstance* heads[] = {jaw.get(), other.get()};
+  hairpipe::Instance jaw = take(renderer.createInstance(asset, skinned));
+  hairpipe::Instance other = take(renderer.createInstance(asset, rigid, toHairpipe(rigidPlace)));
+  hairpipe::Instance* heads[] = {&jaw, &other};
+  if (raster == hairpipe::RasterMode::Compute) check(renderer.setRasterTarget({kWidth, kHeight}, app.depth.view, heads));
 
-  hp::Scene scene;
-  scene.camera.target.x = 0.16f;
-  scene.camera.distance = 1.2f;
-  const hp::View view{hp::orbitCamera(scene.camera, float(kWidth) / kHeight), {kWidth, kHeight}};
+  const hairpipe::View view = take(hairpipe::makeView(
+      {{0.751f, 0.128f, 1.023f}, {0.16f, -0.08f, 0.0f}, {0.0f, 1.0f, 0.0f}, 0.6109f, 0.024f, 24.0f}, {kWidth, kHeight}));
+  const hairpipe::Light light;  // the default sun
   for (std::uint32_t f = 0; f < frames; ++f) {
     const std::uint32_t slot = f % kFramesInFlight;
     app.waitSlot(slot);  // frame f - kFramesInFlight is done: its slot and command buffer are free
     const double t0 = f / 60.0, t1 = (f + 1) / 60.0;
-    const glm::mat4 bones[] = {glm::mat4(1.0f), jawBone(pivot, t1)};
-    jaw->setBones(bones);  // per-frame inputs: bones, colliders, motion
-    other->setMotion({rigidPlace * hp::headTransformAt(hp::HeadAnimation::Nod, t0, 0.1f),
-                      rigidPlace * hp::headTransformAt(hp::HeadAnimation::Nod, t1, 0.1f), t0, false});
-    recordFrame(app.cmds[slot], app, renderer, f, heads, scene.light, view);
+    const hairpipe::Mat4 bones[] = {toHairpipe(glm::mat4(1.0f)), toHairpipe(jawBone(pivot, t1))};
+    check(jaw.setBones(bones));  // per-frame inputs: bones, colliders, motion
+    check(other.setMotion({toHairpipe(rigidPlace * nod(t0)), toHairpipe(rigidPlace * nod(t1)), t0, false}));
+    recordFrame(app.cmds[slot], app, renderer, f, heads, light, view);
     app.submit(slot);
   }
   for (std::uint32_t slot = 0; slot < kFramesInFlight; ++slot) app.waitSlot(slot);
@@ -426,7 +461,7 @@ void writePng(const std::string& path, const std::vector<std::uint8_t>& rgba) {
   if (std::fclose(file) != 0) throw std::runtime_error("writing " + path + " failed");
 }
 
-int run(bool validation, std::uint32_t frames, const std::string& out) {
+int run(bool validation, std::uint32_t frames, hairpipe::RasterMode raster, const std::string& out) {
   App app;
   try {
     app.createInstance(validation);
@@ -434,11 +469,13 @@ int run(bool validation, std::uint32_t frames, const std::string& out) {
     app.createDevice();
     app.color = app.createAttachment(kColor, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
                                      VK_IMAGE_ASPECT_COLOR_BIT);
-    app.depth = app.createAttachment(kDepth, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT, VK_IMAGE_ASPECT_DEPTH_BIT);
-    renderFrames(app, frames);
+    // SAMPLED: the compute rasterizer reads the depth (renderer.h lists each image's usage).
+    app.depth = app.createAttachment(kDepth, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
+                                     VK_IMAGE_ASPECT_DEPTH_BIT);
+    renderFrames(app, frames, raster);
     writePng(out, readColor(app));
     app.destroy();
-  } catch (const std::exception& e) {  // hp::Error and the application's own errors
+  } catch (const std::exception& e) {  // hairpipe's failures (as the application raised them) and its own
     std::cerr << "hairpipe_embed: error: " << e.what() << "\n";
     app.destroy();
     return 1;
@@ -457,15 +494,20 @@ int main(int argc, char** argv) {
   bool validation = false;
   std::uint32_t frames = 30;
   std::string out = "embed.png";
+  hairpipe::RasterMode raster = hairpipe::RasterMode::Graphics;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--validation") validation = true;
     else if (a == "--frames" && i + 1 < argc) frames = static_cast<std::uint32_t>(std::stoul(argv[++i]));
     else if (a == "--out" && i + 1 < argc) out = argv[++i];
-    else {
-      std::cerr << "usage: hairpipe_embed [--validation] [--frames N] [--out FILE.png]\n";
+    else if (a == "--raster" && i + 1 < argc && std::string(argv[i + 1]) == "graphics") ++i;
+    else if (a == "--raster" && i + 1 < argc && std::string(argv[i + 1]) == "compute") {
+      raster = hairpipe::RasterMode::Compute;
+      ++i;
+    } else {
+      std::cerr << "usage: hairpipe_embed [--validation] [--frames N] [--raster graphics|compute] [--out FILE.png]\n";
       return 1;
     }
   }
-  return run(validation, frames, out);
+  return run(validation, frames, raster, out);
 }

@@ -5,7 +5,7 @@
 // image for the present to wait on. acquire()/present() report out of date or suboptimal instead of
 // throwing, and recreate() rebuilds everything for a new framebuffer size; the caller waits for the
 // device to be idle before recreate() and the destructor. Other failures throw hp::Error.
-#include <volk.h>
+#include "hairpipe_volk.h"
 
 #include <cstdint>
 #include <vector>

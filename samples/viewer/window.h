@@ -5,7 +5,7 @@
 // when GLFW cannot start (no display: say so) or has no Vulkan loader. A minimised window (iconified,
 // or a zero-size framebuffer, as some platforms report it) is not drawn: waitWhileMinimised() blocks,
 // handling events, until it is back or closed.
-#include <volk.h>
+#include "hairpipe_volk.h"
 
 #include <GLFW/glfw3.h>
 

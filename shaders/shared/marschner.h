@@ -1,4 +1,4 @@
-// Shared by GLSL and C++ (one source of truth for the Marschner shading interface, REFERENCES.md §3):
+// Shared by GLSL and C++ (one source of truth for the Marschner shading interface, docs/THEORY.md §3):
 // - the LUT mode values, LUT resolutions and the parameterisation constants;
 // - MarschnerParams, the GPU material + LUT-scale block (std140/std430-safe: 16-byte members only;
 //   C++ size/offset checks live in engine/shading/marschner_gpu.h);
@@ -34,7 +34,7 @@ HP_BEGIN
 HP_CONST(uint, MARSCHNER_MODE_DIRECT, 0u)     // analytic S in the shader, no textures
 HP_CONST(uint, MARSCHNER_MODE_LUT_PAPER, 1u)  // the paper's two RGBA8 128x128 textures
 HP_CONST(uint, MARSCHNER_MODE_LUT_FLOAT, 2u)  // three RGBA16F textures, separate lobes
-HP_CONST(uint, MARSCHNER_MODE_LUT_PHYSICAL, 3u)  // the energy-conserving model (REFERENCES §3b), RGBA16F
+HP_CONST(uint, MARSCHNER_MODE_LUT_PHYSICAL, 3u)  // the energy-conserving model (docs/THEORY.md §4), RGBA16F
 
 // `paper` mode: M (RGBA8) indexed by (sin theta_i, sin theta_r) * 0.5 + 0.5,
 // N (RGBA8) indexed by (cos phi * 0.5 + 0.5, cos theta_d). Both square.
@@ -128,7 +128,7 @@ HP_FN float marschnerAcos(float x) {
   return x < 0.0f ? 3.14159265f - r : r;
 }
 
-// (sin theta_i, sin theta_r, cos phi, 0) from unit-or-not L, V, T (REFERENCES §3, eqs. 4-7).
+// (sin theta_i, sin theta_r, cos phi, 0) from unit-or-not L, V, T (docs/THEORY.md §3.1).
 // Degenerate azimuth (L or V parallel to T): cos phi = 0, i.e. phi = pi/2.
 HP_FN vec4 marschnerAngles(vec3 L, vec3 V, vec3 T) {
   vec3 t = normalize(T);

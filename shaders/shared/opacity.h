@@ -1,4 +1,4 @@
-// Shared by GLSL and C++: opacity shadow maps (REFERENCES.md §4): the bounds pass
+// Shared by GLSL and C++: opacity shadow maps (docs/THEORY.md §5): the bounds pass
 // (compute/bounds_pass.h, shaders/bounds.comp), the opacity pass (engine/render/opacity_pass.h,
 // shaders/opacity*.vert/.frag) and the lookup in the shading passes (shaders/opacity_lookup.glsl).
 //

@@ -1,5 +1,5 @@
 // Shared by GLSL and C++: the compute strand rasterizer (compute/strand_raster_pass.h, shaders/raster_*.comp;
-// REFERENCES.md §8). One source of truth for bindings, tile and bin sizes, the per-frame state, the push
+// docs/THEORY.md §7). One source of truth for bindings, tile and bin sizes, the per-frame state, the push
 // constants and the coverage formula (plain arithmetic, compiled for both languages and tested on the CPU).
 //
 // Buffers (std430; V = S*Q render vertices, E = S*(Q-1) segments, K = tiles * RASTER_DEPTH_BINS keys):
@@ -121,7 +121,7 @@ HP_END
 // of the intersection. The square's projection onto n is the sum of two uniform variables of
 // half-widths a = |n.x|/2 and b = |n.y|/2; its CDF is (R(x+a+b) - R(x+a-b) - R(x-a+b) + R(x-a-b)) / 4ab
 // with R(x) = max(x, 0)^2 / 2 (linear when the band is axis-aligned), and the band covers
-// CDF(d + w/2) - CDF(d - w/2). The 1D box estimate of REFERENCES §8 is the axis-aligned case.
+// CDF(d + w/2) - CDF(d - w/2). The 1D box estimate of docs/THEORY.md §7.1 is the axis-aligned case.
 HP_BEGIN
 HP_RASTER_FN float rasterRamp(float x) {
   float m = max(x, 0.0f);

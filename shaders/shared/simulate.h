@@ -1,4 +1,4 @@
-// Shared by GLSL and C++: the guide simulation pass (REFERENCES.md §2).
+// Shared by GLSL and C++: the guide simulation pass (docs/THEORY.md §2).
 // Guide particles live in three storage buffers of vec4, P consecutive entries per guide, root first:
 //   positions  xyz world position now (w = 1)
 //   previous   xyz world position one substep ago (Verlet's implicit velocity)

@@ -58,7 +58,7 @@ TEST(CliUsage, UsageErrorsExitWithCodeOneAndHelpSucceeds) {
   EXPECT_EQ(runCli({"--version"}).exitCode, 0);
 }
 
-// The benchmark suites are subcommands of `bench` (issue 13): each has its help, a suite runs alone
+// The benchmark suites are subcommands of `bench`: each has its help, a suite runs alone
 // (the whole-frame bench does not run as well) and the former `bench-*` names are gone.
 TEST(CliBench, SuitesAreSubcommandsOfBench) {
   auto r = runCli({"bench", "--help"});

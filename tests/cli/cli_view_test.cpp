@@ -51,7 +51,7 @@ void expectHair(const std::filesystem::path& png, std::uint32_t width, std::uint
 bool saysValidation(const std::string& err) { return err.find("vulkan validation") != std::string::npos; }
 }  // namespace
 
-// The run: 30 frames and a screenshot. On the way the window is resized (frame 5), minimised for
+// The viewer's acceptance run: 30 frames and a screenshot. On the way the window is resized (frame 5), minimised for
 // 0.3 s (frame 12: nothing is drawn meanwhile, the frames still all come) and a present reports the
 // swapchain out of date (frame 20: recreated, the run goes on).
 TEST(CliView, ThirtyFramesShowHairAcrossAResizeAMinimiseAndAnOutOfDateSwapchain) {

@@ -1,5 +1,5 @@
 #pragma once
-// Double-precision CPU references of the tessellate and interpolate passes (REFERENCES.md §1), written
+// Double-precision CPU references of the tessellate and interpolate passes (docs/THEORY.md §1.3-1.4), written
 // from the definitions rather than from the shaders, plus helpers that run the GPU passes for tests.
 #include <glm/glm.hpp>
 

@@ -1,4 +1,4 @@
-// .hair reading and writing (REFERENCES.md §5): a hand-built file with every array, byte-exact
+// .hair reading and writing (docs/THEORY.md §8.1): a hand-built file with every array, byte-exact
 // round trips, and every refused input with its message.
 #include <gtest/gtest.h>
 

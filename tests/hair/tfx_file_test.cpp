@@ -1,4 +1,4 @@
-// TressFX .tfx import (REFERENCES.md §9): a synthetic file round-trips and imports to the same guides
+// TressFX .tfx import (docs/THEORY.md §8.2): a synthetic file round-trips and imports to the same guides
 // as the equivalent .hair data; every corruption is refused with a message naming the field.
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 #pragma once
 // Contract: shared by the device BRDF tests: deterministic uniform (L, V, T) queries and the accuracy
-// metric of the brief (per sample and channel e = |S_mode - S_exact| / (|S_exact| + 0.01); median,
+// metric of docs/SHADING.md "Accuracy" (per sample and channel e = |S_mode - S_exact| / (|S_exact| + 0.01); median,
 // p99, max of e and sum|dS| / sum|S|), here over device results.
 #include <algorithm>
 #include <cmath>

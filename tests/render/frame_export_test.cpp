@@ -125,7 +125,7 @@ TEST_F(VulkanTest, FrameExportRoundTripsAndTheRealTimeHairMatchesTheReference) {
     }
   }
   // The camera the export describes gives the view matrix that drew the frame.
-  const glm::mat4 view = glm::lookAt(frame.camera.position, frame.camera.target, frame.camera.up);
+  const glm::mat4 view = glm::lookAtRH(frame.camera.position, frame.camera.target, frame.camera.up);
   for (int c = 0; c < 4; ++c)
     for (int r = 0; r < 4; ++r) EXPECT_NEAR(view[c][r], capture.camera.view[c][r], 1e-6f);
   EXPECT_FLOAT_EQ(glm::radians(frame.camera.fovYDeg), capture.camera.fovY);

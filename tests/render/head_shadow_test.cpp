@@ -97,7 +97,7 @@ TEST_F(VulkanTest, HeadSkinShowsNoShadowBanding) {
             << " skin px): no shadows " << stepOff << ", head depth map alone " << stepHead << " ("
             << stepHead / stepOff << "x), with hair shadows " << stepOn << " (" << stepOn / stepOff
             << "x), head in the opacity slices " << stepSlices << " (" << stepSlices / stepOff << "x)\n";
-  // The head as its own occluder (the source of the bands): the bound.
+  // The head as its own occluder (the source of the bands): at most 1.3x the unshadowed step.
   EXPECT_LE(stepHead, 1.3 * stepOff);
   // With the hair's shadows on the skin too.
   EXPECT_LE(stepOn, 1.3 * stepOff);

@@ -1,4 +1,4 @@
-// Opacity shadow maps on the device (REFERENCES.md §4) against CPU references: the light framing of
+// Opacity shadow maps on the device (docs/THEORY.md §5) against CPU references: the light framing of
 // the bounds pass, alpha(z_i) of analytic layered scenes (exact per texel), of a tilted random volume
 // and of a small head scene (block sums within stated tolerances), monotonicity in i, T = 1 in front
 // of all hair and falling into the volume, and refused settings.

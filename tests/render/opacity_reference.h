@@ -1,5 +1,5 @@
 #pragma once
-// CPU references for the opacity shadow maps (REFERENCES.md §4), in double precision:
+// CPU references for the opacity shadow maps (docs/THEORY.md §5), in double precision:
 //  - lightBounds: the light-space box of a set of points (what the bounds pass reduces);
 //  - rasterizeSegments/Triangles: alpha(z_i) of line segments (texel centres inside the 1-texel-wide
 //    rectangle along the segment: Vulkan's strict-line rule, which lavapipe uses) and of triangles

@@ -1,4 +1,4 @@
-// The compute rasterizer against analytic references (REFERENCES.md §8): the coverage formula against a
+// The compute rasterizer against analytic references (docs/THEORY.md §7.1): the coverage formula against a
 // supersampled pixel on the CPU; on the device, one straight strand of known width at known angles
 // (per-pixel coverage within 2% of a supersampled reference), two crossing strands (the front-to-back
 // composite equals the analytic "over" within 1%), parallel strands (their union, not the independent

@@ -23,7 +23,7 @@ render::OpacitySettings shadowsOff() {
 CameraMatrices rigCamera(VkExtent2D extent, float fovY) {
   CameraMatrices c;
   c.fovY = fovY;
-  c.proj = glm::perspective(fovY, float(extent.width) / float(extent.height), 0.1f, 10.0f);
+  c.proj = glm::perspectiveRH_ZO(fovY, float(extent.width) / float(extent.height), 0.1f, 10.0f);
   return c;
 }
 

@@ -1,5 +1,5 @@
 #pragma once
-// Contract: the LUT accuracy metric of the brief, over uniformly random (L, V, T) with a fixed seed:
+// Contract: the project's LUT accuracy metric (docs/SHADING.md "Accuracy"), over uniformly random (L, V, T) with a fixed seed:
 // per sample and channel e = |S_mode - S_exact| / (|S_exact| + 0.01); reports median(e), p99(e) and
 // sum|S_mode - S_exact| / sum|S_exact|. S_exact is the exact S of `model`.
 #include <functional>

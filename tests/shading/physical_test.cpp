@@ -1,4 +1,4 @@
-// The physical fibre model (REFERENCES §3b): normalisation of M, energy of the A_p, the white furnace
+// The physical fibre model (docs/THEORY.md §4): normalisation of M, energy of the A_p, the white furnace
 // over a grid of outgoing directions, convergence of the azimuthal quadrature, basic symmetries.
 #include <gtest/gtest.h>
 
@@ -82,7 +82,7 @@ TEST(PhysicalModel, WhiteFurnaceIsBelowOneWithAbsorption) {
 }
 
 TEST(PhysicalModel, PaperModelIsMeasuredAboveOne) {
-  // The 2003 model's known flaw (issue #12): the furnace integral is near 2. Coarse grid: the caustics
+  // The 2003 model's known flaw (docs/THEORY.md §4): the furnace integral is near 2. Coarse grid: the caustics
   // are integrable singularities, so this is a measurement, not a bound.
   glm::dvec3 w = whiteFurnace(FibreModel::Marschner, 0.0, white(), 48);
   std::cout << "paper model, theta_r = 0: " << w.r << " " << w.g << " " << w.b << "\n";

@@ -1,0 +1,64 @@
+#pragma once
+// Contract: a head of hair as data, before any device sees it: guide strands (their rest pose), the
+// scalp triangles that interpolate render strands between guides, the colliders and distance field the
+// hair stays outside of, and the head mesh drawn with it. Immutable once made; an Asset is a shared
+// handle, cheap to copy, and one asset may back any number of instances on any number of renderers.
+// Made by loadAsset (a .hair, TressFX .tfx or scalp .obj file) or defaultHeadAsset (the procedural head).
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "hairpipe/math.h"
+#include "hairpipe/result.h"
+
+namespace hp {
+struct HairAsset;  // the implementation (private)
+}
+
+namespace hairpipe {
+struct Access;
+
+// How many render strands are interpolated between the guides.
+struct Density {
+  enum class Mode { PerTriangle, Total };
+  Mode mode = Mode::Total;
+  std::uint32_t strandsPerTriangle = 8;  // PerTriangle
+  std::uint32_t totalStrands = 20000;    // Total: spread in proportion to the triangles' areas
+  std::uint32_t seed = 7;                // the strands' placement is reproducible for a seed
+};
+
+enum class UpAxis { Y, Z };
+
+struct AssetSource {
+  std::string path;          // .hair (Cem Yuksel's format), .tfx (TressFX) or .obj (a scalp to grow guides on)
+  float scale = 1.0f;        // model units to scene units (centimetres to metres: 0.01)
+  UpAxis up = UpAxis::Y;     // the model's up axis; Z-up models are rotated to Y up
+  Vec3 translation{};        // after scale and rotation
+  bool keepStrands = false;  // .hair/.tfx: keep each strand's own points instead of resampling to guides
+  Density density;
+};
+
+class Asset {
+ public:
+  std::uint32_t guideCount() const noexcept;
+  std::uint32_t particlesPerGuide() const noexcept;
+  std::uint32_t strandCount() const noexcept;  // render strands of the asset's interpolation topology
+  std::uint32_t headTriangleCount() const noexcept;
+  std::vector<Vec3> guideRoots() const noexcept;  // head space, one per guide (for skinning weights)
+  const std::string& name() const noexcept;
+  // The same guides and head with another density of render strands.
+  Result<Asset> withDensity(const Density& density) const noexcept;
+
+ private:
+  friend struct Access;  // hairpipe's implementation
+  explicit Asset(std::shared_ptr<const hp::HairAsset> impl) noexcept : impl_(std::move(impl)) {}
+  std::shared_ptr<const hp::HairAsset> impl_;
+};
+
+// Reads a model file through hairpipe's bounded readers (size and count limits; a clear failure naming
+// the file and the problem for anything malformed).
+Result<Asset> loadAsset(const AssetSource& source) noexcept;
+// The procedural default head (its scalp, head mesh and distance field) with guides grown on it.
+Result<Asset> defaultHeadAsset(const Density& density = {}) noexcept;
+}  // namespace hairpipe

@@ -1,0 +1,134 @@
+#pragma once
+// Contract: the Renderer is what hairpipe shares per device and attachment formats (pipelines, the fibre
+// lookup textures cached by material, the opacity shadow maps of the frame's light, the queue of retired
+// objects); an Instance is one head of hair on it (simulation state, strand buffers, per-frame constants).
+// Every call is noexcept and reports failure as a Status / Result naming the problem; a failed record
+// call has recorded nothing (its arguments are checked first).
+//
+// Frames in flight: `frame` is the application's frame number, one more per frame (it may start
+// anywhere). When it records frame F the application has waited for frame F - framesInFlight to
+// complete, and it submits frames in order on one queue. Setters may be called between frames while
+// earlier ones are in flight: what the GPU may still read is retired and destroyed framesInFlight frames
+// later by a record call, never by waiting on the device. Instances are destroyed before their Renderer,
+// and a Renderer before its Context; the application waits for the GPU before destroying the Renderer.
+//
+// Synchronisation with the application, per frame, in this order (hairpipe's own buffers and images are
+// synchronised inside the calls; only the application's resources are listed):
+//   recordUpdate(cmd, frame, instances)   outside any rendering. Compute dispatches and transfers on
+//       hairpipe's buffers. Reads the ScalpInput::RootFrames buffer, if any, in COMPUTE_SHADER
+//       (SHADER_STORAGE_READ): the application's writes to it must be made visible to that first.
+//   recordShadows(cmd, frame, light, instances)   outside any rendering. Begins and ends its own
+//       renderings on hairpipe's shadow maps; touches nothing of the application's.
+//   recordDraw(cmd, frame, view, instances)   inside the application's vkCmdBeginRendering (dynamic
+//       rendering, begun by the application) whose attachments have RendererSettings::formats: colour in
+//       COLOR_ATTACHMENT_OPTIMAL, depth in DEPTH_STENCIL_ATTACHMENT_OPTIMAL or DEPTH_ATTACHMENT_OPTIMAL.
+//       Draws the heads (depth test and write, colour write) and, in RasterMode::Graphics, the hair
+//       (ribbons, depth tested, blended) in EARLY/LATE_FRAGMENT_TESTS and COLOR_ATTACHMENT_OUTPUT. Sets its
+//       own viewport, scissor and pipelines: the application sets its own again for later draws.
+// RasterMode::Compute draws the hair after the heads, against the depth (setRasterTarget once, outside
+// the frame loop, with a view of the application's depth image: format and samples of
+// RendererSettings::formats, usage DEPTH_STENCIL_ATTACHMENT | SAMPLED, aspect DEPTH). Per frame:
+//   1. recordDraw as above (heads only) in a rendering whose depth attachment has STORE_OP_STORE;
+//      the application ends that rendering.
+//   2. the application's barrier on the depth image: LATE_FRAGMENT_TESTS, DEPTH_STENCIL_ATTACHMENT_WRITE ->
+//      COMPUTE_SHADER, SHADER_SAMPLED_READ; layout DEPTH_STENCIL_ATTACHMENT_OPTIMAL -> SHADER_READ_ONLY_OPTIMAL.
+//   3. recordRaster(cmd, frame, view)   outside any rendering: compute dispatches reading the depth in
+//      COMPUTE_SHADER; hairpipe's raster image is ready for the composite when it returns.
+//   4. the application's barriers: depth COMPUTE_SHADER, SHADER_SAMPLED_READ -> EARLY|LATE_FRAGMENT_TESTS,
+//      DEPTH_STENCIL_ATTACHMENT_READ|WRITE, layout back to DEPTH_STENCIL_ATTACHMENT_OPTIMAL; colour
+//      COLOR_ATTACHMENT_OUTPUT, COLOR_ATTACHMENT_WRITE -> COLOR_ATTACHMENT_OUTPUT,
+//      COLOR_ATTACHMENT_READ|WRITE (the heads' colour before the composite's blend; same layout).
+//   5. a rendering of the same attachments with LOAD_OP_LOAD on colour and depth (the application's
+//      resolve attachments, if any, here), in which recordComposite(cmd, extent) blends the hair over the
+//      colour (multisampled: per sample, with the heads' depth samples deciding the coverage).
+// hairpipe never waits on a queue and never submits inside these calls.
+#include <vulkan/vulkan_core.h>
+
+#include <cstdint>
+#include <memory>
+#include <span>
+
+#include "hairpipe/asset.h"
+#include "hairpipe/context.h"
+#include "hairpipe/math.h"
+#include "hairpipe/result.h"
+#include "hairpipe/settings.h"
+
+namespace hp {
+class Renderer;
+}
+
+namespace hairpipe {
+struct Access;
+
+class Instance {
+ public:
+  Instance(Instance&&) noexcept;
+  Instance& operator=(Instance&&) noexcept;
+  // Retires the instance's GPU objects through its Renderer (destroyed after the frames in flight).
+  ~Instance();
+
+  // This frame's head motion (from -> to); the frame's draws and shadows use `to`.
+  Status setMotion(const HeadMotion& motion) noexcept;
+  // Where the head is drawn and casts its shadow when it is not simulated this frame.
+  Status setHeadToWorld(const Mat4& headToWorld) noexcept;
+  // Colliders for the next frames, in head space (replacing the asset's spheres).
+  Status setColliders(std::span<const SphereCollider> spheres,
+                      std::span<const CapsuleCollider> capsules = {}) noexcept;
+  // ScalpInput::Kind::Bones: the bone matrices (head-space rest pose to world) at the end of the next frame.
+  Status setBones(std::span<const Mat4> bones) noexcept;
+  Status setMaterial(const Material& material, FibreModel fibre) noexcept;
+  Status setLook(const LookSettings& look) noexcept;
+  Status setSimulation(const SimulationSettings& simulation) noexcept;
+  // Another density of render strands between the same guides (new strand buffers, filled by the next
+  // recordUpdate; a raster target holding the instance is rebuilt).
+  Status setDensity(const Density& density) noexcept;
+  std::uint32_t strandCount() const noexcept;
+
+  struct Impl;  // hairpipe's implementation (opaque)
+
+ private:
+  friend struct Access;
+  explicit Instance(std::unique_ptr<Impl> impl) noexcept;
+  std::unique_ptr<Impl> impl_;
+};
+
+class Renderer {
+ public:
+  static Result<Renderer> create(const Context& context, const RendererSettings& settings) noexcept;
+  Renderer(Renderer&&) noexcept;
+  Renderer& operator=(Renderer&&) noexcept;
+  ~Renderer();
+
+  // Uploads the asset's data for one head (submits to the context's queue and waits for that upload).
+  Result<Instance> createInstance(const Asset& asset, const InstanceSettings& settings,
+                                  const Mat4& initialHeadToWorld = {}) noexcept;
+
+  Status recordUpdate(VkCommandBuffer cmd, std::uint64_t frame, std::span<Instance* const> instances) noexcept;
+  Status recordShadows(VkCommandBuffer cmd, std::uint64_t frame, const Light& light,
+                       std::span<Instance* const> instances) noexcept;
+  Status recordDraw(VkCommandBuffer cmd, std::uint64_t frame, const View& view,
+                    std::span<Instance* const> instances) noexcept;
+
+  // Compute raster (raster() == RasterMode::Compute): the instances whose hair recordRaster draws, all in
+  // one set of tile lists, into an image of `extent` against `depth`. Rebuilt by the Renderer when one of
+  // them changes density or material or is destroyed; call again for another extent or set.
+  Status setRasterTarget(VkExtent2D extent, VkImageView depth, std::span<Instance* const> instances) noexcept;
+  Status recordRaster(VkCommandBuffer cmd, std::uint64_t frame, const View& view) noexcept;
+  Status recordComposite(VkCommandBuffer cmd, VkExtent2D extent) noexcept;
+
+  // Shadow tuning that keeps the maps' resolution, format and raster (opacity, k, bias, on/off).
+  Status setOpacityTuning(const OpacitySettings& opacity) noexcept;
+  // The raster mode in effect (Auto resolved for the device).
+  RasterMode raster() const noexcept;
+
+ private:
+  friend struct Access;
+  explicit Renderer(std::unique_ptr<hp::Renderer> impl) noexcept;
+  std::unique_ptr<hp::Renderer> impl_;
+};
+
+// A view for hairpipe's conventions (right-handed view, Vulkan [0, 1] depth) from a camera; a failure
+// names a degenerate camera (eye at target, up along the view direction, fovY outside (0, pi), bad planes).
+Result<View> makeView(const Camera& camera, VkExtent2D extent, std::uint32_t index = 0) noexcept;
+}  // namespace hairpipe

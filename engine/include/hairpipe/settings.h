@@ -1,0 +1,191 @@
+#pragma once
+// Contract: the values an application sets on hairpipe, each defined here once: the renderer's
+// attachments and shadow maps, each instance's material, look, simulation and scalp input, the frame's
+// light, view and head motion, and the colliders. Plain data with the defaults of hairpipe's own tools;
+// nothing here is checked until a call takes it (that call returns the failure, naming the field).
+// Units: scene units (metres for the default head), seconds, radians unless a name says degrees.
+#include <vulkan/vulkan_core.h>
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "hairpipe/math.h"
+#include "hairpipe/result.h"
+
+namespace hairpipe {
+// How hair reaches the camera. Graphics: ribbons drawn by Renderer::recordDraw inside the application's
+// rendering (MSAA). Compute: a tile rasterizer with analytic coverage and front-to-back transparency
+// (Renderer::setRasterTarget, recordRaster, recordComposite). Auto: the one measured faster on the
+// device's type (Compute on every device measured so far).
+enum class RasterMode { Auto, Compute, Graphics };
+// The fibre scattering function: Physical (an energy-conserving fibre with dual scattering), Float and
+// Paper (Marschner's lookup textures at float and the paper's 8-bit precision), Direct (no textures).
+enum class FibreModel { Direct, Paper, Float, Physical };
+enum class Scattering { Single, Dual };
+// How strands reach the opacity maps (Auto: Compute where its bins fit the device's storage limits).
+enum class OpacityRaster { Auto, Compute, Graphics };
+
+struct AttachmentFormats {  // the application's attachments recordDraw / recordComposite draw into
+  VkFormat color = VK_FORMAT_R16G16B16A16_SFLOAT;
+  VkFormat depth = VK_FORMAT_D32_SFLOAT;
+  VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_4_BIT;
+};
+
+// The opacity shadow maps the Renderer shares among its instances (one light).
+struct OpacitySettings {
+  bool enabled = true;
+  std::uint32_t resolution = 512;   // texels per side, [16, 4096]
+  bool footprint = true;            // strands add their projected area per texel (else strandOpacity)
+  float strandOpacity = 0.04f;      // (0, 100], when footprint is off
+  float headOpacity = 0.0f;         // heads also drawn into the slices with this opacity, [0, 1e4]
+  std::uint32_t headShadowResolution = 1024;  // the heads' depth shadow map, [16, 8192]
+  float k = 1.0f;                   // transmittance exp(-k alpha), [0, 1e3]
+  float biasSlices = 1.0f;          // global slices: lookup bias toward the light, [0, 16]
+  float deepBiasSlices = 0.25f;     // deep slices: lookup bias toward the light, [0, 16]
+  VkFormat format = VK_FORMAT_R32G32B32A32_SFLOAT;  // or VK_FORMAT_R16G16B16A16_SFLOAT
+  OpacityRaster raster = OpacityRaster::Auto;
+  bool deep = true;                 // deep opacity maps (compute opacity path)
+};
+
+struct RendererSettings {
+  AttachmentFormats formats;
+  OpacitySettings opacity;
+  std::uint32_t framesInFlight = 2;    // [1, 8]
+  std::uint32_t maxViewsPerFrame = 4;  // [1, 16]: recordDraw calls of one frame with different cameras
+  RasterMode raster = RasterMode::Graphics;
+  std::uint32_t tileBudget = 16384;    // compute raster: list entries kept per 8x8 tile, [1, 2^24]
+};
+
+// The fibre's optics (Marschner et al. 2003; d'Eon et al. 2011 for the physical model).
+struct Material {
+  double eta = 1.55;                                   // index of refraction
+  std::array<double, 3> absorption = {0.55, 0.91, 1.78};  // sigma_a per unit radius, RGB (brown)
+  double alphaR = -0.13089969389957470;                // R lobe's longitudinal shift (-7.5 degrees)
+  double betaR = 0.13089969389957470;                  // R lobe's longitudinal width (7.5 degrees)
+  double kG = 0.5;                                     // caustic glint scale
+  double wc = 0.26179938779914941;                     // caustic azimuthal width (15 degrees)
+  double dEta = 0.3;                                   // caustic fade range for eta'
+  double dhM = 0.5;                                    // caustic maximum h range
+  double betaN = 0.17453292519943295;                  // azimuthal width, physical model (10 degrees)
+};
+// The absorption that gives a fibre this colour of its forward-scattering highlight: each linear RGB
+// channel, in (0, 1], is what survives one pass through the fibre's centre (docs/THEORY.md).
+Result<std::array<double, 3>> absorptionFromColor(float r, float g, float b) noexcept;
+
+struct LookSettings {
+  float strandWidth = 0.0005f;       // ribbon width at the root (a render strand stands for a clump)
+  float tipWidthFraction = 0.35f;    // width at the tip relative to the root, [0, 1]
+  Vec3 skinColor{0.62f, 0.45f, 0.36f};  // the head's albedo, linear RGB in [0, 1]
+  float wrap = 0.5f;                 // the head's wrap lighting, [0, 1]
+  float ambient = 0.06f;             // uniform sky radiance
+  Scattering scattering = Scattering::Dual;  // Dual: physical model only
+  bool skinBounce = true;            // sunlight the skin reflects onto the hair
+};
+
+struct SimulationSettings {
+  double dt = 1.0 / 60.0;                 // frame time step (s)
+  std::uint32_t substeps = 2;             // Verlet substeps per frame
+  std::uint32_t iterations = 8;           // constraint + collision iterations per substep
+  std::array<double, 3> gravity = {0.0, -9.81, 0.0};  // world space
+  double damping = 0.02;                  // fraction of velocity removed per substep, [0, 1]
+  double pearlRadius = 0.002;             // sphere around every particle
+  double stiffness = 0.05;                // shape stiffness toward the rest pose at the root, [0, 1]
+  double stiffnessFalloff = 0.7;          // its per-segment decay toward the tip, [0, 1]
+  double maxSpeed = 10.0;                 // particle speed clamp, > 0
+  std::array<double, 3> windDirection = {1.0, 0.0, 0.0};
+  double windStrength = 0.0;              // acceleration along windDirection
+  double windGust = 0.0;                  // relative gust amplitude, [0, 1]
+  double windGustFrequency = 0.5;         // Hz
+};
+
+// Up to four bones and their weights (>= 0, summing to 1) for one guide's root.
+struct SkinWeights {
+  std::array<std::uint32_t, 4> bones{};
+  std::array<float, 4> weights{1.0f, 0.0f, 0.0f, 0.0f};
+};
+
+// Where the guides' roots come from each frame.
+struct ScalpInput {
+  enum class Kind {
+    Rigid,       // the head motion (Instance::setMotion) carries the roots
+    RootFrames,  // the application's skinning writes root frames into its own buffer
+    Bones        // hairpipe skins the roots with skin[] and the bone matrices of Instance::setBones
+  };
+  Kind kind = Kind::Rigid;
+  // RootFrames: the application's buffer (VK_BUFFER_USAGE_STORAGE_BUFFER_BIT), at least guides x 32 bytes:
+  // per guide the root's world position (vec4, w unused) and its unit orientation quaternion (x, y, z, w).
+  // The application's writes are made visible to COMPUTE_SHADER storage reads before recordUpdate,
+  // which only reads it, in COMPUTE_SHADER.
+  VkBuffer rootFrames = VK_NULL_HANDLE;
+  VkDeviceSize rootFramesBytes = 0;
+  std::vector<SkinWeights> skin;    // Bones: one per guide
+  std::uint32_t boneCount = 0;      // Bones: [1, 256]
+};
+
+struct InstanceSettings {
+  SimulationSettings simulation;
+  Material material;
+  FibreModel fibre = FibreModel::Physical;
+  LookSettings look;
+  ScalpInput scalp;
+  std::uint32_t verticesPerStrand = 36;  // render strand vertices, [guide particles, 256]
+  bool guidesOnly = false;               // debug: draw the smoothed guides instead of dense strands
+};
+
+// One light. `direction` points from the hair toward the light; a spot shines along -direction from
+// `position` with a cone of half-angle coneDeg (the last 20% fades out).
+struct Light {
+  enum class Type { Directional, Spot };
+  Type type = Type::Directional;
+  Vec3 direction{0.4472136f, 0.7155418f, 0.5366563f};  // unit
+  Vec3 color{1.0f, 1.0f, 1.0f};                        // linear RGB
+  float intensity = 3.0f;
+  Vec3 position{};        // spot
+  float coneDeg = 30.0f;  // spot: (0, 80]
+  float range = 0.0f;     // spot: (range / distance)^2 falloff; 0 = none
+};
+
+// One camera of a frame. view: world to view space (right-handed, looking down -Z); projection: view to
+// Vulkan clip space with depth in [0, 1] (e.g. glm::perspectiveRH_ZO); hairpipe's draws use a viewport
+// covering `extent` with y pointing down, as Vulkan's. eye: the camera's world position. Several views of
+// one frame (a mirror, split screen) reuse its update and shadows; each needs its own index.
+struct View {
+  Mat4 view;
+  Mat4 projection;
+  Vec3 eye;
+  float fovY = 0.6f;             // vertical field of view of `projection` (radians)
+  VkExtent2D extent{1, 1};
+  std::uint32_t index = 0;       // [0, RendererSettings::maxViewsPerFrame)
+  bool lines = false;            // debugging: strands as 1-pixel lines
+};
+
+// A camera for hairpipe's own conventions: looking from eye at target, perspective with vertical field of
+// view fovY and the clip planes near/far (0 < near < far).
+struct Camera {
+  Vec3 eye{0.0f, 0.0f, 1.0f};
+  Vec3 target{};
+  Vec3 up{0.0f, 1.0f, 0.0f};
+  float fovY = 0.6f;
+  float nearZ = 0.01f;
+  float farZ = 100.0f;
+};
+
+// Where a head is during one frame (head space to world), and the clock.
+struct HeadMotion {
+  Mat4 from;                 // at the start of the frame
+  Mat4 to;                   // at its end
+  double time = 0.0;         // seconds at the start of the frame
+  bool teleport = false;     // carry the hair rigidly instead of simulating the jump
+};
+
+// Colliders in head space, moving with the head.
+struct SphereCollider {
+  Vec3 center;
+  float radius = 0.0f;
+};
+struct CapsuleCollider {  // the points within radius of the segment a-b
+  Vec3 a, b;
+  float radius = 0.0f;
+};
+}  // namespace hairpipe

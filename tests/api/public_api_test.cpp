@@ -1,0 +1,156 @@
+// The public API (engine/include/hairpipe/) through its own headers only: every documented failure comes
+// back as a value whose message names the call and the problem (nothing throws: the calls are noexcept,
+// so a throw would end the test process), and a frame records under validation without a message.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <string>
+
+#include "hairpipe/hairpipe.h"
+
+namespace {
+using ::testing::HasSubstr;
+
+class PublicApi : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    hairpipe::Result<hairpipe::Asset> a = hairpipe::defaultHeadAsset({hairpipe::Density::Mode::Total, 8, 500, 7});
+    ASSERT_TRUE(a.ok()) << a.message();
+    asset_ = new hairpipe::Asset(std::move(a).value());
+  }
+  static void TearDownTestSuite() { delete asset_; }
+  void SetUp() override {
+    hairpipe::HeadlessOptions o;
+    o.validation = true;
+    hairpipe::Result<hairpipe::Context> c = hairpipe::Context::createHeadless(o);
+    ASSERT_TRUE(c.ok()) << c.message();  // a missing device fails, never skips
+    ctx_.emplace(std::move(c).value());
+    hairpipe::RendererSettings s;
+    s.formats = {VK_FORMAT_R8G8B8A8_UNORM, VK_FORMAT_D32_SFLOAT, VK_SAMPLE_COUNT_1_BIT};
+    hairpipe::Result<hairpipe::Renderer> r = hairpipe::Renderer::create(*ctx_, s);
+    ASSERT_TRUE(r.ok()) << r.message();
+    renderer_.emplace(std::move(r).value());
+  }
+  void TearDown() override {
+    renderer_.reset();
+    if (ctx_) {
+      EXPECT_TRUE(ctx_->waitIdle().ok());
+      for (const std::string& m : ctx_->validationMessages()) ADD_FAILURE() << m;
+    }
+  }
+  hairpipe::Instance instance(const hairpipe::InstanceSettings& s = {}) {
+    hairpipe::Result<hairpipe::Instance> i = renderer_->createInstance(*asset_, s);
+    EXPECT_TRUE(i.ok()) << i.message();
+    return std::move(i).value();
+  }
+  static hairpipe::Asset* asset_;
+  std::optional<hairpipe::Context> ctx_;
+  std::optional<hairpipe::Renderer> renderer_;
+};
+hairpipe::Asset* PublicApi::asset_ = nullptr;
+
+constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
+
+template <class T>
+std::string failureOf(const T& result) {
+  EXPECT_FALSE(result.ok());
+  return result.ok() ? std::string("(succeeded)") : result.message();
+}
+
+TEST(PublicApiWithoutDevice, AdoptRefusesMissingHandlesByName) {
+  const std::string m = failureOf(hairpipe::Context::adopt({}));
+  EXPECT_THAT(m, HasSubstr("hairpipe::Context::adopt"));
+  EXPECT_THAT(m, HasSubstr("getInstanceProcAddr"));
+}
+
+TEST(PublicApiWithoutDevice, AssetsAndHelpersRefuseBadInputByName) {
+  hairpipe::AssetSource source;
+  source.path = "/nonexistent/groom.tfx";
+  EXPECT_THAT(failureOf(hairpipe::loadAsset(source)), HasSubstr("/nonexistent/groom.tfx"));
+  source.path = "groom.fbx";
+  EXPECT_THAT(failureOf(hairpipe::loadAsset(source)), HasSubstr("expected a path ending in .hair, .tfx or .obj"));
+  source.path = "/nonexistent/groom.hair";
+  source.scale = -1.0f;
+  EXPECT_THAT(failureOf(hairpipe::loadAsset(source)), HasSubstr("scale"));
+  hairpipe::Density density;
+  density.totalStrands = 0;
+  EXPECT_THAT(failureOf(hairpipe::defaultHeadAsset(density)), HasSubstr("hairpipe::defaultHeadAsset"));
+  EXPECT_THAT(failureOf(hairpipe::absorptionFromColor(0.5f, 1.5f, 0.5f)), HasSubstr("color"));
+  hairpipe::Camera camera;
+  camera.fovY = 4.0f;
+  EXPECT_THAT(failureOf(hairpipe::makeView(camera, {64, 64})), HasSubstr("fovY"));
+  camera = {};
+  camera.up = {0.0f, 0.0f, 1.0f};  // along the view direction
+  EXPECT_THAT(failureOf(hairpipe::makeView(camera, {64, 64})), HasSubstr("up is parallel"));
+  EXPECT_THAT(failureOf(hairpipe::makeView({}, {0, 64})), HasSubstr("extent"));
+  EXPECT_STREQ(hairpipe::versionString(), "0.2.0");
+}
+
+TEST_F(PublicApi, RendererSettingsAreRefusedByField) {
+  hairpipe::RendererSettings s;
+  s.framesInFlight = 9;
+  EXPECT_THAT(failureOf(hairpipe::Renderer::create(*ctx_, s)), HasSubstr("framesInFlight"));
+  s = {};
+  s.maxViewsPerFrame = 0;
+  EXPECT_THAT(failureOf(hairpipe::Renderer::create(*ctx_, s)), HasSubstr("maxViewsPerFrame"));
+  s = {};
+  s.opacity.resolution = 8;
+  EXPECT_THAT(failureOf(hairpipe::Renderer::create(*ctx_, s)), HasSubstr("resolution"));
+}
+
+TEST_F(PublicApi, InstanceSettingsAndSettersAreRefusedByField) {
+  hairpipe::InstanceSettings bad;
+  bad.material.eta = std::nan("");
+  EXPECT_THAT(failureOf(renderer_->createInstance(*asset_, bad)), HasSubstr("hairpipe::Renderer::createInstance"));
+  bad = {};
+  bad.scalp.kind = hairpipe::ScalpInput::Kind::Bones;
+  bad.scalp.boneCount = 1;  // no weights for the guides
+  EXPECT_THAT(failureOf(renderer_->createInstance(*asset_, bad)), HasSubstr("skin"));
+
+  hairpipe::Instance head = instance();
+  hairpipe::Material m;
+  m.absorption[1] = -1.0;
+  EXPECT_THAT(failureOf(head.setMaterial(m, hairpipe::FibreModel::Physical)), HasSubstr("hairpipe::Instance::setMaterial"));
+  hairpipe::LookSettings look;
+  look.strandWidth = kNaN;
+  EXPECT_THAT(failureOf(head.setLook(look)), HasSubstr("strand width"));
+  hairpipe::SimulationSettings sim;
+  sim.dt = 0.0;
+  EXPECT_THAT(failureOf(head.setSimulation(sim)), HasSubstr("dt"));
+  hairpipe::HeadMotion motion;
+  motion.to.m[12] = kNaN;
+  EXPECT_THAT(failureOf(head.setMotion(motion)), HasSubstr("hairpipe::Instance::setMotion"));
+  hairpipe::Density density;
+  density.totalStrands = 0;
+  EXPECT_THAT(failureOf(head.setDensity(density)), HasSubstr("hairpipe::Instance::setDensity"));
+  EXPECT_EQ(head.strandCount(), 500u);  // a refused setter changes nothing
+}
+
+TEST_F(PublicApi, RecordCallsRefuseBadFramesBeforeRecording) {
+  hairpipe::Instance head = instance();
+  hairpipe::Instance* heads[] = {&head};
+  hairpipe::Instance* none[] = {nullptr};
+  // Nothing is recorded for a refused call, so the command buffer is never used: a null handle suffices.
+  EXPECT_THAT(failureOf(renderer_->recordUpdate(VK_NULL_HANDLE, 0, none)), HasSubstr("null"));
+  hairpipe::Light light;
+  light.direction = {0.0f, 0.0f, 0.0f};
+  EXPECT_THAT(failureOf(renderer_->recordShadows(VK_NULL_HANDLE, 0, light, heads)), HasSubstr("direction"));
+  hairpipe::View view;
+  view.index = 4;  // maxViewsPerFrame is 4
+  EXPECT_THAT(failureOf(renderer_->recordDraw(VK_NULL_HANDLE, 0, view, heads)), HasSubstr("index"));
+  EXPECT_THAT(failureOf(renderer_->setRasterTarget({64, 64}, VK_NULL_HANDLE, heads)), HasSubstr("not compute"));
+  EXPECT_THAT(failureOf(renderer_->recordRaster(VK_NULL_HANDLE, 0, hairpipe::View{})), HasSubstr("setRasterTarget"));
+  EXPECT_EQ(renderer_->raster(), hairpipe::RasterMode::Graphics);
+}
+
+TEST_F(PublicApi, InstancesOfAnotherRendererAreRefused) {
+  hairpipe::Result<hairpipe::Renderer> other = hairpipe::Renderer::create(*ctx_, {});
+  ASSERT_TRUE(other.ok()) << other.message();
+  hairpipe::Instance head = instance();
+  hairpipe::Instance* heads[] = {&head};
+  EXPECT_THAT(failureOf(other->recordUpdate(VK_NULL_HANDLE, 0, heads)), HasSubstr("another Renderer"));
+}
+}  // namespace

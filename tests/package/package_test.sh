@@ -1,0 +1,89 @@
+#!/usr/bin/env bash
+# The installed package as an application meets it. Installs the build into WORK/install, MOVES that prefix
+# to WORK/prefix (the package must be relocatable), then, by MODE:
+#   embed      builds samples/embed against it and runs it under synchronization validation with the
+#              graphics and the compute raster (it fails on any validation message and must write a PNG)
+#   hello      builds samples/hello_hair against it, runs it under validation, checks its PNG
+#   consumers  builds tests/package/consumers (a -fno-exceptions consumer and one with glm's macros set
+#              the other way from hairpipe's internals) and runs both
+#   headers    the installed headers are exactly docs/API.md's public list, each compiles alone
+#              (-fno-exceptions, -Wall -Wextra -Werror) and includes only public headers, Vulkan's core
+#              header and the standard library
+#   symbols    no installed archive defines a global vk* or volk* symbol; the CMake package names no
+#              absolute path, no compile definition and no link dependency but Vulkan's headers and libdl
+# Usage: package_test.sh MODE SOURCE_DIR BUILD_DIR WORK_DIR CXX_COMPILER [LAUNCHER] [EXTRA_FLAGS]
+set -euo pipefail
+mode=$1 src=$2 build=$3 work=$4 cxx=$5 launcher=${6:-} flags=${7:-}
+rm -rf "$work"
+mkdir -p "$work"
+cmake --install "$build" --prefix "$work/install" > "$work/install.log"
+mv "$work/install" "$work/prefix"
+prefix=$work/prefix
+
+configure_and_build() {  # configure_and_build PROJECT_DIR BUILD_DIR
+  cmake -S "$1" -B "$2" -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH="$prefix" -DCMAKE_CXX_COMPILER="$cxx" \
+    ${launcher:+-DCMAKE_CXX_COMPILER_LAUNCHER="$launcher"} \
+    ${flags:+-DCMAKE_CXX_FLAGS="$flags" -DCMAKE_EXE_LINKER_FLAGS="$flags"} > "$2.configure.log"
+  cmake --build "$2" -j2 > "$2.build.log" || { cat "$2.build.log" >&2; exit 1; }
+  # The application's code must not reach into the source tree: only the prefix's headers were used.
+  if grep -rq "$src/engine\|$src/compute\|$src/third_party" "$2"/CMakeFiles/*.dir/flags.make; then
+    echo "$1 was compiled with the source tree on its include path" >&2
+    exit 1
+  fi
+}
+
+case $mode in
+  embed)
+    configure_and_build "$src/samples/embed" "$work/embed"
+    for raster in graphics compute; do
+      "$work/embed/hairpipe_embed" --validation --frames 4 --raster $raster --out "$work/embed_$raster.png"
+      [ -s "$work/embed_$raster.png" ] || { echo "no PNG written ($raster)" >&2; exit 1; }
+    done
+    ;;
+  hello)
+    configure_and_build "$src/samples/hello_hair" "$work/hello"
+    (cd "$work" && "$work/hello/hello_hair" --validation)
+    [ -s "$work/hello_hair.png" ] || { echo "hello_hair wrote no PNG" >&2; exit 1; }
+    ;;
+  consumers)
+    configure_and_build "$src/tests/package/consumers" "$work/consumers"
+    "$work/consumers/noexcept_consumer"
+    "$work/consumers/glm_consumer"
+    ;;
+  headers)
+    installed=$(cd "$prefix/include" && find . -type f | sed 's|^\./||' | sort)
+    documented=$(sed -n '/^<!-- public-headers-begin -->$/,/^<!-- public-headers-end -->$/p' "$src/docs/API.md" \
+      | grep -o '^| `hairpipe/[a-z_]*\.h`' | sed 's/^| `//; s/`$//' | sort)
+    if [ "$installed" != "$documented" ]; then
+      echo "installed headers differ from docs/API.md's public list:" >&2
+      diff <(echo "$documented") <(echo "$installed") >&2 || true
+      exit 1
+    fi
+    for h in $installed; do
+      bad=$(grep -E '^#include' "$prefix/include/$h" | grep -vE '^#include "hairpipe/[a-z_]+\.h"$|^#include <vulkan/vulkan_core\.h>$|^#include <[a-z_]+>$' || true)
+      [ -z "$bad" ] || { echo "$h includes more than public headers, Vulkan's core header and the standard library: $bad" >&2; exit 1; }
+      echo "#include <$h>" > "$work/alone.cpp"
+      "$cxx" -std=c++20 -fno-exceptions -Wall -Wextra -Wpedantic -Werror -fsyntax-only -I"$prefix/include" "$work/alone.cpp" \
+        || { echo "$h does not compile alone" >&2; exit 1; }
+    done
+    echo "$(echo "$installed" | wc -l) installed headers = docs/API.md's list; each compiles alone"
+    ;;
+  symbols)
+    defined=$(nm -g --defined-only "$prefix"/lib/*.a | awk 'NF == 3 && $2 ~ /[A-TV-Z]/ {print $3}' | grep -E '^(vk|volk)' || true)
+    if [ -n "$defined" ]; then
+      echo "the installed archives define global Vulkan/volk symbols:" >&2
+      echo "$defined" | head -20 >&2
+      exit 1
+    fi
+    config=$(cat "$prefix"/lib/cmake/hairpipe/*.cmake)
+    if echo "$config" | grep -n "$work\|$src\|/usr/include\|INTERFACE_COMPILE_DEFINITIONS" >&2; then
+      echo "the CMake package names an absolute path or forces a compile definition (above)" >&2
+      exit 1
+    fi
+    links=$(echo "$config" | grep -o 'INTERFACE_LINK_LIBRARIES "[^"]*"' | sed 's/INTERFACE_LINK_LIBRARIES //; s/"//g' | tr ';' '\n' \
+      | grep -vE '^(Vulkan::Headers|dl|\\\$<LINK_ONLY:(hairpipe::(core|shaders|volk))?>)$' || true)
+    [ -z "$links" ] || { echo "the package links more than Vulkan's headers, libdl and its own archives: $links" >&2; exit 1; }
+    echo "no global vk*/volk* symbol in $(ls "$prefix"/lib/*.a | wc -l) archives; the package forces nothing"
+    ;;
+  *) echo "unknown mode $mode" >&2; exit 2 ;;
+esac

@@ -1,0 +1,30 @@
+# Writes OUTPUT: a header that renames every global volk.h declares (the vk* function pointers, the
+# volk* functions and struct VolkDeviceTable) with the prefix hpvk_. Included before volk.h by volk's
+# compilation and by every hairpipe file that calls Vulkan, it gives hairpipe a copy of volk whose
+# symbols cannot meet an application's libvulkan or its own volk at link time.
+# Run as cmake -DVOLK_HEADER=... -DOUTPUT=... -P generate_names.cmake
+file(READ ${VOLK_HEADER} text)
+string(REGEX MATCHALL "extern PFN_vk[A-Za-z0-9_]+ vk[A-Za-z0-9_]+" pointers "${text}")
+string(REGEX MATCHALL "[a-zA-Z0-9_]+ volk[A-Z][A-Za-z0-9_]*\\(" functions "${text}")
+set(names VolkDeviceTable)
+foreach(decl IN LISTS pointers)
+  string(REGEX REPLACE "extern PFN_vk[A-Za-z0-9_]+ (vk[A-Za-z0-9_]+)" "\\1" name "${decl}")
+  list(APPEND names ${name})
+endforeach()
+foreach(decl IN LISTS functions)
+  string(REGEX REPLACE "[a-zA-Z0-9_]+ (volk[A-Za-z0-9_]+)\\(" "\\1" name "${decl}")
+  list(APPEND names ${name})
+endforeach()
+list(REMOVE_DUPLICATES names)
+list(LENGTH names count)
+if(count LESS 100)
+  message(FATAL_ERROR "${VOLK_HEADER}: found only ${count} volk names; has volk.h changed its layout?")
+endif()
+set(out "// Generated from ${VOLK_HEADER} by third_party/volk/generate_names.cmake: do not edit.\n")
+string(APPEND out "#pragma once\n#ifndef VK_NO_PROTOTYPES\n#define VK_NO_PROTOTYPES\n#endif\n")
+foreach(name IN LISTS names)
+  string(APPEND out "#define ${name} hpvk_${name}\n")
+endforeach()
+file(WRITE ${OUTPUT}.tmp "${out}")
+file(COPY_FILE ${OUTPUT}.tmp ${OUTPUT} ONLY_IF_DIFFERENT)
+file(REMOVE ${OUTPUT}.tmp)
