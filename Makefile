@@ -1,6 +1,8 @@
 # Thin driver (as neovim does): install what is missing, configure, build, run.
-#   make demo   installs, builds (Release) and renders the default head to out/hair.png and the
-#               README's pictures (docs/images: front, back, an animation's contact sheet)
+#   make demo   installs, builds (Release) and renders the default head to out/hair.png (and front,
+#               side and back views to out/); writes nothing outside out/
+#   make pictures  re-renders the README's pictures (docs/images: front, back, a shaking head's sheet)
+#   make api-docs  the API reference of the public headers (doxygen, warnings as errors) in out/api/
 #   make test   installs, builds and runs the whole CTest suite on lavapipe
 #   make fuzz   builds the libFuzzer targets (clang, ASan+UBSan) and runs each for FUZZ_SECONDS
 #   make test-asan  builds everything with ASan+UBSan (clang) and runs the sanitizer suite
@@ -14,11 +16,11 @@ FUZZ_SECONDS ?= 60
 PACKAGES := cmake make g++ pkg-config libvulkan-dev libvulkan-volk-dev glslc libshaderc-dev \
 	libglm-dev mesa-vulkan-drivers vulkan-validationlayers libcli11-dev nlohmann-json3-dev \
 	libtinyobjloader-dev libpng-dev libgtest-dev libembree-dev clang-14 libclang-rt-14-dev \
-	libglfw3-dev libimgui-dev libstb-dev xvfb
+	libglfw3-dev libimgui-dev libstb-dev xvfb doxygen
 
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
-.PHONY: deps configure build demo test clean configure-asan fuzz test-asan
+.PHONY: deps configure build demo pictures api-docs test clean configure-asan fuzz test-asan
 
 deps:
 	@missing=$$(for p in $(PACKAGES); do \
@@ -35,15 +37,24 @@ configure: deps
 build: configure
 	cmake --build $(BUILD) -j $(JOBS)
 
-# The default head from behind and to the side, where the hair is; 90 settling frames first. Then the
-# README's pictures: front and back (small, so the PNGs stay well under 300 KB) and a contact sheet of
-# a shaking head (--sequence; its frames go to out/sequence).
+# The default head from behind and to the side, where the hair is; 90 settling frames first; then the
+# front, side and back views beside it.
 demo: build
 	./$(BUILD)/samples/hairpipe render --camera-orbit 145 --out out/hair.png
+	for orbit in 0 90 180; do ./$(BUILD)/samples/hairpipe render --camera-orbit $$orbit --width 480 --height 360 \
+		--out out/head_$$orbit.png || exit 1; done
+
+# The README's pictures: front and back (small, so the PNGs stay well under 300 KB) and a contact sheet of
+# a shaking head (--sequence; its frames go to out/sequence).
+pictures: build
 	./$(BUILD)/samples/hairpipe render --camera-orbit 0 --width 480 --height 360 --out docs/images/head_front.png
 	./$(BUILD)/samples/hairpipe render --camera-orbit 180 --width 480 --height 360 --out docs/images/head_back.png
 	./$(BUILD)/samples/hairpipe render --camera-orbit 150 --width 240 --height 180 --animate shake --fps 60 \
 		--frames 48 --sequence out/sequence --contact-sheet docs/images/shake_contact_sheet.png
+
+# The public API's reference from engine/include/hairpipe (docs/Doxyfile); any doxygen warning fails it.
+api-docs: deps
+	mkdir -p out/api && doxygen docs/Doxyfile
 
 test: build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS) --timeout 900

@@ -110,7 +110,7 @@ void Renderer::setOpacityTuning(const render::OpacitySettings& opacity) {
       opacity.headShadowResolution != current.headShadowResolution || opacity.raster != current.raster ||
       opacity.deep != current.deep)
     throw Error("setOpacityTuning: the opacity maps' resolution, format, raster and depth mode are fixed for a Renderer");
-  opacity.validate();
+  render::validate(opacity);
   shadows_->setTuning(opacity);
   settings_.opacity = opacity;
 }

@@ -16,7 +16,7 @@ RasterMode resolveRasterMode(RasterMode mode, VkPhysicalDeviceType type) {
 }
 
 void RendererSettings::validate() const {
-  opacity.validate();
+  render::validate(opacity);
   rasterSettings.validate();
   // The strand shader builds its coverage sample mask in 32 bits (and gl_SampleMask[0] holds 32).
   if (formats.samples > VK_SAMPLE_COUNT_16_BIT) throw Error("RendererSettings.formats.samples must be at most 16");

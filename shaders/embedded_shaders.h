@@ -1,7 +1,7 @@
 #pragma once
 // Contract: every GLSL stage under shaders/ is compiled by glslc at build time and embedded here.
 // spirv(name) returns the SPIR-V words of "name" (file name with stage suffix, e.g. "simulate.comp")
-// and throws std::out_of_range naming the shader when it does not exist.
+// and throws hp::Error naming the shader when it does not exist.
 #include <cstdint>
 #include <span>
 #include <string>

@@ -32,11 +32,10 @@ struct Access {
   static Instance::Impl* impl(const Instance& i) { return i.impl_.get(); }
 };
 
-// Runs `body` (returning void or a value); an exception becomes a failure "WHERE: what()".
-template <class T, class F>
-Result<T> guarded(const char* where, F&& body) noexcept {
+// The exception being handled as the failure "WHERE: what()"; called only inside a catch block.
+inline Status currentFailure(const char* where) noexcept {
   try {
-    return body();
+    throw;
   } catch (const hp::Error& e) {
     return Status::failure(std::string(where) + ": " + e.what());
   } catch (const std::bad_alloc&) {
@@ -48,19 +47,24 @@ Result<T> guarded(const char* where, F&& body) noexcept {
   }
 }
 
+// Runs `body`, which returns a T; an exception becomes the failure.
+template <class T, class F>
+Result<T> guarded(const char* where, F&& body) noexcept {
+  try {
+    return body();
+  } catch (...) {
+    return currentFailure(where);
+  }
+}
+
+// Runs `body`, which returns nothing; an exception becomes the failure.
 template <class F>
 Status guardedStatus(const char* where, F&& body) noexcept {
   try {
     body();
     return {};
-  } catch (const hp::Error& e) {
-    return Status::failure(std::string(where) + ": " + e.what());
-  } catch (const std::bad_alloc&) {
-    return Status::failure(std::string(where) + ": out of host memory");
-  } catch (const std::exception& e) {
-    return Status::failure(std::string(where) + ": internal error: " + e.what());
   } catch (...) {
-    return Status::failure(std::string(where) + ": internal error");
+    return currentFailure(where);
   }
 }
 }  // namespace hairpipe

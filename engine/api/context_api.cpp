@@ -10,8 +10,7 @@ Context::~Context() = default;
 
 Result<Context> Context::adopt(const DeviceHandles& d) noexcept {
   return guarded<Context>("hairpipe::Context::adopt", [&] {
-    return Access::makeContext(hp::vk::Context::adopt(
-        {d.getInstanceProcAddr, d.instance, d.physicalDevice, d.device, d.queueFamily, d.queue, d.debugUtilsEnabled}));
+    return Access::makeContext(hp::vk::Context::adopt(d));
   });
 }
 
@@ -31,11 +30,13 @@ VkQueue Context::queue() const noexcept { return impl_->queue(); }
 std::uint32_t Context::queueFamily() const noexcept { return impl_->queueFamily(); }
 std::string Context::deviceName() const noexcept { return impl_->properties().deviceName; }
 
-std::vector<std::string> Context::validationMessages() const noexcept {
-  std::vector<std::string> out;
-  for (const hp::vk::ValidationMessage& m : impl_->sharedValidationLog()->messages())
-    out.push_back(m.idName + ": " + m.text);
-  return out;
+Result<std::vector<std::string>> Context::validationMessages() const noexcept {
+  return guarded<std::vector<std::string>>("hairpipe::Context::validationMessages", [&] {
+    std::vector<std::string> out;
+    for (const hp::vk::ValidationMessage& m : impl_->sharedValidationLog()->messages())
+      out.push_back(m.idName + ": " + m.text);
+    return out;
+  });
 }
 
 Status Context::waitIdle() const noexcept {
@@ -45,25 +46,25 @@ Status Context::waitIdle() const noexcept {
 void Context::setDeviceMemoryBudget(VkDeviceSize bytes) noexcept { impl_->setDeviceMemoryBudget(bytes); }
 std::uint64_t Context::allocatedBytes() const noexcept { return impl_->allocatedBytes(); }
 
-std::vector<std::string> requirements() noexcept {
-  const hp::vk::DeviceRequirements r = hp::vk::requirements();
-  std::vector<std::string> out{"Vulkan " + std::to_string(VK_API_VERSION_MAJOR(r.apiVersion)) + "." +
-                               std::to_string(VK_API_VERSION_MINOR(r.apiVersion))};
-  for (const std::string& f : r.features) out.push_back("feature " + f);
-  for (const std::string& e : r.extensions) out.push_back("extension " + e);
-  out.push_back(r.queue);
-  return out;
+Result<std::vector<std::string>> requirements() noexcept {
+  return guarded<std::vector<std::string>>("hairpipe::requirements", [] {
+    const hp::vk::DeviceRequirements r = hp::vk::requirements();
+    std::vector<std::string> out{"Vulkan " + std::to_string(VK_API_VERSION_MAJOR(r.apiVersion)) + "." +
+                                 std::to_string(VK_API_VERSION_MINOR(r.apiVersion))};
+    for (const std::string& f : r.features) out.push_back("feature " + f);
+    for (const std::string& e : r.extensions) out.push_back("extension " + e);
+    out.push_back(r.queue);
+    return out;
+  });
 }
 
-std::vector<std::string> unfitReasons(PFN_vkGetInstanceProcAddr getInstanceProcAddr, VkInstance instance,
-                                      VkPhysicalDevice physicalDevice) noexcept {
-  if (!getInstanceProcAddr || !instance || !physicalDevice)
-    return {"hairpipe::unfitReasons: getInstanceProcAddr, instance and physicalDevice must be set"};
-  try {
+Result<std::vector<std::string>> unfitReasons(PFN_vkGetInstanceProcAddr getInstanceProcAddr, VkInstance instance,
+                                              VkPhysicalDevice physicalDevice) noexcept {
+  return guarded<std::vector<std::string>>("hairpipe::unfitReasons", [&] {
+    if (!getInstanceProcAddr || !instance || !physicalDevice)
+      throw hp::Error("getInstanceProcAddr, instance and physicalDevice must be set");
     hp::vk::loadInstanceFunctions(getInstanceProcAddr, instance);
     return hp::vk::unfitReasons(physicalDevice);
-  } catch (const std::exception& e) {
-    return {std::string("hairpipe::unfitReasons: ") + e.what()};
-  }
+  });
 }
 }  // namespace hairpipe

@@ -49,29 +49,10 @@ hp::LutMode fibre(FibreModel model) {
   return hp::LutMode::Physical;
 }
 
-hp::render::OpacitySettings opacity(const OpacitySettings& s) {
-  hp::render::OpacitySettings o;
-  o.enabled = s.enabled;
-  o.resolution = s.resolution;
-  o.footprint = s.footprint;
-  o.strandOpacity = s.strandOpacity;
-  o.headOpacity = s.headOpacity;
-  o.headShadowResolution = s.headShadowResolution;
-  o.k = s.k;
-  o.biasSlices = s.biasSlices;
-  o.deepBiasSlices = s.deepBiasSlices;
-  o.format = s.format;
-  o.raster = s.raster == OpacityRaster::Compute    ? hp::render::OpacityRaster::Compute
-             : s.raster == OpacityRaster::Graphics ? hp::render::OpacityRaster::Graphics
-                                                   : hp::render::OpacityRaster::Auto;
-  o.deep = s.deep;
-  return o;
-}
-
 hp::RendererSettings renderer(const RendererSettings& s) {
   hp::RendererSettings r;
-  r.formats = {s.formats.color, s.formats.depth, s.formats.samples};
-  r.opacity = opacity(s.opacity);
+  r.formats = s.formats;
+  r.opacity = s.opacity;
   r.framesInFlight = s.framesInFlight;
   r.maxViewsPerFrame = s.maxViewsPerFrame;
   r.raster = raster(s.raster);
@@ -100,7 +81,7 @@ hp::render::LookSettings look(const LookSettings& l) {
   h.skinColor = vec(l.skinColor);
   h.wrap = l.wrap;
   h.ambient = l.ambient;
-  h.scattering = l.scattering == Scattering::Single ? hp::render::Scattering::Single : hp::render::Scattering::Dual;
+  h.scattering = l.scattering;
   h.skinBounce = l.skinBounce;
   return h;
 }

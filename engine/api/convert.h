@@ -23,7 +23,6 @@ hp::RasterMode raster(RasterMode mode);
 RasterMode raster(hp::RasterMode mode);
 hp::LutMode fibre(FibreModel model);
 hp::RendererSettings renderer(const RendererSettings& s);
-hp::render::OpacitySettings opacity(const OpacitySettings& s);
 hp::HairMaterial material(const Material& m);
 hp::render::LookSettings look(const LookSettings& l);
 hp::SimulationParams simulation(const SimulationSettings& s);

@@ -128,7 +128,7 @@ Status Renderer::recordComposite(VkCommandBuffer cmd, VkExtent2D extent) noexcep
   return guardedStatus("hairpipe::Renderer::recordComposite", [&] { impl_->recordComposite(cmd, extent); });
 }
 Status Renderer::setOpacityTuning(const OpacitySettings& opacity) noexcept {
-  return guardedStatus("hairpipe::Renderer::setOpacityTuning", [&] { impl_->setOpacityTuning(convert::opacity(opacity)); });
+  return guardedStatus("hairpipe::Renderer::setOpacityTuning", [&] { impl_->setOpacityTuning(opacity); });
 }
 RasterMode Renderer::raster() const noexcept { return convert::raster(impl_->raster()); }
 

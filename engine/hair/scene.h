@@ -1,9 +1,8 @@
 #pragma once
-// Contract: a scene file (JSON; schema in engine/hair/README.md) read into plain structs. Every
-// field has a default, so "{}" is the demo scene: the default head, lit and framed. loadSceneFile
-// rejects syntax errors, unknown keys, wrong types and out-of-range values with hp::Error naming the
-// file and the JSON pointer. Paths in the scene are relative to the scene file's directory.
-// buildSceneAsset turns a scene into the HairAsset the GPU side consumes.
+// Contract: a scene as plain structs (the tools read it from a JSON scene file: samples/tools/host/
+// scene_file.h; schema in engine/hair/README.md). Every field has a default, so a default Scene is the
+// demo scene: the default head, lit and framed. buildSceneAsset turns a scene into the HairAsset the GPU
+// side consumes (the public loadAsset builds one from its AssetSource).
 #include <glm/glm.hpp>
 
 #include <filesystem>
@@ -95,10 +94,6 @@ struct Scene {
 
   Scene();
 };
-
-Scene loadSceneFile(const std::filesystem::path& path);
-// `source` names the text in messages; relative model paths resolve against baseDir.
-Scene parseScene(const std::string& jsonText, const std::string& source, const std::filesystem::path& baseDir);
 
 HairAsset buildSceneAsset(const Scene& scene);
 }  // namespace hp

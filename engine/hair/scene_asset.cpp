@@ -74,6 +74,8 @@ HairAsset modelAsset(const Scene& scene, const std::shared_ptr<const SdfGrid>& g
 }
 }  // namespace
 
+Scene::Scene() : growth(defaultHeadGrowth()) {}
+
 HairAsset buildSceneAsset(const Scene& scene) {
   const std::shared_ptr<const SdfGrid> grid = colliderGrid(scene);
   HairAsset asset = modelAsset(scene, grid);

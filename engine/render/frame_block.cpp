@@ -47,7 +47,7 @@ gpu::RenderFrame makeRenderFrame(const CameraMatrices& camera, VkExtent2D extent
   const glm::dvec3 albedo = glm::exp(-2.0 * material.absorption);
   f.hairColor = glm::vec4(glm::vec3(albedo), look.ambient);
   f.skinColor = glm::vec4(look.skinColor, look.wrap);
-  f.strand = glm::vec4(look.strandWidth, look.tipWidthFraction, opacity.k, opacity.lookupBias());
+  f.strand = glm::vec4(look.strandWidth, look.tipWidthFraction, opacity.k, lookupBias(opacity));
   f.options = glm::uvec4(verticesPerStrand, opacity.enabled ? 1u : 0u,
                          look.scattering == Scattering::Dual ? gpu::RENDER_SCATTERING_DUAL : gpu::RENDER_SCATTERING_SINGLE,
                          opacity.deep ? 1u : 0u);

@@ -4,6 +4,7 @@
 #include "engine/hair/scene.h"
 #include "engine/render/camera.h"
 #include "engine/render/opacity_settings.h"
+#include "hairpipe/settings.h"
 #include "hairpipe_volk.h"
 
 #include <string>
@@ -11,7 +12,7 @@
 #include "shaders/shared/render.h"
 
 namespace hp::render {
-enum class Scattering { Single, Dual };
+using Scattering = hairpipe::Scattering;  // defined once, in the public API
 Scattering parseScattering(const std::string& text);  // "single", "dual"; else hp::Error
 const char* scatteringName(Scattering s);              // the names parseScattering reads
 

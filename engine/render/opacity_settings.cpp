@@ -35,20 +35,20 @@ const char* opacityRasterName(OpacityRaster raster) {
   return "auto";
 }
 
-void OpacitySettings::validate() const {
-  if (resolution < 16 || resolution > 4096)
-    throw Error("opacity settings: resolution must be in [16, 4096], got " + std::to_string(resolution));
-  checkRange(strandOpacity, 0.0f, 100.0f, true, "strandOpacity");
-  checkRange(headOpacity, 0.0f, 1.0e4f, false, "headOpacity");
-  if (headShadowResolution < 16 || headShadowResolution > 8192)
+void validate(const OpacitySettings& s) {
+  if (s.resolution < 16 || s.resolution > 4096)
+    throw Error("opacity settings: resolution must be in [16, 4096], got " + std::to_string(s.resolution));
+  checkRange(s.strandOpacity, 0.0f, 100.0f, true, "strandOpacity");
+  checkRange(s.headOpacity, 0.0f, 1.0e4f, false, "headOpacity");
+  if (s.headShadowResolution < 16 || s.headShadowResolution > 8192)
     throw Error("opacity settings: headShadowResolution must be in [16, 8192], got " +
-                std::to_string(headShadowResolution));
-  checkRange(k, 0.0f, 1.0e3f, false, "k");
-  checkRange(biasSlices, 0.0f, float(gpu::OPACITY_SLICES), false, "biasSlices");
-  checkRange(deepBiasSlices, 0.0f, float(gpu::OPACITY_SLICES), false, "deepBiasSlices");
-  if (format != VK_FORMAT_R32G32B32A32_SFLOAT && format != VK_FORMAT_R16G16B16A16_SFLOAT)
+                std::to_string(s.headShadowResolution));
+  checkRange(s.k, 0.0f, 1.0e3f, false, "k");
+  checkRange(s.biasSlices, 0.0f, float(gpu::OPACITY_SLICES), false, "biasSlices");
+  checkRange(s.deepBiasSlices, 0.0f, float(gpu::OPACITY_SLICES), false, "deepBiasSlices");
+  if (s.format != VK_FORMAT_R32G32B32A32_SFLOAT && s.format != VK_FORMAT_R16G16B16A16_SFLOAT)
     throw Error("opacity settings: format must be RGBA32F or RGBA16F");
-  if (raster != OpacityRaster::Auto && raster != OpacityRaster::Compute && raster != OpacityRaster::Graphics)
+  if (s.raster != OpacityRaster::Auto && s.raster != OpacityRaster::Compute && s.raster != OpacityRaster::Graphics)
     throw Error("opacity settings: raster must be Auto, Compute or Graphics");
 }
 }  // namespace hp::render

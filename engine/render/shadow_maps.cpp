@@ -11,7 +11,7 @@
 namespace hp::render {
 namespace {
 const OpacitySettings& validated(const OpacitySettings& s) {
-  s.validate();
+  validate(s);
   return s;
 }
 

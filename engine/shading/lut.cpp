@@ -1,7 +1,6 @@
 // Mode names, dispatch and the JSON description of a Marschner LUT.
 #include "engine/shading/lut.h"
 
-#include <nlohmann/json.hpp>
 
 #include "engine/error.h"
 
@@ -46,32 +45,4 @@ MarschnerLut buildLut(LutMode mode, const HairMaterial& material, const LutBuild
   return lut;
 }
 
-nlohmann::json describeLut(const MarschnerLut& lut) {
-  const HairMaterial& m = lut.material;
-  nlohmann::json j;
-  j["mode"] = lutModeName(lut.mode);
-  j["parameterisation"] = lut.parameterisation;
-  j["sampling"] = "bilinear, clamp to edge, texel centres at (i + 0.5) / n, row 0 at v = 0";
-  j["material"] = {{"eta", m.eta},
-                   {"absorption", {m.absorption.r, m.absorption.g, m.absorption.b}},
-                   {"alphaR_rad", m.alphaR},
-                   {"betaR_rad", m.betaR},
-                   {"kG", m.kG},
-                   {"wc_rad", m.wc},
-                   {"dEta", m.dEta},
-                   {"dhM", m.dhM},
-                   {"betaN_rad", m.betaN}};
-  j["textures"] = nlohmann::json::array();
-  for (const LutTexture& t : lut.textures) {
-    j["textures"].push_back({{"name", t.name},
-                             {"width", t.width},
-                             {"height", t.height},
-                             {"format", lutFormatName(t.format)},
-                             {"channels", t.channelNames},
-                             {"scale", t.scale},
-                             {"u", t.uAxis},
-                             {"v", t.vAxis}});
-  }
-  return j;
-}
 }  // namespace hp

@@ -10,7 +10,6 @@
 //    theta_r) and N0/N1 (over phi, theta_r); scale = 1. The other three modes are the paper's model.
 // Texel data are floats already quantised to the GPU format (RGBA8: k/255), row-major, 4 channels,
 // row 0 at v = 0; texel (i, j) sits at texture coordinate ((i + 0.5)/width, (j + 0.5)/height).
-#include <nlohmann/json_fwd.hpp>
 
 #include <array>
 #include <string>
@@ -63,5 +62,4 @@ MarschnerLut buildPaperLut(const HairMaterial& material, LutFormat format = LutF
 MarschnerLut buildFloatLut(const HairMaterial& material, LutFormat format);
 MarschnerLut buildPhysicalLut(const HairMaterial& material, LutFormat format);
 
-nlohmann::json describeLut(const MarschnerLut& lut);  // layout, parameterisation, scales, material
 }  // namespace hp

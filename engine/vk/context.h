@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "engine/vk/device_selection.h"
+#include "hairpipe/context.h"
 #include "engine/vk/validation_log.h"
 
 namespace hp::vk {
@@ -36,20 +37,13 @@ struct ContextOptions {
   std::vector<std::string> deviceExtensions;
 };
 
-// Handles owned by an embedding application. hairpipe never destroys them and never waits idle on the
-// device. The device must have been created with apiVersion 1.3 and dynamicRendering + synchronization2
-// enabled (features adopt() cannot query: it checks the version, the queue family and the functions).
-// hairpipe's one-shot work outside the frame loop (construction uploads, setMaterial, reset) submits to
-// `queue` and waits on its own fence: the application must not use that queue from another thread then.
-struct ExternalDevice {
-  PFN_vkGetInstanceProcAddr getInstanceProcAddr = nullptr;
-  VkInstance instance = VK_NULL_HANDLE;
-  VkPhysicalDevice physicalDevice = VK_NULL_HANDLE;
-  VkDevice device = VK_NULL_HANDLE;
-  std::uint32_t queueFamily = 0;
-  VkQueue queue = VK_NULL_HANDLE;
-  bool debugUtilsEnabled = false;  // whether the app enabled VK_EXT_debug_utils (object names)
-};
+// Handles owned by an embedding application (defined once, in the public API: hairpipe::DeviceHandles).
+// hairpipe never destroys them and never waits idle on the device. The device must have been created with
+// apiVersion 1.3 and dynamicRendering + synchronization2 enabled (features adopt() cannot query: it checks
+// the version, the queue family and the functions). hairpipe's one-shot work outside the frame loop
+// (construction uploads, setMaterial, reset) submits to `queue` and waits on its own fence: the
+// application must not use that queue from another thread then.
+using ExternalDevice = hairpipe::DeviceHandles;
 
 class Context {
  public:

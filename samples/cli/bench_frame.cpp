@@ -6,9 +6,9 @@
 #include <unistd.h>
 
 #include "engine/hair/default_head.h"
-#include "engine/hair_system.h"
+#include "samples/tools/hair_system.h"
 #include "samples/tools/offscreen_renderer.h"
-#include "engine/vk/copy_reference.h"
+#include "samples/tools/copy_reference.h"
 #include "engine/vk/submit.h"
 #include "shaders/shared/raster.h"
 

@@ -16,7 +16,7 @@
 
 #include "engine/error.h"
 #include "engine/hair/atomic_write.h"
-#include "engine/vk/copy_reference.h"
+#include "samples/tools/copy_reference.h"
 #include "samples/cli/bench_context.h"
 #include "samples/cli/bench_frame.h"
 #include "samples/cli/bench_plot.h"

@@ -17,7 +17,7 @@
 #include "engine/hair/fit_sphere.h"
 #include "engine/hair/hair_import.h"
 #include "engine/hair/root_topology.h"
-#include "engine/hair/synthetic_hair.h"
+#include "samples/tools/host/synthetic_hair.h"
 #include "samples/cli/bench_context.h"
 #include "samples/cli/command.h"
 

@@ -13,7 +13,7 @@
 
 #include "engine/error.h"
 #include "engine/hair/default_head.h"
-#include "engine/hair_system.h"
+#include "samples/tools/hair_system.h"
 #include "engine/vk/context.h"
 #include "engine/vk/submit.h"
 #include "samples/cli/bench_context.h"

@@ -22,7 +22,7 @@
 #include "engine/hair/default_head.h"
 #include "engine/vk/barriers.h"
 #include "engine/vk/context.h"
-#include "engine/vk/copy_reference.h"
+#include "samples/tools/copy_reference.h"
 #include "engine/vk/submit.h"
 #include "samples/cli/bench_context.h"
 #include "samples/cli/command.h"

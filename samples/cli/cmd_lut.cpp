@@ -14,7 +14,7 @@
 #include "engine/hair/atomic_write.h"
 #include "samples/tools/png_file.h"
 #include "engine/shading/lut.h"
-#include "engine/shading/lut_export.h"
+#include "samples/tools/host/lut_export.h"
 #include "samples/cli/command.h"
 #include "samples/cli/material_options.h"
 #include "samples/cli/output_paths.h"

@@ -9,7 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "engine/error.h"
-#include "engine/hair/camera_fit.h"
+#include "samples/tools/host/camera_fit.h"
 #include "samples/tools/png_file.h"
 #include "samples/tools/progress_reporter.h"
 #include "samples/tools/render_job.h"

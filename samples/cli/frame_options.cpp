@@ -4,7 +4,7 @@
 #include <iostream>
 
 #include "engine/error.h"
-#include "engine/hair/camera_fit.h"
+#include "samples/tools/host/camera_fit.h"
 #include "samples/cli/material_options.h"
 
 namespace hp::cli {
@@ -34,7 +34,7 @@ hp::render::OpacitySettings opacitySettings(const FrameOptions& o) {
   }
   if (o.shadowK) s.k = *o.shadowK;
   if (o.shadowBias) s.biasSlices = s.deepBiasSlices = *o.shadowBias;  // in the slices in effect
-  s.validate();
+  hp::render::validate(s);
   return s;
 }
 

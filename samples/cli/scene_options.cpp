@@ -3,7 +3,8 @@
 #include <iostream>
 
 #include "engine/error.h"
-#include "engine/hair/model_guess.h"
+#include "samples/tools/host/model_guess.h"
+#include "samples/tools/host/scene_file.h"
 
 namespace hp::cli {
 void addSceneOptions(CLI::App& cmd, SceneOptions& options) {

@@ -119,7 +119,7 @@ struct App {
     std::vector<VkPhysicalDevice> devices(count);
     check(vkEnumeratePhysicalDevices(instance, &count, devices.data()), "vkEnumeratePhysicalDevices");
     for (VkPhysicalDevice d : devices)  // the first device hairpipe can run on
-      if (hairpipe::unfitReasons(vkGetInstanceProcAddr, instance, d).empty()) {
+      if (const auto reasons = hairpipe::unfitReasons(vkGetInstanceProcAddr, instance, d); reasons && reasons.value().empty()) {
         physical = d;
         break;
       }

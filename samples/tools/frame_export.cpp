@@ -7,7 +7,7 @@
 #include "engine/error.h"
 #include "engine/hair/atomic_write.h"
 #include "engine/hair/input_file.h"
-#include "engine/hair/json_reader.h"
+#include "samples/tools/host/json_reader.h"
 #include "samples/tools/obj_albedo_mesh.h"
 #include "samples/tools/reference/fibre.h"
 #include "samples/tools/render_targets.h"

@@ -9,7 +9,7 @@
 #include "engine/error.h"
 #include "engine/hair/atomic_write.h"
 #include "engine/hair/input_file.h"
-#include "engine/shading/lut_export.h"
+#include "samples/tools/host/lut_export.h"
 #include "shaders/shared/tonemap.h"
 
 namespace hp {

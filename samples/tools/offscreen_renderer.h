@@ -11,7 +11,7 @@
 #include <span>
 #include <vector>
 
-#include "engine/hair_system.h"
+#include "samples/tools/hair_system.h"
 #include "samples/tools/linear_image.h"
 #include "samples/tools/render_targets.h"
 #include "samples/tools/tonemap_pass.h"

@@ -11,7 +11,7 @@
 #include "engine/hair/atomic_write.h"
 #include "samples/tools/png_file.h"
 #include "engine/shading/half_float.h"
-#include "engine/shading/lut_export.h"
+#include "samples/tools/host/lut_export.h"
 #include "engine/vk/transfer.h"
 
 namespace hp::render {

@@ -8,10 +8,10 @@
 #include <vector>
 
 #include "engine/hair/hair_file.h"
-#include "engine/hair_system.h"
+#include "samples/tools/hair_system.h"
 #include "samples/tools/frame_capture.h"
 #include "samples/tools/opacity_capture.h"
-#include "engine/sim/head_animation.h"
+#include "samples/tools/host/head_animation.h"
 #include "engine/vk/profiler.h"
 
 namespace hp {

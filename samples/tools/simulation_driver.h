@@ -8,8 +8,8 @@
 #include <vector>
 
 #include "compute/simulate_pass.h"
-#include "engine/sim/head_animation.h"
-#include "engine/sim/sim_stats.h"
+#include "samples/tools/host/head_animation.h"
+#include "samples/tools/host/sim_stats.h"
 #include "engine/vk/profiler.h"
 
 namespace hp {

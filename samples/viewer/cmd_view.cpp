@@ -7,7 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "engine/error.h"
-#include "engine/hair/camera_fit.h"
+#include "samples/tools/host/camera_fit.h"
 #include "engine/vk/check.h"
 #include "samples/cli/command.h"
 #include "samples/cli/material_options.h"
@@ -102,7 +102,7 @@ hp::viewer::ViewerOptions viewerOptions(const ViewOptions& o, const CLI::App& cm
   }
   r.opacity.enabled = !o.noShadows;
   if (o.opacityResolution) r.opacity.resolution = *o.opacityResolution;
-  r.opacity.validate();
+  hp::render::validate(r.opacity);
   r.lutMode = hp::parseLutMode(o.lutMode);
   r.animation = hp::parseHeadAnimation(o.animate);
   if (!(o.exposure > 0.0f) || !std::isfinite(o.exposure)) throw hp::Error("--exposure must be a positive number");

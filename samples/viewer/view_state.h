@@ -6,7 +6,7 @@
 // drag) turns the light. Keys: N nod, T turn, S shake (the same key again stops it), W wind on/off,
 // Space pause, F1 or Tab panel, Escape or Q close.
 #include "engine/hair/scene.h"
-#include "engine/sim/head_animation.h"
+#include "samples/tools/host/head_animation.h"
 
 namespace hp::viewer {
 enum class Key { Nod, Turn, Shake, Wind, Pause, Panel, Close, Other };

@@ -9,7 +9,7 @@
 #include <cstdint>
 #include <memory>
 
-#include "engine/hair_system.h"
+#include "samples/tools/hair_system.h"
 #include "engine/vk/buffer.h"
 #include "engine/vk/context.h"
 #include "engine/vk/profiler.h"

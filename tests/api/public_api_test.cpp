@@ -38,7 +38,9 @@ class PublicApi : public ::testing::Test {
     renderer_.reset();
     if (ctx_) {
       EXPECT_TRUE(ctx_->waitIdle().ok());
-      for (const std::string& m : ctx_->validationMessages()) ADD_FAILURE() << m;
+      const hairpipe::Result<std::vector<std::string>> messages = ctx_->validationMessages();
+      ASSERT_TRUE(messages.ok()) << messages.message();
+      for (const std::string& m : messages.value()) ADD_FAILURE() << m;
     }
   }
   hairpipe::Instance instance(const hairpipe::InstanceSettings& s = {}) {
@@ -64,6 +66,11 @@ TEST(PublicApiWithoutDevice, AdoptRefusesMissingHandlesByName) {
   const std::string m = failureOf(hairpipe::Context::adopt({}));
   EXPECT_THAT(m, HasSubstr("hairpipe::Context::adopt"));
   EXPECT_THAT(m, HasSubstr("getInstanceProcAddr"));
+  EXPECT_THAT(failureOf(hairpipe::unfitReasons(nullptr, VK_NULL_HANDLE, VK_NULL_HANDLE)),
+              HasSubstr("hairpipe::unfitReasons: getInstanceProcAddr, instance and physicalDevice must be set"));
+  const hairpipe::Result<std::vector<std::string>> needs = hairpipe::requirements();
+  ASSERT_TRUE(needs.ok());
+  EXPECT_EQ(needs.value().front(), "Vulkan 1.3");
 }
 
 TEST(PublicApiWithoutDevice, AssetsAndHelpersRefuseBadInputByName) {

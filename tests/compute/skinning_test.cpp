@@ -14,7 +14,7 @@
 #include "engine/error.h"
 #include "engine/hair/default_head.h"
 #include "engine/hair/head_sdf.h"
-#include "engine/sim/sim_stats.h"
+#include "samples/tools/host/sim_stats.h"
 #include "engine/vk/submit.h"
 #include "engine/vk/transfer.h"
 #include "tests/support/vk_fixture.h"

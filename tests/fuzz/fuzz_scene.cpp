@@ -5,6 +5,7 @@
 
 #include "engine/error.h"
 #include "engine/hair/scene.h"
+#include "samples/tools/host/scene_file.h"
 #include "tests/fuzz/fuzz_check.h"
 
 namespace {

@@ -3,7 +3,7 @@
 
 #include "engine/hair/hair_import.h"
 #include "engine/hair/resample.h"
-#include "engine/hair/synthetic_hair.h"
+#include "samples/tools/host/synthetic_hair.h"
 #include "tests/hair/hair_test_util.h"
 
 namespace hp {

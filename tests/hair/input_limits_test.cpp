@@ -4,9 +4,10 @@
 
 #include "engine/hair/hair_file.h"
 #include "engine/hair/input_file.h"
-#include "engine/hair/json_reader.h"
+#include "samples/tools/host/json_reader.h"
 #include "engine/hair/obj_import.h"
 #include "engine/hair/scene.h"
+#include "samples/tools/host/scene_file.h"
 #include "tests/hair/hair_test_util.h"
 
 namespace hp {

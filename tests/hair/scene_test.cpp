@@ -7,7 +7,8 @@
 
 #include "engine/hair/hair_file.h"
 #include "engine/hair/scene.h"
-#include "engine/hair/synthetic_hair.h"
+#include "samples/tools/host/scene_file.h"
+#include "samples/tools/host/synthetic_hair.h"
 #include "tests/hair/hair_test_util.h"
 
 namespace hp {

@@ -8,6 +8,7 @@
 #include "engine/error.h"
 #include "engine/hair/head_mesh.h"
 #include "engine/hair/scene.h"
+#include "samples/tools/host/scene_file.h"
 #include "engine/hair/sdf_mesh.h"
 
 namespace hp {

@@ -11,6 +11,7 @@
 #include "engine/error.h"
 #include "engine/hair/hair_import.h"
 #include "engine/hair/scene.h"
+#include "samples/tools/host/scene_file.h"
 #include "engine/hair/tfx_file.h"
 #include "tests/hair/tfx_cases.h"
 

@@ -3,7 +3,7 @@
 
 #include "engine/error.h"
 #include "engine/hair/default_head.h"
-#include "engine/hair_system.h"
+#include "samples/tools/hair_system.h"
 #include "engine/vk/submit.h"
 #include "tests/support/vk_fixture.h"
 

@@ -7,9 +7,9 @@
 #include <filesystem>
 
 #include "engine/error.h"
-#include "engine/hair/camera_fit.h"
+#include "samples/tools/host/camera_fit.h"
 #include "engine/hair/hair_file.h"
-#include "engine/hair/model_guess.h"
+#include "samples/tools/host/model_guess.h"
 #include "samples/tools/render_job.h"
 #include "tests/support/vk_fixture.h"
 

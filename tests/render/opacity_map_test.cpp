@@ -15,7 +15,7 @@
 #include "engine/error.h"
 #include "engine/hair/default_head.h"
 #include "engine/frame_recorder.h"
-#include "engine/hair_system.h"
+#include "samples/tools/hair_system.h"
 #include "samples/tools/opacity_capture.h"
 #include "engine/render/opacity_pass.h"
 #include "engine/vk/submit.h"
@@ -202,7 +202,7 @@ INSTANTIATE_TEST_SUITE_P(Raster, OpacityMapTest,
 TEST(OpacitySettings, RefusesBadValuesNamingTheField) {
   auto refuses = [](OpacitySettings s, const std::string& field) {
     try {
-      s.validate();
+      hp::render::validate(s);
     } catch (const hp::Error& e) {
       EXPECT_NE(std::string(e.what()).find(field), std::string::npos) << e.what();
       return;
@@ -210,7 +210,7 @@ TEST(OpacitySettings, RefusesBadValuesNamingTheField) {
     ADD_FAILURE() << "accepted a bad " << field;
   };
   OpacitySettings s;
-  EXPECT_NO_THROW(s.validate());
+  EXPECT_NO_THROW(hp::render::validate(s));
   for (std::uint32_t r : {0u, 8u, 5000u, 0xffffffffu}) {
     s = {};
     s.resolution = r;

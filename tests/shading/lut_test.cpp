@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "engine/error.h"
+#include "samples/tools/host/lut_export.h"
 #include "engine/shading/half_float.h"
 #include "engine/shading/lut.h"
 #include "engine/shading/lut_param.h"

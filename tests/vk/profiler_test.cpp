@@ -49,5 +49,5 @@ TEST(EmbeddedShaders, EveryShaderIsValidSpirvAndUnknownNamesAreRefused) {
     ASSERT_GT(words.size(), 5u) << name;
     EXPECT_EQ(words[0], 0x07230203u) << name;  // SPIR-V magic
   }
-  EXPECT_THROW(hp::shaders::spirv("no_such_shader.comp"), std::out_of_range);
+  EXPECT_THROW(hp::shaders::spirv("no_such_shader.comp"), hp::Error);
 }

@@ -57,7 +57,7 @@ class Context {
   std::uint32_t queueFamily() const noexcept;
   std::string deviceName() const noexcept;
   // Headless with validation: the validation messages reported so far (warnings and errors).
-  std::vector<std::string> validationMessages() const noexcept;
+  Result<std::vector<std::string>> validationMessages() const noexcept;
   // A headless device's vkDeviceWaitIdle; on an adopted device a failure (the device is the application's).
   Status waitIdle() const noexcept;
   // The most device memory hairpipe may hold at once (0: no cap but the heaps).
@@ -72,8 +72,8 @@ class Context {
 };
 
 // The instance version, device version, features and queue capabilities hairpipe needs, one per line.
-std::vector<std::string> requirements() noexcept;
-// Why this physical device cannot run hairpipe (empty: it can), through the application's loader.
-std::vector<std::string> unfitReasons(PFN_vkGetInstanceProcAddr getInstanceProcAddr, VkInstance instance,
+Result<std::vector<std::string>> requirements() noexcept;
+// Why this physical device cannot run hairpipe (an empty list: it can), through the application's loader.
+Result<std::vector<std::string>> unfitReasons(PFN_vkGetInstanceProcAddr getInstanceProcAddr, VkInstance instance,
                                       VkPhysicalDevice physicalDevice) noexcept;
 }  // namespace hairpipe

@@ -39,6 +39,7 @@ int main() {
   expect(!view && contains(view.message(), "eye is at the target"), "a degenerate camera: " + view.message());
   const hairpipe::Status idle = ctx->waitIdle();
   expect(idle.ok(), "waitIdle on a headless device");
-  expect(ctx->validationMessages().empty(), "no validation message");
+  const hairpipe::Result<std::vector<std::string>> messages = ctx->validationMessages();
+  expect(messages.ok() && messages.value().empty(), "no validation message");
   return failures == 0 ? 0 : 1;
 }

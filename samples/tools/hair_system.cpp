@@ -1,4 +1,4 @@
-#include "engine/hair_system.h"
+#include "samples/tools/hair_system.h"
 
 #include "engine/error.h"
 

@@ -1,4 +1,4 @@
-#include "engine/vk/copy_reference.h"
+#include "samples/tools/copy_reference.h"
 
 #include "engine/vk/barriers.h"
 #include "engine/vk/context.h"

@@ -1,4 +1,4 @@
-#include "engine/sim/head_animation.h"
+#include "samples/tools/host/head_animation.h"
 
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>

@@ -1,4 +1,4 @@
-#include "engine/sim/sim_stats.h"
+#include "samples/tools/host/sim_stats.h"
 
 #include <cmath>
 #include <limits>

@@ -1,4 +1,4 @@
-#include "engine/hair/json_reader.h"
+#include "samples/tools/host/json_reader.h"
 
 #include <cmath>
 #include <limits>

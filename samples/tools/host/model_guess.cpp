@@ -1,4 +1,4 @@
-#include "engine/hair/model_guess.h"
+#include "samples/tools/host/model_guess.h"
 
 #include <cmath>
 #include <sstream>

@@ -11,6 +11,8 @@
 #include <cstdint>
 #include <vector>
 
+#include <nlohmann/json_fwd.hpp>
+
 #include "engine/shading/lut.h"
 
 namespace hp {
@@ -24,4 +26,6 @@ struct PreviewImage {
   std::vector<std::uint8_t> rgb;  // width * height * 3, top row first
 };
 PreviewImage lutPreviewRgb8(const LutTexture& texture, LutChannels which);
+// The LUT set as JSON: layout, parameterisation, scales, material (`hairpipe lut`'s description file).
+nlohmann::json describeLut(const MarschnerLut& lut);
 }  // namespace hp

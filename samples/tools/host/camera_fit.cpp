@@ -1,4 +1,4 @@
-#include "engine/hair/camera_fit.h"
+#include "samples/tools/host/camera_fit.h"
 
 #include <cmath>
 

@@ -4,8 +4,9 @@
 #include "engine/error.h"
 #include "engine/hair/default_head.h"
 #include "engine/hair/input_file.h"
-#include "engine/hair/json_reader.h"
+#include "samples/tools/host/json_reader.h"
 #include "engine/hair/scene.h"
+#include "samples/tools/host/scene_file.h"
 
 namespace hp {
 namespace {
@@ -217,8 +218,6 @@ void readSimulation(JsonObject& root, SimulationParams& s) {
   validateSection(s, *o, root.pointer("simulation"));
 }
 }  // namespace
-
-Scene::Scene() : growth(defaultHeadGrowth()) {}
 
 Scene parseScene(const std::string& jsonText, const std::string& source, const std::filesystem::path& baseDir) {
   nlohmann::json json = parseJsonText(jsonText, source);

@@ -1,4 +1,4 @@
-#include "engine/hair/synthetic_hair.h"
+#include "samples/tools/host/synthetic_hair.h"
 
 #include <algorithm>
 #include <cmath>
