@@ -112,7 +112,7 @@ std::vector<glm::uvec4> armedShadeArgs(std::size_t chunks) { return std::vector<
 
 void RasterSettings::validate() const {
   if (tileBudget == 0 || tileBudget > (1u << 24))
-    throw Error("RasterSettings.tileBudget must be in [1, 16777216], got " + std::to_string(tileBudget));
+    throw Error("tileBudget must be in [1, 16777216], got " + std::to_string(tileBudget));
 }
 
 std::uint32_t rasterListCapacity(std::uint64_t segments, std::uint64_t tiles, std::uint64_t maxRangeBytes) {

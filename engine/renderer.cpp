@@ -25,7 +25,12 @@ Renderer::Renderer(const vk::Context& ctx, const RendererSettings& settings)
       frameLights_(settings.framesInFlight),
       frameHeadShadows_(settings.framesInFlight) {}
 
-Renderer::~Renderer() = default;
+// Retired instances go while every member is alive: their destructors tell the Renderer (forgetInstance).
+// The raster target first: it refers to instances, and nothing may draw from it any more.
+Renderer::~Renderer() {
+  rasterTarget_.reset();
+  retired_.clear();
+}
 
 std::unique_ptr<HairInstance> Renderer::createInstance(const HairAsset& asset, const InstanceSettings& settings,
                                                        const glm::mat4& initialHead) {
@@ -38,8 +43,10 @@ std::unique_ptr<HairInstance> Renderer::createInstance(const HairAsset& asset, c
 
 void Renderer::destroyInstance(std::unique_ptr<HairInstance> instance) {
   if (!instance) return;
-  instanceChanged(*instance, true);
-  retire(std::shared_ptr<HairInstance>(std::move(instance)));
+  // Retired first: if rebuilding a raster target without it fails, it is still kept for the frames in flight.
+  const std::shared_ptr<HairInstance> retired(std::move(instance));
+  retire(retired);
+  instanceChanged(*retired, true);
 }
 
 void Renderer::setRasterTarget(VkExtent2D extent, VkImageView depth, std::span<HairInstance* const> instances) {

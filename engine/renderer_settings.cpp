@@ -36,7 +36,7 @@ void View::validate(std::uint32_t maxViews) const {
   if (extent.width == 0 || extent.height == 0) throw Error("View.extent must be non-zero");
   if (!allFinite(camera.view) || !allFinite(camera.proj) || !std::isfinite(camera.fovY) ||
       !std::isfinite(glm::length(camera.position)))
-    throw Error("View.camera must be finite");
+    throw Error("the view's matrices, eye and fovY must be finite");
   if (index >= maxViews)
     throw Error("View.index " + std::to_string(index) + " is past RendererSettings.maxViewsPerFrame (" +
                 std::to_string(maxViews) + ")");

@@ -14,20 +14,27 @@
 #include "hairpipe/hairpipe.h"
 
 namespace hairpipe {
+// An instance keeps its Renderer's implementation alive: hp::HairInstance refers to it to its end.
 struct Instance::Impl {
-  hp::Renderer* renderer = nullptr;
+  std::shared_ptr<hp::Renderer> renderer;
   Asset asset;
   std::unique_ptr<hp::HairInstance> instance;
 };
 
 struct Access {
-  static const hp::vk::Context& context(const Context& c) { return *c.impl_; }
+  static const hp::vk::Context& context(const Context& c) {
+    if (!c.impl_) throw hp::Error("the Context was moved from");
+    return *c.impl_;
+  }
   static Context makeContext(std::unique_ptr<hp::vk::Context> impl) { return Context(std::move(impl)); }
-  static const hp::HairAsset& asset(const Asset& a) { return *a.impl_; }
+  static const hp::HairAsset& asset(const Asset& a) {
+    if (!a.impl_) throw hp::Error("the Asset was moved from");
+    return *a.impl_;
+  }
   static Asset makeAsset(hp::HairAsset asset) {
     return Asset(std::make_shared<const hp::HairAsset>(std::move(asset)));
   }
-  static Renderer makeRenderer(std::unique_ptr<hp::Renderer> impl) { return Renderer(std::move(impl)); }
+  static Renderer makeRenderer(std::shared_ptr<hp::Renderer> impl) { return Renderer(std::move(impl)); }
   static Instance makeInstance(std::unique_ptr<Instance::Impl> impl) { return Instance(std::move(impl)); }
   static Instance::Impl* impl(const Instance& i) { return i.impl_.get(); }
 };

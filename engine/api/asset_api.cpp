@@ -21,24 +21,27 @@ hp::ModelSpec::Kind kindOf(const std::string& path) {
 }
 }  // namespace
 
-std::uint32_t Asset::guideCount() const noexcept { return impl_->guides.guideCount(); }
-std::uint32_t Asset::particlesPerGuide() const noexcept { return impl_->guides.particlesPerGuide; }
+// A moved-from Asset counts nothing and has no name.
+std::uint32_t Asset::guideCount() const noexcept { return impl_ ? impl_->guides.guideCount() : 0; }
+std::uint32_t Asset::particlesPerGuide() const noexcept { return impl_ ? impl_->guides.particlesPerGuide : 0; }
 std::uint32_t Asset::strandCount() const noexcept {
-  return static_cast<std::uint32_t>(impl_->topology.strands.size());
+  return impl_ ? static_cast<std::uint32_t>(impl_->topology.strands.size()) : 0;
 }
 std::uint32_t Asset::headTriangleCount() const noexcept {
-  return static_cast<std::uint32_t>(impl_->head.indices.size() / 3);
+  return impl_ ? static_cast<std::uint32_t>(impl_->head.indices.size() / 3) : 0;
 }
-std::vector<Vec3> Asset::guideRoots() const noexcept {
-  std::vector<Vec3> out;
-  for (const glm::vec3& r : impl_->guides.roots()) out.push_back({r.x, r.y, r.z});
-  return out;
+Result<std::vector<Vec3>> Asset::guideRoots() const noexcept {
+  return guarded<std::vector<Vec3>>("hairpipe::Asset::guideRoots", [&] {
+    std::vector<Vec3> out;
+    for (const glm::vec3& r : Access::asset(*this).guides.roots()) out.push_back({r.x, r.y, r.z});
+    return out;
+  });
 }
-const std::string& Asset::name() const noexcept { return impl_->name; }
+const char* Asset::name() const noexcept { return impl_ ? impl_->name.c_str() : ""; }
 
 Result<Asset> Asset::withDensity(const Density& density) const noexcept {
   return guarded<Asset>("hairpipe::Asset::withDensity", [&] {
-    hp::HairAsset copy = *impl_;
+    hp::HairAsset copy = Access::asset(*this);
     copy.topology = hp::buildInterpolationTopology(copy.guides.roots(), copy.topology.triangles,
                                                    convert::density(density));
     return Access::makeAsset(std::move(copy));

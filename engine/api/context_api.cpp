@@ -23,28 +23,31 @@ Result<Context> Context::createHeadless(const HeadlessOptions& options) noexcept
   });
 }
 
-VkInstance Context::instance() const noexcept { return impl_->instance(); }
-VkPhysicalDevice Context::physicalDevice() const noexcept { return impl_->physicalDevice(); }
-VkDevice Context::device() const noexcept { return impl_->device(); }
-VkQueue Context::queue() const noexcept { return impl_->queue(); }
-std::uint32_t Context::queueFamily() const noexcept { return impl_->queueFamily(); }
-std::string Context::deviceName() const noexcept { return impl_->properties().deviceName; }
+// A moved-from Context answers with null handles, an empty name, zero bytes, and failures.
+VkInstance Context::instance() const noexcept { return impl_ ? impl_->instance() : VK_NULL_HANDLE; }
+VkPhysicalDevice Context::physicalDevice() const noexcept { return impl_ ? impl_->physicalDevice() : VK_NULL_HANDLE; }
+VkDevice Context::device() const noexcept { return impl_ ? impl_->device() : VK_NULL_HANDLE; }
+VkQueue Context::queue() const noexcept { return impl_ ? impl_->queue() : VK_NULL_HANDLE; }
+std::uint32_t Context::queueFamily() const noexcept { return impl_ ? impl_->queueFamily() : 0; }
+const char* Context::deviceName() const noexcept { return impl_ ? impl_->properties().deviceName : ""; }
 
 Result<std::vector<std::string>> Context::validationMessages() const noexcept {
   return guarded<std::vector<std::string>>("hairpipe::Context::validationMessages", [&] {
     std::vector<std::string> out;
-    for (const hp::vk::ValidationMessage& m : impl_->sharedValidationLog()->messages())
+    for (const hp::vk::ValidationMessage& m : Access::context(*this).sharedValidationLog()->messages())
       out.push_back(m.idName + ": " + m.text);
     return out;
   });
 }
 
 Status Context::waitIdle() const noexcept {
-  return guardedStatus("hairpipe::Context::waitIdle", [&] { impl_->waitIdle(); });
+  return guardedStatus("hairpipe::Context::waitIdle", [&] { Access::context(*this).waitIdle(); });
 }
 
-void Context::setDeviceMemoryBudget(VkDeviceSize bytes) noexcept { impl_->setDeviceMemoryBudget(bytes); }
-std::uint64_t Context::allocatedBytes() const noexcept { return impl_->allocatedBytes(); }
+void Context::setDeviceMemoryBudget(VkDeviceSize bytes) noexcept {
+  if (impl_) impl_->setDeviceMemoryBudget(bytes);
+}
+std::uint64_t Context::allocatedBytes() const noexcept { return impl_ ? impl_->allocatedBytes() : 0; }
 
 Result<std::vector<std::string>> requirements() noexcept {
   return guarded<std::vector<std::string>>("hairpipe::requirements", [] {

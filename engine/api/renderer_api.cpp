@@ -22,20 +22,35 @@ hp::HairInstance& implementation(const Instance::Impl* impl) {
   if (!impl) throw hp::Error("the instance was moved from");
   return *impl->instance;
 }
+
+hp::Renderer& implementation(const std::shared_ptr<hp::Renderer>& renderer) {
+  if (!renderer) throw hp::Error("the Renderer was moved from");
+  return *renderer;
+}
+
+// Retires the instance through its Renderer, which keeps it until the frames in flight are done
+// (destroyInstance retires it before it rebuilds a raster target, which may fail).
+void retire(std::unique_ptr<Instance::Impl> impl) noexcept {
+  if (!impl) return;
+  try {
+    impl->renderer->destroyInstance(std::move(impl->instance));
+  } catch (...) {
+    // The raster target holding it could not be rebuilt: it was dropped (recordRaster asks for
+    // setRasterTarget); the instance itself is retired already.
+  }
+}
 }  // namespace
 
 Instance::Instance(std::unique_ptr<Impl> impl) noexcept : impl_(std::move(impl)) {}
 Instance::Instance(Instance&&) noexcept = default;
-Instance& Instance::operator=(Instance&&) noexcept = default;
-Instance::~Instance() {
-  if (!impl_) return;
-  try {
-    impl_->renderer->destroyInstance(std::move(impl_->instance));
-  } catch (...) {
-    // Rebuilding a raster target without it failed: the instance goes now and the target is dropped
-    // (recordRaster then asks for setRasterTarget).
+Instance& Instance::operator=(Instance&& other) noexcept {
+  if (this != &other) {
+    retire(std::move(impl_));
+    impl_ = std::move(other.impl_);
   }
+  return *this;
 }
+Instance::~Instance() { retire(std::move(impl_)); }
 
 Status Instance::setMotion(const HeadMotion& motion) noexcept {
   return guardedStatus("hairpipe::Instance::setMotion", [&] { implementation(impl_.get()).setMotion(convert::motion(motion)); });
@@ -79,25 +94,25 @@ Status Instance::setDensity(const Density& density) noexcept {
   });
 }
 std::uint32_t Instance::strandCount() const noexcept {
-  return impl_ ? impl_->instance->strands().layout().strandCount : 0;
+  return impl_ ? impl_->instance->strands().layout().strandCount : 0;  // 0: moved from
 }
 
-Renderer::Renderer(std::unique_ptr<hp::Renderer> impl) noexcept : impl_(std::move(impl)) {}
+Renderer::Renderer(std::shared_ptr<hp::Renderer> impl) noexcept : impl_(std::move(impl)) {}
 Renderer::Renderer(Renderer&&) noexcept = default;
 Renderer& Renderer::operator=(Renderer&&) noexcept = default;
 Renderer::~Renderer() = default;
 
 Result<Renderer> Renderer::create(const Context& context, const RendererSettings& settings) noexcept {
   return guarded<Renderer>("hairpipe::Renderer::create", [&] {
-    return Access::makeRenderer(std::make_unique<hp::Renderer>(Access::context(context), convert::renderer(settings)));
+    return Access::makeRenderer(std::make_shared<hp::Renderer>(Access::context(context), convert::renderer(settings)));
   });
 }
 
 Result<Instance> Renderer::createInstance(const Asset& asset, const InstanceSettings& settings,
                                           const Mat4& initialHeadToWorld) noexcept {
   return guarded<Instance>("hairpipe::Renderer::createInstance", [&] {
-    auto impl = std::make_unique<Instance::Impl>(Instance::Impl{impl_.get(), asset, nullptr});
-    impl->instance = impl_->createInstance(Access::asset(asset), convert::instance(settings),
+    auto impl = std::make_unique<Instance::Impl>(Instance::Impl{impl_, asset, nullptr});
+    impl->instance = implementation(impl_).createInstance(Access::asset(asset), convert::instance(settings),
                                            convert::mat(initialHeadToWorld));
     return Access::makeInstance(std::move(impl));
   });
@@ -105,31 +120,33 @@ Result<Instance> Renderer::createInstance(const Asset& asset, const InstanceSett
 
 Status Renderer::recordUpdate(VkCommandBuffer cmd, std::uint64_t frame, std::span<Instance* const> instances) noexcept {
   return guardedStatus("hairpipe::Renderer::recordUpdate",
-                       [&] { impl_->recordUpdate(cmd, frame, implementations(instances)); });
+                       [&] { implementation(impl_).recordUpdate(cmd, frame, implementations(instances)); });
 }
 Status Renderer::recordShadows(VkCommandBuffer cmd, std::uint64_t frame, const Light& light,
                                std::span<Instance* const> instances) noexcept {
   return guardedStatus("hairpipe::Renderer::recordShadows",
-                       [&] { impl_->recordShadows(cmd, frame, convert::light(light), implementations(instances)); });
+                       [&] { implementation(impl_).recordShadows(cmd, frame, convert::light(light), implementations(instances)); });
 }
 Status Renderer::recordDraw(VkCommandBuffer cmd, std::uint64_t frame, const View& view,
                             std::span<Instance* const> instances) noexcept {
   return guardedStatus("hairpipe::Renderer::recordDraw",
-                       [&] { impl_->recordDraw(cmd, frame, convert::view(view), implementations(instances)); });
+                       [&] { implementation(impl_).recordDraw(cmd, frame, convert::view(view), implementations(instances)); });
 }
 Status Renderer::setRasterTarget(VkExtent2D extent, VkImageView depth, std::span<Instance* const> instances) noexcept {
   return guardedStatus("hairpipe::Renderer::setRasterTarget",
-                       [&] { impl_->setRasterTarget(extent, depth, implementations(instances)); });
+                       [&] { implementation(impl_).setRasterTarget(extent, depth, implementations(instances)); });
 }
 Status Renderer::recordRaster(VkCommandBuffer cmd, std::uint64_t frame, const View& view) noexcept {
-  return guardedStatus("hairpipe::Renderer::recordRaster", [&] { impl_->recordRaster(cmd, frame, convert::view(view)); });
+  return guardedStatus("hairpipe::Renderer::recordRaster", [&] { implementation(impl_).recordRaster(cmd, frame, convert::view(view)); });
 }
 Status Renderer::recordComposite(VkCommandBuffer cmd, VkExtent2D extent) noexcept {
-  return guardedStatus("hairpipe::Renderer::recordComposite", [&] { impl_->recordComposite(cmd, extent); });
+  return guardedStatus("hairpipe::Renderer::recordComposite", [&] { implementation(impl_).recordComposite(cmd, extent); });
 }
 Status Renderer::setOpacityTuning(const OpacitySettings& opacity) noexcept {
-  return guardedStatus("hairpipe::Renderer::setOpacityTuning", [&] { impl_->setOpacityTuning(opacity); });
+  return guardedStatus("hairpipe::Renderer::setOpacityTuning", [&] { implementation(impl_).setOpacityTuning(opacity); });
 }
-RasterMode Renderer::raster() const noexcept { return convert::raster(impl_->raster()); }
+RasterMode Renderer::raster() const noexcept {
+  return impl_ ? convert::raster(impl_->raster()) : RasterMode::Auto;  // Auto: a moved-from Renderer
+}
 
 }  // namespace hairpipe

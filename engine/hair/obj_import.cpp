@@ -1,9 +1,6 @@
 #include "engine/hair/obj_import.h"
 
-// tinyobjloader (libtinyobjloader-dev) is compiled into hairpipe here, so the library carries it and an
-// application links nothing for it (this file is kept out of unity batches: the macro must not leak).
-#define TINYOBJLOADER_IMPLEMENTATION
-#include <tiny_obj_loader.h>
+#include <tiny_obj_loader.h>  // its implementation: tinyobj_implementation.cpp
 
 #include <cmath>
 #include <string>
@@ -68,7 +65,7 @@ void checkManifold(const std::vector<glm::uvec3>& triangles, const std::string& 
     }
 }
 
-void checkFinite(const std::vector<glm::vec3>& positions, const std::string& file) {
+void checkFiniteVertices(const std::vector<glm::vec3>& positions, const std::string& file) {
   for (std::size_t i = 0; i < positions.size(); ++i)
     if (!std::isfinite(positions[i].x) || !std::isfinite(positions[i].y) || !std::isfinite(positions[i].z))
       throw Error(file + ": vertex " + std::to_string(i + 1) + " is not finite");
@@ -90,7 +87,7 @@ RawMesh parseRaw(const std::string& text, const std::string& file) {
   RawMesh raw;
   for (std::size_t i = 0; i + 2 < attrib.vertices.size(); i += 3)
     raw.positions.emplace_back(attrib.vertices[i], attrib.vertices[i + 1], attrib.vertices[i + 2]);
-  checkFinite(raw.positions, file);
+  checkFiniteVertices(raw.positions, file);
   raw.normalSums.assign(raw.positions.size(), glm::vec3(0.0f));
   std::size_t face = 0;
   for (const auto& shape : reader.GetShapes()) {

@@ -352,7 +352,7 @@ hairpipe::ScalpInput jawSkin(const hairpipe::Asset& asset, const glm::vec3& pivo
   hairpipe::ScalpInput scalp;
   scalp.kind = hairpipe::ScalpInput::Kind::Bones;  // or RootFrames (your skinning's buffer), or Rigid
   scalp.boneCount = 2;
-  for (const hairpipe::Vec3& root : asset.guideRoots()) {
+  for (const hairpipe::Vec3& root : take(asset.guideRoots())) {
     const float w = std::clamp((pivot.y + 0.04f - root.y) / 0.04f, 0.0f, 1.0f);
     scalp.skin.push_back({{0, 1, 0, 0}, {1.0f - w, w, 0.0f, 0.0f}});
   }

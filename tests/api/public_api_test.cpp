@@ -160,4 +160,37 @@ TEST_F(PublicApi, InstancesOfAnotherRendererAreRefused) {
   hairpipe::Instance* heads[] = {&head};
   EXPECT_THAT(failureOf(other->recordUpdate(VK_NULL_HANDLE, 0, heads)), HasSubstr("another Renderer"));
 }
+TEST_F(PublicApi, MovedFromHandlesReturnFailuresAndInstancesOutliveTheirRenderer) {
+  hairpipe::Instance head = instance();
+  hairpipe::Instance* heads[] = {&head};
+  hairpipe::Renderer taken = std::move(*renderer_);
+  EXPECT_THAT(failureOf(renderer_->recordUpdate(VK_NULL_HANDLE, 0, heads)), HasSubstr("the Renderer was moved from"));
+  EXPECT_THAT(failureOf(renderer_->createInstance(*asset_, {})), HasSubstr("the Renderer was moved from"));
+  hairpipe::Instance other = std::move(head);
+  EXPECT_THAT(failureOf(head.setLook({})), HasSubstr("the instance was moved from"));
+  EXPECT_EQ(head.strandCount(), 0u);
+  hairpipe::Asset copy = *asset_;
+  hairpipe::Asset emptied = std::move(copy);
+  EXPECT_THAT(failureOf(copy.guideRoots()), HasSubstr("the Asset was moved from"));
+  EXPECT_EQ(copy.guideCount(), 0u);
+  EXPECT_EQ(emptied.guideCount(), asset_->guideCount());
+  // The Renderer goes first: its instance keeps what it needs and still takes settings.
+  { hairpipe::Renderer gone = std::move(taken); }
+  EXPECT_TRUE(other.setLook({}).ok());
+  EXPECT_EQ(other.strandCount(), 500u);
+}
+
+TEST_F(PublicApi, AnInstanceAssignedOverGivesWayToTheOther) {
+  hairpipe::Instance a = instance();
+  hairpipe::Density sparse;
+  sparse.totalStrands = 200;
+  hairpipe::Instance b = instance();
+  ASSERT_TRUE(b.setDensity(sparse).ok());
+  a = std::move(b);
+  EXPECT_EQ(a.strandCount(), 200u);
+  EXPECT_EQ(b.strandCount(), 0u);
+  EXPECT_TRUE(a.setLook({}).ok());
+  EXPECT_THAT(failureOf(b.setDensity(sparse)), HasSubstr("the instance was moved from"));
+}
+
 }  // namespace

@@ -129,9 +129,10 @@ TEST_F(VulkanTest, DeviceLutLookupAgreesWithTheCpuEmulation) {
 
   // The median bound (1e-6) holds the device to an exact emulation of lavapipe's filter (exact weights; RGBA8
   // results rounded to 8 bits): it applies where the device is lavapipe. Other conformant devices may quantise
-  // the filter weights to subTexelPrecisionBits and evaluate inverse trigonometry to Vulkan's looser precision
-  // (an NVIDIA H100, driver 580: median 2.2e-5 float and 1.6e-5 paper against the plain emulation, where one
-  // 8-bit weight step moves the float median by only 2.3e-6); they are held to the p99.9 and max bounds.
+  // the filter weights to subTexelPrecisionBits and evaluate the shader's arithmetic to Vulkan's looser
+  // precision (an NVIDIA H100, driver 580: median 2.2e-5 float and 1.6e-5 paper against the plain emulation,
+  // where one 8-bit weight step moves the float median by only 2.3e-6); they are held to the p99.9 and max
+  // bounds.
   const bool lavapipe = std::string(ctx->properties().deviceName).find("llvmpipe") != std::string::npos;
   MarschnerTextures flt(*ctx, hp::HairMaterial{}, LutMode::Float);
   Agreement f = report("float", agreement(evaluator.evaluate(flt, queries), emulate(flt.lut(), queries, 0), 0.01));

@@ -1,5 +1,7 @@
-// hairpipe calls device functions through its own per-device table (Context::fn()), so an application that
-// uses volk's global function pointers for its own device keeps them when hairpipe adopts another device.
+// hairpipe calls device functions through its own per-device table (Context::fn()): the global pointers
+// of its volk copy, loaded for one device (here the fixture's, standing for an application that calls
+// through them), stay as they are when hairpipe adopts another device. An application's own loader or
+// volk symbols are other symbols altogether (the installed archives define no vk*: Package.* tests).
 #include <gtest/gtest.h>
 
 #include <glm/glm.hpp>

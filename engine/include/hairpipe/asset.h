@@ -41,12 +41,13 @@ struct AssetSource {
 
 class Asset {
  public:
+  // Copies share the data. A moved-from Asset counts nothing and fails where a value is asked of it.
   std::uint32_t guideCount() const noexcept;
   std::uint32_t particlesPerGuide() const noexcept;
   std::uint32_t strandCount() const noexcept;  // render strands of the asset's interpolation topology
   std::uint32_t headTriangleCount() const noexcept;
-  std::vector<Vec3> guideRoots() const noexcept;  // head space, one per guide (for skinning weights)
-  const std::string& name() const noexcept;
+  Result<std::vector<Vec3>> guideRoots() const noexcept;  // head space, one per guide (for skinning weights)
+  const char* name() const noexcept;
   // The same guides and head with another density of render strands.
   Result<Asset> withDensity(const Density& density) const noexcept;
 

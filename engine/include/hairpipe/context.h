@@ -44,6 +44,7 @@ struct HeadlessOptions {
 
 class Context {
  public:
+  // A moved-from Context answers with null handles and failures.
   static Result<Context> adopt(const DeviceHandles& device) noexcept;
   static Result<Context> createHeadless(const HeadlessOptions& options) noexcept;
   Context(Context&&) noexcept;
@@ -55,7 +56,7 @@ class Context {
   VkDevice device() const noexcept;
   VkQueue queue() const noexcept;
   std::uint32_t queueFamily() const noexcept;
-  std::string deviceName() const noexcept;
+  const char* deviceName() const noexcept;
   // Headless with validation: the validation messages reported so far (warnings and errors).
   Result<std::vector<std::string>> validationMessages() const noexcept;
   // A headless device's vkDeviceWaitIdle; on an adopted device a failure (the device is the application's).

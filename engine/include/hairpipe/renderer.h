@@ -2,8 +2,8 @@
 // Contract: the Renderer is what hairpipe shares per device and attachment formats (pipelines, the fibre
 // lookup textures cached by material, the opacity shadow maps of the frame's light, the queue of retired
 // objects); an Instance is one head of hair on it (simulation state, strand buffers, per-frame constants).
-// Every call is noexcept and reports failure as a Status / Result naming the problem; a failed record
-// call has recorded nothing (its arguments are checked first).
+// Every call is noexcept; each that can fail reports it as a Status / Result naming the problem, and a
+// failed record call has recorded nothing (its arguments are checked first).
 //
 // Frames in flight: `frame` is the application's frame number, one more per frame (it may start
 // anywhere). When it records frame F the application has waited for frame F - framesInFlight to
@@ -13,34 +13,45 @@
 // and a Renderer before its Context; the application waits for the GPU before destroying the Renderer.
 //
 // Synchronisation with the application, per frame, in this order (hairpipe's own buffers and images are
-// synchronised inside the calls; only the application's resources are listed):
+// synchronised inside the calls; only the application's resources are listed). Every record call binds its
+// own pipelines, descriptor sets and push constants (graphics and compute), so the application binds its
+// own again afterwards.
 //   recordUpdate(cmd, frame, instances)   outside any rendering. Compute dispatches and transfers on
 //       hairpipe's buffers. Reads the ScalpInput::RootFrames buffer, if any, in COMPUTE_SHADER
 //       (SHADER_STORAGE_READ): the application's writes to it must be made visible to that first.
-//   recordShadows(cmd, frame, light, instances)   outside any rendering. Begins and ends its own
-//       renderings on hairpipe's shadow maps; touches nothing of the application's.
+//   recordShadows(cmd, frame, light, instances)   outside any rendering, every frame (it also orders the
+//       new strands before recordDraw reads them). Begins and ends its own renderings on hairpipe's
+//       shadow maps; touches nothing of the application's.
 //   recordDraw(cmd, frame, view, instances)   inside the application's vkCmdBeginRendering (dynamic
-//       rendering, begun by the application) whose attachments have RendererSettings::formats: colour in
-//       COLOR_ATTACHMENT_OPTIMAL, depth in DEPTH_STENCIL_ATTACHMENT_OPTIMAL or DEPTH_ATTACHMENT_OPTIMAL.
-//       Draws the heads (depth test and write, colour write) and, in RasterMode::Graphics, the hair
-//       (ribbons, depth tested, blended) in EARLY/LATE_FRAGMENT_TESTS and COLOR_ATTACHMENT_OUTPUT. Sets its
-//       own viewport, scissor and pipelines: the application sets its own again for later draws.
+//       rendering, begun by the application) whose attachments have RendererSettings::formats and cover
+//       view.extent from (0, 0): colour in COLOR_ATTACHMENT_OPTIMAL, depth in DEPTH_ATTACHMENT_OPTIMAL or
+//       DEPTH_STENCIL_ATTACHMENT_OPTIMAL. Depth convention: test LESS_OR_EQUAL against a depth cleared to
+//       1 (reversed-Z is not supported). Draws the heads (depth test and write, colour write) and, in
+//       RasterMode::Graphics, the hair (ribbons, depth tested, blended) in EARLY/LATE_FRAGMENT_TESTS and
+//       COLOR_ATTACHMENT_OUTPUT. Sets its own viewport (the whole extent, y up: a negative-height viewport
+//       for OpenGL-style projections) and scissor.
 // RasterMode::Compute draws the hair after the heads, against the depth (setRasterTarget once, outside
 // the frame loop, with a view of the application's depth image: format and samples of
-// RendererSettings::formats, usage DEPTH_STENCIL_ATTACHMENT | SAMPLED, aspect DEPTH). Per frame:
+// RendererSettings::formats, usage DEPTH_STENCIL_ATTACHMENT | SAMPLED, aspect DEPTH; a new depth image
+// needs a new setRasterTarget). One view per frame. Per frame:
 //   1. recordDraw as above (heads only) in a rendering whose depth attachment has STORE_OP_STORE;
 //      the application ends that rendering.
 //   2. the application's barrier on the depth image: LATE_FRAGMENT_TESTS, DEPTH_STENCIL_ATTACHMENT_WRITE ->
-//      COMPUTE_SHADER, SHADER_SAMPLED_READ; layout DEPTH_STENCIL_ATTACHMENT_OPTIMAL -> SHADER_READ_ONLY_OPTIMAL.
-//   3. recordRaster(cmd, frame, view)   outside any rendering: compute dispatches reading the depth in
-//      COMPUTE_SHADER; hairpipe's raster image is ready for the composite when it returns.
+//      COMPUTE_SHADER, SHADER_SAMPLED_READ; layout from step 1's to SHADER_READ_ONLY_OPTIMAL (a combined
+//      depth/stencil format without separateDepthStencilLayouts: aspect DEPTH | STENCIL).
+//   3. recordRaster(cmd, frame, view)   outside any rendering: compute dispatches (and a buffer update)
+//      reading the depth in COMPUTE_SHADER; hairpipe's raster image is ready for the composite when it returns.
 //   4. the application's barriers: depth COMPUTE_SHADER, SHADER_SAMPLED_READ -> EARLY|LATE_FRAGMENT_TESTS,
-//      DEPTH_STENCIL_ATTACHMENT_READ|WRITE, layout back to DEPTH_STENCIL_ATTACHMENT_OPTIMAL; colour
-//      COLOR_ATTACHMENT_OUTPUT, COLOR_ATTACHMENT_WRITE -> COLOR_ATTACHMENT_OUTPUT,
-//      COLOR_ATTACHMENT_READ|WRITE (the heads' colour before the composite's blend; same layout).
-//   5. a rendering of the same attachments with LOAD_OP_LOAD on colour and depth (the application's
-//      resolve attachments, if any, here), in which recordComposite(cmd, extent) blends the hair over the
-//      colour (multisampled: per sample, with the heads' depth samples deciding the coverage).
+//      DEPTH_STENCIL_ATTACHMENT_READ|WRITE, layout back to step 1's; colour COLOR_ATTACHMENT_OUTPUT,
+//      COLOR_ATTACHMENT_WRITE -> COLOR_ATTACHMENT_OUTPUT, COLOR_ATTACHMENT_READ|WRITE (the heads' colour
+//      before the composite's blend; same layout).
+//   5. a rendering of the same attachments with LOAD_OP_LOAD on colour (and the depth attached: the
+//      composite's pipeline is made for RendererSettings::formats; it neither tests nor writes depth; the
+//      application's resolve attachments, if any, here), in which recordComposite(cmd, extent) blends the
+//      hair over the colour (multisampled: per sample, with the coverage recordRaster took from the
+//      heads' depth samples).
+// Calls that submit to the context's queue and wait for it (outside the frame loop): Renderer::create,
+// createInstance, Instance::setMaterial (a new material's tables), Instance::setDensity, setRasterTarget.
 // hairpipe never waits on a queue and never submits inside these calls.
 #include <vulkan/vulkan_core.h>
 
@@ -64,8 +75,11 @@ struct Access;
 class Instance {
  public:
   Instance(Instance&&) noexcept;
+  // Retires the instance held before (as the destructor does), then takes the other's.
   Instance& operator=(Instance&&) noexcept;
-  // Retires the instance's GPU objects through its Renderer (destroyed after the frames in flight).
+  // Retires the instance's GPU objects through its Renderer (destroyed after the frames in flight). The
+  // Renderer's shared objects live on while any of its instances does. A moved-from Instance holds
+  // nothing: its setters return a failure.
   ~Instance();
 
   // This frame's head motion (from -> to); the frame's draws and shadows use `to`.
@@ -95,9 +109,13 @@ class Instance {
 
 class Renderer {
  public:
+  // The context must outlive the Renderer and its instances (a temporary cannot be given).
   static Result<Renderer> create(const Context& context, const RendererSettings& settings) noexcept;
+  static Result<Renderer> create(Context&& context, const RendererSettings& settings) = delete;
   Renderer(Renderer&&) noexcept;
   Renderer& operator=(Renderer&&) noexcept;
+  // The shared objects are destroyed with the last of the Renderer and its instances; the application has
+  // waited for the GPU to finish the frames that used them. A moved-from Renderer returns failures.
   ~Renderer();
 
   // Uploads the asset's data for one head (submits to the context's queue and waits for that upload).
@@ -124,8 +142,8 @@ class Renderer {
 
  private:
   friend struct Access;
-  explicit Renderer(std::unique_ptr<hp::Renderer> impl) noexcept;
-  std::unique_ptr<hp::Renderer> impl_;
+  explicit Renderer(std::shared_ptr<hp::Renderer> impl) noexcept;
+  std::shared_ptr<hp::Renderer> impl_;  // shared with its instances
 };
 
 // A view for hairpipe's conventions (right-handed view, Vulkan [0, 1] depth) from a camera; a failure

@@ -1,9 +1,9 @@
 #pragma once
-// Contract: how every public hairpipe function reports failure. Nothing in the public API throws: each
-// call returns a Status (success, or a message naming what failed: the parameter and its bad value, the
-// file and the problem in it, the Vulkan call and its VkResult) or a Result<T> (a value, or such a
-// Status). Usable from code built with -fno-exceptions. Messages are English, one line, and start with
-// the public function that failed.
+// Contract: how public hairpipe functions report failure. Nothing in the public API throws: each call that
+// can fail returns a Status (success, or a message naming what failed: the parameter and its bad value, the
+// file and the problem in it, the Vulkan call and its VkResult) or a Result<T> (a value, or such a Status).
+// Usable from code built with -fno-exceptions. Messages are English, one line, and start with the public
+// function that failed. value() and operator-> of a failed Result are undefined: check ok() first.
 #include <optional>
 #include <string>
 #include <type_traits>

@@ -147,9 +147,10 @@ struct Light {
 };
 
 // One camera of a frame. view: world to view space (right-handed, looking down -Z); projection: view to
-// Vulkan clip space with depth in [0, 1] (e.g. glm::perspectiveRH_ZO); hairpipe's draws use a viewport
-// covering `extent` with y pointing down, as Vulkan's. eye: the camera's world position. Several views of
-// one frame (a mirror, split screen) reuse its update and shadows; each needs its own index.
+// clip space with depth in [0, 1] and y up (OpenGL-style, e.g. glm::perspectiveRH_ZO: hairpipe's draws
+// flip y with a negative-height viewport over the whole extent). eye: the camera's world position; fovY
+// the vertical field of view of `projection` (it sets the strands' pixel width). Several views of one
+// frame (a mirror, a second camera) reuse its update and shadows; each needs its own index.
 struct View {
   Mat4 view;
   Mat4 projection;
@@ -160,8 +161,8 @@ struct View {
   bool lines = false;            // debugging: strands as 1-pixel lines
 };
 
-// A camera for hairpipe's own conventions: looking from eye at target, perspective with vertical field of
-// view fovY and the clip planes near/far (0 < near < far).
+// A camera in hairpipe's conventions (makeView turns it into a View): looking from eye at target,
+// perspective with vertical field of view fovY and the clip planes nearZ/farZ (0 < nearZ < farZ).
 struct Camera {
   Vec3 eye{0.0f, 0.0f, 1.0f};
   Vec3 target{};

@@ -26,7 +26,7 @@ int main() {
   hairpipe::HeadlessOptions headless;
   headless.validation = true;
   hairpipe::Result<hairpipe::Context> ctx = hairpipe::Context::createHeadless(headless);
-  expect(ctx.ok(), "a headless context: " + (ctx ? ctx->deviceName() : ctx.message()));
+  expect(ctx.ok(), "a headless context: " + (ctx ? std::string(ctx->deviceName()) : ctx.message()));
   if (!ctx) return 1;
   hairpipe::RendererSettings settings;
   settings.framesInFlight = 0;
