@@ -71,9 +71,34 @@ void checkFiniteVertices(const std::vector<glm::vec3>& positions, const std::str
       throw Error(file + ": vertex " + std::to_string(i + 1) + " is not finite");
 }
 
+// tinyobjloader keeps a face's vertex count in one byte: a face of 256 or more vertices would be misread
+// (its count wrapped, the faces after it shifted). Such faces are refused by count before parsing.
+constexpr std::size_t kMaxFaceVertices = 255;
+
+void refuseLargeFaces(const std::string& text, const std::string& file) {
+  std::size_t face = 0, pos = 0;
+  while (pos < text.size()) {
+    std::size_t end = text.find('\n', pos);
+    if (end == std::string::npos) end = text.size();
+    std::size_t i = text.find_first_not_of(" \t", pos);
+    if (i < end && text[i] == 'f' && i + 1 < end && (text[i + 1] == ' ' || text[i + 1] == '\t')) {
+      ++face;
+      std::size_t corners = 0;
+      for (std::size_t k = i + 1; k < end && text[k] != '#'; ++k)
+        if (text[k] != ' ' && text[k] != '\t' && text[k] != '\r' && (text[k - 1] == ' ' || text[k - 1] == '\t'))
+          ++corners;
+      if (corners > kMaxFaceVertices)
+        throw Error(faceLabel(file, face - 1) + " has " + std::to_string(corners) + " vertices; at most " +
+                    std::to_string(kMaxFaceVertices) + " are supported (split it into smaller polygons)");
+    }
+    pos = end + 1;
+  }
+}
+
 // Parsed from memory with an empty material text: hairpipe uses no materials, and an `mtllib` line
 // must never make it open a file the input names (such as ../../dev/zero).
 RawMesh parseRaw(const std::string& text, const std::string& file) {
+  refuseLargeFaces(text, file);
   tinyobj::ObjReaderConfig config;
   config.triangulate = false;  // indices are validated before any triangulation touches them
   config.vertex_color = false;
@@ -93,9 +118,11 @@ RawMesh parseRaw(const std::string& text, const std::string& file) {
   for (const auto& shape : reader.GetShapes()) {
     std::size_t offset = 0;
     for (unsigned count : shape.mesh.num_face_vertices) {
+      if (offset + count > shape.mesh.indices.size()) throw Error(faceLabel(file, face) + ": its corners could not be read");
       addFace(raw, attrib, shape.mesh.indices.data() + offset, count, faceLabel(file, face++));
       offset += count;
     }
+    if (offset != shape.mesh.indices.size()) throw Error(file + ": the faces' corners could not be read");
   }
   if (raw.triangles.empty()) throw Error(file + ": no faces");
   checkManifold(raw.triangles, file);

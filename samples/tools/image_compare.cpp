@@ -42,10 +42,31 @@ double ssimAt(const std::vector<double>& a, const std::vector<double>& b, std::u
   const double c1 = 0.01 * 0.01, c2 = 0.03 * 0.03;
   return ((2 * ma * mb + c1) * (2 * cov + c2)) / ((ma * ma + mb * mb + c1) * (va + vb + c2));
 }
+
+// Radiance is finite and >= 0; anything else would make the metrics meaningless (NaN read as 99 dB).
+void checkRadiance(const LinearImage& im, const char* which) {
+  for (std::size_t i = 0; i < im.values.size(); ++i)
+    if (!std::isfinite(im.values[i]) || im.values[i] < 0.0f) {
+      const std::size_t pixel = i / im.channels;
+      throw Error(std::string("compare: the ") + which + " has a " + (std::isfinite(im.values[i]) ? "negative" : "non-finite") +
+                  " value at pixel (" + std::to_string(pixel % im.width) + ", " + std::to_string(pixel / im.width) +
+                  "), channel " + std::to_string(i % im.channels) + ": " + std::to_string(im.values[i]));
+    }
+}
+
+// Each metric must come out finite: a value past what the display curve can take (~1e19 with the
+// exposure) overflows it.
+double finiteMetric(double value, const char* name) {
+  if (!std::isfinite(value))
+    throw Error(std::string("compare: the ") + name + " came out non-finite (a radiance too large for the display curve?)");
+  return value;
+}
 }  // namespace
 
 ImageComparison compareImages(const LinearImage& image, const LinearImage& reference, const LinearImage& mask,
                               float exposure) {
+  if (!(std::isfinite(exposure) && exposure > 0.0f))
+    throw Error("compare: exposure must be finite and > 0, got " + std::to_string(exposure));
   if (image.channels != 3 || reference.channels != 3) throw Error("compare: both images must be RGB");
   if (image.width != reference.width || image.height != reference.height)
     throw Error("compare: the images differ in size (" + std::to_string(image.width) + "x" + std::to_string(image.height) +
@@ -53,6 +74,8 @@ ImageComparison compareImages(const LinearImage& image, const LinearImage& refer
   const bool masked = mask.width > 0;
   if (masked && (mask.channels != 1 || mask.width != image.width || mask.height != image.height))
     throw Error("compare: the mask must be one channel of the images' size");
+  checkRadiance(image, "image");
+  checkRadiance(reference, "reference");
   const std::vector<double> la = displayLuminance(image, exposure), lb = displayLuminance(reference, exposure);
   ImageComparison r;
   double se = 0, ssim = 0, lumA = 0, lumB = 0, red[2] = {0, 0}, blue[2] = {0, 0};
@@ -71,10 +94,10 @@ ImageComparison compareImages(const LinearImage& image, const LinearImage& refer
       red[1] += reference.at(x, y, 0), blue[1] += reference.at(x, y, 2);
     }
   if (r.pixels == 0) throw Error("compare: the mask selects no pixel");
-  const double mse = se / (3.0 * double(r.pixels));
-  r.psnrDb = mse > 0.0 ? 10.0 * std::log10(1.0 / mse) : 99.0;
-  r.ssim = ssim / double(r.pixels);
-  r.luminanceRatio = lumB > 0.0 ? lumA / lumB : 0.0;
+  const double mse = finiteMetric(se / (3.0 * double(r.pixels)), "mean squared error");
+  r.psnrDb = mse > 0.0 ? 10.0 * std::log10(1.0 / mse) : 99.0;  // identical display values: 99 dB
+  r.ssim = finiteMetric(ssim / double(r.pixels), "SSIM");
+  r.luminanceRatio = finiteMetric(lumB > 0.0 ? lumA / lumB : 0.0, "luminance ratio");
   r.redBlueImage = blue[0] > 0.0 ? red[0] / blue[0] : 0.0;
   r.redBlueReference = blue[1] > 0.0 ? red[1] / blue[1] : 0.0;
   return r;

@@ -44,10 +44,20 @@ LinearImage readPfm(const std::filesystem::path& path) {
   if (!header || (magic != "PF" && magic != "Pf")) throw Error("'" + path.string() + "' is not a PFM file (PF or Pf header)");
   if (w < 1 || h < 1 || w > kMaxSide || h > kMaxSide) throw Error("'" + path.string() + "': PFM size must be in [1, 16384]");
   if (!(scale < 0)) throw Error("'" + path.string() + "': only little-endian PFM (negative scale) is read");
-  const auto dataStart = std::size_t(header.tellg()) + 1;  // one whitespace character after the scale
-  LinearImage image(std::uint32_t(w), std::uint32_t(h), magic == "PF" ? 3u : 1u);
-  if (bytes.size() != dataStart + image.values.size() * sizeof(float))
-    throw Error("'" + path.string() + "': PFM data size does not match its header");
+  // The header ends with one whitespace character after the scale; the data must be exactly what the
+  // header promises, checked before anything is allocated for it.
+  const std::streamoff scaleEnd = header.tellg();
+  const auto isSpace = [](std::byte b) { return b == std::byte{' '} || b == std::byte{'\n'} || b == std::byte{'\r'} || b == std::byte{'\t'}; };
+  if (scaleEnd < 0 || std::size_t(scaleEnd) >= bytes.size() || !isSpace(bytes[std::size_t(scaleEnd)]))
+    throw Error("'" + path.string() + "': the PFM header must end with one whitespace character before the data");
+  const std::size_t dataStart = std::size_t(scaleEnd) + 1;
+  const std::uint32_t channels = magic == "PF" ? 3u : 1u;
+  const std::size_t dataBytes = std::size_t(w) * std::size_t(h) * channels * sizeof(float);
+  if (bytes.size() != dataStart + dataBytes)
+    throw Error("'" + path.string() + "': PFM data size does not match its header (" + std::to_string(w) + "x" +
+                std::to_string(h) + "x" + std::to_string(channels) + " floats need " + std::to_string(dataBytes) +
+                " bytes after the header, the file has " + std::to_string(bytes.size() - std::min(bytes.size(), dataStart)) + ")");
+  LinearImage image(std::uint32_t(w), std::uint32_t(h), channels);
   std::memcpy(image.values.data(), bytes.data() + dataStart, image.values.size() * sizeof(float));
   image.values = flipRows(image);  // the file's rows are bottom to top
   return image;

@@ -1,6 +1,9 @@
 // OBJ scalp import: the committed fixture, options, and every refused input with its message.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <string>
+
 #include "engine/hair/obj_import.h"
 #include "tests/hair/hair_test_util.h"
 
@@ -61,6 +64,29 @@ TEST(ObjImport, RejectsOutOfRangeIndex) {
 TEST(ObjImport, RejectsNegativeIndexBeforeTheFirstVertex) {
   EXPECT_THAT_ERROR_CONTAINS_IMPL(loadError("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf -1 -2 -4\n"),
                                   "bad.obj: face 2: negative vertex index points before the first vertex");
+}
+
+// A polygon of n vertices on a circle (all coplanar), as "f 1 2 ... n" after its vertices.
+std::string polygonObj(int n, const std::string& after = "") {
+  std::string text;
+  for (int i = 0; i < n; ++i)
+    text += "v " + std::to_string(std::cos(6.2831853 * i / n)) + " " + std::to_string(std::sin(6.2831853 * i / n)) + " 0\n";
+  text += "f";
+  for (int i = 1; i <= n; ++i) text += " " + std::to_string(i);
+  return text + "\n" + after;
+}
+
+TEST(ObjImport, PolygonsOfUpTo255VerticesAreReadAndLargerOnesRefusedByCount) {
+  test::TempDir dir;
+  test::writeText(dir / "poly.obj", polygonObj(255));
+  EXPECT_EQ(loadObjScalp(dir / "poly.obj").triangles.size(), 253u);  // a fan: n - 2 triangles
+  // tinyobjloader keeps the count in one byte: 256 read as 0, 300 as 44 (and the next face shifted).
+  EXPECT_THAT_ERROR_CONTAINS_IMPL(loadError(polygonObj(256)),
+                                  "bad.obj: face 1 has 256 vertices; at most 255 are supported");
+  EXPECT_THAT_ERROR_CONTAINS_IMPL(loadError(polygonObj(300, "f 1 2 3\n")),
+                                  "bad.obj: face 1 has 300 vertices; at most 255 are supported");
+  EXPECT_THAT_ERROR_CONTAINS_IMPL(loadError("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n" + polygonObj(260).substr(0)),
+                                  "face 2 has 260 vertices");
 }
 
 TEST(ObjImport, RejectsZeroIndex) {
