@@ -39,7 +39,8 @@ void prepareOutputs(const RenderOptions& o, const hp::Scene& scene) {
   hp::cli::prepareOutputFile({"--out", o.out}, inputs);
   if (!o.dumpStrands.empty()) hp::cli::prepareOutputFile({"--dump-strands", o.dumpStrands}, inputs);
   if (!o.dumpOpacity.empty()) hp::cli::prepareOutputFolder({"--dump-opacity", o.dumpOpacity}, inputs);
-  if (!o.exportFrame.empty()) hp::cli::prepareOutputFolder({"--export-frame", o.exportFrame}, inputs);
+  if (!o.exportFrame.empty())
+    hp::cli::prepareOutputFolder({"--export-frame", o.exportFrame}, inputs, hp::FrameExportFiles::all());
 }
 
 // The frame's files and the real-time image (linear radiance before exposure, hair coverage).
@@ -48,8 +49,8 @@ void exportFrame(const std::filesystem::path& dir, const hp::RenderRequest& requ
   const hp::ExportedFrame exported = hp::makeExportedFrame(
       request, asset, frame, hp::reference::fibreModelName(hp::reference::fibreModelOf(request.lutMode)));
   hp::writeFrameExport(dir, exported);
-  hp::writePfm(dir / "realtime.pfm", frame.linear);
-  if (frame.hairAlpha.width > 0) hp::writePfm(dir / "realtime_hair_alpha.pfm", frame.hairAlpha);
+  hp::writePfm(dir / hp::FrameExportFiles::realtime, frame.linear);
+  if (frame.hairAlpha.width > 0) hp::writePfm(dir / hp::FrameExportFiles::realtimeHairAlpha, frame.hairAlpha);
 }
 
 void runRender(const RenderOptions& o, const CLI::App& cmd) {

@@ -40,9 +40,11 @@ void prepareOutputFile(const CommandPath& output, const std::vector<CommandPath>
   makeWritableFolder(output, output.path.has_parent_path() ? output.path.parent_path() : fs::path("."));
 }
 
-void prepareOutputFolder(const CommandPath& output, const std::vector<CommandPath>& inputs) {
+void prepareOutputFolder(const CommandPath& output, const std::vector<CommandPath>& inputs,
+                         const std::vector<std::string>& contents) {
   if (output.path.empty()) throw Error(output.option + ": the output folder is empty");
   refuseInputs(output, inputs);
+  for (const std::string& name : contents) refuseInputs({output.option, output.path / name}, inputs);
   std::error_code ec;
   if (fs::exists(output.path, ec) && !fs::is_directory(output.path, ec))
     throw Error(named(output) + ": is a file, expected a folder");

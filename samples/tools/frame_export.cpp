@@ -69,7 +69,7 @@ nlohmann::json materialJson(const HairMaterial& m) {
 nlohmann::json frameJson(const ExportedFrame& f) {
   const auto& c = f.camera;
   return {{"format", kFormat}, {"version", kVersion}, {"units", "metres"}, {"up", "+y"},
-          {"files", {{"strands", "strands.hair"}, {"head", "head.obj"}}},
+          {"files", {{"strands", FrameExportFiles::strands}, {"head", FrameExportFiles::head}}},
           {"camera", {{"position", vec(c.position)}, {"target", vec(c.target)}, {"up", vec(c.up)},
                       {"fov_y_deg", c.fovYDeg}, {"width", c.width}, {"height", c.height}}},
           {"light", lightJson(f.light)},
@@ -221,19 +221,19 @@ ExportedFrame makeExportedFrame(const RenderRequest& request, const HairAsset& a
 }
 
 void writeFrameExport(const std::filesystem::path& dir, const ExportedFrame& frame) {
-  writeHairFile(dir / "strands.hair", frame.strands);
-  writeAlbedoObj(dir / "head.obj", {frame.headPositions, frame.headNormals, frame.headAlbedo, frame.headIndices});
+  writeHairFile(dir / FrameExportFiles::strands, frame.strands);
+  writeAlbedoObj(dir / FrameExportFiles::head, {frame.headPositions, frame.headNormals, frame.headAlbedo, frame.headIndices});
   const std::string text = frameJson(frame).dump(2) + "\n";
-  writeFileAtomically(dir / "frame.json", std::as_bytes(std::span(text.data(), text.size())));
+  writeFileAtomically(dir / FrameExportFiles::json, std::as_bytes(std::span(text.data(), text.size())));
 }
 
 ExportedFrame readFrameExport(const std::filesystem::path& dir) {
   if (!std::filesystem::is_directory(dir)) throw Error("'" + dir.string() + "' is not a frame export folder");
   ExportedFrame f;
-  readFrameJson(f, dir / "frame.json");
-  f.strands = readHairFile(dir / "strands.hair");
-  checkStrands(f.strands, (dir / "strands.hair").string());
-  AlbedoMesh head = readAlbedoObj(dir / "head.obj");
+  readFrameJson(f, dir / FrameExportFiles::json);
+  f.strands = readHairFile(dir / FrameExportFiles::strands);
+  checkStrands(f.strands, (dir / FrameExportFiles::strands).string());
+  AlbedoMesh head = readAlbedoObj(dir / FrameExportFiles::head);
   f.headPositions = std::move(head.positions);
   f.headNormals = std::move(head.normals);
   f.headAlbedo = std::move(head.albedo);

@@ -51,6 +51,16 @@ struct ExportedFrame {
 
 ExportedFrame makeExportedFrame(const RenderRequest& request, const HairAsset& asset, const FrameCapture& frame,
                                 const std::string& fibreModel);
+// The files an export folder holds: writeFrameExport's, then the real-time image and its hair coverage
+// (`render --export-frame` writes those two beside them).
+struct FrameExportFiles {
+  static constexpr const char* strands = "strands.hair";
+  static constexpr const char* head = "head.obj";
+  static constexpr const char* json = "frame.json";
+  static constexpr const char* realtime = "realtime.pfm";
+  static constexpr const char* realtimeHairAlpha = "realtime_hair_alpha.pfm";
+  static std::vector<std::string> all() { return {strands, head, json, realtime, realtimeHairAlpha}; }
+};
 void writeFrameExport(const std::filesystem::path& dir, const ExportedFrame& frame);
 ExportedFrame readFrameExport(const std::filesystem::path& dir);
 }  // namespace hp

@@ -43,14 +43,15 @@ double ssimAt(const std::vector<double>& a, const std::vector<double>& b, std::u
   return ((2 * ma * mb + c1) * (2 * cov + c2)) / ((ma * ma + mb * mb + c1) * (va + vb + c2));
 }
 
-// Radiance is finite and >= 0; anything else would make the metrics meaningless (NaN read as 99 dB).
-void checkRadiance(const LinearImage& im, const char* which) {
+// Every value must be finite: one NaN made the error NaN, which was reported as 99 dB. Small negative
+// values are kept (real-time frames hold a few, -5e-4, from rounding in the shading).
+void checkFinite(const LinearImage& im, const char* which) {
   for (std::size_t i = 0; i < im.values.size(); ++i)
-    if (!std::isfinite(im.values[i]) || im.values[i] < 0.0f) {
+    if (!std::isfinite(im.values[i])) {
       const std::size_t pixel = i / im.channels;
-      throw Error(std::string("compare: the ") + which + " has a " + (std::isfinite(im.values[i]) ? "negative" : "non-finite") +
-                  " value at pixel (" + std::to_string(pixel % im.width) + ", " + std::to_string(pixel / im.width) +
-                  "), channel " + std::to_string(i % im.channels) + ": " + std::to_string(im.values[i]));
+      throw Error(std::string("compare: the ") + which + " has a non-finite value at pixel (" +
+                  std::to_string(pixel % im.width) + ", " + std::to_string(pixel / im.width) + "), channel " +
+                  std::to_string(i % im.channels));
     }
 }
 
@@ -74,8 +75,8 @@ ImageComparison compareImages(const LinearImage& image, const LinearImage& refer
   const bool masked = mask.width > 0;
   if (masked && (mask.channels != 1 || mask.width != image.width || mask.height != image.height))
     throw Error("compare: the mask must be one channel of the images' size");
-  checkRadiance(image, "image");
-  checkRadiance(reference, "reference");
+  checkFinite(image, "image");
+  checkFinite(reference, "reference");
   const std::vector<double> la = displayLuminance(image, exposure), lb = displayLuminance(reference, exposure);
   ImageComparison r;
   double se = 0, ssim = 0, lumA = 0, lumB = 0, red[2] = {0, 0}, blue[2] = {0, 0};

@@ -9,8 +9,8 @@
 //  - luminanceRatio: mean linear luminance (Rec. 709 weights) of the image / that of the reference;
 //  - redBlueImage/redBlueReference: mean red / mean blue (the hue of the hair).
 // Identical display values give psnrDb 99. Throws hp::Error when the sizes differ, a channel count is
-// wrong, no pixel is selected, the exposure is not finite and > 0, a value of either image is negative or
-// not finite (naming the pixel), or a metric comes out non-finite.
+// wrong, no pixel is selected, the exposure is not finite and > 0, a value of either image is not finite
+// (naming the pixel), or a metric comes out non-finite (a value too large or negative for the display curve).
 #include <cstdint>
 
 #include "samples/tools/linear_image.h"

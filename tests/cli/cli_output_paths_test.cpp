@@ -61,6 +61,18 @@ TEST(CliOutputPaths, SceneModelIsAnInputToo) {
                   dir / "s.json", "is the input given by --scene");
 }
 
+TEST(CliOutputPaths, AnExportFolderNeverOverwritesAnInputInside) {
+  hp::test::TempDir dir;
+  const std::string hair = (dir / "strands.hair").string();
+  ASSERT_EQ(runCli({"grow", "--scalp", kCapObj, "--out", hair, "--particles", "4"}).exitCode, 0);
+  expectInputKept({"render", "--model", hair, "--export-frame", dir.path().string(), "--frames", "1"}, hair,
+                  "--export-frame " + hair + ": is the input given by --model");
+  hp::test::writeText(dir / "frame.json", "{}");  // the default head; the scene file itself is the input
+  expectInputKept({"render", "--scene", (dir / "frame.json").string(), "--export-frame", dir.path().string(),
+                   "--frames", "1"},
+                  dir / "frame.json", "is the input given by --scene");
+}
+
 TEST(CliOutputPaths, BrdfRefusesToOverwriteItsQueries) {
   hp::test::TempDir dir;
   hp::test::writeText(dir / "q.csv", "0,0,1,0,0,1,1,0,0\n");

@@ -38,7 +38,7 @@ TEST(ImageCompare, IdenticalImagesScore99AndDifferentOnesLess) {
   EXPECT_NEAR(other.luminanceRatio, 0.75, 1e-6);
 }
 
-TEST(ImageCompare, NonFiniteNegativeAndHugeValuesAndBadExposuresAreRefusedByName) {
+TEST(ImageCompare, NonFiniteAndHugeValuesAndBadExposuresAreRefusedByName) {
   hp::LinearImage nan = grey(0.3f);
   nan.at(2, 5, 1) = std::numeric_limits<float>::quiet_NaN();
   EXPECT_NE(refusalOf(nan, grey(0.3f)).find("the image has a non-finite value at pixel (2, 5), channel 1"), std::string::npos)
@@ -46,10 +46,12 @@ TEST(ImageCompare, NonFiniteNegativeAndHugeValuesAndBadExposuresAreRefusedByName
   hp::LinearImage inf = grey(0.3f);
   inf.at(0, 0, 0) = std::numeric_limits<float>::infinity();
   EXPECT_NE(refusalOf(grey(0.3f), inf).find("the reference has a non-finite value"), std::string::npos);
-  hp::LinearImage negative = grey(0.3f);
-  negative.at(7, 7, 2) = -0.5f;
-  EXPECT_NE(refusalOf(negative, grey(0.3f)).find("negative value at pixel (7, 7), channel 2"), std::string::npos);
   EXPECT_NE(refusalOf(grey(2.4e23f), grey(0.3f)).find("came out non-finite"), std::string::npos);
+  EXPECT_NE(refusalOf(grey(-1e30f), grey(0.3f)).find("came out non-finite"), std::string::npos);
+  // Rounding's small negatives (real-time frames hold a few) are measured, not refused.
+  hp::LinearImage rounded = grey(0.3f);
+  rounded.at(7, 7, 2) = -5e-4f;
+  EXPECT_LT(hp::compareImages(rounded, grey(0.3f), {}, 1.0f).psnrDb, 99.0);
   for (float exposure : {std::numeric_limits<float>::quiet_NaN(), -1.0f, 0.0f})
     EXPECT_NE(refusalOf(grey(0.3f), grey(0.3f), exposure).find("exposure must be finite and > 0"), std::string::npos)
         << exposure;
