@@ -9,6 +9,7 @@
 #include <string>
 
 #include "engine/error.h"
+#include "engine/hair/input_file.h"
 
 namespace hp {
 static_assert(std::endian::native == std::endian::little, ".tfx is little-endian; so is every target");
@@ -110,11 +111,11 @@ TfxData decodeTfx(std::span<const std::byte> bytes, const std::string& source) {
   return d;
 }
 
+// Through the bounded door every reader uses (engine/hair/input_file.h): a regular file within the size
+// limit, its path in every message (a FIFO, /dev/zero or a folder is refused before reading).
 TfxData readTfxFile(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw Error(path.string() + ": cannot open");
-  std::vector<char> raw((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  return decodeTfx(std::as_bytes(std::span<const char>(raw)), path.string());
+  const std::vector<std::byte> bytes = readInputBytes(path, kMaxHairFileBytes);
+  return decodeTfx(bytes, path.string());
 }
 
 std::vector<std::byte> encodeTfx(const TfxData& d) {

@@ -3,12 +3,17 @@
 #include <iostream>
 
 #include "engine/error.h"
+#include "hairpipe/version.h"
 #include "samples/cli/command.h"
 
 int main(int argc, char** argv) {
   CLI::App app{"hairpipe: a dynamic strand-hair pipeline on Vulkan"};
   app.require_subcommand(1);
-  app.set_version_flag("--version", "hairpipe 0.1.0");
+  app.set_version_flag("--version", std::string("hairpipe ") + hairpipe::versionString());
+  // Parse errors in the tool's one format (CLI11's own lacks the prefix).
+  app.failure_message([](const CLI::App*, const CLI::Error& e) {
+    return std::string("hairpipe: error: ") + e.what() + " (--help lists the options)\n";
+  });
   for (const auto& setup : hp::cli::commandRegistry()) setup(app);
   try {
     app.parse(argc, argv);

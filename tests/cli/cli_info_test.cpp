@@ -55,7 +55,16 @@ TEST(CliUsage, UsageErrorsExitWithCodeOneAndHelpSucceeds) {
   auto r = runCli({"lut", "--mode", "bogus", "--out", "/tmp/hairpipe-never"});
   EXPECT_EQ(r.exitCode, 1);
   EXPECT_NE(r.err.find("bogus"), std::string::npos) << r.err;
-  EXPECT_EQ(runCli({"--version"}).exitCode, 0);
+  const auto version = runCli({"--version"});
+  EXPECT_EQ(version.exitCode, 0);
+  EXPECT_NE(version.out.find("hairpipe 0.2.0"), std::string::npos) << version.out;  // the public header's
+  // Option conversion errors come in the tool's one format.
+  for (const std::vector<std::string>& args :
+       {std::vector<std::string>{"render", "--width", "-1"}, {"reference", "--spp", "4294967296"}}) {
+    const auto bad = runCli(args);
+    EXPECT_EQ(bad.exitCode, 1);
+    EXPECT_EQ(bad.err.rfind("hairpipe: error: Could not convert: " + args[1], 0), 0u) << bad.err;
+  }
 }
 
 // The benchmark suites are subcommands of `bench`: each has its help, a suite runs alone

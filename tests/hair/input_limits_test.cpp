@@ -1,9 +1,11 @@
 // Hostile inputs the asset readers must refuse with a short hp::Error instead of crashing, hanging or
 // exhausting memory: nesting, overflowing numbers, huge keys, device files, material libraries.
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include "engine/hair/hair_file.h"
 #include "engine/hair/input_file.h"
+#include "engine/hair/tfx_file.h"
 #include "samples/tools/host/json_reader.h"
 #include "engine/hair/obj_import.h"
 #include "engine/hair/scene.h"
@@ -68,6 +70,13 @@ TEST(InputLimits, DeviceFilesAndFifosAreNotRead) {
   EXPECT_ERROR_CONTAINS(readHairFile("/dev/zero"), "not a regular file");
   EXPECT_ERROR_CONTAINS(loadSceneFile("/dev/zero"), "not a regular file");
   EXPECT_ERROR_CONTAINS(loadObjScalp("/dev/zero"), "not a regular file");
+  // The .tfx reader read /dev/zero until memory ran out, hung on a FIFO and named no path for a folder.
+  EXPECT_ERROR_CONTAINS(readTfxFile("/dev/zero"), "/dev/zero: cannot open (not a regular file)");
+  test::TempDir dir;
+  EXPECT_ERROR_CONTAINS(readTfxFile(dir.path()), dir.path().string() + ": cannot open (not a regular file: a directory)");
+  const std::filesystem::path fifo = dir / "pipe.tfx";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  EXPECT_ERROR_CONTAINS(readTfxFile(fifo), fifo.string() + ": cannot open (not a regular file)");
 }
 
 TEST(InputLimits, AFileOverItsLimitIsRefusedBeforeReading) {
