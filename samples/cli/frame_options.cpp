@@ -89,7 +89,10 @@ hp::RenderRequest makeRenderRequest(const FrameOptions& o, const CLI::App& cmd) 
     r.scene.light.direction = glm::normalize(r.scene.light.direction);
     r.scene.light.type = hp::LightSpec::Type::Directional;  // overrides a scene's spot
   }
-  if (o.orbit) r.scene.camera.orbitDeg = *o.orbit;
+  if (o.orbit) {
+    if (!std::isfinite(*o.orbit)) throw hp::Error("--camera-orbit must be a finite angle in degrees, got " + std::to_string(*o.orbit));
+    r.scene.camera.orbitDeg = *o.orbit;
+  }
   applySpot(o, r.scene);
   if (cmd.count("--eta") + cmd.count("--absorption") + cmd.count("--color") + cmd.count("--alpha-r") +
           cmd.count("--beta-r") + cmd.count("--kg") + cmd.count("--wc") + cmd.count("--deta") + cmd.count("--dhm") +

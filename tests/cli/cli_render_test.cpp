@@ -70,6 +70,7 @@ TEST(CliRender, BadOptionsExitWithAMessageAndWriteNothing) {
       {{"--exposure", "-1"}, "exposure"},   {{"--eta", "0.5"}, "eta"},
       {{"--animate", "spin"}, "spin"},      {{"--density", "0"}, "total"},
       {{"--width", "16385"}, "--width/--height must be in [1, 16384]"},
+      {{"--camera-orbit", "inf"}, "--camera-orbit must be a finite angle"},
   };
   // Render targets past half the device-local heap are refused before anything is allocated. The largest
   // frame the options allow (16384^2 at msaa 8: 108 bytes a pixel, 27.6 GiB) exceeds that on lavapipe
