@@ -1,7 +1,5 @@
 // hairpipe::Asset, loadAsset and defaultHeadAsset over the core's importers and the default head.
-#include <algorithm>
-#include <cctype>
-#include <filesystem>
+#include <optional>
 
 #include "engine/api/access.h"
 #include "engine/api/convert.h"
@@ -10,16 +8,6 @@
 #include "engine/hair/strand_topology.h"
 
 namespace hairpipe {
-namespace {
-hp::ModelSpec::Kind kindOf(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-  if (ext == ".hair") return hp::ModelSpec::Kind::Hair;
-  if (ext == ".tfx") return hp::ModelSpec::Kind::Tfx;
-  if (ext == ".obj") return hp::ModelSpec::Kind::Obj;
-  throw hp::Error("\"" + path + "\": expected a path ending in .hair, .tfx or .obj");
-}
-}  // namespace
 
 // A moved-from Asset counts nothing and has no name.
 std::uint32_t Asset::guideCount() const noexcept { return impl_ ? impl_->guides.guideCount() : 0; }
@@ -52,7 +40,9 @@ Result<Asset> loadAsset(const AssetSource& source) noexcept {
   return guarded<Asset>("hairpipe::loadAsset", [&] {
     hp::Scene scene;
     scene.source = source.path;
-    scene.model.kind = kindOf(source.path);
+    const std::optional<hp::ModelSpec::Kind> kind = hp::modelKindOf(source.path);
+    if (!kind) throw hp::Error("\"" + source.path + "\": expected a path ending in .hair, .tfx or .obj");
+    scene.model.kind = *kind;
     scene.model.path = source.path;
     scene.model.transform.scale = source.scale;
     scene.model.transform.up = source.up == UpAxis::Z ? hp::UpAxis::Z : hp::UpAxis::Y;
@@ -70,10 +60,4 @@ Result<Asset> defaultHeadAsset(const Density& density) noexcept {
   });
 }
 
-#define HAIRPIPE_STRINGIFY2(x) #x
-#define HAIRPIPE_STRINGIFY(x) HAIRPIPE_STRINGIFY2(x)
-const char* versionString() noexcept {
-  return HAIRPIPE_STRINGIFY(HAIRPIPE_VERSION_MAJOR) "." HAIRPIPE_STRINGIFY(HAIRPIPE_VERSION_MINOR) "." HAIRPIPE_STRINGIFY(
-      HAIRPIPE_VERSION_PATCH);
-}
 }  // namespace hairpipe

@@ -26,6 +26,8 @@ struct ModelSpec {
   ModelTransform transform;     // for .hair and .obj models
   bool keepStrands = false;     // .hair/.tfx: keep the strands' own points instead of resampling
 };
+// The model kind a file's extension names (.hair, .tfx, .obj, in any case); none for another extension.
+std::optional<ModelSpec::Kind> modelKindOf(const std::filesystem::path& path);
 
 // One light. `direction` always points from the lit hair toward the light: for a directional light
 // that is all there is; for a spot it is minus the spot's axis (the spot shines along -direction from

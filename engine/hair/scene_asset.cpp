@@ -1,4 +1,6 @@
 // Scene -> HairAsset: dispatch on the model kind, then apply the scene's overrides.
+#include <cctype>
+
 #include "engine/error.h"
 #include "engine/hair/default_head.h"
 #include "engine/hair/head_mesh.h"
@@ -73,6 +75,15 @@ HairAsset modelAsset(const Scene& scene, const std::shared_ptr<const SdfGrid>& g
   return buildDefaultHeadAsset(scene.growth, scene.density);
 }
 }  // namespace
+
+std::optional<ModelSpec::Kind> modelKindOf(const std::filesystem::path& path) {
+  std::string ext = path.extension().string();
+  for (auto& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (ext == ".hair") return ModelSpec::Kind::Hair;
+  if (ext == ".tfx") return ModelSpec::Kind::Tfx;
+  if (ext == ".obj") return ModelSpec::Kind::Obj;
+  return std::nullopt;
+}
 
 Scene::Scene() : growth(defaultHeadGrowth()) {}
 

@@ -26,11 +26,7 @@ void requireThat(bool ok, JsonObject& o, const char* key, const std::string& mes
 
 ModelSpec::Kind kindOf(const std::string& source, JsonObject& o) {
   if (source == "default") return ModelSpec::Kind::Default;
-  std::string ext = std::filesystem::path(source).extension().string();
-  for (auto& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  if (ext == ".hair") return ModelSpec::Kind::Hair;
-  if (ext == ".tfx") return ModelSpec::Kind::Tfx;
-  if (ext == ".obj") return ModelSpec::Kind::Obj;
+  if (const std::optional<ModelSpec::Kind> kind = modelKindOf(source)) return *kind;
   o.fail("source", "expected \"default\" or a path ending in .hair, .tfx or .obj, got \"" + excerpt(source) + "\"");
 }
 
