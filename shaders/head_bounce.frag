@@ -1,5 +1,5 @@
 #version 460
-// The head bounce map's texels (engine/render/head_bounce_map.h): each is a small Lambertian emitter for the
+// The head bounce map's texels (compute/shadows/head_bounce_map.h): each is a small Lambertian emitter for the
 // gather of head_bounce.glsl. Flux = albedo x E x T_hair x A_perp: the skin's radiosity albedo E cos(theta) T
 // times the texel's area on the surface A_perp / cos(theta); A_perp (the texel's area across the light) comes
 // from the derivatives of the world position, so ortho and spot maps need no special case. alpha is the

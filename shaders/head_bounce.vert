@@ -1,10 +1,10 @@
 #version 460
-// The head bounce map (engine/render/head_bounce_map.h): the head mesh seen from the light, framed like its
+// The head bounce map (compute/shadows/head_bounce_map.h): the head mesh seen from the light, framed like its
 // depth shadow map (RenderFrame::headShadowViewProj), pulled by index like head.vert.
 #include "shared/render.h"
 #include "opacity_lookup.glsl"
 
-// A storage block: the instance's head bounce frame block (engine/hair_instance.h), written on the device.
+// A storage block: the instance's head bounce frame block (compute/renderer/hair_instance.h), written on the device.
 layout(std140, binding = RENDER_BINDING_FRAME) readonly buffer Frame { RenderFrame frame; };
 layout(std430, binding = RENDER_BINDING_POSITIONS) readonly buffer Positions { vec4 positions[]; };
 layout(std430, binding = RENDER_BINDING_TANGENTS) readonly buffer Normals { vec4 normals[]; };

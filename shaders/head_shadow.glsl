@@ -1,4 +1,4 @@
-// The head as an opaque occluder (engine/render/shadow_maps.h, head_shadow_view.h), GLSL only, for the shading
+// The head as an opaque occluder (compute/shadows/shadow_maps.h, head_shadow_view.h), GLSL only, for the shading
 // passes: a depth map of the head's BACK faces seen from the light ("second depth"), so a lit surface
 // never shadows itself and the wrap-lit side just past the terminator is not cut off by its own
 // front; only another part of the head (or the head for hair behind it) occludes. The receiver moves

@@ -7,10 +7,10 @@
 //   vec3 marschnerEvaluate(mode, L, V, T, mTex, n0Tex, n1Tex, p)                 switch on MARSCHNER_MODE_*
 // Samplers: linear min/mag filter, CLAMP_TO_EDGE, normalised coordinates, one mip level. Sampled with
 // textureLod(.., 0) so the same code is valid in compute shaders.
-// The LUT functions mirror engine/shading/lut_sampler.cpp (CPU emulation) exactly; both compute their
+// The LUT functions mirror engine/core/shading/lut_sampler.cpp (CPU emulation) exactly; both compute their
 // coordinates with the shared functions of shaders/shared/marschner.h.
 //
-// Deviations from the exact double-precision definition (engine/shading/marschner.cpp), for speed:
+// Deviations from the exact double-precision definition (engine/core/shading/marschner.cpp), for speed:
 //  - single precision throughout; cubic roots are refined by two Newton steps (float Cardano loses
 //    digits for small roots);
 //  - asin/acos are marschnerAsin/marschnerAcos (shared/marschner.h), not the built-ins: Vulkan allows

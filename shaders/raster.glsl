@@ -1,4 +1,4 @@
-// GLSL only: what the compute rasterizer's segment passes share (compute/strand_raster_pass.h,
+// GLSL only: what the compute rasterizer's segment passes share (compute/raster/strand_raster_pass.h,
 // shared/raster.h). The includer declares `params` (RasterParams), `screen` (vec4[]) and `state` (RasterState).
 #ifndef HP_RASTER_GLSL
 #define HP_RASTER_GLSL

@@ -1,7 +1,7 @@
 // Keeps pearls outside a signed distance grid (shaders/shared/sdf.h) that moves with the head: the
 // particle goes to head space, is pushed along the grid's gradient until the trilinear distance is at
 // least the clearance (at most SDF_COLLISION_STEPS pushes), and comes back. The trilinear sample is
-// engine/hair/sdf_grid.cpp's SdfGrid::sample, step for step. Include after declaring nothing else
+// engine/core/hair/sdf_grid.cpp's SdfGrid::sample, step for step. Include after declaring nothing else
 // on SDF_BINDING; the includer picks the binding number.
 #include "shared/sdf.h"
 

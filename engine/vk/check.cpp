@@ -3,8 +3,7 @@
 #include <cctype>
 #include <string>
 
-#include "engine/error.h"
-#include "engine/vk/device_lost.h"
+#include "engine/core/error.h"
 #include "engine/vk/fault_injection.h"
 
 namespace hp::vk {

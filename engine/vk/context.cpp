@@ -4,7 +4,7 @@
 #include <cstdlib>
 #include <cstring>
 
-#include "engine/error.h"
+#include "engine/core/error.h"
 #include "engine/vk/check.h"
 #include "engine/vk/device_probe.h"
 

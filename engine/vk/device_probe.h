@@ -1,6 +1,8 @@
 #pragma once
 // Contract: reads what each physical device offers (for selection and for `hairpipe info`) and decides
 // what hairpipe needs that it lacks. Needs a live instance; the decision logic is in device_selection.
+// InstanceProbe is a bare instance for looking at devices (no device created, no validation), used by
+// `hairpipe info`; it destroys its instance on scope exit.
 #include "hairpipe_volk.h"
 
 #include <cstdint>
@@ -36,4 +38,19 @@ DeviceRequirements requirements();
 // Why `device` cannot run hairpipe (e.g. "Vulkan 1.3", "feature synchronization2"); empty when it can.
 std::vector<std::string> unfitReasons(VkPhysicalDevice device);
 DeviceKind deviceKind(VkPhysicalDeviceType type);
+
+class InstanceProbe {
+ public:
+  InstanceProbe();
+  ~InstanceProbe();
+  InstanceProbe(const InstanceProbe&) = delete;
+  InstanceProbe& operator=(const InstanceProbe&) = delete;
+  const std::vector<DeviceReport>& devices() const { return devices_; }
+  std::uint32_t loaderVersion() const { return loaderVersion_; }
+
+ private:
+  VkInstance instance_ = VK_NULL_HANDLE;
+  std::vector<DeviceReport> devices_;
+  std::uint32_t loaderVersion_ = 0;
+};
 }  // namespace hp::vk

@@ -4,7 +4,7 @@
 #include <optional>
 #include <utility>
 
-#include "engine/error.h"
+#include "engine/core/error.h"
 #include "engine/vk/check.h"
 #include "engine/vk/context.h"
 #include "shaders/embedded_shaders.h"

@@ -1,6 +1,6 @@
 #include "engine/vk/transfer.h"
 
-#include "engine/error.h"
+#include "engine/core/error.h"
 #include "engine/vk/context.h"
 #include "engine/vk/submit.h"
 

@@ -1,6 +1,6 @@
 #include "samples/cli/bench_context.h"
 
-#include "engine/error.h"
+#include "engine/core/error.h"
 
 namespace hp::cli {
 CLI::App* benchCommand(CLI::App& app) {

@@ -5,7 +5,7 @@
 #include <fstream>
 #include <unistd.h>
 
-#include "engine/hair/default_head.h"
+#include "engine/core/hair/default_head.h"
 #include "samples/tools/hair_system.h"
 #include "samples/tools/offscreen_renderer.h"
 #include "samples/tools/copy_reference.h"

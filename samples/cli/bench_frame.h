@@ -9,10 +9,10 @@
 #include <string>
 #include <vector>
 
-#include "engine/hair/scene.h"
-#include "engine/render/frame_block.h"
-#include "engine/render/opacity_settings.h"
-#include "engine/shading/lut.h"
+#include "engine/core/hair/scene.h"
+#include "compute/raster/frame_block.h"
+#include "compute/shadows/opacity_settings.h"
+#include "engine/core/shading/lut.h"
 #include "engine/vk/context.h"
 
 namespace hp::cli {

@@ -5,8 +5,8 @@
 #include <cmath>
 #include <system_error>
 
-#include "engine/error.h"
-#include "engine/hair/input_file.h"
+#include "engine/core/error.h"
+#include "engine/core/hair/input_file.h"
 
 namespace hp::cli {
 namespace {

@@ -14,8 +14,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "engine/error.h"
-#include "engine/hair/atomic_write.h"
+#include "engine/core/error.h"
+#include "engine/core/hair/atomic_write.h"
 #include "samples/tools/copy_reference.h"
 #include "samples/cli/bench_context.h"
 #include "samples/cli/bench_frame.h"

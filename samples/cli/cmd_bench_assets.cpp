@@ -13,10 +13,10 @@
 
 #include <nlohmann/json.hpp>
 
-#include "engine/error.h"
-#include "engine/hair/fit_sphere.h"
-#include "engine/hair/hair_import.h"
-#include "engine/hair/root_topology.h"
+#include "engine/core/error.h"
+#include "engine/core/hair/fit_sphere.h"
+#include "engine/core/hair/hair_import.h"
+#include "engine/core/hair/root_topology.h"
 #include "samples/tools/host/synthetic_hair.h"
 #include "samples/cli/bench_context.h"
 #include "samples/cli/command.h"

@@ -12,10 +12,10 @@
 
 #include <nlohmann/json.hpp>
 
-#include "engine/error.h"
-#include "engine/hair/default_head.h"
-#include "engine/hair/head_mesh.h"
-#include "engine/hair/sdf_mesh.h"
+#include "engine/core/error.h"
+#include "engine/core/hair/default_head.h"
+#include "engine/core/hair/head_mesh.h"
+#include "engine/core/hair/sdf_mesh.h"
 #include "samples/cli/bench_context.h"
 #include "samples/cli/command.h"
 

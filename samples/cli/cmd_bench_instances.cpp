@@ -17,9 +17,9 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <nlohmann/json.hpp>
 
-#include "engine/error.h"
-#include "engine/hair/default_head.h"
-#include "engine/renderer.h"
+#include "engine/core/error.h"
+#include "engine/core/hair/default_head.h"
+#include "compute/renderer/renderer.h"
 #include "engine/vk/context.h"
 #include "engine/vk/profiler.h"
 #include "engine/vk/submit.h"

@@ -11,8 +11,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "engine/error.h"
-#include "engine/hair/default_head.h"
+#include "engine/core/error.h"
+#include "engine/core/hair/default_head.h"
 #include "samples/tools/hair_system.h"
 #include "engine/vk/context.h"
 #include "engine/vk/submit.h"

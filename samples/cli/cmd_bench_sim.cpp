@@ -8,9 +8,9 @@
 
 #include <nlohmann/json.hpp>
 
-#include "compute/simulate_pass.h"
-#include "engine/error.h"
-#include "engine/hair/default_head.h"
+#include "compute/strands/simulate_pass.h"
+#include "engine/core/error.h"
+#include "engine/core/hair/default_head.h"
 #include "engine/vk/barriers.h"
 #include "engine/vk/context.h"
 #include "samples/tools/copy_reference.h"

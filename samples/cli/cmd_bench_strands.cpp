@@ -18,8 +18,8 @@
 #include <nlohmann/json.hpp>
 
 #include "samples/tools/strand_dump.h"
-#include "engine/error.h"
-#include "engine/hair/default_head.h"
+#include "engine/core/error.h"
+#include "engine/core/hair/default_head.h"
 #include "engine/vk/barriers.h"
 #include "engine/vk/context.h"
 #include "samples/tools/copy_reference.h"

@@ -14,11 +14,11 @@
 #include <string>
 #include <vector>
 
-#include "engine/error.h"
-#include "engine/hair/atomic_write.h"
+#include "engine/core/error.h"
+#include "engine/core/hair/atomic_write.h"
 #include "samples/tools/brdf_evaluator.h"
-#include "engine/render/marschner_textures.h"
-#include "engine/shading/lut.h"
+#include "compute/raster/marschner_textures.h"
+#include "engine/core/shading/lut.h"
 #include "engine/vk/context.h"
 #include "samples/cli/brdf_queries.h"
 #include "samples/cli/command.h"

@@ -1,5 +1,5 @@
 // `hairpipe furnace [--model physical|paper] [--theta-r DEG]... [--panels N] [material options]`:
-// prints the white-furnace integral W = int S cos(theta_i) d omega_i per RGB channel (engine/shading/
+// prints the white-furnace integral W = int S cos(theta_i) d omega_i per RGB channel (engine/core/shading/
 // furnace.h), exact double-precision S, for each outgoing angle theta_r (default -80..80 deg in 20-deg
 // steps). An energy-conserving fibre has W <= 1, = 1 without absorption (--absorption 0,0,0).
 #include <iomanip>
@@ -9,8 +9,8 @@
 
 #include <glm/glm.hpp>
 
-#include "engine/error.h"
-#include "engine/shading/furnace.h"
+#include "engine/core/error.h"
+#include "engine/core/shading/furnace.h"
 #include "samples/cli/command.h"
 #include "samples/cli/material_options.h"
 

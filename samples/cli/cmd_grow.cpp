@@ -4,11 +4,11 @@
 #include <iostream>
 #include <string>
 
-#include "engine/error.h"
-#include "engine/hair/fit_sphere.h"
-#include "engine/hair/guide_growth.h"
-#include "engine/hair/hair_export.h"
-#include "engine/hair/obj_import.h"
+#include "engine/core/error.h"
+#include "engine/core/hair/fit_sphere.h"
+#include "engine/core/hair/guide_growth.h"
+#include "engine/core/hair/hair_export.h"
+#include "engine/core/hair/obj_import.h"
 #include "samples/cli/command.h"
 #include "samples/cli/output_paths.h"
 

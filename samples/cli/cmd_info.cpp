@@ -5,9 +5,9 @@
 
 #include <nlohmann/json.hpp>
 
-#include "engine/error.h"
+#include "engine/core/error.h"
 #include "engine/vk/context.h"
-#include "engine/vk/instance_probe.h"
+#include "engine/vk/device_probe.h"
 #include "samples/cli/command.h"
 
 namespace hp::cli::cmd_info {  // per subcommand: file-local names stay apart in a unity build

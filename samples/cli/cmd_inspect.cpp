@@ -10,11 +10,11 @@
 
 #include <nlohmann/json.hpp>
 
-#include "engine/error.h"
-#include "engine/hair/fit_sphere.h"
-#include "engine/hair/hair_file.h"
-#include "engine/hair/obj_import.h"
-#include "engine/hair/tfx_file.h"
+#include "engine/core/error.h"
+#include "engine/core/hair/fit_sphere.h"
+#include "engine/core/hair/hair_file.h"
+#include "engine/core/hair/obj_import.h"
+#include "engine/core/hair/tfx_file.h"
 #include "samples/cli/command.h"
 
 namespace hp::cli::cmd_inspect {  // per subcommand: file-local names stay apart in a unity build

@@ -10,10 +10,10 @@
 
 #include <nlohmann/json.hpp>
 
-#include "engine/error.h"
-#include "engine/hair/atomic_write.h"
+#include "engine/core/error.h"
+#include "engine/core/hair/atomic_write.h"
 #include "samples/tools/png_file.h"
-#include "engine/shading/lut.h"
+#include "engine/core/shading/lut.h"
 #include "samples/tools/host/lut_export.h"
 #include "samples/cli/command.h"
 #include "samples/cli/material_options.h"

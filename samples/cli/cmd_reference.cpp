@@ -8,7 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "engine/error.h"
+#include "engine/core/error.h"
 #include "samples/cli/command.h"
 #include "samples/cli/frame_options.h"
 #include "samples/cli/output_paths.h"

@@ -8,7 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "engine/error.h"
+#include "engine/core/error.h"
 #include "samples/tools/host/camera_fit.h"
 #include "samples/tools/png_file.h"
 #include "samples/tools/progress_reporter.h"

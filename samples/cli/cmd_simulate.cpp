@@ -6,9 +6,9 @@
 
 #include "samples/tools/progress_reporter.h"
 #include "samples/tools/simulation_driver.h"
-#include "engine/error.h"
-#include "engine/hair/hair_export.h"
-#include "engine/hair/hair_file.h"
+#include "engine/core/error.h"
+#include "engine/core/hair/hair_export.h"
+#include "engine/core/hair/hair_file.h"
 #include "samples/cli/command.h"
 #include "samples/cli/scene_options.h"
 #include "samples/cli/output_paths.h"

@@ -12,8 +12,8 @@
 #include <nlohmann/json.hpp>
 
 #include "samples/tools/strand_dump.h"
-#include "engine/error.h"
-#include "engine/hair/scene.h"
+#include "engine/core/error.h"
+#include "engine/core/hair/scene.h"
 #include "engine/vk/context.h"
 #include "samples/cli/command.h"
 #include "samples/cli/scene_options.h"

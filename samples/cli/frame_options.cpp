@@ -3,7 +3,7 @@
 #include <cmath>
 #include <iostream>
 
-#include "engine/error.h"
+#include "engine/core/error.h"
 #include "samples/tools/host/camera_fit.h"
 #include "samples/cli/material_options.h"
 

@@ -2,7 +2,7 @@
 // subcommands and maps every failure to a message on stderr and exit code 1.
 #include <iostream>
 
-#include "engine/error.h"
+#include "engine/core/error.h"
 #include "hairpipe/version.h"
 #include "samples/cli/command.h"
 

@@ -5,8 +5,8 @@
 #include <string>
 #include <vector>
 
-#include "engine/error.h"
-#include "engine/shading/material_color.h"
+#include "engine/core/error.h"
+#include "engine/core/shading/material_color.h"
 
 namespace hp::cli {
 namespace {

@@ -7,7 +7,7 @@
 // value throws hp::Error naming the option (e.g. "--eta 0.9: HairMaterial.eta = 0.9 is invalid ...").
 #include <CLI/CLI.hpp>
 
-#include "engine/shading/material.h"
+#include "engine/core/shading/material.h"
 
 namespace hp::cli {
 void addMaterialOptions(CLI::App& app, HairMaterial& material);

@@ -2,7 +2,7 @@
 
 #include <unistd.h>
 
-#include "engine/error.h"
+#include "engine/core/error.h"
 
 namespace hp::cli {
 namespace {

@@ -3,12 +3,12 @@
 // is created if missing and must be writable; an output must not be one of the command's inputs (the
 // same file, by identity or by normalised path), nor an existing folder; an output folder must not be
 // an existing file, nor hold an input under a name the command writes there. Throws hp::Error naming the option and the path. The files themselves are then
-// written atomically (engine/hair/atomic_write.h), so a failed run leaves no partial file.
+// written atomically (engine/core/hair/atomic_write.h), so a failed run leaves no partial file.
 #include <filesystem>
 #include <string>
 #include <vector>
 
-#include "engine/hair/scene.h"
+#include "engine/core/hair/scene.h"
 #include "samples/cli/scene_options.h"
 
 namespace hp::cli {

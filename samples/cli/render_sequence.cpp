@@ -5,7 +5,7 @@
 #include <cstdio>
 #include <iostream>
 
-#include "engine/error.h"
+#include "engine/core/error.h"
 #include "samples/tools/contact_sheet.h"
 #include "samples/tools/interrupt_flag.h"
 #include "samples/tools/progress_reporter.h"

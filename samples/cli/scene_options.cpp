@@ -2,13 +2,13 @@
 
 #include <iostream>
 
-#include "engine/error.h"
+#include "engine/core/error.h"
 #include "samples/tools/host/model_guess.h"
 #include "samples/tools/host/scene_file.h"
 
 namespace hp::cli {
 void addSceneOptions(CLI::App& cmd, SceneOptions& options) {
-  auto* scene = cmd.add_option("--scene", options.scenePath, "Scene file (JSON; schema in engine/hair/README.md)");
+  auto* scene = cmd.add_option("--scene", options.scenePath, "Scene file (JSON; schema in engine/core/hair/README.md)");
   cmd.add_option("--model", options.model, "Model when no scene is given: default, FILE.hair, FILE.tfx or FILE.obj")
       ->excludes(scene);
   cmd.add_option("--units", options.units, "Model units: m, cm or mm (default: the scene's, else guessed)");

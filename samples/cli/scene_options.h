@@ -10,7 +10,7 @@
 #include <memory>
 #include <string>
 
-#include "engine/hair/scene.h"
+#include "engine/core/hair/scene.h"
 #include "engine/vk/context.h"
 
 namespace hp::cli {

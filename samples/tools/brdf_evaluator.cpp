@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <string>
 
-#include "engine/error.h"
-#include "engine/render/marschner_textures.h"
-#include "engine/shading/marschner_gpu.h"
+#include "engine/core/error.h"
+#include "compute/raster/marschner_textures.h"
+#include "engine/core/shading/marschner_gpu.h"
 #include "engine/vk/buffer.h"
 #include "engine/vk/context.h"
 #include "engine/vk/submit.h"

@@ -6,8 +6,8 @@
 // hair's coverage (1 - transmittance) per pixel.
 #include <glm/glm.hpp>
 
-#include "compute/strand_buffers.h"
-#include "engine/render/camera.h"
+#include "compute/strands/strand_buffers.h"
+#include "compute/raster/camera.h"
 #include "samples/tools/linear_image.h"
 
 namespace hp {

@@ -4,9 +4,9 @@
 
 #include <nlohmann/json.hpp>
 
-#include "engine/error.h"
-#include "engine/hair/atomic_write.h"
-#include "engine/hair/input_file.h"
+#include "engine/core/error.h"
+#include "engine/core/hair/atomic_write.h"
+#include "engine/core/hair/input_file.h"
 #include "samples/tools/host/json_reader.h"
 #include "samples/tools/obj_albedo_mesh.h"
 #include "samples/tools/reference/fibre.h"
@@ -205,7 +205,7 @@ ExportedFrame makeExportedFrame(const RenderRequest& request, const HairAsset& a
   f.fibreModel = fibreModel;
   f.lutMode = lutModeName(request.lutMode);
   f.material = scene.material;
-  f.hairAlbedo = glm::vec3(glm::exp(-2.0 * scene.material.absorption));  // render/frame_block.cpp
+  f.hairAlbedo = glm::vec3(glm::exp(-2.0 * scene.material.absorption));  // compute/raster/frame_block.cpp
   f.skinColor = request.look.skinColor;
   f.wrap = request.look.wrap;
   f.environment = request.look.ambient;

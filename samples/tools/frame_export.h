@@ -14,9 +14,9 @@
 #include <string>
 #include <vector>
 
-#include "engine/hair/hair_asset.h"
-#include "engine/hair/hair_file.h"
-#include "engine/hair/scene.h"
+#include "engine/core/hair/hair_asset.h"
+#include "engine/core/hair/hair_file.h"
+#include "engine/core/hair/scene.h"
 #include "samples/tools/frame_capture.h"
 #include "samples/tools/render_job.h"
 

@@ -1,6 +1,6 @@
 #include "samples/tools/hair_system.h"
 
-#include "engine/error.h"
+#include "engine/core/error.h"
 
 namespace hp {
 namespace {

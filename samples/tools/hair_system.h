@@ -1,5 +1,5 @@
 #pragma once
-// Contract: the single-head convenience over hp::Renderer + one hp::HairInstance (engine/renderer.h has
+// Contract: the single-head convenience over hp::Renderer + one hp::HairInstance (compute/renderer/renderer.h has
 // the full contract), with its own frame counter, for tools, tests and applications with one head:
 //   recordUpdate(cmd, motion)        outside rendering: simulate -> tessellate -> interpolate
 //   recordPrepareDraw(cmd, view)     outside rendering: starts a new frame; bounds and the opacity shadow
@@ -15,10 +15,10 @@
 // view or motion throw hp::Error.
 #include <memory>
 
-#include "compute/strand_raster_pass.h"
-#include "engine/hair_instance.h"
-#include "engine/render/composite_pass.h"
-#include "engine/renderer.h"
+#include "compute/raster/strand_raster_pass.h"
+#include "compute/renderer/hair_instance.h"
+#include "compute/raster/composite_pass.h"
+#include "compute/renderer/renderer.h"
 
 namespace hp {
 struct HairSystemSettings {
@@ -26,7 +26,7 @@ struct HairSystemSettings {
   HairMaterial material;
   LutMode lutMode = LutMode::Physical;
   compute::StrandOptions strands;
-  render::AttachmentFormats formats;
+  hairpipe::AttachmentFormats formats;
   render::LookSettings look;
   render::OpacitySettings opacity;
   std::uint32_t framesInFlight = 2;

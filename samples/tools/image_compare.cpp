@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "engine/error.h"
+#include "engine/core/error.h"
 #include "shaders/shared/tonemap.h"
 
 namespace hp {

@@ -1,6 +1,6 @@
 #include "samples/tools/interrupt_flag.h"
 
-#include "engine/error.h"
+#include "engine/core/error.h"
 
 namespace hp {
 namespace {

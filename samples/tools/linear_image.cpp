@@ -6,9 +6,9 @@
 #include <sstream>
 #include <string_view>
 
-#include "engine/error.h"
-#include "engine/hair/atomic_write.h"
-#include "engine/hair/input_file.h"
+#include "engine/core/error.h"
+#include "engine/core/hair/atomic_write.h"
+#include "engine/core/hair/input_file.h"
 #include "samples/tools/host/lut_export.h"
 #include "shaders/shared/tonemap.h"
 

@@ -5,9 +5,9 @@
 #include <string>
 #include <string_view>
 
-#include "engine/error.h"
-#include "engine/hair/atomic_write.h"
-#include "engine/hair/input_file.h"
+#include "engine/core/error.h"
+#include "engine/core/hair/atomic_write.h"
+#include "engine/core/hair/input_file.h"
 
 namespace hp {
 namespace {

@@ -2,8 +2,8 @@
 
 #include <cstring>
 
-#include "engine/error.h"
-#include "engine/shading/half_float.h"
+#include "engine/core/error.h"
+#include "engine/core/shading/half_float.h"
 #include "engine/vk/attachments.h"
 #include "engine/vk/barriers.h"
 #include "engine/vk/context.h"
@@ -47,7 +47,7 @@ void OffscreenRenderer::attach(Renderer& renderer, std::span<HairInstance* const
   renderer.setRasterTarget(extent(), targets_.depth.view(), instances);
 }
 
-AttachmentFormats OffscreenRenderer::formats() const { return {kHdrFormat, kDepthFormat, targets_.samples()}; }
+hairpipe::AttachmentFormats OffscreenRenderer::formats() const { return {kHdrFormat, kDepthFormat, targets_.samples()}; }
 
 void OffscreenRenderer::record(VkCommandBuffer cmd, HairSystem& hair, const DrawView& view, float exposure,
                                vk::GpuProfiler* profiler) const {

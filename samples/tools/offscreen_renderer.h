@@ -26,7 +26,7 @@ class OffscreenRenderer {
   void attach(HairSystem& hair) const;
   // The same for a Renderer's instances (the middleware API; the Renderer's raster mode must be compute).
   void attach(Renderer& renderer, std::span<HairInstance* const> instances) const;
-  AttachmentFormats formats() const;
+  hairpipe::AttachmentFormats formats() const;
   VkExtent2D extent() const { return targets_.extent(); }
   // The sRGB image record() leaves in ImageUse::ColorAttachment (a window blits it to its swapchain).
   const vk::Image& display() const { return targets_.display; }

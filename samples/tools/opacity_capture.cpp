@@ -7,10 +7,10 @@
 
 #include <nlohmann/json.hpp>
 
-#include "engine/error.h"
-#include "engine/hair/atomic_write.h"
+#include "engine/core/error.h"
+#include "engine/core/hair/atomic_write.h"
 #include "samples/tools/png_file.h"
-#include "engine/shading/half_float.h"
+#include "engine/core/shading/half_float.h"
 #include "samples/tools/host/lut_export.h"
 #include "engine/vk/transfer.h"
 

@@ -8,7 +8,7 @@
 #include <filesystem>
 #include <vector>
 
-#include "engine/render/opacity_settings.h"
+#include "compute/shadows/opacity_settings.h"
 #include "shaders/shared/opacity.h"
 
 namespace hp::vk {

@@ -6,8 +6,8 @@
 #include <cstdio>
 #include <memory>
 
-#include "engine/error.h"
-#include "engine/hair/atomic_write.h"
+#include "engine/core/error.h"
+#include "engine/core/hair/atomic_write.h"
 
 namespace hp {
 namespace {

@@ -5,7 +5,7 @@
 #include "samples/tools/strand_dump.h"
 
 #include "samples/tools/simulation_driver.h"
-#include "engine/error.h"
+#include "engine/core/error.h"
 #include "samples/tools/offscreen_renderer.h"
 #include "engine/vk/context.h"
 #include "engine/vk/submit.h"
@@ -71,7 +71,7 @@ struct RenderSession {
 };
 }  // namespace
 
-HairSystemSettings systemSettings(const RenderRequest& r, const render::AttachmentFormats& formats) {
+HairSystemSettings systemSettings(const RenderRequest& r, const hairpipe::AttachmentFormats& formats) {
   HairSystemSettings s;
   s.simulation = r.scene.simulation;
   s.material = r.scene.material;

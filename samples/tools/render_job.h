@@ -7,7 +7,7 @@
 #include <optional>
 #include <vector>
 
-#include "engine/hair/hair_file.h"
+#include "engine/core/hair/hair_file.h"
 #include "samples/tools/hair_system.h"
 #include "samples/tools/frame_capture.h"
 #include "samples/tools/opacity_capture.h"
@@ -60,7 +60,7 @@ std::uint32_t renderSequence(const vk::Context& ctx, const HairAsset& asset, con
                              const std::function<bool(std::uint32_t frame, const RenderResult& image)>& onFrame);
 
 // The HairSystem settings a render request implies for targets of `formats` (the viewer's too).
-HairSystemSettings systemSettings(const RenderRequest& request, const render::AttachmentFormats& formats);
+HairSystemSettings systemSettings(const RenderRequest& request, const hairpipe::AttachmentFormats& formats);
 // Throws hp::Error for a request renderStill would refuse (frame counts, exposure, light).
 void validateRequest(const RenderRequest& request);
 }  // namespace hp

@@ -1,6 +1,6 @@
 #include "samples/tools/render_targets.h"
 
-#include "engine/error.h"
+#include "engine/core/error.h"
 #include "engine/vk/context.h"
 
 namespace hp {

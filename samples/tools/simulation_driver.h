@@ -7,7 +7,7 @@
 #include <functional>
 #include <vector>
 
-#include "compute/simulate_pass.h"
+#include "compute/strands/simulate_pass.h"
 #include "samples/tools/host/head_animation.h"
 #include "samples/tools/host/sim_stats.h"
 #include "engine/vk/profiler.h"

@@ -5,12 +5,12 @@
 #include <string>
 #include <vector>
 
-#include "compute/interpolate_pass.h"
-#include "compute/strand_buffers.h"
-#include "compute/tessellate_pass.h"
-#include "engine/hair/guide_set.h"
-#include "engine/hair/hair_asset.h"
-#include "engine/hair/hair_file.h"
+#include "compute/strands/interpolate_pass.h"
+#include "compute/strands/strand_buffers.h"
+#include "compute/strands/tessellate_pass.h"
+#include "engine/core/hair/guide_set.h"
+#include "engine/core/hair/hair_asset.h"
+#include "engine/core/hair/hair_file.h"
 #include "engine/vk/profiler.h"
 
 namespace hp::compute {

@@ -6,7 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "engine/error.h"
+#include "engine/core/error.h"
 #include "samples/tools/host/camera_fit.h"
 #include "engine/vk/check.h"
 #include "samples/cli/command.h"

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <string>
 
-#include "engine/error.h"
+#include "engine/core/error.h"
 #include "engine/vk/check.h"
 #include "engine/vk/context.h"
 #include "engine/vk/fault_injection.h"

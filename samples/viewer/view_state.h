@@ -5,7 +5,7 @@
 // +-85 deg), the wheel zooms (distance x 0.9 per notch, clamped), a left drag with Shift (or a right
 // drag) turns the light. Keys: N nod, T turn, S shake (the same key again stops it), W wind on/off,
 // Space pause, F1 or Tab panel, Escape or Q close.
-#include "engine/hair/scene.h"
+#include "engine/core/hair/scene.h"
 #include "samples/tools/host/head_animation.h"
 
 namespace hp::viewer {

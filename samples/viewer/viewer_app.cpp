@@ -8,13 +8,12 @@
 #include <iostream>
 #include <memory>
 
-#include "engine/error.h"
-#include "engine/render/camera.h"
+#include "engine/core/error.h"
+#include "compute/raster/camera.h"
 #include "engine/vk/barriers.h"
 #include "engine/vk/buffer.h"
 #include "engine/vk/check.h"
 #include "engine/vk/context.h"
-#include "engine/vk/device_lost.h"
 #include "engine/vk/fault_injection.h"
 #include "samples/tools/png_file.h"
 #include "samples/tools/simulation_driver.h"

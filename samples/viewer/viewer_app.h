@@ -16,7 +16,7 @@
 #include <string>
 #include <vector>
 
-#include "engine/hair/hair_asset.h"
+#include "engine/core/hair/hair_asset.h"
 #include "samples/cli/scene_options.h"
 #include "samples/tools/render_job.h"
 

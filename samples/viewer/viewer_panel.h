@@ -7,10 +7,10 @@
 #include <string>
 #include <vector>
 
-#include "engine/hair/scene.h"
-#include "engine/render/frame_block.h"
-#include "engine/render/opacity_settings.h"
-#include "engine/shading/lut.h"
+#include "engine/core/hair/scene.h"
+#include "compute/raster/frame_block.h"
+#include "compute/shadows/opacity_settings.h"
+#include "engine/core/shading/lut.h"
 #include "engine/vk/profiler.h"
 #include "samples/viewer/view_state.h"
 

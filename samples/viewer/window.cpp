@@ -1,6 +1,6 @@
 #include "samples/viewer/window.h"
 
-#include "engine/error.h"
+#include "engine/core/error.h"
 #include "engine/vk/check.h"
 
 namespace hp::viewer {

@@ -1,10 +1,10 @@
 // Shared by GLSL and C++ (one source of truth for the Marschner shading interface, docs/THEORY.md §3):
 // - the LUT mode values, LUT resolutions and the parameterisation constants;
 // - MarschnerParams, the GPU material + LUT-scale block (std140/std430-safe: 16-byte members only;
-//   C++ size/offset checks live in engine/shading/marschner_gpu.h);
+//   C++ size/offset checks live in engine/core/shading/marschner_gpu.h);
 // - the texture-coordinate functions of the LUT modes. They are written in the common subset of GLSL
 //   and C++ (HP_FN, float literals with an f suffix), so the CPU emulation in
-//   engine/shading/lut_sampler.cpp computes bit-for-bit the same coordinates formula as the shader.
+//   engine/core/shading/lut_sampler.cpp computes bit-for-bit the same coordinates formula as the shader.
 #ifndef HP_SHARED_MARSCHNER_H
 #define HP_SHARED_MARSCHNER_H
 
@@ -51,7 +51,7 @@ HP_CONST(uint, MARSCHNER_FLOAT_N_HEIGHT, 128u)
 
 // `physical` mode (RGBA16F; docs/SHADING.md "physical"):
 //   M  : M_SIZE x M_SIZE, (M_R, M_TT, M_TRT, M_back) over (signed pseudo-angle of theta_i, of theta_r);
-//        M_back: the local back-scattering's lobe (engine/shading/multiple_scattering.h), dual scattering;
+//        M_back: the local back-scattering's lobe (engine/core/shading/multiple_scattering.h), dual scattering;
 //   N0 : N_WIDTH x N_HEIGHT, (N_TT.rgb, N_R); N1: same size, (N_TRT + N_res).rgb;
 //        u = pseudo-angle of phi/2, v = pseudo-angle of |theta_r| (the attenuations depend on theta_r).
 // S = (M_R N_R + M_TT N_TT + M_TRT (N_TRT + N_res)) / cos theta_i, cos theta_i = sqrt(1 - sin^2).
@@ -62,7 +62,7 @@ HP_CONST(float, MARSCHNER_PHYSICAL_MIN_COS_I, 1e-4f)
 
 HP_CONST(float, MARSCHNER_INV_SQRT2, 0.70710678f)
 
-// Multiple scattering (physical mode; engine/shading/multiple_scattering.h, docs/SHADING.md "Multiple
+// Multiple scattering (physical mode; engine/core/shading/multiple_scattering.h, docs/SHADING.md "Multiple
 // scattering"): tables at MARSCHNER_SPREAD_ENTRIES sines of theta evenly spaced over [-1, 1], linearly
 // interpolated; the forward density factor d_f of Zinke et al. 2008.
 HP_CONST(uint, MARSCHNER_SPREAD_ENTRIES, 32u)

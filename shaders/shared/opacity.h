@@ -1,5 +1,5 @@
 // Shared by GLSL and C++: opacity shadow maps (docs/THEORY.md §5): the bounds pass
-// (compute/bounds_pass.h, shaders/bounds.comp), the opacity pass (engine/render/opacity_pass.h,
+// (compute/shadows/bounds_pass.h, shaders/bounds.comp), the opacity pass (compute/shadows/opacity_pass.h,
 // shaders/opacity*.vert/.frag) and the lookup in the shading passes (shaders/opacity_lookup.glsl).
 //
 // Light space. For a directional light with unit direction L (from the hair toward the light), the

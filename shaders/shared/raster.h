@@ -1,4 +1,4 @@
-// Shared by GLSL and C++: the compute strand rasterizer (compute/strand_raster_pass.h, shaders/raster_*.comp;
+// Shared by GLSL and C++: the compute strand rasterizer (compute/raster/strand_raster_pass.h, shaders/raster_*.comp;
 // docs/THEORY.md §7). One source of truth for bindings, tile and bin sizes, the per-frame state, the push
 // constants and the coverage formula (plain arithmetic, compiled for both languages and tested on the CPU).
 //

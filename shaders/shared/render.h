@@ -39,7 +39,7 @@ HP_CONST(float, RENDER_HAIR_SKY_VISIBILITY, 0.15342641f)
 HP_CONST(uint, RENDER_SCATTERING_SINGLE, 0u)
 HP_CONST(uint, RENDER_SCATTERING_DUAL, 1u)
 
-// The head bounce map (engine/render/head_bounce_map.h, shaders/head_bounce.glsl): the skin seen from the
+// The head bounce map (compute/shadows/head_bounce_map.h, shaders/head_bounce.glsl): the skin seen from the
 // light, texels per side (framed like the head's depth map), and the gather's pattern around the point's
 // texel: RINGS rings of SPOKES samples, ring j at radius RADIUS x ((j + 1/2) / RINGS)^2 texels.
 HP_CONST(uint, RENDER_BOUNCE_RESOLUTION, 128)
@@ -65,7 +65,7 @@ struct RenderFrame {
   vec4 lightPosition;    // xyz world position of a spot; w = 1 for a spot, 0 for a directional light
   vec4 lightSpot;        // spot: x = cos(cone half-angle), y = cos(inner angle, full radiance inside),
                          // z = range of the inverse-square falloff (0: none), w = 0 (shaders/light.glsl)
-  mat4 headShadowViewProj;  // world -> clip of the head's depth shadow map (engine/render/shadow_maps.h, head_shadow_view.h)
+  mat4 headShadowViewProj;  // world -> clip of the head's depth shadow map (compute/shadows/shadow_maps.h, head_shadow_view.h)
   vec4 headShadow;          // x = 1: the head occludes the light (0: no map), y = receiver offset toward the
                             // light (scene units), z = 1 / map resolution, w = 0
   vec4 headBounce;          // x = 1: the hair adds the light the skin reflects (compute raster; head_bounce.glsl),

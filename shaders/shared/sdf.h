@@ -1,4 +1,4 @@
-// Shared by GLSL and C++: a signed distance grid on the device (engine/hair/sdf_grid.h), one storage
+// Shared by GLSL and C++: a signed distance grid on the device (engine/core/hair/sdf_grid.h), one storage
 // buffer: this header, then the node values as floats (x fastest, then y, then z), read by
 // shaders/sdf_collide.glsl. An absent grid is a header with present = 0 and one padding value.
 #ifndef HP_SHARED_SDF_H

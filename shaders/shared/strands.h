@@ -1,5 +1,5 @@
 // Shared by GLSL and C++: the render-strand data of the tessellate and interpolate passes
-// (compute/tessellate_pass.h, compute/interpolate_pass.h, compute/strand_buffers.h). One source of
+// (compute/strands/tessellate_pass.h, compute/strands/interpolate_pass.h, compute/strands/strand_buffers.h). One source of
 // truth for bindings, workgroup sizes, push constants, the per-strand structs, the sample
 // distribution along a strand and the per-strand attribute hash.
 //
@@ -85,7 +85,7 @@ struct StrandAttributes {
   uint source;       // triangle index (guides mode: guide index)
 };
 
-// PCG integer hash (Jarzynski & Olano 2020), same constants as hp::pcgHash in engine/hair/rng.h.
+// PCG integer hash (Jarzynski & Olano 2020), same constants as hp::pcgHash in engine/core/hair/rng.h.
 HP_STRANDS_FN uint strandHash(uint v) {
   uint state = v * 747796405u + 2891336453u;
   uint word = ((state >> ((state >> 28u) + 4u)) ^ state) * 277803737u;

@@ -9,7 +9,7 @@
 #include <random>
 #include <sstream>
 
-#include "engine/shading/fibre_model.h"
+#include "engine/core/shading/fibre_model.h"
 #include "tests/hair/hair_test_util.h"
 #include "tests/shading/random_directions.h"
 #include "tests/support/cli_runner.h"

@@ -2,7 +2,7 @@
 // exits 1 with a message and leaves no file (or the previous file untouched).
 #include <gtest/gtest.h>
 
-#include "engine/hair/hair_file.h"
+#include "engine/core/hair/hair_file.h"
 #include "tests/hair/hair_test_util.h"
 #include "tests/support/cli_runner.h"
 

@@ -6,7 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "engine/hair/hair_file.h"
+#include "engine/core/hair/hair_file.h"
 #include "samples/tools/host/synthetic_hair.h"
 #include "tests/hair/hair_test_util.h"
 #include "tests/support/cli_runner.h"

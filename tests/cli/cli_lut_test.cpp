@@ -8,7 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "engine/shading/lut.h"
+#include "engine/core/shading/lut.h"
 #include "tests/hair/hair_test_util.h"
 #include "tests/support/cli_runner.h"
 

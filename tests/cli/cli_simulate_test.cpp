@@ -3,7 +3,7 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
-#include "engine/hair/hair_file.h"
+#include "engine/core/hair/hair_file.h"
 #include "tests/support/cli_runner.h"
 
 using hp::test::expectRefused;

@@ -7,7 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "engine/hair/hair_file.h"
+#include "engine/core/hair/hair_file.h"
 #include "tests/support/cli_runner.h"
 
 using hp::test::runCli;

@@ -4,7 +4,7 @@
 
 #include <sstream>
 
-#include "engine/error.h"
+#include "engine/core/error.h"
 #include "samples/tools/contact_sheet.h"
 #include "samples/tools/progress_reporter.h"
 

@@ -7,11 +7,11 @@
 #include <cstring>
 #include <numeric>
 
-#include "compute/interpolate_pass.h"
+#include "compute/strands/interpolate_pass.h"
 #include "samples/tools/strand_dump.h"
-#include "compute/tessellate_pass.h"
-#include "engine/error.h"
-#include "engine/hair/default_head.h"
+#include "compute/strands/tessellate_pass.h"
+#include "engine/core/error.h"
+#include "engine/core/hair/default_head.h"
 #include "engine/vk/submit.h"
 #include "shaders/shared/strands.h"
 #include "tests/compute/strand_reference.h"

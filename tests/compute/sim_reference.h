@@ -6,7 +6,7 @@
 
 #include <vector>
 
-#include "compute/simulate_pass.h"
+#include "compute/strands/simulate_pass.h"
 
 namespace hp::test {
 class SimReference {

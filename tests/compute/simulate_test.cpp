@@ -4,9 +4,9 @@
 #include <gtest/gtest.h>
 
 #include "samples/tools/simulation_driver.h"
-#include "engine/error.h"
-#include "engine/hair/default_head.h"
-#include "engine/hair/head_sdf.h"
+#include "engine/core/error.h"
+#include "engine/core/hair/default_head.h"
+#include "engine/core/hair/head_sdf.h"
 #include "tests/compute/sim_reference.h"
 #include "tests/support/thinned_head.h"
 #include "tests/support/vk_fixture.h"

@@ -1,4 +1,4 @@
-// Scalp input beyond the rigid head (compute/scalp_input.h): bones with per-guide weights (a jaw/neck bone
+// Scalp input beyond the rigid head (compute/strands/scalp_input.h): bones with per-guide weights (a jaw/neck bone
 // rotating the lower scalp) and per-root frames written by the application. Roots follow their skinned
 // positions exactly every frame, lengths stay within the simulation's bounds, a capsule collider moving
 // with the bone is never penetrated, and root frames carrying a rigid rotation reproduce the rigid head.
@@ -10,10 +10,10 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
 
-#include "compute/simulate_pass.h"
-#include "engine/error.h"
-#include "engine/hair/default_head.h"
-#include "engine/hair/head_sdf.h"
+#include "compute/strands/simulate_pass.h"
+#include "engine/core/error.h"
+#include "engine/core/hair/default_head.h"
+#include "engine/core/hair/head_sdf.h"
 #include "samples/tools/host/sim_stats.h"
 #include "engine/vk/submit.h"
 #include "engine/vk/transfer.h"

@@ -2,8 +2,8 @@
 // this keeps the whole allocation possible. Pure arithmetic, no device.
 #include <gtest/gtest.h>
 
-#include "compute/strand_buffers.h"
-#include "engine/error.h"
+#include "compute/strands/strand_buffers.h"
+#include "engine/core/error.h"
 
 using namespace hp;
 

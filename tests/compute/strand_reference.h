@@ -7,10 +7,10 @@
 #include <string>
 #include <vector>
 
-#include "compute/strand_buffers.h"
-#include "engine/hair/guide_set.h"
-#include "engine/hair/hair_asset.h"
-#include "engine/hair/strand_topology.h"
+#include "compute/strands/strand_buffers.h"
+#include "engine/core/hair/guide_set.h"
+#include "engine/core/hair/hair_asset.h"
+#include "engine/core/hair/strand_topology.h"
 
 namespace hp::test {
 // Curves of `vertices` points each, back to back.

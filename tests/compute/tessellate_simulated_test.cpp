@@ -5,7 +5,7 @@
 
 #include "samples/tools/simulation_driver.h"
 #include "samples/tools/strand_dump.h"
-#include "engine/hair/default_head.h"
+#include "engine/core/hair/default_head.h"
 #include "engine/vk/submit.h"
 #include "tests/compute/strand_reference.h"
 #include "tests/support/vk_fixture.h"

@@ -5,9 +5,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include "compute/strand_buffers.h"
-#include "engine/error.h"
-#include "engine/hair/default_head.h"
+#include "compute/strands/strand_buffers.h"
+#include "engine/core/error.h"
+#include "engine/core/hair/default_head.h"
 #include "shaders/shared/strands.h"
 #include "tests/compute/strand_reference.h"
 #include "tests/support/vk_fixture.h"

@@ -4,7 +4,7 @@
 #include <cstdint>
 #include <string_view>
 
-#include "engine/error.h"
+#include "engine/core/error.h"
 #include "samples/cli/brdf_queries.h"
 #include "tests/fuzz/fuzz_check.h"
 

@@ -5,8 +5,8 @@
 #include <cstdint>
 #include <span>
 
-#include "engine/error.h"
-#include "engine/hair/hair_file.h"
+#include "engine/core/error.h"
+#include "engine/core/hair/hair_file.h"
 #include "tests/fuzz/fuzz_check.h"
 #include "tests/fuzz/fuzz_import.h"
 

@@ -2,8 +2,8 @@
 // Shared by the .hair and .tfx fuzz targets: the import of accepted strands to guides (resampling, root
 // triangulation, fitted collider) either refuses with hp::Error or yields one finite guide per strand
 // and triangle indices in range. Bounded work per input: 64 render strands.
-#include "engine/error.h"
-#include "engine/hair/hair_import.h"
+#include "engine/core/error.h"
+#include "engine/core/hair/hair_import.h"
 #include "tests/fuzz/fuzz_check.h"
 
 namespace hp::fuzz {

@@ -3,8 +3,8 @@
 #include <cstdint>
 #include <string>
 
-#include "engine/error.h"
-#include "engine/hair/scene.h"
+#include "engine/core/error.h"
+#include "engine/core/hair/scene.h"
 #include "samples/tools/host/scene_file.h"
 #include "tests/fuzz/fuzz_check.h"
 

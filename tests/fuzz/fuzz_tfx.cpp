@@ -7,8 +7,8 @@
 #include <cstring>
 #include <span>
 
-#include "engine/error.h"
-#include "engine/hair/tfx_file.h"
+#include "engine/core/error.h"
+#include "engine/core/hair/tfx_file.h"
 #include "tests/fuzz/fuzz_check.h"
 #include "tests/fuzz/fuzz_import.h"
 

@@ -1,7 +1,7 @@
 // Atomic file output: whole file or nothing, no temporary left behind.
 #include <gtest/gtest.h>
 
-#include "engine/hair/atomic_write.h"
+#include "engine/core/hair/atomic_write.h"
 #include "tests/hair/hair_test_util.h"
 
 namespace hp {

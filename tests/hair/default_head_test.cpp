@@ -2,8 +2,8 @@
 // hangs like hair, and a usable interpolation topology.
 #include <gtest/gtest.h>
 
-#include "engine/hair/default_head.h"
-#include "engine/hair/head_sdf.h"
+#include "engine/core/hair/default_head.h"
+#include "engine/core/hair/head_sdf.h"
 #include "tests/hair/hair_test_util.h"
 
 namespace hp {

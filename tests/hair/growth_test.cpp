@@ -3,8 +3,8 @@
 
 #include <cmath>
 
-#include "engine/hair/guide_growth.h"
-#include "engine/hair/segment_profile.h"
+#include "engine/core/hair/guide_growth.h"
+#include "engine/core/hair/segment_profile.h"
 #include "tests/hair/hair_test_util.h"
 
 namespace hp {

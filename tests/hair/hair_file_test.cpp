@@ -6,9 +6,9 @@
 #include <cmath>
 #include <cstring>
 
-#include "engine/hair/hair_export.h"
-#include "engine/hair/hair_file.h"
-#include "engine/hair/rng.h"
+#include "engine/core/hair/hair_export.h"
+#include "engine/core/hair/hair_file.h"
+#include "engine/core/hair/rng.h"
 #include "tests/hair/hair_test_util.h"
 
 namespace hp {

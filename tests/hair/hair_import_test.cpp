@@ -1,8 +1,8 @@
 // .hair models as assets: resampled guides, kept strands, fitted colliders, root topology.
 #include <gtest/gtest.h>
 
-#include "engine/hair/hair_import.h"
-#include "engine/hair/resample.h"
+#include "engine/core/hair/hair_import.h"
+#include "engine/core/hair/segment_profile.h"
 #include "samples/tools/host/synthetic_hair.h"
 #include "tests/hair/hair_test_util.h"
 

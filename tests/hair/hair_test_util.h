@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "engine/error.h"
+#include "engine/core/error.h"
 
 namespace hp::test {
 // A fresh directory under the system temp dir, removed when the object dies.

@@ -1,7 +1,7 @@
 #include <gtest/gtest.h>
 
-#include "engine/hair/default_head.h"
-#include "engine/hair/head_mesh.h"
+#include "engine/core/hair/default_head.h"
+#include "engine/core/hair/head_mesh.h"
 
 using namespace hp;
 

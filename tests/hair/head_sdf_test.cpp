@@ -10,11 +10,11 @@
 #include <utility>
 #include <vector>
 
-#include "engine/error.h"
-#include "engine/hair/default_head.h"
-#include "engine/hair/head_sdf.h"
-#include "engine/hair/sdf_primitives.h"
-#include "engine/hair/level_set_mesh.h"
+#include "engine/core/error.h"
+#include "engine/core/hair/default_head.h"
+#include "engine/core/hair/head_sdf.h"
+#include "engine/core/hair/sdf_primitives.h"
+#include "engine/core/hair/level_set_mesh.h"
 
 namespace hp {
 namespace {

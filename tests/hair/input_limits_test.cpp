@@ -3,12 +3,12 @@
 #include <gtest/gtest.h>
 #include <sys/stat.h>
 
-#include "engine/hair/hair_file.h"
-#include "engine/hair/input_file.h"
-#include "engine/hair/tfx_file.h"
+#include "engine/core/hair/hair_file.h"
+#include "engine/core/hair/input_file.h"
+#include "engine/core/hair/tfx_file.h"
 #include "samples/tools/host/json_reader.h"
-#include "engine/hair/obj_import.h"
-#include "engine/hair/scene.h"
+#include "engine/core/hair/obj_import.h"
+#include "engine/core/hair/scene.h"
 #include "samples/tools/host/scene_file.h"
 #include "tests/hair/hair_test_util.h"
 

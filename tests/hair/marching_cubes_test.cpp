@@ -6,12 +6,12 @@
 #include <string>
 #include <utility>
 
-#include "engine/error.h"
-#include "engine/hair/level_set_mesh.h"
-#include "engine/hair/marching_cubes_table.h"
-#include "engine/hair/narrow_band.h"
-#include "engine/hair/rng.h"
-#include "engine/hair/sdf_grid.h"
+#include "engine/core/error.h"
+#include "engine/core/hair/level_set_mesh.h"
+#include "engine/core/hair/marching_cubes_table.h"
+#include "engine/core/hair/narrow_band.h"
+#include "engine/core/hair/rng.h"
+#include "engine/core/hair/sdf_grid.h"
 
 namespace hp {
 namespace {

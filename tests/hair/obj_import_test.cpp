@@ -4,7 +4,7 @@
 #include <cmath>
 #include <string>
 
-#include "engine/hair/obj_import.h"
+#include "engine/core/hair/obj_import.h"
 #include "tests/hair/hair_test_util.h"
 
 namespace hp {

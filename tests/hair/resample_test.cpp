@@ -3,7 +3,7 @@
 
 #include <cmath>
 
-#include "engine/hair/resample.h"
+#include "engine/core/hair/segment_profile.h"
 #include "tests/hair/hair_test_util.h"
 
 namespace hp {

@@ -1,7 +1,7 @@
 // ScalpMesh construction: computed normals, degenerate triangles dropped and counted, bad input.
 #include <gtest/gtest.h>
 
-#include "engine/hair/scalp_mesh.h"
+#include "engine/core/hair/scalp_mesh.h"
 #include "tests/hair/hair_test_util.h"
 
 namespace hp {

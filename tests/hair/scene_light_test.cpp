@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "engine/hair/scene.h"
+#include "engine/core/hair/scene.h"
 #include "samples/tools/host/scene_file.h"
 #include "tests/hair/hair_test_util.h"
 

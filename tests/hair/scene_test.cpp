@@ -5,8 +5,8 @@
 #include <fstream>
 #include <sstream>
 
-#include "engine/hair/hair_file.h"
-#include "engine/hair/scene.h"
+#include "engine/core/hair/hair_file.h"
+#include "engine/core/hair/scene.h"
 #include "samples/tools/host/scene_file.h"
 #include "samples/tools/host/synthetic_hair.h"
 #include "tests/hair/hair_test_util.h"
@@ -226,10 +226,10 @@ TEST(SceneSimParams, DefaultsAreValidAndBadFieldsAreNamed) {
 
 namespace hp {
 namespace {
-// The schema example in engine/hair/README.md must stay a valid scene with the documented defaults.
+// The schema example in engine/core/hair/README.md must stay a valid scene with the documented defaults.
 TEST(SceneReadme, ExampleParsesAndMatchesTheDefaults) {
-  std::ifstream in(std::filesystem::path(HAIRPIPE_TEST_DATA_DIR) / "../../engine/hair/README.md");
-  ASSERT_TRUE(in) << "engine/hair/README.md not found";
+  std::ifstream in(std::filesystem::path(HAIRPIPE_TEST_DATA_DIR) / "../../engine/core/hair/README.md");
+  ASSERT_TRUE(in) << "engine/core/hair/README.md not found";
   std::string text((std::istreambuf_iterator<char>(in)), {});
   auto begin = text.find("```json\n"), end = text.find("```", begin + 8);
   ASSERT_NE(begin, std::string::npos);

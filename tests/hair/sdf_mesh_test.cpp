@@ -5,11 +5,11 @@
 #include <filesystem>
 #include <fstream>
 
-#include "engine/error.h"
-#include "engine/hair/head_mesh.h"
-#include "engine/hair/scene.h"
+#include "engine/core/error.h"
+#include "engine/core/hair/head_mesh.h"
+#include "engine/core/hair/scene.h"
 #include "samples/tools/host/scene_file.h"
-#include "engine/hair/sdf_mesh.h"
+#include "engine/core/hair/sdf_mesh.h"
 
 namespace hp {
 namespace {

@@ -1,17 +1,17 @@
-// Distance programs (engine/hair/sdf_program.h) and the narrow-band sampling built on them: a program
+// Distance programs (engine/core/hair/sdf_program.h) and the narrow-band sampling built on them: a program
 // specialised to a box gives the whole program's value bit for bit inside the box and its bounds hold
 // every value there; the narrow band holds the exact field near the surface and the right sign beyond.
 #include <gtest/gtest.h>
 
 #include <vector>
 
-#include "engine/error.h"
-#include "engine/hair/head_sdf.h"
-#include "engine/hair/level_set_mesh.h"
-#include "engine/hair/narrow_band.h"
-#include "engine/hair/rng.h"
-#include "engine/hair/sdf_primitives.h"
-#include "engine/hair/sdf_program.h"
+#include "engine/core/error.h"
+#include "engine/core/hair/head_sdf.h"
+#include "engine/core/hair/level_set_mesh.h"
+#include "engine/core/hair/narrow_band.h"
+#include "engine/core/hair/rng.h"
+#include "engine/core/hair/sdf_primitives.h"
+#include "engine/core/hair/sdf_program.h"
 
 namespace hp {
 namespace {

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "engine/hair/tfx_file.h"
+#include "engine/core/hair/tfx_file.h"
 
 namespace hp::test {
 struct TfxCase {

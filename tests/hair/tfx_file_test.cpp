@@ -8,11 +8,11 @@
 #include <fstream>
 #include <iterator>
 
-#include "engine/error.h"
-#include "engine/hair/hair_import.h"
-#include "engine/hair/scene.h"
+#include "engine/core/error.h"
+#include "engine/core/hair/hair_import.h"
+#include "engine/core/hair/scene.h"
 #include "samples/tools/host/scene_file.h"
-#include "engine/hair/tfx_file.h"
+#include "engine/core/hair/tfx_file.h"
 #include "tests/hair/tfx_cases.h"
 
 namespace hp {

@@ -6,11 +6,11 @@
 #include <map>
 #include <numeric>
 
-#include "engine/hair/convex_hull.h"
-#include "engine/hair/fit_sphere.h"
-#include "engine/hair/rng.h"
-#include "engine/hair/root_topology.h"
-#include "engine/hair/strand_topology.h"
+#include "engine/core/hair/convex_hull.h"
+#include "engine/core/hair/fit_sphere.h"
+#include "engine/core/hair/rng.h"
+#include "engine/core/hair/root_topology.h"
+#include "engine/core/hair/strand_topology.h"
 #include "tests/hair/hair_test_util.h"
 
 namespace hp {

@@ -42,13 +42,32 @@ case $mode in
     ;;
   hello)
     configure_and_build "$src/samples/hello_hair" "$work/hello"
-    (cd "$work" && "$work/hello/hello_hair" --validation)
+    # The sample has no validation code: the layer, synchronization validation and logging of every
+    # warning and error come from the environment (the layer logs to stdout), and the loader's own log
+    # proves the layer was loaded. A sample with a barrier left out fails here with its VUID and hazard.
+    (cd "$work" && VK_INSTANCE_LAYERS=VK_LAYER_KHRONOS_validation \
+      VK_LAYER_ENABLES=VK_VALIDATION_FEATURE_ENABLE_SYNCHRONIZATION_VALIDATION_EXT \
+      VK_LAYER_REPORT_FLAGS=error,warn,perf VK_LAYER_DEBUG_ACTION=VK_DBG_LAYER_ACTION_LOG_MSG \
+      VK_LOADER_DEBUG=layer "$work/hello/hello_hair" >"$work/hello.out" 2>&1) || { cat "$work/hello.out" >&2; exit 1; }
+    grep -q 'Insert instance layer.*VK_LAYER_KHRONOS_validation' "$work/hello.out" ||
+      { echo "the validation layer was not loaded for hello_hair" >&2; exit 1; }
+    if grep -E 'Validation (Error|Warning|Performance Warning)' "$work/hello.out" >&2; then
+      echo "hello_hair: validation messages (above)" >&2
+      exit 1
+    fi
     [ -s "$work/hello_hair.png" ] || { echo "hello_hair wrote no PNG" >&2; exit 1; }
     ;;
   consumers)
     configure_and_build "$src/tests/package/consumers" "$work/consumers"
     "$work/consumers/noexcept_consumer"
     "$work/consumers/glm_consumer"
+    # Negative control: with a forced glm macro the consumer's check must fail, naming its own glm.
+    if "$work/consumers/glm_consumer_forced" >"$work/forced.out" 2>&1; then
+      echo "glm_consumer_forced passed: the glm consumer cannot see a forced macro" >&2
+      exit 1
+    fi
+    grep -q "FAILED: the application's glm" "$work/forced.out" ||
+      { cat "$work/forced.out" >&2; exit 1; }
     ;;
   headers)
     installed=$(cd "$prefix/include" && find . -type f | sed 's|^\./||' | sort)

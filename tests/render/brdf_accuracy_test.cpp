@@ -6,8 +6,8 @@
 #include <iostream>
 
 #include "samples/tools/brdf_evaluator.h"
-#include "engine/render/marschner_textures.h"
-#include "engine/shading/fibre_model.h"
+#include "compute/raster/marschner_textures.h"
+#include "engine/core/shading/fibre_model.h"
 #include "tests/render/brdf_test_util.h"
 #include "tests/support/vk_fixture.h"
 

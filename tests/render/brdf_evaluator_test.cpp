@@ -5,11 +5,11 @@
 #include <chrono>
 #include <iostream>
 
-#include "engine/error.h"
+#include "engine/core/error.h"
 #include "samples/tools/brdf_evaluator.h"
-#include "engine/render/marschner_textures.h"
-#include "engine/shading/lut_sampler.h"
-#include "engine/shading/marschner.h"
+#include "compute/raster/marschner_textures.h"
+#include "engine/core/shading/lut_sampler.h"
+#include "engine/core/shading/marschner.h"
 #include "shaders/shared/brdf_eval.h"
 #include "tests/render/brdf_test_util.h"
 #include "tests/support/vk_fixture.h"

@@ -8,9 +8,9 @@
 #include <functional>
 #include <string>
 
-#include "engine/error.h"
-#include "engine/hair/default_head.h"
-#include "engine/renderer.h"
+#include "engine/core/error.h"
+#include "engine/core/hair/default_head.h"
+#include "compute/renderer/renderer.h"
 #include "engine/vk/fault_injection.h"
 #include "engine/vk/submit.h"
 #include "samples/tools/offscreen_renderer.h"

@@ -1,5 +1,5 @@
 // Dual scattering (LookSettings::Scattering::Dual; shaders/hair_shading.glsl, the back-scattering tables of
-// engine/shading/multiple_scattering.h) against the path tracer's hair-to-hair multiple scattering.
+// engine/core/shading/multiple_scattering.h) against the path tracer's hair-to-hair multiple scattering.
 // The frame isolates the hair: light blonde fibres (where multiple scattering is as much light as single
 // scattering), black skin (the skin's light is the skin bounce's business), no sky, no skin bounce; the
 // default view at 96x72, 2 settling frames. The reference with 1 bounce is the single-scattering truth,
@@ -14,7 +14,7 @@
 #include <cmath>
 #include <iostream>
 
-#include "engine/shading/material_color.h"
+#include "engine/core/shading/material_color.h"
 #include "samples/tools/frame_export.h"
 #include "samples/tools/image_compare.h"
 #include "samples/tools/reference/path_tracer.h"

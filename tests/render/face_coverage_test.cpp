@@ -6,8 +6,8 @@
 
 #include <iostream>
 
-#include "engine/hair/head_sdf.h"
-#include "engine/render/camera.h"
+#include "engine/core/hair/head_sdf.h"
+#include "compute/raster/camera.h"
 #include "samples/tools/render_job.h"
 #include "tests/support/vk_fixture.h"
 

@@ -19,7 +19,7 @@
 #include <fstream>
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "engine/error.h"
+#include "engine/core/error.h"
 #include "samples/tools/frame_export.h"
 #include "samples/tools/image_compare.h"
 #include "samples/tools/reference/fibre.h"

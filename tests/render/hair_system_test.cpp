@@ -1,8 +1,8 @@
 // The embedding facade refuses what an application could hand it wrongly, before anything reaches the device.
 #include <gtest/gtest.h>
 
-#include "engine/error.h"
-#include "engine/hair/default_head.h"
+#include "engine/core/error.h"
+#include "engine/core/hair/default_head.h"
 #include "samples/tools/hair_system.h"
 #include "engine/vk/submit.h"
 #include "tests/support/vk_fixture.h"

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <optional>
 
-#include "engine/render/camera.h"
+#include "compute/raster/camera.h"
 
 namespace hp::test {
 namespace {

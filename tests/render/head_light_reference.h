@@ -12,8 +12,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "engine/hair/scene.h"
-#include "engine/hair/sdf_grid.h"
+#include "engine/core/hair/scene.h"
+#include "engine/core/hair/sdf_grid.h"
 
 namespace hp::test {
 struct HeadLightOptions {

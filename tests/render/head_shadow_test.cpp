@@ -1,4 +1,4 @@
-// The head as an occluder through its depth shadow map (engine/render/shadow_maps.h, head_shadow_view.h): no banding
+// The head as an occluder through its depth shadow map (compute/shadows/shadow_maps.h, head_shadow_view.h): no banding
 // on the skin. Metric: the mean vertical luminance step over skin pixels that a CPU ray cast of the
 // head's field finds clearly lit (head_light_reference.h: no true cast-shadow edge or terminator near),
 // against the same pixels of the same frame without shadows: with the head's own shadows, and with the

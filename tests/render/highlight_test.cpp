@@ -12,7 +12,7 @@
 
 #include <cmath>
 
-#include "engine/render/camera.h"
+#include "compute/raster/camera.h"
 #include "samples/tools/render_job.h"
 #include "tests/support/vk_fixture.h"
 

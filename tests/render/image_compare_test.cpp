@@ -8,7 +8,7 @@
 #include <limits>
 #include <string>
 
-#include "engine/error.h"
+#include "engine/core/error.h"
 #include "samples/tools/image_compare.h"
 #include "samples/tools/linear_image.h"
 

@@ -7,11 +7,11 @@
 #include <cstring>
 #include <iostream>
 
-#include "engine/error.h"
+#include "engine/core/error.h"
 #include "samples/tools/brdf_evaluator.h"
-#include "engine/render/marschner_textures.h"
-#include "engine/shading/half_float.h"
-#include "engine/shading/lut_sampler.h"
+#include "compute/raster/marschner_textures.h"
+#include "engine/core/shading/half_float.h"
+#include "engine/core/shading/lut_sampler.h"
 #include "engine/vk/transfer.h"
 #include "tests/render/brdf_test_util.h"
 #include "tests/support/vk_fixture.h"
@@ -145,7 +145,9 @@ TEST_F(VulkanTest, DeviceLutLookupAgreesWithTheCpuEmulation) {
   Agreement plain = report("paper, plain emulation", agreement(device, emulate(paper.lut(), queries, 0), 0.01));
   Agreement p = report("paper, filtered result rounded to 8 bits",
                        agreement(device, emulatePaper8(paper.lut(), queries, 8), 0.01));
-  if (lavapipe) EXPECT_LE(p.median, 1e-6);
+  if (lavapipe) {
+    EXPECT_LE(p.median, 1e-6);
+  }
   EXPECT_LE((lavapipe ? p : plain).p999, 0.25);
 }
 

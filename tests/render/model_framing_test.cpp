@@ -6,9 +6,9 @@
 #include <cmath>
 #include <filesystem>
 
-#include "engine/error.h"
+#include "engine/core/error.h"
 #include "samples/tools/host/camera_fit.h"
-#include "engine/hair/hair_file.h"
+#include "engine/core/hair/hair_file.h"
 #include "samples/tools/host/model_guess.h"
 #include "samples/tools/render_job.h"
 #include "tests/support/vk_fixture.h"

@@ -11,13 +11,13 @@
 #include <memory>
 #include <random>
 
-#include "compute/bounds_pass.h"
-#include "engine/error.h"
-#include "engine/hair/default_head.h"
-#include "engine/frame_recorder.h"
+#include "compute/shadows/bounds_pass.h"
+#include "engine/core/error.h"
+#include "engine/core/hair/default_head.h"
+#include "compute/renderer/frame_recorder.h"
 #include "samples/tools/hair_system.h"
 #include "samples/tools/opacity_capture.h"
-#include "engine/render/opacity_pass.h"
+#include "compute/shadows/opacity_pass.h"
 #include "engine/vk/submit.h"
 #include "engine/vk/transfer.h"
 #include "tests/render/opacity_reference.h"

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "compute/bounds_pass.h"
+#include "compute/shadows/bounds_pass.h"
 
 namespace hp::test {
 namespace {

@@ -10,7 +10,7 @@
 #include <cmath>
 
 #include "samples/tools/simulation_driver.h"
-#include "engine/hair/default_head.h"
+#include "engine/core/hair/default_head.h"
 #include "samples/tools/offscreen_renderer.h"
 #include "samples/tools/render_job.h"
 #include "engine/vk/submit.h"

@@ -10,7 +10,7 @@
 #include <memory>
 #include <string>
 
-#include "engine/error.h"
+#include "engine/core/error.h"
 #include "engine/vk/transfer.h"
 #include "shaders/shared/raster.h"
 #include "tests/render/raster_rig.h"

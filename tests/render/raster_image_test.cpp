@@ -6,10 +6,10 @@
 #include <cmath>
 #include <iostream>
 
-#include "compute/interpolate_pass.h"
+#include "compute/strands/interpolate_pass.h"
 #include "samples/tools/strand_dump.h"
-#include "compute/tessellate_pass.h"
-#include "engine/hair/default_head.h"
+#include "compute/strands/tessellate_pass.h"
+#include "engine/core/hair/default_head.h"
 #include "samples/tools/render_job.h"
 #include "engine/vk/submit.h"
 #include "tests/render/raster_rig.h"

@@ -5,10 +5,10 @@
 #include <memory>
 #include <vector>
 
-#include "compute/strand_raster_pass.h"
-#include "engine/render/frame_block.h"
-#include "engine/render/marschner_textures.h"
-#include "engine/render/shadow_maps.h"
+#include "compute/raster/strand_raster_pass.h"
+#include "compute/raster/frame_block.h"
+#include "compute/raster/marschner_textures.h"
+#include "compute/shadows/shadow_maps.h"
 
 namespace hp::test {
 struct RasterRig {

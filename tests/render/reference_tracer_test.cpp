@@ -9,7 +9,7 @@
 
 #include <cmath>
 
-#include "engine/shading/fibre_model.h"
+#include "engine/core/shading/fibre_model.h"
 #include "samples/tools/reference/path_tracer.h"
 
 using namespace hp;

@@ -12,11 +12,11 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "engine/error.h"
-#include "engine/hair/default_head.h"
+#include "engine/core/error.h"
+#include "engine/core/hair/default_head.h"
 #include "samples/tools/offscreen_renderer.h"
-#include "engine/renderer.h"
-#include "engine/shading/material_color.h"
+#include "compute/renderer/renderer.h"
+#include "engine/core/shading/material_color.h"
 #include "engine/vk/check.h"
 #include "engine/vk/submit.h"
 #include "engine/vk/transfer.h"
@@ -133,7 +133,7 @@ TEST_F(VulkanTest, TwoInstancesWithDifferentAssetsAndMaterialsShadowEachOther) {
   // The far head casts nothing on the near one (the light comes from the near side): the near head is
   // no darker than when it casts alone. (It is brighter, measured 1.16x: one framing over both heads
   // spreads the 16 slices over twice the depth, so the 1-slice lookup bias skips more self-shadowing;
-  // engine/render/README.md "Several instances".)
+  // compute/shadows/README.md "Several instances".)
   const double nearBoth = columnsLuminance(shadowedByNear, kRendererWidth * 3 / 4, kRendererWidth);
   const double nearAlone = columnsLuminance(nearCasting, kRendererWidth * 3 / 4, kRendererWidth);
   EXPECT_GT(nearAlone, 0.0);

@@ -7,7 +7,7 @@
 
 #include <glm/glm.hpp>
 
-#include "engine/shading/fibre_model.h"
+#include "engine/core/shading/fibre_model.h"
 
 namespace hp::test {
 struct AccuracyStats {

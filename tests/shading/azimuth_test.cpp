@@ -4,8 +4,8 @@
 #include <cmath>
 #include <numbers>
 
-#include "engine/shading/azimuth.h"
-#include "engine/shading/math_constants.h"
+#include "engine/core/shading/azimuth.h"
+#include "engine/core/shading/math_constants.h"
 
 using namespace hp::shading;
 using hp::shading::kPi;  // one pi for every shading file (unity builds)

@@ -3,7 +3,7 @@
 
 #include <cmath>
 
-#include "engine/shading/fresnel.h"
+#include "engine/core/shading/fresnel.h"
 
 using namespace hp::shading;
 

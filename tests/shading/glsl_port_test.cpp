@@ -8,7 +8,7 @@
 #include <cmath>
 #include <random>
 
-#include "engine/shading/marschner.h"
+#include "engine/core/shading/marschner.h"
 #include "tests/shading/random_directions.h"
 
 namespace glsl_port {

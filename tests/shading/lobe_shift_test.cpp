@@ -6,7 +6,7 @@
 
 #include <cmath>
 
-#include "engine/shading/marschner_terms.h"
+#include "engine/core/shading/marschner_terms.h"
 
 using namespace hp;
 

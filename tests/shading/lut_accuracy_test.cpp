@@ -5,8 +5,8 @@
 #include <iostream>
 #include <vector>
 
-#include "engine/shading/lut.h"
-#include "engine/shading/lut_sampler.h"
+#include "engine/core/shading/lut.h"
+#include "engine/core/shading/lut_sampler.h"
 #include "tests/shading/accuracy.h"
 
 using namespace hp;

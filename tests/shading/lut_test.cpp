@@ -6,13 +6,12 @@
 
 #include <nlohmann/json.hpp>
 
-#include "engine/error.h"
+#include "engine/core/error.h"
 #include "samples/tools/host/lut_export.h"
-#include "engine/shading/half_float.h"
-#include "engine/shading/lut.h"
-#include "engine/shading/lut_param.h"
-#include "engine/shading/lut_sampler.h"
-#include "engine/shading/marschner_terms.h"
+#include "engine/core/shading/half_float.h"
+#include "engine/core/shading/lut.h"
+#include "engine/core/shading/lut_sampler.h"
+#include "engine/core/shading/marschner_terms.h"
 #include "shaders/shared/marschner.h"
 
 using namespace hp;

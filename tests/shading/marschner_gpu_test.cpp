@@ -3,8 +3,8 @@
 
 #include <string>
 
-#include "engine/error.h"
-#include "engine/shading/marschner_gpu.h"
+#include "engine/core/error.h"
+#include "engine/core/shading/marschner_gpu.h"
 
 using namespace hp;
 

@@ -5,10 +5,10 @@
 #include <numbers>
 #include <random>
 
-#include "engine/shading/fresnel.h"
-#include "engine/shading/marschner.h"
-#include "engine/shading/marschner_terms.h"
-#include "engine/shading/math_constants.h"
+#include "engine/core/shading/fresnel.h"
+#include "engine/core/shading/marschner.h"
+#include "engine/core/shading/marschner_terms.h"
+#include "engine/core/shading/math_constants.h"
 #include "tests/shading/random_directions.h"
 
 using namespace hp;

@@ -5,9 +5,9 @@
 #include <limits>
 #include <string>
 
-#include "engine/error.h"
-#include "engine/shading/material.h"
-#include "engine/shading/material_color.h"
+#include "engine/core/error.h"
+#include "engine/core/shading/material.h"
+#include "engine/core/shading/material_color.h"
 
 using hp::HairMaterial;
 

@@ -1,4 +1,4 @@
-// The multiple-scattering tables of the physical fibre model (engine/shading/multiple_scattering.h): the
+// The multiple-scattering tables of the physical fibre model (engine/core/shading/multiple_scattering.h): the
 // azimuthal means add up to the white furnace (M integrates to 1), the forward albedo agrees with a
 // brute-force 2D quadrature of the exact S over the far half of the azimuths and never exceeds the
 // furnace, and absorption orders it red > green > blue.
@@ -9,15 +9,15 @@
 #include <cstdio>
 #include <random>
 
-#include "engine/error.h"
-#include "engine/shading/furnace.h"
-#include "engine/shading/lut.h"
-#include "engine/shading/lut_sampler.h"
-#include "engine/shading/material_color.h"
-#include "engine/shading/math_constants.h"
-#include "engine/shading/multiple_scattering.h"
-#include "engine/shading/physical.h"
-#include "engine/shading/quadrature.h"
+#include "engine/core/error.h"
+#include "engine/core/shading/furnace.h"
+#include "engine/core/shading/lut.h"
+#include "engine/core/shading/lut_sampler.h"
+#include "engine/core/shading/material_color.h"
+#include "engine/core/shading/math_constants.h"
+#include "engine/core/shading/multiple_scattering.h"
+#include "engine/core/shading/physical.h"
+#include "engine/core/shading/quadrature.h"
 #include "shaders/shared/marschner.h"
 
 using namespace hp;

@@ -5,10 +5,10 @@
 #include <cmath>
 #include <iostream>
 
-#include "engine/shading/furnace.h"
-#include "engine/shading/physical.h"
-#include "engine/shading/quadrature.h"
-#include "engine/shading/math_constants.h"
+#include "engine/core/shading/furnace.h"
+#include "engine/core/shading/physical.h"
+#include "engine/core/shading/quadrature.h"
+#include "engine/core/shading/math_constants.h"
 
 using namespace hp;
 

@@ -1,10 +1,14 @@
 #!/usr/bin/env bash
-# Fails if a layer includes a layer above it. Bottom to top: engine/{hair,shading} (no Vulkan),
-# engine/vk, compute/, engine/render/, the facade (engine/*.h: Renderer, HairInstance), the public API's
-# implementation (engine/api/), samples/tools/, samples/cli/, samples/viewer/. The public headers
-# (engine/include/hairpipe/) include only each other (and Vulkan's core header): the value types they
-# define once are used by the Vulkan layers too, never by the Vulkan-free core. Embree only in
-# samples/tools/reference/.
+# Fails if a layer includes a layer above it. The folders are the layers, bottom to top:
+#   engine/include/hairpipe/  the public headers: include only each other (and Vulkan's core header)
+#   engine/core/              the core without Vulkan (hair/: assets, formats, geometry; shading/: fibre math)
+#   engine/vk/                the thin Vulkan layer
+#   compute/strands/ < compute/shadows/ < compute/head/ < compute/raster/   the passes, in that order
+#   compute/renderer/         the renderer facade (Renderer, HairInstance, the frame recorder)
+#   compute/api/              the public API's implementation
+#   samples/tools/ < samples/cli/ < samples/viewer/   the tools outside the library
+# So no top-level folder includes one above it: shaders/shared < engine/ < compute/ < samples/.
+# Embree only in samples/tools/reference/.
 # Usage: check_layers.sh SOURCE_DIR
 set -euo pipefail
 cd "$1"
@@ -19,14 +23,16 @@ check() {  # check DIRS... -- PATTERN: no file under DIRS includes a header matc
     status=1
   fi
 }
-facade='engine/(hair_instance|renderer|renderer_settings|frame_recorder|compute_raster)\.h'
-check engine/hair engine/shading -- "engine/vk/|engine/render/|compute/|samples/|engine/api/|hairpipe/|$facade"
-check engine/vk -- "engine/render/|compute/|samples/|engine/api/|$facade"
-check compute -- "engine/render/|samples/|engine/api/|$facade"
-check engine/render -- "samples/|engine/api/|$facade"
-check engine/*.h engine/*.cpp -- 'samples/|engine/api/'
-check engine/api -- 'samples/'
 check engine/include -- 'engine/|compute/|shaders/|samples/|hairpipe_volk'
+check engine/core -- 'engine/vk/|compute/|samples/|hairpipe/|hairpipe_volk'
+check engine -- 'compute/|samples/'
+check shaders -- 'engine/|compute/|samples/'
+check compute/strands -- 'compute/(shadows|head|raster|renderer|api)/|samples/'
+check compute/shadows -- 'compute/(head|raster|renderer|api)/|samples/'
+check compute/head -- 'compute/(raster|renderer|api)/|samples/'
+check compute/raster -- 'compute/(renderer|api)/|samples/'
+check compute/renderer -- 'compute/api/|samples/'
+check compute/api -- 'samples/'
 check samples/tools -- 'samples/(cli|embed|viewer)'
 check samples/cli -- 'samples/viewer'
 # Embree is the path-traced reference's alone (samples/tools/reference/, inside the tools target).

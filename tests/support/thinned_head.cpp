@@ -1,7 +1,7 @@
 #include "tests/support/thinned_head.h"
 
-#include "engine/hair/default_head.h"
-#include "engine/hair/head_sdf.h"
+#include "engine/core/hair/default_head.h"
+#include "engine/core/hair/head_sdf.h"
 
 namespace hp::test {
 HairAsset thinnedDefaultHead(std::uint32_t stride) {

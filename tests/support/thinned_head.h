@@ -4,7 +4,7 @@
 // sphere colliders are exercised too.
 #include <cstdint>
 
-#include "engine/hair/hair_asset.h"
+#include "engine/core/hair/hair_asset.h"
 
 namespace hp::test {
 HairAsset thinnedDefaultHead(std::uint32_t stride);

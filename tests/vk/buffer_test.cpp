@@ -2,7 +2,7 @@
 
 #include <random>
 
-#include "engine/error.h"
+#include "engine/core/error.h"
 #include "engine/vk/transfer.h"
 #include "tests/support/vk_fixture.h"
 

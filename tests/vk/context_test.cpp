@@ -1,10 +1,9 @@
 #include <gtest/gtest.h>
 
-#include "engine/error.h"
+#include "engine/core/error.h"
 #include "engine/vk/buffer.h"
 #include "engine/vk/check.h"
 #include "engine/vk/context.h"
-#include "engine/vk/device_lost.h"
 #include "engine/vk/device_probe.h"
 #include "tests/support/vk_fixture.h"
 

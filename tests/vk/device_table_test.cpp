@@ -6,8 +6,8 @@
 
 #include <glm/glm.hpp>
 
-#include "engine/hair/default_head.h"
-#include "engine/renderer.h"
+#include "engine/core/hair/default_head.h"
+#include "compute/renderer/renderer.h"
 #include "engine/vk/check.h"
 #include "engine/vk/submit.h"
 #include "tests/support/vk_fixture.h"

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "engine/error.h"
+#include "engine/core/error.h"
 
 namespace hp {
 void fitCameraToPoints(CameraSpec& camera, std::span<const glm::vec3> points) {

@@ -6,7 +6,7 @@
 
 #include <span>
 
-#include "engine/hair/scene.h"
+#include "engine/core/hair/scene.h"
 
 namespace hp {
 void fitCameraToPoints(CameraSpec& camera, std::span<const glm::vec3> points);

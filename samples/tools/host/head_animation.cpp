@@ -3,7 +3,7 @@
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "engine/error.h"
+#include "engine/core/error.h"
 
 namespace hp {
 namespace {

@@ -3,8 +3,8 @@
 #include <cmath>
 #include <limits>
 
-#include "engine/error.h"
-#include "engine/hair/input_file.h"
+#include "engine/core/error.h"
+#include "engine/core/hair/input_file.h"
 
 namespace hp {
 std::string jsonTypeName(const nlohmann::json& value) {

@@ -13,7 +13,7 @@
 
 #include <nlohmann/json_fwd.hpp>
 
-#include "engine/shading/lut.h"
+#include "engine/core/shading/lut.h"
 
 namespace hp {
 enum class LutChannels { Rgb, Alpha };

@@ -3,11 +3,11 @@
 #include <cmath>
 #include <sstream>
 
-#include "engine/error.h"
-#include "engine/hair/fit_sphere.h"
-#include "engine/hair/hair_file.h"
-#include "engine/hair/obj_import.h"
-#include "engine/hair/tfx_file.h"
+#include "engine/core/error.h"
+#include "engine/core/hair/fit_sphere.h"
+#include "engine/core/hair/hair_file.h"
+#include "engine/core/hair/obj_import.h"
+#include "engine/core/hair/tfx_file.h"
 
 namespace hp {
 float unitScale(const std::string& units) {

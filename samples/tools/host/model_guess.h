@@ -13,7 +13,7 @@
 #include <span>
 #include <string>
 
-#include "engine/hair/model_transform.h"
+#include "engine/core/hair/model_transform.h"
 
 namespace hp {
 struct ModelGuess {

@@ -1,11 +1,11 @@
 // Scene file parsing: one function per section, each reading its keys and checking its ranges.
 #include <cmath>
 
-#include "engine/error.h"
-#include "engine/hair/default_head.h"
-#include "engine/hair/input_file.h"
+#include "engine/core/error.h"
+#include "engine/core/hair/default_head.h"
+#include "engine/core/hair/input_file.h"
 #include "samples/tools/host/json_reader.h"
-#include "engine/hair/scene.h"
+#include "engine/core/hair/scene.h"
 #include "samples/tools/host/scene_file.h"
 
 namespace hp {

@@ -7,7 +7,7 @@
 #include <span>
 #include <vector>
 
-#include "engine/hair/collider.h"
+#include "engine/core/hair/collider.h"
 
 namespace hp {
 struct SimStats {

@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "engine/error.h"
-#include "engine/hair/rng.h"
+#include "engine/core/error.h"
+#include "engine/core/hair/rng.h"
 
 namespace hp {
 namespace {

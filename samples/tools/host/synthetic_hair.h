@@ -6,7 +6,7 @@
 
 #include <cstdint>
 
-#include "engine/hair/hair_file.h"
+#include "engine/core/hair/hair_file.h"
 
 namespace hp {
 struct SyntheticHairOptions {

@@ -1,6 +1,6 @@
 #include "samples/tools/reference/fibre.h"
 
-#include "engine/error.h"
+#include "engine/core/error.h"
 
 namespace hp::reference {
 const char* fibreModelName(FibreModel model) { return model == FibreModel::Physical ? "physical" : "marschner"; }

@@ -1,6 +1,6 @@
 #pragma once
 // Contract: the fibre scattering function S the path-traced reference evaluates, in double precision,
-// in ONE place: which exact model a real-time LUT mode stands for (engine/shading/fibre_model.h: the
+// in ONE place: which exact model a real-time LUT mode stands for (engine/core/shading/fibre_model.h: the
 // energy-conserving `physical` model, or the paper's `marschner` behind float/paper/direct), its name
 // in frame exports, and S itself. The reference integrates L_o = int S(L, V, T) L_i cos(theta_i) d omega_i,
 // the shaders' convention (S cos(theta_i) E for the sun; theta_i: the light's angle to the normal plane).
@@ -8,7 +8,7 @@
 
 #include <string>
 
-#include "engine/shading/fibre_model.h"
+#include "engine/core/shading/fibre_model.h"
 
 namespace hp::reference {
 using hp::FibreModel;

@@ -11,7 +11,7 @@
 // theta angles are the Marschner ones: sin(theta) = dot(direction, T).
 #include <glm/glm.hpp>
 
-#include "engine/shading/material.h"
+#include "engine/core/shading/material.h"
 #include "samples/tools/reference/sampling.h"
 
 namespace hp::reference {

@@ -6,7 +6,7 @@
 
 namespace hp::reference {
 namespace {
-constexpr double kSpotInnerFraction = 0.8;  // engine/render/frame_block.cpp
+constexpr double kSpotInnerFraction = 0.8;  // compute/raster/frame_block.cpp
 
 double smoothstep(double e0, double e1, double x) {
   const double t = std::clamp((x - e0) / (e1 - e0), 0.0, 1.0);

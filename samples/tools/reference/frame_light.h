@@ -5,7 +5,7 @@
 // (range / max(d, range / 10))^2 when range > 0. `distance` bounds the shadow ray (infinite for the sun).
 #include <glm/glm.hpp>
 
-#include "engine/hair/scene.h"
+#include "engine/core/hair/scene.h"
 
 namespace hp::reference {
 struct LightArrival {

@@ -9,7 +9,7 @@
 #include <thread>
 #include <vector>
 
-#include "engine/error.h"
+#include "engine/core/error.h"
 #include "samples/tools/reference/fibre.h"
 #include "samples/tools/reference/fibre_sampling.h"
 #include "samples/tools/reference/frame_light.h"

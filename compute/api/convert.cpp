@@ -1,0 +1,180 @@
+#include "compute/api/convert.h"
+
+#include <cstring>
+
+#include "engine/core/hair/strand_topology.h"
+
+namespace hairpipe::convert {
+glm::vec3 vec(const Vec3& v) { return {v.x, v.y, v.z}; }
+glm::dvec3 dvec(const std::array<double, 3>& v) { return {v[0], v[1], v[2]}; }
+
+glm::mat4 mat(const Mat4& m) {
+  glm::mat4 out;
+  static_assert(sizeof(out) == sizeof(m.m));
+  std::memcpy(&out, m.m, sizeof(m.m));  // both column-major
+  return out;
+}
+
+Mat4 mat(const glm::mat4& m) {
+  Mat4 out;
+  std::memcpy(out.m, &m, sizeof(out.m));
+  return out;
+}
+
+hp::RasterMode raster(RasterMode mode) {
+  switch (mode) {
+    case RasterMode::Compute: return hp::RasterMode::Compute;
+    case RasterMode::Graphics: return hp::RasterMode::Graphics;
+    case RasterMode::Auto: break;
+  }
+  return hp::RasterMode::Auto;
+}
+
+RasterMode raster(hp::RasterMode mode) {
+  switch (mode) {
+    case hp::RasterMode::Compute: return RasterMode::Compute;
+    case hp::RasterMode::Graphics: return RasterMode::Graphics;
+    case hp::RasterMode::Auto: break;
+  }
+  return RasterMode::Auto;
+}
+
+hp::LutMode fibre(FibreModel model) {
+  switch (model) {
+    case FibreModel::Direct: return hp::LutMode::Direct;
+    case FibreModel::Paper: return hp::LutMode::Paper;
+    case FibreModel::Float: return hp::LutMode::Float;
+    case FibreModel::Physical: break;
+  }
+  return hp::LutMode::Physical;
+}
+
+hp::RendererSettings renderer(const RendererSettings& s) {
+  hp::RendererSettings r;
+  r.formats = s.formats;
+  r.opacity = s.opacity;
+  r.framesInFlight = s.framesInFlight;
+  r.maxViewsPerFrame = s.maxViewsPerFrame;
+  r.raster = raster(s.raster);
+  r.rasterSettings.tileBudget = s.tileBudget;
+  return r;
+}
+
+hp::HairMaterial material(const Material& m) {
+  hp::HairMaterial h;
+  h.eta = m.eta;
+  h.absorption = dvec(m.absorption);
+  h.alphaR = m.alphaR;
+  h.betaR = m.betaR;
+  h.kG = m.kG;
+  h.wc = m.wc;
+  h.dEta = m.dEta;
+  h.dhM = m.dhM;
+  h.betaN = m.betaN;
+  return h;
+}
+
+hp::render::LookSettings look(const LookSettings& l) {
+  hp::render::LookSettings h;
+  h.strandWidth = l.strandWidth;
+  h.tipWidthFraction = l.tipWidthFraction;
+  h.skinColor = vec(l.skinColor);
+  h.wrap = l.wrap;
+  h.ambient = l.ambient;
+  h.scattering = l.scattering;
+  h.skinBounce = l.skinBounce;
+  return h;
+}
+
+hp::SimulationParams simulation(const SimulationSettings& s) {
+  hp::SimulationParams p;
+  p.dt = s.dt;
+  p.substeps = s.substeps;
+  p.iterations = s.iterations;
+  p.gravity = dvec(s.gravity);
+  p.damping = s.damping;
+  p.pearlRadius = s.pearlRadius;
+  p.stiffness = s.stiffness;
+  p.stiffnessFalloff = s.stiffnessFalloff;
+  p.maxSpeed = s.maxSpeed;
+  p.windDirection = dvec(s.windDirection);
+  p.windStrength = s.windStrength;
+  p.windGust = s.windGust;
+  p.windGustFrequency = s.windGustFrequency;
+  return p;
+}
+
+hp::ScalpInput scalp(const ScalpInput& s) {
+  hp::ScalpInput h;
+  h.kind = s.kind == ScalpInput::Kind::RootFrames ? hp::ScalpInput::Kind::RootFrames
+           : s.kind == ScalpInput::Kind::Bones    ? hp::ScalpInput::Kind::Bones
+                                                  : hp::ScalpInput::Kind::Rigid;
+  h.rootFrames = s.rootFrames;
+  h.rootFramesBytes = s.rootFramesBytes;
+  h.boneCount = s.boneCount;
+  h.skin.reserve(s.skin.size());
+  for (const SkinWeights& w : s.skin)
+    h.skin.push_back({glm::uvec4(w.bones[0], w.bones[1], w.bones[2], w.bones[3]),
+                      glm::vec4(w.weights[0], w.weights[1], w.weights[2], w.weights[3])});
+  return h;
+}
+
+hp::InstanceSettings instance(const InstanceSettings& s) {
+  hp::InstanceSettings h;
+  h.simulation = simulation(s.simulation);
+  h.material = material(s.material);
+  h.lutMode = fibre(s.fibre);
+  h.strands.verticesPerStrand = s.verticesPerStrand;
+  h.strands.guidesOnly = s.guidesOnly;
+  h.look = look(s.look);
+  h.scalp = scalp(s.scalp);
+  return h;
+}
+
+hp::LightSpec light(const Light& l) {
+  hp::LightSpec h;
+  h.type = l.type == Light::Type::Spot ? hp::LightSpec::Type::Spot : hp::LightSpec::Type::Directional;
+  h.direction = vec(l.direction);
+  h.color = vec(l.color);
+  h.intensity = l.intensity;
+  h.position = vec(l.position);
+  h.coneDeg = l.coneDeg;
+  h.range = l.range;
+  return h;
+}
+
+hp::View view(const View& v) {
+  hp::View h;
+  h.camera.view = mat(v.view);
+  h.camera.proj = mat(v.projection);
+  h.camera.position = vec(v.eye);
+  h.camera.fovY = v.fovY;
+  h.extent = v.extent;
+  h.index = v.index;
+  h.lines = v.lines;
+  return h;
+}
+
+hp::HeadMotion motion(const HeadMotion& m) { return {mat(m.from), mat(m.to), m.time, m.teleport}; }
+
+std::vector<hp::SphereCollider> spheres(std::span<const SphereCollider> s) {
+  std::vector<hp::SphereCollider> out;
+  for (const SphereCollider& c : s) out.push_back({vec(c.center), c.radius});
+  return out;
+}
+
+std::vector<hp::CapsuleCollider> capsules(std::span<const CapsuleCollider> c) {
+  std::vector<hp::CapsuleCollider> out;
+  for (const CapsuleCollider& k : c) out.push_back({vec(k.a), vec(k.b), k.radius});
+  return out;
+}
+
+hp::DensityOptions density(const Density& d) {
+  hp::DensityOptions h;
+  h.mode = d.mode == Density::Mode::PerTriangle ? hp::DensityOptions::Mode::PerTriangle : hp::DensityOptions::Mode::Total;
+  h.strandsPerTriangle = d.strandsPerTriangle;
+  h.totalStrands = d.totalStrands;
+  h.seed = d.seed;
+  return h;
+}
+}  // namespace hairpipe::convert

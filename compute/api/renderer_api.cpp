@@ -1,0 +1,152 @@
+// hairpipe::Renderer and hairpipe::Instance over hp::Renderer and hp::HairInstance.
+#include "compute/api/access.h"
+#include "compute/api/convert.h"
+#include "engine/core/hair/strand_topology.h"
+
+namespace hairpipe {
+namespace {
+// The implementation's instances behind a span of public ones (null and foreign ones are refused by the
+// implementation, which names them).
+std::vector<hp::HairInstance*> implementations(std::span<Instance* const> instances) {
+  std::vector<hp::HairInstance*> out;
+  out.reserve(instances.size());
+  for (Instance* i : instances) {
+    const Instance::Impl* impl = i ? Access::impl(*i) : nullptr;
+    if (!impl) throw hp::Error("an instance is null or was moved from");
+    out.push_back(impl->instance.get());
+  }
+  return out;
+}
+
+hp::HairInstance& implementation(const Instance::Impl* impl) {
+  if (!impl) throw hp::Error("the instance was moved from");
+  return *impl->instance;
+}
+
+hp::Renderer& implementation(const std::shared_ptr<hp::Renderer>& renderer) {
+  if (!renderer) throw hp::Error("the Renderer was moved from");
+  return *renderer;
+}
+
+// Retires the instance through its Renderer, which keeps it until the frames in flight are done
+// (destroyInstance retires it before it rebuilds a raster target, which may fail).
+void retire(std::unique_ptr<Instance::Impl> impl) noexcept {
+  if (!impl) return;
+  try {
+    impl->renderer->destroyInstance(std::move(impl->instance));
+  } catch (...) {
+    // The raster target holding it could not be rebuilt: it was dropped (recordRaster asks for
+    // setRasterTarget); the instance itself is retired already.
+  }
+}
+}  // namespace
+
+Instance::Instance(std::unique_ptr<Impl> impl) noexcept : impl_(std::move(impl)) {}
+Instance::Instance(Instance&&) noexcept = default;
+Instance& Instance::operator=(Instance&& other) noexcept {
+  if (this != &other) {
+    retire(std::move(impl_));
+    impl_ = std::move(other.impl_);
+  }
+  return *this;
+}
+Instance::~Instance() { retire(std::move(impl_)); }
+
+Status Instance::setMotion(const HeadMotion& motion) noexcept {
+  return guardedStatus("hairpipe::Instance::setMotion", [&] { implementation(impl_.get()).setMotion(convert::motion(motion)); });
+}
+Status Instance::setHeadToWorld(const Mat4& headToWorld) noexcept {
+  return guardedStatus("hairpipe::Instance::setHeadToWorld",
+                       [&] { implementation(impl_.get()).setHeadToWorld(convert::mat(headToWorld)); });
+}
+Status Instance::setColliders(std::span<const SphereCollider> spheres, std::span<const CapsuleCollider> capsules) noexcept {
+  return guardedStatus("hairpipe::Instance::setColliders", [&] {
+    implementation(impl_.get()).setColliders(convert::spheres(spheres), convert::capsules(capsules));
+  });
+}
+Status Instance::setBones(std::span<const Mat4> bones) noexcept {
+  return guardedStatus("hairpipe::Instance::setBones", [&] {
+    std::vector<glm::mat4> m;
+    m.reserve(bones.size());
+    for (const Mat4& b : bones) m.push_back(convert::mat(b));
+    implementation(impl_.get()).setBones(m);
+  });
+}
+Status Instance::setMaterial(const Material& material, FibreModel fibre) noexcept {
+  return guardedStatus("hairpipe::Instance::setMaterial", [&] {
+    implementation(impl_.get()).setMaterial(convert::material(material), convert::fibre(fibre));
+  });
+}
+Status Instance::setLook(const LookSettings& look) noexcept {
+  return guardedStatus("hairpipe::Instance::setLook", [&] { implementation(impl_.get()).setLook(convert::look(look)); });
+}
+Status Instance::setSimulation(const SimulationSettings& simulation) noexcept {
+  return guardedStatus("hairpipe::Instance::setSimulation",
+                       [&] { implementation(impl_.get()).setSimulation(convert::simulation(simulation)); });
+}
+Status Instance::setDensity(const Density& density) noexcept {
+  return guardedStatus("hairpipe::Instance::setDensity", [&] {
+    hp::HairInstance& instance = implementation(impl_.get());
+    const hp::HairAsset& asset = Access::asset(impl_->asset);
+    instance.setStrands(hp::buildInterpolationTopology(asset.guides.roots(), asset.topology.triangles,
+                                                       convert::density(density)),
+                        instance.settings().strands);
+  });
+}
+std::uint32_t Instance::strandCount() const noexcept {
+  return impl_ ? impl_->instance->strands().layout().strandCount : 0;  // 0: moved from
+}
+
+Renderer::Renderer(std::shared_ptr<hp::Renderer> impl) noexcept : impl_(std::move(impl)) {}
+Renderer::Renderer(Renderer&&) noexcept = default;
+Renderer& Renderer::operator=(Renderer&&) noexcept = default;
+Renderer::~Renderer() = default;
+
+Result<Renderer> Renderer::create(const Context& context, const RendererSettings& settings) noexcept {
+  return guarded<Renderer>("hairpipe::Renderer::create", [&] {
+    return Access::makeRenderer(std::make_shared<hp::Renderer>(Access::context(context), convert::renderer(settings)));
+  });
+}
+
+Result<Instance> Renderer::createInstance(const Asset& asset, const InstanceSettings& settings,
+                                          const Mat4& initialHeadToWorld) noexcept {
+  return guarded<Instance>("hairpipe::Renderer::createInstance", [&] {
+    auto impl = std::make_unique<Instance::Impl>(Instance::Impl{impl_, asset, nullptr});
+    impl->instance = implementation(impl_).createInstance(Access::asset(asset), convert::instance(settings),
+                                           convert::mat(initialHeadToWorld));
+    return Access::makeInstance(std::move(impl));
+  });
+}
+
+Status Renderer::recordUpdate(VkCommandBuffer cmd, std::uint64_t frame, std::span<Instance* const> instances) noexcept {
+  return guardedStatus("hairpipe::Renderer::recordUpdate",
+                       [&] { implementation(impl_).recordUpdate(cmd, frame, implementations(instances)); });
+}
+Status Renderer::recordShadows(VkCommandBuffer cmd, std::uint64_t frame, const Light& light,
+                               std::span<Instance* const> instances) noexcept {
+  return guardedStatus("hairpipe::Renderer::recordShadows",
+                       [&] { implementation(impl_).recordShadows(cmd, frame, convert::light(light), implementations(instances)); });
+}
+Status Renderer::recordDraw(VkCommandBuffer cmd, std::uint64_t frame, const View& view,
+                            std::span<Instance* const> instances) noexcept {
+  return guardedStatus("hairpipe::Renderer::recordDraw",
+                       [&] { implementation(impl_).recordDraw(cmd, frame, convert::view(view), implementations(instances)); });
+}
+Status Renderer::setRasterTarget(VkExtent2D extent, VkImageView depth, std::span<Instance* const> instances) noexcept {
+  return guardedStatus("hairpipe::Renderer::setRasterTarget",
+                       [&] { implementation(impl_).setRasterTarget(extent, depth, implementations(instances)); });
+}
+Status Renderer::recordRaster(VkCommandBuffer cmd, std::uint64_t frame, const View& view) noexcept {
+  return guardedStatus("hairpipe::Renderer::recordRaster", [&] { implementation(impl_).recordRaster(cmd, frame, convert::view(view)); });
+}
+Status Renderer::recordComposite(VkCommandBuffer cmd, VkExtent2D extent) noexcept {
+  return guardedStatus("hairpipe::Renderer::recordComposite", [&] { implementation(impl_).recordComposite(cmd, extent); });
+}
+Status Renderer::setOpacityTuning(const OpacitySettings& opacity) noexcept {
+  return guardedStatus("hairpipe::Renderer::setOpacityTuning", [&] { implementation(impl_).setOpacityTuning(opacity); });
+}
+RasterMode Renderer::raster() const noexcept {
+  return impl_ ? convert::raster(impl_->raster()) : RasterMode::Auto;  // Auto: a moved-from Renderer
+}
+
+}  // namespace hairpipe

@@ -1,0 +1,40 @@
+// The helpers of hairpipe/settings.h and hairpipe/renderer.h that compute values: absorptionFromColor, makeView.
+#include <cmath>
+#include <string>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "compute/api/access.h"
+#include "compute/api/convert.h"
+#include "engine/core/shading/material_color.h"
+
+namespace hairpipe {
+Result<std::array<double, 3>> absorptionFromColor(float r, float g, float b) noexcept {
+  return guarded<std::array<double, 3>>("hairpipe::absorptionFromColor", [&] {
+    const glm::dvec3 a = hp::absorptionFromColor({r, g, b});
+    return std::array<double, 3>{a.x, a.y, a.z};
+  });
+}
+
+Result<View> makeView(const Camera& c, VkExtent2D extent, std::uint32_t index) noexcept {
+  return guarded<View>("hairpipe::makeView", [&]() -> View {
+    const glm::vec3 eye = convert::vec(c.eye), target = convert::vec(c.target), up = convert::vec(c.up);
+    const glm::vec3 forward = target - eye;
+    const float side = glm::length(glm::cross(forward, up));
+    if (!std::isfinite(side) || glm::length(forward) <= 0.0f || side <= 1e-6f * glm::length(forward) * glm::length(up))
+      throw hp::Error("the eye is at the target, or up is parallel to the view direction (or not finite)");
+    if (!(c.fovY > 0.0f && c.fovY < 3.14159f)) throw hp::Error("fovY must be in (0, pi) radians, got " + std::to_string(c.fovY));
+    if (!(c.nearZ > 0.0f && c.farZ > c.nearZ && std::isfinite(c.farZ)))
+      throw hp::Error("the clip planes need 0 < nearZ < farZ, got " + std::to_string(c.nearZ) + ", " + std::to_string(c.farZ));
+    if (extent.width == 0 || extent.height == 0) throw hp::Error("the extent must not be empty");
+    View v;
+    v.view = convert::mat(glm::lookAtRH(eye, target, up));
+    v.projection = convert::mat(glm::perspectiveRH_ZO(c.fovY, float(extent.width) / float(extent.height), c.nearZ, c.farZ));
+    v.eye = c.eye;
+    v.fovY = c.fovY;
+    v.extent = extent;
+    v.index = index;
+    return v;
+  });
+}
+}  // namespace hairpipe

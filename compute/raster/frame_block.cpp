@@ -1,0 +1,56 @@
+#include "compute/raster/frame_block.h"
+
+#include <cmath>
+
+#include "engine/core/error.h"
+
+namespace hp::render {
+namespace {
+constexpr float kSpotInnerFraction = 0.8f;  // full radiance inside 80% of the half-angle (shaders/light.glsl)
+}  // namespace
+
+const char* scatteringName(Scattering s) { return s == Scattering::Dual ? "dual" : "single"; }
+
+Scattering parseScattering(const std::string& text) {
+  if (text == "single") return Scattering::Single;
+  if (text == "dual") return Scattering::Dual;
+  throw Error("scattering must be single or dual, got '" + text.substr(0, 40) + "'");
+}
+
+void LookSettings::validate() const {
+  auto positiveFinite = [](float v) { return std::isfinite(v) && v > 0.0f; };
+  if (!positiveFinite(strandWidth) || strandWidth > 0.01f) throw Error("strand width must be in (0, 0.01] scene units");
+  if (!(tipWidthFraction >= 0.0f && tipWidthFraction <= 1.0f)) throw Error("tip width fraction must be in [0, 1]");
+  if (!(wrap >= 0.0f && wrap <= 1.0f)) throw Error("wrap must be in [0, 1]");
+  if (!(ambient >= 0.0f && ambient <= 10.0f)) throw Error("ambient must be in [0, 10]");
+  if (scattering != Scattering::Single && scattering != Scattering::Dual) throw Error("scattering must be Single or Dual");
+  for (int i = 0; i < 3; ++i)
+    if (!(skinColor[i] >= 0.0f && skinColor[i] <= 1.0f)) throw Error("skin colour components must be in [0, 1]");
+}
+
+gpu::RenderFrame makeRenderFrame(const CameraMatrices& camera, VkExtent2D extent, const LightSpec& light,
+                                 const HairMaterial& material, const LookSettings& look,
+                                 std::uint32_t verticesPerStrand, const OpacitySettings& opacity) {
+  gpu::RenderFrame f{};
+  f.view = camera.view;
+  f.proj = camera.proj;
+  const float pixelAtUnitDepth = 2.0f * std::tan(0.5f * camera.fovY) / float(extent.height);
+  f.cameraPosition = glm::vec4(camera.position, pixelAtUnitDepth);
+  f.lightDirection = glm::vec4(glm::normalize(light.direction), 0.0f);
+  f.lightRadiance = glm::vec4(light.color * light.intensity, 0.0f);
+  if (light.type == LightSpec::Type::Spot) {
+    const float cone = glm::radians(light.coneDeg);
+    f.lightPosition = glm::vec4(light.position, 1.0f);
+    f.lightSpot = glm::vec4(std::cos(cone), std::cos(kSpotInnerFraction * cone), light.range, 0.0f);
+  }
+  // The colour of one straight pass through the fibre (absorptionFromColor's inverse) as ambient albedo.
+  const glm::dvec3 albedo = glm::exp(-2.0 * material.absorption);
+  f.hairColor = glm::vec4(glm::vec3(albedo), look.ambient);
+  f.skinColor = glm::vec4(look.skinColor, look.wrap);
+  f.strand = glm::vec4(look.strandWidth, look.tipWidthFraction, opacity.k, lookupBias(opacity));
+  f.options = glm::uvec4(verticesPerStrand, opacity.enabled ? 1u : 0u,
+                         look.scattering == Scattering::Dual ? gpu::RENDER_SCATTERING_DUAL : gpu::RENDER_SCATTERING_SINGLE,
+                         opacity.deep ? 1u : 0u);
+  return f;
+}
+}  // namespace hp::render

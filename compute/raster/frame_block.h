@@ -1,0 +1,41 @@
+#pragma once
+// Contract: fills the per-frame block the draw passes read (gpu::RenderFrame) from a camera, the light,
+// the hair material, the look settings and the opacity shadow settings (on/off, k, bias). Pure host code.
+#include "engine/core/hair/scene.h"
+#include "compute/raster/camera.h"
+#include "compute/shadows/opacity_settings.h"
+#include "hairpipe/settings.h"
+#include "hairpipe_volk.h"
+
+#include <string>
+
+#include "shaders/shared/render.h"
+
+namespace hp::render {
+using Scattering = hairpipe::Scattering;  // defined once, in the public API
+Scattering parseScattering(const std::string& text);  // "single", "dual"; else hp::Error
+const char* scatteringName(Scattering s);              // the names parseScattering reads
+
+struct LookSettings {
+  // Ribbon width at the root (scene units). Real hair is 50-120 um, but a render strand stands for a
+  // few hundred real ones (20k of them replace ~100k hairs), so it is drawn as a thin clump.
+  float strandWidth = 0.0005f;
+  float tipWidthFraction = 0.35f;    // width at the tip relative to the root
+  glm::vec3 skinColor{0.62f, 0.45f, 0.36f};
+  float wrap = 0.5f;                 // the paper's wrap term for the head, [0, 1]
+  float ambient = 0.06f;             // constant fill light, relative to the hair/skin albedo
+  // Dual (default): add the light the hair in front of a fibre scattered forward onto it and the light the
+  // hair around it scattered back (physical fibre model only; the others draw single scattering either
+  // way). docs/SHADING.md "Multiple scattering", "Local back-scattering".
+  Scattering scattering = Scattering::Dual;
+  // Add the sunlight the skin reflects onto the hair (one bounce from the head bounce map, both rasters;
+  // needs the shadows on and a head, as the map is drawn with the head's depth shadow map and framed by
+  // it). docs/SHADING.md "Skin bounce".
+  bool skinBounce = true;
+  void validate() const;             // throws hp::Error naming the field
+};
+
+gpu::RenderFrame makeRenderFrame(const CameraMatrices& camera, VkExtent2D extent, const LightSpec& light,
+                                 const HairMaterial& material, const LookSettings& look,
+                                 std::uint32_t verticesPerStrand, const OpacitySettings& opacity);
+}  // namespace hp::render

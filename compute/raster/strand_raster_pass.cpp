@@ -1,0 +1,364 @@
+#include "compute/raster/strand_raster_pass.h"
+
+#include <algorithm>
+#include <bit>
+#include <cstring>
+#include <utility>
+#include <string>
+
+#include "engine/core/error.h"
+#include "engine/core/shading/half_float.h"
+#include "engine/vk/barriers.h"
+#include "engine/vk/context.h"
+#include "engine/vk/transfer.h"
+#include "shaders/shared/raster.h"
+#include "shaders/shared/render.h"
+
+namespace hp::compute {
+namespace {
+constexpr VkShaderStageFlags kCompute = VK_SHADER_STAGE_COMPUTE_BIT;
+constexpr VkDescriptorType kStorage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+constexpr VkDescriptorType kSampled = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+// The raster's own bindings follow the shading bindings of shaders/shared/render.h in one set.
+static_assert(gpu::RASTER_BINDING_SCREEN > gpu::RENDER_BINDING_HEAD_SHADOW, "raster bindings overlap render.h's");
+static_assert(gpu::RASTER_BINDING_SHADE_ARGS < gpu::RENDER_BINDING_BOUNCE_FLUX, "raster bindings overlap render.h's");
+// No uniform buffers and no push constants: lavapipe would recompile each step per dispatch
+// (docs/DESIGN.md, driver notes); the frame block, the Marschner block and the per-chunk parameters are
+// read-only storage buffers.
+const vk::Binding kBindings[] = {
+    {gpu::RENDER_BINDING_FRAME, kStorage, kCompute},
+    {gpu::RENDER_BINDING_MARSCHNER, kStorage, kCompute},
+    {gpu::RENDER_BINDING_LUT_M, kSampled, kCompute},
+    {gpu::RENDER_BINDING_LUT_N0, kSampled, kCompute},
+    {gpu::RENDER_BINDING_LUT_N1, kSampled, kCompute},
+    {gpu::RENDER_BINDING_OPACITY, kSampled, kCompute},
+    {gpu::RENDER_BINDING_HEAD_SHADOW, kSampled, kCompute},
+    {gpu::RENDER_BINDING_LIGHT, kStorage, kCompute},
+    {gpu::RENDER_BINDING_POSITIONS, kStorage, kCompute},
+    {gpu::RENDER_BINDING_TANGENTS, kStorage, kCompute},
+    {gpu::RENDER_BINDING_ATTRIBUTES, kStorage, kCompute},
+    {gpu::RASTER_BINDING_SCREEN, kStorage, kCompute},
+    {gpu::RASTER_BINDING_COLORS, kStorage, kCompute},
+    {gpu::RASTER_BINDING_STATE, kStorage, kCompute},
+    {gpu::RASTER_BINDING_COUNTS, kStorage, kCompute},
+    {gpu::RASTER_BINDING_KEYS, kStorage, kCompute},
+    {gpu::RASTER_BINDING_TILES, kStorage, kCompute},
+    {gpu::RASTER_BINDING_BLOCKS, kStorage, kCompute},
+    {gpu::RASTER_BINDING_LIST, kStorage, kCompute},
+    {gpu::RASTER_BINDING_DEPTH, kSampled, kCompute},
+    {gpu::RASTER_BINDING_OUTPUT, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, kCompute},
+    {gpu::RASTER_BINDING_OUTPUT_NEAR, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, kCompute},
+    {gpu::RASTER_BINDING_NEAR_MASK, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, kCompute},
+    {gpu::RASTER_BINDING_PARAMS, kStorage, kCompute},
+    {gpu::RASTER_BINDING_TILE_DEPTH, kStorage, kCompute},
+    {gpu::RASTER_BINDING_SHADE_FLAGS, kStorage, kCompute},
+    {gpu::RASTER_BINDING_SHADE_LIST, kStorage, kCompute},
+    {gpu::RASTER_BINDING_SHADE_ARGS, kStorage, kCompute},
+    {gpu::RENDER_BINDING_BOUNCE_FLUX, kSampled, kCompute},
+    {gpu::RENDER_BINDING_BOUNCE_POSITION, kSampled, kCompute},
+};
+constexpr VkBufferUsageFlags kStorageUsage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
+constexpr VkBufferUsageFlags kArmedUsage =
+    VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT;
+
+std::uint32_t divUp(std::uint32_t a, std::uint32_t b) { return (a + b - 1) / b; }
+
+gpu::RasterState armedState() {
+  gpu::RasterState s{};
+  s.depthBits = glm::uvec4(0xFFFFFFFFu, 0u, 0u, 0u);  // min, max of non-negative float bits
+  return s;
+}
+
+vk::Buffer deviceBuffer(const vk::Context& ctx, VkDeviceSize bytes, VkBufferUsageFlags usage, const std::string& name,
+                        VkDeviceSize limit) {
+  if (bytes > limit)
+    throw Error("compute raster: the " + name + " buffer needs " + std::to_string(bytes) +
+                " bytes, more than the device's maxStorageBufferRange (" + std::to_string(limit) +
+                "); use fewer strands or --raster graphics");
+  return vk::Buffer(ctx, std::max<VkDeviceSize>(bytes, 16), usage, vk::MemoryKind::DeviceLocal, "raster " + name);
+}
+
+constexpr VkImageUsageFlags kOutputUsage =
+    VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
+
+// An output image of the frame's size, or of 1 x 1 where it only fills a binding (the near layer and
+// mask under a single-sample head depth, which the composite never reads).
+vk::Image outputImage(const vk::Context& ctx, VkExtent2D extent, bool used, VkFormat format, const std::string& name) {
+  return vk::Image(ctx, {used ? extent.width : 1u, used ? extent.height : 1u, 1, format, kOutputUsage,
+                         VK_SAMPLE_COUNT_1_BIT, name});
+}
+
+gpu::RasterParams baseParams(std::uint32_t tilesX, std::uint32_t tilesY, std::uint32_t budget,
+                             std::uint32_t capacity, VkExtent2D extent) {
+  gpu::RasterParams p{};
+  p.tilesX = tilesX;
+  p.tilesY = tilesY;
+  p.tileBudget = budget;
+  p.capacity = capacity;
+  p.width = extent.width;
+  p.height = extent.height;
+  return p;
+}
+
+std::size_t chunkCount(std::span<const RasterSource> sources) {
+  std::size_t n = 0;
+  for (const RasterSource& s : sources) n += s.strands->chunks().size();
+  return n;
+}
+
+// The shade dispatch arguments re-armed every frame: (0, 1, 1) groups and nothing listed, per chunk.
+std::vector<glm::uvec4> armedShadeArgs(std::size_t chunks) { return std::vector<glm::uvec4>(chunks, {0u, 1u, 1u, 0u}); }
+}  // namespace
+
+void RasterSettings::validate() const {
+  if (tileBudget == 0 || tileBudget > (1u << 24))
+    throw Error("tileBudget must be in [1, 16777216], got " + std::to_string(tileBudget));
+}
+
+std::uint32_t rasterListCapacity(std::uint64_t segments, std::uint64_t tiles, std::uint64_t maxRangeBytes) {
+  const std::uint64_t wanted = segments * 8 + tiles * 16;
+  return std::uint32_t(std::clamp<std::uint64_t>(wanted, 1024, std::min<std::uint64_t>(maxRangeBytes / 8, 0xFFFFFFFFu)));
+}
+
+StrandRasterPass::StrandRasterPass(const vk::Context& ctx, std::span<const RasterSource> sources, VkExtent2D extent,
+                                   const RasterSettings& settings, std::uint32_t headSamples)
+    : ctx_(ctx), extent_(extent), settings_(settings), headSamples_(headSamples) {
+  settings.validate();
+  if (headSamples == 0 || headSamples > gpu::RASTER_MAX_HEAD_SAMPLES || (headSamples & (headSamples - 1)) != 0)
+    throw Error("compute raster: the head depth's sample count must be a power of two in [1, " +
+                std::to_string(gpu::RASTER_MAX_HEAD_SAMPLES) + "], got " + std::to_string(headSamples));
+  if (extent.width == 0 || extent.height == 0) throw Error("compute raster: the extent must be non-zero");
+  if (sources.empty()) throw Error("compute raster: no strand source");
+  tilesX_ = divUp(extent.width, gpu::RASTER_TILE_SIZE);
+  tilesY_ = divUp(extent.height, gpu::RASTER_TILE_SIZE);
+  const VkDeviceSize limit = ctx.properties().limits.maxStorageBufferRange;
+  std::uint64_t vertices = 0, segments = 0;
+  for (const RasterSource& source : sources) {
+    const StrandLayout& layout = source.strands->layout();
+    vertices += layout.strandVertexCount();
+    segments += std::uint64_t(layout.strandCount) * (layout.verticesPerStrand - 1);
+    sourceVertices_.push_back(std::uint32_t(layout.strandVertexCount()));
+  }
+  const std::uint64_t tiles = std::uint64_t(tilesX_) * tilesY_;
+  const std::size_t chunks = chunkCount(sources);
+  capacity_ = rasterListCapacity(segments, tiles, limit);
+  screen_ = deviceBuffer(ctx, vertices * 16, kStorageUsage, "screen vertices", limit);
+  colors_ = deviceBuffer(ctx, vertices * 8, kStorageUsage, "vertex colours", limit);
+  shadeFlags_ = deviceBuffer(ctx, vertices * 4, kArmedUsage, "shade flags", limit);
+  shadeList_ = deviceBuffer(ctx, vertices * 4, kStorageUsage, "shade list", limit);
+  shadeArgs_ = deviceBuffer(ctx, chunks * 16, kArmedUsage | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, "shade dispatch", limit);
+  state_ = deviceBuffer(ctx, sizeof(gpu::RasterState), kArmedUsage, "state", limit);
+  counts_ = deviceBuffer(ctx, tiles * gpu::RASTER_DEPTH_BINS * 4, kArmedUsage, "key counts", limit);
+  keys_ = deviceBuffer(ctx, tiles * gpu::RASTER_DEPTH_BINS * 8, kStorageUsage, "keys", limit);
+  tiles_ = deviceBuffer(ctx, tiles * 8, kStorageUsage, "tiles", limit);
+  tileDepth_ = deviceBuffer(ctx, tiles * 4, kStorageUsage, "tile head depth", limit);
+  blocks_ = deviceBuffer(ctx, divUp(std::uint32_t(tiles), gpu::RASTER_SCAN_SIZE) * 4, kStorageUsage, "blocks", limit);
+  list_ = deviceBuffer(ctx, VkDeviceSize(capacity_) * 8, kStorageUsage, "tile lists", limit);
+  output_ = outputImage(ctx, extent, true, VK_FORMAT_R16G16B16A16_SFLOAT, "raster hair image");
+  nearOutput_ = outputImage(ctx, extent, multisampled(), VK_FORMAT_R16G16B16A16_SFLOAT, "raster hair image (near layer)");
+  nearMask_ = outputImage(ctx, extent, multisampled(), VK_FORMAT_R32_UINT, "raster near-layer sample mask");
+  sampler_ = vk::Sampler(ctx, "raster depth sampler", VK_FILTER_NEAREST);  // D32 cannot filter
+  const gpu::RasterState armed = armedState();
+  vk::uploadBytes(ctx, state_, &armed, sizeof(armed), vk::BufferUse::ComputeWrite);
+  bind(sources);
+  const auto setLayout = chunks_.front().set.layout();
+  const auto pipeline = [&](const char* shader, std::uint32_t size, const char* name) {
+    return vk::ComputePipeline(ctx, shader, size, {setLayout}, 0, name);
+  };
+  project_ = pipeline("raster_project.comp", gpu::RASTER_WORKGROUP_SIZE, "raster project");
+  shade_ = pipeline("raster_shade.comp", gpu::RASTER_WORKGROUP_SIZE, "raster shade");
+  tileDepthPipeline_ = pipeline(multisampled() ? "raster_tile_depth_ms.comp" : "raster_tile_depth.comp",
+                                gpu::RASTER_WORKGROUP_SIZE, "raster tile depth");
+  count_ = vk::ComputePipeline(ctx, "raster_bin.comp", gpu::RASTER_WORKGROUP_SIZE, {setLayout}, 0, "raster count",
+                               {gpu::RASTER_MODE_COUNT});
+  scatter_ = vk::ComputePipeline(ctx, "raster_bin.comp", gpu::RASTER_WORKGROUP_SIZE, {setLayout}, 0, "raster scatter",
+                                 {gpu::RASTER_MODE_SCATTER});
+  scanTiles_ = pipeline("raster_scan_tiles.comp", gpu::RASTER_SCAN_SIZE, "raster scan tiles");
+  scanBlocks_ = pipeline("raster_scan_blocks.comp", gpu::RASTER_SCAN_SIZE, "raster scan blocks");
+  fine_ = pipeline(multisampled() ? "raster_fine_ms.comp" : "raster_fine.comp", gpu::RASTER_FINE_SIZE, "raster fine");
+}
+
+void StrandRasterPass::bind(std::span<const RasterSource> sources) {
+  if (sources.size() != sourceVertices_.size())
+    throw Error("compute raster: bind() needs the sources the pass was built for");
+  const std::uint32_t chunkTotal = std::uint32_t(chunkCount(sources));
+  std::vector<Chunk> chunks;
+  std::uint32_t firstVertex = 0;
+  for (std::size_t s = 0; s < sources.size(); ++s) {
+    const StrandBuffers& strands = *sources[s].strands;
+    const std::uint32_t q = strands.layout().verticesPerStrand;
+    if (strands.layout().strandVertexCount() != sourceVertices_[s])
+      throw Error("compute raster: bind() needs strand buffers of the size the pass was built for");
+    for (const StrandChunk& c : strands.chunks()) {
+      const std::string name = "raster [source " + std::to_string(s) + " chunk " + std::to_string(chunks.size()) + "]";
+      gpu::RasterParams params = baseParams(tilesX_, tilesY_, settings_.tileBudget, capacity_, extent_);
+      params.firstStrand = c.range.firstStrand;
+      params.strandCount = c.range.strandCount;
+      params.firstVertex = firstVertex;
+      params.verticesPerStrand = q;
+      params.chunkIndex = std::uint32_t(chunks.size());
+      params.chunkCount = chunkTotal;
+      params.maxGroupsX = ctx_.properties().limits.maxComputeWorkGroupCount[0];
+      firstVertex += c.range.strandCount * q;
+      Chunk chunk{vk::DescriptorSet(ctx_, kBindings, name),
+                  vk::Buffer(ctx_, sizeof(params), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                             vk::MemoryKind::DeviceLocal, name + " params"),
+                  c.range.strandCount, q};
+      vk::uploadBytes(ctx_, chunk.params, &params, sizeof(params), vk::BufferUse::ComputeRead);
+      writeChunkSet(chunk.set, sources[s].shading, c, chunk.params);
+      chunks.push_back(std::move(chunk));
+    }
+  }
+  chunks_ = std::move(chunks);
+}
+
+void StrandRasterPass::writeChunkSet(const vk::DescriptorSet& set, const ShadingWriter& shading, const StrandChunk& c,
+                                     const vk::Buffer& params) const {
+  shading(set);
+  set.writeStorageBuffer(gpu::RASTER_BINDING_PARAMS, params.handle());
+  set.writeStorageBuffer(gpu::RENDER_BINDING_POSITIONS, c.positions.handle());
+  set.writeStorageBuffer(gpu::RENDER_BINDING_TANGENTS, c.tangents.handle());
+  set.writeStorageBuffer(gpu::RENDER_BINDING_ATTRIBUTES, c.attributes.handle());
+  for (const auto& [binding, buffer] :
+       {std::pair{gpu::RASTER_BINDING_SCREEN, &screen_}, {gpu::RASTER_BINDING_COLORS, &colors_},
+        {gpu::RASTER_BINDING_STATE, &state_}, {gpu::RASTER_BINDING_COUNTS, &counts_}, {gpu::RASTER_BINDING_KEYS, &keys_},
+        {gpu::RASTER_BINDING_TILES, &tiles_}, {gpu::RASTER_BINDING_BLOCKS, &blocks_}, {gpu::RASTER_BINDING_LIST, &list_},
+        {gpu::RASTER_BINDING_TILE_DEPTH, &tileDepth_}, {gpu::RASTER_BINDING_SHADE_FLAGS, &shadeFlags_},
+        {gpu::RASTER_BINDING_SHADE_LIST, &shadeList_}, {gpu::RASTER_BINDING_SHADE_ARGS, &shadeArgs_}})
+    set.writeStorageBuffer(binding, buffer->handle());
+  set.writeStorageImage(gpu::RASTER_BINDING_OUTPUT, output_.view());
+  set.writeStorageImage(gpu::RASTER_BINDING_OUTPUT_NEAR, nearOutput_.view());
+  set.writeStorageImage(gpu::RASTER_BINDING_NEAR_MASK, nearMask_.view());
+  if (depth_ != VK_NULL_HANDLE) set.writeSampledImage(gpu::RASTER_BINDING_DEPTH, depth_, sampler_.handle());
+}
+
+void StrandRasterPass::setDepth(VkImageView depth) {
+  depth_ = depth;
+  for (const Chunk& c : chunks_) c.set.writeSampledImage(gpu::RASTER_BINDING_DEPTH, depth_, sampler_.handle());
+}
+
+void StrandRasterPass::recordArm(VkCommandBuffer cmd) const {
+  // The previous frame's steps (compute) finish reading and writing before the transfers re-arm.
+  vk::memoryBarrier(ctx_, cmd, vk::BufferUse::ComputeWrite, vk::BufferUse::ComputeWrite);
+  vk::bufferBarrier(ctx_, cmd, state_.handle(), vk::BufferUse::ComputeWrite, vk::BufferUse::TransferDst);
+  vk::bufferBarrier(ctx_, cmd, counts_.handle(), vk::BufferUse::ComputeWrite, vk::BufferUse::TransferDst);
+  vk::bufferBarrier(ctx_, cmd, shadeFlags_.handle(), vk::BufferUse::ComputeWrite, vk::BufferUse::TransferDst);
+  // The shade dispatches read their arguments both as indirect commands and in the shader.
+  vk::bufferBarrier(ctx_, cmd, shadeArgs_.handle(), vk::BufferUse::IndirectRead, vk::BufferUse::TransferDst);
+  vk::bufferBarrier(ctx_, cmd, shadeArgs_.handle(), vk::BufferUse::ComputeWrite, vk::BufferUse::TransferDst);
+  const gpu::RasterState armed = armedState();
+  const std::vector<glm::uvec4> args = armedShadeArgs(chunks_.size());
+  ctx_.fn().vkCmdUpdateBuffer(cmd, state_.handle(), 0, sizeof(armed), &armed);
+  ctx_.fn().vkCmdUpdateBuffer(cmd, shadeArgs_.handle(), 0, args.size() * sizeof(glm::uvec4), args.data());
+  ctx_.fn().vkCmdFillBuffer(cmd, counts_.handle(), 0, VK_WHOLE_SIZE, 0u);
+  ctx_.fn().vkCmdFillBuffer(cmd, shadeFlags_.handle(), 0, VK_WHOLE_SIZE, 0u);
+  for (const vk::Buffer* b : {&state_, &counts_, &shadeFlags_, &shadeArgs_})
+    vk::bufferBarrier(ctx_, cmd, b->handle(), vk::BufferUse::TransferDst, vk::BufferUse::ComputeWrite);
+  // The previous frame's composite sampled the outputs; their contents are rewritten in full.
+  for (const vk::Image* image : outputs())
+    vk::imageBarrier(ctx_, cmd, image->handle(), VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::FragmentSampledDiscard,
+                     vk::ImageUse::ComputeStorageWrite);
+}
+
+void StrandRasterPass::recordPerChunk(VkCommandBuffer cmd, const vk::ComputePipeline& pipeline,
+                                      std::uint32_t perStrandLess) const {
+  for (const Chunk& c : chunks_) {
+    pipeline.bind(cmd, c.set.set());
+    pipeline.dispatch(cmd, c.strandCount * (c.verticesPerStrand - perStrandLess));
+  }
+}
+
+void StrandRasterPass::recordOnce(VkCommandBuffer cmd, const vk::ComputePipeline& pipeline,
+                                  std::uint32_t threads) const {
+  pipeline.bind(cmd, chunks_.front().set.set());
+  pipeline.dispatch(cmd, threads);
+}
+
+namespace {
+// Each step's writes visible to the next step's reads and writes (all buffers are the pass's own).
+void chain(const vk::Context& ctx, VkCommandBuffer cmd) {
+  vk::memoryBarrier(ctx, cmd, vk::BufferUse::ComputeWrite, vk::BufferUse::ComputeWrite);
+}
+
+void begin(VkCommandBuffer cmd, vk::GpuProfiler* profiler, const char* name) {
+  if (profiler) profiler->begin(cmd, name);
+}
+void end(VkCommandBuffer cmd, vk::GpuProfiler* profiler) {
+  if (profiler) profiler->end(cmd);
+}
+}  // namespace
+
+void StrandRasterPass::recordBinning(VkCommandBuffer cmd, vk::GpuProfiler* profiler) const {
+  if (depth_ == VK_NULL_HANDLE) throw Error("compute raster: setDepth() was not called before record()");
+  const std::uint32_t tiles = tilesX_ * tilesY_;
+  begin(cmd, profiler, "raster project");
+  recordArm(cmd);
+  recordPerChunk(cmd, project_, 0);
+  end(cmd, profiler);
+  begin(cmd, profiler, "raster bin");
+  recordOnce(cmd, tileDepthPipeline_, tiles);
+  chain(ctx_, cmd);
+  recordPerChunk(cmd, count_, 1);
+  chain(ctx_, cmd);
+  recordOnce(cmd, scanTiles_, divUp(tiles, gpu::RASTER_SCAN_SIZE) * gpu::RASTER_SCAN_SIZE);
+  chain(ctx_, cmd);
+  recordOnce(cmd, scanBlocks_, gpu::RASTER_SCAN_SIZE);
+  chain(ctx_, cmd);
+  recordPerChunk(cmd, scatter_, 1);
+  end(cmd, profiler);
+}
+
+void StrandRasterPass::recordFine(VkCommandBuffer cmd, vk::GpuProfiler* profiler) const {
+  begin(cmd, profiler, "raster shade");
+  // The scan wrote the shade dispatches (indirect arguments) and the count step the shade lists.
+  vk::bufferBarrier(ctx_, cmd, shadeArgs_.handle(), vk::BufferUse::ComputeWrite, vk::BufferUse::IndirectRead);
+  chain(ctx_, cmd);
+  for (std::size_t i = 0; i < chunks_.size(); ++i) {
+    shade_.bind(cmd, chunks_[i].set.set());
+    shade_.dispatchIndirect(cmd, shadeArgs_.handle(), i * sizeof(glm::uvec4));
+  }
+  end(cmd, profiler);
+  begin(cmd, profiler, "raster fine");
+  chain(ctx_, cmd);
+  recordOnce(cmd, fine_, tilesX_ * tilesY_ * gpu::RASTER_FINE_SIZE);
+  for (const vk::Image* image : outputs())
+    vk::imageBarrier(ctx_, cmd, image->handle(), VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::ComputeStorageWrite,
+                     vk::ImageUse::FragmentSampled);
+  end(cmd, profiler);
+}
+
+std::vector<float> StrandRasterPass::readCoverage() const {
+  const std::size_t pixels = std::size_t(extent_.width) * extent_.height;
+  const auto alphas = [&](const vk::Image& image) {
+    const std::vector<std::byte> bytes = vk::readbackImage(ctx_, image, vk::ImageUse::FragmentSampled);
+    std::vector<float> a(pixels);
+    for (std::size_t i = 0; i < pixels; ++i) {
+      std::uint16_t half;
+      std::memcpy(&half, bytes.data() + (i * 4 + 3) * sizeof(half), sizeof(half));
+      a[i] = shading::halfToFloat(half);
+    }
+    return a;
+  };
+  std::vector<float> coverage = alphas(output_);
+  if (!multisampled()) return coverage;
+  const std::vector<float> near = alphas(nearOutput_);
+  const std::vector<std::byte> maskBytes = vk::readbackImage(ctx_, nearMask_, vk::ImageUse::FragmentSampled);
+  for (std::size_t i = 0; i < pixels; ++i) {
+    std::uint32_t mask;
+    std::memcpy(&mask, maskBytes.data() + i * sizeof(mask), sizeof(mask));
+    const float nearShare = float(std::popcount(mask)) / float(headSamples_);
+    coverage[i] = nearShare * near[i] + (1.0f - nearShare) * coverage[i];
+  }
+  return coverage;
+}
+
+RasterStats StrandRasterPass::readStats() const {
+  const auto state = vk::readback<gpu::RasterState>(ctx_, state_, vk::BufferUse::ComputeWrite, 1);
+  RasterStats s;
+  s.requested = state[0].entries.x;
+  s.droppedByTileBudget = state[0].entries.y;
+  s.droppedByCapacity = state[0].entries.z;
+  s.kept = state[0].entries.w;
+  return s;
+}
+}  // namespace hp::compute

@@ -1,0 +1,134 @@
+#pragma once
+// Contract: the compute strand rasterizer for the camera view (docs/THEORY.md §7; layouts and the coverage
+// formula in shaders/shared/raster.h). Over the render strands of every chunk of every source (one source
+// per hair instance: its strands and its shading resources; all share one set of tile lists, so hair of
+// different heads interleaves correctly by depth) it
+//   bin      per vertex: the projection to pixels, NDC depth and width; per tile: the farthest head depth;
+//            per segment: count its (8x8 tile, depth bin) keys with the rows of the tile it may cover,
+//            leaving out tiles where the head hides it, and list the ends of kept segments for shading;
+//            scan the tiles (tile budget: nearest bins kept first), scatter the segment ids into per-tile
+//            lists ordered near to far by depth bin;
+//   shade    per listed vertex (indirect dispatch): radiance by the graphics path's hairRadiance (opacity
+//            maps looked up at the vertex: strand-space shading);
+//   fine     per pixel: exact band coverage, hidden at or behind the head's depth, composited front to
+//            back until T < 1/255, into output(): RGBA16F, premultiplied radiance, alpha = 1 - T. With a
+//            multisampled head depth (headSamples > 1) also nearOutput() and nearMask(): the hair in front
+//            of every head sample and the samples that take it (shaders/shared/raster.h, the two layers).
+// The pass owns every buffer and image it writes and the barriers between its own steps. The frame
+// recorder guarantees before record(): strand buffers, the frame block, LightSpace and the opacity maps
+// visible to compute reads (maps in ImageUse::ComputeSampled), the depth image given to setDepth() in
+// ImageUse::ComputeSampled. After record(): output() in ImageUse::FragmentSampled, every own buffer's
+// last use ComputeWrite. List overflow is never silent: readStats() reports entries dropped by the tile
+// budget and past the list capacity (capacity derived from the segment count and the frame size).
+#include "hairpipe_volk.h"
+
+#include <array>
+#include <functional>
+#include <span>
+#include <vector>
+
+#include "compute/strands/strand_buffers.h"
+#include "engine/vk/buffer.h"
+#include "engine/vk/descriptors.h"
+#include "engine/vk/image.h"
+#include "engine/vk/pipeline.h"
+#include "engine/vk/profiler.h"
+
+namespace hp::compute {
+struct RasterSettings {
+  std::uint32_t tileBudget = 16384;  // list entries kept per 8x8 tile, [1, 1<<24]
+  void validate() const;
+};
+
+struct RasterStats {
+  std::uint64_t requested = 0;           // (segment, tile) entries the segments asked for
+  std::uint64_t droppedByTileBudget = 0;
+  std::uint64_t droppedByCapacity = 0;
+  std::uint64_t kept = 0;
+  std::uint64_t overflow() const { return droppedByTileBudget + droppedByCapacity; }
+};
+
+// Writes the shading bindings of shaders/shared/render.h (frame block and Marschner parameters as STORAGE
+// buffers, the LUTs, opacity maps, LightSpace, the head's depth shadow map) and the head bounce map's two
+// images (RENDER_BINDING_BOUNCE_*, compute/shadows/head_bounce_map.h) into a raster descriptor set: what
+// hairRadiance and the skin's bounce read.
+using ShadingWriter = std::function<void(const vk::DescriptorSet&)>;
+
+// One head's strands and the shading resources its segments are shaded with.
+struct RasterSource {
+  const StrandBuffers* strands = nullptr;
+  ShadingWriter shading;
+};
+
+class StrandRasterPass {
+ public:
+  // headSamples: the sample count of the depth image setDepth() will get (1 to RASTER_MAX_HEAD_SAMPLES).
+  // Throws hp::Error for no source, a zero extent, bad settings or sample count, or buffers past
+  // maxStorageBufferRange.
+  StrandRasterPass(const vk::Context& ctx, std::span<const RasterSource> sources, VkExtent2D extent,
+                   const RasterSettings& settings, std::uint32_t headSamples = 1);
+  StrandRasterPass(const vk::Context& ctx, const StrandBuffers& strands, const ShadingWriter& shading,
+                   VkExtent2D extent, const RasterSettings& settings, std::uint32_t headSamples = 1)
+      : StrandRasterPass(ctx, std::span<const RasterSource>(std::vector<RasterSource>{{&strands, shading}}), extent,
+                         settings, headSamples) {}
+  // Outside the frame loop: rewrite descriptors after the shading resources changed (same strand sizes).
+  void bind(std::span<const RasterSource> sources);
+  // The head's depth (D32, headSamples samples); 1.0 where nothing was drawn. Must be set before record().
+  void setDepth(VkImageView depth);
+
+  void record(VkCommandBuffer cmd, vk::GpuProfiler* profiler = nullptr) const {
+    recordBinning(cmd, profiler);
+    recordFine(cmd, profiler);
+  }
+  // record() in two halves: project + bin (readStats() is complete after it), then shade + fine raster.
+  void recordBinning(VkCommandBuffer cmd, vk::GpuProfiler* profiler = nullptr) const;
+  void recordFine(VkCommandBuffer cmd, vk::GpuProfiler* profiler = nullptr) const;
+
+  const vk::Image& output() const { return output_; }
+  // The near layer and its sample mask (R32_UINT); 1 x 1 and never written for a single-sample head depth.
+  const vk::Image& nearOutput() const { return nearOutput_; }
+  const vk::Image& nearMask() const { return nearMask_; }
+  bool multisampled() const { return headSamples_ > 1; }
+  VkExtent2D extent() const { return extent_; }
+  std::uint32_t capacity() const { return capacity_; }
+  // Blocking readback of the last recorded frame's statistics (outside the frame loop).
+  RasterStats readStats() const;
+  // Blocking readback of the last frame's hair coverage per pixel (rows top to bottom), averaged over the
+  // head's samples: the alpha of the layer each sample takes. Outside the frame loop, after record().
+  std::vector<float> readCoverage() const;
+
+ private:
+  struct Chunk {
+    vk::DescriptorSet set;
+    vk::Buffer params;  // gpu::RasterParams of the chunk (a storage buffer: no push constants, see .cpp)
+    std::uint32_t strandCount;
+    std::uint32_t verticesPerStrand;
+  };
+  std::array<const vk::Image*, 3> outputs() const { return {&output_, &nearOutput_, &nearMask_}; }
+  void recordArm(VkCommandBuffer cmd) const;
+  void writeChunkSet(const vk::DescriptorSet& set, const ShadingWriter& shading, const StrandChunk& c,
+                     const vk::Buffer& params) const;
+  // One dispatch per chunk of strandCount * (verticesPerStrand - perStrandLess) invocations.
+  void recordPerChunk(VkCommandBuffer cmd, const vk::ComputePipeline& pipeline, std::uint32_t perStrandLess) const;
+  void recordOnce(VkCommandBuffer cmd, const vk::ComputePipeline& pipeline, std::uint32_t threads) const;
+
+  const vk::Context& ctx_;
+  VkExtent2D extent_;
+  RasterSettings settings_;
+  std::uint32_t headSamples_;
+  std::uint32_t tilesX_, tilesY_, capacity_ = 0;
+  std::vector<std::uint32_t> sourceVertices_;  // render vertices of each source (bind() must match)
+  vk::Buffer screen_, colors_, state_, counts_, keys_, tiles_, blocks_, list_, tileDepth_;
+  vk::Buffer shadeFlags_, shadeList_, shadeArgs_;
+  vk::Image output_, nearOutput_, nearMask_;
+  vk::Sampler sampler_;
+  VkImageView depth_ = VK_NULL_HANDLE;
+  std::vector<Chunk> chunks_;
+  vk::ComputePipeline project_, shade_, tileDepthPipeline_, count_, scatter_, scanTiles_, scanBlocks_, fine_;
+};
+
+// List entries reserved for a frame: every segment in 8 tiles plus 16 per tile (the default head at
+// 3840x2160 asks for 4.3M of 7.7M), within the device's
+// storage buffer range (pure arithmetic, for tests and the docs).
+std::uint32_t rasterListCapacity(std::uint64_t segments, std::uint64_t tiles, std::uint64_t maxRangeBytes);
+}  // namespace hp::compute

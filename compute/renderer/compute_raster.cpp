@@ -1,0 +1,106 @@
+#include "compute/renderer/compute_raster.h"
+
+#include <algorithm>
+
+#include "engine/core/error.h"
+#include "compute/renderer/hair_instance.h"
+#include "engine/vk/barriers.h"
+#include "engine/vk/context.h"
+#include "shaders/shared/render.h"
+
+namespace hp {
+std::vector<vk::Buffer> ComputeRaster::makeFrameBlocks(const vk::Context& ctx, std::size_t count) {
+  std::vector<vk::Buffer> frames;
+  for (std::size_t i = 0; i < count; ++i)
+    frames.emplace_back(ctx, sizeof(gpu::RenderFrame), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                        vk::MemoryKind::DeviceLocal, "raster frame [instance " + std::to_string(i) + "]");
+  return frames;
+}
+
+ComputeRaster::ComputeRaster(const vk::Context& ctx, const RendererSettings& settings,
+                             const render::ShadowMaps& shadows, VkExtent2D extent, VkImageView depth,
+                             std::span<HairInstance* const> instances)
+    : ctx_(ctx),
+      shadows_(shadows),
+      instances_(instances.begin(), instances.end()),
+      frames_(makeFrameBlocks(ctx, instances.size())),
+      depth_(depth),
+      pass_(ctx, sources(), extent, settings.rasterSettings, std::uint32_t(settings.formats.samples)),
+      composite_(ctx, settings.formats) {
+  pass_.setDepth(depth);
+  composite_.setInput(pass_.output().view(), pass_.nearOutput().view(), pass_.nearMask().view());
+}
+
+std::vector<compute::RasterSource> ComputeRaster::sources() const {
+  if (instances_.empty()) throw Error("Renderer::setRasterTarget: no instance to rasterize");
+  std::vector<compute::RasterSource> sources;
+  for (std::size_t i = 0; i < instances_.size(); ++i) {
+    const HairInstance* instance = instances_[i];
+    const VkBuffer frame = frames_[i].handle();
+    sources.push_back({&instance->strands(), [this, instance, frame](const vk::DescriptorSet& set) {
+                         // Storage buffers: the raster shaders read no uniform blocks (compute/raster/strand_raster_pass.cpp).
+                         set.writeStorageBuffer(gpu::RENDER_BINDING_FRAME, frame);
+                         instance->marschner().writeDescriptors(set, gpu::RENDER_BINDING_MARSCHNER,
+                                                                gpu::RENDER_BINDING_LUT_M, gpu::RENDER_BINDING_LUT_N0,
+                                                                gpu::RENDER_BINDING_LUT_N1,
+                                                                VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);
+                         const render::ShadowInputs in = shadows_.inputs();
+                         set.writeSampledImage(gpu::RENDER_BINDING_OPACITY, in.opacityView, in.sampler);
+                         set.writeStorageBuffer(gpu::RENDER_BINDING_LIGHT, in.lightSpace);
+                         set.writeSampledImage(gpu::RENDER_BINDING_HEAD_SHADOW, in.headShadowView, in.headShadowSampler);
+                         set.writeSampledImage(gpu::RENDER_BINDING_BOUNCE_FLUX, in.bounceFluxView, in.bounceSampler);
+                         set.writeSampledImage(gpu::RENDER_BINDING_BOUNCE_POSITION, in.bouncePositionView,
+                                               in.bounceSampler);
+                       }});
+  }
+  return sources;
+}
+
+bool ComputeRaster::holds(const HairInstance* instance) const {
+  return std::find(instances_.begin(), instances_.end(), instance) != instances_.end();
+}
+
+void ComputeRaster::recordFrameBlocks(VkCommandBuffer cmd, const View& view, const LightSpec& light,
+                                      const render::HeadShadowView& headShadow) const {
+  for (std::size_t i = 0; i < instances_.size(); ++i) {
+    const HairInstance& instance = *instances_[i];
+    gpu::RenderFrame frame = render::makeRenderFrame(view.camera, view.extent, light, instance.settings().material,
+                                                     instance.settings().look,
+                                                     instance.strands().layout().verticesPerStrand, shadows_.settings());
+    render::setHeadMaps(frame, headShadow, instance.settings().look.skinBounce);
+    const VkBuffer block = frames_[i].handle();
+    vk::bufferBarrier(ctx_, cmd, block, vk::BufferUse::ComputeRead, vk::BufferUse::TransferDst);
+    ctx_.fn().vkCmdUpdateBuffer(cmd, block, 0, sizeof(frame), &frame);
+    vk::bufferBarrier(ctx_, cmd, block, vk::BufferUse::TransferDst, vk::BufferUse::ComputeRead);
+  }
+}
+
+void ComputeRaster::record(VkCommandBuffer cmd, const View& view, const LightSpec& light,
+                           const render::HeadShadowView& headShadow, vk::GpuProfiler* profiler) const {
+  recordFrameBlocks(cmd, view, light, headShadow);
+  // The graphics readers' states (recordShadows) extended to compute for the pass, then back, so the
+  // next frame's barriers (which wait on vertex/fragment readers) still cover these reads.
+  const VkBuffer lightSpace = shadows_.lightSpace().handle();
+  const VkImage maps = shadows_.image().handle();
+  const VkImage head = shadows_.headImage().handle();
+  vk::memoryBarrier(ctx_, cmd, vk::BufferUse::ComputeWrite, vk::BufferUse::ComputeRead);  // strand buffers
+  vk::imageBarrier(ctx_, cmd, head, VK_IMAGE_ASPECT_DEPTH_BIT, vk::ImageUse::FragmentSampled, vk::ImageUse::ComputeSampled);
+  vk::bufferBarrier(ctx_, cmd, lightSpace, vk::BufferUse::GraphicsRead, vk::BufferUse::ComputeRead);
+  vk::imageBarrier(ctx_, cmd, maps, VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::FragmentSampled,
+                   vk::ImageUse::ComputeSampled, gpu::OPACITY_LAYERS);
+  const render::HeadBounceMap& bounce = shadows_.bounceMap();
+  bounce.transition(cmd, vk::ImageUse::FragmentSampled, vk::ImageUse::ComputeSampled);
+  pass_.record(cmd, profiler);
+  bounce.transition(cmd, vk::ImageUse::ComputeSampled, vk::ImageUse::FragmentSampled);
+  vk::bufferBarrier(ctx_, cmd, lightSpace, vk::BufferUse::ComputeRead, vk::BufferUse::GraphicsRead);
+  vk::imageBarrier(ctx_, cmd, maps, VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::ComputeSampled,
+                   vk::ImageUse::FragmentSampled, gpu::OPACITY_LAYERS);
+  vk::imageBarrier(ctx_, cmd, head, VK_IMAGE_ASPECT_DEPTH_BIT, vk::ImageUse::ComputeSampled, vk::ImageUse::FragmentSampled);
+}
+
+void ComputeRaster::recordComposite(VkCommandBuffer cmd, VkExtent2D extent, vk::GpuProfiler* profiler) const {
+  if (profiler) profiler->begin(cmd, "composite");
+  composite_.draw(cmd, extent);
+  if (profiler) profiler->end(cmd);
+}
+}  // namespace hp

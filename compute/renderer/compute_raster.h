@@ -1,0 +1,58 @@
+#pragma once
+// Contract: a Renderer's compute strand rasterizer for one camera target and a set of its instances: one
+// compute::StrandRasterPass over every instance's strands (all in the same tile lists, so the hair of
+// different heads is depth-ordered per pixel; each instance shaded with its own material, look and LUTs
+// through its own frame block), and the composite of the hair image over the application's colour.
+// Built by Renderer::setRasterTarget outside the frame loop, and rebuilt by the Renderer (the old one
+// retired after its frames) when an instance in it changes its strands or material or is destroyed.
+//   record(cmd, view, light, headShadow)  outside rendering, after the heads were drawn into the depth
+//                                         image (in ImageUse::ComputeSampled): per-instance frame blocks,
+//                                         then the rasterizer (which gathers the skin's bounce from the
+//                                         shadows' head bounce map); leaves image() in ImageUse::FragmentSampled
+//   recordComposite(cmd, extent)          inside a rendering of the application's attachments
+#include <memory>
+#include <span>
+#include <vector>
+
+#include "compute/raster/strand_raster_pass.h"
+#include "compute/raster/composite_pass.h"
+#include "compute/shadows/head_shadow_view.h"
+#include "compute/shadows/shadow_maps.h"
+#include "compute/renderer/renderer_settings.h"
+#include "engine/vk/buffer.h"
+
+namespace hp {
+class HairInstance;
+
+class ComputeRaster {
+ public:
+  ComputeRaster(const vk::Context& ctx, const RendererSettings& settings, const render::ShadowMaps& shadows,
+                VkExtent2D extent, VkImageView depth, std::span<HairInstance* const> instances);
+
+  void record(VkCommandBuffer cmd, const View& view, const LightSpec& light, const render::HeadShadowView& headShadow,
+              vk::GpuProfiler* profiler) const;
+  void recordComposite(VkCommandBuffer cmd, VkExtent2D extent, vk::GpuProfiler* profiler) const;
+
+  bool holds(const HairInstance* instance) const;
+  const std::vector<HairInstance*>& instances() const { return instances_; }
+  VkExtent2D extent() const { return pass_.extent(); }
+  VkImageView depth() const { return depth_; }
+  const vk::Image& image() const { return pass_.output(); }
+  compute::RasterStats readStats() const { return pass_.readStats(); }
+  std::vector<float> readCoverage() const { return pass_.readCoverage(); }
+
+ private:
+  static std::vector<vk::Buffer> makeFrameBlocks(const vk::Context& ctx, std::size_t count);
+  std::vector<compute::RasterSource> sources() const;
+  void recordFrameBlocks(VkCommandBuffer cmd, const View& view, const LightSpec& light,
+                         const render::HeadShadowView& headShadow) const;
+
+  const vk::Context& ctx_;
+  const render::ShadowMaps& shadows_;
+  std::vector<HairInstance*> instances_;
+  std::vector<vk::Buffer> frames_;  // per instance: its gpu::RenderFrame, written with vkCmdUpdateBuffer per view
+  VkImageView depth_;
+  compute::StrandRasterPass pass_;
+  render::CompositePass composite_;
+};
+}  // namespace hp

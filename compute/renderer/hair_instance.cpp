@@ -1,0 +1,132 @@
+#include "compute/renderer/hair_instance.h"
+
+#include <cmath>
+
+#include "engine/core/error.h"
+#include "engine/core/hair/finite.h"
+#include "compute/renderer/renderer.h"
+#include "engine/vk/context.h"
+
+namespace hp {
+namespace {
+const InstanceSettings& validated(const InstanceSettings& s) {
+  s.validate();
+  return s;
+}
+
+void checkFinite(const glm::mat4& m, const char* what) {
+  if (!allFinite(m)) throw Error(std::string(what) + " must be finite");
+}
+
+std::uint32_t alignUp(std::size_t size, VkDeviceSize alignment) {
+  return static_cast<std::uint32_t>((size + alignment - 1) / alignment * alignment);
+}
+}  // namespace
+
+HairInstance::Geometry::Geometry(Renderer& r, const SimulatePass& sim, const InterpolationTopology& topology,
+                                 const HeadMesh& head, const InstanceSettings& s)
+    : buffers(r.context(), sim.guideCount(), sim.particlesPerGuide(), topology, s.strands),
+      tessellate(r.context(), sim.positions(), buffers, &r.pipelines()),
+      interpolate(r.context(), buffers, &r.pipelines()),
+      bounds(r.context(), buffers, r.shadows().lightSpace(), &r.pipelines()),
+      opacity(r.context(), buffers, head, r.shadows(), &r.pipelines()) {}
+
+HairInstance::HairInstance(Renderer& renderer, const HairAsset& asset, const InstanceSettings& settings,
+                           const glm::mat4& initialHead)
+    : renderer_(renderer),
+      settings_(validated(settings)),
+      headMesh_(asset.head),
+      motion_{initialHead, initialHead, 0.0, false},
+      simulate_(renderer.context(), asset, settings.simulation, initialHead, &renderer.pipelines(), settings.scalp),
+      geometry_(std::make_shared<Geometry>(renderer, simulate_, asset.topology, asset.head, settings_)),
+      marschner_(renderer.marschner(settings.material, settings.lutMode)) {
+  const vk::Context& ctx = renderer.context();
+  const RendererSettings& rs = renderer.settings();
+  frameStride_ = alignUp(sizeof(gpu::RenderFrame), ctx.properties().limits.minUniformBufferOffsetAlignment);
+  frames_ = vk::Buffer(ctx, VkDeviceSize(frameStride_) * rs.framesInFlight * rs.maxViewsPerFrame,
+                       VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, vk::MemoryKind::Upload, "render frame ring");
+  // Valid blocks from the start, so a draw before any prepared view reads sane values.
+  for (std::uint32_t slot = 0; slot < rs.framesInFlight * rs.maxViewsPerFrame; ++slot)
+    *frameSlot(slot / rs.maxViewsPerFrame, slot % rs.maxViewsPerFrame) =
+        render::makeRenderFrame(CameraMatrices{}, {1, 1}, LightSpec{}, settings_.material, settings_.look,
+                                strands().layout().verticesPerStrand, renderer.shadows().settings());
+  head_ = std::make_shared<render::HeadPass>(ctx, asset.head, frames_, renderer.shadows().inputs(),
+                                             rs.formats, &renderer.pipelines());
+  bounceFrame_ = vk::Buffer(ctx, sizeof(gpu::RenderFrame), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                            vk::MemoryKind::DeviceLocal, "head bounce frame");
+  bounce_ = std::make_unique<render::HeadBouncePass>(ctx, *head_, bounceFrame_.handle(), renderer.shadows().inputs(),
+                                                     &renderer.pipelines());
+  strandPass_ = makeStrandPass(*geometry_, *marschner_);
+}
+
+HairInstance::~HairInstance() { renderer_.forgetInstance(*this); }
+
+std::uint32_t HairInstance::frameOffset(std::uint64_t frame, std::uint32_t view) const {
+  const RendererSettings& rs = renderer_.settings();
+  return static_cast<std::uint32_t>((frame % rs.framesInFlight) * rs.maxViewsPerFrame + view) * frameStride_;
+}
+
+gpu::RenderFrame* HairInstance::frameSlot(std::uint64_t frame, std::uint32_t view) const {
+  return reinterpret_cast<gpu::RenderFrame*>(static_cast<std::byte*>(frames_.mapped()) + frameOffset(frame, view));
+}
+
+std::shared_ptr<render::StrandPass> HairInstance::makeStrandPass(const Geometry& geometry,
+                                                                 const render::MarschnerTextures& marschner) const {
+  return std::make_shared<render::StrandPass>(renderer_.context(), geometry.buffers, marschner, frames_,
+                                              renderer_.shadows().inputs(), renderer_.settings().formats,
+                                              &renderer_.pipelines());
+}
+
+void HairInstance::replaceStrandPass(std::shared_ptr<render::StrandPass> pass) {
+  if (strandPass_) renderer_.retire(std::move(strandPass_));  // frames in flight may still draw with it
+  strandPass_ = std::move(pass);
+}
+
+void HairInstance::setMotion(const HeadMotion& motion) {
+  checkFinite(motion.from, "HeadMotion.from");
+  checkFinite(motion.to, "HeadMotion.to");
+  if (!std::isfinite(motion.time)) throw Error("HeadMotion.time must be finite");
+  motion_ = motion;
+}
+
+void HairInstance::setHeadToWorld(const glm::mat4& headToWorld) {
+  checkFinite(headToWorld, "headToWorld");
+  motion_.to = headToWorld;
+}
+
+void HairInstance::setMaterial(const HairMaterial& material, LutMode mode) {
+  material.validate();
+  if (material == settings_.material && mode == settings_.lutMode) return;
+  auto textures = renderer_.marschner(material, mode);
+  auto pass = makeStrandPass(*geometry_, *textures);  // everything that can throw happens before the swap
+  // The old textures and strand pass stay alive until the frames that sample them are done.
+  renderer_.retire(marschner_);
+  marschner_ = std::move(textures);
+  replaceStrandPass(std::move(pass));
+  settings_.material = material;
+  settings_.lutMode = mode;
+  renderer_.instanceChanged(*this);  // a compute raster target names the old LUTs
+}
+
+void HairInstance::setLook(const render::LookSettings& look) {
+  look.validate();
+  settings_.look = look;  // read into the per-frame constants at record time
+}
+
+void HairInstance::setSimulation(const SimulationParams& params) {
+  simulate_.setParams(params);
+  settings_.simulation = params;
+}
+
+void HairInstance::setStrands(const InterpolationTopology& topology, const compute::StrandOptions& options) {
+  InstanceSettings next = settings_;
+  next.strands = options;
+  auto geometry = std::make_shared<Geometry>(renderer_, simulate_, topology, headMesh_, next);
+  auto pass = makeStrandPass(*geometry, *marschner_);
+  renderer_.retire(geometry_);
+  geometry_ = std::move(geometry);
+  replaceStrandPass(std::move(pass));
+  settings_ = next;
+  renderer_.instanceChanged(*this);  // a compute raster target reads the old strand buffers
+}
+}  // namespace hp

@@ -1,0 +1,97 @@
+#pragma once
+// Contract: one head of hair drawn by a Renderer: its simulation state (guide particles), strand buffers,
+// descriptor sets, per-head parameters and its ring of per-frame constants. Pipelines, LUT textures and
+// shadow maps are the Renderer's, shared with every other instance. Created by Renderer::createInstance;
+// the Renderer outlives its instances.
+//
+// Per frame, before the Renderer's record calls: setMotion() (where the head is; the draws and shadows of
+// that frame use motion.to). Setters validate their input and throw hp::Error; they are host-only and may
+// be called between frames while earlier frames are still in flight: what the GPU may still read is
+// retired through the Renderer and destroyed once those frames are done (no device idle).
+#include <memory>
+
+#include "compute/shadows/bounds_pass.h"
+#include "compute/strands/interpolate_pass.h"
+#include "compute/strands/simulate_pass.h"
+#include "compute/strands/strand_buffers.h"
+#include "compute/strands/tessellate_pass.h"
+#include "engine/core/hair/hair_asset.h"
+#include "compute/head/head_bounce_pass.h"
+#include "compute/head/head_pass.h"
+#include "compute/raster/marschner_textures.h"
+#include "compute/shadows/opacity_pass.h"
+#include "compute/raster/strand_pass.h"
+#include "compute/renderer/renderer_settings.h"
+#include "engine/vk/buffer.h"
+
+namespace hp {
+class Renderer;
+
+class HairInstance {
+ public:
+  ~HairInstance();
+  HairInstance(const HairInstance&) = delete;
+  HairInstance& operator=(const HairInstance&) = delete;
+
+  // This frame's head motion (from -> to); throws hp::Error on non-finite matrices.
+  void setMotion(const HeadMotion& motion);
+  // Where the head is drawn and casts its shadow when it is not simulated this frame.
+  void setHeadToWorld(const glm::mat4& headToWorld);
+  // Colliders for the next frames (head space, moving with the motion's head pair); scalp input Bones:
+  // the bone matrices at the end of the next frame. Both any time between frames.
+  void setColliders(std::span<const SphereCollider> spheres, std::span<const CapsuleCollider> capsules = {}) {
+    simulate_.setColliders(spheres, capsules);
+  }
+  void setBones(std::span<const glm::mat4> bones) { simulate_.setBones(bones); }
+  void setMaterial(const HairMaterial& material, LutMode mode);
+  void setLook(const render::LookSettings& look);
+  void setSimulation(const SimulationParams& params);
+  // A new interpolation topology (density) or strand options: new strand buffers, filled by the next update.
+  void setStrands(const InterpolationTopology& topology, const compute::StrandOptions& options);
+
+  const InstanceSettings& settings() const { return settings_; }
+  const glm::mat4& headToWorld() const { return motion_.to; }
+  const compute::StrandBuffers& strands() const { return geometry_->buffers; }
+  const render::MarschnerTextures& marschner() const { return *marschner_; }
+  const SimulatePass& simulation() const { return simulate_; }
+  // Tools (scripted settling frames outside a frame loop) drive the simulation directly.
+  SimulatePass& simulationForTools() { return simulate_; }
+
+ private:
+  friend class Renderer;
+  // Everything sized by the strand topology and options, rebuilt (and retired) together.
+  struct Geometry {
+    compute::StrandBuffers buffers;
+    compute::TessellatePass tessellate;
+    compute::InterpolatePass interpolate;
+    compute::BoundsPass bounds;
+    render::OpacityPass opacity;
+    Geometry(Renderer& r, const SimulatePass& sim, const InterpolationTopology& topology, const HeadMesh& head,
+             const InstanceSettings& s);
+  };
+
+  HairInstance(Renderer& renderer, const HairAsset& asset, const InstanceSettings& settings,
+               const glm::mat4& initialHead);
+  std::shared_ptr<render::StrandPass> makeStrandPass(const Geometry& geometry,
+                                                    const render::MarschnerTextures& marschner) const;
+  void replaceStrandPass(std::shared_ptr<render::StrandPass> pass);
+  std::uint32_t frameOffset(std::uint64_t frame, std::uint32_t view) const;
+  gpu::RenderFrame* frameSlot(std::uint64_t frame, std::uint32_t view) const;
+
+  Renderer& renderer_;
+  InstanceSettings settings_;
+  HeadMesh headMesh_;  // kept for rebuilding the opacity pass's copy with new strands
+  HeadMotion motion_;
+  SimulatePass simulate_;
+  std::shared_ptr<Geometry> geometry_;
+  std::shared_ptr<render::MarschnerTextures> marschner_;
+  vk::Buffer frames_;  // framesInFlight x maxViewsPerFrame gpu::RenderFrame slots, persistently mapped
+  std::uint32_t frameStride_ = 0;
+  std::shared_ptr<render::HeadPass> head_;
+  // The head bounce map's draw of this head and the frame block it reads (light, colours, opacity settings,
+  // the map's framing), written by Renderer::recordShadows with vkCmdUpdateBuffer.
+  vk::Buffer bounceFrame_;
+  std::unique_ptr<render::HeadBouncePass> bounce_;
+  std::shared_ptr<render::StrandPass> strandPass_;
+};
+}  // namespace hp

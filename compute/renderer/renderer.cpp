@@ -1,0 +1,216 @@
+#include "compute/renderer/renderer.h"
+
+#include "engine/vk/submit.h"
+
+#include <algorithm>
+
+#include "engine/core/error.h"
+#include "compute/renderer/frame_recorder.h"
+#include "engine/vk/context.h"
+
+namespace hp {
+namespace {
+const RendererSettings& validated(const RendererSettings& s) {
+  s.validate();
+  return s;
+}
+}  // namespace
+
+Renderer::Renderer(const vk::Context& ctx, const RendererSettings& settings)
+    : ctx_(ctx),
+      settings_(validated(settings)),
+      raster_(resolveRasterMode(settings.raster, ctx.properties().deviceType)),
+      pipelines_(ctx),
+      shadows_(std::make_unique<render::ShadowMaps>(ctx, settings.opacity)),
+      frameLights_(settings.framesInFlight),
+      frameHeadShadows_(settings.framesInFlight) {}
+
+// Retired instances go while every member is alive: their destructors tell the Renderer (forgetInstance).
+// The raster target first: it refers to instances, and nothing may draw from it any more.
+Renderer::~Renderer() {
+  rasterTarget_.reset();
+  retired_.clear();
+}
+
+std::unique_ptr<HairInstance> Renderer::createInstance(const HairAsset& asset, const InstanceSettings& settings,
+                                                       const glm::mat4& initialHead) {
+  // Every upload of the instance (and of a new material's LUTs) in one submission, waited on once.
+  vk::OneShotBatch uploads(ctx_, "create instance");
+  std::unique_ptr<HairInstance> instance(new HairInstance(*this, asset, settings, initialHead));
+  uploads.submit();
+  return instance;
+}
+
+void Renderer::destroyInstance(std::unique_ptr<HairInstance> instance) {
+  if (!instance) return;
+  // Retired first: if rebuilding a raster target without it fails, it is still kept for the frames in flight.
+  const std::shared_ptr<HairInstance> retired(std::move(instance));
+  retire(retired);
+  instanceChanged(*retired, true);
+}
+
+void Renderer::setRasterTarget(VkExtent2D extent, VkImageView depth, std::span<HairInstance* const> instances) {
+  if (raster_ != RasterMode::Compute) throw Error("Renderer::setRasterTarget: the raster mode is not compute");
+  for (const HairInstance* i : instances)
+    if (!i || &i->renderer_ != this) throw Error("Renderer: an instance is null or belongs to another Renderer");
+  auto target = std::make_shared<ComputeRaster>(ctx_, settings_, *shadows_, extent, depth, instances);
+  if (rasterTarget_) retire(rasterTarget_);  // frames in flight may still use its buffers and descriptors
+  rasterTarget_ = std::move(target);
+}
+
+void Renderer::instanceChanged(const HairInstance& instance, bool removed) {
+  if (!rasterTarget_ || !rasterTarget_->holds(&instance)) return;
+  std::vector<HairInstance*> kept;
+  for (HairInstance* i : rasterTarget_->instances())
+    if (!removed || i != &instance) kept.push_back(i);
+  const std::shared_ptr<ComputeRaster> old = rasterTarget_;
+  retire(old);
+  rasterTarget_.reset();
+  if (!kept.empty()) setRasterTarget(old->extent(), old->depth(), kept);
+}
+
+void Renderer::forgetInstance(const HairInstance& instance) noexcept {
+  if (!rasterTarget_ || !rasterTarget_->holds(&instance)) return;
+  retired_.push_back({lastFrame_, std::move(rasterTarget_)});
+  rasterTarget_.reset();
+}
+
+const ComputeRaster& Renderer::target() const {
+  if (!rasterTarget_) throw Error("Renderer: the compute raster needs setRasterTarget() before recording");
+  return *rasterTarget_;
+}
+
+void Renderer::recordRaster(VkCommandBuffer cmd, std::uint64_t frame, const View& view, vk::GpuProfiler* profiler) {
+  const ComputeRaster& t = target();
+  view.validate(settings_.maxViewsPerFrame);
+  beginFrame(frame, t.instances());
+  t.record(cmd, view, frameLights_[frame % settings_.framesInFlight], frameHeadShadows_[frame % settings_.framesInFlight],
+           profiler);
+}
+
+void Renderer::recordComposite(VkCommandBuffer cmd, VkExtent2D extent, vk::GpuProfiler* profiler) const {
+  target().recordComposite(cmd, extent, profiler);
+}
+
+const vk::Image& Renderer::rasterImage() const { return target().image(); }
+
+compute::RasterStats Renderer::rasterStats() const { return target().readStats(); }
+std::vector<float> Renderer::rasterCoverage() const { return target().readCoverage(); }
+
+std::shared_ptr<render::MarschnerTextures> Renderer::marschner(const HairMaterial& material, LutMode mode) {
+  std::erase_if(luts_, [](const Lut& l) { return l.textures.expired(); });
+  for (const Lut& l : luts_)
+    if (l.mode == mode && l.material == material) return l.textures.lock();
+  auto textures = std::make_shared<render::MarschnerTextures>(ctx_, material, mode);
+  luts_.push_back({material, mode, textures});
+  return textures;
+}
+
+void Renderer::retire(std::shared_ptr<void> resource) {
+  if (!lastFrame_) return;  // nothing recorded yet: nothing can be in flight
+  retired_.push_back({lastFrame_, std::move(resource)});
+}
+
+void Renderer::setOpacityTuning(const render::OpacitySettings& opacity) {
+  const render::OpacitySettings& current = settings_.opacity;  // as asked for (the maps' may differ in `deep`)
+  if (opacity.resolution != current.resolution || opacity.format != current.format ||
+      opacity.headShadowResolution != current.headShadowResolution || opacity.raster != current.raster ||
+      opacity.deep != current.deep)
+    throw Error("setOpacityTuning: the opacity maps' resolution, format, raster and depth mode are fixed for a Renderer");
+  render::validate(opacity);
+  shadows_->setTuning(opacity);
+  settings_.opacity = opacity;
+}
+
+void Renderer::beginFrame(std::uint64_t frame, std::span<HairInstance* const> instances) {
+  for (const HairInstance* i : instances)
+    if (!i || &i->renderer_ != this) throw Error("Renderer: an instance is null or belongs to another Renderer");
+  if (!lastFrame_ || frame > *lastFrame_) lastFrame_ = frame;
+  // Frame `frame - framesInFlight` is complete (the application waited for it): what was retired by then goes.
+  std::erase_if(retired_, [&](const Retired& r) { return !r.after || frame >= *r.after + settings_.framesInFlight; });
+}
+
+void Renderer::recordUpdate(VkCommandBuffer cmd, std::uint64_t frame, std::span<HairInstance* const> instances,
+                            vk::GpuProfiler* profiler) {
+  beginFrame(frame, instances);
+  std::vector<UpdateWork> work;
+  work.reserve(instances.size());
+  for (HairInstance* i : instances)
+    work.push_back({&i->simulate_, i->motion_, &i->geometry_->tessellate, &i->geometry_->interpolate});
+  recordUpdatePasses(ctx_, cmd, work, profiler);
+}
+
+void Renderer::recordShadows(VkCommandBuffer cmd, std::uint64_t frame, const LightSpec& light,
+                             std::span<HairInstance* const> instances, vk::GpuProfiler* profiler) {
+  light.validate();
+  beginFrame(frame, instances);
+  frameLights_[frame % settings_.framesInFlight] = light;
+  render::HeadShadowView& headView = frameHeadShadows_[frame % settings_.framesInFlight];
+  headView = {};
+  makeStrandsDrawable(ctx_, cmd);
+  const render::OpacitySettings& opacity = shadows_->settings();
+  if (!opacity.enabled) return;
+  render::HeadSphere heads;
+  for (HairInstance* i : instances) heads = render::enclose(heads, i->geometry_->opacity.headSphere(i->headToWorld()));
+  headView = render::headShadowView(light, heads, opacity.headShadowResolution);
+  std::vector<ShadowCaster> casters;
+  float widest = 0.0f;
+  for (HairInstance* i : instances) {
+    const render::LookSettings& look = i->settings_.look;
+    casters.push_back({&i->geometry_->bounds, &i->geometry_->opacity, i->headToWorld(),
+                       glm::vec2(look.strandWidth, look.tipWidthFraction)});
+    widest = std::max(widest, i->settings_.look.strandWidth);
+  }
+  compute::BoundsFraming framing;
+  framing.resolution = opacity.resolution;
+  framing.marginWorld = 0.5f * widest * gpu::WIDTH_SCALE_MAX;
+  recordShadowPasses(ctx_, cmd, *shadows_, casters, shadowLightOf(light), framing, profiler, headView);
+  recordHeadBounce(cmd, light, instances, headView, profiler);
+}
+
+void Renderer::recordHeadBounce(VkCommandBuffer cmd, const LightSpec& light, std::span<HairInstance* const> instances,
+                                const render::HeadShadowView& headView, vk::GpuProfiler* profiler) {
+  const bool wanted = std::any_of(instances.begin(), instances.end(),
+                                  [](const HairInstance* i) { return i->settings_.look.skinBounce; });
+  if (!wanted || headView.params.x == 0.0f) return;  // no head (or shadows off): nothing to bounce from
+  if (profiler) profiler->begin(cmd, "head bounce");
+  // The blocks the bounce draws read: the light, colours and opacity settings, the map's framing.
+  for (HairInstance* i : instances) {
+    gpu::RenderFrame block = render::makeRenderFrame(CameraMatrices{}, {1, 1}, light, i->settings_.material,
+                                                     i->settings_.look, i->strands().layout().verticesPerStrand,
+                                                     shadows_->settings());
+    render::setHeadMaps(block, headView, i->settings_.look.skinBounce);
+    const VkBuffer buffer = i->bounceFrame_.handle();
+    vk::bufferBarrier(ctx_, cmd, buffer, vk::BufferUse::GraphicsRead, vk::BufferUse::TransferDst);
+    ctx_.fn().vkCmdUpdateBuffer(cmd, buffer, 0, sizeof(block), &block);
+    vk::bufferBarrier(ctx_, cmd, buffer, vk::BufferUse::TransferDst, vk::BufferUse::GraphicsRead);
+  }
+  const render::HeadBounceMap& map = shadows_->bounceMap();
+  map.begin(cmd);
+  for (HairInstance* i : instances) i->bounce_->draw(cmd, i->headToWorld());
+  map.end(cmd);
+  if (profiler) profiler->end(cmd);
+}
+
+void Renderer::recordDraw(VkCommandBuffer cmd, std::uint64_t frame, const View& view,
+                          std::span<HairInstance* const> instances, vk::GpuProfiler* profiler) {
+  view.validate(settings_.maxViewsPerFrame);
+  beginFrame(frame, instances);
+  const LightSpec& light = frameLights_[frame % settings_.framesInFlight];
+  const render::HeadShadowView& headView = frameHeadShadows_[frame % settings_.framesInFlight];
+  for (HairInstance* i : instances) {
+    gpu::RenderFrame* block = i->frameSlot(frame, view.index);
+    *block = render::makeRenderFrame(view.camera, view.extent, light, i->settings_.material, i->settings_.look,
+                                     i->strands().layout().verticesPerStrand, shadows_->settings());
+    render::setHeadMaps(*block, headView, i->settings_.look.skinBounce);
+    const std::uint32_t offset = i->frameOffset(frame, view.index);
+    if (profiler) profiler->begin(cmd, "head");
+    i->head_->draw(cmd, view.extent, i->headToWorld(), offset);
+    if (profiler) profiler->end(cmd);
+    if (!view.ribbons || raster_ == RasterMode::Compute) continue;
+    if (profiler) profiler->begin(cmd, "shade");
+    i->strandPass_->draw(cmd, view.extent, view.lines, offset);
+    if (profiler) profiler->end(cmd);
+  }
+}
+}  // namespace hp

@@ -1,0 +1,140 @@
+#pragma once
+// Contract: what hairpipe shares per device and attachment formats: the pipelines (one PipelineLibrary),
+// the Marschner LUT textures (cached by material and mode), the opacity shadow maps of the frame's light
+// and the retirement queue of frames in flight. It creates HairInstances (one per head) and records
+// their frames into the application's command buffers:
+//   recordUpdate(cmd, frame, instances)         outside rendering: simulate -> tessellate -> interpolate
+//   recordShadows(cmd, frame, light, instances) outside rendering: one framing over all instances, every
+//                                               instance's strands and head in the same opacity maps (heads
+//                                               shadow each other); its own vkCmdBeginRendering on its maps
+//   recordDraw(cmd, frame, view, instances)     inside the application's vkCmdBeginRendering (attachments
+//                                               matching settings.formats): heads and (graphics raster)
+//                                               hair ribbons
+// With the compute raster (settings.raster resolves to Compute), after setRasterTarget(extent, depth,
+// instances) outside the frame loop, the hair of those instances is drawn by
+//   recordDraw(cmd, frame, view, instances)     heads only; the application ends the rendering and puts
+//                                               its depth image in ImageUse::ComputeSampled
+//   recordRaster(cmd, frame, view)              outside rendering: the compute rasterizer into rasterImage()
+//   recordComposite(cmd, extent)                inside a rendering of the same attachments: hair over colour
+// once per frame in that order; recordDraw once per view (View::index distinct per view of a frame), all
+// views reusing the frame's shadows. Stages touched: COMPUTE_SHADER, COPY/CLEAR, VERTEX_SHADER,
+// FRAGMENT_SHADER, early/late fragment tests, colour output; in the application's attachments only colour
+// and depth. hairpipe never waits on a queue inside these calls.
+//
+// Frames in flight: `frame` is the application's frame number, increasing by one per frame (it may start
+// anywhere). When it records frame F, the application has waited for the completion of frame
+// F - framesInFlight (its own fences), and it submits frames in order on one queue. Per-frame constants
+// live in a ring of framesInFlight slots written by the host at record time; resources replaced by a
+// setter (material, strands, look) are retired and destroyed by a record call of frame
+// retiredAt + framesInFlight, so nothing needs a device idle. destroyInstance() retires an instance the
+// same way. The Renderer must outlive its instances and the GPU's use of everything it recorded.
+//
+// Errors (hp::Error): the constructor, createInstance and the instance setters (invalid parameters, device
+// limits, out of memory); recordShadows for an invalid light and recordDraw for an invalid view (checked
+// before anything is recorded); any record call for an instance of another Renderer; setRasterTarget
+// (graphics mode, no instance, device limits) and recordRaster/recordComposite/rasterImage without a
+// raster target (none set, or dropped because one of its instances was destroyed without
+// destroyInstance). Nothing else in the record calls throws.
+#include <memory>
+#include <optional>
+#include <span>
+#include <vector>
+
+#include "compute/renderer/compute_raster.h"
+#include "compute/renderer/hair_instance.h"
+#include "compute/shadows/shadow_maps.h"
+#include "compute/renderer/renderer_settings.h"
+#include "engine/vk/pipeline_library.h"
+#include "engine/vk/profiler.h"
+
+namespace hp {
+class Renderer {
+ public:
+  Renderer(const vk::Context& ctx, const RendererSettings& settings);
+  ~Renderer();
+  Renderer(const Renderer&) = delete;
+  Renderer& operator=(const Renderer&) = delete;
+
+  std::unique_ptr<HairInstance> createInstance(const HairAsset& asset, const InstanceSettings& settings,
+                                               const glm::mat4& initialHead = glm::mat4(1.0f));
+  // Destroys the instance after the frames that may still use it are done.
+  void destroyInstance(std::unique_ptr<HairInstance> instance);
+
+  void recordUpdate(VkCommandBuffer cmd, std::uint64_t frame, std::span<HairInstance* const> instances,
+                    vk::GpuProfiler* profiler = nullptr);
+  void recordShadows(VkCommandBuffer cmd, std::uint64_t frame, const LightSpec& light,
+                     std::span<HairInstance* const> instances, vk::GpuProfiler* profiler = nullptr);
+  void recordDraw(VkCommandBuffer cmd, std::uint64_t frame, const View& view,
+                  std::span<HairInstance* const> instances, vk::GpuProfiler* profiler = nullptr);
+
+  // Compute raster only, outside the frame loop: rasterize `instances` (all in one set of tile lists)
+  // into an image of `extent` against the depth image view `depth`, which has the settings'
+  // AttachmentFormats sample count: multisampled, the head's edges over the hair are antialiased by its
+  // samples (the composite then draws into attachments of that count). Rebuilt by the Renderer when one of
+  // them changes strands or material or is destroyed; call again for another extent or set.
+  void setRasterTarget(VkExtent2D extent, VkImageView depth, std::span<HairInstance* const> instances);
+  // After recordDraw of the frame's view (heads drawn, depth in ImageUse::ComputeSampled), with the
+  // light recordShadows was given; leaves rasterImage() in ImageUse::FragmentSampled. View::index is unused
+  // (one raster target: one view of a frame).
+  void recordRaster(VkCommandBuffer cmd, std::uint64_t frame, const View& view, vk::GpuProfiler* profiler = nullptr);
+  void recordComposite(VkCommandBuffer cmd, VkExtent2D extent, vk::GpuProfiler* profiler = nullptr) const;
+  RasterMode raster() const { return raster_; }
+  const vk::Image& rasterImage() const;
+  compute::RasterStats rasterStats() const;  // blocking readback of the last frame's tile-list statistics
+  // Blocking readback of the last frame's hair coverage per pixel (rows top to bottom), averaged over the
+  // depth's samples (compute::StrandRasterPass::readCoverage).
+  std::vector<float> rasterCoverage() const;
+
+  // Shadow tuning that keeps the maps' resolution and format (strand/head opacity, k, bias, on/off).
+  void setOpacityTuning(const render::OpacitySettings& opacity);
+
+  const RendererSettings& settings() const { return settings_; }
+  const vk::Context& context() const { return ctx_; }
+  const render::ShadowMaps& shadows() const { return *shadows_; }
+  // The head depth map's framing that recordShadows chose for `frame` (for a caller's own frame block).
+  const render::HeadShadowView& headShadowOf(std::uint64_t frame) const {
+    return frameHeadShadows_[frame % settings_.framesInFlight];
+  }
+  vk::PipelineLibrary& pipelines() { return pipelines_; }
+  // The LUT textures of a material and mode, built once and shared while any instance uses them.
+  std::shared_ptr<render::MarschnerTextures> marschner(const HairMaterial& material, LutMode mode);
+  // Keeps `resource` alive until the frames that may use it now are done.
+  void retire(std::shared_ptr<void> resource);
+  std::size_t retiredCount() const { return retired_.size(); }
+
+ private:
+  friend class HairInstance;
+  void beginFrame(std::uint64_t frame, std::span<HairInstance* const> instances);
+  // An instance's strands or material changed, or it goes (`removed`): the raster target follows.
+  void instanceChanged(const HairInstance& instance, bool removed = false);
+  // An instance destroyed without destroyInstance(): a raster target holding it is dropped (retired, not
+  // rebuilt: nothing may throw here); recordRaster then asks for setRasterTarget().
+  void forgetInstance(const HairInstance& instance) noexcept;
+  const ComputeRaster& target() const;
+  // The heads into the head bounce map when an instance's look asks for the skin's bounce (after the shadows).
+  void recordHeadBounce(VkCommandBuffer cmd, const LightSpec& light, std::span<HairInstance* const> instances,
+                        const render::HeadShadowView& headView, vk::GpuProfiler* profiler);
+
+  struct Lut {
+    HairMaterial material;
+    LutMode mode;
+    std::weak_ptr<render::MarschnerTextures> textures;
+  };
+  struct Retired {
+    std::optional<std::uint64_t> after;  // last frame recorded when it was retired
+    std::shared_ptr<void> resource;
+  };
+
+  const vk::Context& ctx_;
+  RendererSettings settings_;
+  RasterMode raster_;
+  vk::PipelineLibrary pipelines_;
+  std::unique_ptr<render::ShadowMaps> shadows_;
+  std::vector<Lut> luts_;
+  std::vector<LightSpec> frameLights_;  // per ring slot: the light recordShadows was given
+  std::vector<render::HeadShadowView> frameHeadShadows_;  // per ring slot: the heads' depth map framing
+  std::vector<Retired> retired_;
+  std::optional<std::uint64_t> lastFrame_;
+  std::shared_ptr<ComputeRaster> rasterTarget_;  // retired through retire() when replaced
+};
+}  // namespace hp

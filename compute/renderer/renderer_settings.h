@@ -1,0 +1,61 @@
+#pragma once
+// Contract: the parameters of hp::Renderer (per device and attachment formats), of each hp::HairInstance
+// (per head) and of one view of a frame. Pure host data; validate() throws hp::Error naming the field,
+// and the Renderer/instance calls that take them validate them there, so recording never throws for them.
+#include "hairpipe_volk.h"
+
+#include <cstdint>
+
+#include "compute/strands/scalp_input.h"
+#include "compute/strands/strand_buffers.h"
+#include "compute/raster/strand_raster_pass.h"
+#include "engine/core/hair/scene.h"
+#include "engine/core/hair/sim_params.h"
+#include "hairpipe/settings.h"
+#include "compute/raster/camera.h"
+#include "compute/raster/frame_block.h"
+#include "compute/shadows/opacity_settings.h"
+#include "engine/core/shading/lut.h"
+#include "engine/core/shading/material.h"
+
+namespace hp {
+inline constexpr std::uint32_t kMaxFramesInFlight = 8;
+inline constexpr std::uint32_t kMaxViewsPerFrame = 16;
+
+struct RendererSettings {
+  hairpipe::AttachmentFormats formats;  // the application's attachments the draws go into
+  render::OpacitySettings opacity;    // the shared opacity shadow maps (one light)
+  std::uint32_t framesInFlight = 2;   // [1, kMaxFramesInFlight]
+  std::uint32_t maxViewsPerFrame = 4; // [1, kMaxViewsPerFrame]: draws of one frame with different cameras
+  // How hair reaches the camera: Graphics (ribbons in recordDraw) or Compute (setRasterTarget,
+  // recordRaster, recordComposite; recordDraw draws the heads only). Auto resolves per device type
+  // (resolveRasterMode). Graphics by default: an embedding that only calls recordDraw keeps drawing hair.
+  RasterMode raster = RasterMode::Graphics;
+  compute::RasterSettings rasterSettings;
+  void validate() const;
+};
+
+struct InstanceSettings {
+  SimulationParams simulation;
+  HairMaterial material;
+  LutMode lutMode = LutMode::Physical;
+  compute::StrandOptions strands;
+  render::LookSettings look;
+  ScalpInput scalp;  // where the roots come from: rigid head (default), skinned root frames, or bones
+  void validate() const;
+};
+
+// Auto -> the path measured faster on this device type (docs/PERFORMANCE.md "Compute rasterizer").
+RasterMode resolveRasterMode(RasterMode mode, VkPhysicalDeviceType type);
+
+// One camera of a frame. Several views of one frame (a mirror, split screen) reuse its update and
+// shadows; each needs its own `index`, below RendererSettings::maxViewsPerFrame.
+struct View {
+  CameraMatrices camera;
+  VkExtent2D extent{1, 1};
+  bool lines = false;       // strands as 1-pixel lines instead of ribbons (debugging)
+  std::uint32_t index = 0;  // which of the frame's views
+  bool ribbons = true;      // false: heads only (the hair comes from the compute rasterizer)
+  void validate(std::uint32_t maxViews) const;
+};
+}  // namespace hp

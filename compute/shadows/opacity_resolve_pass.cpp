@@ -1,0 +1,72 @@
+#include "compute/shadows/opacity_resolve_pass.h"
+
+#include <string>
+
+#include "engine/core/error.h"
+#include "engine/vk/context.h"
+#include "shaders/shared/opacity.h"
+
+namespace hp::compute {
+namespace {
+constexpr VkShaderStageFlags kCompute = VK_SHADER_STAGE_COMPUTE_BIT;
+const vk::Binding kBindings[] = {
+    {gpu::OPACITY_RESOLVE_BINDING_BINS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kCompute},
+    {gpu::OPACITY_RESOLVE_BINDING_MAPS, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, kCompute},
+    {gpu::OPACITY_RESOLVE_BINDING_FIRST, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kCompute},
+};
+
+VkDeviceSize checkedBinBytes(const vk::Context& ctx, std::uint32_t resolution) {
+  const VkDeviceSize bytes = OpacityResolvePass::binBytes(resolution);
+  const VkDeviceSize limit = ctx.properties().limits.maxStorageBufferRange;
+  if (bytes > limit)
+    throw Error("compute opacity maps: " + std::to_string(resolution) + "^2 texels x 16 slices need " +
+                std::to_string(bytes) + " bytes of bins, past the device's maxStorageBufferRange (" +
+                std::to_string(limit) + " bytes); use a lower resolution, or the graphics or auto opacity raster");
+  return bytes;
+}
+
+const char* resolveShader(VkFormat format) {
+  if (format == VK_FORMAT_R32G32B32A32_SFLOAT) return "opacity_resolve_rgba32f.comp";
+  if (format == VK_FORMAT_R16G16B16A16_SFLOAT) return "opacity_resolve_rgba16f.comp";
+  throw Error("compute opacity maps: the format must be RGBA32F or RGBA16F");
+}
+}  // namespace
+
+VkDeviceSize OpacityResolvePass::binBytes(std::uint32_t resolution) {
+  return VkDeviceSize(resolution) * resolution * gpu::OPACITY_SLICES * sizeof(std::uint32_t);
+}
+
+bool OpacityResolvePass::fits(const vk::Context& ctx, std::uint32_t resolution) {
+  return binBytes(resolution) <= ctx.properties().limits.maxStorageBufferRange;
+}
+
+OpacityResolvePass::OpacityResolvePass(const vk::Context& ctx, std::uint32_t resolution, VkFormat format,
+                                       VkImageView maps, bool deep, vk::PipelineLibrary* library)
+    : ctx_(&ctx),
+      resolution_(resolution),
+      deep_(deep),
+      bins_(ctx, checkedBinBytes(ctx, resolution), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+            vk::MemoryKind::DeviceLocal, "opacity bins"),
+      first_(ctx, VkDeviceSize(resolution) * resolution * sizeof(std::uint32_t),
+             VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT, vk::MemoryKind::DeviceLocal,
+             "opacity first hair"),
+      set_(ctx, kBindings, "opacity resolve") {
+  set_.writeStorageBuffer(gpu::OPACITY_RESOLVE_BINDING_BINS, bins_.handle());
+  set_.writeStorageImage(gpu::OPACITY_RESOLVE_BINDING_MAPS, maps);
+  set_.writeStorageBuffer(gpu::OPACITY_RESOLVE_BINDING_FIRST, first_.handle());
+  pipeline_ = vk::makeComputePipeline(ctx, library, resolveShader(format), gpu::OPACITY_RESOLVE_WORKGROUP_SIZE,
+                                      {set_.layout()}, sizeof(gpu::OpacityResolvePush), "opacity resolve");
+}
+
+void OpacityResolvePass::recordClear(VkCommandBuffer cmd) const {
+  ctx_->fn().vkCmdFillBuffer(cmd, bins_.handle(), 0, VK_WHOLE_SIZE, 0u);
+  if (deep_) ctx_->fn().vkCmdFillBuffer(cmd, first_.handle(), 0, VK_WHOLE_SIZE, 0xFFFFFFFFu);  // no hair yet
+}
+
+void OpacityResolvePass::recordResolve(VkCommandBuffer cmd) const {
+  const gpu::OpacityResolvePush push{resolution_, deep_ ? 1u : 0u};
+  pipeline_->bind(cmd, set_.set());
+  pipeline_->push(cmd, push);
+  pipeline_->dispatch(cmd, resolution_ * resolution_);
+}
+}  // namespace hp::compute

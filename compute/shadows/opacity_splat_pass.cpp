@@ -1,0 +1,52 @@
+#include "compute/shadows/opacity_splat_pass.h"
+
+#include <string>
+
+#include "engine/vk/barriers.h"
+#include "shaders/shared/opacity.h"
+
+namespace hp::compute {
+namespace {
+constexpr VkShaderStageFlags kCompute = VK_SHADER_STAGE_COMPUTE_BIT;
+constexpr VkDescriptorType kStorage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+const vk::Binding kBindings[] = {
+    {gpu::OPACITY_SPLAT_BINDING_POSITIONS, kStorage, kCompute},
+    {gpu::OPACITY_SPLAT_BINDING_LIGHT, kStorage, kCompute},
+    {gpu::OPACITY_SPLAT_BINDING_BINS, kStorage, kCompute},
+    {gpu::OPACITY_SPLAT_BINDING_FIRST, kStorage, kCompute},
+};
+}  // namespace
+
+OpacitySplatPass::OpacitySplatPass(const vk::Context& ctx, const StrandBuffers& strands, const vk::Buffer& lightSpace,
+                                   const vk::Buffer& bins, const vk::Buffer& first, std::uint32_t resolution,
+                                   vk::PipelineLibrary* library)
+    : ctx_(&ctx), resolution_(resolution), verticesPerStrand_(strands.layout().verticesPerStrand) {
+  for (const StrandChunk& c : strands.chunks()) {
+    Chunk chunk{vk::DescriptorSet(ctx, kBindings, "opacity splat [chunk " + std::to_string(chunks_.size()) + "]"),
+                c.range.strandCount * (verticesPerStrand_ - 1)};
+    chunk.set.writeStorageBuffer(gpu::OPACITY_SPLAT_BINDING_POSITIONS, c.positions.handle());
+    chunk.set.writeStorageBuffer(gpu::OPACITY_SPLAT_BINDING_LIGHT, lightSpace.handle());
+    chunk.set.writeStorageBuffer(gpu::OPACITY_SPLAT_BINDING_BINS, bins.handle());
+    chunk.set.writeStorageBuffer(gpu::OPACITY_SPLAT_BINDING_FIRST, first.handle());
+    chunks_.push_back(std::move(chunk));
+  }
+  pipeline_ = vk::makeComputePipeline(ctx, library, "opacity_splat.comp", gpu::OPACITY_SPLAT_WORKGROUP_SIZE,
+                                      {chunks_.front().set.layout()}, sizeof(gpu::OpacitySplatPush), "opacity splat");
+}
+
+void OpacitySplatPass::record(VkCommandBuffer cmd, const SplatFootprint& f, std::uint32_t mode) const {
+  gpu::OpacitySplatPush push{};
+  push.footprint = glm::vec4(f.strandWidth, 1.0f / float(resolution_), f.footprint ? 1.0f : 0.0f);
+  push.opacity = f.footprint ? 1.0f : f.opacity;
+  push.verticesPerStrand = verticesPerStrand_;
+  push.resolution = resolution_;
+  push.mode = mode;
+  for (std::size_t i = 0; i < chunks_.size(); ++i) {
+    if (i > 0) vk::memoryBarrier(*ctx_, cmd, vk::BufferUse::ComputeWrite, vk::BufferUse::ComputeWrite);
+    push.segmentCount = chunks_[i].segmentCount;
+    pipeline_->bind(cmd, chunks_[i].set.set());
+    pipeline_->push(cmd, push);
+    pipeline_->dispatch(cmd, push.segmentCount);
+  }
+}
+}  // namespace hp::compute

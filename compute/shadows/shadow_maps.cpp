@@ -1,0 +1,104 @@
+#include "compute/shadows/shadow_maps.h"
+
+#include "compute/shadows/bounds_pass.h"
+#include "engine/core/error.h"
+#include "engine/vk/attachments.h"
+#include "engine/vk/barriers.h"
+#include "engine/vk/context.h"
+#include "engine/vk/submit.h"
+#include "shaders/shared/opacity.h"
+
+namespace hp::render {
+namespace {
+const OpacitySettings& validated(const OpacitySettings& s) {
+  validate(s);
+  return s;
+}
+
+bool onCompute(const vk::Context& ctx, const OpacitySettings& s) {
+  if (s.raster == OpacityRaster::Auto) return compute::OpacityResolvePass::fits(ctx, s.resolution);
+  return s.raster == OpacityRaster::Compute;
+}
+
+vk::Image makeImage(const vk::Context& ctx, const OpacitySettings& settings) {
+  vk::ImageDesc desc;
+  desc.width = desc.height = settings.resolution;
+  desc.layers = gpu::OPACITY_LAYERS;
+  desc.format = settings.format;
+  desc.usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
+               VK_IMAGE_USAGE_TRANSFER_DST_BIT;
+  if (onCompute(ctx, settings)) desc.usage |= VK_IMAGE_USAGE_STORAGE_BIT;
+  desc.name = "opacity maps";
+  return vk::Image(ctx, desc);
+}
+
+vk::Image makeHeadImage(const vk::Context& ctx, const OpacitySettings& settings) {
+  vk::ImageDesc desc;
+  desc.width = desc.height = settings.headShadowResolution;
+  desc.format = ShadowMaps::kHeadDepthFormat;
+  desc.usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT;
+  desc.name = "head shadow map";
+  return vk::Image(ctx, desc);
+}
+
+}  // namespace
+
+ShadowMaps::ShadowMaps(const vk::Context& ctx, const OpacitySettings& settings)
+    : ctx_(&ctx),
+      settings_(validated(settings)),
+      lightSpace_(ctx, sizeof(gpu::LightSpace),
+                  VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                  vk::MemoryKind::DeviceLocal, "light space"),
+      image_(makeImage(ctx, settings_)),
+      sampler_(ctx, "opacity sampler"),
+      headImage_(makeHeadImage(ctx, settings_)),
+      headSampler_(ctx, "head shadow sampler", VK_COMPARE_OP_LESS_OR_EQUAL),
+      bounce_(ctx) {
+  if (onCompute(ctx, settings_))
+    resolve_ = std::make_unique<compute::OpacityResolvePass>(ctx, settings_.resolution, settings_.format, image_.view(),
+                                                             settings_.deep);
+  settings_.deep = settings_.deep && resolve_ != nullptr;  // the graphics path draws global slices
+  const gpu::LightSpace initial = compute::initialLightSpace();
+  vk::submitAndWait(ctx, [&](VkCommandBuffer cmd) {
+    ctx.fn().vkCmdUpdateBuffer(cmd, lightSpace_.handle(), 0, sizeof(initial), &initial);
+    vk::bufferBarrier(ctx, cmd, lightSpace_.handle(), vk::BufferUse::TransferDst, vk::BufferUse::GraphicsRead);
+    vk::imageBarrier(ctx, cmd, image_.handle(), VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::Undefined,
+                     vk::ImageUse::TransferDst, gpu::OPACITY_LAYERS);
+    const VkClearColorValue zero{{0.0f, 0.0f, 0.0f, 0.0f}};
+    const VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, gpu::OPACITY_LAYERS};
+    ctx.fn().vkCmdClearColorImage(cmd, image_.handle(), vk::imageLayout(vk::ImageUse::TransferDst), &zero, 1, &range);
+    vk::imageBarrier(ctx, cmd, image_.handle(), VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::TransferDst,
+                     vk::ImageUse::FragmentSampled, gpu::OPACITY_LAYERS);
+    vk::imageBarrier(ctx, cmd, headImage_.handle(), VK_IMAGE_ASPECT_DEPTH_BIT, vk::ImageUse::Undefined,
+                     vk::ImageUse::DepthAttachment);
+    beginHeadRendering(cmd);
+    endRendering(cmd);
+    vk::imageBarrier(ctx, cmd, headImage_.handle(), VK_IMAGE_ASPECT_DEPTH_BIT, vk::ImageUse::DepthAttachment,
+                     vk::ImageUse::FragmentSampled);
+  }, "clear opacity maps");
+}
+
+void ShadowMaps::beginRendering(VkCommandBuffer cmd, bool keep) const {
+  VkRenderingAttachmentInfo attachments[gpu::OPACITY_TARGETS];
+  for (std::uint32_t t = 0; t < gpu::OPACITY_TARGETS; ++t)
+    attachments[t] = vk::colorAttachment(image_.layerView(t), keep ? VK_ATTACHMENT_LOAD_OP_LOAD : VK_ATTACHMENT_LOAD_OP_CLEAR);
+  VkRenderingInfo info{VK_STRUCTURE_TYPE_RENDERING_INFO};
+  info.renderArea = {{0, 0}, image_.extent()};
+  info.layerCount = 1;
+  info.colorAttachmentCount = gpu::OPACITY_TARGETS;
+  info.pColorAttachments = attachments;
+  ctx_->fn().vkCmdBeginRendering(cmd, &info);
+}
+
+void ShadowMaps::endRendering(VkCommandBuffer cmd) const { ctx_->fn().vkCmdEndRendering(cmd); }
+
+void ShadowMaps::beginHeadRendering(VkCommandBuffer cmd) const {
+  VkRenderingAttachmentInfo depth =
+      vk::depthAttachment(headImage_.view(), VK_ATTACHMENT_LOAD_OP_CLEAR, VK_ATTACHMENT_STORE_OP_STORE);
+  VkRenderingInfo info{VK_STRUCTURE_TYPE_RENDERING_INFO};
+  info.renderArea = {{0, 0}, headImage_.extent()};
+  info.layerCount = 1;
+  info.pDepthAttachment = &depth;
+  ctx_->fn().vkCmdBeginRendering(cmd, &info);
+}
+}  // namespace hp::render

@@ -1,0 +1,45 @@
+#pragma once
+// Contract: the interpolation pass (docs/THEORY.md §1.4, shaders/interpolate.comp). Fills every scalp
+// triangle with render strands K_j = X1 A_j + X2 B_j + X3 C_j from its three smoothed guides, with
+// renormalised blended tangents and per-strand attributes (random, width and colour scales; see
+// makeStrandAttributes in shaders/shared/strands.h). In guides-only layouts (StrandOptions::guidesOnly)
+// it copies the smoothed guides instead, one render strand per guide. Owns its pipeline and one
+// descriptor set per chunk; record() adds one dispatch per chunk (one invocation per strand) and
+// inserts no barriers. The frame recorder guarantees:
+//   before record: smoothed guides in BufferUse::ComputeRead (after TessellatePass's ComputeWrite);
+//                  triangles and bindings in ComputeRead (StrandBuffers leaves them there);
+//                  render strand buffers no longer read by the previous frame (last use -> ComputeWrite).
+//   after record:  chunk positions, tangents and attributes are in BufferUse::ComputeWrite; barrier
+//                  them to VertexRead/GraphicsRead for the draw passes (or TransferSrc for readback).
+#include "hairpipe_volk.h"
+
+#include <vector>
+
+#include "compute/strands/strand_buffers.h"
+#include "engine/vk/descriptors.h"
+#include "engine/vk/pipeline_library.h"
+#include "engine/vk/profiler.h"
+#include "shaders/shared/strands.h"
+
+namespace hp::compute {
+class InterpolatePass {
+ public:
+  InterpolatePass(const vk::Context& ctx, const StrandBuffers& buffers, vk::PipelineLibrary* library = nullptr);
+
+  // After StrandBuffers was re-allocated (density, Q, guides-only change); outside the frame loop only.
+  void bind(const StrandBuffers& buffers);
+  void record(VkCommandBuffer cmd, vk::GpuProfiler* profiler = nullptr) const;
+
+ private:
+  struct Chunk {
+    vk::DescriptorSet set;
+    gpu::InterpolatePush push;
+  };
+  const vk::Context* ctx_;
+  // The pipeline layout is made from this set's layout; chunk sets have identical layouts, so they
+  // are compatible, and chunk sets can be rebuilt without touching the pipeline.
+  vk::DescriptorSet layoutSet_;
+  std::shared_ptr<const vk::ComputePipeline> pipeline_;
+  std::vector<Chunk> chunks_;
+};
+}  // namespace hp::compute

@@ -1,0 +1,52 @@
+#include "engine/core/hair/atomic_write.h"
+
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <string>
+
+#include "engine/core/error.h"
+
+namespace hp {
+namespace {
+// 0 on success, else the errno of the failing write.
+int writeAll(int fd, std::span<const std::byte> bytes) {
+  std::size_t done = 0;
+  while (done < bytes.size()) {
+    ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) return n < 0 ? errno : EIO;
+    done += static_cast<std::size_t>(n);
+  }
+  return 0;
+}
+
+// Writes, flushes and closes fd; 0 on success, else the first errno.
+int finishFile(int fd, std::span<const std::byte> bytes) {
+  int err = writeAll(fd, bytes);
+  if (!err) ::fchmod(fd, 0644);  // mkstemp creates 0600; an asset should be readable like any file
+  if (!err && ::fsync(fd) != 0) err = errno;
+  if (::close(fd) != 0 && !err) err = errno;
+  return err;
+}
+}  // namespace
+
+void writeFileAtomically(const std::filesystem::path& path, std::span<const std::byte> bytes) {
+  std::filesystem::path dir = path.parent_path().empty() ? "." : path.parent_path();
+  std::string name = path.filename().string();
+  name.insert(0, 1, '.');  // hidden while incomplete (and avoids a GCC 12 -Wrestrict false positive)
+  name += ".tmp-XXXXXX";
+  std::string tmpl = (dir / name).string();
+  int fd = ::mkstemp(tmpl.data());
+  if (fd < 0) throw Error(path.string() + ": cannot create a temporary file: " + std::strerror(errno));
+  int err = finishFile(fd, bytes);
+  if (!err && std::rename(tmpl.c_str(), path.c_str()) != 0) err = errno;
+  if (err) {
+    std::remove(tmpl.c_str());
+    throw Error(path.string() + ": cannot write: " + std::strerror(err));
+  }
+}
+}  // namespace hp

@@ -1,0 +1,80 @@
+#include "engine/core/hair/hair_import.h"
+
+#include <algorithm>
+
+#include "engine/core/error.h"
+#include "engine/core/hair/fit_sphere.h"
+#include "engine/core/hair/head_mesh.h"
+#include "engine/core/hair/segment_profile.h"
+
+namespace hp {
+namespace {
+GuideSet keepAsIs(const HairFileData& data, const HairImportOptions& options, const std::string& source) {
+  const std::uint32_t P = data.strandPointCount(0);
+  for (std::uint32_t s = 1; s < data.strandCount; ++s)
+    if (data.strandPointCount(s) != P)
+      throw Error(source + ": keeping strands as they are needs one point count for all strands; strand 0 has " +
+                  std::to_string(P) + ", strand " + std::to_string(s) + " has " +
+                  std::to_string(data.strandPointCount(s)));
+  checkParticlesPerGuide(P, source.c_str());
+  GuideSet guides;
+  guides.particlesPerGuide = P;
+  guides.positions.resize(data.points.size());
+  std::transform(data.points.begin(), data.points.end(), guides.positions.begin(),
+                 [&](const glm::vec3& p) { return options.transform.applyToPoint(p); });
+  return guides;
+}
+
+std::vector<SphereCollider> fittedColliders(const GuideSet& guides) {
+  std::vector<glm::vec3> roots = guides.roots();
+  return {fitSphere(roots).sphere};
+}
+
+HeadMesh collidersMesh(const std::vector<SphereCollider>& colliders) {
+  HeadMesh mesh;
+  for (const auto& c : colliders) appendMesh(mesh, makeEllipsoidMesh(c.center, glm::vec3(c.radius * 0.98f)));
+  return mesh;
+}
+}  // namespace
+
+GuideSet guidesFromHair(const HairFileData& data, const HairImportOptions& options, const std::string& source) {
+  validateHairData(data, source);
+  options.transform.validate();
+  if (options.keepStrands) return keepAsIs(data, options, source);
+  checkParticlesPerGuide(options.particlesPerGuide, source.c_str());
+  const std::uint32_t P = options.particlesPerGuide;
+  GuideSet guides;
+  guides.particlesPerGuide = P;
+  guides.positions.resize(std::size_t(data.strandCount) * P);
+  std::uint32_t offset = 0;
+  for (std::uint32_t s = 0; s < data.strandCount; ++s) {
+    std::uint32_t n = data.strandPointCount(s);
+    auto out = guides.guide(s);
+    resamplePolyline({data.points.data() + offset, n}, P, options.segmentRatio, out);
+    for (auto& p : out) p = options.transform.applyToPoint(p);  // affine: commutes with resampling
+    offset += n;
+  }
+  return guides;
+}
+
+HairAsset assembleImportedAsset(GuideSet guides, std::vector<glm::uvec3> triangles,
+                                const HairImportOptions& options, std::string name) {
+  HairAsset asset;
+  asset.name = std::move(name);
+  asset.colliders = options.colliders ? *options.colliders : fittedColliders(guides);
+  asset.topology = buildInterpolationTopology(guides.roots(), std::move(triangles), options.density);
+  asset.guides = std::move(guides);
+  asset.head = collidersMesh(asset.colliders);
+  return asset;
+}
+
+HairAsset importHairAsset(const HairFileData& data, const HairImportOptions& options, const std::string& source) {
+  GuideSet guides = guidesFromHair(data, options, source);
+  std::vector<glm::vec3> roots = guides.roots();
+  SphereFit fit = fitSphere(roots);
+  RootTriangulation tri = triangulateRoots(roots, fit.sphere.center, options.triangulation);
+  if (tri.triangles.empty())
+    throw Error(source + ": cannot triangulate the strand roots (too few, or all on one line or circle)");
+  return assembleImportedAsset(std::move(guides), std::move(tri.triangles), options, source);
+}
+}  // namespace hp

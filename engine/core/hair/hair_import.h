@@ -1,0 +1,38 @@
+#pragma once
+// Contract: turns a .hair model into a HairAsset. Every strand becomes a guide: resampled to
+// particlesPerGuide points with root-increasing spacing (segmentRatio), or kept as is when
+// keepStrands is set (then every strand must have the same point count, in [2, 64]). Points map into
+// head space through `transform`. Roots are triangulated (triangulateRoots) around a sphere fitted to
+// them; that sphere is also the head collider unless `colliders` gives the colliders explicitly. The
+// head mesh is one sphere slightly inside each collider. Throws hp::Error naming `source`.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "engine/core/hair/collider.h"
+#include "engine/core/hair/guide_set.h"
+#include "engine/core/hair/hair_asset.h"
+#include "engine/core/hair/hair_file.h"
+#include "engine/core/hair/model_transform.h"
+#include "engine/core/hair/root_topology.h"
+#include "engine/core/hair/strand_topology.h"
+
+namespace hp {
+struct HairImportOptions {
+  ModelTransform transform;
+  bool keepStrands = false;
+  std::uint32_t particlesPerGuide = kDefaultParticlesPerGuide;
+  float segmentRatio = 1.3f;
+  RootTriangulationOptions triangulation;
+  DensityOptions density;
+  std::optional<std::vector<SphereCollider>> colliders;  // empty optional: fit one to the roots
+};
+
+GuideSet guidesFromHair(const HairFileData& data, const HairImportOptions& options, const std::string& source);
+
+// Builds topology, colliders and head mesh around existing guides (shared by .hair and .obj imports).
+HairAsset assembleImportedAsset(GuideSet guides, std::vector<glm::uvec3> triangles,
+                                const HairImportOptions& options, std::string name);
+
+HairAsset importHairAsset(const HairFileData& data, const HairImportOptions& options, const std::string& source);
+}  // namespace hp

@@ -1,0 +1,34 @@
+#include "engine/core/hair/model_transform.h"
+
+#include <cmath>
+
+#include "engine/core/error.h"
+
+namespace hp {
+namespace {
+glm::vec3 rotateUp(const glm::vec3& v, UpAxis up) {
+  return up == UpAxis::Z ? glm::vec3(v.x, v.z, -v.y) : v;
+}
+}  // namespace
+
+glm::vec3 ModelTransform::applyToPoint(const glm::vec3& p) const {
+  return rotateUp(p * scale, up) + translation;
+}
+
+glm::vec3 ModelTransform::applyToNormal(const glm::vec3& n) const { return rotateUp(n, up); }
+
+void ModelTransform::validate() const {
+  if (!std::isfinite(scale) || scale <= 0.0f)
+    throw Error("model transform: scale must be positive, got " + std::to_string(scale));
+  if (!std::isfinite(translation.x + translation.y + translation.z))
+    throw Error("model transform: translation is not finite");
+}
+
+UpAxis parseUpAxis(const std::string& text) {
+  if (text == "y" || text == "Y") return UpAxis::Y;
+  if (text == "z" || text == "Z") return UpAxis::Z;
+  throw Error("up axis must be \"y\" or \"z\", got \"" + text + "\"");
+}
+
+const char* upAxisName(UpAxis up) { return up == UpAxis::Z ? "z" : "y"; }
+}  // namespace hp

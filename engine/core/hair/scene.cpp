@@ -1,0 +1,55 @@
+// What scene.h declares: LightSpec's spot constructor and the range checks shared by the scene file, the
+// CLI and the render job; RasterMode's names.
+#include "engine/core/hair/scene.h"
+
+#include <cmath>
+#include <string>
+
+#include "engine/core/error.h"
+
+namespace hp {
+namespace {
+bool finiteVec(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+}  // namespace
+
+LightSpec LightSpec::makeSpot(const glm::vec3& position, const glm::vec3& target, float coneDeg) {
+  LightSpec l;
+  l.type = Type::Spot;
+  l.position = position;
+  l.direction = position - target;  // toward the light; normalised by validate's caller
+  const float len = glm::length(l.direction);
+  if (!finiteVec(position) || !finiteVec(target)) throw Error("spot position and target must be finite");
+  if (!(len > 1e-6f)) throw Error("spot target must differ from its position");
+  l.direction /= len;
+  l.coneDeg = coneDeg;
+  l.validate();
+  return l;
+}
+
+void LightSpec::validate() const {
+  const float len = glm::length(direction);
+  if (!std::isfinite(len) || std::abs(len - 1.0f) > 1e-3f) throw Error("light direction must be a unit vector");
+  if (!finiteVec(color) || !glm::all(glm::greaterThanEqual(color, glm::vec3(0.0f))))
+    throw Error("light color components must be >= 0");
+  if (!(std::isfinite(intensity) && intensity >= 0.0f)) throw Error("light intensity must be >= 0");
+  if (type == Type::Directional) return;
+  if (!finiteVec(position)) throw Error("spot position must be finite");
+  if (!(coneDeg > 0.0f && coneDeg <= 80.0f)) throw Error("spot coneDeg must be in (0, 80], got " + std::to_string(coneDeg));
+  if (!(std::isfinite(range) && range >= 0.0f)) throw Error("spot range must be >= 0 (0: no distance falloff)");
+}
+RasterMode parseRasterMode(const std::string& text) {
+  if (text == "auto") return RasterMode::Auto;
+  if (text == "compute") return RasterMode::Compute;
+  if (text == "graphics") return RasterMode::Graphics;
+  throw Error("raster must be auto, compute or graphics, got '" + text + "'");
+}
+
+const char* rasterModeName(RasterMode mode) {
+  switch (mode) {
+    case RasterMode::Auto: return "auto";
+    case RasterMode::Compute: return "compute";
+    case RasterMode::Graphics: return "graphics";
+  }
+  return "auto";
+}
+}  // namespace hp

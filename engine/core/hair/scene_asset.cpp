@@ -1,0 +1,100 @@
+// Scene -> HairAsset: dispatch on the model kind, then apply the scene's overrides.
+#include <cctype>
+
+#include "engine/core/error.h"
+#include "engine/core/hair/default_head.h"
+#include "engine/core/hair/head_mesh.h"
+#include "engine/core/hair/fit_sphere.h"
+#include "engine/core/hair/hair_import.h"
+#include "engine/core/hair/obj_import.h"
+#include "engine/core/hair/scene.h"
+#include "engine/core/hair/sdf_mesh.h"
+#include "engine/core/hair/tfx_file.h"
+
+namespace hp {
+namespace {
+HairImportOptions importOptions(const Scene& scene) {
+  HairImportOptions o;
+  o.transform = scene.model.transform;
+  o.keepStrands = scene.model.keepStrands;
+  o.particlesPerGuide = scene.growth.particlesPerGuide;
+  o.segmentRatio = scene.growth.segmentRatio;
+  o.density = scene.density;
+  o.colliders = scene.colliders;
+  return o;
+}
+
+// The scene's collider meshes, merged, as one distance grid (null when there are none).
+std::shared_ptr<const SdfGrid> colliderGrid(const Scene& scene) {
+  if (scene.colliderMeshes.empty()) return nullptr;
+  std::vector<glm::vec3> positions;
+  std::vector<glm::uvec3> triangles;
+  float cell = 0.0f;
+  for (const auto& m : scene.colliderMeshes) {
+    const ScalpMesh mesh = loadObjScalp(m.path);
+    const auto base = static_cast<std::uint32_t>(positions.size());
+    positions.insert(positions.end(), mesh.positions.begin(), mesh.positions.end());
+    for (const auto& t : mesh.triangles) triangles.push_back(t + base);
+    if (m.cell > 0.0f) cell = cell > 0.0f ? std::min(cell, m.cell) : m.cell;
+  }
+  try {
+    return std::make_shared<SdfGrid>(meshSdf(positions, triangles, cell));
+  } catch (const Error& e) {
+    throw Error(scene.source + ": /colliders: " + e.what());
+  }
+}
+
+// An OBJ scalp grows guides; without scene colliders a sphere fitted to the scalp keeps hair out.
+// Scene collider meshes also shape the growth (guides slide over their grid).
+HairAsset objAsset(const Scene& scene, const std::shared_ptr<const SdfGrid>& grid) {
+  ScalpMesh scalp = loadObjScalp(scene.model.path, scene.model.transform);
+  HairImportOptions o = importOptions(scene);
+  if (!o.colliders) {
+    SphereCollider fitted = fitSphere(scalp.positions).sphere;
+    o.colliders = std::vector<SphereCollider>{fitted};
+  }
+  DistanceFunction field;
+  if (grid) field = [&](const glm::vec3& p) { return grid->sample(p); };
+  GuideSet guides = growGuides(scalp, scene.growth, *o.colliders, {}, field);
+  return assembleImportedAsset(std::move(guides), scalp.triangles, o, scene.model.path.string());
+}
+}  // namespace
+
+namespace {
+HairAsset modelAsset(const Scene& scene, const std::shared_ptr<const SdfGrid>& grid) {
+  switch (scene.model.kind) {
+    case ModelSpec::Kind::Hair:
+      return importHairAsset(readHairFile(scene.model.path), importOptions(scene), scene.model.path.string());
+    case ModelSpec::Kind::Tfx:
+      return importHairAsset(tfxToHair(readTfxFile(scene.model.path)), importOptions(scene), scene.model.path.string());
+    case ModelSpec::Kind::Obj:
+      return objAsset(scene, grid);
+    case ModelSpec::Kind::Default:
+      break;
+  }
+  return buildDefaultHeadAsset(scene.growth, scene.density);
+}
+}  // namespace
+
+std::optional<ModelSpec::Kind> modelKindOf(const std::filesystem::path& path) {
+  std::string ext = path.extension().string();
+  for (auto& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (ext == ".hair") return ModelSpec::Kind::Hair;
+  if (ext == ".tfx") return ModelSpec::Kind::Tfx;
+  if (ext == ".obj") return ModelSpec::Kind::Obj;
+  return std::nullopt;
+}
+
+Scene::Scene() : growth(defaultHeadGrowth()) {}
+
+HairAsset buildSceneAsset(const Scene& scene) {
+  const std::shared_ptr<const SdfGrid> grid = colliderGrid(scene);
+  HairAsset asset = modelAsset(scene, grid);
+  if (scene.colliders) {
+    asset.colliders = *scene.colliders;
+    asset.sdf = grid;
+  }
+  if (asset.head.scalp.empty()) markScalp(asset.head, asset.guides.roots());
+  return asset;
+}
+}  // namespace hp
