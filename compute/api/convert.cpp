@@ -128,6 +128,7 @@ hp::InstanceSettings instance(const InstanceSettings& s) {
   h.strands.guidesOnly = s.guidesOnly;
   h.look = look(s.look);
   h.scalp = scalp(s.scalp);
+  h.drawHead = s.drawHead;
   return h;
 }
 

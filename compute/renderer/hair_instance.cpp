@@ -35,10 +35,10 @@ HairInstance::HairInstance(Renderer& renderer, const HairAsset& asset, const Ins
                            const glm::mat4& initialHead)
     : renderer_(renderer),
       settings_(validated(settings)),
-      headMesh_(asset.head),
+      headMesh_(settings.drawHead ? asset.head : HeadMesh{}),
       motion_{initialHead, initialHead, 0.0, false},
       simulate_(renderer.context(), asset, settings.simulation, initialHead, &renderer.pipelines(), settings.scalp),
-      geometry_(std::make_shared<Geometry>(renderer, simulate_, asset.topology, asset.head, settings_)),
+      geometry_(std::make_shared<Geometry>(renderer, simulate_, asset.topology, headMesh_, settings_)),
       marschner_(renderer.marschner(settings.material, settings.lutMode)) {
   const vk::Context& ctx = renderer.context();
   const RendererSettings& rs = renderer.settings();
@@ -50,7 +50,7 @@ HairInstance::HairInstance(Renderer& renderer, const HairAsset& asset, const Ins
     *frameSlot(slot / rs.maxViewsPerFrame, slot % rs.maxViewsPerFrame) =
         render::makeRenderFrame(CameraMatrices{}, {1, 1}, LightSpec{}, settings_.material, settings_.look,
                                 strands().layout().verticesPerStrand, renderer.shadows().settings());
-  head_ = std::make_shared<render::HeadPass>(ctx, asset.head, frames_, renderer.shadows().inputs(),
+  head_ = std::make_shared<render::HeadPass>(ctx, headMesh_, frames_, renderer.shadows().inputs(),
                                              rs.formats, &renderer.pipelines());
   bounceFrame_ = vk::Buffer(ctx, sizeof(gpu::RenderFrame), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                             vk::MemoryKind::DeviceLocal, "head bounce frame");

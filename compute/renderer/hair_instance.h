@@ -80,7 +80,7 @@ class HairInstance {
 
   Renderer& renderer_;
   InstanceSettings settings_;
-  HeadMesh headMesh_;  // kept for rebuilding the opacity pass's copy with new strands
+  HeadMesh headMesh_;  // the asset's head (none when !drawHead); kept for rebuilding the opacity pass with new strands
   HeadMotion motion_;
   SimulatePass simulate_;
   std::shared_ptr<Geometry> geometry_;

@@ -42,6 +42,7 @@ struct InstanceSettings {
   compute::StrandOptions strands;
   render::LookSettings look;
   ScalpInput scalp;  // where the roots come from: rigid head (default), skinned root frames, or bones
+  bool drawHead = true;  // false: hair only (hairpipe/settings.h says what that leaves out)
   void validate() const;
 };
 

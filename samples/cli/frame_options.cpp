@@ -106,6 +106,7 @@ hp::RenderRequest makeRenderRequest(const FrameOptions& o, const CLI::App& cmd) 
   r.lutMode = hp::parseLutMode(o.lutMode);
   r.lines = o.lines;
   r.guidesOnly = o.guidesOnly;
+  r.drawHead = !o.hairOnly;
   r.exposure = o.exposure;
   if (o.ambient) r.look.ambient = *o.ambient;
   if (o.scattering) {
@@ -188,6 +189,9 @@ void addFrameOptions(CLI::App& cmd, FrameOptions& o) {
       ->delimiter(',')->expected(3);
   cmd.add_flag("--lines", o.lines, "Draw strands as lines instead of ribbons");
   cmd.add_flag("--guides-only", o.guidesOnly, "Draw the smoothed guides only (no interpolation)");
+  cmd.add_flag("--hair-only", o.hairOnly,
+               "Draw the hair without the model's head (no head drawn, in the shadows or bouncing light; "
+               "collisions unchanged)");
   cmd.add_flag("--no-shadows", o.noShadows, "Turn the opacity shadow maps off");
   cmd.add_option("--opacity-resolution", o.opacityResolution, "Opacity map texels per side, 16-4096 (default 512)");
   cmd.add_flag("--deep-opacity,!--global-opacity", o.deepOpacity,

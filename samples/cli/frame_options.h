@@ -33,6 +33,7 @@ struct FrameOptions {
   float exposure = 1.0f;
   bool lines = false;
   bool guidesOnly = false;
+  bool hairOnly = false;
   bool noShadows = false;
   bool deepOpacity = true;
   std::optional<std::uint32_t> opacityResolution;

@@ -216,7 +216,7 @@ ExportedFrame makeExportedFrame(const RenderRequest& request, const HairAsset& a
   f.camera = {frame.camera.position, scene.camera.target, {0.0f, 1.0f, 0.0f}, scene.camera.fovDeg,
               scene.render.width, scene.render.height};
   f.strands = exportStrands(frame, request.look, f.hairAlbedo);
-  exportHead(f, asset.head, frame.headToWorld);
+  exportHead(f, request.drawHead ? asset.head : HeadMesh{}, frame.headToWorld);  // hair only: no head
   return f;
 }
 

@@ -16,7 +16,9 @@ RendererSettings rendererSettings(const HairSystemSettings& s) {
 }
 
 InstanceSettings instanceSettings(const HairSystemSettings& s) {
-  return InstanceSettings{s.simulation, s.material, s.lutMode, s.strands, s.look};
+  InstanceSettings i{s.simulation, s.material, s.lutMode, s.strands, s.look};
+  i.drawHead = s.drawHead;
+  return i;
 }
 
 View viewOf(const DrawView& v, bool ribbons) {

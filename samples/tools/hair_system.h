@@ -26,6 +26,7 @@ struct HairSystemSettings {
   HairMaterial material;
   LutMode lutMode = LutMode::Physical;
   compute::StrandOptions strands;
+  bool drawHead = true;  // false: hair only (InstanceSettings::drawHead)
   hairpipe::AttachmentFormats formats;
   render::LookSettings look;
   render::OpacitySettings opacity;

@@ -139,7 +139,8 @@ AlbedoMesh readAlbedoObj(const std::filesystem::path& path) {
     for (int k = 0; k < 3; ++k) mesh.indices.push_back(p.corner(mesh.positions.size()));
     if (!p.token().empty()) p.fail("faces must be triangles");
   }
-  if (mesh.indices.empty()) throw Error(path.string() + ": the head has no triangles");
+  // No vertex and no face: the frame had no head (a hair-only frame). Vertices without a face are an error.
+  if (mesh.indices.empty() && !mesh.positions.empty()) throw Error(path.string() + ": vertices but no triangles");
   return mesh;
 }
 }  // namespace hp

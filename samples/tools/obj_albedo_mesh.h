@@ -3,7 +3,8 @@
 // colours ("v x y z r g b", "vn x y z", "f a//a b//b c//c", 1-based, normal i belongs to vertex i), the
 // head of a frame export. Numbers are printed as the shortest text that reads back to the same float.
 // readAlbedoObj accepts exactly that subset (comments and blank lines aside) and throws hp::Error
-// naming the file and line for anything else; writeAlbedoObj is atomic.
+// naming the file and line for anything else; writeAlbedoObj is atomic. A file with no vertex and no face
+// is the empty head of a hair-only frame.
 #include <glm/glm.hpp>
 
 #include <cstdint>

@@ -67,11 +67,15 @@ void OffscreenRenderer::record(VkCommandBuffer cmd, HairSystem& hair, const Draw
 
 void OffscreenRenderer::record(VkCommandBuffer cmd, Renderer& renderer, std::uint64_t frame, const View& view,
                                std::span<HairInstance* const> instances, float exposure,
-                               vk::GpuProfiler* profiler) const {
+                               vk::GpuProfiler* profiler, const Record& applicationDraws) const {
   if (raster_ != RasterMode::Compute || renderer.raster() != RasterMode::Compute)
     throw Error("OffscreenRenderer: a Renderer frame here needs the compute raster on both");
   recordComputeScene(
-      cmd, [&](VkCommandBuffer c) { renderer.recordDraw(c, frame, view, instances, profiler); },
+      cmd,
+      [&](VkCommandBuffer c) {
+        if (applicationDraws) applicationDraws(c);
+        renderer.recordDraw(c, frame, view, instances, profiler);
+      },
       [&](VkCommandBuffer c) { renderer.recordRaster(c, frame, view, profiler); },
       [&](VkCommandBuffer c) { renderer.recordComposite(c, extent(), profiler); });
   recordTonemap(cmd, exposure);

@@ -37,9 +37,12 @@ class OffscreenRenderer {
   void record(VkCommandBuffer cmd, const std::function<void(VkCommandBuffer)>& draws, float exposure,
               vk::GpuProfiler* profiler = nullptr) const;
   // Compute raster: a Renderer's frame `frame` of its attached instances (heads by recordDraw, then
-  // recordRaster, recordComposite), after its recordShadows.
+  // recordRaster, recordComposite), after its recordShadows. `applicationDraws`, when given, records into
+  // the heads' rendering before recordDraw: what an application draws first (its character), which the
+  // heads and the hair are depth-tested against.
   void record(VkCommandBuffer cmd, Renderer& renderer, std::uint64_t frame, const View& view,
-              std::span<HairInstance* const> instances, float exposure, vk::GpuProfiler* profiler = nullptr) const;
+              std::span<HairInstance* const> instances, float exposure, vk::GpuProfiler* profiler = nullptr,
+              const std::function<void(VkCommandBuffer)>& applicationDraws = {}) const;
   // RGBA8, sRGB-encoded, rows top to bottom. Waits for the queue through a one-shot readback.
   std::vector<std::uint8_t> readDisplay() const;
   // The frame's linear HDR radiance before exposure and tonemap (RGB floats, rows top to bottom);

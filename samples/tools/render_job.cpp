@@ -77,6 +77,7 @@ HairSystemSettings systemSettings(const RenderRequest& r, const hairpipe::Attach
   s.material = r.scene.material;
   s.lutMode = r.lutMode;
   s.strands.guidesOnly = r.guidesOnly;
+  s.drawHead = r.drawHead;
   s.formats = formats;
   s.look = r.look;
   s.opacity = r.opacity;

@@ -22,6 +22,7 @@ struct RenderRequest {
   LutMode lutMode = LutMode::Physical;
   bool lines = false;
   bool guidesOnly = false;
+  bool drawHead = true;  // false: hair only (no proxy head drawn, shadowing or bouncing light)
   float exposure = 1.0f;
   render::LookSettings look;
   render::OpacitySettings opacity;

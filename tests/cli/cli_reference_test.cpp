@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
 
 #include "samples/tools/frame_export.h"
 #include "samples/tools/linear_image.h"
@@ -18,18 +19,21 @@ using hp::test::runCli;
 namespace {
 // A Lambertian square facing the camera with one strand across it, lit by the sun.
 // `name`: the folder under the temp directory, one per test (CTest runs them in parallel).
-std::filesystem::path writeTinyExport(const std::string& name) {
+// The square covers the frame's height. `head` false: a hair-only frame, whose head.obj holds no vertex and no face.
+std::filesystem::path writeTinyExport(const std::string& name, bool head = true) {
   const auto dir = freshTempPath(name);
   std::filesystem::create_directories(dir);
   hp::ExportedFrame f;
   f.camera = {{0, 0, 3}, {0, 0, 0}, {0, 1, 0}, 30.0f, 12, 8};
   f.environment = 0.1f;
+  f.background = {0.05f, 0.06f, 0.07f};
   for (glm::vec2 c : {glm::vec2(-1, -1), glm::vec2(1, -1), glm::vec2(1, 1), glm::vec2(-1, 1)}) {
+    if (!head) break;
     f.headPositions.emplace_back(c.x, c.y, 0.0f);
     f.headNormals.emplace_back(0, 0, 1);
     f.headAlbedo.emplace_back(0.6f, 0.45f, 0.35f);
   }
-  f.headIndices = {0, 1, 2, 0, 2, 3};
+  if (head) f.headIndices = {0, 1, 2, 0, 2, 3};
   f.strands.strandCount = 1;
   f.strands.defaultSegments = 2;
   f.strands.points = {{-0.5f, -0.2f, 0.1f}, {0.0f, 0.0f, 0.15f}, {0.5f, 0.2f, 0.1f}};
@@ -59,6 +63,29 @@ TEST(CliReference, TracesAnExportedFrameToPfmAndPng) {
   std::filesystem::remove_all(dir);
   std::filesystem::remove(pfm);
   std::filesystem::remove(png);
+}
+
+// render --hair-only --export-frame writes an empty head.obj: the reference traces the hair alone (a pixel
+// on the square, off the strand, shows the background), and a head.obj with vertices but no face is still
+// refused.
+TEST(CliReference, AHairOnlyFrameTracesWithoutAHead) {
+  const auto withHead = writeTinyExport("hairpipe_cli_reference_frame_head", true);
+  const auto hairOnly = writeTinyExport("hairpipe_cli_reference_frame_hair_only", false);
+  const auto pfm = freshTempPath("hairpipe_cli_reference_hair_only.pfm");
+  const auto onSquare = [&](const std::filesystem::path& dir) {
+    const auto r = runCli({"reference", "--frame", dir.string(), "--spp", "4", "--bounces", "2", "--quiet",
+                           "--out", pfm.string()});
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    hp::LinearImage image = hp::readPfm(pfm);
+    return glm::vec3(image.at(2, 1, 0), image.at(2, 1, 1), image.at(2, 1, 2));  // on the square, off the strand
+  };
+  EXPECT_GT(onSquare(withHead).r, 0.1f);  // the lit square
+  EXPECT_EQ(onSquare(hairOnly), glm::vec3(0.05f, 0.06f, 0.07f));
+  std::ofstream(hairOnly / "head.obj") << "v 0 0 0 0.5 0.5 0.5\nvn 0 0 1\n";
+  expectRefused({"reference", "--frame", hairOnly.string(), "--out", pfm.string()}, {{{}, "vertices but no triangles"}});
+  std::filesystem::remove_all(withHead);
+  std::filesystem::remove_all(hairOnly);
+  std::filesystem::remove(pfm);
 }
 
 TEST(CliReference, BadOptionsExitWithAMessageAndWriteNothing) {

@@ -26,10 +26,10 @@
 //       rendering, begun by the application) whose attachments have RendererSettings::formats and cover
 //       view.extent from (0, 0): colour in COLOR_ATTACHMENT_OPTIMAL, depth in DEPTH_ATTACHMENT_OPTIMAL or
 //       DEPTH_STENCIL_ATTACHMENT_OPTIMAL. Depth convention: test LESS_OR_EQUAL against a depth cleared to
-//       1 (reversed-Z is not supported). Draws the heads (depth test and write, colour write) and, in
-//       RasterMode::Graphics, the hair (ribbons, depth tested, blended) in EARLY/LATE_FRAGMENT_TESTS and
-//       COLOR_ATTACHMENT_OUTPUT. Sets its own viewport (the whole extent, y up: a negative-height viewport
-//       for OpenGL-style projections) and scissor.
+//       1 (reversed-Z is not supported). Draws the heads of instances with InstanceSettings::drawHead
+//       (depth test and write, colour write) and, in RasterMode::Graphics, the hair (ribbons, depth
+//       tested, blended) in EARLY/LATE_FRAGMENT_TESTS and COLOR_ATTACHMENT_OUTPUT. Sets its own viewport
+//       (the whole extent, y up: a negative-height viewport for OpenGL-style projections) and scissor.
 // RasterMode::Compute draws the hair after the heads, against the depth (setRasterTarget once, outside
 // the frame loop, with a view of the application's depth image: format and samples of
 // RendererSettings::formats, usage DEPTH_STENCIL_ATTACHMENT | SAMPLED, aspect DEPTH; a new depth image

@@ -131,6 +131,12 @@ struct InstanceSettings {
   ScalpInput scalp;
   std::uint32_t verticesPerStrand = 36;  // render strand vertices, [guide particles, 256]
   bool guidesOnly = false;               // debug: draw the smoothed guides instead of dense strands
+  // false: hair only. The asset's proxy head is not drawn (recordDraw draws this instance's hair alone,
+  // depth-tested against what the application drew before it; the compute rasterizer tests against the
+  // depth image it is given), casts no shadow (neither in the opacity maps nor in the heads' depth map)
+  // and bounces no light onto the hair (the look's skinBounce has no skin to bounce from). Collisions are
+  // unchanged: they come from the asset's colliders and distance field, never from what is drawn.
+  bool drawHead = true;
 };
 
 // One light. `direction` points from the hair toward the light; a spot shines along -direction from
