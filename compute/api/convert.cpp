@@ -129,6 +129,7 @@ hp::InstanceSettings instance(const InstanceSettings& s) {
   h.look = look(s.look);
   h.scalp = scalp(s.scalp);
   h.drawHead = s.drawHead;
+  h.lod = s.lod;
   return h;
 }
 

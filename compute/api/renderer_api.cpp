@@ -77,6 +77,10 @@ Status Instance::setMaterial(const Material& material, FibreModel fibre) noexcep
     implementation(impl_.get()).setMaterial(convert::material(material), convert::fibre(fibre));
   });
 }
+Status Instance::setLod(const LodSettings& lod) noexcept {
+  return guardedStatus("hairpipe::Instance::setLod", [&] { implementation(impl_.get()).setLod(lod); });
+}
+
 Status Instance::setLook(const LookSettings& look) noexcept {
   return guardedStatus("hairpipe::Instance::setLook", [&] { implementation(impl_.get()).setLook(convert::look(look)); });
 }

@@ -68,15 +68,18 @@ StrandPass::StrandPass(const vk::Context& ctx, const compute::StrandBuffers& str
   lines_ = makePipeline(ctx, library, sets_.front().layout(), formats, true);
 }
 
-void StrandPass::draw(VkCommandBuffer cmd, VkExtent2D extent, bool lines, std::uint32_t frameOffset) const {
+void StrandPass::draw(VkCommandBuffer cmd, VkExtent2D extent, bool lines, std::uint32_t frameOffset,
+                      std::uint32_t strandLimit) const {
   const auto& layout = strands_->layout();
   const std::uint32_t perSegment = lines ? gpu::STRAND_VERTICES_PER_LINE : gpu::STRAND_VERTICES_PER_QUAD;
   const vk::GraphicsPipeline& pipeline = lines ? *lines_ : *ribbons_;
   for (std::size_t c = 0; c < sets_.size(); ++c) {
     const auto& range = strands_->chunks()[c].range;
+    const std::uint32_t drawn = compute::strandsWithin(range, strandLimit);
+    if (drawn == 0) continue;
     pipeline.bind(cmd, sets_[c].set(), extent, frameOffset);
     pipeline.push(cmd, gpu::StrandDrawPush{range.firstStrand, lines ? 1u : 0u, std::uint32_t(samples_), 0u});
-    pipeline.draw(cmd, range.strandCount * (layout.verticesPerStrand - 1) * perSegment);
+    pipeline.draw(cmd, drawn * (layout.verticesPerStrand - 1) * perSegment);
   }
 }
 }  // namespace hp::render

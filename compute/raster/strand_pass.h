@@ -24,8 +24,10 @@ class StrandPass {
   StrandPass(const vk::Context& ctx, const compute::StrandBuffers& strands, const MarschnerTextures& marschner,
              const vk::Buffer& frameBlock, const ShadowInputs& shadows, const hairpipe::AttachmentFormats& formats,
              vk::PipelineLibrary* library = nullptr);
-  // frameOffset: byte offset of this draw's gpu::RenderFrame in frameBlock.
-  void draw(VkCommandBuffer cmd, VkExtent2D extent, bool lines, std::uint32_t frameOffset) const;
+  // frameOffset: byte offset of this draw's gpu::RenderFrame in frameBlock. strandLimit: the level of
+  // detail's prefix of the strands drawn (compute::strandsWithin).
+  void draw(VkCommandBuffer cmd, VkExtent2D extent, bool lines, std::uint32_t frameOffset,
+            std::uint32_t strandLimit = compute::kAllStrands) const;
 
  private:
   const compute::StrandBuffers* strands_ = nullptr;

@@ -203,7 +203,7 @@ void StrandRasterPass::bind(std::span<const RasterSource> sources) {
       Chunk chunk{vk::DescriptorSet(ctx_, kBindings, name),
                   vk::Buffer(ctx_, sizeof(params), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                              vk::MemoryKind::DeviceLocal, name + " params"),
-                  c.range.strandCount, q};
+                  c.range, std::uint32_t(s), q};
       vk::uploadBytes(ctx_, chunk.params, &params, sizeof(params), vk::BufferUse::ComputeRead);
       writeChunkSet(chunk.set, sources[s].shading, c, chunk.params);
       chunks.push_back(std::move(chunk));
@@ -261,10 +261,13 @@ void StrandRasterPass::recordArm(VkCommandBuffer cmd) const {
 }
 
 void StrandRasterPass::recordPerChunk(VkCommandBuffer cmd, const vk::ComputePipeline& pipeline,
-                                      std::uint32_t perStrandLess) const {
+                                      std::uint32_t perStrandLess, std::span<const std::uint32_t> strandLimits) const {
   for (const Chunk& c : chunks_) {
+    const std::uint32_t strands =
+        strandLimits.empty() ? c.range.strandCount : strandsWithin(c.range, strandLimits[c.source]);
+    if (strands == 0) continue;
     pipeline.bind(cmd, c.set.set());
-    pipeline.dispatch(cmd, c.strandCount * (c.verticesPerStrand - perStrandLess));
+    pipeline.dispatch(cmd, strands * (c.verticesPerStrand - perStrandLess));
   }
 }
 
@@ -288,23 +291,26 @@ void end(VkCommandBuffer cmd, vk::GpuProfiler* profiler) {
 }
 }  // namespace
 
-void StrandRasterPass::recordBinning(VkCommandBuffer cmd, vk::GpuProfiler* profiler) const {
+void StrandRasterPass::recordBinning(VkCommandBuffer cmd, vk::GpuProfiler* profiler,
+                                     std::span<const std::uint32_t> strandLimits) const {
   if (depth_ == VK_NULL_HANDLE) throw Error("compute raster: setDepth() was not called before record()");
+  if (!strandLimits.empty() && strandLimits.size() != sourceVertices_.size())
+    throw Error("compute raster: one strand limit per source, got " + std::to_string(strandLimits.size()));
   const std::uint32_t tiles = tilesX_ * tilesY_;
   begin(cmd, profiler, "raster project");
   recordArm(cmd);
-  recordPerChunk(cmd, project_, 0);
+  recordPerChunk(cmd, project_, 0, strandLimits);
   end(cmd, profiler);
   begin(cmd, profiler, "raster bin");
   recordOnce(cmd, tileDepthPipeline_, tiles);
   chain(ctx_, cmd);
-  recordPerChunk(cmd, count_, 1);
+  recordPerChunk(cmd, count_, 1, strandLimits);
   chain(ctx_, cmd);
   recordOnce(cmd, scanTiles_, divUp(tiles, gpu::RASTER_SCAN_SIZE) * gpu::RASTER_SCAN_SIZE);
   chain(ctx_, cmd);
   recordOnce(cmd, scanBlocks_, gpu::RASTER_SCAN_SIZE);
   chain(ctx_, cmd);
-  recordPerChunk(cmd, scatter_, 1);
+  recordPerChunk(cmd, scatter_, 1, strandLimits);
   end(cmd, profiler);
 }
 

@@ -76,12 +76,16 @@ class StrandRasterPass {
   // The head's depth (D32, headSamples samples); 1.0 where nothing was drawn. Must be set before record().
   void setDepth(VkImageView depth);
 
-  void record(VkCommandBuffer cmd, vk::GpuProfiler* profiler = nullptr) const {
-    recordBinning(cmd, profiler);
+  // strandLimits: per source, the level of detail's prefix of its strands drawn (compute::strandsWithin);
+  // empty: all of them.
+  void record(VkCommandBuffer cmd, vk::GpuProfiler* profiler = nullptr,
+              std::span<const std::uint32_t> strandLimits = {}) const {
+    recordBinning(cmd, profiler, strandLimits);
     recordFine(cmd, profiler);
   }
   // record() in two halves: project + bin (readStats() is complete after it), then shade + fine raster.
-  void recordBinning(VkCommandBuffer cmd, vk::GpuProfiler* profiler = nullptr) const;
+  void recordBinning(VkCommandBuffer cmd, vk::GpuProfiler* profiler = nullptr,
+                     std::span<const std::uint32_t> strandLimits = {}) const;
   void recordFine(VkCommandBuffer cmd, vk::GpuProfiler* profiler = nullptr) const;
 
   const vk::Image& output() const { return output_; }
@@ -101,15 +105,18 @@ class StrandRasterPass {
   struct Chunk {
     vk::DescriptorSet set;
     vk::Buffer params;  // gpu::RasterParams of the chunk (a storage buffer: no push constants, see .cpp)
-    std::uint32_t strandCount;
+    ChunkRange range;   // within its source's strands
+    std::uint32_t source;
     std::uint32_t verticesPerStrand;
   };
   std::array<const vk::Image*, 3> outputs() const { return {&output_, &nearOutput_, &nearMask_}; }
   void recordArm(VkCommandBuffer cmd) const;
   void writeChunkSet(const vk::DescriptorSet& set, const ShadingWriter& shading, const StrandChunk& c,
                      const vk::Buffer& params) const;
-  // One dispatch per chunk of strandCount * (verticesPerStrand - perStrandLess) invocations.
-  void recordPerChunk(VkCommandBuffer cmd, const vk::ComputePipeline& pipeline, std::uint32_t perStrandLess) const;
+  // One dispatch per chunk of strands * (verticesPerStrand - perStrandLess) invocations, strands those of
+  // the chunk within its source's limit (all without limits).
+  void recordPerChunk(VkCommandBuffer cmd, const vk::ComputePipeline& pipeline, std::uint32_t perStrandLess,
+                      std::span<const std::uint32_t> strandLimits) const;
   void recordOnce(VkCommandBuffer cmd, const vk::ComputePipeline& pipeline, std::uint32_t threads) const;
 
   const vk::Context& ctx_;

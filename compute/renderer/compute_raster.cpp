@@ -60,12 +60,16 @@ bool ComputeRaster::holds(const HairInstance* instance) const {
   return std::find(instances_.begin(), instances_.end(), instance) != instances_.end();
 }
 
-void ComputeRaster::recordFrameBlocks(VkCommandBuffer cmd, const View& view, const LightSpec& light,
-                                      const render::HeadShadowView& headShadow) const {
+std::vector<std::uint32_t> ComputeRaster::recordFrameBlocks(VkCommandBuffer cmd, const View& view,
+                                                            const LightSpec& light,
+                                                            const render::HeadShadowView& headShadow) const {
+  std::vector<std::uint32_t> strandLimits;
   for (std::size_t i = 0; i < instances_.size(); ++i) {
     const HairInstance& instance = *instances_[i];
+    const float fraction = instance.lodFraction(view.camera.position);
+    strandLimits.push_back(instance.lodStrands(fraction));
     gpu::RenderFrame frame = render::makeRenderFrame(view.camera, view.extent, light, instance.settings().material,
-                                                     instance.settings().look,
+                                                     lodLook(instance.settings().look, fraction),
                                                      instance.strands().layout().verticesPerStrand, shadows_.settings());
     render::setHeadMaps(frame, headShadow, instance.settings().look.skinBounce);
     const VkBuffer block = frames_[i].handle();
@@ -73,11 +77,12 @@ void ComputeRaster::recordFrameBlocks(VkCommandBuffer cmd, const View& view, con
     ctx_.fn().vkCmdUpdateBuffer(cmd, block, 0, sizeof(frame), &frame);
     vk::bufferBarrier(ctx_, cmd, block, vk::BufferUse::TransferDst, vk::BufferUse::ComputeRead);
   }
+  return strandLimits;
 }
 
 void ComputeRaster::record(VkCommandBuffer cmd, const View& view, const LightSpec& light,
                            const render::HeadShadowView& headShadow, vk::GpuProfiler* profiler) const {
-  recordFrameBlocks(cmd, view, light, headShadow);
+  const std::vector<std::uint32_t> strandLimits = recordFrameBlocks(cmd, view, light, headShadow);
   // The graphics readers' states (recordShadows) extended to compute for the pass, then back, so the
   // next frame's barriers (which wait on vertex/fragment readers) still cover these reads.
   const VkBuffer lightSpace = shadows_.lightSpace().handle();
@@ -90,7 +95,7 @@ void ComputeRaster::record(VkCommandBuffer cmd, const View& view, const LightSpe
                    vk::ImageUse::ComputeSampled, gpu::OPACITY_LAYERS);
   const render::HeadBounceMap& bounce = shadows_.bounceMap();
   bounce.transition(cmd, vk::ImageUse::FragmentSampled, vk::ImageUse::ComputeSampled);
-  pass_.record(cmd, profiler);
+  pass_.record(cmd, profiler, strandLimits);
   bounce.transition(cmd, vk::ImageUse::ComputeSampled, vk::ImageUse::FragmentSampled);
   vk::bufferBarrier(ctx_, cmd, lightSpace, vk::BufferUse::ComputeRead, vk::BufferUse::GraphicsRead);
   vk::imageBarrier(ctx_, cmd, maps, VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::ComputeSampled,

@@ -44,8 +44,10 @@ class ComputeRaster {
  private:
   static std::vector<vk::Buffer> makeFrameBlocks(const vk::Context& ctx, std::size_t count);
   std::vector<compute::RasterSource> sources() const;
-  void recordFrameBlocks(VkCommandBuffer cmd, const View& view, const LightSpec& light,
-                         const render::HeadShadowView& headShadow) const;
+  // Each instance's frame block for the view (strands widened by its level of detail); returns the strands
+  // each draws.
+  std::vector<std::uint32_t> recordFrameBlocks(VkCommandBuffer cmd, const View& view, const LightSpec& light,
+                                               const render::HeadShadowView& headShadow) const;
 
   const vk::Context& ctx_;
   const render::ShadowMaps& shadows_;

@@ -36,7 +36,7 @@ void recordGraphicsOpacity(const vk::Context& ctx, VkCommandBuffer cmd, const re
   vk::imageBarrier(ctx, cmd, image, VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::FragmentSampled,
                    vk::ImageUse::ColorAttachment, gpu::OPACITY_LAYERS);
   maps.beginRendering(cmd);
-  for (const ShadowCaster& c : casters) c.opacity->recordDraws(cmd, c.headToWorld, c.strandWidth);
+  for (const ShadowCaster& c : casters) c.opacity->recordDraws(cmd, c.headToWorld, c.strandWidth, c.strandLimit);
   maps.endRendering(cmd);
   vk::imageBarrier(ctx, cmd, image, VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::ColorAttachment,
                    vk::ImageUse::FragmentSampled, gpu::OPACITY_LAYERS);
@@ -59,7 +59,7 @@ void recordComputeOpacity(const vk::Context& ctx, VkCommandBuffer cmd, const ren
   auto splatAll = [&](std::uint32_t mode, VkBuffer target) {
     for (std::size_t i = 0; i < casters.size(); ++i) {
       if (i > 0) vk::bufferBarrier(ctx, cmd, target, vk::BufferUse::ComputeWrite, vk::BufferUse::ComputeWrite);
-      casters[i].opacity->recordSplats(cmd, casters[i].strandWidth, mode);
+      casters[i].opacity->recordSplats(cmd, casters[i].strandWidth, mode, casters[i].strandLimit);
     }
   };
   if (resolve.deep()) {  // every instance's first hair per texel before any deep slice is measured from it

@@ -39,6 +39,7 @@ struct ShadowCaster {
   const render::OpacityPass* opacity;
   glm::mat4 headToWorld{1.0f};
   glm::vec2 strandWidth{0.0005f, 0.35f};  // root width, tip / root: the instance's LookSettings (footprint)
+  std::uint32_t strandLimit = compute::kAllStrands;  // the level of detail's prefix of the strands
 };
 
 void recordUpdatePasses(const vk::Context& ctx, VkCommandBuffer cmd, std::span<const UpdateWork> work,

@@ -1,5 +1,6 @@
 #include "compute/renderer/hair_instance.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "engine/core/error.h"
@@ -111,6 +112,26 @@ void HairInstance::setMaterial(const HairMaterial& material, LutMode mode) {
 void HairInstance::setLook(const render::LookSettings& look) {
   look.validate();
   settings_.look = look;  // read into the per-frame constants at record time
+}
+
+void HairInstance::setLod(const hairpipe::LodSettings& lod) {
+  validate(lod);
+  settings_.lod = lod;  // applied per view at record time
+}
+
+float HairInstance::lodFraction(const glm::vec3& eye) const {
+  return hp::lodFraction(settings_.lod, glm::length(eye - glm::vec3(headToWorld()[3])));
+}
+
+std::uint32_t HairInstance::lodStrands(float fraction) const {
+  return lodStrandCount(fraction, strands().layout().strandCount);
+}
+
+void HairInstance::noteViewFraction(std::uint64_t frame, float fraction) {
+  if (!viewsDrawn_ || frame != viewFrame_) largestViewFraction_ = 0.0f;
+  viewsDrawn_ = true;
+  viewFrame_ = frame;
+  largestViewFraction_ = std::max(largestViewFraction_, fraction);
 }
 
 void HairInstance::setSimulation(const SimulationParams& params) {

@@ -45,6 +45,7 @@ class HairInstance {
   void setBones(std::span<const glm::mat4> bones) { simulate_.setBones(bones); }
   void setMaterial(const HairMaterial& material, LutMode mode);
   void setLook(const render::LookSettings& look);
+  void setLod(const hairpipe::LodSettings& lod);
   void setSimulation(const SimulationParams& params);
   // A new interpolation topology (density) or strand options: new strand buffers, filled by the next update.
   void setStrands(const InterpolationTopology& topology, const compute::StrandOptions& options);
@@ -54,6 +55,11 @@ class HairInstance {
   const compute::StrandBuffers& strands() const { return geometry_->buffers; }
   const render::MarschnerTextures& marschner() const { return *marschner_; }
   const SimulatePass& simulation() const { return simulate_; }
+  // Level of detail: what a view with its eye at `eye` draws (fraction of the strands, their count), and
+  // what the shadows draw (the largest fraction of the views most recently drawn; 1 before any).
+  float lodFraction(const glm::vec3& eye) const;
+  std::uint32_t lodStrands(float fraction) const;
+  float shadowLodFraction() const { return viewsDrawn_ ? largestViewFraction_ : 1.0f; }
   // Tools (scripted settling frames outside a frame loop) drive the simulation directly.
   SimulatePass& simulationForTools() { return simulate_; }
 
@@ -77,6 +83,8 @@ class HairInstance {
   void replaceStrandPass(std::shared_ptr<render::StrandPass> pass);
   std::uint32_t frameOffset(std::uint64_t frame, std::uint32_t view) const;
   gpu::RenderFrame* frameSlot(std::uint64_t frame, std::uint32_t view) const;
+  // A view of `frame` draws `fraction` (the shadows of the next frame use the largest of a frame's).
+  void noteViewFraction(std::uint64_t frame, float fraction);
 
   Renderer& renderer_;
   InstanceSettings settings_;
@@ -93,5 +101,8 @@ class HairInstance {
   vk::Buffer bounceFrame_;
   std::unique_ptr<render::HeadBouncePass> bounce_;
   std::shared_ptr<render::StrandPass> strandPass_;
+  bool viewsDrawn_ = false;
+  std::uint64_t viewFrame_ = 0;       // the frame of the views most recently drawn
+  float largestViewFraction_ = 1.0f;  // their largest LOD fraction
 };
 }  // namespace hp

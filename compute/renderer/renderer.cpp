@@ -84,6 +84,7 @@ void Renderer::recordRaster(VkCommandBuffer cmd, std::uint64_t frame, const View
   const ComputeRaster& t = target();
   view.validate(settings_.maxViewsPerFrame);
   beginFrame(frame, t.instances());
+  for (HairInstance* i : t.instances()) i->noteViewFraction(frame, i->lodFraction(view.camera.position));
   t.record(cmd, view, frameLights_[frame % settings_.framesInFlight], frameHeadShadows_[frame % settings_.framesInFlight],
            profiler);
 }
@@ -157,9 +158,11 @@ void Renderer::recordShadows(VkCommandBuffer cmd, std::uint64_t frame, const Lig
   float widest = 0.0f;
   for (HairInstance* i : instances) {
     const render::LookSettings& look = i->settings_.look;
+    const float fraction = i->shadowLodFraction();  // thinned strands are widened by 1 / fraction
+    const float width = look.strandWidth / fraction;
     casters.push_back({&i->geometry_->bounds, &i->geometry_->opacity, i->headToWorld(),
-                       glm::vec2(look.strandWidth, look.tipWidthFraction)});
-    widest = std::max(widest, i->settings_.look.strandWidth);
+                       glm::vec2(width, look.tipWidthFraction), i->lodStrands(fraction)});
+    widest = std::max(widest, width);
   }
   compute::BoundsFraming framing;
   framing.resolution = opacity.resolution;
@@ -199,9 +202,12 @@ void Renderer::recordDraw(VkCommandBuffer cmd, std::uint64_t frame, const View& 
   const LightSpec& light = frameLights_[frame % settings_.framesInFlight];
   const render::HeadShadowView& headView = frameHeadShadows_[frame % settings_.framesInFlight];
   for (HairInstance* i : instances) {
+    const float fraction = i->lodFraction(view.camera.position);
+    i->noteViewFraction(frame, fraction);
     gpu::RenderFrame* block = i->frameSlot(frame, view.index);
-    *block = render::makeRenderFrame(view.camera, view.extent, light, i->settings_.material, i->settings_.look,
-                                     i->strands().layout().verticesPerStrand, shadows_->settings());
+    *block = render::makeRenderFrame(view.camera, view.extent, light, i->settings_.material,
+                                     lodLook(i->settings_.look, fraction), i->strands().layout().verticesPerStrand,
+                                     shadows_->settings());
     render::setHeadMaps(*block, headView, i->settings_.look.skinBounce);
     const std::uint32_t offset = i->frameOffset(frame, view.index);
     if (profiler) profiler->begin(cmd, "head");
@@ -209,7 +215,7 @@ void Renderer::recordDraw(VkCommandBuffer cmd, std::uint64_t frame, const View& 
     if (profiler) profiler->end(cmd);
     if (!view.ribbons || raster_ == RasterMode::Compute) continue;
     if (profiler) profiler->begin(cmd, "shade");
-    i->strandPass_->draw(cmd, view.extent, view.lines, offset);
+    i->strandPass_->draw(cmd, view.extent, view.lines, offset, i->lodStrands(fraction));
     if (profiler) profiler->end(cmd);
   }
 }

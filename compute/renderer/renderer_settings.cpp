@@ -1,5 +1,6 @@
 #include "compute/renderer/renderer_settings.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -30,6 +31,32 @@ void InstanceSettings::validate() const {
   simulation.validate();
   material.validate();
   look.validate();
+  hp::validate(lod);
+}
+
+void validate(const hairpipe::LodSettings& lod) {
+  if (!std::isfinite(lod.startDistance) || !std::isfinite(lod.endDistance) || lod.startDistance < 0.0f ||
+      !(lod.endDistance > lod.startDistance))
+    throw Error("LodSettings: the distances must be finite with 0 <= startDistance < endDistance, got " +
+                std::to_string(lod.startDistance) + " and " + std::to_string(lod.endDistance));
+  if (!(lod.minFraction > 0.0f && lod.minFraction <= 1.0f))
+    throw Error("LodSettings.minFraction must be in (0, 1], got " + std::to_string(lod.minFraction));
+}
+
+float lodFraction(const hairpipe::LodSettings& lod, float distance) {
+  if (!lod.enabled || !(distance > lod.startDistance)) return 1.0f;
+  const float t = std::min(1.0f, (distance - lod.startDistance) / (lod.endDistance - lod.startDistance));
+  return 1.0f + t * (lod.minFraction - 1.0f);
+}
+
+render::LookSettings lodLook(render::LookSettings look, float fraction) {
+  look.strandWidth /= fraction;
+  return look;
+}
+
+std::uint32_t lodStrandCount(float fraction, std::uint32_t strands) {
+  const double n = std::ceil(double(fraction) * double(strands));
+  return std::uint32_t(std::clamp(n, 1.0, double(strands)));
 }
 
 void View::validate(std::uint32_t maxViews) const {

@@ -43,8 +43,19 @@ struct InstanceSettings {
   render::LookSettings look;
   ScalpInput scalp;  // where the roots come from: rigid head (default), skinned root frames, or bones
   bool drawHead = true;  // false: hair only (hairpipe/settings.h says what that leaves out)
+  hairpipe::LodSettings lod;
   void validate() const;
 };
+
+// hp::Error naming the field unless the distances are finite, 0 <= start < end, and minFraction in (0, 1].
+void validate(const hairpipe::LodSettings& lod);
+// The fraction of the strands drawn at `distance` (1 when LOD is off; see hairpipe::LodSettings).
+float lodFraction(const hairpipe::LodSettings& lod, float distance);
+// The strands a fraction of `strands` draws: at least one.
+std::uint32_t lodStrandCount(float fraction, std::uint32_t strands);
+// The look a view at `fraction` draws with: the strands widened by 1 / fraction, so the hair keeps its
+// coverage.
+render::LookSettings lodLook(render::LookSettings look, float fraction);
 
 // Auto -> the path measured faster on this device type (docs/PERFORMANCE.md "Compute rasterizer").
 RasterMode resolveRasterMode(RasterMode mode, VkPhysicalDeviceType type);

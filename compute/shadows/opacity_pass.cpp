@@ -116,27 +116,41 @@ void OpacityPass::bind(const compute::StrandBuffers& strands) {
   strandSets_ = std::move(sets);
 }
 
-void OpacityPass::recordDraws(VkCommandBuffer cmd, const glm::mat4& headToWorld, const glm::vec2& strandWidth) const {
+namespace {
+// The constant per-strand opacity of a level-of-detail prefix: scaled by strands / limit (1 for all).
+float prefixOpacity(float strandOpacity, std::uint32_t strands, std::uint32_t limit) {
+  const std::uint32_t drawn = std::clamp(limit, 1u, std::max(strands, 1u));
+  return drawn >= strands ? strandOpacity : strandOpacity * float(strands) / float(drawn);
+}
+}  // namespace
+
+void OpacityPass::recordDraws(VkCommandBuffer cmd, const glm::mat4& headToWorld, const glm::vec2& strandWidth,
+                              std::uint32_t strandLimit) const {
   const VkExtent2D extent = maps_.image().extent();
   const OpacitySettings& settings = maps_.settings();
   const std::uint32_t q = strands_->layout().verticesPerStrand;
   gpu::OpacityPush push{};
-  push.opacity = settings.footprint ? 1.0f : settings.strandOpacity;
+  push.opacity =
+      settings.footprint ? 1.0f : prefixOpacity(settings.strandOpacity, strands_->layout().strandCount, strandLimit);
   push.verticesPerStrand = q;
   push.footprint = glm::vec4(strandWidth.x, strandWidth.y, 1.0f / float(settings.resolution),
                              settings.footprint ? 1.0f : 0.0f);
   for (std::size_t c = 0; c < strandSets_.size(); ++c) {
+    const std::uint32_t drawn = compute::strandsWithin(strands_->chunks()[c].range, strandLimit);
+    if (drawn == 0) break;
     strandPipeline_->bind(cmd, strandSets_[c].set(), extent);
     strandPipeline_->push(cmd, push);
-    strandPipeline_->draw(cmd, strands_->chunks()[c].range.strandCount * (q - 1) * 2);
+    strandPipeline_->draw(cmd, drawn * (q - 1) * 2);
   }
   recordHeadDraw(cmd, headToWorld);
 }
 
-void OpacityPass::recordSplats(VkCommandBuffer cmd, const glm::vec2& strandWidth, std::uint32_t mode) const {
+void OpacityPass::recordSplats(VkCommandBuffer cmd, const glm::vec2& strandWidth, std::uint32_t mode,
+                               std::uint32_t strandLimit) const {
   if (!splat_) throw Error("opacity pass: recordSplats needs maps on the compute path");
   const OpacitySettings& settings = maps_.settings();
-  splat_->record(cmd, {settings.footprint, settings.strandOpacity, strandWidth}, mode);
+  const float opacity = prefixOpacity(settings.strandOpacity, strands_->layout().strandCount, strandLimit);
+  splat_->record(cmd, {settings.footprint, opacity, strandWidth}, mode, strandLimit);
 }
 
 bool OpacityPass::drawsHead() const { return headIndexCount_ > 0 && maps_.settings().headOpacity > 0.0f; }

@@ -37,10 +37,15 @@ class OpacityPass {
   OpacityPass& operator=(const OpacityPass&) = delete;
 
   // strandWidth: x = width at the root (scene units), y = tip / root (the instance's LookSettings), for
-  // the footprint opacity (OpacitySettings::footprint).
-  void recordDraws(VkCommandBuffer cmd, const glm::mat4& headToWorld, const glm::vec2& strandWidth) const;
+  // the footprint opacity (OpacitySettings::footprint). strandLimit: the level of detail's prefix of the
+  // strands drawn (compute::strandsWithin); the constant per-strand opacity (no footprint) grows by
+  // strands / limit so the thinned hair casts the same shadow (the caller widens the strands for the
+  // footprint).
+  void recordDraws(VkCommandBuffer cmd, const glm::mat4& headToWorld, const glm::vec2& strandWidth,
+                   std::uint32_t strandLimit = compute::kAllStrands) const;
   // Compute path: the strands into the bins (ShadowMaps::resolvePass), then the head if drawsHead().
-  void recordSplats(VkCommandBuffer cmd, const glm::vec2& strandWidth, std::uint32_t mode) const;
+  void recordSplats(VkCommandBuffer cmd, const glm::vec2& strandWidth, std::uint32_t mode,
+                    std::uint32_t strandLimit = compute::kAllStrands) const;
   bool drawsHead() const;  // the head goes into the slices (OpacitySettings::headOpacity > 0)
   void recordHeadDraw(VkCommandBuffer cmd, const glm::mat4& headToWorld) const;
   // The head's back faces into ShadowMaps' head depth map (between beginHeadRendering and endRendering).

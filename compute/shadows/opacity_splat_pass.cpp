@@ -23,7 +23,7 @@ OpacitySplatPass::OpacitySplatPass(const vk::Context& ctx, const StrandBuffers& 
     : ctx_(&ctx), resolution_(resolution), verticesPerStrand_(strands.layout().verticesPerStrand) {
   for (const StrandChunk& c : strands.chunks()) {
     Chunk chunk{vk::DescriptorSet(ctx, kBindings, "opacity splat [chunk " + std::to_string(chunks_.size()) + "]"),
-                c.range.strandCount * (verticesPerStrand_ - 1)};
+                c.range};
     chunk.set.writeStorageBuffer(gpu::OPACITY_SPLAT_BINDING_POSITIONS, c.positions.handle());
     chunk.set.writeStorageBuffer(gpu::OPACITY_SPLAT_BINDING_LIGHT, lightSpace.handle());
     chunk.set.writeStorageBuffer(gpu::OPACITY_SPLAT_BINDING_BINS, bins.handle());
@@ -34,7 +34,8 @@ OpacitySplatPass::OpacitySplatPass(const vk::Context& ctx, const StrandBuffers& 
                                       {chunks_.front().set.layout()}, sizeof(gpu::OpacitySplatPush), "opacity splat");
 }
 
-void OpacitySplatPass::record(VkCommandBuffer cmd, const SplatFootprint& f, std::uint32_t mode) const {
+void OpacitySplatPass::record(VkCommandBuffer cmd, const SplatFootprint& f, std::uint32_t mode,
+                              std::uint32_t strandLimit) const {
   gpu::OpacitySplatPush push{};
   push.footprint = glm::vec4(f.strandWidth, 1.0f / float(resolution_), f.footprint ? 1.0f : 0.0f);
   push.opacity = f.footprint ? 1.0f : f.opacity;
@@ -42,8 +43,10 @@ void OpacitySplatPass::record(VkCommandBuffer cmd, const SplatFootprint& f, std:
   push.resolution = resolution_;
   push.mode = mode;
   for (std::size_t i = 0; i < chunks_.size(); ++i) {
+    const std::uint32_t strands = strandsWithin(chunks_[i].range, strandLimit);
+    if (strands == 0) break;  // the chunks are in strand order: the prefix ends here
     if (i > 0) vk::memoryBarrier(*ctx_, cmd, vk::BufferUse::ComputeWrite, vk::BufferUse::ComputeWrite);
-    push.segmentCount = chunks_[i].segmentCount;
+    push.segmentCount = strands * (verticesPerStrand_ - 1);
     pipeline_->bind(cmd, chunks_[i].set.set());
     pipeline_->push(cmd, push);
     pipeline_->dispatch(cmd, push.segmentCount);

@@ -40,12 +40,14 @@ class OpacitySplatPass {
   OpacitySplatPass& operator=(const OpacitySplatPass&) = delete;
 
   // mode: gpu::OPACITY_SPLAT_MODE_* (deep maps: _FIRST for every instance, a barrier, then _DEEP).
-  void record(VkCommandBuffer cmd, const SplatFootprint& footprint, std::uint32_t mode) const;
+  // strandLimit: the level of detail's prefix of the strands splatted (strandsWithin).
+  void record(VkCommandBuffer cmd, const SplatFootprint& footprint, std::uint32_t mode,
+              std::uint32_t strandLimit = kAllStrands) const;
 
  private:
   struct Chunk {
     vk::DescriptorSet set;
-    std::uint32_t segmentCount;
+    ChunkRange range;
   };
 
   const vk::Context* ctx_;

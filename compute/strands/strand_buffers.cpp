@@ -39,17 +39,11 @@ std::vector<gpu::StrandBindingGpu> packBindings(const InterpolationTopology& top
   return out;
 }
 
-// w = strands of all earlier triangles: the first strand of the triangle (strands of a triangle
-// are contiguous and triangles in order).
+// w = the number of render strands in the triangle.
 std::vector<glm::uvec4> packTriangles(const InterpolationTopology& topology) {
-  std::vector<std::uint32_t> counts(topology.triangles.size(), 0);
-  for (const StrandBinding& s : topology.strands) ++counts[s.triangle];
   std::vector<glm::uvec4> out(topology.triangles.size());
-  std::uint32_t first = 0;
-  for (std::size_t t = 0; t < out.size(); ++t) {
-    out[t] = glm::uvec4(topology.triangles[t], first);
-    first += counts[t];
-  }
+  for (std::size_t t = 0; t < out.size(); ++t) out[t] = glm::uvec4(topology.triangles[t], 0u);
+  for (const StrandBinding& s : topology.strands) ++out[s.triangle].w;
   return out;
 }
 

@@ -42,6 +42,13 @@ struct ChunkRange {
   std::uint32_t strandCount = 0;
 };
 
+// Level of detail: the render strands are in LOD order (strand_topology.h), so a fraction of them is the
+// prefix of the first `limit` strands. How many strands of `range` lie in that prefix.
+inline std::uint32_t strandsWithin(const ChunkRange& range, std::uint32_t limit) {
+  return limit <= range.firstStrand ? 0u : std::min(range.strandCount, limit - range.firstStrand);
+}
+inline constexpr std::uint32_t kAllStrands = ~0u;
+
 // Counts and chunking: pure arithmetic, no device.
 struct StrandLayout {
   std::uint32_t guideCount = 0;

@@ -35,9 +35,11 @@ double residentMiB() {
 // Compulsory bytes per frame of the compute passes: every input read once, every output written once
 // (formulas as bench strands / bench sim; raster: vertex records 16 + 8 bytes, list entries 8 bytes; the
 // shade step is counted as if every vertex were listed; compute opacity: positions, then the bins cleared,
-// read by the resolve and the maps written, 64 bytes a texel each, the atomics not counted).
+// read by the resolve and the maps written, 64 bytes a texel each, the atomics not counted). Interpolate
+// and bounds work on every strand; the raster and opacity passes on the level of detail's drawn ones.
 void countBytes(FrameResult& r, const compute::StrandLayout& l) {
-  const double g = l.guideCount, p = l.particlesPerGuide, q = l.verticesPerStrand, s = l.strandCount;
+  const double g = l.guideCount, p = l.particlesPerGuide, q = l.verticesPerStrand, all = l.strandCount;
+  const double s = lodStrandCount(r.c.lodFraction, l.strandCount);
   const double v = s * q, e = double(r.rasterEntries);
   const double tiles = double((r.c.width + 7) / 8) * double((r.c.height + 7) / 8);
   const double pixels = double(r.c.width) * r.c.height;
@@ -45,8 +47,8 @@ void countBytes(FrameResult& r, const compute::StrandLayout& l) {
   std::map<std::string, double> bytes = {
       {"simulate", g * p * 16 * 5},
       {"tessellate", g * p * 16 + g * q * 32},
-      {"interpolate", s * 16 + l.triangleCount * 16.0 + g * q * 32 + s * (q * 32 + 16)},
-      {"bounds", v * 16},
+      {"interpolate", all * 16 + l.triangleCount * 16.0 + g * q * 32 + all * (q * 32 + 16)},
+      {"bounds", all * q * 16},
       {"raster shade", v * (32 + 8 + 4) + s * 16},
       {"raster project", v * 32 + s * 16},
       {"raster bin", 2 * v * 16 + tiles * gpu::RASTER_DEPTH_BINS * 16 + e * 8},
@@ -71,6 +73,7 @@ FrameResult benchFrame(const vk::Context& ctx, const FrameCase& c) {
   settings.look.skinBounce = c.skinBounce;
   settings.look.scattering = c.scattering;
   settings.lutMode = c.lutMode;
+  if (c.lodFraction < 1.0f) settings.lod = {true, 0.0f, 1e-3f, c.lodFraction};  // that fraction at any distance
   HairSystem hair(ctx, asset, settings);
   renderer.attach(hair);
   DrawView view;

@@ -26,6 +26,7 @@ struct FrameCase {
   bool skinBounce = true;  // compute only: LookSettings::skinBounce
   render::Scattering scattering = render::LookSettings{}.scattering;  // both paths
   LutMode lutMode = LutMode::Physical;  // the fibre model's device form (dual needs physical)
+  float lodFraction = 1.0f;  // the strands drawn (a level of detail forced at every distance), widened
 };
 
 struct PassTiming {

@@ -35,6 +35,7 @@ struct BenchOptions {
   std::vector<std::string> skinBounce{"on"};
   std::vector<std::string> scattering{hp::render::scatteringName(hp::render::LookSettings{}.scattering)};
   std::vector<std::string> lutModes{hp::lutModeName(hp::cli::FrameCase{}.lutMode)};
+  std::vector<float> lodFractions{1.0f};
   std::string json, plot, device;
 };
 
@@ -48,11 +49,14 @@ void parseResolution(const std::string& text, std::uint32_t& w, std::uint32_t& h
   h = b;
 }
 
-void addSampleCounts(hp::cli::FrameCase c, const std::vector<std::uint32_t>& msaa, std::vector<hp::cli::FrameCase>& out) {
-  for (std::uint32_t m : msaa) {
-    c.msaa = m;
-    out.push_back(c);
-  }
+void addSampleCounts(hp::cli::FrameCase c, const std::vector<std::uint32_t>& msaa, const std::vector<float>& lods,
+                     std::vector<hp::cli::FrameCase>& out) {
+  for (std::uint32_t m : msaa)
+    for (float f : lods) {
+      c.msaa = m;
+      c.lodFraction = f;
+      out.push_back(c);
+    }
 }
 
 // A parser's error, prefixed with the option it came from.
@@ -92,6 +96,8 @@ std::vector<bool> skinBounces(const BenchOptions& o) {
 
 std::vector<hp::cli::FrameCase> cases(const BenchOptions& o) {
   if (o.frames == 0 || o.frames > 1000) throw hp::Error("bench: --frames must be in [1, 1000]");
+  for (float f : o.lodFractions)
+    if (!(f > 0.0f && f <= 1.0f)) throw hp::Error("bench: --lod-fraction values must be in (0, 1], got " + std::to_string(f));
   hp::cli::FrameCase base;
   base.frames = o.frames;
   parseResolution(o.resolution, base.width, base.height);
@@ -112,7 +118,7 @@ std::vector<hp::cli::FrameCase> cases(const BenchOptions& o) {
         c.scattering = scattering;
         for (const bool bounce : mode == hp::RasterMode::Compute ? computeBounces : graphicsBounces) {
           c.skinBounce = bounce;
-          addSampleCounts(c, o.msaa, out);  // the head's samples (both paths), the graphics path's hair's
+          addSampleCounts(c, o.msaa, o.lodFractions, out);  // the head's samples (both paths), the graphics path's hair's
         }
       }
     }
@@ -134,7 +140,7 @@ nlohmann::json toJson(const hp::cli::FrameResult& r) {
     }
     passes[name] = p;
   }
-  return {{"strands", r.c.strands},      {"width", r.c.width},
+  return {{"strands", r.c.strands},      {"width", r.c.width},          {"lod_fraction", r.c.lodFraction},
           {"height", r.c.height},        {"raster", hp::cli::frameCaseName(r.c)},
           {"lut_mode", hp::lutModeName(r.c.lutMode)},
           {"scattering", hp::render::scatteringName(r.c.scattering)},
@@ -147,9 +153,9 @@ nlohmann::json toJson(const hp::cli::FrameResult& r) {
 }
 
 void printText(const nlohmann::json& row) {
-  std::printf("%u strands, %ux%u, %s: frame %.1f ms (copy %.2f GB/s), host %.1f ms per frame, resident %.1f MiB "
+  std::printf("%u strands (LOD %.2f), %ux%u, %s: frame %.1f ms (copy %.2f GB/s), host %.1f ms per frame, resident %.1f MiB "
               "(%+.2f MiB per frame)\n",
-              row["strands"].get<unsigned>(), row["width"].get<unsigned>(), row["height"].get<unsigned>(),
+              row["strands"].get<unsigned>(), row["lod_fraction"].get<double>(), row["width"].get<unsigned>(), row["height"].get<unsigned>(),
               row["raster"].get<std::string>().c_str(), row["frame_ms"].get<double>(),
               row["copy_gb_per_s"].get<double>(), row["host_frame_ms"].get<double>(),
               row["resident_mib"].get<double>(), row["resident_growth_mib_per_frame"].get<double>());
@@ -214,6 +220,9 @@ void setup(CLI::App& app) {
   cmd->add_option("--lut-mode", o->lutModes, "Fibre models' device forms: physical, float, paper and/or direct (comma separated)")
       ->delimiter(',')
       ->capture_default_str();
+  cmd->add_option("--lod-fraction", o->lodFractions,
+                  "Level-of-detail fractions of the strands drawn (widened to keep coverage), comma separated")
+      ->delimiter(',')->capture_default_str();
   cmd->add_option("--json", o->json, "Write the report as JSON to this file");
   cmd->add_option("--plot", o->plot, "Write an SVG of ms per pass against strand count to this file");
   cmd->add_option("--device", o->device, "Vulkan device: index or name substring (env HAIRPIPE_DEVICE)");

@@ -107,6 +107,14 @@ hp::RenderRequest makeRenderRequest(const FrameOptions& o, const CLI::App& cmd) 
   r.lines = o.lines;
   r.guidesOnly = o.guidesOnly;
   r.drawHead = !o.hairOnly;
+  if (!o.lod.empty()) {
+    r.lod = {true, o.lod[0], o.lod[1], o.lod[2]};
+    try {
+      hp::validate(r.lod);
+    } catch (const hp::Error& e) {
+      throw hp::Error(std::string("--lod: ") + e.what());
+    }
+  }
   r.exposure = o.exposure;
   if (o.ambient) r.look.ambient = *o.ambient;
   if (o.scattering) {
@@ -189,6 +197,10 @@ void addFrameOptions(CLI::App& cmd, FrameOptions& o) {
       ->delimiter(',')->expected(3);
   cmd.add_flag("--lines", o.lines, "Draw strands as lines instead of ribbons");
   cmd.add_flag("--guides-only", o.guidesOnly, "Draw the smoothed guides only (no interpolation)");
+  cmd.add_option("--lod", o.lod,
+                 "Level of detail START,END,MIN: beyond START (distance from the eye to the head) the strands thin "
+                 "to the fraction MIN at END, widened to keep the hair's coverage")
+      ->delimiter(',')->expected(3);
   cmd.add_flag("--hair-only", o.hairOnly,
                "Draw the hair without the model's head (no head drawn, in the shadows or bouncing light; "
                "collisions unchanged)");

@@ -34,6 +34,7 @@ struct FrameOptions {
   bool lines = false;
   bool guidesOnly = false;
   bool hairOnly = false;
+  std::vector<float> lod;  // START,END,MIN: level of detail by distance
   bool noShadows = false;
   bool deepOpacity = true;
   std::optional<std::uint32_t> opacityResolution;

@@ -18,6 +18,7 @@ RendererSettings rendererSettings(const HairSystemSettings& s) {
 InstanceSettings instanceSettings(const HairSystemSettings& s) {
   InstanceSettings i{s.simulation, s.material, s.lutMode, s.strands, s.look};
   i.drawHead = s.drawHead;
+  i.lod = s.lod;
   return i;
 }
 

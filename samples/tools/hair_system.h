@@ -27,6 +27,7 @@ struct HairSystemSettings {
   LutMode lutMode = LutMode::Physical;
   compute::StrandOptions strands;
   bool drawHead = true;  // false: hair only (InstanceSettings::drawHead)
+  hairpipe::LodSettings lod;
   hairpipe::AttachmentFormats formats;
   render::LookSettings look;
   render::OpacitySettings opacity;

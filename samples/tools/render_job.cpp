@@ -78,6 +78,7 @@ HairSystemSettings systemSettings(const RenderRequest& r, const hairpipe::Attach
   s.lutMode = r.lutMode;
   s.strands.guidesOnly = r.guidesOnly;
   s.drawHead = r.drawHead;
+  s.lod = r.lod;
   s.formats = formats;
   s.look = r.look;
   s.opacity = r.opacity;

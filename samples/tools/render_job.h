@@ -23,6 +23,7 @@ struct RenderRequest {
   bool lines = false;
   bool guidesOnly = false;
   bool drawHead = true;  // false: hair only (no proxy head drawn, shadowing or bouncing light)
+  hairpipe::LodSettings lod;
   float exposure = 1.0f;
   render::LookSettings look;
   render::OpacitySettings opacity;

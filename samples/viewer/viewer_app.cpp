@@ -143,7 +143,7 @@ Viewer::Viewer(const ViewerOptions& options, const HairAsset& asset)
   state_.panel = options.panel;
   state_.animation = r.animation;
   tunables_ = {r.scene.simulation, 4.0, r.scene.density.totalStrands, r.scene.material, r.lutMode, r.opacity, r.look,
-               r.exposure};
+               r.lod, r.exposure};
   input_.state = &state_;
   installInput(window_.handle(), input_);
   imgui_ = std::make_unique<ImGuiSession>(window_.handle());
@@ -212,6 +212,7 @@ void Viewer::applyPanel(const PanelChanges& c) {
     }
     if (c.opacity) hair.renderer().setOpacityTuning(tunables_.opacity);
     if (c.look) hair.setLook(tunables_.look);
+    if (c.lod) hair.instance().setLod(tunables_.lod);
     if (c.material) hair.setMaterial(tunables_.material, tunables_.lutMode);
     if (c.density) {
       DensityOptions d = options_.request.scene.density;
@@ -374,7 +375,8 @@ void Viewer::frameStep() {
   windOn_ = state_.wind;
   applyPanel(apply);
   edited_ = {edited_.simulation || apply.simulation, edited_.density || apply.density,
-             edited_.material || apply.material, edited_.opacity || apply.opacity, edited_.look || apply.look};
+             edited_.material || apply.material, edited_.opacity || apply.opacity, edited_.look || apply.look,
+             edited_.lod || apply.lod};
   const bool shot = !options_.screenshot.empty() && options_.frames > 0 && frame_ + 1 == options_.frames;
   record(slot, image, slotIndex, shot);
   submit(slot, image);

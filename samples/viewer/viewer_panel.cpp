@@ -2,6 +2,7 @@
 
 #include <imgui.h>
 
+#include <algorithm>
 #include <numbers>
 
 namespace hp::viewer {
@@ -95,6 +96,20 @@ void lookSection(Tunables& t, PanelChanges& c) {
   c.look |= ImGui::Checkbox("skin bounce", &t.look.skinBounce);
 }
 
+void lodSection(Tunables& t, PanelChanges& c) {
+  if (!ImGui::CollapsingHeader("Level of detail")) return;
+  hairpipe::LodSettings next = t.lod;
+  bool changed = ImGui::Checkbox("thin strands with distance", &next.enabled);
+  changed |= ImGui::SliderFloat("start distance", &next.startDistance, 0.0f, 10.0f, "%.2f");
+  changed |= ImGui::SliderFloat("end distance", &next.endDistance, 0.01f, 20.0f, "%.2f");
+  changed |= ImGui::SliderFloat("min fraction", &next.minFraction, 0.02f, 1.0f, "%.2f");
+  next.endDistance = std::max(next.endDistance, next.startDistance + 0.01f);  // keep start < end
+  if (changed) {
+    t.lod = next;
+    c.lod = true;
+  }
+}
+
 void timingSection(const PanelStatus& s) {
   if (!ImGui::CollapsingHeader("GPU time per pass", ImGuiTreeNodeFlags_DefaultOpen)) return;
   ImGui::Text("%s, %s raster, %u strands", s.device.c_str(), s.raster.c_str(), s.strands);
@@ -121,6 +136,7 @@ PanelChanges drawPanel(Tunables& t, ViewState& view, const PanelStatus& status) 
   materialSection(t, c);
   shadowSection(t, c);
   lookSection(t, c);
+  lodSection(t, c);
   if (!status.error.empty()) ImGui::TextColored(ImVec4(1.0f, 0.4f, 0.3f, 1.0f), "%s", status.error.c_str());
   ImGui::End();
   return c;

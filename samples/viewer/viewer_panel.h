@@ -23,6 +23,7 @@ struct Tunables {
   LutMode lutMode = LutMode::Physical;
   render::OpacitySettings opacity;
   render::LookSettings look;
+  hairpipe::LodSettings lod;
   float exposure = 1.0f;
 };
 
@@ -32,6 +33,7 @@ struct PanelChanges {
   bool material = false;  // "apply" pressed: rebuild the lookup textures
   bool opacity = false;
   bool look = false;
+  bool lod = false;
 };
 
 struct PanelStatus {

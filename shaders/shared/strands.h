@@ -7,7 +7,7 @@
 //   guide particles  vec4[G*P]  xyz position, w unused; root first (the simulation's output)
 //   smoothed guides  vec4[G*Q]  positions: xyz, w = v (0 at the root, 1 at the tip)
 //                    vec4[G*Q]  tangents: xyz unit (root to tip), w = 0
-//   triangles        uvec4[T]   x, y, z = guides A, B, C; w = first render strand of the triangle
+//   triangles        uvec4[T]   x, y, z = guides A, B, C; w = render strands in the triangle
 //   bindings         StrandBindingGpu[S]
 //   strand positions vec4[S*Q]  as smoothed guides: xyz, w = v
 //   strand tangents  vec4[S*Q]  xyz unit, w = 0

@@ -133,6 +133,15 @@ TEST_F(PublicApi, InstanceSettingsAndSettersAreRefusedByField) {
   hairpipe::Density density;
   density.totalStrands = 0;
   EXPECT_THAT(failureOf(head.setDensity(density)), HasSubstr("hairpipe::Instance::setDensity"));
+  hairpipe::LodSettings lod;
+  lod.endDistance = lod.startDistance;
+  EXPECT_THAT(failureOf(head.setLod(lod)), HasSubstr("hairpipe::Instance::setLod: LodSettings: the distances"));
+  lod = {};
+  lod.minFraction = 0.0f;
+  EXPECT_THAT(failureOf(head.setLod(lod)), HasSubstr("LodSettings.minFraction must be in (0, 1], got 0"));
+  bad = {};
+  bad.lod.startDistance = kNaN;
+  EXPECT_THAT(failureOf(renderer_->createInstance(*asset_, bad)), HasSubstr("LodSettings: the distances"));
   EXPECT_EQ(head.strandCount(), 500u);  // a refused setter changes nothing
 }
 

@@ -88,8 +88,11 @@ TEST(TopologyDensity, TotalIsExactAndFollowsArea) {
   EXPECT_EQ(strandsPerTriangle(roots, tris, d), (std::vector<std::uint32_t>{5, 5}));
 }
 
-TEST(TopologyDensity, StrandsAreGroupedByTriangleAndDeterministic) {
-  std::vector<glm::vec3> roots{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}};
+// Level-of-detail order: every prefix of the strands holds each triangle's share (within 1 + 3 x share
+// strands: each triangle's count is within one of its stratum, the prefix length within three), so drawing
+// the first fraction thins all of the scalp evenly.
+TEST(TopologyDensity, EveryPrefixHoldsEachTrianglesShareAndIsDeterministic) {
+  std::vector<glm::vec3> roots{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}, {3, 0, 0}};
   DensityOptions d;
   d.mode = DensityOptions::Mode::PerTriangle;
   d.strandsPerTriangle = 50;
@@ -97,10 +100,26 @@ TEST(TopologyDensity, StrandsAreGroupedByTriangleAndDeterministic) {
   auto b = buildInterpolationTopology(roots, {{0, 1, 2}, {1, 3, 2}}, d);
   ASSERT_EQ(a.strands.size(), 100u);
   for (std::size_t i = 0; i < a.strands.size(); ++i) {
-    EXPECT_EQ(a.strands[i].triangle, i < 50 ? 0u : 1u);
+    EXPECT_EQ(a.strands[i].triangle, b.strands[i].triangle);
     EXPECT_EQ(a.strands[i].barycentric, b.strands[i].barycentric);
     EXPECT_EQ(a.strands[i].random, b.strands[i].random);
   }
+  d.mode = DensityOptions::Mode::Total;  // triangle areas 0.5, 0.5, 1: 75, 75 and 150 strands
+  d.totalStrands = 300;
+  auto lod = buildInterpolationTopology(roots, {{0, 1, 2}, {1, 3, 2}, {1, 4, 3}}, d);
+  const double share[] = {0.25, 0.25, 0.5};
+  std::vector<double> seen(3, 0.0);
+  for (std::size_t n = 1; n <= lod.strands.size(); ++n) {
+    seen[lod.strands[n - 1].triangle] += 1.0;
+    for (int t = 0; t < 3; ++t) {
+      const double off = std::abs(seen[t] - share[t] * double(n));
+      EXPECT_LE(off, 1.0 + 3.0 * share[t]) << "prefix " << n << ", triangle " << t;
+    }
+  }
+  // Not the order of generation (triangle after triangle): the first ten strands span all three.
+  std::vector<bool> first10(3, false);
+  for (int i = 0; i < 10; ++i) first10[lod.strands[i].triangle] = true;
+  EXPECT_TRUE(first10[0] && first10[1] && first10[2]);
   d.seed = 8;
   auto c = buildInterpolationTopology(roots, {{0, 1, 2}, {1, 3, 2}}, d);
   EXPECT_NE(a.strands[0].barycentric, c.strands[0].barycentric);

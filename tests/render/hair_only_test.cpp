@@ -9,36 +9,22 @@
 #include <vector>
 
 #include "compute/renderer/renderer.h"
-#include "engine/core/hair/default_head.h"
 #include "engine/vk/submit.h"
 #include "samples/tools/offscreen_renderer.h"
+#include "tests/support/small_frame.h"
 #include "tests/support/vk_fixture.h"
 
 using hp::test::VulkanTest;
 
 namespace {
-constexpr std::uint32_t kWidth = 160, kHeight = 96;
-
-hp::HairAsset head(std::uint32_t strands) {
-  hp::DensityOptions density;
-  density.totalStrands = strands;
-  return hp::buildDefaultHeadAsset(hp::defaultHeadGrowth(), density);
-}
-
-hp::View frontView() {
-  hp::CameraSpec cam;
-  cam.orbitDeg = 0.0f;
-  cam.elevationDeg = 0.0f;
-  cam.distance = 0.8f;
-  cam.target = {0.0f, -0.05f, 0.0f};
-  return hp::View{hp::orbitCamera(cam, float(kWidth) / kHeight), {kWidth, kHeight}, false, 0};
-}
+using hp::test::kSmallHeight;
+using hp::test::kSmallWidth;
 
 // The application's depth: the near plane (0) over the left half, as a character in front would leave it.
 void clearLeftHalfToNear(const hp::vk::Context& ctx, VkCommandBuffer cmd) {
   VkClearAttachment depth{VK_IMAGE_ASPECT_DEPTH_BIT, 0, {}};
   depth.clearValue.depthStencil = {0.0f, 0};
-  const VkClearRect rect{{{0, 0}, {kWidth / 2, kHeight}}, 0, 1};
+  const VkClearRect rect{{{0, 0}, {kSmallWidth / 2, kSmallHeight}}, 0, 1};
   ctx.fn().vkCmdClearAttachments(cmd, 1, &depth, 1, &rect);
 }
 
@@ -48,9 +34,9 @@ void clearLeftHalfToNear(const hp::vk::Context& ctx, VkCommandBuffer cmd) {
 std::size_t differingPixels(const std::vector<std::uint8_t>& image, const std::vector<std::uint8_t>& reference,
                             std::uint32_t x0, std::uint32_t x1, int tolerance = 0) {
   std::size_t n = 0;
-  for (std::uint32_t y = 0; y < kHeight; ++y)
+  for (std::uint32_t y = 0; y < kSmallHeight; ++y)
     for (std::uint32_t x = x0; x < x1; ++x) {
-      const std::size_t px = (std::size_t(y) * kWidth + x) * 4;
+      const std::size_t px = (std::size_t(y) * kSmallWidth + x) * 4;
       for (int c = 0; c < 3; ++c)
         if (std::abs(int(image[px + c]) - int(reference[px + c])) > tolerance) {
           ++n;
@@ -75,7 +61,7 @@ struct Frames {
 };
 
 Frames renderFrames(const hp::vk::Context& ctx, hp::RasterMode raster) {
-  hp::render::OffscreenRenderer target(ctx, kWidth, kHeight, 1, raster);
+  hp::render::OffscreenRenderer target(ctx, kSmallWidth, kSmallHeight, 1, raster);
   hp::RendererSettings settings;
   settings.formats = target.formats();
   settings.raster = raster;
@@ -83,10 +69,10 @@ Frames renderFrames(const hp::vk::Context& ctx, hp::RasterMode raster) {
   hp::Renderer renderer(ctx, settings);
   hp::InstanceSettings hairOnlySettings;
   hairOnlySettings.drawHead = false;
-  const hp::HairAsset asset = head(1500);
+  const hp::HairAsset asset = hp::test::defaultHeadWithStrands(1500);
   auto withHead = renderer.createInstance(asset, {});
   auto hairOnly = renderer.createInstance(asset, hairOnlySettings);
-  const hp::View view = frontView();
+  const hp::View view = hp::test::smallFrontView();
   std::uint64_t frame = 0;
   const auto render = [&](hp::HairInstance* instance, bool behind, bool update) {
     hp::HairInstance* const list[] = {instance};
@@ -122,19 +108,19 @@ Frames renderFrames(const hp::vk::Context& ctx, hp::RasterMode raster) {
 }
 
 void expectHairOnly(const Frames& f, const char* path) {
-  const std::uint32_t half = kWidth / 2;
+  const std::uint32_t half = kSmallWidth / 2;
   const int tolerance = 2;
   const std::size_t skinWithHead = skinPixels(f.withHead), skinHairOnly = skinPixels(f.hairOnly);
   const std::size_t hairLeft = differingPixels(f.hairOnly, f.background, 0, half, tolerance);
   const std::size_t behindLeft = differingPixels(f.hairOnlyBehind, f.background, 0, half, tolerance);
-  const std::size_t changedRight = differingPixels(f.hairOnlyBehind, f.hairOnly, half, kWidth, tolerance);
+  const std::size_t changedRight = differingPixels(f.hairOnlyBehind, f.hairOnly, half, kSmallWidth, tolerance);
   std::cout << path << ": skin pixels with head " << skinWithHead << ", hair only " << skinHairOnly
             << "; hair pixels in the left half " << hairLeft << ", behind the application's depth " << behindLeft
             << "; right half pixels changed by it " << changedRight << "\n";
   // The head is drawn with its instance (its face and shoulders) and not at all without it; the hair is.
-  EXPECT_GT(skinWithHead, std::size_t(kWidth * kHeight / 20)) << path;
+  EXPECT_GT(skinWithHead, std::size_t(kSmallWidth * kSmallHeight / 20)) << path;
   EXPECT_EQ(skinHairOnly, 0u) << path;
-  EXPECT_GT(hairLeft, std::size_t(kWidth * kHeight / 50)) << path;
+  EXPECT_GT(hairLeft, std::size_t(kSmallWidth * kSmallHeight / 50)) << path;
   // Behind the application's depth nothing of the hair shows; beside it every pixel is as before.
   EXPECT_EQ(behindLeft, 0u) << path;
   EXPECT_EQ(changedRight, 0u) << path;

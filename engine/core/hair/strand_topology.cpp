@@ -70,14 +70,24 @@ InterpolationTopology buildInterpolationTopology(std::span<const glm::vec3> root
       throw Error("interpolation topology: triangle " + std::to_string(t) + " names a guide beyond " +
                   std::to_string(roots.size()));
   std::vector<std::uint32_t> counts = strandsPerTriangle(roots, triangles, density);
-  InterpolationTopology topo;
-  topo.strands.reserve(std::accumulate(counts.begin(), counts.end(), std::size_t(0)));
+  const std::size_t total = std::accumulate(counts.begin(), counts.end(), std::size_t(0));
+  std::vector<StrandBinding> made;
+  std::vector<std::pair<float, std::uint32_t>> order;  // (LOD rank, index in `made`)
+  made.reserve(total);
+  order.reserve(total);
   for (std::uint32_t t = 0; t < counts.size(); ++t)
     for (std::uint32_t k = 0; k < counts[t]; ++k) {
-      auto s = static_cast<std::uint32_t>(topo.strands.size());
+      auto s = static_cast<std::uint32_t>(made.size());
       glm::vec3 x = foldBarycentric(hashRandom(density.seed, s, 1), hashRandom(density.seed, s, 2));
-      topo.strands.push_back({t, x, hashRandom(density.seed, s, 3)});
+      made.push_back({t, x, hashRandom(density.seed, s, 3)});
+      // Jittered strata of the triangle's own strands: any prefix of the sorted order holds each
+      // triangle's share of the strands, up to one.
+      order.emplace_back((float(k) + hashRandom(density.seed, s, 4)) / float(counts[t]), s);
     }
+  std::sort(order.begin(), order.end());
+  InterpolationTopology topo;
+  topo.strands.reserve(total);
+  for (const auto& [rank, s] : order) topo.strands.push_back(made[s]);
   topo.triangles = std::move(triangles);
   return topo;
 }

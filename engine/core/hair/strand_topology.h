@@ -2,9 +2,10 @@
 // Contract: the interpolation topology of paper §1. Each triangle names three guides (A, B, C); each
 // render strand sits in one triangle at barycentrics X = (X1, X2, X3), X1 + X2 + X3 = 1, all >= 0,
 // and every frame becomes K_j = X1 A_j + X2 B_j + X3 C_j. Barycentrics come from the fold method
-// (docs/THEORY.md §1.4), which is uniform over the triangle. Strands of a triangle are contiguous and
-// triangles are in order, so the GPU can index them directly. Everything derives from hashRandom
-// with the density seed: the same inputs give the same topology on every run and machine.
+// (docs/THEORY.md §1.4), which is uniform over the triangle. The strands are in level-of-detail order:
+// any prefix of them (the first fraction f of all strands) holds about f of each triangle's strands
+// (within one), so drawing a prefix thins the hair evenly. Everything derives from hashRandom with the
+// density seed: the same inputs give the same topology on every run and machine.
 #include <glm/glm.hpp>
 
 #include <cstdint>

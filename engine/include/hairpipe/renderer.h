@@ -93,6 +93,7 @@ class Instance {
   Status setBones(std::span<const Mat4> bones) noexcept;
   Status setMaterial(const Material& material, FibreModel fibre) noexcept;
   Status setLook(const LookSettings& look) noexcept;
+  Status setLod(const LodSettings& lod) noexcept;
   Status setSimulation(const SimulationSettings& simulation) noexcept;
   // Another density of render strands between the same guides (new strand buffers, filled by the next
   // recordUpdate; a raster target holding the instance is rebuilt).

@@ -123,6 +123,18 @@ struct ScalpInput {
   std::uint32_t boneCount = 0;      // Bones: [1, 256]
 };
 
+// Level of detail by distance. Per view, from the distance d between its eye and the instance's head
+// origin: fraction 1 up to startDistance, falling linearly to minFraction at endDistance and beyond. The
+// instance then draws that fraction of its render strands (an even thinning: every scalp triangle keeps
+// its share) and widens each by 1 / fraction, so the hair keeps its coverage. The shadow maps use the
+// largest fraction of the views most recently drawn. Changing it needs no rebuild.
+struct LodSettings {
+  bool enabled = false;
+  float startDistance = 1.5f;  // scene units, >= 0
+  float endDistance = 6.0f;    // > startDistance
+  float minFraction = 0.25f;   // (0, 1]
+};
+
 struct InstanceSettings {
   SimulationSettings simulation;
   Material material;
@@ -137,6 +149,7 @@ struct InstanceSettings {
   // and bounces no light onto the hair (the look's skinBounce has no skin to bounce from). Collisions are
   // unchanged: they come from the asset's colliders and distance field, never from what is drawn.
   bool drawHead = true;
+  LodSettings lod;
 };
 
 // One light. `direction` points from the hair toward the light; a spot shines along -direction from
