@@ -57,6 +57,7 @@ hp::RendererSettings renderer(const RendererSettings& s) {
   r.maxViewsPerFrame = s.maxViewsPerFrame;
   r.raster = raster(s.raster);
   r.rasterSettings.tileBudget = s.tileBudget;
+  r.pipelineCache = s.pipelineCache;
   return r;
 }
 

@@ -152,5 +152,9 @@ Status Renderer::setOpacityTuning(const OpacitySettings& opacity) noexcept {
 RasterMode Renderer::raster() const noexcept {
   return impl_ ? convert::raster(impl_->raster()) : RasterMode::Auto;  // Auto: a moved-from Renderer
 }
+Result<std::vector<std::uint8_t>> Renderer::pipelineCacheData() const noexcept {
+  return guarded<std::vector<std::uint8_t>>("hairpipe::Renderer::pipelineCacheData",
+                                            [&] { return implementation(impl_).pipelineCacheData(); });
+}
 
 }  // namespace hairpipe

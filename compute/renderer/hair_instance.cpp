@@ -98,15 +98,17 @@ void HairInstance::setHeadToWorld(const glm::mat4& headToWorld) {
 void HairInstance::setMaterial(const HairMaterial& material, LutMode mode) {
   material.validate();
   if (material == settings_.material && mode == settings_.lutMode) return;
-  auto textures = renderer_.marschner(material, mode);
-  auto pass = makeStrandPass(*geometry_, *textures);  // everything that can throw happens before the swap
-  // The old textures and strand pass stay alive until the frames that sample them are done.
-  renderer_.retire(marschner_);
-  marschner_ = std::move(textures);
-  replaceStrandPass(std::move(pass));
-  settings_.material = material;
-  settings_.lutMode = mode;
-  renderer_.instanceChanged(*this);  // a compute raster target names the old LUTs
+  renderer_.withUploads("set material", [&] {
+    auto textures = renderer_.marschner(material, mode);
+    auto pass = makeStrandPass(*geometry_, *textures);  // everything that can throw happens before the swap
+    // The old textures and strand pass stay alive until the frames that sample them are done.
+    renderer_.retire(marschner_);
+    marschner_ = std::move(textures);
+    replaceStrandPass(std::move(pass));
+    settings_.material = material;
+    settings_.lutMode = mode;
+    renderer_.instanceChanged(*this);  // a compute raster target names the old LUTs
+  });
 }
 
 void HairInstance::setLook(const render::LookSettings& look) {
@@ -140,14 +142,16 @@ void HairInstance::setSimulation(const SimulationParams& params) {
 }
 
 void HairInstance::setStrands(const InterpolationTopology& topology, const compute::StrandOptions& options) {
-  InstanceSettings next = settings_;
-  next.strands = options;
-  auto geometry = std::make_shared<Geometry>(renderer_, simulate_, topology, headMesh_, next);
-  auto pass = makeStrandPass(*geometry, *marschner_);
-  renderer_.retire(geometry_);
-  geometry_ = std::move(geometry);
-  replaceStrandPass(std::move(pass));
-  settings_ = next;
-  renderer_.instanceChanged(*this);  // a compute raster target reads the old strand buffers
+  renderer_.withUploads("set strands", [&] {
+    InstanceSettings next = settings_;
+    next.strands = options;
+    auto geometry = std::make_shared<Geometry>(renderer_, simulate_, topology, headMesh_, next);
+    auto pass = makeStrandPass(*geometry, *marschner_);
+    renderer_.retire(geometry_);
+    geometry_ = std::move(geometry);
+    replaceStrandPass(std::move(pass));
+    settings_ = next;
+    renderer_.instanceChanged(*this);  // a compute raster target reads the old strand buffers
+  });
 }
 }  // namespace hp

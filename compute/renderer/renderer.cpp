@@ -20,7 +20,7 @@ Renderer::Renderer(const vk::Context& ctx, const RendererSettings& settings)
     : ctx_(ctx),
       settings_(validated(settings)),
       raster_(resolveRasterMode(settings.raster, ctx.properties().deviceType)),
-      pipelines_(ctx),
+      pipelines_(ctx, settings.pipelineCache),
       shadows_(std::make_unique<render::ShadowMaps>(ctx, settings.opacity)),
       frameLights_(settings.framesInFlight),
       frameHeadShadows_(settings.framesInFlight) {}
@@ -30,15 +30,51 @@ Renderer::Renderer(const vk::Context& ctx, const RendererSettings& settings)
 Renderer::~Renderer() {
   rasterTarget_.reset();
   retired_.clear();
+  deferred_.clear();
 }
 
 std::unique_ptr<HairInstance> Renderer::createInstance(const HairAsset& asset, const InstanceSettings& settings,
                                                        const glm::mat4& initialHead) {
-  // Every upload of the instance (and of a new material's LUTs) in one submission, waited on once.
-  vk::OneShotBatch uploads(ctx_, "create instance");
-  std::unique_ptr<HairInstance> instance(new HairInstance(*this, asset, settings, initialHead));
-  uploads.submit();
+  // Every upload of the instance (and of a new material's LUTs) in one batch.
+  std::unique_ptr<HairInstance> instance;
+  withUploads("create instance", [&] { instance.reset(new HairInstance(*this, asset, settings, initialHead)); });
   return instance;
+}
+
+void Renderer::withUploads(const std::string& name, const std::function<void()>& change) {
+  const bool frameLoop = lastFrame_.has_value();
+  vk::OneShotBatch batch(ctx_, name, frameLoop ? vk::OneShotBatch::Mode::Defer : vk::OneShotBatch::Mode::Submit);
+  const auto handOver = [&] {
+    if (!frameLoop) return batch.submit();
+    if (std::shared_ptr<vk::DeferredWork> work = batch.take()) deferred_.push_back(std::move(work));
+  };
+  try {
+    change();
+  } catch (...) {
+    // A change that failed part way may already have swapped in objects whose uploads were recorded: they
+    // still run. The failure reported is the change's.
+    try {
+      handOver();
+    } catch (...) {
+    }
+    throw;
+  }
+  handOver();
+}
+
+void Renderer::executeDeferred(VkCommandBuffer cmd) {
+  if (deferred_.empty()) return;
+  std::vector<VkCommandBuffer> buffers;
+  for (const auto& work : deferred_) buffers.push_back(work->commandBuffer());
+  ctx_.fn().vkCmdExecuteCommands(cmd, std::uint32_t(buffers.size()), buffers.data());
+  for (auto& work : deferred_) retire(std::move(work));
+  deferred_.clear();
+}
+
+void Renderer::requireNoDeferredWork(const char* call) const {
+  if (!deferred_.empty())
+    throw Error(std::string("Renderer::") + call + ": a change made since this frame's recordShadows waits for "
+                "the next recordUpdate or recordShadows (make changes between frames)");
 }
 
 void Renderer::destroyInstance(std::unique_ptr<HairInstance> instance) {
@@ -53,7 +89,9 @@ void Renderer::setRasterTarget(VkExtent2D extent, VkImageView depth, std::span<H
   if (raster_ != RasterMode::Compute) throw Error("Renderer::setRasterTarget: the raster mode is not compute");
   for (const HairInstance* i : instances)
     if (!i || &i->renderer_ != this) throw Error("Renderer: an instance is null or belongs to another Renderer");
-  auto target = std::make_shared<ComputeRaster>(ctx_, settings_, *shadows_, extent, depth, instances);
+  std::shared_ptr<ComputeRaster> target;
+  withUploads("raster target",
+              [&] { target = std::make_shared<ComputeRaster>(ctx_, settings_, *shadows_, extent, depth, instances); });
   if (rasterTarget_) retire(rasterTarget_);  // frames in flight may still use its buffers and descriptors
   rasterTarget_ = std::move(target);
 }
@@ -81,6 +119,7 @@ const ComputeRaster& Renderer::target() const {
 }
 
 void Renderer::recordRaster(VkCommandBuffer cmd, std::uint64_t frame, const View& view, vk::GpuProfiler* profiler) {
+  requireNoDeferredWork("recordRaster");
   const ComputeRaster& t = target();
   view.validate(settings_.maxViewsPerFrame);
   beginFrame(frame, t.instances());
@@ -134,6 +173,7 @@ void Renderer::beginFrame(std::uint64_t frame, std::span<HairInstance* const> in
 void Renderer::recordUpdate(VkCommandBuffer cmd, std::uint64_t frame, std::span<HairInstance* const> instances,
                             vk::GpuProfiler* profiler) {
   beginFrame(frame, instances);
+  executeDeferred(cmd);
   std::vector<UpdateWork> work;
   work.reserve(instances.size());
   for (HairInstance* i : instances)
@@ -145,6 +185,7 @@ void Renderer::recordShadows(VkCommandBuffer cmd, std::uint64_t frame, const Lig
                              std::span<HairInstance* const> instances, vk::GpuProfiler* profiler) {
   light.validate();
   beginFrame(frame, instances);
+  executeDeferred(cmd);
   frameLights_[frame % settings_.framesInFlight] = light;
   render::HeadShadowView& headView = frameHeadShadows_[frame % settings_.framesInFlight];
   headView = {};
@@ -197,6 +238,7 @@ void Renderer::recordHeadBounce(VkCommandBuffer cmd, const LightSpec& light, std
 
 void Renderer::recordDraw(VkCommandBuffer cmd, std::uint64_t frame, const View& view,
                           std::span<HairInstance* const> instances, vk::GpuProfiler* profiler) {
+  requireNoDeferredWork("recordDraw");
   view.validate(settings_.maxViewsPerFrame);
   beginFrame(frame, instances);
   const LightSpec& light = frameLights_[frame % settings_.framesInFlight];

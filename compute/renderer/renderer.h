@@ -35,9 +35,11 @@
 // (graphics mode, no instance, device limits) and recordRaster/recordComposite/rasterImage without a
 // raster target (none set, or dropped because one of its instances was destroyed without
 // destroyInstance). Nothing else in the record calls throws.
+#include <functional>
 #include <memory>
 #include <optional>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "compute/renderer/compute_raster.h"
@@ -45,6 +47,7 @@
 #include "compute/shadows/shadow_maps.h"
 #include "compute/renderer/renderer_settings.h"
 #include "engine/vk/pipeline_library.h"
+#include "engine/vk/submit.h"
 #include "engine/vk/profiler.h"
 
 namespace hp {
@@ -96,10 +99,15 @@ class Renderer {
     return frameHeadShadows_[frame % settings_.framesInFlight];
   }
   vk::PipelineLibrary& pipelines() { return pipelines_; }
+  std::vector<std::uint8_t> pipelineCacheData() const { return pipelines_.cacheData(); }
   // The LUT textures of a material and mode, built once and shared while any instance uses them.
   std::shared_ptr<render::MarschnerTextures> marschner(const HairMaterial& material, LutMode mode);
   // Keeps `resource` alive until the frames that may use it now are done.
   void retire(std::shared_ptr<void> resource);
+  // Runs `change` (construction or a setter) with its device work batched: before the first frame, one
+  // submission waited on; after it (the frame loop), recorded into a deferred batch that the next
+  // recordUpdate or recordShadows executes in the application's command buffer: no submission, no wait.
+  void withUploads(const std::string& name, const std::function<void()>& change);
   std::size_t retiredCount() const { return retired_.size(); }
 
  private:
@@ -111,6 +119,11 @@ class Renderer {
   // rebuilt: nothing may throw here); recordRaster then asks for setRasterTarget().
   void forgetInstance(const HairInstance& instance) noexcept;
   const ComputeRaster& target() const;
+  // The deferred work of changes since the last frame into `cmd` (outside any rendering), retired after it.
+  void executeDeferred(VkCommandBuffer cmd);
+  // recordDraw / recordRaster: every change's work was executed (a change between a frame's record calls
+  // would draw resources not yet uploaded).
+  void requireNoDeferredWork(const char* call) const;
   // The heads into the head bounce map when an instance's look asks for the skin's bounce (after the shadows).
   void recordHeadBounce(VkCommandBuffer cmd, const LightSpec& light, std::span<HairInstance* const> instances,
                         const render::HeadShadowView& headView, vk::GpuProfiler* profiler);
@@ -136,5 +149,6 @@ class Renderer {
   std::vector<Retired> retired_;
   std::optional<std::uint64_t> lastFrame_;
   std::shared_ptr<ComputeRaster> rasterTarget_;  // retired through retire() when replaced
+  std::vector<std::shared_ptr<vk::DeferredWork>> deferred_;  // changes' uploads not yet executed
 };
 }  // namespace hp

@@ -5,6 +5,7 @@
 #include "hairpipe_volk.h"
 
 #include <cstdint>
+#include <vector>
 
 #include "compute/strands/scalp_input.h"
 #include "compute/strands/strand_buffers.h"
@@ -32,6 +33,7 @@ struct RendererSettings {
   // (resolveRasterMode). Graphics by default: an embedding that only calls recordDraw keeps drawing hair.
   RasterMode raster = RasterMode::Graphics;
   compute::RasterSettings rasterSettings;
+  std::vector<std::uint8_t> pipelineCache;  // an earlier run's pipeline cache data (vk::PipelineLibrary)
   void validate() const;
 };
 

@@ -106,7 +106,8 @@ void PipelineBase::pushConstants(VkCommandBuffer cmd, const void* data, std::uin
 
 ComputePipeline::ComputePipeline(const Context& ctx, const std::string& shader, std::uint32_t workgroupSize,
                                  const std::vector<VkDescriptorSetLayout>& sets, std::uint32_t pushSize,
-                                 const std::string& name, const std::vector<std::uint32_t>& specialization)
+                                 const std::string& name, const std::vector<std::uint32_t>& specialization,
+                                 VkPipelineCache cache)
     : workgroupSize_(workgroupSize), maxGroupsX_(ctx.properties().limits.maxComputeWorkGroupCount[0]) {
   if (workgroupSize == 0 || workgroupSize > ctx.properties().limits.maxComputeWorkGroupInvocations)
     throw Error("pipeline '" + name + "': workgroup size " + std::to_string(workgroupSize) + " is not supported");
@@ -122,7 +123,7 @@ ComputePipeline::ComputePipeline(const Context& ctx, const std::string& shader, 
   info.stage = stageInfo(VK_SHADER_STAGE_COMPUTE_BIT, module.module);
   if (!specialization.empty()) info.stage.pSpecializationInfo = &specInfo;
   info.layout = layout_;
-  HP_VK_CHECK(fn_->vkCreateComputePipelines(device_, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline_));
+  HP_VK_CHECK(fn_->vkCreateComputePipelines(device_, cache, 1, &info, nullptr, &pipeline_));
   ctx.setName(VK_OBJECT_TYPE_PIPELINE, reinterpret_cast<std::uint64_t>(pipeline_), name);
 }
 
@@ -143,7 +144,7 @@ void ComputePipeline::dispatchIndirect(VkCommandBuffer cmd, VkBuffer args, VkDev
   fn_->vkCmdDispatchIndirect(cmd, args, offset);
 }
 
-GraphicsPipeline::GraphicsPipeline(const Context& ctx, const GraphicsPipelineDesc& d) {
+GraphicsPipeline::GraphicsPipeline(const Context& ctx, const GraphicsPipelineDesc& d, VkPipelineCache cache) {
   bindPoint_ = VK_PIPELINE_BIND_POINT_GRAPHICS;
   createLayout(ctx, d.sets, d.pushSize, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, d.name);
   ScopedModule vs(ctx, d.vertexShader);
@@ -196,7 +197,7 @@ GraphicsPipeline::GraphicsPipeline(const Context& ctx, const GraphicsPipelineDes
   info.pColorBlendState = &blend;
   info.pDynamicState = &dynamic;
   info.layout = layout_;
-  HP_VK_CHECK(fn_->vkCreateGraphicsPipelines(device_, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline_));
+  HP_VK_CHECK(fn_->vkCreateGraphicsPipelines(device_, cache, 1, &info, nullptr, &pipeline_));
   ctx.setName(VK_OBJECT_TYPE_PIPELINE, reinterpret_cast<std::uint64_t>(pipeline_), d.name);
 }
 

@@ -48,9 +48,10 @@ class ComputePipeline : public PipelineBase {
  public:
   ComputePipeline() = default;
   // `specialization[i]` is the value of the shader's `layout(constant_id = i) const uint` (i from 0).
+  // `cache`: a VkPipelineCache the creation reads and fills (PipelineLibrary's), or none.
   ComputePipeline(const Context& ctx, const std::string& shader, std::uint32_t workgroupSize,
                   const std::vector<VkDescriptorSetLayout>& sets, std::uint32_t pushSize, const std::string& name,
-                  const std::vector<std::uint32_t>& specialization = {});
+                  const std::vector<std::uint32_t>& specialization = {}, VkPipelineCache cache = VK_NULL_HANDLE);
   void bind(VkCommandBuffer cmd, VkDescriptorSet set) const;
   // Enough workgroups for `threads` invocations. Past maxComputeWorkGroupCount[0] groups the grid
   // becomes 2D; shaders use hpThreadId(size) from shaders/common.glsl and bounds-check against their count.
@@ -87,7 +88,7 @@ struct GraphicsPipelineDesc {
 class GraphicsPipeline : public PipelineBase {
  public:
   GraphicsPipeline() = default;
-  GraphicsPipeline(const Context& ctx, const GraphicsPipelineDesc& desc);
+  GraphicsPipeline(const Context& ctx, const GraphicsPipelineDesc& desc, VkPipelineCache cache = VK_NULL_HANDLE);
   // `dynamicOffset`: the offset of the set's one dynamic uniform buffer, if its layout has one.
   void bind(VkCommandBuffer cmd, VkDescriptorSet set, VkExtent2D extent,
             std::optional<std::uint32_t> dynamicOffset = std::nullopt) const;

@@ -1,5 +1,11 @@
 #include "engine/vk/pipeline_library.h"
 
+#include <cstring>
+
+#include "engine/core/error.h"
+#include "engine/vk/check.h"
+#include "engine/vk/context.h"
+
 namespace hp::vk {
 namespace {
 std::string computeKey(const std::string& shader, std::uint32_t workgroupSize, std::uint32_t pushSize,
@@ -18,7 +24,48 @@ std::string graphicsKey(const GraphicsPipelineDesc& d) {
   for (VkFormat f : d.colorFormats) key += "|" + std::to_string(f);
   return key;
 }
+std::uint32_t readU32(std::span<const std::uint8_t> data, std::size_t offset) {
+  std::uint32_t v = 0;
+  std::memcpy(&v, data.data() + offset, sizeof(v));
+  return v;
+}
 }  // namespace
+
+bool PipelineLibrary::cacheMatchesDevice(const Context& ctx, std::span<const std::uint8_t> data) {
+  constexpr std::size_t kHeader = 16 + VK_UUID_SIZE;  // VkPipelineCacheHeaderVersionOne
+  if (data.size() < kHeader)
+    throw Error("pipeline cache data of " + std::to_string(data.size()) + " bytes is shorter than its " +
+                std::to_string(kHeader) + "-byte header");
+  const std::uint32_t headerSize = readU32(data, 0);
+  if (headerSize < kHeader || headerSize > data.size())
+    throw Error("pipeline cache data: its header says " + std::to_string(headerSize) + " bytes, of " +
+                std::to_string(data.size()));
+  const VkPhysicalDeviceProperties& p = ctx.properties();
+  return readU32(data, 4) == VK_PIPELINE_CACHE_HEADER_VERSION_ONE && readU32(data, 8) == p.vendorID &&
+         readU32(data, 12) == p.deviceID && std::memcmp(data.data() + 16, p.pipelineCacheUUID, VK_UUID_SIZE) == 0;
+}
+
+PipelineLibrary::PipelineLibrary(const Context& ctx, std::span<const std::uint8_t> initialCache) : ctx_(&ctx) {
+  VkPipelineCacheCreateInfo info{VK_STRUCTURE_TYPE_PIPELINE_CACHE_CREATE_INFO};
+  if (!initialCache.empty() && cacheMatchesDevice(ctx, initialCache)) {
+    info.initialDataSize = initialCache.size();
+    info.pInitialData = initialCache.data();
+  }
+  HP_VK_CHECK(ctx.fn().vkCreatePipelineCache(ctx.device(), &info, nullptr, &cache_));
+  ctx.setName(VK_OBJECT_TYPE_PIPELINE_CACHE, reinterpret_cast<std::uint64_t>(cache_), "hairpipe pipeline cache");
+}
+
+PipelineLibrary::~PipelineLibrary() { ctx_->fn().vkDestroyPipelineCache(ctx_->device(), cache_, nullptr); }
+
+std::vector<std::uint8_t> PipelineLibrary::cacheData() const {
+  std::lock_guard lock(mutex_);
+  std::size_t size = 0;
+  HP_VK_CHECK(ctx_->fn().vkGetPipelineCacheData(ctx_->device(), cache_, &size, nullptr));
+  std::vector<std::uint8_t> data(size);
+  HP_VK_CHECK(ctx_->fn().vkGetPipelineCacheData(ctx_->device(), cache_, &size, data.data()));
+  data.resize(size);
+  return data;
+}
 
 std::shared_ptr<const ComputePipeline> PipelineLibrary::compute(const std::string& shader, std::uint32_t workgroupSize,
                                                                 const std::vector<VkDescriptorSetLayout>& sets,
@@ -29,7 +76,7 @@ std::shared_ptr<const ComputePipeline> PipelineLibrary::compute(const std::strin
   auto found = pipelines_.find(key);
   if (found == pipelines_.end())  // built before it is entered, so a failed build leaves no empty slot
     found = pipelines_.emplace(key, std::make_shared<ComputePipeline>(*ctx_, shader, workgroupSize, sets, pushSize,
-                                                                      name, specialization)).first;
+                                                                      name, specialization, cache_)).first;
   return std::static_pointer_cast<const ComputePipeline>(found->second);
 }
 
@@ -37,7 +84,8 @@ std::shared_ptr<const GraphicsPipeline> PipelineLibrary::graphics(const Graphics
   const std::string key = graphicsKey(desc);
   std::lock_guard lock(mutex_);
   auto found = pipelines_.find(key);
-  if (found == pipelines_.end()) found = pipelines_.emplace(key, std::make_shared<GraphicsPipeline>(*ctx_, desc)).first;
+  if (found == pipelines_.end())
+    found = pipelines_.emplace(key, std::make_shared<GraphicsPipeline>(*ctx_, desc, cache_)).first;
   return std::static_pointer_cast<const GraphicsPipeline>(found->second);
 }
 

@@ -9,11 +9,18 @@
 // may go away first. Pipelines are handed out as shared_ptr: a pass keeps what it uses alive even past
 // the library. Thread-safe.
 //
+// The library also holds a VkPipelineCache every pipeline it builds goes through: started from an
+// application's earlier cacheData() (data from another device, driver or cache version is ignored, as
+// drivers do; data too short to hold the cache header, or whose header says so, is refused with
+// hp::Error), and read back with cacheData().
+//
 // The free functions build a pipeline through `library` when there is one, or a private one otherwise
 // (passes built alone, as tests and tools do).
+#include <cstdint>
 #include <map>
 #include <memory>
 #include <mutex>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -22,9 +29,15 @@
 namespace hp::vk {
 class PipelineLibrary {
  public:
-  explicit PipelineLibrary(const Context& ctx) : ctx_(&ctx) {}
+  explicit PipelineLibrary(const Context& ctx, std::span<const std::uint8_t> initialCache = {});
+  ~PipelineLibrary();
   PipelineLibrary(const PipelineLibrary&) = delete;
   PipelineLibrary& operator=(const PipelineLibrary&) = delete;
+  // The pipeline cache's data now (vkGetPipelineCacheData), to start a later run's library with.
+  std::vector<std::uint8_t> cacheData() const;
+  // Whether `data` is a pipeline cache of this device and driver (header version one, vendor and device
+  // IDs, pipelineCacheUUID); throws hp::Error naming the problem when it is too short to be one.
+  static bool cacheMatchesDevice(const Context& ctx, std::span<const std::uint8_t> data);
 
   std::shared_ptr<const ComputePipeline> compute(const std::string& shader, std::uint32_t workgroupSize,
                                                  const std::vector<VkDescriptorSetLayout>& sets,
@@ -35,6 +48,7 @@ class PipelineLibrary {
 
  private:
   const Context* ctx_;
+  VkPipelineCache cache_ = VK_NULL_HANDLE;
   mutable std::mutex mutex_;
   std::map<std::string, std::shared_ptr<const PipelineBase>> pipelines_;
 };

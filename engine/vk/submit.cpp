@@ -7,16 +7,20 @@
 
 namespace hp::vk {
 namespace {
-VkCommandBuffer beginOneShot(const Context& ctx, const std::string& name) {
+// A primary command buffer, or a secondary one (outside any rendering) for a deferred batch.
+VkCommandBuffer beginOneShot(const Context& ctx, const std::string& name,
+                             VkCommandBufferLevel level = VK_COMMAND_BUFFER_LEVEL_PRIMARY) {
   VkCommandBufferAllocateInfo alloc{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
   alloc.commandPool = ctx.transientPool();
-  alloc.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+  alloc.level = level;
   alloc.commandBufferCount = 1;
   VkCommandBuffer cmd = VK_NULL_HANDLE;
   HP_VK_CHECK(ctx.fn().vkAllocateCommandBuffers(ctx.device(), &alloc, &cmd));
   ctx.setName(VK_OBJECT_TYPE_COMMAND_BUFFER, reinterpret_cast<std::uint64_t>(cmd), name);
+  VkCommandBufferInheritanceInfo inheritance{VK_STRUCTURE_TYPE_COMMAND_BUFFER_INHERITANCE_INFO};
   VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
   begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+  if (level == VK_COMMAND_BUFFER_LEVEL_SECONDARY) begin.pInheritanceInfo = &inheritance;
   VkResult r = ctx.fn().vkBeginCommandBuffer(cmd, &begin);
   if (r != VK_SUCCESS) ctx.fn().vkFreeCommandBuffers(ctx.device(), ctx.transientPool(), 1, &cmd);
   check(r, "vkBeginCommandBuffer");
@@ -72,14 +76,19 @@ void submitOpenBatch(const Context& ctx) {
   if (OneShotBatch* batch = ctx.openBatch()) batch->submit();
 }
 
-OneShotBatch::OneShotBatch(const Context& ctx, std::string name)
-    : ctx_(ctx), name_(std::move(name)), outer_(ctx.openBatch()) {
-  ctx_.setOpenBatch(this);
+DeferredWork::DeferredWork(const Context& ctx, VkCommandBuffer cmd, std::vector<Buffer> kept)
+    : ctx_(ctx), cmd_(cmd), kept_(std::move(kept)) {}
+
+DeferredWork::~DeferredWork() { ctx_.fn().vkFreeCommandBuffers(ctx_.device(), ctx_.transientPool(), 1, &cmd_); }
+
+OneShotBatch::OneShotBatch(const Context& ctx, std::string name, Mode mode)
+    : ctx_(ctx), name_(std::move(name)), mode_(mode), outer_(ctx.openBatch()) {
+  if (!outer_) ctx_.setOpenBatch(this);  // inside another batch, work goes to the outer one
 }
 
 OneShotBatch::~OneShotBatch() {
   release();
-  ctx_.setOpenBatch(outer_);
+  if (!outer_) ctx_.setOpenBatch(nullptr);
 }
 
 void OneShotBatch::release() {
@@ -89,11 +98,27 @@ void OneShotBatch::release() {
 }
 
 void OneShotBatch::record(const std::function<void(VkCommandBuffer)>& record) {
-  if (!cmd_) cmd_ = beginOneShot(ctx_, name_);
+  if (outer_) return outer_->record(record);
+  if (!cmd_)
+    cmd_ = beginOneShot(ctx_, name_,
+                        mode_ == Mode::Defer ? VK_COMMAND_BUFFER_LEVEL_SECONDARY : VK_COMMAND_BUFFER_LEVEL_PRIMARY);
   record(cmd_);
 }
 
+std::shared_ptr<DeferredWork> OneShotBatch::take() {
+  if (outer_ || mode_ != Mode::Defer || !cmd_) return nullptr;
+  VkCommandBuffer cmd = std::exchange(cmd_, VK_NULL_HANDLE);
+  auto work = std::make_shared<DeferredWork>(ctx_, cmd, std::move(kept_));  // frees cmd from here on
+  kept_.clear();
+  HP_VK_CHECK(ctx_.fn().vkEndCommandBuffer(cmd));
+  return work;
+}
+
 void OneShotBatch::submit() {
+  if (outer_) return;  // the outer batch submits
+  if (mode_ == Mode::Defer)
+    throw Error("'" + name_ + "': this work needs a queue submission (a readback), which a setter in the frame "
+                "loop does not make");
   if (!cmd_) return;
   VkCommandBuffer cmd = std::exchange(cmd_, VK_NULL_HANDLE);
   try {

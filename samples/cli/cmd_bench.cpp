@@ -19,6 +19,7 @@
 #include "samples/tools/copy_reference.h"
 #include "samples/cli/bench_context.h"
 #include "samples/cli/bench_frame.h"
+#include "samples/tools/interrupt_flag.h"
 #include "samples/cli/bench_plot.h"
 #include "samples/cli/command.h"
 
@@ -190,6 +191,8 @@ void run(const BenchOptions& o) {
               props.driverVersion, o.frames);
   std::vector<hp::cli::FrameResult> results;
   for (const hp::cli::FrameCase& c : list) {
+    hp::throwIfInterrupted("after " + std::to_string(results.size()) + " of " + std::to_string(list.size()) +
+                           " cases" + (o.json.empty() ? "" : ": " + o.json + " not written"));
     results.push_back(hp::cli::benchFrame(*ctx, c));
     report["results"].push_back(toJson(results.back()));
     printText(report["results"].back());

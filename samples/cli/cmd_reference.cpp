@@ -10,6 +10,7 @@
 
 #include "engine/core/error.h"
 #include "samples/cli/command.h"
+#include "samples/tools/interrupt_flag.h"
 #include "samples/cli/frame_options.h"
 #include "samples/cli/output_paths.h"
 #include "samples/tools/frame_export.h"
@@ -67,7 +68,15 @@ void runReference(const ReferenceOptions& o, const CLI::App& cmd) {
   }
   hp::reference::TraceSettings settings = o.trace;
   settings.progress = o.quiet ? nullptr : &std::cerr;
-  const hp::reference::TraceResult r = hp::reference::traceReference(frame, settings);
+  settings.stop = hp::interruptRequested;
+  hp::throwIfInterrupted("before the trace: nothing written");
+  hp::reference::TraceResult r;
+  try {
+    r = hp::reference::traceReference(frame, settings);
+  } catch (const hp::Error&) {
+    hp::throwIfInterrupted("during the trace: nothing written");  // the signal, not the stop, is the news
+    throw;
+  }
   if (isPfm(out)) hp::writePfm(out, r.radiance);
   else hp::writePng(out, r.radiance.width, r.radiance.height, 4, hp::displayRgba8(r.radiance, frame.exposure));
   const nlohmann::json report = {{"out", o.out}, {"width", r.radiance.width}, {"height", r.radiance.height},

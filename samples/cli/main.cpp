@@ -5,6 +5,7 @@
 #include "engine/core/error.h"
 #include "hairpipe/version.h"
 #include "samples/cli/command.h"
+#include "samples/tools/interrupt_flag.h"
 
 int main(int argc, char** argv) {
   CLI::App app{"hairpipe: a dynamic strand-hair pipeline on Vulkan"};
@@ -16,6 +17,9 @@ int main(int argc, char** argv) {
   });
   for (const auto& setup : hp::cli::commandRegistry()) setup(app);
   try {
+    // SIGINT and SIGTERM ask the command to stop at its next safe point (between frames, tiles, cases): it
+    // then fails naming the signal, with every file it wrote complete and no temporary file left.
+    hp::InterruptFlag interrupt;
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     // --help and --version print and succeed; every other parse error is a usage error: exit code 1,

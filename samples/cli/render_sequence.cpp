@@ -65,7 +65,6 @@ void runSequence(const SequenceOptions& o, std::uint32_t frames, const RenderReq
                                                                         : sheetFrames(frames, kSheetTiles);
   std::vector<RgbaImage> sheet;
   RenderResult last;
-  InterruptFlag interrupt;
   ProgressReporter progress("hairpipe render: sequence", frames, std::chrono::milliseconds(0));
   const auto start = std::chrono::steady_clock::now();
   const std::uint32_t done = renderSequence(*ctx, asset, request, frames, [&](std::uint32_t i, const RenderResult& image) {
@@ -74,14 +73,14 @@ void runSequence(const SequenceOptions& o, std::uint32_t frames, const RenderReq
       sheet.push_back({image.width, image.height, image.rgba});
     progress.update(i);
     last = image;
-    return !interrupt.requested();
+    return !interruptRequested();
   });
   progress.finish();
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   checkValidation(*ctx);
   if (done < frames)
-    throw Error("interrupted (SIGINT) after frame " + std::to_string(done) + " of " + std::to_string(frames) + ": " +
-                o.dir + " holds complete frames " + sequenceFrameName(1) + " to " + sequenceFrameName(done));
+    throwIfInterrupted("after frame " + std::to_string(done) + " of " + std::to_string(frames) + ": " + o.dir +
+                       " holds complete frames " + sequenceFrameName(1) + " to " + sequenceFrameName(done));
   if (!o.contactSheet.empty()) {
     const RgbaImage s = contactSheet(sheet, kSheetColumns);
     writePng(o.contactSheet, s.width, s.height, 4, s.pixels);

@@ -7,6 +7,7 @@
 #include "engine/core/error.h"
 #include "engine/core/hair/atomic_write.h"
 #include "engine/core/hair/input_file.h"
+#include "engine/core/shading/lut.h"
 #include "samples/tools/host/json_reader.h"
 #include "samples/tools/obj_albedo_mesh.h"
 #include "samples/tools/reference/fibre.h"
@@ -98,6 +99,11 @@ LightSpec readLight(JsonObject o) {
   return l;
 }
 
+// Every channel finite and in [0, 1] (NaN fails the comparisons).
+bool inUnitRange(const glm::vec3& v) {
+  return v.x >= 0.0f && v.y >= 0.0f && v.z >= 0.0f && v.x <= 1.0f && v.y <= 1.0f && v.z <= 1.0f;
+}
+
 HairMaterial readMaterial(JsonObject o) {
   HairMaterial m;
   o.read("eta", m.eta);
@@ -139,7 +145,7 @@ void readFrameJson(ExportedFrame& f, const std::filesystem::path& path) {
   nlohmann::json root;
   try {
     root = nlohmann::json::parse(readInputText(path, kMaxTextFileBytes));
-  } catch (const nlohmann::json::parse_error& e) {
+  } catch (const nlohmann::json::exception& e) {  // syntax, and numbers past float range (1e999)
     throw Error(path.string() + ": not valid JSON: " + e.what());
   }
   JsonObject o(root, "", path.string());
@@ -159,18 +165,29 @@ void readFrameJson(ExportedFrame& f, const std::filesystem::path& path) {
   fibre.read("model", f.fibreModel);
   (void)reference::parseFibreModel(f.fibreModel);
   fibre.read("lut_mode", f.lutMode);
+  try {
+    (void)parseLutMode(f.lutMode);
+  } catch (const Error&) {
+    fibre.fail("lut_mode", "expected \"direct\", \"paper\", \"float\" or \"physical\"");
+  }
   f.material = readMaterial(required(fibre, "material"));
   fibre.read("albedo", f.hairAlbedo);
+  if (!inUnitRange(f.hairAlbedo)) fibre.fail("albedo", "each channel must be in [0, 1]");
   fibre.finish();
   JsonObject skin = required(o, "skin");
   skin.read("color", f.skinColor);
   skin.read("wrap", f.wrap);
+  if (!inUnitRange(f.skinColor)) skin.fail("color", "each channel must be in [0, 1]");
+  if (!inUnitRange(glm::vec3(f.wrap))) skin.fail("wrap", "must be in [0, 1]");
   skin.finish();
   o.read("environment_radiance", f.environment);
   o.read("background_radiance", f.background);
   o.read("exposure", f.exposure);
   o.finish();
   if (!(f.environment >= 0.0f) || !std::isfinite(f.environment)) o.fail("environment_radiance", "must be >= 0");
+  if (!(f.background.x >= 0.0f && f.background.y >= 0.0f && f.background.z >= 0.0f) ||
+      !std::isfinite(f.background.x + f.background.y + f.background.z))
+    o.fail("background_radiance", "each channel must be finite and >= 0");
   if (!(f.exposure > 0.0f) || !std::isfinite(f.exposure)) o.fail("exposure", "must be > 0");
 }
 

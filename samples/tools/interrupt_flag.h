@@ -1,8 +1,11 @@
 #pragma once
-// Contract: Ctrl-C (SIGINT) as a request to stop, for long runs that must end between two frames so
-// every file they wrote is complete. While an InterruptFlag lives, SIGINT only sets the flag (the
-// run polls requested() after each frame); its destructor restores the previous handler. One at a time.
+// Contract: SIGINT (Ctrl-C) and SIGTERM as a request to stop, for long runs that must end at a safe point
+// so every file they wrote is complete and no temporary file is left. While an InterruptFlag lives, the
+// two signals only set the flag; the run polls interruptRequested() at its safe points (between frames,
+// tiles, cases) and stops with throwIfInterrupted(), whose hp::Error names the signal. The destructor
+// restores the previous handlers. One at a time (the CLI installs one around every command).
 #include <csignal>
+#include <string>
 
 namespace hp {
 class InterruptFlag {
@@ -14,6 +17,12 @@ class InterruptFlag {
   bool requested() const;
 
  private:
-  struct sigaction previous_ {};
+  struct sigaction previousInt_ {};
+  struct sigaction previousTerm_ {};
 };
+
+// Whether SIGINT or SIGTERM arrived while an InterruptFlag was installed (false without one).
+bool interruptRequested();
+// Throws hp::Error "interrupted (SIGINT|SIGTERM) <where>" when one did; nothing otherwise.
+void throwIfInterrupted(const std::string& where);
 }  // namespace hp

@@ -121,9 +121,13 @@ AlbedoMesh readAlbedoObj(const std::filesystem::path& path) {
     if (tag == "v") {
       mesh.positions.push_back(p.vec3());
       mesh.albedo.push_back(p.vec3());
+      const glm::vec3& a = mesh.albedo.back();
+      if (!(a.x >= 0.0f && a.y >= 0.0f && a.z >= 0.0f && a.x <= 1.0f && a.y <= 1.0f && a.z <= 1.0f))
+        p.fail("an albedo must be in [0, 1] in each channel");
       p.end();
     } else if (tag == "vn") {
       mesh.normals.push_back(p.vec3());
+      if (!(glm::length(mesh.normals.back()) > 0.0f)) p.fail("a normal must not be zero");
       p.end();
     } else if (tag == "f") {
       faces.emplace_back(line, lineText);

@@ -1,10 +1,12 @@
 #include "samples/tools/simulation_driver.h"
 
 #include <algorithm>
+#include <string>
 
 #include "engine/vk/barriers.h"
 #include "engine/vk/submit.h"
 #include "engine/vk/transfer.h"
+#include "samples/tools/interrupt_flag.h"
 
 namespace hp {
 namespace {
@@ -47,6 +49,8 @@ void SimulationDriver::runFrames(std::uint32_t count, const std::function<void(s
       for (const auto& scope : profiler_.results()) frameMs_.push_back(scope.milliseconds);
     count -= batch;
     if (progress) progress(total - count);
+    if (count > 0) throwIfInterrupted("after " + std::to_string(total - count) + " of " + std::to_string(total) +
+                                      " simulated frames");
   }
 }
 

@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
+#include <iostream>
 #include <limits>
 #include <optional>
 #include <string>
@@ -106,6 +108,39 @@ TEST_F(PublicApi, RendererSettingsAreRefusedByField) {
   s = {};
   s.opacity.resolution = 8;
   EXPECT_THAT(failureOf(hairpipe::Renderer::create(*ctx_, s)), HasSubstr("resolution"));
+  s = {};
+  s.pipelineCache.assign(12, 0);
+  EXPECT_THAT(failureOf(hairpipe::Renderer::create(*ctx_, s)),
+              HasSubstr("pipeline cache data of 12 bytes is shorter than its 32-byte header"));
+  s.pipelineCache.assign(64, 0);
+  s.pipelineCache[0] = 200;  // the header's own size, past the data
+  EXPECT_THAT(failureOf(hairpipe::Renderer::create(*ctx_, s)), HasSubstr("its header says 200 bytes, of 64"));
+}
+
+// The pipeline cache goes out and comes back: a Renderer that built its pipelines (one instance) hands out
+// data with this device's header and more than the header; a Renderer started from it works; one started
+// from the same data with another device's UUID ignores it and works too.
+TEST_F(PublicApi, PipelineCacheDataRoundTrips) {
+  hairpipe::Instance first = instance();
+  const hairpipe::Result<std::vector<std::uint8_t>> data = renderer_->pipelineCacheData();
+  ASSERT_TRUE(data.ok()) << data.message();
+  ASSERT_GE(data->size(), 32u);
+  std::uint32_t headerSize = 0, version = 0;
+  std::memcpy(&headerSize, data->data(), 4);
+  std::memcpy(&version, data->data() + 4, 4);
+  EXPECT_EQ(version, std::uint32_t(VK_PIPELINE_CACHE_HEADER_VERSION_ONE));
+  EXPECT_GE(headerSize, 32u);
+  std::cout << "pipeline cache after one instance: " << data->size() << " bytes\n";
+  for (bool otherDevice : {false, true}) {
+    hairpipe::RendererSettings s;
+    s.formats = {VK_FORMAT_R8G8B8A8_UNORM, VK_FORMAT_D32_SFLOAT, VK_SAMPLE_COUNT_1_BIT};
+    s.pipelineCache = data.value();
+    if (otherDevice) s.pipelineCache[16] ^= 0xff;  // another pipelineCacheUUID
+    hairpipe::Result<hairpipe::Renderer> again = hairpipe::Renderer::create(*ctx_, s);
+    ASSERT_TRUE(again.ok()) << again.message();
+    hairpipe::Result<hairpipe::Instance> second = again->createInstance(*asset_, {});
+    EXPECT_TRUE(second.ok()) << second.message();
+  }
 }
 
 TEST_F(PublicApi, InstanceSettingsAndSettersAreRefusedByField) {

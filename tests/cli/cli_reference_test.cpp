@@ -4,9 +4,16 @@
 // without writing anything. (The real-time frame against the reference: tests/render/frame_export_test.cpp.)
 #include <gtest/gtest.h>
 
+#include <chrono>
+#include <csignal>
 #include <filesystem>
 #include <fstream>
+#include <functional>
+#include <thread>
 
+#include <nlohmann/json.hpp>
+
+#include "engine/core/hair/input_file.h"
 #include "samples/tools/frame_export.h"
 #include "samples/tools/linear_image.h"
 #include "samples/tools/png_file.h"
@@ -86,6 +93,67 @@ TEST(CliReference, AHairOnlyFrameTracesWithoutAHead) {
   std::filesystem::remove_all(withHead);
   std::filesystem::remove_all(hairOnly);
   std::filesystem::remove(pfm);
+}
+
+// Every value of an export is checked on read: out-of-range colours, radiances, wrap and lookup-table mode in
+// frame.json, a number past float range, and head.obj albedos are refused naming the file and the value.
+TEST(CliReference, ExportValuesOutOfRangeAreRefusedByName) {
+  const auto dir = writeTinyExport("hairpipe_cli_reference_frame_values");
+  const auto out = freshTempPath("hairpipe_cli_reference_values.pfm");
+  const std::string json = hp::readInputText(dir / "frame.json", 1 << 20), obj = hp::readInputText(dir / "head.obj", 1 << 20);
+  const auto edited = [&](const std::function<void(nlohmann::json&)>& edit) {
+    nlohmann::json j = nlohmann::json::parse(json);
+    edit(j);
+    std::ofstream(dir / "frame.json") << j.dump(2);
+  };
+  const std::vector<std::pair<std::function<void(nlohmann::json&)>, std::string>> cases = {
+      {[](nlohmann::json& j) { j["background_radiance"] = {-1.0, 0.0, 0.0}; }, "background_radiance"},
+      {[](nlohmann::json& j) { j["skin"]["wrap"] = -100.0; }, "wrap"},
+      {[](nlohmann::json& j) { j["skin"]["color"] = {0.5, 2.0, 0.5}; }, "color"},
+      {[](nlohmann::json& j) { j["fibre"]["albedo"] = {-1.0, 0.5, 0.5}; }, "albedo"},
+      {[](nlohmann::json& j) { j["fibre"]["lut_mode"] = "bogus\x01"; }, "lut_mode"},
+  };
+  for (const auto& [edit, needle] : cases) {
+    edited(edit);
+    expectRefused({"reference", "--frame", dir.string(), "--out", out.string()}, {{{}, needle}}, out);
+  }
+  std::string overflow = json;
+  const std::size_t at = overflow.find("\"exposure\": ");
+  ASSERT_NE(at, std::string::npos);
+  overflow.insert(at + 12, "1e999, \"x\": ");  // "exposure": 1e999, "x": <old value>
+  std::ofstream(dir / "frame.json") << overflow;
+  expectRefused({"reference", "--frame", dir.string(), "--out", out.string()}, {{{}, "frame.json: not valid JSON"}}, out);
+  std::ofstream(dir / "frame.json") << json;
+  std::string badAlbedo = obj;
+  const std::size_t v = badAlbedo.find("\nv ");
+  ASSERT_NE(v, std::string::npos);
+  badAlbedo.replace(v, 3, "\nv 0 0 0 -5 0 0\nv");  // an extra vertex first, its albedo -5
+  std::ofstream(dir / "head.obj") << badAlbedo;
+  expectRefused({"reference", "--frame", dir.string(), "--out", out.string()}, {{{}, "albedo must be in [0, 1]"}}, out);
+  std::filesystem::remove_all(dir);
+}
+
+// A signal during the trace stops it between tiles: exit 1 naming the signal, and nothing in the output's
+// folder (no image, no temporary file). SIGINT and SIGTERM alike.
+TEST(CliReference, SignalsStopTheTraceAndWriteNothing) {
+  const auto dir = writeTinyExport("hairpipe_cli_reference_frame_signal");
+  for (const auto& [sig, name] : {std::pair{SIGINT, "SIGINT"}, std::pair{SIGTERM, "SIGTERM"}}) {
+    const auto outDir = freshTempPath(std::string("hairpipe_cli_reference_signal_") + name);
+    std::filesystem::remove_all(outDir);
+    std::filesystem::create_directories(outDir);
+    // 96 pixels x 1M samples: minutes of tracing, stopped within 1024 samples.
+    hp::test::CliProcess child({"reference", "--frame", dir.string(), "--spp", "1048576", "--threads", "1",
+                                "--out", (outDir / "ref.pfm").string()});
+    std::this_thread::sleep_for(std::chrono::milliseconds(700));
+    child.signal(sig);
+    const auto r = child.wait();
+    EXPECT_EQ(r.exitCode, 1) << name << ": " << r.err;
+    EXPECT_NE(r.err.find(std::string("hairpipe: error: interrupted (") + name + ")"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("nothing written"), std::string::npos) << r.err;
+    EXPECT_TRUE(std::filesystem::is_empty(outDir)) << name << ": the output folder is not empty";
+    std::filesystem::remove_all(outDir);
+  }
+  std::filesystem::remove_all(dir);
 }
 
 TEST(CliReference, BadOptionsExitWithAMessageAndWriteNothing) {

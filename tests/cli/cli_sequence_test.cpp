@@ -64,21 +64,26 @@ TEST(CliSequence, WritesEveryFrameWithProgressOnStderrAndJsonOnStdout) {
   std::filesystem::remove(sheet);
 }
 
-TEST(CliSequence, SigintStopsAfterTheCurrentFrameLeavingOnlyCompleteFiles) {
-  const auto dir = freshTempPath("hairpipe_cli_sequence_sigint");
-  std::filesystem::remove_all(dir);
-  hp::test::CliProcess child(sequenceArgs(dir, "500"));
-  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
-  while (!std::filesystem::exists(dir / "frame_0001.png") && std::chrono::steady_clock::now() < deadline)
-    std::this_thread::sleep_for(std::chrono::milliseconds(20));
-  child.signal(SIGINT);
-  const auto r = child.wait();
-  EXPECT_NE(r.exitCode, 0);
-  EXPECT_NE(r.err.find("interrupted (SIGINT)"), std::string::npos) << r.err;
-  const std::size_t n = completeFrames(dir);
-  EXPECT_GE(n, 1u);
-  EXPECT_LT(n, 500u);
-  std::filesystem::remove_all(dir);
+// SIGINT and SIGTERM alike: the run stops after the frame being written, exits 1 naming the signal, and
+// leaves complete frames only (completeFrames fails on any other file, a temporary one included).
+TEST(CliSequence, SigintAndSigtermStopAfterTheCurrentFrameLeavingOnlyCompleteFiles) {
+  for (const auto& [sig, name] : {std::pair{SIGINT, "SIGINT"}, std::pair{SIGTERM, "SIGTERM"}}) {
+    const auto dir = freshTempPath(std::string("hairpipe_cli_sequence_") + name);
+    std::filesystem::remove_all(dir);
+    hp::test::CliProcess child(sequenceArgs(dir, "500"));
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+    while (!std::filesystem::exists(dir / "frame_0001.png") && std::chrono::steady_clock::now() < deadline)
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    child.signal(sig);
+    const auto r = child.wait();
+    EXPECT_EQ(r.exitCode, 1) << name;
+    EXPECT_NE(r.err.find(std::string("hairpipe: error: interrupted (") + name + ") after frame"), std::string::npos)
+        << r.err;
+    const std::size_t n = completeFrames(dir);
+    EXPECT_GE(n, 1u);
+    EXPECT_LT(n, 500u);
+    std::filesystem::remove_all(dir);
+  }
 }
 
 TEST(CliSequence, AbsurdCountsAndConflictingOptionsAreRefusedUpFront) {

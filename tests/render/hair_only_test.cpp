@@ -29,8 +29,7 @@ void clearLeftHalfToNear(const hp::vk::Context& ctx, VkCommandBuffer cmd) {
 }
 
 // Pixels of `image` that differ from `reference` by more than `tolerance` levels in a channel, in columns
-// [x0, x1). The compute rasterizer's atomics may order equal-depth fragments differently from one frame to
-// the next: identical frames differ by up to 1 level there.
+// [x0, x1).
 std::size_t differingPixels(const std::vector<std::uint8_t>& image, const std::vector<std::uint8_t>& reference,
                             std::uint32_t x0, std::uint32_t x1, int tolerance = 0) {
   std::size_t n = 0;
@@ -121,9 +120,11 @@ void expectHairOnly(const Frames& f, const char* path) {
   EXPECT_GT(skinWithHead, std::size_t(kSmallWidth * kSmallHeight / 20)) << path;
   EXPECT_EQ(skinHairOnly, 0u) << path;
   EXPECT_GT(hairLeft, std::size_t(kSmallWidth * kSmallHeight / 50)) << path;
-  // Behind the application's depth nothing of the hair shows; beside it every pixel is as before.
+  // Behind the application's depth nothing of the hair shows; beside it the frame is as before, up to the
+  // compute rasterizer's run-to-run variation (fragments of equal depth meet in either order: a pixel or
+  // two of identical frames moves by more than 2 levels; a broken depth test changes hundreds).
   EXPECT_EQ(behindLeft, 0u) << path;
-  EXPECT_EQ(changedRight, 0u) << path;
+  EXPECT_LE(changedRight, 8u) << path;
 }
 }  // namespace
 

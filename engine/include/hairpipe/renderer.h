@@ -9,8 +9,14 @@
 // anywhere). When it records frame F the application has waited for frame F - framesInFlight to
 // complete, and it submits frames in order on one queue. Setters may be called between frames while
 // earlier ones are in flight: what the GPU may still read is retired and destroyed framesInFlight frames
-// later by a record call, never by waiting on the device. Instances are destroyed before their Renderer,
-// and a Renderer before its Context; the application waits for the GPU before destroying the Renderer.
+// later by a record call, never by waiting on the device. After the first recorded frame, the device
+// work of a change (setMaterial, setDensity, createInstance, setRasterTarget: uploads of new tables and
+// buffers) makes no submission and no wait on the application's queue: it is recorded into the next
+// recordUpdate or recordShadows (executed commands, outside any rendering, in TRANSFER and the shader
+// stages). So changes go between frames: recordDraw and recordRaster refuse to run while a change's work
+// waits for them. Before the first frame, construction submits its uploads once and waits for them.
+// Instances are destroyed before their Renderer, and a Renderer before its Context; the application waits
+// for the GPU before destroying the Renderer.
 //
 // Synchronisation with the application, per frame, in this order (hairpipe's own buffers and images are
 // synchronised inside the calls; only the application's resources are listed). Every record call binds its
@@ -140,6 +146,8 @@ class Renderer {
   Status setOpacityTuning(const OpacitySettings& opacity) noexcept;
   // The raster mode in effect (Auto resolved for the device).
   RasterMode raster() const noexcept;
+  // The pipeline cache's data now (vkGetPipelineCacheData), for RendererSettings::pipelineCache of a later run.
+  Result<std::vector<std::uint8_t>> pipelineCacheData() const noexcept;
 
  private:
   friend struct Access;

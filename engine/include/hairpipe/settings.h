@@ -55,6 +55,10 @@ struct RendererSettings {
   std::uint32_t maxViewsPerFrame = 4;  // [1, 16]: recordDraw calls of one frame with different cameras
   RasterMode raster = RasterMode::Graphics;
   std::uint32_t tileBudget = 16384;    // compute raster: list entries kept per 8x8 tile, [1, 2^24]
+  // The data of an earlier run's Renderer::pipelineCacheData(): every pipeline is built through a
+  // VkPipelineCache started from it. Data of another device or driver is ignored (as drivers do); data too
+  // short for a pipeline cache header, or whose header size disagrees with it, is refused.
+  std::vector<std::uint8_t> pipelineCache;
 };
 
 // The fibre's optics (Marschner et al. 2003; d'Eon et al. 2011 for the physical model).

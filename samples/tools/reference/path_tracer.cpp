@@ -196,6 +196,7 @@ void traceTile(const Tracer& tracer, std::uint32_t tile, std::uint32_t tilesX, c
       glm::dvec3 sum(0.0);
       std::uint32_t hair = 0;
       for (std::uint32_t i = 0; i < s.spp; ++i) {
+        if (i % 1024 == 0 && s.stop && s.stop()) return;  // stopped: the caller discards the image
         bool first = false;
         const glm::dvec3 l = tracer.trace(x, y, i, first);
         if (std::isfinite(l.x + l.y + l.z)) sum += l;
@@ -228,6 +229,10 @@ TraceResult traceReference(const ExportedFrame& frame, const TraceSettings& sett
   auto work = [&] {
     try {
       for (std::uint32_t t; (t = next++) < tiles;) {
+        if (settings.stop && settings.stop()) {  // the other threads finish their tile and stop too
+          next = tiles;
+          break;
+        }
         traceTile(tracer, t, tilesX, settings, out);
         progress.tileDone();
       }
@@ -242,6 +247,7 @@ TraceResult traceReference(const ExportedFrame& frame, const TraceSettings& sett
   work();
   for (auto& t : pool) t.join();
   if (failure) std::rethrow_exception(failure);
+  if (settings.stop && settings.stop()) throw Error("the trace was stopped before its last tile");
   out.paths = std::uint64_t(w) * h * settings.spp;
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return out;

@@ -12,6 +12,7 @@
 // depend only on (seed, pixel, sample). Progress lines on `progress` (tiles done, rate, ETA) at most
 // once a second when given.
 #include <cstdint>
+#include <functional>
 #include <iosfwd>
 
 #include "samples/tools/frame_export.h"
@@ -24,6 +25,9 @@ struct TraceSettings {
   std::uint64_t seed = 1;
   std::uint32_t threads = 0;     // 0: every hardware thread
   std::ostream* progress = nullptr;
+  // Polled every 1024 samples of a pixel: true stops the trace (traceReference then throws hp::Error).
+  // None: run on.
+  std::function<bool()> stop;
   void validate() const;         // throws hp::Error naming the setting
 };
 
