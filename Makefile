@@ -16,7 +16,7 @@ FUZZ_SECONDS ?= 60
 PACKAGES := cmake make g++ pkg-config libvulkan-dev libvulkan-volk-dev glslc libshaderc-dev \
 	libglm-dev mesa-vulkan-drivers vulkan-validationlayers libcli11-dev nlohmann-json3-dev \
 	libtinyobjloader-dev libpng-dev libgtest-dev libembree-dev clang-14 libclang-rt-14-dev \
-	libglfw3-dev libimgui-dev libstb-dev xvfb doxygen
+	libglfw3-dev libimgui-dev libstb-dev xvfb doxygen spirv-tools
 
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
@@ -64,7 +64,7 @@ test: build
 # only the device-free code: the asset parsers, shading, and the parser fuzzers; SAN_SCOPE=all adds
 # the Vulkan library, the tool, every suite and the CLI fuzzer (a second full build: too slow for CI).
 SAN_SCOPE ?= all
-HOST_FUZZERS := fuzz_hair fuzz_tfx fuzz_obj fuzz_scene fuzz_brdf_csv
+HOST_FUZZERS := fuzz_hair fuzz_tfx fuzz_obj fuzz_scene fuzz_brdf_csv fuzz_pfm fuzz_albedo_obj
 ifeq ($(SAN_SCOPE),host)
 SAN_TARGETS := hair_tests shading_tests $(HOST_FUZZERS)
 SAN_LABEL := -L host

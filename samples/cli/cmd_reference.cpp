@@ -14,6 +14,7 @@
 #include "samples/cli/frame_options.h"
 #include "samples/cli/output_paths.h"
 #include "samples/tools/frame_export.h"
+#include "samples/tools/host/memory_estimate.h"
 #include "samples/tools/png_file.h"
 #include "samples/tools/reference/fibre.h"
 #include "samples/tools/reference/path_tracer.h"
@@ -28,14 +29,20 @@ struct ReferenceOptions {
   hp::reference::TraceSettings trace;
   bool quiet = false;
   bool json = false;
+  double maxMemoryGiB = 0.0;  // 0: what the machine has available
 };
+
+std::uint64_t memoryLimit(const ReferenceOptions& o) {
+  if (!(o.maxMemoryGiB >= 0.0) || o.maxMemoryGiB > 1e6) throw hp::Error("--max-memory must be in [0, 1e6] GiB");
+  return std::uint64_t(o.maxMemoryGiB * double(1ull << 30));
+}
 
 bool isPfm(const std::filesystem::path& p) { return p.extension() == ".pfm"; }
 
 // --frame DIR describes the whole frame: any frame option given with it is refused, by name.
 void refuseFrameOptionsWithFrameDir(const CLI::App& cmd) {
   static const std::set<std::string> own = {"--frame", "--out", "--spp", "--bounces", "--seed", "--threads", "--quiet",
-                                            "--json", "--help"};
+                                            "--json", "--max-memory", "--help"};
   for (const CLI::Option* opt : cmd.get_options())
     if (opt->count() > 0 && !own.count(opt->get_name())) throw hp::Error(opt->get_name() + " cannot be combined with --frame (the export folder holds the whole frame)");
 }
@@ -44,6 +51,11 @@ void refuseFrameOptionsWithFrameDir(const CLI::App& cmd) {
 hp::ExportedFrame frameFromDevice(const ReferenceOptions& o, const CLI::App& cmd) {
   hp::RenderRequest request = hp::cli::makeRenderRequest(o.frame, cmd);
   request.captureFrame = true;
+  // The images alone, before the device renders anything (the strands are counted again before the trace).
+  hp::requireHostMemory("reference at " + std::to_string(request.scene.render.width) + "x" +
+                            std::to_string(request.scene.render.height),
+                        hp::referenceHostBytes(request.scene.render.width, request.scene.render.height, 0),
+                        memoryLimit(o));
   hp::cli::prepareOutputFile({"--out", o.out}, hp::cli::sceneInputs(o.frame.scene, request.scene));
   hp::HairAsset asset = hp::buildSceneAsset(request.scene);
   hp::cli::frameCamera(request.scene, asset);
@@ -66,6 +78,12 @@ void runReference(const ReferenceOptions& o, const CLI::App& cmd) {
   } else {
     frame = frameFromDevice(o, cmd);
   }
+  const std::uint64_t estimate =
+      hp::referenceHostBytes(frame.camera.width, frame.camera.height, frame.strands.points.size());
+  hp::requireHostMemory("reference at " + std::to_string(frame.camera.width) + "x" + std::to_string(frame.camera.height),
+                        estimate, memoryLimit(o));
+  if (!o.quiet && estimate > (1ull << 30))
+    std::cerr << "reference: about " << hp::gibibytes(estimate) << " of host memory for the images and the scene\n";
   hp::reference::TraceSettings settings = o.trace;
   settings.progress = o.quiet ? nullptr : &std::cerr;
   settings.stop = hp::interruptRequested;
@@ -103,6 +121,8 @@ void setupReference(CLI::App& app) {
   cmd->add_option("--seed", o->trace.seed, "Random seed; the image is the same for a seed on any thread count (default 1)");
   cmd->add_option("--threads", o->trace.threads, "Worker threads (default 0: all hardware threads)");
   cmd->add_flag("--quiet", o->quiet, "No progress lines on stderr");
+  cmd->add_option("--max-memory", o->maxMemoryGiB,
+                  "Refuse a run whose host memory estimate exceeds this many GiB (default: what is available)");
   cmd->add_flag("--json", o->json, "Print JSON");
   cmd->callback([o, cmd] { runReference(*o, *cmd); });
 }

@@ -25,36 +25,43 @@ std::vector<float> flipRows(const LinearImage& image) {
 }
 }  // namespace
 
-void writePfm(const std::filesystem::path& path, const LinearImage& image) {
+std::vector<std::byte> pfmBytes(const LinearImage& image) {
   if (image.channels != 1 && image.channels != 3) throw Error("writePfm: 1 or 3 channels, not " + std::to_string(image.channels));
   if (image.values.size() != std::size_t(image.width) * image.height * image.channels)
     throw Error("writePfm: the image's values do not match its size");
   const std::vector<float> bottomUp = flipRows(image);
-  writeFileAtomically(path, encodePfm(image.width, image.height, int(image.channels), bottomUp.data()));
+  return encodePfm(image.width, image.height, int(image.channels), bottomUp.data());
+}
+
+void writePfm(const std::filesystem::path& path, const LinearImage& image) {
+  writeFileAtomically(path, pfmBytes(image));
 }
 
 LinearImage readPfm(const std::filesystem::path& path) {
-  const std::vector<std::byte> bytes = readInputBytes(path, kMaxHairFileBytes);
+  return parsePfm(readInputBytes(path, kMaxImageFileBytes), path.string());
+}
+
+LinearImage parsePfm(std::span<const std::byte> bytes, const std::string& source) {
   const std::string_view text(reinterpret_cast<const char*>(bytes.data()), std::min<std::size_t>(bytes.size(), 128));
   std::istringstream header{std::string(text)};
   std::string magic;
   long long w = 0, h = 0;
   double scale = 0;
   header >> magic >> w >> h >> scale;
-  if (!header || (magic != "PF" && magic != "Pf")) throw Error("'" + path.string() + "' is not a PFM file (PF or Pf header)");
-  if (w < 1 || h < 1 || w > kMaxSide || h > kMaxSide) throw Error("'" + path.string() + "': PFM size must be in [1, 16384]");
-  if (!(scale < 0)) throw Error("'" + path.string() + "': only little-endian PFM (negative scale) is read");
+  if (!header || (magic != "PF" && magic != "Pf")) throw Error("'" + source + "' is not a PFM file (PF or Pf header)");
+  if (w < 1 || h < 1 || w > kMaxSide || h > kMaxSide) throw Error("'" + source + "': PFM size must be in [1, 16384]");
+  if (!(scale < 0)) throw Error("'" + source + "': only little-endian PFM (negative scale) is read");
   // The header ends with one whitespace character after the scale; the data must be exactly what the
   // header promises, checked before anything is allocated for it.
   const std::streamoff scaleEnd = header.tellg();
   const auto isSpace = [](std::byte b) { return b == std::byte{' '} || b == std::byte{'\n'} || b == std::byte{'\r'} || b == std::byte{'\t'}; };
   if (scaleEnd < 0 || std::size_t(scaleEnd) >= bytes.size() || !isSpace(bytes[std::size_t(scaleEnd)]))
-    throw Error("'" + path.string() + "': the PFM header must end with one whitespace character before the data");
+    throw Error("'" + source + "': the PFM header must end with one whitespace character before the data");
   const std::size_t dataStart = std::size_t(scaleEnd) + 1;
   const std::uint32_t channels = magic == "PF" ? 3u : 1u;
   const std::size_t dataBytes = std::size_t(w) * std::size_t(h) * channels * sizeof(float);
   if (bytes.size() != dataStart + dataBytes)
-    throw Error("'" + path.string() + "': PFM data size does not match its header (" + std::to_string(w) + "x" +
+    throw Error("'" + source + "': PFM data size does not match its header (" + std::to_string(w) + "x" +
                 std::to_string(h) + "x" + std::to_string(channels) + " floats need " + std::to_string(dataBytes) +
                 " bytes after the header, the file has " + std::to_string(bytes.size() - std::min(bytes.size(), dataStart)) + ")");
   LinearImage image(std::uint32_t(w), std::uint32_t(h), channels);

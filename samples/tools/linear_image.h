@@ -6,6 +6,8 @@
 // sRGB transfer function), so a linear image becomes the PNG `hairpipe render` would write.
 #include <cstdint>
 #include <filesystem>
+#include <span>
+#include <string>
 #include <vector>
 
 namespace hp {
@@ -23,6 +25,9 @@ struct LinearImage {
 
 void writePfm(const std::filesystem::path& path, const LinearImage& image);
 LinearImage readPfm(const std::filesystem::path& path);
+// The same in memory: the file's bytes, and a PFM's bytes parsed (`source` names it in messages).
+std::vector<std::byte> pfmBytes(const LinearImage& image);
+LinearImage parsePfm(std::span<const std::byte> bytes, const std::string& source);
 
 std::uint8_t srgbEncode8(float display);  // display value in [0, 1] -> sRGB byte, rounded
 // RGBA8 (alpha 255), rows top to bottom; `image` must have 3 channels.

@@ -33,10 +33,10 @@ void appendIndex(std::string& out, std::uint32_t i, char after) {
 // Reads one line's tokens; every failure names the file and the line.
 class LineParser {
  public:
-  LineParser(const std::filesystem::path& path, std::size_t line, std::string_view text)
-      : path_(path), line_(line), text_(text) {}
+  LineParser(const std::string& source, std::size_t line, std::string_view text)
+      : source_(source), line_(line), text_(text) {}
   [[noreturn]] void fail(const std::string& what) const {
-    throw Error(path_.string() + ":" + std::to_string(line_) + ": " + what);
+    throw Error(source_ + ":" + std::to_string(line_) + ": " + what);
   }
   std::string_view token() {
     while (pos_ < text_.size() && (text_[pos_] == ' ' || text_[pos_] == '\t' || text_[pos_] == '\r')) ++pos_;
@@ -70,7 +70,7 @@ class LineParser {
   }
 
  private:
-  const std::filesystem::path& path_;
+  const std::string& source_;
   std::size_t line_;
   std::string_view text_;
   std::size_t pos_ = 0;
@@ -78,7 +78,7 @@ class LineParser {
 
 }  // namespace
 
-void writeAlbedoObj(const std::filesystem::path& path, const AlbedoMesh& mesh) {
+std::string albedoObjText(const AlbedoMesh& mesh) {
   if (mesh.normals.size() != mesh.positions.size() || mesh.albedo.size() != mesh.positions.size() ||
       mesh.indices.size() % 3 != 0)
     throw Error("writeAlbedoObj: positions, normals and albedo must have one entry per vertex, indices whole triangles");
@@ -102,11 +102,19 @@ void writeAlbedoObj(const std::filesystem::path& path, const AlbedoMesh& mesh) {
     appendIndex(text, mesh.indices[t + 1], ' ');
     appendIndex(text, mesh.indices[t + 2], '\n');
   }
+  return text;
+}
+
+void writeAlbedoObj(const std::filesystem::path& path, const AlbedoMesh& mesh) {
+  const std::string text = albedoObjText(mesh);
   writeFileAtomically(path, std::as_bytes(std::span(text.data(), text.size())));
 }
 
 AlbedoMesh readAlbedoObj(const std::filesystem::path& path) {
-  const std::string text = readInputText(path, kMaxMeshFileBytes);
+  return parseAlbedoObj(readInputText(path, kMaxMeshFileBytes), path.string());
+}
+
+AlbedoMesh parseAlbedoObj(const std::string& text, const std::string& source) {
   AlbedoMesh mesh;
   std::vector<std::pair<std::size_t, std::string_view>> faces;  // read once every vertex is known
   std::size_t line = 0;
@@ -115,7 +123,7 @@ AlbedoMesh readAlbedoObj(const std::filesystem::path& path) {
     if (end == std::string::npos) end = text.size();
     const std::string_view lineText = std::string_view(text).substr(start, end - start);
     start = end + 1;
-    LineParser p(path, ++line, lineText);
+    LineParser p(source, ++line, lineText);
     const std::string_view tag = p.token();
     if (tag.empty() || tag[0] == '#') continue;
     if (tag == "v") {
@@ -136,15 +144,15 @@ AlbedoMesh readAlbedoObj(const std::filesystem::path& path) {
     }
     if (mesh.positions.size() > kMaxVertices) p.fail("more than 16M vertices");
   }
-  if (mesh.normals.size() != mesh.positions.size()) throw Error(path.string() + ": needs one normal per vertex");
+  if (mesh.normals.size() != mesh.positions.size()) throw Error(source + ": needs one normal per vertex");
   for (const auto& [number, lineText] : faces) {
-    LineParser p(path, number, lineText);
+    LineParser p(source, number, lineText);
     p.token();  // "f"
     for (int k = 0; k < 3; ++k) mesh.indices.push_back(p.corner(mesh.positions.size()));
     if (!p.token().empty()) p.fail("faces must be triangles");
   }
   // No vertex and no face: the frame had no head (a hair-only frame). Vertices without a face are an error.
-  if (mesh.indices.empty() && !mesh.positions.empty()) throw Error(path.string() + ": vertices but no triangles");
+  if (mesh.indices.empty() && !mesh.positions.empty()) throw Error(source + ": vertices but no triangles");
   return mesh;
 }
 }  // namespace hp

@@ -9,6 +9,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <string>
 #include <vector>
 
 namespace hp {
@@ -19,4 +20,7 @@ struct AlbedoMesh {
 
 void writeAlbedoObj(const std::filesystem::path& path, const AlbedoMesh& mesh);
 AlbedoMesh readAlbedoObj(const std::filesystem::path& path);
+// The same in memory: the file's text, and a text parsed (`source` names it in messages).
+std::string albedoObjText(const AlbedoMesh& mesh);
+AlbedoMesh parseAlbedoObj(const std::string& text, const std::string& source);
 }  // namespace hp

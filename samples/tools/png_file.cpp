@@ -8,9 +8,12 @@
 
 #include "engine/core/error.h"
 #include "engine/core/hair/atomic_write.h"
+#include "engine/core/hair/input_file.h"
 
 namespace hp {
 namespace {
+constexpr std::uint32_t kMaxPngSide = 16384;  // the largest frame the tools render
+
 void appendBytes(png_structp png, png_bytep data, png_size_t size) {
   auto* out = static_cast<std::vector<std::byte>*>(png_get_io_ptr(png));
   const auto* bytes = reinterpret_cast<const std::byte*>(data);
@@ -51,10 +54,18 @@ void writePng(const std::filesystem::path& path, std::uint32_t width, std::uint3
 }
 
 RgbaImage readPngRgba(const std::filesystem::path& path) {
+  // Through the bounded door (a regular file, under the size limit), then decoded from memory; the
+  // declared size is checked before the pixels are allocated.
+  const std::vector<std::byte> bytes = readInputBytes(path, kMaxImageFileBytes);
   png_image image{};
   image.version = PNG_IMAGE_VERSION;
-  if (!png_image_begin_read_from_file(&image, path.c_str()))
+  if (!png_image_begin_read_from_memory(&image, bytes.data(), bytes.size()))
     throw Error(path.string() + ": cannot read PNG: " + image.message);
+  if (image.width < 1 || image.height < 1 || image.width > kMaxPngSide || image.height > kMaxPngSide) {
+    png_image_free(&image);
+    throw Error(path.string() + ": PNG size " + std::to_string(image.width) + "x" + std::to_string(image.height) +
+                " is outside [1, " + std::to_string(kMaxPngSide) + "] per side");
+  }
   image.format = PNG_FORMAT_RGBA;
   RgbaImage out;
   out.width = image.width;

@@ -66,7 +66,9 @@ TEST(CliReference, TracesAnExportedFrameToPfmAndPng) {
 
   r = runCli({"compare", "--image", pfm.string(), "--reference", pfm.string(), "--json"});
   ASSERT_EQ(r.exitCode, 0) << r.err;
-  EXPECT_NE(r.out.find("\"luminance_ratio\": 1.0"), std::string::npos) << r.out;
+  const nlohmann::json same = nlohmann::json::parse(r.out);  // an image against itself: exactly identical
+  EXPECT_EQ(same.at("luminance_ratio").get<double>(), 1.0) << r.out;
+  EXPECT_EQ(same.at("ssim").get<double>(), 1.0) << r.out;
   std::filesystem::remove_all(dir);
   std::filesystem::remove(pfm);
   std::filesystem::remove(png);
@@ -153,6 +155,19 @@ TEST(CliReference, SignalsStopTheTraceAndWriteNothing) {
     EXPECT_TRUE(std::filesystem::is_empty(outDir)) << name << ": the output folder is not empty";
     std::filesystem::remove_all(outDir);
   }
+  std::filesystem::remove_all(dir);
+}
+
+// A run whose host memory estimate exceeds the limit is refused up front, naming the estimate: for a
+// frame export (images and strands), and for the scene options before the device renders anything.
+TEST(CliReference, AHostMemoryEstimatePastTheLimitIsRefusedUpFront) {
+  const auto dir = writeTinyExport("hairpipe_cli_reference_frame_memory");
+  const auto out = freshTempPath("hairpipe_cli_reference_memory.pfm");
+  expectRefused({"reference", "--out", out.string()}, {
+      {{"--frame", dir.string(), "--max-memory", "0.000001"}, "reference at 12x8 needs about 0.0 GiB of host memory, more than the 0.0 GiB allowed"},
+      {{"--width", "16384", "--height", "16384", "--max-memory", "2"}, "reference at 16384x16384 needs about 7.0 GiB"},
+      {{"--frame", dir.string(), "--max-memory", "-1"}, "--max-memory must be in [0, 1e6] GiB"},
+  }, out);
   std::filesystem::remove_all(dir);
 }
 

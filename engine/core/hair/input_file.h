@@ -16,6 +16,7 @@ inline constexpr std::uint64_t kMaxHairFileBytes = 4ull << 30;    // .hair / .tf
 inline constexpr std::uint64_t kMaxMeshFileBytes = 1ull << 30;    // OBJ: 1 GiB
 inline constexpr std::uint64_t kMaxTextFileBytes = 16ull << 20;   // scene JSON: 16 MiB
 inline constexpr std::uint64_t kMaxTableFileBytes = 256ull << 20; // CSV query tables: 256 MiB
+inline constexpr std::uint64_t kMaxImageFileBytes = 4ull << 30;   // PNG / PFM images: 4 GiB
 
 std::vector<std::byte> readInputBytes(const std::filesystem::path& path, std::uint64_t maxBytes);
 std::string readInputText(const std::filesystem::path& path, std::uint64_t maxBytes);
