@@ -2,6 +2,10 @@
 
 #include <unistd.h>
 
+#include <cerrno>
+#include <cstdlib>
+#include <cstring>
+
 #include "engine/core/error.h"
 
 namespace hp::cli {
@@ -29,6 +33,14 @@ void makeWritableFolder(const CommandPath& output, const fs::path& folder) {
   if (!fs::is_directory(folder, ec)) throw Error(named(output) + ": " + folder.string() + " is not a folder");
   if (::access(folder.c_str(), W_OK | X_OK) != 0)
     throw Error(named(output) + ": the folder " + folder.string() + " is not writable");
+  // access() answers yes to root everywhere (/proc too): creating a file there is the real test, made
+  // before any work so an unwritable output fails at once, not after the render.
+  std::string probe = (folder / ".hairpipe-probe-XXXXXX").string();
+  const int fd = ::mkstemp(probe.data());
+  if (fd < 0)
+    throw Error(named(output) + ": cannot create a file in " + folder.string() + " (" + std::strerror(errno) + ")");
+  ::close(fd);
+  ::unlink(probe.c_str());
 }
 }  // namespace
 

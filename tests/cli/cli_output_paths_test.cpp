@@ -3,7 +3,9 @@
 // missing folders are created.
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <fstream>
+#include <iostream>
 #include <sstream>
 
 #include "tests/hair/hair_test_util.h"
@@ -103,3 +105,20 @@ TEST(CliOutputPaths, MissingFoldersAreCreated) {
   EXPECT_TRUE(std::filesystem::is_regular_file(out));
 }
 }  // namespace
+
+// An output where no file can be created (/proc: even root cannot) is refused before any work: render
+// and reference fail at once, naming the folder, instead of after the frame.
+TEST(CliOutputPaths, AnUnwritableOutputIsRefusedBeforeAnyWork) {
+  for (const std::vector<std::string> args :
+       {std::vector<std::string>{"render", "--width", "32", "--height", "32", "--out", "/proc/x.png"},
+        std::vector<std::string>{"reference", "--width", "32", "--height", "24", "--spp", "1", "--out", "/proc/x.pfm"},
+        std::vector<std::string>{"simulate", "--frames", "2", "--out", "/proc/x.hair"}}) {
+    const auto start = std::chrono::steady_clock::now();
+    const auto r = runCli(args);
+    EXPECT_EQ(r.exitCode, 1) << args[0] << ": " << r.err;
+    EXPECT_NE(r.err.find(": cannot create a file in /proc"), std::string::npos) << args[0] << ": " << r.err;
+    EXPECT_EQ(r.err.find("wrote"), std::string::npos) << r.err;
+    std::cout << args[0] << " refused in "
+              << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() << " s\n";
+  }
+}

@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "samples/tools/frame_export.h"
+#include "samples/tools/linear_image.h"
 #include "samples/tools/png_file.h"
 #include "tests/support/cli_runner.h"
 
@@ -142,16 +143,55 @@ TEST(CliRenderOpacity, DeepMapsByDefaultGlobalOnRequest) {
 }
 
 // --skin-color reaches the frame: the export's skin colour and head albedo (away from the scalp) are the
-// given colour (the refusals are in the list above).
+// given colour (the refusals are in the list above), and so do the pixels. Two frames from the front
+// (face, neck and shoulders in view) differ only in the skin's red, 0.2 -> 0.8. The head's radiance is
+// albedo x light per channel (shaders/head.frag), so in the exported linear image (realtime.pfm, before
+// exposure) a pixel that sees only skin has 4x the red and the same green and blue; pixels where hair
+// or background cover part of the skin change less. Skin pixels = red at least doubled.
 TEST(CliRenderOpacity, SkinColorReachesTheExportedFrame) {
-  const fs::path dir = tempDir("skin");
-  auto args = baseArgs(dir);
-  args.insert(args.end(), {"--skin-color", "0.2,0.3,0.4", "--export-frame", (dir / "frame").string()});
-  auto r = runCli(args);
-  ASSERT_EQ(r.exitCode, 0) << r.err;
-  const hp::ExportedFrame frame = hp::readFrameExport(dir / "frame");
+  auto render = [](const std::string& name, const std::string& color) {
+    const fs::path dir = tempDir(name);
+    auto args = baseArgs(dir);
+    args.insert(args.end(), {"--camera-orbit", "0", "--skin-color", color, "--export-frame", (dir / "frame").string()});
+    auto r = runCli(args);
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    return dir / "frame";
+  };
+  const fs::path dimDir = render("skin", "0.2,0.3,0.4");
+  const fs::path redDir = render("skin_red", "0.8,0.3,0.4");
+  const hp::ExportedFrame frame = hp::readFrameExport(dimDir);
   EXPECT_EQ(frame.skinColor, glm::vec3(0.2f, 0.3f, 0.4f));
   std::size_t skin = 0;
   for (const glm::vec3& a : frame.headAlbedo) skin += a == glm::vec3(0.2f, 0.3f, 0.4f) ? 1 : 0;
   EXPECT_GT(skin, frame.headAlbedo.size() / 2);
+  EXPECT_EQ(hp::readFrameExport(redDir).skinColor, glm::vec3(0.8f, 0.3f, 0.4f));
+
+  const hp::LinearImage dim = hp::readPfm(dimDir / hp::FrameExportFiles::realtime);
+  const hp::LinearImage red = hp::readPfm(redDir / hp::FrameExportFiles::realtime);
+  ASSERT_EQ(dim.channels, 3u);
+  ASSERT_EQ(red.channels, 3u);
+  ASSERT_EQ(dim.width, 64u);
+  ASSERT_EQ(dim.height, 48u);
+  ASSERT_EQ(red.width, dim.width);
+  ASSERT_EQ(red.height, dim.height);
+  std::size_t skinPixels = 0;
+  glm::dvec3 dimSum(0.0), redSum(0.0);
+  for (std::uint32_t y = 0; y < dim.height; ++y)
+    for (std::uint32_t x = 0; x < dim.width; ++x) {
+      const glm::dvec3 d(dim.at(x, y, 0), dim.at(x, y, 1), dim.at(x, y, 2));
+      const glm::dvec3 r(red.at(x, y, 0), red.at(x, y, 1), red.at(x, y, 2));
+      if (!(d.r > 0.0 && r.r >= 2.0 * d.r)) continue;
+      ++skinPixels;
+      dimSum += d;
+      redSum += r;
+    }
+  // From the front the skin fills about a quarter of the frame (docs/images/head_front.png): at least 5%.
+  EXPECT_GT(skinPixels, std::size_t(dim.width) * dim.height / 20) << "pixels whose red at least doubled";
+  ASSERT_GT(skinPixels, 0u);
+  // Mostly skin-only pixels (4x); never more than the albedo's ratio.
+  EXPECT_GT(redSum.r, 3.0 * dimSum.r) << redSum.r << " against " << dimSum.r;
+  EXPECT_LT(redSum.r, 4.05 * dimSum.r) << redSum.r << " against " << dimSum.r;
+  // Green and blue did not change where the red rose (2%: hair shadows on the skin are the same frame).
+  EXPECT_NEAR(redSum.g, dimSum.g, 0.02 * dimSum.g);
+  EXPECT_NEAR(redSum.b, dimSum.b, 0.02 * dimSum.b);
 }

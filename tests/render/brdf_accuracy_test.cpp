@@ -79,13 +79,15 @@ TEST_F(VulkanTest, BrdfPhysicalModeOnDeviceMatchesExactS) {
   EXPECT_LE(a.relativeSum, 0.02) << a.str();
 }
 
-// The paper's 8-bit layout is an approximation by design (docs/SHADING.md): only sanity bounds here,
-// set well above the CPU-emulated figures (median 0.42%, p99 41%, sum 8.3%).
-TEST_F(VulkanTest, BrdfPaperModeOnDeviceIsMeasured) {
+// The paper's 8-bit layout is an approximation by design (docs/SHADING.md): held to the figures recorded
+// for it on the device ("Measured on the device": median 0.58%, p99 41%, sum 8.7%; CPU emulation 0.42% /
+// 41% / 8.3%). p99 and sum come from the layout, not the device, so they get ~1.5x; the median depends on
+// how the device filters 8-bit texels (lavapipe rounds the filtered value to 8 bits), so it keeps ~3x.
+TEST_F(VulkanTest, BrdfPaperModeOnDeviceStaysWithinItsDocumentedAccuracy) {
   auto a = measure(*ctx, LutMode::Paper);
   EXPECT_LE(a.median, 0.02) << a.str();
-  EXPECT_LE(a.p99, 1.0) << a.str();
-  EXPECT_LE(a.relativeSum, 0.15) << a.str();
+  EXPECT_LE(a.p99, 0.6) << a.str();
+  EXPECT_LE(a.relativeSum, 0.13) << a.str();
 }
 
 // Direct mode over the other caustic branches and absorptions (fewer samples each): same p99 bound.

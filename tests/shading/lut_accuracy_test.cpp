@@ -1,8 +1,9 @@
 // LUT accuracy against the exact S over 100,000 uniformly random (L, V, T) (fixed seed).
-// `float` mode has hard limits; `paper` mode is measured and printed (docs/SHADING.md records it).
+// `float` mode has hard limits; `paper` mode is held to the figures docs/SHADING.md records for it.
 #include <gtest/gtest.h>
 
 #include <iostream>
+#include <utility>
 #include <vector>
 
 #include "engine/core/shading/lut.h"
@@ -39,22 +40,47 @@ TEST(LutAccuracy, FloatModeMeetsTheLimits) {
   EXPECT_LE(s.relativeSum, 0.02);
 }
 
-TEST(LutAccuracy, FloatModeVariants) {
+// The variants docs/SHADING.md measures beside the shipped RGBA16F: the same limits as the shipped
+// form (measured: RGBA32F median 0.0008%, p99 0.085%, sum 0.17%; 8-bit weights 0.0021% / 0.087% /
+// 0.18%, as RGBA16F). Full-precision texels cannot make the median worse than half-precision ones: the
+// layout and the filter are the same, only the texel rounding differs (0.0008% against 0.0021%).
+TEST(LutAccuracy, FloatModeVariantsMeetTheLimits) {
   HairMaterial m;
   LutBuildOptions o;
   o.floatFormat = LutFormat::RGBA32F;
-  std::cout << "[float RGBA32F] " << measure(buildLut(LutMode::Float, m, o)).str() << "\n";
-  std::cout << "[float RGBA16F, 8-bit weights] " << measure(buildLut(LutMode::Float, m), 8).str() << "\n";
+  const test::AccuracyStats shipped = measure(buildLut(LutMode::Float, m));
+  const test::AccuracyStats full = measure(buildLut(LutMode::Float, m, o));
+  const test::AccuracyStats weights8 = measure(buildLut(LutMode::Float, m), 8);
+  std::cout << "[float RGBA32F] " << full.str() << "\n";
+  std::cout << "[float RGBA16F, 8-bit weights] " << weights8.str() << "\n";
+  for (const auto& [name, s] : {std::pair{"RGBA32F", full}, std::pair{"8-bit weights", weights8}}) {
+    EXPECT_LE(s.median, 0.003) << name;
+    EXPECT_LE(s.p99, 0.02) << name;
+    EXPECT_LE(s.relativeSum, 0.02) << name;
+  }
+  EXPECT_LE(full.median, shipped.median) << "RGBA32F " << full.str() << ", RGBA16F " << shipped.str();
 }
 
-TEST(LutAccuracy, PaperModeIsMeasured) {
+// The paper's form is an approximation by design: its bounds are the figures docs/SHADING.md records
+// for it (CPU emulation: RGBA8 median 0.42%, p99 41%, sum 8.3%; the same layout in RGBA32F 0.067% /
+// 41% / 8.0%) with a margin of about 1.5x (2x on the medians, which depend on rounding), so a
+// regression of the layout or of the 8-bit packing fails. p99 and sum come from the layout (M_TT for
+// M_TRT, cos phi indexing), the median from the 8 bits: quantisation must make the median worse.
+TEST(LutAccuracy, PaperModeStaysWithinItsDocumentedAccuracy) {
   HairMaterial m;
-  test::AccuracyStats s = measure(buildLut(LutMode::Paper, m));
+  const test::AccuracyStats s = measure(buildLut(LutMode::Paper, m));
   std::cout << "[paper RGBA8 128x128] " << s.str() << "\n";
-  EXPECT_GT(s.median, 0.0);
+  EXPECT_LE(s.median, 0.008) << s.str();
+  EXPECT_LE(s.p99, 0.6) << s.str();
+  EXPECT_LE(s.relativeSum, 0.12) << s.str();
   LutBuildOptions o;
   o.paperFormat = LutFormat::RGBA32F;  // same layout without 8-bit quantisation: the layout's own error
-  std::cout << "[paper layout, RGBA32F 128x128] " << measure(buildLut(LutMode::Paper, m, o)).str() << "\n";
+  const test::AccuracyStats layout = measure(buildLut(LutMode::Paper, m, o));
+  std::cout << "[paper layout, RGBA32F 128x128] " << layout.str() << "\n";
+  EXPECT_LE(layout.median, 0.0015) << layout.str();
+  EXPECT_LE(layout.p99, 0.6) << layout.str();
+  EXPECT_LE(layout.relativeSum, 0.12) << layout.str();
+  EXPECT_GT(s.median, layout.median) << "8 bits " << s.str() << ", RGBA32F " << layout.str();
 }
 
 TEST(LutAccuracy, FloatModeMeetsTheLimitsForOtherMaterials) {

@@ -150,10 +150,70 @@ TEST(Marschner, NIsContinuousAcrossTheCausticBranchSwitch) {
   }
 }
 
+// S through the public entry point (vectors -> shadingAngles -> marschnerLobes -> total) against the
+// three lobes assembled here from their factors, at theta_h, theta_d and phi taken from the angles that
+// built the vectors (not from asin/acos of the sines marschnerS works with); and the separated lobes
+// against the same factors.
 TEST(Marschner, LobeDecompositionSumsToS) {
   HairMaterial m;
-  MarschnerLobes l = marschnerLobes(0.3, -0.2, -0.8, m);
-  glm::dvec3 s = marschnerS(0.3, -0.2, -0.8, m);
-  EXPECT_NEAR(l.total().y, s.y, 1e-15);
-  EXPECT_NEAR(l.cosThetaD, std::cos(0.5 * (std::asin(-0.2) - std::asin(0.3))), 1e-15);
+  const glm::dvec3 T(0, 0, 1);
+  const double configs[][3] = {{0.3, -0.2, 2.5}, {-0.7, 0.4, 0.3}, {0.05, 0.1, 1.2}, {-0.9, -1.2, 2.9}, {0.6, 0.5, 1.9}};
+  for (const auto& c : configs) {
+    const double ti = c[0], tr = c[1], phi = c[2];
+    const glm::dvec3 L(std::cos(ti), 0, std::sin(ti));
+    const glm::dvec3 V(std::cos(tr) * std::cos(phi), std::cos(tr) * std::sin(phi), std::sin(tr));
+    const double th = 0.5 * (ti + tr), td = 0.5 * (tr - ti);
+    const glm::dvec3 r(lobeM(0, th, m) * lobeNR(phi, td, m));
+    const glm::dvec3 tt = lobeM(1, th, m) * lobeNTT(phi, td, m);
+    const glm::dvec3 trt = lobeM(2, th, m) * lobeNTRT(phi, td, m);
+    const glm::dvec3 expected = (r + tt + trt) / (std::cos(td) * std::cos(td));
+    const glm::dvec3 s = marschnerS(L, V, T, m);
+    for (int k = 0; k < 3; ++k) {
+      ASSERT_GT(expected[k], 0.0) << ti << " " << tr << " " << phi;
+      EXPECT_NEAR(s[k], expected[k], 1e-9 * expected[k]) << ti << " " << tr << " " << phi << " channel " << k;
+    }
+    const MarschnerLobes l = marschnerLobes(std::sin(ti), std::sin(tr), std::cos(phi), m);
+    EXPECT_NEAR(l.mR, lobeM(0, th, m), 1e-9 * l.mR);
+    EXPECT_NEAR(l.mTT, lobeM(1, th, m), 1e-9 * l.mTT);
+    EXPECT_NEAR(l.mTRT, lobeM(2, th, m), 1e-9 * l.mTRT);
+    EXPECT_NEAR(l.nR, lobeNR(phi, td, m), 1e-9 * l.nR);
+    EXPECT_NEAR(l.nTT.y, lobeNTT(phi, td, m).y, 1e-9 * l.nTT.y + 1e-300);
+    EXPECT_NEAR(l.nTRT.y, lobeNTRT(phi, td, m).y, 1e-9 * l.nTRT.y);
+    EXPECT_NEAR(l.cosThetaD, std::cos(td), 1e-12);
+  }
 }
+
+// With an absorption that zeroes every transmitted path (exp(-2e4 ...) underflows to 0), TT and TRT
+// (caustic included) vanish and S is the R lobe in closed form:
+//   S = g(beta_R, theta_h - alpha_R) F(eta', eta'', phi/2) cos(phi/2) / 4 / cos^2 theta_d.
+TEST(Marschner, OpaqueFibreSIsTheClosedFormRLobe) {
+  HairMaterial m;
+  m.absorption = glm::dvec3(1e4);
+  const glm::dvec3 T(0, 0, 1);
+  for (double ti : {-0.4, 0.1, 0.5})
+    for (double tr : {-0.3, 0.0, 0.7})
+      for (double phi : {0.2, 1.0, 2.2, 3.0}) {
+        const glm::dvec3 L(std::cos(ti), 0, std::sin(ti));
+        const glm::dvec3 V(std::cos(tr) * std::cos(phi), std::cos(tr) * std::sin(phi), std::sin(tr));
+        const double th = 0.5 * (ti + tr), td = 0.5 * (tr - ti);
+        const double x = th - m.alphaR;
+        const double g = std::exp(-x * x / (2 * m.betaR * m.betaR)) / (m.betaR * std::sqrt(2 * kPi));
+        const double f = fresnel(bravaisEtaPrime(m.eta, td), bravaisEtaDoublePrime(m.eta, td), phi / 2);
+        const double expected = g * f * std::cos(phi / 2) / 4 / (std::cos(td) * std::cos(td));
+        const glm::dvec3 s = marschnerS(L, V, T, m);
+        for (int k = 0; k < 3; ++k)
+          EXPECT_NEAR(s[k], expected, 1e-9 * expected) << ti << " " << tr << " " << phi << " channel " << k;
+      }
+}
+
+// tests/CMakeLists.txt leaves tests/shading/glsl_port_test.cpp (GlslPort.DirectModeLogicMatchesTheExactS)
+// out of clang < 16 builds (the sanitizer build): it needs parenthesized aggregate initialization
+// (P0960). This stands in for it there, so the run reports the missing check and why instead of
+// silently having one test fewer.
+#if defined(__clang__) && !defined(__apple_build_version__) && __clang_major__ < 16
+TEST(GlslPort, DirectModeLogicMatchesTheExactSIsLeftOutOfThisBuild) {
+  GTEST_SKIP() << "tests/shading/glsl_port_test.cpp needs parenthesized aggregate initialization (P0960, "
+                  "clang >= 16; this is clang "
+               << __clang_major__ << "), so tests/CMakeLists.txt leaves it out; the gcc build (make test) runs it";
+}
+#endif

@@ -70,7 +70,8 @@ TEST(Material, BadColorIsNamed) {
   EXPECT_THROW(hp::absorptionFromColor({0.5, 0.0, 0.5}), hp::Error);
   try {
     hp::absorptionFromColor({0.5, 0.5, 1.5});
+    ADD_FAILURE() << "a colour component above 1 was accepted";
   } catch (const hp::Error& e) {
-    EXPECT_NE(std::string(e.what()).find("color[b]"), std::string::npos);
+    EXPECT_NE(std::string(e.what()).find("color[b]"), std::string::npos) << e.what();
   }
 }

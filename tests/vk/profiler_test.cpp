@@ -1,9 +1,18 @@
 #include <gtest/gtest.h>
 
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "engine/core/error.h"
 #include "engine/vk/profiler.h"
 #include "shaders/embedded_shaders.h"
 #include "engine/vk/submit.h"
 #include "engine/vk/transfer.h"
+#include "tests/support/cli_runner.h"
 #include "tests/support/vk_fixture.h"
 
 using namespace hp::vk;
@@ -41,13 +50,51 @@ TEST_F(VulkanTest, TimestampProfilerReturnsPositiveOrderedNestedTimes) {
   EXPECT_GE(times[0].milliseconds, times[1].milliseconds + times[2].milliseconds * 0.99);
 }
 
+namespace {
+// A shell command's exit status (-1 when it did not exit normally) and its stdout and stderr together.
+struct SpirvValRun {
+  int status = -1;
+  std::string output;
+};
+SpirvValRun runSpirvVal(const std::string& arguments) {
+  SpirvValRun r;
+  FILE* pipe = ::popen(("spirv-val " + arguments + " 2>&1").c_str(), "r");
+  if (pipe == nullptr) {
+    r.output = "popen failed";
+    return r;
+  }
+  char buffer[4096];
+  for (std::size_t n; (n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0;) r.output.append(buffer, n);
+  const int status = ::pclose(pipe);
+  if (status != -1 && WIFEXITED(status)) r.status = WEXITSTATUS(status);
+  return r;
+}
+}  // namespace
+
+// Every embedded module passes spirv-val (SPIRV-Tools) for the environment glslc compiles them for
+// (--target-env=vulkan1.3, shaders/CMakeLists.txt). spirv-val comes from the Debian package spirv-tools
+// (the Makefile's PACKAGES); a missing spirv-val is a failure, never a skip.
 TEST(EmbeddedShaders, EveryShaderIsValidSpirvAndUnknownNamesAreRefused) {
+  const SpirvValRun version = runSpirvVal("--version");
+  ASSERT_EQ(version.status, 0) << "spirv-val is needed to validate the embedded shaders (Debian package "
+                                  "spirv-tools; `make deps` installs it): "
+                               << version.output;
   auto names = hp::shaders::names();
   ASSERT_FALSE(names.empty());
+  const std::filesystem::path dir = hp::test::freshTempPath("embedded_spirv");
+  std::filesystem::create_directories(dir);
   for (const auto& name : names) {
     auto words = hp::shaders::spirv(name);
     ASSERT_GT(words.size(), 5u) << name;
     EXPECT_EQ(words[0], 0x07230203u) << name;  // SPIR-V magic
+    const std::filesystem::path file = dir / (name + ".spv");
+    {
+      std::ofstream out(file, std::ios::binary);
+      out.write(reinterpret_cast<const char*>(words.data()), std::streamsize(words.size_bytes()));
+      ASSERT_TRUE(out.good()) << "cannot write " << file;
+    }
+    const SpirvValRun r = runSpirvVal("--target-env vulkan1.3 '" + file.string() + "'");
+    EXPECT_EQ(r.status, 0) << name << " fails spirv-val --target-env vulkan1.3:\n" << r.output;
   }
   EXPECT_THROW(hp::shaders::spirv("no_such_shader.comp"), hp::Error);
 }
