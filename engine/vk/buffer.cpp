@@ -32,19 +32,15 @@ Buffer::Buffer(const Context& ctx, VkDeviceSize size, VkBufferUsageFlags usage, 
   HP_VK_CHECK(fn_->vkCreateBuffer(device_, &info, nullptr, &buffer_));
   try {
     ctx.setName(VK_OBJECT_TYPE_BUFFER, reinterpret_cast<std::uint64_t>(buffer_), name);
-    VkMemoryRequirements req;
-    fn_->vkGetBufferMemoryRequirements(device_, buffer_, &req);
-    VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
-    alloc.allocationSize = req.size;
-    alloc.memoryTypeIndex = ctx.findMemoryType(req.memoryTypeBits, requiredFlags(kind), preferredFlags(kind));
-    ctx.checkDeviceMemoryBudget(req.size, "buffer '" + name + "'");
-    HP_VK_CHECK(fn_->vkAllocateMemory(device_, &alloc, nullptr, &memory_));
+    const MemoryRequest request = ctx.memoryPool().bufferRequest(buffer_, requiredFlags(kind), preferredFlags(kind));
+    ctx.checkDeviceMemoryBudget(request.requirements.size, "buffer '" + name + "'");
+    pool_ = &ctx.memoryPool();
+    memory_ = pool_->allocate(request);
     tally_ = ctx.allocationTally();
-    allocated_ = req.size;
+    allocated_ = request.requirements.size;
     *tally_ += std::int64_t(allocated_);
-    ctx.setName(VK_OBJECT_TYPE_DEVICE_MEMORY, reinterpret_cast<std::uint64_t>(memory_), name + " memory");
-    HP_VK_CHECK(fn_->vkBindBufferMemory(device_, buffer_, memory_, 0));
-    if (kind != MemoryKind::DeviceLocal) HP_VK_CHECK(fn_->vkMapMemory(device_, memory_, 0, VK_WHOLE_SIZE, 0, &mapped_));
+    HP_VK_CHECK(fn_->vkBindBufferMemory(device_, buffer_, memory_.memory, memory_.offset));
+    if (kind != MemoryKind::DeviceLocal) mapped_ = memory_.mapped;
   } catch (...) {
     release();
     throw;
@@ -61,7 +57,8 @@ Buffer& Buffer::operator=(Buffer&& other) noexcept {
     device_ = std::exchange(other.device_, VK_NULL_HANDLE);
     fn_ = std::exchange(other.fn_, nullptr);
     buffer_ = std::exchange(other.buffer_, VK_NULL_HANDLE);
-    memory_ = std::exchange(other.memory_, VK_NULL_HANDLE);
+    pool_ = std::exchange(other.pool_, nullptr);
+    memory_ = std::exchange(other.memory_, MemoryAllocation{});
     tally_ = std::move(other.tally_);
     allocated_ = std::exchange(other.allocated_, 0);
     size_ = std::exchange(other.size_, 0);
@@ -74,19 +71,20 @@ Buffer& Buffer::operator=(Buffer&& other) noexcept {
 void Buffer::invalidate() const {
   if (!mapped_) return;
   VkMappedMemoryRange range{VK_STRUCTURE_TYPE_MAPPED_MEMORY_RANGE};
-  range.memory = memory_;
+  range.memory = memory_.memory;  // the whole block: offsets would need nonCoherentAtomSize alignment
   range.size = VK_WHOLE_SIZE;
   HP_VK_CHECK(fn_->vkInvalidateMappedMemoryRanges(device_, 1, &range));
 }
 
 void Buffer::release() {
   if (buffer_) fn_->vkDestroyBuffer(device_, buffer_, nullptr);
-  if (memory_) fn_->vkFreeMemory(device_, memory_, nullptr);
+  if (pool_) pool_->free(memory_);
   if (tally_) *tally_ -= std::int64_t(allocated_);
   tally_.reset();
   allocated_ = 0;
   buffer_ = VK_NULL_HANDLE;
-  memory_ = VK_NULL_HANDLE;
+  pool_ = nullptr;
+  memory_ = {};
   mapped_ = nullptr;
 }
 }  // namespace hp::vk

@@ -1,5 +1,6 @@
 #pragma once
-// Contract: a VkBuffer with its own VkDeviceMemory, move-only, destroyed with its owner. The caller
+// Contract: a VkBuffer and its memory (sub-allocated from the Context's MemoryPool), move-only, destroyed
+// with its owner. The caller
 // guarantees the GPU no longer uses it when it is destroyed (frame owners wait on their fences).
 // Host-visible kinds are persistently mapped; `mapped()` is null for device-local memory.
 #include "hairpipe_volk.h"
@@ -9,6 +10,8 @@
 #include <atomic>
 #include <memory>
 #include <string>
+
+#include "engine/vk/memory_pool.h"
 
 namespace hp::vk {
 class Context;
@@ -32,6 +35,7 @@ class Buffer {
   VkBuffer handle() const { return buffer_; }
   VkDeviceSize size() const { return size_; }
   void* mapped() const { return mapped_; }
+  const MemoryAllocation& allocation() const { return memory_; }  // where in the pool's memory it is bound
   const std::string& name() const { return name_; }
   explicit operator bool() const { return buffer_ != VK_NULL_HANDLE; }
   // For host-visible buffers whose memory might not be coherent (Readback): make GPU writes visible.
@@ -42,7 +46,8 @@ class Buffer {
   VkDevice device_ = VK_NULL_HANDLE;
   const VolkDeviceTable* fn_ = nullptr;  // the Context's device functions
   VkBuffer buffer_ = VK_NULL_HANDLE;
-  VkDeviceMemory memory_ = VK_NULL_HANDLE;
+  MemoryPool* pool_ = nullptr;
+  MemoryAllocation memory_;
   std::shared_ptr<std::atomic<std::int64_t>> tally_;  // Context::allocatedBytes
   VkDeviceSize allocated_ = 0;
   VkDeviceSize size_ = 0;

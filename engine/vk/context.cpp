@@ -220,12 +220,16 @@ void Context::finishSetup() {
   pool.queueFamilyIndex = queueFamily_;
   HP_VK_CHECK(fn_.vkCreateCommandPool(device_, &pool, nullptr, &transientPool_));
   setName(VK_OBJECT_TYPE_COMMAND_POOL, reinterpret_cast<std::uint64_t>(transientPool_), "hairpipe transient pool");
+  memoryPool_ = std::make_unique<MemoryPool>(*this);
+  descriptorPools_ = std::make_unique<DescriptorPools>(*this);
 }
 
 Context::~Context() {
   // An adopted device belongs to the application: never wait idle on it, the app has already
   // ensured hairpipe's work is finished before destroying hairpipe (see the embedding contract).
   if (ownsInstanceAndDevice_ && device_) fn_.vkDeviceWaitIdle(device_);
+  descriptorPools_.reset();  // destroys what is left (nothing, when every set went first)
+  memoryPool_.reset();       // frees what is left (nothing, when every buffer and image went first)
   if (transientPool_) fn_.vkDestroyCommandPool(device_, transientPool_, nullptr);
   if (!ownsInstanceAndDevice_) return;
   if (device_) fn_.vkDestroyDevice(device_, nullptr);

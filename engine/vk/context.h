@@ -20,7 +20,9 @@
 #include <string>
 #include <vector>
 
+#include "engine/vk/descriptor_pools.h"
 #include "engine/vk/device_selection.h"
+#include "engine/vk/memory_pool.h"
 #include "hairpipe/context.h"
 #include "engine/vk/validation_log.h"
 
@@ -92,6 +94,10 @@ class Context {
   // Called before every allocation: throws hp::Error naming VK_ERROR_OUT_OF_DEVICE_MEMORY, `what` and the
   // budget when `bytes` more would exceed it.
   void checkDeviceMemoryBudget(VkDeviceSize bytes, const std::string& what) const;
+  // Where buffers and images get their memory (memory_pool.h).
+  MemoryPool& memoryPool() const { return *memoryPool_; }
+  // Where descriptor sets come from (descriptor_pools.h).
+  DescriptorPools& descriptorPools() const { return *descriptorPools_; }
 
  private:
   friend class OneShotBatch;
@@ -121,6 +127,8 @@ class Context {
   std::atomic<VkDeviceSize> budget_{0};
   DeviceChoice choice_;
   mutable OneShotBatch* batch_ = nullptr;
+  std::unique_ptr<MemoryPool> memoryPool_;
+  std::unique_ptr<DescriptorPools> descriptorPools_;
 };
 
 // Loads the Vulkan loader through volk once per process; throws hp::Error when it is missing.

@@ -21,21 +21,11 @@ DescriptorSet::DescriptorSet(const Context& ctx, std::span<const Binding> bindin
   layoutInfo.pBindings = layoutBindings.data();
   HP_VK_CHECK(fn_->vkCreateDescriptorSetLayout(device_, &layoutInfo, nullptr, &layout_));
 
-  std::vector<VkDescriptorPoolSize> sizes;
-  for (auto [type, count] : typeCounts) sizes.push_back({type, count});
-  VkDescriptorPoolCreateInfo poolInfo{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
-  poolInfo.maxSets = 1;
-  poolInfo.poolSizeCount = static_cast<std::uint32_t>(sizes.size());
-  poolInfo.pPoolSizes = sizes.data();
   try {
     ctx.setName(VK_OBJECT_TYPE_DESCRIPTOR_SET_LAYOUT, reinterpret_cast<std::uint64_t>(layout_), name + " layout");
-    HP_VK_CHECK(fn_->vkCreateDescriptorPool(device_, &poolInfo, nullptr, &pool_));
-    ctx.setName(VK_OBJECT_TYPE_DESCRIPTOR_POOL, reinterpret_cast<std::uint64_t>(pool_), name + " pool");
-    VkDescriptorSetAllocateInfo alloc{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
-    alloc.descriptorPool = pool_;
-    alloc.descriptorSetCount = 1;
-    alloc.pSetLayouts = &layout_;
-    HP_VK_CHECK(fn_->vkAllocateDescriptorSets(device_, &alloc, &set_));
+    set_ = ctx.descriptorPools().allocate(layout_, typeCounts, pool_);
+    pools_ = &ctx.descriptorPools();
+    counts_ = std::move(typeCounts);
     ctx.setName(VK_OBJECT_TYPE_DESCRIPTOR_SET, reinterpret_cast<std::uint64_t>(set_), name);
   } catch (...) {
     release();
@@ -53,15 +43,18 @@ DescriptorSet& DescriptorSet::operator=(DescriptorSet&& other) noexcept {
     device_ = std::exchange(other.device_, VK_NULL_HANDLE);
     fn_ = std::exchange(other.fn_, nullptr);
     layout_ = std::exchange(other.layout_, VK_NULL_HANDLE);
+    pools_ = std::exchange(other.pools_, nullptr);
     pool_ = std::exchange(other.pool_, VK_NULL_HANDLE);
     set_ = std::exchange(other.set_, VK_NULL_HANDLE);
+    counts_ = std::move(other.counts_);
   }
   return *this;
 }
 
 void DescriptorSet::release() {
-  if (pool_) fn_->vkDestroyDescriptorPool(device_, pool_, nullptr);  // frees the set too
+  if (pools_ && set_) pools_->free(pool_, set_, counts_);
   if (layout_) fn_->vkDestroyDescriptorSetLayout(device_, layout_, nullptr);
+  pools_ = nullptr;
   pool_ = VK_NULL_HANDLE;
   layout_ = VK_NULL_HANDLE;
   set_ = VK_NULL_HANDLE;

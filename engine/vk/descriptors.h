@@ -1,13 +1,17 @@
 #pragma once
-// Contract: one descriptor set together with its layout and a pool sized exactly for it, move-only.
+// Contract: one descriptor set together with its layout, move-only; the set comes from the Context's shared
+// descriptor pools (descriptor_pools.h) and goes back to them.
 // Passes declare their bindings once (numbers from the shared GLSL/C++ header) and write resources
 // whenever the buffers behind them change; writes happen outside command recording.
 #include "hairpipe_volk.h"
 
 #include <cstdint>
 
+#include <map>
 #include <span>
 #include <string>
+
+#include "engine/vk/descriptor_pools.h"
 
 namespace hp::vk {
 class Context;
@@ -50,7 +54,9 @@ class DescriptorSet {
   VkDevice device_ = VK_NULL_HANDLE;
   const VolkDeviceTable* fn_ = nullptr;  // the Context's device functions
   VkDescriptorSetLayout layout_ = VK_NULL_HANDLE;
-  VkDescriptorPool pool_ = VK_NULL_HANDLE;
+  DescriptorPools* pools_ = nullptr;
+  VkDescriptorPool pool_ = VK_NULL_HANDLE;  // the shared pool the set came from
   VkDescriptorSet set_ = VK_NULL_HANDLE;
+  std::map<VkDescriptorType, std::uint32_t> counts_;  // its descriptors per type, given back with it
 };
 }  // namespace hp::vk

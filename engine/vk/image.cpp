@@ -53,18 +53,14 @@ Image::Image(const Context& ctx, const ImageDesc& desc) : device_(ctx.device()),
   HP_VK_CHECK(fn_->vkCreateImage(device_, &info, nullptr, &image_));
   try {
     ctx.setName(VK_OBJECT_TYPE_IMAGE, reinterpret_cast<std::uint64_t>(image_), desc.name);
-    VkMemoryRequirements req;
-    fn_->vkGetImageMemoryRequirements(device_, image_, &req);
-    VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
-    alloc.allocationSize = req.size;
-    alloc.memoryTypeIndex = ctx.findMemoryType(req.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
-    ctx.checkDeviceMemoryBudget(req.size, "image '" + desc.name + "'");
-    HP_VK_CHECK(fn_->vkAllocateMemory(device_, &alloc, nullptr, &memory_));
+    const MemoryRequest request = ctx.memoryPool().imageRequest(image_);
+    ctx.checkDeviceMemoryBudget(request.requirements.size, "image '" + desc.name + "'");
+    pool_ = &ctx.memoryPool();
+    memory_ = pool_->allocate(request);
     tally_ = ctx.allocationTally();
-    allocated_ = req.size;
+    allocated_ = request.requirements.size;
     *tally_ += std::int64_t(allocated_);
-    ctx.setName(VK_OBJECT_TYPE_DEVICE_MEMORY, reinterpret_cast<std::uint64_t>(memory_), desc.name + " memory");
-    HP_VK_CHECK(fn_->vkBindImageMemory(device_, image_, memory_, 0));
+    HP_VK_CHECK(fn_->vkBindImageMemory(device_, image_, memory_.memory, memory_.offset));
     VkImageViewType type = desc.layers > 1 ? VK_IMAGE_VIEW_TYPE_2D_ARRAY : VK_IMAGE_VIEW_TYPE_2D;
     view_ = createView(ctx, type, 0, desc.layers, desc.name + " view");
     if (desc.layers > 1)
@@ -101,7 +97,8 @@ Image& Image::operator=(Image&& other) noexcept {
     device_ = std::exchange(other.device_, VK_NULL_HANDLE);
     fn_ = std::exchange(other.fn_, nullptr);
     image_ = std::exchange(other.image_, VK_NULL_HANDLE);
-    memory_ = std::exchange(other.memory_, VK_NULL_HANDLE);
+    pool_ = std::exchange(other.pool_, nullptr);
+    memory_ = std::exchange(other.memory_, MemoryAllocation{});
     tally_ = std::move(other.tally_);
     allocated_ = std::exchange(other.allocated_, 0);
     view_ = std::exchange(other.view_, VK_NULL_HANDLE);
@@ -119,13 +116,14 @@ void Image::release() {
   layerViews_.clear();
   if (view_) fn_->vkDestroyImageView(device_, view_, nullptr);
   if (image_) fn_->vkDestroyImage(device_, image_, nullptr);
-  if (memory_) fn_->vkFreeMemory(device_, memory_, nullptr);
+  if (pool_) pool_->free(memory_);
   if (tally_) *tally_ -= std::int64_t(allocated_);
   tally_.reset();
   allocated_ = 0;
   view_ = VK_NULL_HANDLE;
   image_ = VK_NULL_HANDLE;
-  memory_ = VK_NULL_HANDLE;
+  pool_ = nullptr;
+  memory_ = {};
 }
 
 Sampler::Sampler(const Context& ctx, const std::string& name, VkFilter filter)

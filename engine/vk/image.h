@@ -1,5 +1,6 @@
 #pragma once
-// Contract: a 2D (array) image with its own device-local memory and views, move-only. view() covers all
+// Contract: a 2D (array) image with device-local memory (sub-allocated from the Context's MemoryPool, or
+// dedicated where the driver asks for it) and views, move-only. view() covers all
 // layers (2D, or 2D_ARRAY when layers > 1); layerView(i) is a 2D view of one layer for attachments.
 // Layout tracking is the caller's job, through the named transitions in barriers.h.
 #include "hairpipe_volk.h"
@@ -10,6 +11,8 @@
 #include <memory>
 #include <string>
 #include <vector>
+
+#include "engine/vk/memory_pool.h"
 
 namespace hp::vk {
 class Context;
@@ -49,7 +52,8 @@ class Image {
   VkDevice device_ = VK_NULL_HANDLE;
   const VolkDeviceTable* fn_ = nullptr;  // the Context's device functions
   VkImage image_ = VK_NULL_HANDLE;
-  VkDeviceMemory memory_ = VK_NULL_HANDLE;
+  MemoryPool* pool_ = nullptr;
+  MemoryAllocation memory_;
   std::shared_ptr<std::atomic<std::int64_t>> tally_;  // Context::allocatedBytes
   VkDeviceSize allocated_ = 0;
   VkImageView view_ = VK_NULL_HANDLE;
