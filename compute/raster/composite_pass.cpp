@@ -11,7 +11,8 @@ const vk::Binding kBindings[] = {{gpu::COMPOSITE_BINDING_HAIR, kSampled, VK_SHAD
                                  {gpu::COMPOSITE_BINDING_NEAR_MASK, kSampled, VK_SHADER_STAGE_FRAGMENT_BIT}};
 }
 
-CompositePass::CompositePass(const vk::Context& ctx, const hairpipe::AttachmentFormats& formats)
+CompositePass::CompositePass(const vk::Context& ctx, const hairpipe::AttachmentFormats& formats,
+                             VkPipelineCache cache)
     : sampler_(ctx, "composite sampler", VK_FILTER_NEAREST),
       set_(ctx, kBindings, "composite"),
       multisampled_(formats.samples != VK_SAMPLE_COUNT_1_BIT) {
@@ -25,7 +26,7 @@ CompositePass::CompositePass(const vk::Context& ctx, const hairpipe::AttachmentF
   desc.sets = {set_.layout()};
   desc.pushSize = sizeof(std::uint32_t);  // which samples (COMPOSITE_*)
   desc.name = "hair composite";
-  pipeline_ = vk::GraphicsPipeline(ctx, desc);
+  pipeline_ = vk::GraphicsPipeline(ctx, desc, cache);
 }
 
 void CompositePass::setInput(VkImageView hair, VkImageView near, VkImageView nearMask) {

@@ -13,7 +13,8 @@
 namespace hp::render {
 class CompositePass {
  public:
-  CompositePass(const vk::Context& ctx, const hairpipe::AttachmentFormats& formats);
+  CompositePass(const vk::Context& ctx, const hairpipe::AttachmentFormats& formats,
+                VkPipelineCache cache = VK_NULL_HANDLE);
   // near, nearMask: the raster's near layer and sample mask (read only over a multisampled attachment).
   void setInput(VkImageView hair, VkImageView near, VkImageView nearMask);
   void draw(VkCommandBuffer cmd, VkExtent2D extent) const;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <cstddef>
 #include <cstring>
 #include <utility>
 #include <string>
@@ -121,7 +122,7 @@ std::uint32_t rasterListCapacity(std::uint64_t segments, std::uint64_t tiles, st
 }
 
 StrandRasterPass::StrandRasterPass(const vk::Context& ctx, std::span<const RasterSource> sources, VkExtent2D extent,
-                                   const RasterSettings& settings, std::uint32_t headSamples)
+                                   const RasterSettings& settings, std::uint32_t headSamples, VkPipelineCache cache)
     : ctx_(ctx), extent_(extent), settings_(settings), headSamples_(headSamples) {
   settings.validate();
   if (headSamples == 0 || headSamples > gpu::RASTER_MAX_HEAD_SAMPLES || (headSamples & (headSamples - 1)) != 0)
@@ -163,16 +164,16 @@ StrandRasterPass::StrandRasterPass(const vk::Context& ctx, std::span<const Raste
   bind(sources);
   const auto setLayout = chunks_.front().set.layout();
   const auto pipeline = [&](const char* shader, std::uint32_t size, const char* name) {
-    return vk::ComputePipeline(ctx, shader, size, {setLayout}, 0, name);
+    return vk::ComputePipeline(ctx, shader, size, {setLayout}, 0, name, {}, cache);
   };
   project_ = pipeline("raster_project.comp", gpu::RASTER_WORKGROUP_SIZE, "raster project");
   shade_ = pipeline("raster_shade.comp", gpu::RASTER_WORKGROUP_SIZE, "raster shade");
   tileDepthPipeline_ = pipeline(multisampled() ? "raster_tile_depth_ms.comp" : "raster_tile_depth.comp",
                                 gpu::RASTER_WORKGROUP_SIZE, "raster tile depth");
   count_ = vk::ComputePipeline(ctx, "raster_bin.comp", gpu::RASTER_WORKGROUP_SIZE, {setLayout}, 0, "raster count",
-                               {gpu::RASTER_MODE_COUNT});
+                               {gpu::RASTER_MODE_COUNT}, cache);
   scatter_ = vk::ComputePipeline(ctx, "raster_bin.comp", gpu::RASTER_WORKGROUP_SIZE, {setLayout}, 0, "raster scatter",
-                                 {gpu::RASTER_MODE_SCATTER});
+                                 {gpu::RASTER_MODE_SCATTER}, cache);
   scanTiles_ = pipeline("raster_scan_tiles.comp", gpu::RASTER_SCAN_SIZE, "raster scan tiles");
   scanBlocks_ = pipeline("raster_scan_blocks.comp", gpu::RASTER_SCAN_SIZE, "raster scan blocks");
   fine_ = pipeline(multisampled() ? "raster_fine_ms.comp" : "raster_fine.comp", gpu::RASTER_FINE_SIZE, "raster fine");
@@ -260,11 +261,25 @@ void StrandRasterPass::recordArm(VkCommandBuffer cmd) const {
                      vk::ImageUse::ComputeStorageWrite);
 }
 
+std::uint32_t StrandRasterPass::drawnStrands(const Chunk& c, std::span<const std::uint32_t> strandLimits) const {
+  return strandLimits.empty() ? c.range.strandCount : strandsWithin(c.range, strandLimits[c.source]);
+}
+
+// The shaders bound their work by each chunk's RasterParams::strandCount, not by the dispatch (whose groups
+// round up): this frame's drawn count goes there, so no strand past the limit is read half-projected.
+void StrandRasterPass::recordStrandCounts(VkCommandBuffer cmd, std::span<const std::uint32_t> strandLimits) const {
+  for (const Chunk& c : chunks_) {
+    const std::uint32_t drawn = drawnStrands(c, strandLimits);
+    vk::bufferBarrier(ctx_, cmd, c.params.handle(), vk::BufferUse::ComputeRead, vk::BufferUse::TransferDst);
+    ctx_.fn().vkCmdUpdateBuffer(cmd, c.params.handle(), offsetof(gpu::RasterParams, strandCount), sizeof(drawn), &drawn);
+    vk::bufferBarrier(ctx_, cmd, c.params.handle(), vk::BufferUse::TransferDst, vk::BufferUse::ComputeRead);
+  }
+}
+
 void StrandRasterPass::recordPerChunk(VkCommandBuffer cmd, const vk::ComputePipeline& pipeline,
                                       std::uint32_t perStrandLess, std::span<const std::uint32_t> strandLimits) const {
   for (const Chunk& c : chunks_) {
-    const std::uint32_t strands =
-        strandLimits.empty() ? c.range.strandCount : strandsWithin(c.range, strandLimits[c.source]);
+    const std::uint32_t strands = drawnStrands(c, strandLimits);
     if (strands == 0) continue;
     pipeline.bind(cmd, c.set.set());
     pipeline.dispatch(cmd, strands * (c.verticesPerStrand - perStrandLess));
@@ -298,6 +313,7 @@ void StrandRasterPass::recordBinning(VkCommandBuffer cmd, vk::GpuProfiler* profi
     throw Error("compute raster: one strand limit per source, got " + std::to_string(strandLimits.size()));
   const std::uint32_t tiles = tilesX_ * tilesY_;
   begin(cmd, profiler, "raster project");
+  recordStrandCounts(cmd, strandLimits);
   recordArm(cmd);
   recordPerChunk(cmd, project_, 0, strandLimits);
   end(cmd, profiler);

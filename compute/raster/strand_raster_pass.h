@@ -66,7 +66,7 @@ class StrandRasterPass {
   // Throws hp::Error for no source, a zero extent, bad settings or sample count, or buffers past
   // maxStorageBufferRange.
   StrandRasterPass(const vk::Context& ctx, std::span<const RasterSource> sources, VkExtent2D extent,
-                   const RasterSettings& settings, std::uint32_t headSamples = 1);
+                   const RasterSettings& settings, std::uint32_t headSamples = 1, VkPipelineCache cache = VK_NULL_HANDLE);
   StrandRasterPass(const vk::Context& ctx, const StrandBuffers& strands, const ShadingWriter& shading,
                    VkExtent2D extent, const RasterSettings& settings, std::uint32_t headSamples = 1)
       : StrandRasterPass(ctx, std::span<const RasterSource>(std::vector<RasterSource>{{&strands, shading}}), extent,
@@ -117,6 +117,8 @@ class StrandRasterPass {
   // the chunk within its source's limit (all without limits).
   void recordPerChunk(VkCommandBuffer cmd, const vk::ComputePipeline& pipeline, std::uint32_t perStrandLess,
                       std::span<const std::uint32_t> strandLimits) const;
+  std::uint32_t drawnStrands(const Chunk& c, std::span<const std::uint32_t> strandLimits) const;
+  void recordStrandCounts(VkCommandBuffer cmd, std::span<const std::uint32_t> strandLimits) const;
   void recordOnce(VkCommandBuffer cmd, const vk::ComputePipeline& pipeline, std::uint32_t threads) const;
 
   const vk::Context& ctx_;

@@ -19,14 +19,14 @@ std::vector<vk::Buffer> ComputeRaster::makeFrameBlocks(const vk::Context& ctx, s
 
 ComputeRaster::ComputeRaster(const vk::Context& ctx, const RendererSettings& settings,
                              const render::ShadowMaps& shadows, VkExtent2D extent, VkImageView depth,
-                             std::span<HairInstance* const> instances)
+                             std::span<HairInstance* const> instances, VkPipelineCache cache)
     : ctx_(ctx),
       shadows_(shadows),
       instances_(instances.begin(), instances.end()),
       frames_(makeFrameBlocks(ctx, instances.size())),
       depth_(depth),
-      pass_(ctx, sources(), extent, settings.rasterSettings, std::uint32_t(settings.formats.samples)),
-      composite_(ctx, settings.formats) {
+      pass_(ctx, sources(), extent, settings.rasterSettings, std::uint32_t(settings.formats.samples), cache),
+      composite_(ctx, settings.formats, cache) {
   pass_.setDepth(depth);
   composite_.setInput(pass_.output().view(), pass_.nearOutput().view(), pass_.nearMask().view());
 }

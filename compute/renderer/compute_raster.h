@@ -26,8 +26,10 @@ class HairInstance;
 
 class ComputeRaster {
  public:
+  // `cache`: the Renderer's pipeline cache, which the target's own pipelines are built through.
   ComputeRaster(const vk::Context& ctx, const RendererSettings& settings, const render::ShadowMaps& shadows,
-                VkExtent2D extent, VkImageView depth, std::span<HairInstance* const> instances);
+                VkExtent2D extent, VkImageView depth, std::span<HairInstance* const> instances,
+                VkPipelineCache cache = VK_NULL_HANDLE);
 
   void record(VkCommandBuffer cmd, const View& view, const LightSpec& light, const render::HeadShadowView& headShadow,
               vk::GpuProfiler* profiler) const;

@@ -107,8 +107,8 @@ void HairInstance::setMaterial(const HairMaterial& material, LutMode mode) {
     replaceStrandPass(std::move(pass));
     settings_.material = material;
     settings_.lutMode = mode;
-    renderer_.instanceChanged(*this);  // a compute raster target names the old LUTs
   });
+  renderer_.instanceChanged(*this);  // a compute raster target names the old LUTs
 }
 
 void HairInstance::setLook(const render::LookSettings& look) {
@@ -151,7 +151,7 @@ void HairInstance::setStrands(const InterpolationTopology& topology, const compu
     geometry_ = std::move(geometry);
     replaceStrandPass(std::move(pass));
     settings_ = next;
-    renderer_.instanceChanged(*this);  // a compute raster target reads the old strand buffers
   });
+  renderer_.instanceChanged(*this);  // a compute raster target reads the old strand buffers
 }
 }  // namespace hp

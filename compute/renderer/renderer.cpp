@@ -21,7 +21,7 @@ Renderer::Renderer(const vk::Context& ctx, const RendererSettings& settings)
       settings_(validated(settings)),
       raster_(resolveRasterMode(settings.raster, ctx.properties().deviceType)),
       pipelines_(ctx, settings.pipelineCache),
-      shadows_(std::make_unique<render::ShadowMaps>(ctx, settings.opacity)),
+      shadows_(std::make_unique<render::ShadowMaps>(ctx, settings.opacity, &pipelines_)),
       frameLights_(settings.framesInFlight),
       frameHeadShadows_(settings.framesInFlight) {}
 
@@ -30,6 +30,7 @@ Renderer::Renderer(const vk::Context& ctx, const RendererSettings& settings)
 Renderer::~Renderer() {
   rasterTarget_.reset();
   retired_.clear();
+  retiredWithDeferred_.clear();
   deferred_.clear();
 }
 
@@ -44,22 +45,9 @@ std::unique_ptr<HairInstance> Renderer::createInstance(const HairAsset& asset, c
 void Renderer::withUploads(const std::string& name, const std::function<void()>& change) {
   const bool frameLoop = lastFrame_.has_value();
   vk::OneShotBatch batch(ctx_, name, frameLoop ? vk::OneShotBatch::Mode::Defer : vk::OneShotBatch::Mode::Submit);
-  const auto handOver = [&] {
-    if (!frameLoop) return batch.submit();
-    if (std::shared_ptr<vk::DeferredWork> work = batch.take()) deferred_.push_back(std::move(work));
-  };
-  try {
-    change();
-  } catch (...) {
-    // A change that failed part way may already have swapped in objects whose uploads were recorded: they
-    // still run. The failure reported is the change's.
-    try {
-      handOver();
-    } catch (...) {
-    }
-    throw;
-  }
-  handOver();
+  change();  // a failure unwinds past the batch, which discards what it recorded (for objects now gone)
+  if (!frameLoop) return batch.submit();
+  if (std::shared_ptr<vk::DeferredWork> work = batch.take()) deferred_.push_back(std::move(work));
 }
 
 void Renderer::executeDeferred(VkCommandBuffer cmd) {
@@ -67,8 +55,10 @@ void Renderer::executeDeferred(VkCommandBuffer cmd) {
   std::vector<VkCommandBuffer> buffers;
   for (const auto& work : deferred_) buffers.push_back(work->commandBuffer());
   ctx_.fn().vkCmdExecuteCommands(cmd, std::uint32_t(buffers.size()), buffers.data());
-  for (auto& work : deferred_) retire(std::move(work));
+  for (auto& work : deferred_) retired_.push_back({lastFrame_, std::move(work)});
+  for (auto& resource : retiredWithDeferred_) retired_.push_back({lastFrame_, std::move(resource)});
   deferred_.clear();
+  retiredWithDeferred_.clear();
 }
 
 void Renderer::requireNoDeferredWork(const char* call) const {
@@ -91,7 +81,8 @@ void Renderer::setRasterTarget(VkExtent2D extent, VkImageView depth, std::span<H
     if (!i || &i->renderer_ != this) throw Error("Renderer: an instance is null or belongs to another Renderer");
   std::shared_ptr<ComputeRaster> target;
   withUploads("raster target",
-              [&] { target = std::make_shared<ComputeRaster>(ctx_, settings_, *shadows_, extent, depth, instances); });
+              [&] { target = std::make_shared<ComputeRaster>(ctx_, settings_, *shadows_, extent, depth, instances,
+                                                                pipelines_.cache()); });
   if (rasterTarget_) retire(rasterTarget_);  // frames in flight may still use its buffers and descriptors
   rasterTarget_ = std::move(target);
 }
@@ -129,6 +120,7 @@ void Renderer::recordRaster(VkCommandBuffer cmd, std::uint64_t frame, const View
 }
 
 void Renderer::recordComposite(VkCommandBuffer cmd, VkExtent2D extent, vk::GpuProfiler* profiler) const {
+  requireNoDeferredWork("recordComposite");
   target().recordComposite(cmd, extent, profiler);
 }
 
@@ -147,6 +139,12 @@ std::shared_ptr<render::MarschnerTextures> Renderer::marschner(const HairMateria
 }
 
 void Renderer::retire(std::shared_ptr<void> resource) {
+  // While changes' work waits for the next frame, what is retired now may be what that work writes (a
+  // second setMaterial before the frame retires the first one's tables): it stays until that frame is done.
+  if (!deferred_.empty()) {
+    retiredWithDeferred_.push_back(std::move(resource));
+    return;
+  }
   if (!lastFrame_) return;  // nothing recorded yet: nothing can be in flight
   retired_.push_back({lastFrame_, std::move(resource)});
 }

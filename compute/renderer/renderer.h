@@ -34,7 +34,8 @@
 // before anything is recorded); any record call for an instance of another Renderer; setRasterTarget
 // (graphics mode, no instance, device limits) and recordRaster/recordComposite/rasterImage without a
 // raster target (none set, or dropped because one of its instances was destroyed without
-// destroyInstance). Nothing else in the record calls throws.
+// destroyInstance); recordDraw, recordRaster and recordComposite while a change's work waits for the next
+// recordUpdate or recordShadows. Nothing else in the record calls throws.
 #include <functional>
 #include <memory>
 #include <optional>
@@ -107,6 +108,8 @@ class Renderer {
   // Runs `change` (construction or a setter) with its device work batched: before the first frame, one
   // submission waited on; after it (the frame loop), recorded into a deferred batch that the next
   // recordUpdate or recordShadows executes in the application's command buffer: no submission, no wait.
+  // `change` must not fail after it swapped in an object whose uploads it recorded: a failure discards
+  // them. (The setters swap last; a raster target follows after the change, in a batch of its own.)
   void withUploads(const std::string& name, const std::function<void()>& change);
   std::size_t retiredCount() const { return retired_.size(); }
 
@@ -150,5 +153,6 @@ class Renderer {
   std::optional<std::uint64_t> lastFrame_;
   std::shared_ptr<ComputeRaster> rasterTarget_;  // retired through retire() when replaced
   std::vector<std::shared_ptr<vk::DeferredWork>> deferred_;  // changes' uploads not yet executed
+  std::vector<std::shared_ptr<void>> retiredWithDeferred_;   // retired while such work waited
 };
 }  // namespace hp

@@ -43,7 +43,7 @@ vk::Image makeHeadImage(const vk::Context& ctx, const OpacitySettings& settings)
 
 }  // namespace
 
-ShadowMaps::ShadowMaps(const vk::Context& ctx, const OpacitySettings& settings)
+ShadowMaps::ShadowMaps(const vk::Context& ctx, const OpacitySettings& settings, vk::PipelineLibrary* library)
     : ctx_(&ctx),
       settings_(validated(settings)),
       lightSpace_(ctx, sizeof(gpu::LightSpace),
@@ -56,7 +56,7 @@ ShadowMaps::ShadowMaps(const vk::Context& ctx, const OpacitySettings& settings)
       bounce_(ctx) {
   if (onCompute(ctx, settings_))
     resolve_ = std::make_unique<compute::OpacityResolvePass>(ctx, settings_.resolution, settings_.format, image_.view(),
-                                                             settings_.deep);
+                                                             settings_.deep, library);
   settings_.deep = settings_.deep && resolve_ != nullptr;  // the graphics path draws global slices
   const gpu::LightSpace initial = compute::initialLightSpace();
   vk::submitAndWait(ctx, [&](VkCommandBuffer cmd) {

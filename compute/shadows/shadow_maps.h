@@ -29,7 +29,8 @@ class ShadowMaps {
  public:
   static constexpr VkFormat kHeadDepthFormat = VK_FORMAT_D32_SFLOAT;
 
-  ShadowMaps(const vk::Context& ctx, const OpacitySettings& settings);
+  // `library`: the Renderer's, through which the opacity resolve's pipeline is built (null: its own).
+  ShadowMaps(const vk::Context& ctx, const OpacitySettings& settings, vk::PipelineLibrary* library = nullptr);
   ShadowMaps(const ShadowMaps&) = delete;
   ShadowMaps& operator=(const ShadowMaps&) = delete;
 

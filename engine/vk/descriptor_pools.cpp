@@ -65,7 +65,17 @@ VkDescriptorSet DescriptorPools::allocate(VkDescriptorSetLayout layout,
   alloc.descriptorSetCount = 1;
   alloc.pSetLayouts = &layout;
   VkDescriptorSet set = VK_NULL_HANDLE;
-  HP_VK_CHECK(fn_->vkAllocateDescriptorSets(device_, &alloc, &set));
+  const VkResult first = fn_->vkAllocateDescriptorSets(device_, &alloc, &set);
+  if (first == VK_ERROR_FRAGMENTED_POOL || first == VK_ERROR_OUT_OF_POOL_MEMORY) {
+    // Counted room is not always the driver's (fragmentation): this pool takes no more, a fresh one does.
+    it->setsLeft = 0;
+    pools_.push_back(makePool());
+    it = std::prev(pools_.end());
+    alloc.descriptorPool = it->pool;
+    HP_VK_CHECK(fn_->vkAllocateDescriptorSets(device_, &alloc, &set));
+  } else {
+    check(first, "vkAllocateDescriptorSets");
+  }
   --it->setsLeft;
   for (const auto& [type, n] : counts) {
     auto [entry, fresh] = it->left.try_emplace(type, kDescriptorsPerType);

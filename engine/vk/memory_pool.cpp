@@ -67,17 +67,21 @@ std::uint32_t MemoryPool::newBlock(const MemoryRequest& request, VkDeviceSize si
     if (r != VK_SUCCESS) fn_->vkFreeMemory(device_, block.memory, nullptr);
     check(r, "vkMapMemory");
   }
-  ctx_->setName(VK_OBJECT_TYPE_DEVICE_MEMORY, reinterpret_cast<std::uint64_t>(block.memory),
-                std::string(request.dedicated ? "hairpipe dedicated memory" : "hairpipe memory block") + " (type " +
-                    std::to_string(request.typeIndex) + (request.forImage ? ", images)" : ", buffers)"));
   block.freeRanges[0] = size;
+  const VkDeviceMemory memory = block.memory;
+  std::uint32_t index = std::uint32_t(blocks_.size());
   for (std::uint32_t i = 0; i < blocks_.size(); ++i)
     if (blocks_[i].memory == VK_NULL_HANDLE) {
-      blocks_[i] = std::move(block);
-      return i;
+      index = i;
+      break;
     }
-  blocks_.push_back(std::move(block));
-  return std::uint32_t(blocks_.size() - 1);
+  if (index == blocks_.size()) blocks_.emplace_back();
+  blocks_[index] = std::move(block);
+  // Named once held (a failing name leaves the block to releaseAll, not leaked).
+  ctx_->setName(VK_OBJECT_TYPE_DEVICE_MEMORY, reinterpret_cast<std::uint64_t>(memory),
+                std::string(request.dedicated ? "hairpipe dedicated memory" : "hairpipe memory block") + " (type " +
+                    std::to_string(request.typeIndex) + (request.forImage ? ", images)" : ", buffers)"));
+  return index;
 }
 
 // First fit: the lowest free range that holds `size` at `alignment`; what is left on either side stays free.

@@ -35,6 +35,8 @@ class PipelineLibrary {
   PipelineLibrary& operator=(const PipelineLibrary&) = delete;
   // The pipeline cache's data now (vkGetPipelineCacheData), to start a later run's library with.
   std::vector<std::uint8_t> cacheData() const;
+  // For passes that own their pipelines instead of sharing the library's (the compute raster target).
+  VkPipelineCache cache() const { return cache_; }
   // Whether `data` is a pipeline cache of this device and driver (header version one, vendor and device
   // IDs, pipelineCacheUUID); throws hp::Error naming the problem when it is too short to be one.
   static bool cacheMatchesDevice(const Context& ctx, std::span<const std::uint8_t> data);

@@ -21,6 +21,7 @@ int main(int argc, char** argv) {
     // then fails naming the signal, with every file it wrote complete and no temporary file left.
     hp::InterruptFlag interrupt;
     app.parse(argc, argv);
+    hp::throwIfInterrupted("after the command finished: its outputs are complete");
   } catch (const CLI::ParseError& e) {
     // --help and --version print and succeed; every other parse error is a usage error: exit code 1,
     // like every other failure of the tool.

@@ -1,12 +1,24 @@
 #include "samples/tools/interrupt_flag.h"
 
+#include <atomic>
+
 #include "engine/core/error.h"
 
 namespace hp {
 namespace {
-volatile std::sig_atomic_t gSignal = 0;  // the signal that asked to stop, 0 for none
+// The signal that asked to stop, 0 for none; lock-free, so the handler may write it and worker threads
+// (the path tracer's) read it.
+std::atomic<int> gSignal{0};
+static_assert(std::atomic<int>::is_always_lock_free);
 bool gInstalled = false;
-extern "C" void onInterrupt(int signal) { gSignal = signal; }
+// A second signal while the first waits for a safe point stops the process the default way (a command
+// that never reaches one can still be ended).
+extern "C" void onInterrupt(int signal) {
+  if (gSignal.exchange(signal) != 0) {
+    std::signal(signal, SIG_DFL);
+    std::raise(signal);
+  }
+}
 }  // namespace
 
 InterruptFlag::InterruptFlag() {
@@ -27,6 +39,7 @@ InterruptFlag::~InterruptFlag() {
   sigaction(SIGINT, &previousInt_, nullptr);
   sigaction(SIGTERM, &previousTerm_, nullptr);
   gInstalled = false;
+  gSignal = 0;
 }
 
 bool InterruptFlag::requested() const { return gSignal != 0; }
@@ -34,7 +47,7 @@ bool InterruptFlag::requested() const { return gSignal != 0; }
 bool interruptRequested() { return gSignal != 0; }
 
 void throwIfInterrupted(const std::string& where) {
-  const int signal = gSignal;
+  const int signal = gSignal.load();
   if (signal == 0) return;
   throw Error(std::string("interrupted (") + (signal == SIGTERM ? "SIGTERM" : "SIGINT") + ") " + where);
 }

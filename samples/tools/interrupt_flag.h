@@ -3,7 +3,9 @@
 // so every file they wrote is complete and no temporary file is left. While an InterruptFlag lives, the
 // two signals only set the flag; the run polls interruptRequested() at its safe points (between frames,
 // tiles, cases) and stops with throwIfInterrupted(), whose hp::Error names the signal. The destructor
-// restores the previous handlers. One at a time (the CLI installs one around every command).
+// restores the previous handlers. A second signal before the run reached a safe point ends the process the
+// default way. One at a time (the CLI installs one around every command, and fails a command that finished
+// after a signal, saying so).
 #include <csignal>
 #include <string>
 

@@ -15,6 +15,7 @@
 #include "engine/vk/check.h"
 #include "engine/vk/context.h"
 #include "engine/vk/fault_injection.h"
+#include "samples/tools/interrupt_flag.h"
 #include "samples/tools/png_file.h"
 #include "samples/tools/simulation_driver.h"
 #include "samples/viewer/viewer_device.h"
@@ -108,7 +109,8 @@ class Viewer {
   void saveScreenshot();
   DrawView makeView();
   bool running() const {
-    return !window_.shouldClose() && !state_.close && (options_.frames == 0 || frame_ < options_.frames);
+    return !window_.shouldClose() && !state_.close && !interruptRequested() &&  // Ctrl-C in its terminal
+           (options_.frames == 0 || frame_ < options_.frames);
   }
 
   const ViewerOptions& options_;

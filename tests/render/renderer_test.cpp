@@ -393,3 +393,34 @@ TEST_F(VulkanTest, TwoInstancesOnTheComputeRasterAreBothDrawnAndFollowAMaterialC
   EXPECT_NEAR(leftChange, 1.0, 0.1);
   EXPECT_GT(rightChange, 1.5);
 }
+
+// Two changes between the same two frames, one frame in flight: the first change's tables, retired by the
+// second before its uploads ran, live until the frame that runs them is done (freed earlier, the deferred
+// copy into them is an error the validation layer reports). The second material is what is drawn.
+TEST_F(VulkanTest, TwoMaterialChangesBetweenFramesKeepTheFirstsTablesUntilItsUploadsRan) {
+  hp::render::OffscreenRenderer target(*ctx, 96, 64, 1);
+  hp::RendererSettings settings = rendererSettings(target);
+  settings.framesInFlight = 1;
+  hp::Renderer renderer(*ctx, settings);
+  auto hair = renderer.createInstance(head(400), {});
+  hp::HairInstance* one[] = {hair.get()};
+  hp::CameraSpec cam;
+  const hp::View view{hp::orbitCamera(cam, 1.5f), {96, 64}, false, 0};
+  const auto frame = [&](std::uint64_t f) {
+    hp::vk::submitAndWait(*ctx, [&](VkCommandBuffer cmd) {
+      if (f == 0) renderer.recordUpdate(cmd, f, one);  // the same strands in every frame
+      renderer.recordShadows(cmd, f, hp::LightSpec{}, one);
+      target.record(cmd, [&](VkCommandBuffer c) { renderer.recordDraw(c, f, view, one); }, 1.0f);
+    }, "two changes");
+    return target.readDisplay();
+  };
+  frame(0);
+  hp::HairMaterial red;
+  red.absorption = hp::absorptionFromColor({0.9, 0.2, 0.1});
+  hair->setMaterial(red, hp::LutMode::Float);         // its tables' uploads wait for frame 1
+  hair->setMaterial(blonde(), hp::LutMode::Float);    // retires them before that
+  const auto changed = frame(1);
+  hair->setMaterial(blonde(), hp::LutMode::Float);    // no change: nothing recorded
+  const auto again = frame(2);
+  EXPECT_EQ(differingPixels(changed, again), 0u);
+}

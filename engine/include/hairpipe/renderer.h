@@ -13,7 +13,9 @@
 // work of a change (setMaterial, setDensity, createInstance, setRasterTarget: uploads of new tables and
 // buffers) makes no submission and no wait on the application's queue: it is recorded into the next
 // recordUpdate or recordShadows (executed commands, outside any rendering, in TRANSFER and the shader
-// stages). So changes go between frames: recordDraw and recordRaster refuse to run while a change's work
+// stages), so those two need a primary command buffer with no query active (vkCmdExecuteCommands). A
+// change between recordUpdate and recordShadows of one frame runs in recordShadows, after that frame's
+// update: new strands (setDensity) are filled by the next frame's recordUpdate. So changes go between frames: recordDraw and recordRaster refuse to run while a change's work
 // waits for them. Before the first frame, construction submits its uploads once and waits for them.
 // Instances are destroyed before their Renderer, and a Renderer before its Context; the application waits
 // for the GPU before destroying the Renderer.

@@ -224,16 +224,23 @@ TraceResult traceReference(const ExportedFrame& frame, const TraceSettings& sett
   out.threads = std::min(tiles, settings.threads ? settings.threads : std::max(1u, std::thread::hardware_concurrency()));
   Progress progress(settings.progress, tiles, std::uint64_t(kTile) * kTile * settings.spp);
   std::atomic<std::uint32_t> next{0};
+  std::atomic<bool> stopped{false};
   std::exception_ptr failure;
   std::mutex failureMutex;
   auto work = [&] {
     try {
       for (std::uint32_t t; (t = next++) < tiles;) {
         if (settings.stop && settings.stop()) {  // the other threads finish their tile and stop too
+          stopped = true;
           next = tiles;
           break;
         }
         traceTile(tracer, t, tilesX, settings, out);
+        if (settings.stop && settings.stop()) {  // the tile may have been cut short
+          stopped = true;
+          next = tiles;
+          break;
+        }
         progress.tileDone();
       }
     } catch (...) {
@@ -247,7 +254,7 @@ TraceResult traceReference(const ExportedFrame& frame, const TraceSettings& sett
   work();
   for (auto& t : pool) t.join();
   if (failure) std::rethrow_exception(failure);
-  if (settings.stop && settings.stop()) throw Error("the trace was stopped before its last tile");
+  if (stopped) throw Error("the trace was stopped before its last tile");
   out.paths = std::uint64_t(w) * h * settings.spp;
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return out;
