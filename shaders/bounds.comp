@@ -12,7 +12,7 @@
 
 layout(local_size_x = BOUNDS_WORKGROUP_SIZE) in;
 layout(std430, binding = BOUNDS_BINDING_POSITIONS) readonly buffer Positions { vec4 positions[]; };
-layout(std430, binding = BOUNDS_BINDING_LIGHT) buffer Light { LightSpace light; };
+layout(std430, binding = BOUNDS_BINDING_LIGHT) buffer Light { LightSpace lights[]; };
 layout(push_constant) uniform Push { BoundsPush push; };
 
 const float BIG = 3.0e38;
@@ -62,8 +62,8 @@ void reduce() {
   }
   if (local != 0u || sMin[0].x > sMax[0].x) return;  // an empty group changes nothing
   for (int c = 0; c < 3; ++c) {
-    atomicMin(light.minBits[c], orderedFromFloat(sMin[0][c]));
-    atomicMax(light.maxBits[c], orderedFromFloat(sMax[0][c]));
+    atomicMin(lights[push.slot].minBits[c], orderedFromFloat(sMin[0][c]));
+    atomicMax(lights[push.slot].maxBits[c], orderedFromFloat(sMax[0][c]));
   }
 }
 
@@ -100,8 +100,8 @@ mat4 perspectiveViewProj(vec2 xyLo, vec2 xyHi, float zNear, float zFar) {
 
 void finalize() {
   if (hpThreadId(BOUNDS_WORKGROUP_SIZE) != 0u) return;
-  vec3 lo = vec3(floatFromOrdered(light.minBits.x), floatFromOrdered(light.minBits.y), floatFromOrdered(light.minBits.z));
-  vec3 hi = vec3(floatFromOrdered(light.maxBits.x), floatFromOrdered(light.maxBits.y), floatFromOrdered(light.maxBits.z));
+  vec3 lo = vec3(floatFromOrdered(lights[push.slot].minBits.x), floatFromOrdered(lights[push.slot].minBits.y), floatFromOrdered(lights[push.slot].minBits.z));
+  vec3 hi = vec3(floatFromOrdered(lights[push.slot].maxBits.x), floatFromOrdered(lights[push.slot].maxBits.y), floatFromOrdered(lights[push.slot].maxBits.z));
   bool spot = push.perspective != 0u;
   if (!(lo.x <= hi.x)) {  // no vertices: a unit box (spot: the cone, depths [1, 2]), nothing will be drawn into it
     lo = spot ? vec3(-push.tanCone, -push.tanCone, 1.0) : vec3(-1.0);
@@ -122,11 +122,11 @@ void finalize() {
   float zFar = max(hi.z, zNear + max(1e-6, abs(zNear) * 1e-6));
   float dz = (zFar - zNear) / float(OPACITY_SLICES);
 
-  light.viewProj = spot ? perspectiveViewProj(xyLo, xyHi, zNear, zFar) : orthographicViewProj(xyLo, xyHi, zNear, zFar);
-  light.depthRange = vec4(zNear, zFar, dz, 1.0 / dz);
-  light.extent = vec4(xyLo, xyHi);
-  light.minBits = uvec4(orderedFromFloat(BIG));
-  light.maxBits = uvec4(orderedFromFloat(-BIG));
+  lights[push.slot].viewProj = spot ? perspectiveViewProj(xyLo, xyHi, zNear, zFar) : orthographicViewProj(xyLo, xyHi, zNear, zFar);
+  lights[push.slot].depthRange = vec4(zNear, zFar, dz, 1.0 / dz);
+  lights[push.slot].extent = vec4(xyLo, xyHi);
+  lights[push.slot].minBits = uvec4(orderedFromFloat(BIG));
+  lights[push.slot].maxBits = uvec4(orderedFromFloat(-BIG));
 }
 
 void main() {

@@ -1,28 +1,25 @@
 // The radiance a hair fibre sends toward the camera (docs/THEORY.md §3-6), GLSL only, shared by the graphics
-// strand shader (strands.frag, per fragment) and the compute rasterizer (raster_shade.comp, per vertex):
-// S(L, V, T) cos(theta_i) x light x transmittance [+ the light the hair in front scattered forward and the
-// light the hair around scatters back, dual scattering] + sky albedo x (ambient x RENDER_HAIR_SKY_VISIBILITY
-// + `bounce`), times the strand's lightness variation. `bounce` is the mean radiance the skin sends the point
-// (head_bounce.glsl; vec3(0) without it).
-// The includer declares `frame` (RenderFrame), `marschner` (MarschnerParams), the LUT samplers
-// lutM, lutN0, lutN1 and `headShadowMap` (the head's depth map) before including this file; `alpha` is
-// the opacity-map lookup at the point. The transmittance is the hair's (opacity maps) times the head's.
+// strand shader (strands.frag, per fragment) and the compute rasterizer (raster_shade.comp, per vertex).
+// Per light of the frame: S(L, V, T) cos(theta_i) x light x transmittance [+ the light the hair in front
+// scattered forward and the light the hair around scatters back, dual scattering]; then sky albedo x (ambient
+// x RENDER_HAIR_SKY_VISIBILITY + the skin's bounce of the slot-0 light, head_bounce.glsl), all times the
+// strand's lightness variation. The transmittance is the hair's (opacity maps of the light's shadow slot)
+// times the heads' (their depth map); a light without a slot is unshadowed.
+// The includer declares `frame` (RenderFrame), `marschner` (MarschnerParams), the LUT samplers lutM, lutN0,
+// lutN1, and what frame_shadows.glsl and head_bounce.glsl need, before including this file.
 #ifndef HP_HAIR_SHADING_GLSL
 #define HP_HAIR_SHADING_GLSL
-#include "head_shadow.glsl"
-#include "light.glsl"
+#include "frame_shadows.glsl"
+#include "head_bounce.glsl"
 
-vec3 hairRadiance(vec3 world, vec3 tangent, float colorScale, float alpha, vec3 bounce) {
-  vec3 T = normalize(tangent);
-  LightSample light = sampleLight(frame.lightDirection, frame.lightPosition, frame.lightSpot, world);
-  vec3 L = light.L;
-  vec3 V = normalize(frame.cameraPosition.xyz - world);
+// One light's direct term at a fibre point; `shadow` is what stands between them.
+vec3 hairLightRadiance(FrameLight light, LightSample ls, LightShadow shadow, vec3 V, vec3 T) {
+  vec3 L = ls.L;
   vec3 S = marschnerEvaluate(marschner.control.x, L, V, T, lutM, lutN0, lutN1, marschner);
   float sinThetaI = clamp(dot(L, T), -1.0, 1.0);
   float cosThetaI = sqrt(1.0 - sinThetaI * sinThetaI);
-  float tau = frame.strand.z * alpha;  // optical depth toward the light: the mean number of fibres crossed
-  float head = headVisibility(headShadowMap, frame.headShadowViewProj, frame.headShadow, world, L);
-  vec3 incident = frame.lightRadiance.rgb * (light.scale * head);
+  float tau = frame.strand.z * shadow.alpha;  // optical depth toward the light: the mean number of fibres crossed
+  vec3 incident = light.radiance.rgb * (ls.scale * shadow.head);
   vec3 direct = S * cosThetaI * incident * exp(-tau);
   // Multiple scattering (dual; docs/SHADING.md "Multiple scattering"): of the light that hits N fibres on
   // its way (N Poisson with mean tau), a fraction d_f a_f^N goes on forward, spread around the fibre:
@@ -32,6 +29,21 @@ vec3 hairRadiance(vec3 world, vec3 tangent, float colorScale, float alpha, vec3 
     vec3 af = marschnerForwardAlbedo(sinThetaI, marschner);
     vec3 spread = MARSCHNER_FORWARD_DENSITY * max(exp(-tau * (1.0 - af)) - exp(-tau), vec3(0.0));
     direct += marschnerPhysicalMultipleResponse(L, V, T, exp(-tau), spread, lutM, marschner) * incident;
+  }
+  return direct;
+}
+
+vec3 hairRadiance(vec3 world, vec3 tangent, float colorScale) {
+  vec3 T = normalize(tangent);
+  vec3 V = normalize(frame.cameraPosition.xyz - world);
+  vec3 direct = vec3(0.0);
+  vec3 bounce = vec3(0.0);
+  for (uint i = 0u; i < frame.lightCount.x; ++i) {
+    FrameLight light = frame.lights[i];
+    LightSample ls = sampleLight(light, world);
+    LightShadow shadow = frameLightShadow(light, world, ls.L, false);
+    direct += hairLightRadiance(light, ls, shadow, V, T);
+    if (i == frame.lightCount.y) bounce = headBounceAt(world, ls.L, shadow.alpha);
   }
   // The ambient is a uniform white sky: an unoccluded fibre returns the model's sky albedo times its
   // radiance, a fibre of a head of hair the mean visible fraction of it (shared/render.h).

@@ -1,31 +1,22 @@
 #version 460
 // The opaque head mesh, pulled by index from its position/normal buffers.
 #include "shared/render.h"
-#include "opacity_lookup.glsl"
 
 layout(std140, binding = RENDER_BINDING_FRAME) uniform Frame { RenderFrame frame; };
 layout(std430, binding = RENDER_BINDING_POSITIONS) readonly buffer Positions { vec4 positions[]; };
 layout(std430, binding = RENDER_BINDING_TANGENTS) readonly buffer Normals { vec4 normals[]; };
 layout(std430, binding = RENDER_BINDING_ATTRIBUTES) readonly buffer Indices { uint indices[]; };
-layout(std430, binding = RENDER_BINDING_LIGHT) readonly buffer Light { LightSpace light; };
 layout(push_constant) uniform Push { mat4 headToWorld; };
 
 layout(location = 0) out vec3 outNormal;
 layout(location = 1) out float outScalp;  // 1 where hair grows
-layout(location = 2) out vec3 outLightUvw;  // opacity-map lookup (opacity_lookup.glsl)
-layout(location = 3) out vec4 outSliceWeights[4];
-layout(location = 7) out vec3 outWorld;  // for a spot's per-fragment L
-layout(location = 8) out float outSlice;  // OpacityVertex::s (deep opacity maps)
+layout(location = 2) out vec3 outWorld;   // the lights and shadows are looked up per fragment
 
 void main() {
   uint i = indices[gl_VertexIndex];
   vec4 world = headToWorld * vec4(positions[i].xyz, 1.0);
   outNormal = mat3(headToWorld) * normals[i].xyz;
   outScalp = normals[i].w;
-  OpacityVertex o = opacityVertex(light, world.xyz, frame.strand.w, frame.options.y != 0u);
-  outLightUvw = o.uvw;
-  outSlice = o.s;
   outWorld = world.xyz;
-  outSliceWeights = vec4[4](o.w0, o.w1, o.w2, o.w3);
   gl_Position = frame.proj * frame.view * world;
 }

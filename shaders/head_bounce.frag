@@ -7,30 +7,26 @@
 // The albedo is head.frag's (skin, or the hair-coloured scalp); no wrap term: the reference's skin is
 // Lambertian. Only the surface nearest the light is kept (depth test), so the head shadows itself here.
 #include "shared/render.h"
-#include "opacity_lookup.glsl"
-#include "light.glsl"
 #include "head_bounce_encoding.glsl"
 
 layout(std140, binding = RENDER_BINDING_FRAME) readonly buffer Frame { RenderFrame frame; };
 layout(binding = RENDER_BINDING_OPACITY) uniform sampler2DArray opacityMaps;
+layout(binding = RENDER_BINDING_HEAD_SHADOW) uniform sampler2DArrayShadow headShadowMap;
+layout(std430, binding = RENDER_BINDING_LIGHT) readonly buffer Light { LightSpace lightSpaces[]; };
 layout(location = 0) in vec3 inNormal;
 layout(location = 1) in float inScalp;
-layout(location = 2) in vec3 inLightUvw;
-layout(location = 3) in vec4 inSliceWeights[4];
-layout(location = 7) in vec3 inWorld;
-layout(location = 8) in float inSlice;
+layout(location = 2) in vec3 inWorld;
 layout(location = 0) out vec4 outFlux;      // rgb flux, a = 1 + alpha (0: no skin in this texel)
 layout(location = 1) out vec4 outPosition;  // xyz world, w = the unit normal (bounceEncodeNormal)
+#include "frame_shadows.glsl"
 
 void main() {
-  LightSample light = sampleLight(frame.lightDirection, frame.lightPosition, frame.lightSpot, inWorld);
+  FrameLight light = frame.lights[frame.lightCount.y];  // the light of shadow slot 0
+  LightSample ls = sampleLight(light, inWorld);
   vec3 albedo = mix(frame.skinColor.rgb, 0.5 * frame.hairColor.rgb, inScalp);
-  float alpha = frame.options.w != 0u
-                    ? opacityAlphaDeepSoft(opacityMaps, inLightUvw, inSlice, frame.strand.w)
-                    : opacityAlphaSoft(opacityMaps, inLightUvw, inSliceWeights[0], inSliceWeights[1], inSliceWeights[2],
-                                       inSliceWeights[3]);
-  float areaAcross = abs(dot(cross(dFdx(inWorld), dFdy(inWorld)), light.L));
-  vec3 E = frame.lightRadiance.rgb * light.scale;
+  float alpha = frameOpacityAlpha(0u, inWorld, true);
+  float areaAcross = abs(dot(cross(dFdx(inWorld), dFdy(inWorld)), ls.L));
+  vec3 E = light.radiance.rgb * ls.scale;
   outFlux = vec4(albedo * E * (exp(-frame.strand.z * alpha) * areaAcross), 1.0 + alpha);
   outPosition = vec4(inWorld, bounceEncodeNormal(normalize(inNormal)));
 }

@@ -1,8 +1,8 @@
 // The light the skin reflects onto a fibre (one bounce, sun -> skin -> fibre; docs/SHADING.md "Skin bounce"),
 // GLSL only, for the hair shading of both rasters (raster_shade.comp per vertex, strands.frag per fragment;
-// entry point headBounceAt). The includer declares `frame` (RenderFrame), `light` (LightSpace), the opacity
-// maps `opacityMaps`, and the bounce map's samplers bounceFlux and bouncePosition (head_bounce.frag writes
-// them), after including opacity_lookup.glsl.
+// entry point headBounceAt). The light is the frame's light in shadow slot 0 (RenderFrame::lightCount.y);
+// the others add no skin bounce. The includer declares what frame_shadows.glsl needs and the bounce map's
+// samplers bounceFlux and bouncePosition (head_bounce.frag writes them).
 // Each texel of the map is a Lambertian patch of flux Phi; a point p receives from it the radiance
 // integral L A cos / r^2 = Phi cos_out / (pi r^2) (cos_out at the patch toward p), times the hair between
 // them, exp(-k (alpha_skin - alpha_p)): both opacity-map values are along the light, so their difference is
@@ -14,10 +14,11 @@
 #ifndef HP_HEAD_BOUNCE_GLSL
 #define HP_HEAD_BOUNCE_GLSL
 #include "head_bounce_encoding.glsl"
+#include "frame_shadows.glsl"
 
 // p's texel of the bounce map (continuous, in texels); false behind a spot.
 bool headBounceTexel(vec3 p, out vec2 centre) {
-  vec4 clip = frame.headShadowViewProj * vec4(p, 1.0);
+  vec4 clip = frame.shadows[0].headViewProj * vec4(p, 1.0);
   if (!(clip.w > 0.0)) return false;
   vec2 ndc = clip.xy / clip.w;
   centre = vec2(ndc.x * 0.5 + 0.5, 0.5 - ndc.y * 0.5) * float(RENDER_BOUNCE_RESOLUTION);  // head_shadow.glsl's y flip
@@ -74,19 +75,11 @@ vec3 headBounceLight(vec3 p, float alphaHere, float alphaLayer) {
   return sum / (4.0 * PI);
 }
 
-// The opacity-map value at a point with the frame's kind of slices and bias.
-float frameOpacityAlpha(vec3 p) {
-  OpacityVertex o = opacityVertex(light, p, frame.strand.w, frame.options.y != 0u);
-  return frame.options.w != 0u ? opacityAlphaDeep(opacityMaps, o.uvw, o.s, frame.strand.w)
-                               : opacityAlpha(opacityMaps, o.uvw, o.w0, o.w1, o.w2, o.w3);
-}
-
-// The mean radiance the skin sends to hair point p (alphaHere: the opacity-map value at p), or 0 when the
-// frame has no bounce.
-vec3 headBounceAt(vec3 p, float alphaHere) {
+// The mean radiance the skin sends to hair point p (L toward the bounce's light; alphaHere: the opacity-map
+// value of slot 0 at p), or 0 when the frame has no bounce.
+vec3 headBounceAt(vec3 p, vec3 L, float alphaHere) {
   if (frame.headBounce.x == 0.0) return vec3(0.0);
-  vec3 L = sampleLight(frame.lightDirection, frame.lightPosition, frame.lightSpot, p).L;
-  float layer = frameOpacityAlpha(headBounceSkinBelow(p, L)) - alphaHere;
+  float layer = frameOpacityAlpha(0u, headBounceSkinBelow(p, L), false) - alphaHere;
   return headBounceLight(p, alphaHere, max(layer, 0.0));
 }
 #endif

@@ -9,7 +9,7 @@
 #include "opacity_footprint.glsl"
 
 layout(std430, binding = OPACITY_BINDING_POSITIONS) readonly buffer Positions { vec4 positions[]; };
-layout(std430, binding = OPACITY_BINDING_LIGHT) readonly buffer Light { LightSpace light; };
+layout(std430, binding = OPACITY_BINDING_LIGHT) readonly buffer Light { LightSpace lights[]; };
 layout(push_constant) uniform Push { OpacityPush push; };
 
 layout(location = 0) out float outSlice;
@@ -21,6 +21,7 @@ void main() {
   uint strand = segment / (q - 1u);
   uint k = segment % (q - 1u);
   uint v = strand * q + k + (gl_VertexIndex & 1u);
+  LightSpace light = lights[push.slot];
   vec4 clip = light.viewProj * vec4(positions[v].xyz, 1.0);
   outSlice = clip.z * float(OPACITY_SLICES);
   float along = float(k + (uint(gl_VertexIndex) & 1u)) / float(q - 1u);

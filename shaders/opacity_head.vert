@@ -5,7 +5,7 @@
 
 layout(std430, binding = OPACITY_BINDING_POSITIONS) readonly buffer Positions { vec4 positions[]; };
 layout(std430, binding = OPACITY_BINDING_INDICES) readonly buffer Indices { uint indices[]; };
-layout(std430, binding = OPACITY_BINDING_LIGHT) readonly buffer Light { LightSpace light; };
+layout(std430, binding = OPACITY_BINDING_LIGHT) readonly buffer Light { LightSpace lights[]; };
 layout(push_constant) uniform Push { OpacityPush push; };
 
 layout(location = 0) out float outSlice;
@@ -13,6 +13,7 @@ layout(location = 1) out float outOpacity;
 
 void main() {
   vec4 world = push.headToWorld * vec4(positions[indices[gl_VertexIndex]].xyz, 1.0);
+  LightSpace light = lights[push.slot];
   vec4 clip = light.viewProj * world;
   outSlice = clip.z * float(OPACITY_SLICES);
   outOpacity = push.opacity;

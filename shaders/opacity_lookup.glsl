@@ -5,6 +5,7 @@
 // textureLod (the maps have one mip) so compute shaders can look up too.
 // Per fragment the uv is clip.xy / clip.w (exact for a spot's perspective map too; ortho: w = 1).
 // Outside the map's x/y box, or behind a spot (w <= 0), there is no hair: alpha = 0.
+// `slot`: the light's shadow slot, whose layers start at slot x OPACITY_LAYERS (shared/opacity.h).
 #ifndef HP_OPACITY_LOOKUP_GLSL
 #define HP_OPACITY_LOOKUP_GLSL
 #include "shared/opacity.h"
@@ -49,42 +50,43 @@ vec3 opacitySoftTap(sampler2DArray maps, vec3 uvw, int k) {
   return vec3(uvw.xy + vec2((k & 1) == 0 ? -d.x : d.x, k < 2 ? -d.y : d.y) * uvw.z, uvw.z);
 }
 
-float opacityAlpha(sampler2DArray maps, vec3 uvw, vec4 w0, vec4 w1, vec4 w2, vec4 w3) {
+float opacityAlpha(sampler2DArray maps, uint slot, vec3 uvw, vec4 w0, vec4 w1, vec4 w2, vec4 w3) {
   vec2 uv;
   if (!opacityUv(uvw, uv)) return 0.0;
-  return dot(w0, textureLod(maps, vec3(uv, 0.0), 0.0)) + dot(w1, textureLod(maps, vec3(uv, 1.0), 0.0)) +
-         dot(w2, textureLod(maps, vec3(uv, 2.0), 0.0)) + dot(w3, textureLod(maps, vec3(uv, 3.0), 0.0));
+  float l = float(slot * OPACITY_LAYERS);
+  return dot(w0, textureLod(maps, vec3(uv, l), 0.0)) + dot(w1, textureLod(maps, vec3(uv, l + 1.0), 0.0)) +
+         dot(w2, textureLod(maps, vec3(uv, l + 2.0), 0.0)) + dot(w3, textureLod(maps, vec3(uv, l + 3.0), 0.0));
 }
 // The same over a wider footprint for opaque receivers (the head): 4 bilinear taps 1.5 texels from the
 // receiver diagonally, a box of ~5 texels. One render strand covers about one texel, so the plain lookup draws
 // each strand's shadow as a sharp line on the skin; hair shadows on skin come from many fibres and are
 // soft. (Strand receivers keep the sharp lookup: it is what separates strands from the ones above them.)
-float opacityAlphaSoft(sampler2DArray maps, vec3 uvw, vec4 w0, vec4 w1, vec4 w2, vec4 w3) {
+float opacityAlphaSoft(sampler2DArray maps, uint slot, vec3 uvw, vec4 w0, vec4 w1, vec4 w2, vec4 w3) {
   if (!(uvw.z > 0.0)) return 0.0;
   float sum = 0.0;
-  for (int k = 0; k < 4; ++k) sum += opacityAlpha(maps, opacitySoftTap(maps, uvw, k), w0, w1, w2, w3);
+  for (int k = 0; k < 4; ++k) sum += opacityAlpha(maps, slot, opacitySoftTap(maps, uvw, k), w0, w1, w2, w3);
   return 0.25 * sum;
 }
 
 // Deep opacity maps (OpacitySettings::deep, shared/opacity.h): the slices start at the first hair of the
 // texel the point falls in (nearest texel of the last layer), so the weights are made here from the
 // point's slice coordinate s (OpacityVertex::s) rather than per vertex. bias: in deep slices.
-float opacityAlphaDeep(sampler2DArray maps, vec3 uvw, float s, float bias) {
+float opacityAlphaDeep(sampler2DArray maps, uint slot, vec3 uvw, float s, float bias) {
   vec2 uv;
   if (s < 0.0 || !opacityUv(uvw, uv)) return 0.0;
   ivec2 size = textureSize(maps, 0).xy;
   ivec2 texel = clamp(ivec2(uv * vec2(size)), ivec2(0), size - 1);
-  float s0 = texelFetch(maps, ivec3(texel, int(OPACITY_TARGETS)), 0).x;
+  float s0 = texelFetch(maps, ivec3(texel, int(slot * OPACITY_LAYERS + OPACITY_TARGETS)), 0).x;
   float d = clamp((s - s0) * OPACITY_DEEP_FACTOR - bias, 0.0, float(OPACITY_SLICES));
-  return opacityAlpha(maps, uvw, opacitySliceWeights(d, 1.0), opacitySliceWeights(d, 5.0), opacitySliceWeights(d, 9.0),
+  return opacityAlpha(maps, slot, uvw, opacitySliceWeights(d, 1.0), opacitySliceWeights(d, 5.0), opacitySliceWeights(d, 9.0),
                       opacitySliceWeights(d, 13.0));
 }
 
 // opacityAlphaSoft's 4 taps for deep maps (opaque receivers: the head).
-float opacityAlphaDeepSoft(sampler2DArray maps, vec3 uvw, float s, float bias) {
+float opacityAlphaDeepSoft(sampler2DArray maps, uint slot, vec3 uvw, float s, float bias) {
   if (!(uvw.z > 0.0)) return 0.0;
   float sum = 0.0;
-  for (int k = 0; k < 4; ++k) sum += opacityAlphaDeep(maps, opacitySoftTap(maps, uvw, k), s, bias);
+  for (int k = 0; k < 4; ++k) sum += opacityAlphaDeep(maps, slot, opacitySoftTap(maps, uvw, k), s, bias);
   return 0.25 * sum;
 }
 #endif

@@ -14,7 +14,7 @@
 
 layout(local_size_x = OPACITY_SPLAT_WORKGROUP_SIZE) in;
 layout(std430, binding = OPACITY_SPLAT_BINDING_POSITIONS) readonly buffer Positions { vec4 positions[]; };
-layout(std430, binding = OPACITY_SPLAT_BINDING_LIGHT) readonly buffer Light { LightSpace light; };
+layout(std430, binding = OPACITY_SPLAT_BINDING_LIGHT) readonly buffer Light { LightSpace lights[]; };
 layout(std430, binding = OPACITY_SPLAT_BINDING_BINS) buffer Bins { uint bins[]; };
 layout(std430, binding = OPACITY_SPLAT_BINDING_FIRST) buffer First { uint first[]; };
 layout(push_constant) uniform Push { OpacitySplatPush push; };
@@ -118,6 +118,7 @@ void main() {
   uint q = push.verticesPerStrand;
   uint k = segment % (q - 1u);
   uint v = (segment / (q - 1u)) * q + k;
+  LightSpace light = lights[push.slot];
   vec4 c0 = light.viewProj * vec4(positions[v].xyz, 1.0);
   vec4 c1 = light.viewProj * vec4(positions[v + 1u].xyz, 1.0);
   float o0 = strandFragmentOpacity(light, push.footprint, push.opacity, float(k) / float(q - 1u), c0.w);

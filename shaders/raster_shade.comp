@@ -1,7 +1,7 @@
 #version 460
 // Compute rasterizer, per vertex that raster_bin.comp listed for the chunk (an indirect dispatch): the
 // radiance by hairRadiance (shaders/hair_shading.glsl, the graphics path's entry point) with the
-// opacity-map lookup at the vertex (strand-space shading). Vertices of segments that touch no tile
+// opacity-map lookups at the vertex (strand-space shading). Vertices of segments that touch no tile
 // (off-screen, behind the head's depth) are never shaded: the fine raster reads only listed segments' ends.
 // The light the skin reflects onto the vertex comes from the head bounce map (head_bounce.glsl).
 #include "shared/render.h"
@@ -10,7 +10,6 @@
 #include "shared/raster.h"
 #include "common.glsl"
 #include "marschner.glsl"
-#include "opacity_lookup.glsl"
 
 layout(local_size_x = RASTER_WORKGROUP_SIZE) in;
 // Storage blocks, not uniform blocks: see raster_project.comp.
@@ -21,10 +20,10 @@ layout(binding = RENDER_BINDING_LUT_M) uniform sampler2D lutM;
 layout(binding = RENDER_BINDING_LUT_N0) uniform sampler2D lutN0;
 layout(binding = RENDER_BINDING_LUT_N1) uniform sampler2D lutN1;
 layout(binding = RENDER_BINDING_OPACITY) uniform sampler2DArray opacityMaps;
-layout(binding = RENDER_BINDING_HEAD_SHADOW) uniform sampler2DShadow headShadowMap;
+layout(binding = RENDER_BINDING_HEAD_SHADOW) uniform sampler2DArrayShadow headShadowMap;
 layout(binding = RENDER_BINDING_BOUNCE_FLUX) uniform sampler2D bounceFlux;
 layout(binding = RENDER_BINDING_BOUNCE_POSITION) uniform sampler2D bouncePosition;
-layout(std430, binding = RENDER_BINDING_LIGHT) readonly buffer Light { LightSpace light; };
+layout(std430, binding = RENDER_BINDING_LIGHT) readonly buffer Light { LightSpace lightSpaces[]; };
 layout(std430, binding = RENDER_BINDING_POSITIONS) readonly buffer Positions { vec4 positions[]; };
 layout(std430, binding = RENDER_BINDING_TANGENTS) readonly buffer Tangents { vec4 tangents[]; };
 layout(std430, binding = RENDER_BINDING_ATTRIBUTES) readonly buffer Attributes { StrandAttributes attributes[]; };
@@ -32,7 +31,6 @@ layout(std430, binding = RASTER_BINDING_COLORS) writeonly buffer Colors { uvec2 
 layout(std430, binding = RASTER_BINDING_SHADE_LIST) readonly buffer ShadeList { uint shadeList[]; };
 layout(std430, binding = RASTER_BINDING_SHADE_ARGS) readonly buffer ShadeArgs { uvec4 shadeArgs[]; };
 #include "hair_shading.glsl"
-#include "head_bounce.glsl"
 
 void main() {
   uint n = hpThreadId(RASTER_WORKGROUP_SIZE);
@@ -40,8 +38,6 @@ void main() {
   uint global = shadeList[params.firstVertex + n];
   uint i = global - params.firstVertex;
   vec4 pos = positions[i];
-  float alpha = frameOpacityAlpha(pos.xyz);
-  vec3 radiance = hairRadiance(pos.xyz, tangents[i].xyz, attributes[i / params.verticesPerStrand].colorScale, alpha,
-                               headBounceAt(pos.xyz, alpha));
+  vec3 radiance = hairRadiance(pos.xyz, tangents[i].xyz, attributes[i / params.verticesPerStrand].colorScale);
   colors[global] = uvec2(packHalf2x16(radiance.rg), packHalf2x16(vec2(radiance.b, 0.0)));
 }

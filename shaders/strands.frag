@@ -1,13 +1,11 @@
 #version 460
 // Hair shading per fragment: hairRadiance (hair_shading.glsl, the same entry point as the compute
-// rasterizer's), L and the light's cone/distance scale per fragment for a spot. The ribbon's pixel coverage becomes a
-// sample mask with MSAA (dithered per strand and pixel, see coverageMask), alpha without. Transmittance T = exp(-k alpha) from the opacity maps with the
-// per-vertex slice weights (opacity_lookup.glsl), times the head's occlusion (head_shadow.glsl); the
-// ambient term is not shadowed. Plus the sunlight the skin reflects (head_bounce.glsl) when the frame asks.
+// rasterizer's): every light of the frame with its shadows looked up at the fragment (frame_shadows.glsl),
+// the ambient and the skin's bounce. The ribbon's pixel coverage becomes a sample mask with MSAA (dithered
+// per strand and pixel, see coverageMask), alpha without.
 #include "shared/render.h"
 #include "shared/marschner.h"
 #include "marschner.glsl"
-#include "opacity_lookup.glsl"
 #include "shared/strands.h"
 
 layout(std140, binding = RENDER_BINDING_FRAME) uniform Frame { RenderFrame frame; };
@@ -16,23 +14,19 @@ layout(binding = RENDER_BINDING_LUT_M) uniform sampler2D lutM;
 layout(binding = RENDER_BINDING_LUT_N0) uniform sampler2D lutN0;
 layout(binding = RENDER_BINDING_LUT_N1) uniform sampler2D lutN1;
 layout(binding = RENDER_BINDING_OPACITY) uniform sampler2DArray opacityMaps;
-layout(binding = RENDER_BINDING_HEAD_SHADOW) uniform sampler2DShadow headShadowMap;
+layout(binding = RENDER_BINDING_HEAD_SHADOW) uniform sampler2DArrayShadow headShadowMap;
 layout(binding = RENDER_BINDING_BOUNCE_FLUX) uniform sampler2D bounceFlux;
 layout(binding = RENDER_BINDING_BOUNCE_POSITION) uniform sampler2D bouncePosition;
-layout(std430, binding = RENDER_BINDING_LIGHT) readonly buffer Light { LightSpace light; };
+layout(std430, binding = RENDER_BINDING_LIGHT) readonly buffer Light { LightSpace lightSpaces[]; };
 
 layout(location = 0) in vec3 inWorld;
 layout(location = 1) in vec3 inTangent;
 layout(location = 2) in float inCoverage;
 layout(location = 3) in float inColorScale;
-layout(location = 4) in vec3 inLightUvw;
-layout(location = 5) in vec4 inSliceWeights[4];
-layout(location = 9) flat in uint inStrand;
-layout(location = 10) in float inSlice;
+layout(location = 4) flat in uint inStrand;
 layout(push_constant) uniform Push { StrandDrawPush push; };
 layout(location = 0) out vec4 outColor;
 #include "hair_shading.glsl"
-#include "head_bounce.glsl"
 
 // Coverage c of n samples as a mask of round(c n + dither) bits, rotated by a hash of the strand and
 // the pixel. Plain alpha-to-coverage gives every strand with the same alpha the same mask, so stacked
@@ -48,11 +42,7 @@ uint coverageMask(float coverage, uint samples) {
 }
 
 void main() {
-  float alpha = frame.options.w != 0u
-                    ? opacityAlphaDeep(opacityMaps, inLightUvw, inSlice, frame.strand.w)
-                    : opacityAlpha(opacityMaps, inLightUvw, inSliceWeights[0], inSliceWeights[1], inSliceWeights[2],
-                                   inSliceWeights[3]);
-  vec3 radiance = hairRadiance(inWorld, inTangent, inColorScale, alpha, headBounceAt(inWorld, alpha));
+  vec3 radiance = hairRadiance(inWorld, inTangent, inColorScale);
   if (push.samples > 1u) {
     uint mask = coverageMask(inCoverage, push.samples);
     if (mask == 0u) discard;

@@ -3,27 +3,21 @@
 // spans vertices k and k+1; the ribbon thins from the root to the tip. A ribbon narrower than a
 // pixel is widened to one pixel and its coverage is passed on (the fragment shader turns it into a
 // dithered sample mask with MSAA, alpha without), so thin
-// hair stays smooth instead of breaking into dashes. Per vertex also the opacity-map lookup weights
-// (opacity_lookup.glsl), interpolated to the fragment shader.
+// hair stays smooth instead of breaking into dashes. The fragment shader looks the shadows up per light.
 #include "shared/render.h"
 #include "shared/strands.h"
-#include "opacity_lookup.glsl"
 
 layout(std140, binding = RENDER_BINDING_FRAME) uniform Frame { RenderFrame frame; };
 layout(std430, binding = RENDER_BINDING_POSITIONS) readonly buffer Positions { vec4 positions[]; };
 layout(std430, binding = RENDER_BINDING_TANGENTS) readonly buffer Tangents { vec4 tangents[]; };
 layout(std430, binding = RENDER_BINDING_ATTRIBUTES) readonly buffer Attributes { StrandAttributes attributes[]; };
-layout(std430, binding = RENDER_BINDING_LIGHT) readonly buffer Light { LightSpace light; };
 layout(push_constant) uniform Push { StrandDrawPush push; };
 
 layout(location = 0) out vec3 outWorld;
 layout(location = 1) out vec3 outTangent;
 layout(location = 2) out float outCoverage;
 layout(location = 3) out float outColorScale;
-layout(location = 4) out vec3 outLightUvw;
-layout(location = 5) out vec4 outSliceWeights[4];
-layout(location = 9) flat out uint outStrand;  // global strand index: keys the coverage dither
-layout(location = 10) out float outSlice;      // OpacityVertex::s (deep opacity maps)
+layout(location = 4) flat out uint outStrand;  // global strand index: keys the coverage dither
 
 void main() {
   uint q = frame.options.x;
@@ -57,9 +51,5 @@ void main() {
   outCoverage = coverage;
   outColorScale = attr.colorScale;
   outStrand = push.firstStrand + strand;
-  OpacityVertex o = opacityVertex(light, p, frame.strand.w, frame.options.y != 0u);
-  outLightUvw = o.uvw;
-  outSlice = o.s;
-  outSliceWeights = vec4[4](o.w0, o.w1, o.w2, o.w3);
   gl_Position = frame.proj * frame.view * vec4(p, 1.0);
 }

@@ -55,6 +55,7 @@ hp::RendererSettings renderer(const RendererSettings& s) {
   r.opacity = s.opacity;
   r.framesInFlight = s.framesInFlight;
   r.maxViewsPerFrame = s.maxViewsPerFrame;
+  r.shadowedLights = s.shadowedLights;
   r.raster = raster(s.raster);
   r.rasterSettings.tileBudget = s.tileBudget;
   r.pipelineCache = s.pipelineCache;
@@ -136,13 +137,16 @@ hp::InstanceSettings instance(const InstanceSettings& s) {
 
 hp::LightSpec light(const Light& l) {
   hp::LightSpec h;
-  h.type = l.type == Light::Type::Spot ? hp::LightSpec::Type::Spot : hp::LightSpec::Type::Directional;
+  h.type = l.type == Light::Type::Spot    ? hp::LightSpec::Type::Spot
+           : l.type == Light::Type::Point ? hp::LightSpec::Type::Point
+                                          : hp::LightSpec::Type::Directional;
   h.direction = vec(l.direction);
   h.color = vec(l.color);
   h.intensity = l.intensity;
   h.position = vec(l.position);
   h.coneDeg = l.coneDeg;
   h.range = l.range;
+  h.shadows = l.shadows;
   return h;
 }
 

@@ -126,10 +126,17 @@ Status Renderer::recordUpdate(VkCommandBuffer cmd, std::uint64_t frame, std::spa
   return guardedStatus("hairpipe::Renderer::recordUpdate",
                        [&] { implementation(impl_).recordUpdate(cmd, frame, implementations(instances)); });
 }
+Status Renderer::recordShadows(VkCommandBuffer cmd, std::uint64_t frame, std::span<const Light> lights,
+                               std::span<Instance* const> instances) noexcept {
+  return guardedStatus("hairpipe::Renderer::recordShadows", [&] {
+    std::vector<hp::LightSpec> converted;
+    for (const Light& l : lights) converted.push_back(convert::light(l));
+    implementation(impl_).recordShadows(cmd, frame, converted, implementations(instances));
+  });
+}
 Status Renderer::recordShadows(VkCommandBuffer cmd, std::uint64_t frame, const Light& light,
                                std::span<Instance* const> instances) noexcept {
-  return guardedStatus("hairpipe::Renderer::recordShadows",
-                       [&] { implementation(impl_).recordShadows(cmd, frame, convert::light(light), implementations(instances)); });
+  return recordShadows(cmd, frame, std::span(&light, 1), instances);
 }
 Status Renderer::recordDraw(VkCommandBuffer cmd, std::uint64_t frame, const View& view,
                             std::span<Instance* const> instances) noexcept {

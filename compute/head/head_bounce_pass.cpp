@@ -15,7 +15,8 @@ const vk::Binding kBindings[] = {
     {gpu::RENDER_BINDING_TANGENTS, kStorage, kVertex},
     {gpu::RENDER_BINDING_ATTRIBUTES, kStorage, kVertex},
     {gpu::RENDER_BINDING_OPACITY, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kFragment},
-    {gpu::RENDER_BINDING_LIGHT, kStorage, kVertex},
+    {gpu::RENDER_BINDING_HEAD_SHADOW, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kFragment},
+    {gpu::RENDER_BINDING_LIGHT, kStorage, kFragment},
 };
 }  // namespace
 
@@ -24,6 +25,7 @@ HeadBouncePass::HeadBouncePass(const vk::Context& ctx, const HeadPass& head, VkB
     : head_(&head), set_(ctx, kBindings, "head bounce") {
   set_.writeStorageBuffer(gpu::RENDER_BINDING_FRAME, frameBlock);
   set_.writeSampledImage(gpu::RENDER_BINDING_OPACITY, shadows.opacityView, shadows.sampler);
+  set_.writeSampledImage(gpu::RENDER_BINDING_HEAD_SHADOW, shadows.headShadowView, shadows.headShadowSampler);
   set_.writeStorageBuffer(gpu::RENDER_BINDING_LIGHT, shadows.lightSpace);
   if (!head.empty()) {
     set_.writeStorageBuffer(gpu::RENDER_BINDING_POSITIONS, head.positions().handle());

@@ -28,7 +28,34 @@ void LookSettings::validate() const {
     if (!(skinColor[i] >= 0.0f && skinColor[i] <= 1.0f)) throw Error("skin colour components must be in [0, 1]");
 }
 
-gpu::RenderFrame makeRenderFrame(const CameraMatrices& camera, VkExtent2D extent, const LightSpec& light,
+namespace {
+gpu::FrameLight frameLight(const LightSpec& light, int slot) {
+  gpu::FrameLight f{};
+  f.direction = glm::vec4(glm::normalize(light.direction), float(slot));
+  f.radiance = glm::vec4(light.color * light.intensity, 0.0f);
+  if (light.type == LightSpec::Type::Directional) return f;
+  const bool spot = light.type == LightSpec::Type::Spot;
+  f.position = glm::vec4(light.position, spot ? gpu::RENDER_LIGHT_SPOT : gpu::RENDER_LIGHT_POINT);
+  const float cone = glm::radians(light.coneDeg);
+  f.spot = spot ? glm::vec4(std::cos(cone), std::cos(kSpotInnerFraction * cone), light.range, 0.0f)
+                : glm::vec4(0.0f, 0.0f, light.range, 0.0f);
+  return f;
+}
+
+void setLights(gpu::RenderFrame& f, const FrameLights& lights, bool skinBounce) {
+  f.lightCount = glm::uvec4(std::uint32_t(lights.lights.size()), 0u, 0u, 0u);
+  for (std::size_t i = 0; i < lights.lights.size(); ++i) f.lights[i] = frameLight(lights.lights[i], lights.slots[i]);
+  for (std::uint32_t s = 0; s < gpu::OPACITY_MAX_LIGHTS; ++s)
+    f.shadows[s] = {lights.headViews[s].viewProj, lights.headViews[s].params};
+  const int bounceLight = lights.lightOfSlot(0);
+  const HeadShadowView& view = lights.headViews[0];
+  const bool on = skinBounce && bounceLight >= 0 && view.params.x != 0.0f;
+  f.lightCount.y = on ? std::uint32_t(bounceLight) : gpu::RENDER_MAX_LIGHTS;  // no light has that index
+  f.headBounce = glm::vec4(on ? 1.0f : 0.0f, view.extentWorld / float(gpu::RENDER_BOUNCE_RESOLUTION), 0.0f, 0.0f);
+}
+}  // namespace
+
+gpu::RenderFrame makeRenderFrame(const CameraMatrices& camera, VkExtent2D extent, const FrameLights& lights,
                                  const HairMaterial& material, const LookSettings& look,
                                  std::uint32_t verticesPerStrand, const OpacitySettings& opacity) {
   gpu::RenderFrame f{};
@@ -36,13 +63,7 @@ gpu::RenderFrame makeRenderFrame(const CameraMatrices& camera, VkExtent2D extent
   f.proj = camera.proj;
   const float pixelAtUnitDepth = 2.0f * std::tan(0.5f * camera.fovY) / float(extent.height);
   f.cameraPosition = glm::vec4(camera.position, pixelAtUnitDepth);
-  f.lightDirection = glm::vec4(glm::normalize(light.direction), 0.0f);
-  f.lightRadiance = glm::vec4(light.color * light.intensity, 0.0f);
-  if (light.type == LightSpec::Type::Spot) {
-    const float cone = glm::radians(light.coneDeg);
-    f.lightPosition = glm::vec4(light.position, 1.0f);
-    f.lightSpot = glm::vec4(std::cos(cone), std::cos(kSpotInnerFraction * cone), light.range, 0.0f);
-  }
+  setLights(f, lights, look.skinBounce);
   // The colour of one straight pass through the fibre (absorptionFromColor's inverse) as ambient albedo.
   const glm::dvec3 albedo = glm::exp(-2.0 * material.absorption);
   f.hairColor = glm::vec4(glm::vec3(albedo), look.ambient);

@@ -1,8 +1,10 @@
 #pragma once
-// Contract: fills the per-frame block the draw passes read (gpu::RenderFrame) from a camera, the light,
-// the hair material, the look settings and the opacity shadow settings (on/off, k, bias). Pure host code.
+// Contract: fills the per-frame block the draw passes read (gpu::RenderFrame) from a camera, the frame's
+// lights with their shadow slots and head map framings, the hair material, the look settings and the
+// opacity shadow settings (on/off, k, bias). Pure host code.
 #include "engine/core/hair/scene.h"
 #include "compute/raster/camera.h"
+#include "compute/shadows/frame_lights.h"
 #include "compute/shadows/opacity_settings.h"
 #include "hairpipe/settings.h"
 #include "hairpipe_volk.h"
@@ -35,7 +37,9 @@ struct LookSettings {
   void validate() const;             // throws hp::Error naming the field
 };
 
-gpu::RenderFrame makeRenderFrame(const CameraMatrices& camera, VkExtent2D extent, const LightSpec& light,
+// The skin's bounce (headBounce) is on where the look asks for it and slot 0 has a head map (the bounce map
+// is drawn from slot 0's light, framed like its head map).
+gpu::RenderFrame makeRenderFrame(const CameraMatrices& camera, VkExtent2D extent, const FrameLights& lights,
                                  const HairMaterial& material, const LookSettings& look,
                                  std::uint32_t verticesPerStrand, const OpacitySettings& opacity);
 }  // namespace hp::render

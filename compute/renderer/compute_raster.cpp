@@ -61,17 +61,15 @@ bool ComputeRaster::holds(const HairInstance* instance) const {
 }
 
 std::vector<std::uint32_t> ComputeRaster::recordFrameBlocks(VkCommandBuffer cmd, const View& view,
-                                                            const LightSpec& light,
-                                                            const render::HeadShadowView& headShadow) const {
+                                                            const render::FrameLights& lights) const {
   std::vector<std::uint32_t> strandLimits;
   for (std::size_t i = 0; i < instances_.size(); ++i) {
     const HairInstance& instance = *instances_[i];
     const float fraction = instance.lodFraction(view.camera.position);
     strandLimits.push_back(instance.lodStrands(fraction));
-    gpu::RenderFrame frame = render::makeRenderFrame(view.camera, view.extent, light, instance.settings().material,
+    gpu::RenderFrame frame = render::makeRenderFrame(view.camera, view.extent, lights, instance.settings().material,
                                                      lodLook(instance.settings().look, fraction),
                                                      instance.strands().layout().verticesPerStrand, shadows_.settings());
-    render::setHeadMaps(frame, headShadow, instance.settings().look.skinBounce);
     const VkBuffer block = frames_[i].handle();
     vk::bufferBarrier(ctx_, cmd, block, vk::BufferUse::ComputeRead, vk::BufferUse::TransferDst);
     ctx_.fn().vkCmdUpdateBuffer(cmd, block, 0, sizeof(frame), &frame);
@@ -80,27 +78,30 @@ std::vector<std::uint32_t> ComputeRaster::recordFrameBlocks(VkCommandBuffer cmd,
   return strandLimits;
 }
 
-void ComputeRaster::record(VkCommandBuffer cmd, const View& view, const LightSpec& light,
-                           const render::HeadShadowView& headShadow, vk::GpuProfiler* profiler) const {
-  const std::vector<std::uint32_t> strandLimits = recordFrameBlocks(cmd, view, light, headShadow);
+void ComputeRaster::record(VkCommandBuffer cmd, const View& view, const render::FrameLights& lights,
+                           vk::GpuProfiler* profiler) const {
+  const std::vector<std::uint32_t> strandLimits = recordFrameBlocks(cmd, view, lights);
   // The graphics readers' states (recordShadows) extended to compute for the pass, then back, so the
   // next frame's barriers (which wait on vertex/fragment readers) still cover these reads.
   const VkBuffer lightSpace = shadows_.lightSpace().handle();
   const VkImage maps = shadows_.image().handle();
   const VkImage head = shadows_.headImage().handle();
+  const std::uint32_t mapLayers = shadows_.image().desc().layers, headLayers = shadows_.headImage().desc().layers;
   vk::memoryBarrier(ctx_, cmd, vk::BufferUse::ComputeWrite, vk::BufferUse::ComputeRead);  // strand buffers
-  vk::imageBarrier(ctx_, cmd, head, VK_IMAGE_ASPECT_DEPTH_BIT, vk::ImageUse::FragmentSampled, vk::ImageUse::ComputeSampled);
+  vk::imageBarrier(ctx_, cmd, head, VK_IMAGE_ASPECT_DEPTH_BIT, vk::ImageUse::FragmentSampled, vk::ImageUse::ComputeSampled,
+                   headLayers);
   vk::bufferBarrier(ctx_, cmd, lightSpace, vk::BufferUse::GraphicsRead, vk::BufferUse::ComputeRead);
   vk::imageBarrier(ctx_, cmd, maps, VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::FragmentSampled,
-                   vk::ImageUse::ComputeSampled, gpu::OPACITY_LAYERS);
+                   vk::ImageUse::ComputeSampled, mapLayers);
   const render::HeadBounceMap& bounce = shadows_.bounceMap();
   bounce.transition(cmd, vk::ImageUse::FragmentSampled, vk::ImageUse::ComputeSampled);
   pass_.record(cmd, profiler, strandLimits);
   bounce.transition(cmd, vk::ImageUse::ComputeSampled, vk::ImageUse::FragmentSampled);
   vk::bufferBarrier(ctx_, cmd, lightSpace, vk::BufferUse::ComputeRead, vk::BufferUse::GraphicsRead);
   vk::imageBarrier(ctx_, cmd, maps, VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::ComputeSampled,
-                   vk::ImageUse::FragmentSampled, gpu::OPACITY_LAYERS);
-  vk::imageBarrier(ctx_, cmd, head, VK_IMAGE_ASPECT_DEPTH_BIT, vk::ImageUse::ComputeSampled, vk::ImageUse::FragmentSampled);
+                   vk::ImageUse::FragmentSampled, mapLayers);
+  vk::imageBarrier(ctx_, cmd, head, VK_IMAGE_ASPECT_DEPTH_BIT, vk::ImageUse::ComputeSampled, vk::ImageUse::FragmentSampled,
+                   headLayers);
 }
 
 void ComputeRaster::recordComposite(VkCommandBuffer cmd, VkExtent2D extent, vk::GpuProfiler* profiler) const {

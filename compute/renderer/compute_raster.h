@@ -31,8 +31,7 @@ class ComputeRaster {
                 VkExtent2D extent, VkImageView depth, std::span<HairInstance* const> instances,
                 VkPipelineCache cache = VK_NULL_HANDLE);
 
-  void record(VkCommandBuffer cmd, const View& view, const LightSpec& light, const render::HeadShadowView& headShadow,
-              vk::GpuProfiler* profiler) const;
+  void record(VkCommandBuffer cmd, const View& view, const render::FrameLights& lights, vk::GpuProfiler* profiler) const;
   void recordComposite(VkCommandBuffer cmd, VkExtent2D extent, vk::GpuProfiler* profiler) const;
 
   bool holds(const HairInstance* instance) const;
@@ -48,8 +47,8 @@ class ComputeRaster {
   std::vector<compute::RasterSource> sources() const;
   // Each instance's frame block for the view (strands widened by its level of detail); returns the strands
   // each draws.
-  std::vector<std::uint32_t> recordFrameBlocks(VkCommandBuffer cmd, const View& view, const LightSpec& light,
-                                               const render::HeadShadowView& headShadow) const;
+  std::vector<std::uint32_t> recordFrameBlocks(VkCommandBuffer cmd, const View& view,
+                                               const render::FrameLights& lights) const;
 
   const vk::Context& ctx_;
   const render::ShadowMaps& shadows_;

@@ -30,36 +30,41 @@ compute::ShadowLight shadowLightOf(const LightSpec& light) {
 }
 
 namespace {
+// A transition of one shadow slot's layers of the opacity maps.
+void slotBarrier(const vk::Context& ctx, VkCommandBuffer cmd, const render::ShadowMaps& maps, std::uint32_t slot,
+                 vk::ImageUse from, vk::ImageUse to) {
+  vk::imageBarrier(ctx, cmd, maps.image().handle(), VK_IMAGE_ASPECT_COLOR_BIT, from, to, gpu::OPACITY_LAYERS,
+                   slot * gpu::OPACITY_LAYERS);
+}
+
 void recordGraphicsOpacity(const vk::Context& ctx, VkCommandBuffer cmd, const render::ShadowMaps& maps,
-                           std::span<const ShadowCaster> casters) {
-  const VkImage image = maps.image().handle();
-  vk::imageBarrier(ctx, cmd, image, VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::FragmentSampled,
-                   vk::ImageUse::ColorAttachment, gpu::OPACITY_LAYERS);
-  maps.beginRendering(cmd);
-  for (const ShadowCaster& c : casters) c.opacity->recordDraws(cmd, c.headToWorld, c.strandWidth, c.strandLimit);
+                           std::span<const ShadowCaster> casters, std::uint32_t slot) {
+  slotBarrier(ctx, cmd, maps, slot, vk::ImageUse::FragmentSampled, vk::ImageUse::ColorAttachment);
+  maps.beginRendering(cmd, slot);
+  for (const ShadowCaster& c : casters)
+    c.opacity->recordDraws(cmd, slot, c.headToWorld, c.strandWidth, c.strandLimit);
   maps.endRendering(cmd);
-  vk::imageBarrier(ctx, cmd, image, VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::ColorAttachment,
-                   vk::ImageUse::FragmentSampled, gpu::OPACITY_LAYERS);
+  slotBarrier(ctx, cmd, maps, slot, vk::ImageUse::ColorAttachment, vk::ImageUse::FragmentSampled);
 }
 
 // Clear the bins, every caster's splats (atomics: ordered like any two writers), the resolve into the
-// maps, then the heads that go into the slices, drawn over the resolved maps.
+// maps, then the heads that go into the slices, drawn over the resolved maps. The bins serve one slot
+// after another.
 void recordComputeOpacity(const vk::Context& ctx, VkCommandBuffer cmd, const render::ShadowMaps& maps,
-                          std::span<const ShadowCaster> casters) {
+                          std::span<const ShadowCaster> casters, std::uint32_t slot) {
   const compute::OpacityResolvePass& resolve = *maps.resolvePass();
   const VkBuffer bins = resolve.bins().handle(), first = resolve.first().handle();
-  const VkImage image = maps.image().handle();
   // What recordClear fills: the bins, and the first-hair buffer for deep maps only.
   const VkBuffer fills[] = {bins, first};
   const std::span<const VkBuffer> cleared(fills, resolve.deep() ? 2 : 1);
-  for (VkBuffer b : cleared)  // last frame's resolve and deep splats read them
+  for (VkBuffer b : cleared)  // the last resolve and deep splats (last frame's, or another slot's) read them
     vk::bufferBarrier(ctx, cmd, b, vk::BufferUse::ComputeRead, vk::BufferUse::TransferDst);
   resolve.recordClear(cmd);
   for (VkBuffer b : cleared) vk::bufferBarrier(ctx, cmd, b, vk::BufferUse::TransferDst, vk::BufferUse::ComputeWrite);
   auto splatAll = [&](std::uint32_t mode, VkBuffer target) {
     for (std::size_t i = 0; i < casters.size(); ++i) {
       if (i > 0) vk::bufferBarrier(ctx, cmd, target, vk::BufferUse::ComputeWrite, vk::BufferUse::ComputeWrite);
-      casters[i].opacity->recordSplats(cmd, casters[i].strandWidth, mode, casters[i].strandLimit);
+      casters[i].opacity->recordSplats(cmd, slot, casters[i].strandWidth, mode, casters[i].strandLimit);
     }
   };
   if (resolve.deep()) {  // every instance's first hair per texel before any deep slice is measured from it
@@ -68,24 +73,20 @@ void recordComputeOpacity(const vk::Context& ctx, VkCommandBuffer cmd, const ren
   }
   splatAll(resolve.deep() ? gpu::OPACITY_SPLAT_MODE_DEEP : gpu::OPACITY_SPLAT_MODE_PLAIN, bins);
   vk::bufferBarrier(ctx, cmd, bins, vk::BufferUse::ComputeWrite, vk::BufferUse::ComputeRead);
-  vk::imageBarrier(ctx, cmd, image, VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::FragmentSampledDiscard,
-                   vk::ImageUse::ComputeStorageWrite, gpu::OPACITY_LAYERS);
-  resolve.recordResolve(cmd);
+  slotBarrier(ctx, cmd, maps, slot, vk::ImageUse::FragmentSampledDiscard, vk::ImageUse::ComputeStorageWrite);
+  resolve.recordResolve(cmd, slot);
   // Heads in the slices (headOpacity > 0) are drawn at global slice coordinates: not into deep maps.
   const bool heads = !resolve.deep() && std::any_of(casters.begin(), casters.end(),
                                                     [](const ShadowCaster& c) { return c.opacity->drawsHead(); });
   if (!heads) {
-    vk::imageBarrier(ctx, cmd, image, VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::ComputeStorageWrite,
-                     vk::ImageUse::FragmentSampled, gpu::OPACITY_LAYERS);
+    slotBarrier(ctx, cmd, maps, slot, vk::ImageUse::ComputeStorageWrite, vk::ImageUse::FragmentSampled);
     return;
   }
-  vk::imageBarrier(ctx, cmd, image, VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::ComputeStorageWrite,
-                   vk::ImageUse::ColorAttachment, gpu::OPACITY_LAYERS);
-  maps.beginRendering(cmd, /*keep=*/true);
-  for (const ShadowCaster& c : casters) c.opacity->recordHeadDraw(cmd, c.headToWorld);
+  slotBarrier(ctx, cmd, maps, slot, vk::ImageUse::ComputeStorageWrite, vk::ImageUse::ColorAttachment);
+  maps.beginRendering(cmd, slot, /*keep=*/true);
+  for (const ShadowCaster& c : casters) c.opacity->recordHeadDraw(cmd, slot, c.headToWorld);
   maps.endRendering(cmd);
-  vk::imageBarrier(ctx, cmd, image, VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::ColorAttachment,
-                   vk::ImageUse::FragmentSampled, gpu::OPACITY_LAYERS);
+  slotBarrier(ctx, cmd, maps, slot, vk::ImageUse::ColorAttachment, vk::ImageUse::FragmentSampled);
 }
 }  // namespace
 
@@ -94,35 +95,44 @@ void recordShadowPasses(const vk::Context& ctx, VkCommandBuffer cmd, const rende
                         const compute::ShadowLight& shadowLight, const compute::BoundsFraming& framing,
                         vk::GpuProfiler* profiler, const render::HeadShadowView& headView) {
   if (casters.empty()) return;
+  // The slot's LightSpace: other slots' readers and writers are not this slot's concern.
   const VkBuffer light = maps.lightSpace().handle();
+  const VkDeviceSize offset = shadowLight.slot * sizeof(gpu::LightSpace), size = sizeof(gpu::LightSpace);
+  auto lightBarrier = [&](vk::BufferUse from, vk::BufferUse to) {
+    vk::bufferBarrier(ctx, cmd, light, from, to, offset, size);
+  };
   if (profiler) profiler->begin(cmd, "bounds");
-  vk::memoryBarrier(ctx, cmd, vk::BufferUse::ComputeWrite, vk::BufferUse::ComputeRead);        // strand positions
-  vk::bufferBarrier(ctx, cmd, light, vk::BufferUse::GraphicsRead, vk::BufferUse::ComputeWrite);  // last frame's readers
+  vk::memoryBarrier(ctx, cmd, vk::BufferUse::ComputeWrite, vk::BufferUse::ComputeRead);  // strand positions
+  lightBarrier(vk::BufferUse::GraphicsRead, vk::BufferUse::ComputeWrite);  // last frame's readers: draws,
+  lightBarrier(vk::BufferUse::ComputeRead, vk::BufferUse::ComputeWrite);   // splats and the compute raster
   for (const ShadowCaster& c : casters) {
     c.bounds->recordReduce(cmd, shadowLight);
     // Atomics of the next caster after these: order them like any two writers.
-    vk::bufferBarrier(ctx, cmd, light, vk::BufferUse::ComputeWrite, vk::BufferUse::ComputeWrite);
+    lightBarrier(vk::BufferUse::ComputeWrite, vk::BufferUse::ComputeWrite);
   }
   casters.front().bounds->recordFinalize(cmd, shadowLight, framing);
-  vk::bufferBarrier(ctx, cmd, light, vk::BufferUse::ComputeWrite, vk::BufferUse::GraphicsRead);
-  if (maps.resolvePass()) vk::bufferBarrier(ctx, cmd, light, vk::BufferUse::ComputeWrite, vk::BufferUse::ComputeRead);
+  lightBarrier(vk::BufferUse::ComputeWrite, vk::BufferUse::GraphicsRead);
+  lightBarrier(vk::BufferUse::ComputeWrite, vk::BufferUse::ComputeRead);  // splats, the compute raster
   if (profiler) profiler->end(cmd);
 
   if (profiler) profiler->begin(cmd, "opacity");
   if (maps.resolvePass())
-    recordComputeOpacity(ctx, cmd, maps, casters);
+    recordComputeOpacity(ctx, cmd, maps, casters, shadowLight.slot);
   else
-    recordGraphicsOpacity(ctx, cmd, maps, casters);
+    recordGraphicsOpacity(ctx, cmd, maps, casters, shadowLight.slot);
   if (profiler) profiler->end(cmd);
 
   if (headView.params.x == 0.0f) return;
   const VkImage head = maps.headImage().handle();
   if (profiler) profiler->begin(cmd, "head shadow");
-  vk::imageBarrier(ctx, cmd, head, VK_IMAGE_ASPECT_DEPTH_BIT, vk::ImageUse::FragmentSampled, vk::ImageUse::DepthAttachment);
-  maps.beginHeadRendering(cmd);
+  const std::uint32_t slot = shadowLight.slot;
+  vk::imageBarrier(ctx, cmd, head, VK_IMAGE_ASPECT_DEPTH_BIT, vk::ImageUse::FragmentSampled, vk::ImageUse::DepthAttachment,
+                   1, slot);
+  maps.beginHeadRendering(cmd, slot);
   for (const ShadowCaster& c : casters) c.opacity->recordHeadDepth(cmd, headView.viewProj * c.headToWorld);
   maps.endRendering(cmd);
-  vk::imageBarrier(ctx, cmd, head, VK_IMAGE_ASPECT_DEPTH_BIT, vk::ImageUse::DepthAttachment, vk::ImageUse::FragmentSampled);
+  vk::imageBarrier(ctx, cmd, head, VK_IMAGE_ASPECT_DEPTH_BIT, vk::ImageUse::DepthAttachment, vk::ImageUse::FragmentSampled,
+                   1, slot);
   if (profiler) profiler->end(cmd);
 }
 }  // namespace hp

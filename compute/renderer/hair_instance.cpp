@@ -49,7 +49,7 @@ HairInstance::HairInstance(Renderer& renderer, const HairAsset& asset, const Ins
   // Valid blocks from the start, so a draw before any prepared view reads sane values.
   for (std::uint32_t slot = 0; slot < rs.framesInFlight * rs.maxViewsPerFrame; ++slot)
     *frameSlot(slot / rs.maxViewsPerFrame, slot % rs.maxViewsPerFrame) =
-        render::makeRenderFrame(CameraMatrices{}, {1, 1}, LightSpec{}, settings_.material, settings_.look,
+        render::makeRenderFrame(CameraMatrices{}, {1, 1}, render::FrameLights{}, settings_.material, settings_.look,
                                 strands().layout().verticesPerStrand, renderer.shadows().settings());
   head_ = std::make_shared<render::HeadPass>(ctx, headMesh_, frames_, renderer.shadows().inputs(),
                                              rs.formats, &renderer.pipelines());

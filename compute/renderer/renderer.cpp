@@ -21,9 +21,8 @@ Renderer::Renderer(const vk::Context& ctx, const RendererSettings& settings)
       settings_(validated(settings)),
       raster_(resolveRasterMode(settings.raster, ctx.properties().deviceType)),
       pipelines_(ctx, settings.pipelineCache),
-      shadows_(std::make_unique<render::ShadowMaps>(ctx, settings.opacity, &pipelines_)),
-      frameLights_(settings.framesInFlight),
-      frameHeadShadows_(settings.framesInFlight) {}
+      shadows_(std::make_unique<render::ShadowMaps>(ctx, settings.opacity, &pipelines_, settings.shadowedLights)),
+      frameLights_(settings.framesInFlight) {}
 
 // Retired instances go while every member is alive: their destructors tell the Renderer (forgetInstance).
 // The raster target first: it refers to instances, and nothing may draw from it any more.
@@ -115,8 +114,7 @@ void Renderer::recordRaster(VkCommandBuffer cmd, std::uint64_t frame, const View
   view.validate(settings_.maxViewsPerFrame);
   beginFrame(frame, t.instances());
   for (HairInstance* i : t.instances()) i->noteViewFraction(frame, i->lodFraction(view.camera.position));
-  t.record(cmd, view, frameLights_[frame % settings_.framesInFlight], frameHeadShadows_[frame % settings_.framesInFlight],
-           profiler);
+  t.record(cmd, view, frameLights_[frame % settings_.framesInFlight], profiler);
 }
 
 void Renderer::recordComposite(VkCommandBuffer cmd, VkExtent2D extent, vk::GpuProfiler* profiler) const {
@@ -179,20 +177,28 @@ void Renderer::recordUpdate(VkCommandBuffer cmd, std::uint64_t frame, std::span<
   recordUpdatePasses(ctx_, cmd, work, profiler);
 }
 
-void Renderer::recordShadows(VkCommandBuffer cmd, std::uint64_t frame, const LightSpec& light,
+void Renderer::recordShadows(VkCommandBuffer cmd, std::uint64_t frame, std::span<const LightSpec> lights,
                              std::span<HairInstance* const> instances, vk::GpuProfiler* profiler) {
-  light.validate();
+  render::FrameLights frameLights = render::assignShadowSlots(lights, shadows_->slots());  // validates them
   beginFrame(frame, instances);
   executeDeferred(cmd);
-  frameLights_[frame % settings_.framesInFlight] = light;
-  render::HeadShadowView& headView = frameHeadShadows_[frame % settings_.framesInFlight];
-  headView = {};
+  render::FrameLights& current = frameLights_[frame % settings_.framesInFlight];
+  current = std::move(frameLights);
   makeStrandsDrawable(ctx_, cmd);
-  const render::OpacitySettings& opacity = shadows_->settings();
-  if (!opacity.enabled) return;
+  if (!shadows_->settings().enabled) return;
   render::HeadSphere heads;
   for (HairInstance* i : instances) heads = render::enclose(heads, i->geometry_->opacity.headSphere(i->headToWorld()));
-  headView = render::headShadowView(light, heads, opacity.headShadowResolution);
+  for (std::uint32_t slot = 0; slot < current.shadowed(); ++slot)
+    recordLightShadows(cmd, current, slot, instances, heads, profiler);
+  recordHeadBounce(cmd, current, instances, profiler);
+}
+
+void Renderer::recordLightShadows(VkCommandBuffer cmd, render::FrameLights& lights, std::uint32_t slot,
+                                  std::span<HairInstance* const> instances, const render::HeadSphere& heads,
+                                  vk::GpuProfiler* profiler) {
+  const render::OpacitySettings& opacity = shadows_->settings();
+  const LightSpec framed = render::shadowFrustum(lights.lights[lights.lightOfSlot(slot)], heads);
+  lights.headViews[slot] = render::headShadowView(framed, heads, opacity.headShadowResolution);
   std::vector<ShadowCaster> casters;
   float widest = 0.0f;
   for (HairInstance* i : instances) {
@@ -206,22 +212,23 @@ void Renderer::recordShadows(VkCommandBuffer cmd, std::uint64_t frame, const Lig
   compute::BoundsFraming framing;
   framing.resolution = opacity.resolution;
   framing.marginWorld = 0.5f * widest * gpu::WIDTH_SCALE_MAX;
-  recordShadowPasses(ctx_, cmd, *shadows_, casters, shadowLightOf(light), framing, profiler, headView);
-  recordHeadBounce(cmd, light, instances, headView, profiler);
+  compute::ShadowLight shadowLight = shadowLightOf(framed);
+  shadowLight.slot = slot;
+  recordShadowPasses(ctx_, cmd, *shadows_, casters, shadowLight, framing, profiler, lights.headViews[slot]);
 }
 
-void Renderer::recordHeadBounce(VkCommandBuffer cmd, const LightSpec& light, std::span<HairInstance* const> instances,
-                                const render::HeadShadowView& headView, vk::GpuProfiler* profiler) {
+void Renderer::recordHeadBounce(VkCommandBuffer cmd, const render::FrameLights& lights,
+                                std::span<HairInstance* const> instances, vk::GpuProfiler* profiler) {
   const bool wanted = std::any_of(instances.begin(), instances.end(),
                                   [](const HairInstance* i) { return i->settings_.look.skinBounce; });
-  if (!wanted || headView.params.x == 0.0f) return;  // no head (or shadows off): nothing to bounce from
+  // No shadowed light, no head (or shadows off): nothing to bounce from.
+  if (!wanted || lights.shadowed() == 0 || lights.headViews[0].params.x == 0.0f) return;
   if (profiler) profiler->begin(cmd, "head bounce");
-  // The blocks the bounce draws read: the light, colours and opacity settings, the map's framing.
+  // The blocks the bounce draws read: the lights, colours and opacity settings, the map's framing.
   for (HairInstance* i : instances) {
-    gpu::RenderFrame block = render::makeRenderFrame(CameraMatrices{}, {1, 1}, light, i->settings_.material,
-                                                     i->settings_.look, i->strands().layout().verticesPerStrand,
-                                                     shadows_->settings());
-    render::setHeadMaps(block, headView, i->settings_.look.skinBounce);
+    const gpu::RenderFrame block = render::makeRenderFrame(CameraMatrices{}, {1, 1}, lights, i->settings_.material,
+                                                           i->settings_.look, i->strands().layout().verticesPerStrand,
+                                                           shadows_->settings());
     const VkBuffer buffer = i->bounceFrame_.handle();
     vk::bufferBarrier(ctx_, cmd, buffer, vk::BufferUse::GraphicsRead, vk::BufferUse::TransferDst);
     ctx_.fn().vkCmdUpdateBuffer(cmd, buffer, 0, sizeof(block), &block);
@@ -239,16 +246,14 @@ void Renderer::recordDraw(VkCommandBuffer cmd, std::uint64_t frame, const View& 
   requireNoDeferredWork("recordDraw");
   view.validate(settings_.maxViewsPerFrame);
   beginFrame(frame, instances);
-  const LightSpec& light = frameLights_[frame % settings_.framesInFlight];
-  const render::HeadShadowView& headView = frameHeadShadows_[frame % settings_.framesInFlight];
+  const render::FrameLights& lights = frameLights_[frame % settings_.framesInFlight];
   for (HairInstance* i : instances) {
     const float fraction = i->lodFraction(view.camera.position);
     i->noteViewFraction(frame, fraction);
     gpu::RenderFrame* block = i->frameSlot(frame, view.index);
-    *block = render::makeRenderFrame(view.camera, view.extent, light, i->settings_.material,
+    *block = render::makeRenderFrame(view.camera, view.extent, lights, i->settings_.material,
                                      lodLook(i->settings_.look, fraction), i->strands().layout().verticesPerStrand,
                                      shadows_->settings());
-    render::setHeadMaps(*block, headView, i->settings_.look.skinBounce);
     const std::uint32_t offset = i->frameOffset(frame, view.index);
     if (profiler) profiler->begin(cmd, "head");
     i->head_->draw(cmd, view.extent, i->headToWorld(), offset);

@@ -1,12 +1,15 @@
 #pragma once
 // Contract: what hairpipe shares per device and attachment formats: the pipelines (one PipelineLibrary),
-// the Marschner LUT textures (cached by material and mode), the opacity shadow maps of the frame's light
-// and the retirement queue of frames in flight. It creates HairInstances (one per head) and records
+// the Marschner LUT textures (cached by material and mode), the opacity shadow maps of the frame's shadowed
+// lights and the retirement queue of frames in flight. It creates HairInstances (one per head) and records
 // their frames into the application's command buffers:
 //   recordUpdate(cmd, frame, instances)         outside rendering: simulate -> tessellate -> interpolate
-//   recordShadows(cmd, frame, light, instances) outside rendering: one framing over all instances, every
-//                                               instance's strands and head in the same opacity maps (heads
-//                                               shadow each other); its own vkCmdBeginRendering on its maps
+//   recordShadows(cmd, frame, lights, instances) outside rendering: the frame's lights (at most
+//                                               RENDER_MAX_LIGHTS); per shadowed light (a slot each, up to
+//                                               settings.shadowedLights, in order) one framing over all
+//                                               instances, every instance's strands and head in that light's
+//                                               opacity maps (heads shadow each other); its own
+//                                               vkCmdBeginRendering on its maps
 //   recordDraw(cmd, frame, view, instances)     inside the application's vkCmdBeginRendering (attachments
 //                                               matching settings.formats): heads and (graphics raster)
 //                                               hair ribbons
@@ -30,7 +33,7 @@
 // same way. The Renderer must outlive its instances and the GPU's use of everything it recorded.
 //
 // Errors (hp::Error): the constructor, createInstance and the instance setters (invalid parameters, device
-// limits, out of memory); recordShadows for an invalid light and recordDraw for an invalid view (checked
+// limits, out of memory); recordShadows for an invalid light or too many and recordDraw for an invalid view (checked
 // before anything is recorded); any record call for an instance of another Renderer; setRasterTarget
 // (graphics mode, no instance, device limits) and recordRaster/recordComposite/rasterImage without a
 // raster target (none set, or dropped because one of its instances was destroyed without
@@ -66,8 +69,12 @@ class Renderer {
 
   void recordUpdate(VkCommandBuffer cmd, std::uint64_t frame, std::span<HairInstance* const> instances,
                     vk::GpuProfiler* profiler = nullptr);
-  void recordShadows(VkCommandBuffer cmd, std::uint64_t frame, const LightSpec& light,
+  void recordShadows(VkCommandBuffer cmd, std::uint64_t frame, std::span<const LightSpec> lights,
                      std::span<HairInstance* const> instances, vk::GpuProfiler* profiler = nullptr);
+  void recordShadows(VkCommandBuffer cmd, std::uint64_t frame, const LightSpec& light,
+                     std::span<HairInstance* const> instances, vk::GpuProfiler* profiler = nullptr) {
+    recordShadows(cmd, frame, std::span(&light, 1), instances, profiler);
+  }
   void recordDraw(VkCommandBuffer cmd, std::uint64_t frame, const View& view,
                   std::span<HairInstance* const> instances, vk::GpuProfiler* profiler = nullptr);
 
@@ -78,7 +85,7 @@ class Renderer {
   // them changes strands or material or is destroyed; call again for another extent or set.
   void setRasterTarget(VkExtent2D extent, VkImageView depth, std::span<HairInstance* const> instances);
   // After recordDraw of the frame's view (heads drawn, depth in ImageUse::ComputeSampled), with the
-  // light recordShadows was given; leaves rasterImage() in ImageUse::FragmentSampled. View::index is unused
+  // lights recordShadows was given; leaves rasterImage() in ImageUse::FragmentSampled. View::index is unused
   // (one raster target: one view of a frame).
   void recordRaster(VkCommandBuffer cmd, std::uint64_t frame, const View& view, vk::GpuProfiler* profiler = nullptr);
   void recordComposite(VkCommandBuffer cmd, VkExtent2D extent, vk::GpuProfiler* profiler = nullptr) const;
@@ -95,10 +102,9 @@ class Renderer {
   const RendererSettings& settings() const { return settings_; }
   const vk::Context& context() const { return ctx_; }
   const render::ShadowMaps& shadows() const { return *shadows_; }
-  // The head depth map's framing that recordShadows chose for `frame` (for a caller's own frame block).
-  const render::HeadShadowView& headShadowOf(std::uint64_t frame) const {
-    return frameHeadShadows_[frame % settings_.framesInFlight];
-  }
+  // The lights recordShadows was given for `frame`, with their slots and head map framings (for a caller's
+  // own frame block).
+  const render::FrameLights& lightsOf(std::uint64_t frame) const { return frameLights_[frame % settings_.framesInFlight]; }
   vk::PipelineLibrary& pipelines() { return pipelines_; }
   std::vector<std::uint8_t> pipelineCacheData() const { return pipelines_.cacheData(); }
   // The LUT textures of a material and mode, built once and shared while any instance uses them.
@@ -128,8 +134,12 @@ class Renderer {
   // would draw resources not yet uploaded).
   void requireNoDeferredWork(const char* call) const;
   // The heads into the head bounce map when an instance's look asks for the skin's bounce (after the shadows).
-  void recordHeadBounce(VkCommandBuffer cmd, const LightSpec& light, std::span<HairInstance* const> instances,
-                        const render::HeadShadowView& headView, vk::GpuProfiler* profiler);
+  void recordHeadBounce(VkCommandBuffer cmd, const render::FrameLights& lights,
+                        std::span<HairInstance* const> instances, vk::GpuProfiler* profiler);
+  // One shadowed light's maps over every instance (its slot's opacity maps and head depth map).
+  void recordLightShadows(VkCommandBuffer cmd, render::FrameLights& lights, std::uint32_t slot,
+                          std::span<HairInstance* const> instances, const render::HeadSphere& heads,
+                          vk::GpuProfiler* profiler);
 
   struct Lut {
     HairMaterial material;
@@ -147,8 +157,7 @@ class Renderer {
   vk::PipelineLibrary pipelines_;
   std::unique_ptr<render::ShadowMaps> shadows_;
   std::vector<Lut> luts_;
-  std::vector<LightSpec> frameLights_;  // per ring slot: the light recordShadows was given
-  std::vector<render::HeadShadowView> frameHeadShadows_;  // per ring slot: the heads' depth map framing
+  std::vector<render::FrameLights> frameLights_;  // per ring slot: the lights recordShadows was given
   std::vector<Retired> retired_;
   std::optional<std::uint64_t> lastFrame_;
   std::shared_ptr<ComputeRaster> rasterTarget_;  // retired through retire() when replaced

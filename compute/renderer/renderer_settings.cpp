@@ -25,6 +25,9 @@ void RendererSettings::validate() const {
     throw Error("RendererSettings.framesInFlight must be in [1, " + std::to_string(kMaxFramesInFlight) + "]");
   if (maxViewsPerFrame < 1 || maxViewsPerFrame > kMaxViewsPerFrame)
     throw Error("RendererSettings.maxViewsPerFrame must be in [1, " + std::to_string(kMaxViewsPerFrame) + "]");
+  if (shadowedLights < 1 || shadowedLights > gpu::OPACITY_MAX_LIGHTS)
+    throw Error("RendererSettings.shadowedLights must be in [1, " + std::to_string(gpu::OPACITY_MAX_LIGHTS) + "], got " +
+                std::to_string(shadowedLights));
 }
 
 void InstanceSettings::validate() const {

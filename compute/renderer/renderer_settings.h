@@ -25,7 +25,10 @@ inline constexpr std::uint32_t kMaxViewsPerFrame = 16;
 
 struct RendererSettings {
   hairpipe::AttachmentFormats formats;  // the application's attachments the draws go into
-  render::OpacitySettings opacity;    // the shared opacity shadow maps (one light)
+  render::OpacitySettings opacity;    // the shared opacity shadow maps (per shadowed light)
+  // How many of a frame's lights cast hair shadows, [1, OPACITY_MAX_LIGHTS]: each owns opacity maps
+  // (resolution^2 x 5 layers of the format), a LightSpace and a layer of the heads' depth map.
+  std::uint32_t shadowedLights = 1;
   std::uint32_t framesInFlight = 2;   // [1, kMaxFramesInFlight]
   std::uint32_t maxViewsPerFrame = 4; // [1, kMaxViewsPerFrame]: draws of one frame with different cameras
   // How hair reaches the camera: Graphics (ribbons in recordDraw) or Compute (setRasterTarget,

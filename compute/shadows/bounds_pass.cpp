@@ -66,6 +66,7 @@ void BoundsPass::bind(const StrandBuffers& strands) {
 gpu::BoundsPush BoundsPass::push(const ShadowLight& light) const {
   const glm::mat3 rows = glm::transpose(lightBasisRows(light.towardLight));  // columns = rows of the basis
   gpu::BoundsPush p{};
+  p.slot = light.slot;
   p.row0 = glm::vec4(rows[0], 0.0f);
   p.row1 = glm::vec4(rows[1], 0.0f);
   p.row2 = glm::vec4(rows[2], 0.0f);

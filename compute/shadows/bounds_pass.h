@@ -39,6 +39,7 @@ struct ShadowLight {
   bool spot = false;
   glm::vec3 position{0.0f};  // spot: world position
   float coneRadians = 0.5f;  // spot: cone half-angle, (0, 80 deg]
+  std::uint32_t slot = 0;    // its shadow slot: which LightSpace of the buffer (shared/opacity.h)
   ShadowLight() = default;
   ShadowLight(const glm::vec3& direction) : towardLight(direction) {}  // NOLINT: a direction is a directional light
   static ShadowLight makeSpot(const glm::vec3& position, const glm::vec3& towardLight, float coneRadians);
@@ -55,7 +56,7 @@ struct BoundsFraming {
 
 class BoundsPass {
  public:
-  // lightSpace: gpu::LightSpace, storage usage, armed (initialLightSpace); it outlives the pass.
+  // lightSpace: gpu::LightSpace per shadow slot, storage usage, armed (initialLightSpace); it outlives the pass.
   BoundsPass(const vk::Context& ctx, const StrandBuffers& strands, const vk::Buffer& lightSpace,
              vk::PipelineLibrary* library = nullptr);
 

@@ -20,13 +20,6 @@ vk::Image makeImage(const vk::Context& ctx, VkFormat format, VkImageUsageFlags u
 constexpr VkImageUsageFlags kColorUsage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT;
 }  // namespace
 
-void setHeadMaps(gpu::RenderFrame& frame, const HeadShadowView& view, bool skinBounce) {
-  frame.headShadowViewProj = view.viewProj;
-  frame.headShadow = view.params;
-  const bool on = skinBounce && view.params.x != 0.0f;
-  frame.headBounce = glm::vec4(on ? 1.0f : 0.0f, view.extentWorld / float(gpu::RENDER_BOUNCE_RESOLUTION), 0.0f, 0.0f);
-}
-
 HeadBounceMap::HeadBounceMap(const vk::Context& ctx)
     : ctx_(&ctx),
       flux_(makeImage(ctx, kFormat, kColorUsage, "head bounce flux")),

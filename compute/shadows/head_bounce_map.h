@@ -14,11 +14,6 @@
 #include "shaders/shared/render.h"
 
 namespace hp::render {
-// A frame block's head maps: the heads' depth map framed by `view` (headShadowViewProj, headShadow) and the
-// bounce map framed like it (headBounce: on only where the look asks for the bounce and there is a head
-// map, as the bounce map is drawn with it).
-void setHeadMaps(gpu::RenderFrame& frame, const HeadShadowView& view, bool skinBounce);
-
 class HeadBounceMap {
  public:
   static constexpr VkFormat kFormat = VK_FORMAT_R32G32B32A32_SFLOAT;

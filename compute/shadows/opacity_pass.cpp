@@ -124,8 +124,8 @@ float prefixOpacity(float strandOpacity, std::uint32_t strands, std::uint32_t li
 }
 }  // namespace
 
-void OpacityPass::recordDraws(VkCommandBuffer cmd, const glm::mat4& headToWorld, const glm::vec2& strandWidth,
-                              std::uint32_t strandLimit) const {
+void OpacityPass::recordDraws(VkCommandBuffer cmd, std::uint32_t slot, const glm::mat4& headToWorld,
+                              const glm::vec2& strandWidth, std::uint32_t strandLimit) const {
   const VkExtent2D extent = maps_.image().extent();
   const OpacitySettings& settings = maps_.settings();
   const std::uint32_t q = strands_->layout().verticesPerStrand;
@@ -133,6 +133,7 @@ void OpacityPass::recordDraws(VkCommandBuffer cmd, const glm::mat4& headToWorld,
   push.opacity =
       settings.footprint ? 1.0f : prefixOpacity(settings.strandOpacity, strands_->layout().strandCount, strandLimit);
   push.verticesPerStrand = q;
+  push.slot = slot;
   push.footprint = glm::vec4(strandWidth.x, strandWidth.y, 1.0f / float(settings.resolution),
                              settings.footprint ? 1.0f : 0.0f);
   for (std::size_t c = 0; c < strandSets_.size(); ++c) {
@@ -142,22 +143,23 @@ void OpacityPass::recordDraws(VkCommandBuffer cmd, const glm::mat4& headToWorld,
     strandPipeline_->push(cmd, push);
     strandPipeline_->draw(cmd, drawn * (q - 1) * 2);
   }
-  recordHeadDraw(cmd, headToWorld);
+  recordHeadDraw(cmd, slot, headToWorld);
 }
 
-void OpacityPass::recordSplats(VkCommandBuffer cmd, const glm::vec2& strandWidth, std::uint32_t mode,
-                               std::uint32_t strandLimit) const {
+void OpacityPass::recordSplats(VkCommandBuffer cmd, std::uint32_t slot, const glm::vec2& strandWidth,
+                               std::uint32_t mode, std::uint32_t strandLimit) const {
   if (!splat_) throw Error("opacity pass: recordSplats needs maps on the compute path");
   const OpacitySettings& settings = maps_.settings();
   const float opacity = prefixOpacity(settings.strandOpacity, strands_->layout().strandCount, strandLimit);
-  splat_->record(cmd, {settings.footprint, opacity, strandWidth}, mode, strandLimit);
+  splat_->record(cmd, {settings.footprint, opacity, strandWidth, slot}, mode, strandLimit);
 }
 
 bool OpacityPass::drawsHead() const { return headIndexCount_ > 0 && maps_.settings().headOpacity > 0.0f; }
 
-void OpacityPass::recordHeadDraw(VkCommandBuffer cmd, const glm::mat4& headToWorld) const {
+void OpacityPass::recordHeadDraw(VkCommandBuffer cmd, std::uint32_t slot, const glm::mat4& headToWorld) const {
   if (!drawsHead()) return;
   gpu::OpacityPush push{};
+  push.slot = slot;
   push.headToWorld = headToWorld;
   push.opacity = maps_.settings().headOpacity;
   headPipeline_->bind(cmd, headSet_.set(), maps_.image().extent());

@@ -41,13 +41,14 @@ class OpacityPass {
   // strands drawn (compute::strandsWithin); the constant per-strand opacity (no footprint) grows by
   // strands / limit so the thinned hair casts the same shadow (the caller widens the strands for the
   // footprint).
-  void recordDraws(VkCommandBuffer cmd, const glm::mat4& headToWorld, const glm::vec2& strandWidth,
+  // slot: the light's shadow slot (its LightSpace; shared/opacity.h), for every record call here.
+  void recordDraws(VkCommandBuffer cmd, std::uint32_t slot, const glm::mat4& headToWorld, const glm::vec2& strandWidth,
                    std::uint32_t strandLimit = compute::kAllStrands) const;
   // Compute path: the strands into the bins (ShadowMaps::resolvePass), then the head if drawsHead().
-  void recordSplats(VkCommandBuffer cmd, const glm::vec2& strandWidth, std::uint32_t mode,
+  void recordSplats(VkCommandBuffer cmd, std::uint32_t slot, const glm::vec2& strandWidth, std::uint32_t mode,
                     std::uint32_t strandLimit = compute::kAllStrands) const;
   bool drawsHead() const;  // the head goes into the slices (OpacitySettings::headOpacity > 0)
-  void recordHeadDraw(VkCommandBuffer cmd, const glm::mat4& headToWorld) const;
+  void recordHeadDraw(VkCommandBuffer cmd, std::uint32_t slot, const glm::mat4& headToWorld) const;
   // The head's back faces into ShadowMaps' head depth map (between beginHeadRendering and endRendering).
   void recordHeadDepth(VkCommandBuffer cmd, const glm::mat4& headToLightClip) const;
   HeadSphere headSphere(const glm::mat4& headToWorld) const;  // bounding sphere in world space

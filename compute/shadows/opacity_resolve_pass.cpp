@@ -63,8 +63,8 @@ void OpacityResolvePass::recordClear(VkCommandBuffer cmd) const {
   if (deep_) ctx_->fn().vkCmdFillBuffer(cmd, first_.handle(), 0, VK_WHOLE_SIZE, 0xFFFFFFFFu);  // no hair yet
 }
 
-void OpacityResolvePass::recordResolve(VkCommandBuffer cmd) const {
-  const gpu::OpacityResolvePush push{resolution_, deep_ ? 1u : 0u};
+void OpacityResolvePass::recordResolve(VkCommandBuffer cmd, std::uint32_t slot) const {
+  const gpu::OpacityResolvePush push{resolution_, deep_ ? 1u : 0u, slot * gpu::OPACITY_LAYERS, 0u};
   pipeline_->bind(cmd, set_.set());
   pipeline_->push(cmd, push);
   pipeline_->dispatch(cmd, resolution_ * resolution_);

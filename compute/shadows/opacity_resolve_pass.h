@@ -24,7 +24,7 @@ class OpacityResolvePass {
   static VkDeviceSize binBytes(std::uint32_t resolution);
   static bool fits(const vk::Context& ctx, std::uint32_t resolution);
 
-  // maps: a 2D-array view of the OPACITY_TARGETS layers in `format` (the pass writes it as a storage image).
+  // maps: a 2D-array view of every slot's OPACITY_LAYERS layers in `format` (written as a storage image).
   // deep: deep opacity maps (the splats run OPACITY_SPLAT_MODE_FIRST, then _DEEP; the last layer gets the
   // first-hair buffer).
   OpacityResolvePass(const vk::Context& ctx, std::uint32_t resolution, VkFormat format, VkImageView maps, bool deep,
@@ -36,7 +36,8 @@ class OpacityResolvePass {
   const vk::Buffer& first() const { return first_; }  // uint[resolution^2]: each texel's first hair
   bool deep() const { return deep_; }
   void recordClear(VkCommandBuffer cmd) const;
-  void recordResolve(VkCommandBuffer cmd) const;
+  // The bins into shadow slot `slot`'s layers of the maps.
+  void recordResolve(VkCommandBuffer cmd, std::uint32_t slot) const;
 
  private:
   const vk::Context* ctx_;

@@ -42,6 +42,7 @@ void OpacitySplatPass::record(VkCommandBuffer cmd, const SplatFootprint& f, std:
   push.verticesPerStrand = verticesPerStrand_;
   push.resolution = resolution_;
   push.mode = mode;
+  push.slot = f.slot;
   for (std::size_t i = 0; i < chunks_.size(); ++i) {
     const std::uint32_t strands = strandsWithin(chunks_[i].range, strandLimit);
     if (strands == 0) break;  // the chunks are in strand order: the prefix ends here

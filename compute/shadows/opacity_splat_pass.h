@@ -27,11 +27,12 @@ struct SplatFootprint {
   bool footprint = true;       // width / texel size per fragment; false: `opacity` per fragment
   float opacity = 0.04f;       // constant mode's opacity per fragment
   glm::vec2 strandWidth{0.0f}; // x = root width (scene units), y = tip / root
+  std::uint32_t slot = 0;      // the light's shadow slot (its LightSpace; the bins hold one slot at a time)
 };
 
 class OpacitySplatPass {
  public:
-  // lightSpace: gpu::LightSpace; bins: uint[resolution^2 x 16]; first: uint[resolution^2] (deep maps); all
+  // lightSpace: gpu::LightSpace per slot; bins: uint[resolution^2 x 16]; first: uint[resolution^2] (deep maps); all
   // with storage usage, all outliving the pass.
   OpacitySplatPass(const vk::Context& ctx, const StrandBuffers& strands, const vk::Buffer& lightSpace,
                    const vk::Buffer& bins, const vk::Buffer& first, std::uint32_t resolution,

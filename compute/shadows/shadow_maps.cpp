@@ -1,5 +1,8 @@
 #include "compute/shadows/shadow_maps.h"
 
+#include <string>
+#include <vector>
+
 #include "compute/shadows/bounds_pass.h"
 #include "engine/core/error.h"
 #include "engine/vk/attachments.h"
@@ -20,10 +23,17 @@ bool onCompute(const vk::Context& ctx, const OpacitySettings& s) {
   return s.raster == OpacityRaster::Compute;
 }
 
-vk::Image makeImage(const vk::Context& ctx, const OpacitySettings& settings) {
+std::uint32_t validatedSlots(std::uint32_t slots) {
+  if (slots == 0 || slots > gpu::OPACITY_MAX_LIGHTS)
+    throw Error("shadow maps: " + std::to_string(slots) + " shadowed lights asked for, 1 to " +
+                std::to_string(gpu::OPACITY_MAX_LIGHTS) + " supported");
+  return slots;
+}
+
+vk::Image makeImage(const vk::Context& ctx, const OpacitySettings& settings, std::uint32_t slots) {
   vk::ImageDesc desc;
   desc.width = desc.height = settings.resolution;
-  desc.layers = gpu::OPACITY_LAYERS;
+  desc.layers = gpu::OPACITY_LAYERS * slots;
   desc.format = settings.format;
   desc.usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
                VK_IMAGE_USAGE_TRANSFER_DST_BIT;
@@ -32,9 +42,11 @@ vk::Image makeImage(const vk::Context& ctx, const OpacitySettings& settings) {
   return vk::Image(ctx, desc);
 }
 
-vk::Image makeHeadImage(const vk::Context& ctx, const OpacitySettings& settings) {
+vk::Image makeHeadImage(const vk::Context& ctx, const OpacitySettings& settings, std::uint32_t slots) {
   vk::ImageDesc desc;
   desc.width = desc.height = settings.headShadowResolution;
+  desc.layers = slots;
+  desc.arrayView = true;  // the shaders declare a sampler2DArrayShadow
   desc.format = ShadowMaps::kHeadDepthFormat;
   desc.usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT;
   desc.name = "head shadow map";
@@ -43,45 +55,50 @@ vk::Image makeHeadImage(const vk::Context& ctx, const OpacitySettings& settings)
 
 }  // namespace
 
-ShadowMaps::ShadowMaps(const vk::Context& ctx, const OpacitySettings& settings, vk::PipelineLibrary* library)
+ShadowMaps::ShadowMaps(const vk::Context& ctx, const OpacitySettings& settings, vk::PipelineLibrary* library,
+                       std::uint32_t slots)
     : ctx_(&ctx),
       settings_(validated(settings)),
-      lightSpace_(ctx, sizeof(gpu::LightSpace),
+      slots_(validatedSlots(slots)),
+      lightSpace_(ctx, sizeof(gpu::LightSpace) * slots,
                   VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
                   vk::MemoryKind::DeviceLocal, "light space"),
-      image_(makeImage(ctx, settings_)),
+      image_(makeImage(ctx, settings_, slots)),
       sampler_(ctx, "opacity sampler"),
-      headImage_(makeHeadImage(ctx, settings_)),
+      headImage_(makeHeadImage(ctx, settings_, slots)),
       headSampler_(ctx, "head shadow sampler", VK_COMPARE_OP_LESS_OR_EQUAL),
       bounce_(ctx) {
   if (onCompute(ctx, settings_))
     resolve_ = std::make_unique<compute::OpacityResolvePass>(ctx, settings_.resolution, settings_.format, image_.view(),
                                                              settings_.deep, library);
   settings_.deep = settings_.deep && resolve_ != nullptr;  // the graphics path draws global slices
-  const gpu::LightSpace initial = compute::initialLightSpace();
+  const std::vector<gpu::LightSpace> initial(slots_, compute::initialLightSpace());
+  const std::uint32_t layers = gpu::OPACITY_LAYERS * slots_;
   vk::submitAndWait(ctx, [&](VkCommandBuffer cmd) {
-    ctx.fn().vkCmdUpdateBuffer(cmd, lightSpace_.handle(), 0, sizeof(initial), &initial);
+    ctx.fn().vkCmdUpdateBuffer(cmd, lightSpace_.handle(), 0, initial.size() * sizeof(gpu::LightSpace), initial.data());
     vk::bufferBarrier(ctx, cmd, lightSpace_.handle(), vk::BufferUse::TransferDst, vk::BufferUse::GraphicsRead);
     vk::imageBarrier(ctx, cmd, image_.handle(), VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::Undefined,
-                     vk::ImageUse::TransferDst, gpu::OPACITY_LAYERS);
+                     vk::ImageUse::TransferDst, layers);
     const VkClearColorValue zero{{0.0f, 0.0f, 0.0f, 0.0f}};
-    const VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, gpu::OPACITY_LAYERS};
+    const VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, layers};
     ctx.fn().vkCmdClearColorImage(cmd, image_.handle(), vk::imageLayout(vk::ImageUse::TransferDst), &zero, 1, &range);
     vk::imageBarrier(ctx, cmd, image_.handle(), VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::TransferDst,
-                     vk::ImageUse::FragmentSampled, gpu::OPACITY_LAYERS);
+                     vk::ImageUse::FragmentSampled, layers);
     vk::imageBarrier(ctx, cmd, headImage_.handle(), VK_IMAGE_ASPECT_DEPTH_BIT, vk::ImageUse::Undefined,
-                     vk::ImageUse::DepthAttachment);
-    beginHeadRendering(cmd);
-    endRendering(cmd);
+                     vk::ImageUse::DepthAttachment, slots_);
+    for (std::uint32_t slot = 0; slot < slots_; ++slot) {
+      beginHeadRendering(cmd, slot);
+      endRendering(cmd);
+    }
     vk::imageBarrier(ctx, cmd, headImage_.handle(), VK_IMAGE_ASPECT_DEPTH_BIT, vk::ImageUse::DepthAttachment,
-                     vk::ImageUse::FragmentSampled);
+                     vk::ImageUse::FragmentSampled, slots_);
   }, "clear opacity maps");
 }
 
-void ShadowMaps::beginRendering(VkCommandBuffer cmd, bool keep) const {
+void ShadowMaps::beginRendering(VkCommandBuffer cmd, std::uint32_t slot, bool keep) const {
   VkRenderingAttachmentInfo attachments[gpu::OPACITY_TARGETS];
   for (std::uint32_t t = 0; t < gpu::OPACITY_TARGETS; ++t)
-    attachments[t] = vk::colorAttachment(image_.layerView(t), keep ? VK_ATTACHMENT_LOAD_OP_LOAD : VK_ATTACHMENT_LOAD_OP_CLEAR);
+    attachments[t] = vk::colorAttachment(image_.layerView(slot * gpu::OPACITY_LAYERS + t), keep ? VK_ATTACHMENT_LOAD_OP_LOAD : VK_ATTACHMENT_LOAD_OP_CLEAR);
   VkRenderingInfo info{VK_STRUCTURE_TYPE_RENDERING_INFO};
   info.renderArea = {{0, 0}, image_.extent()};
   info.layerCount = 1;
@@ -92,9 +109,9 @@ void ShadowMaps::beginRendering(VkCommandBuffer cmd, bool keep) const {
 
 void ShadowMaps::endRendering(VkCommandBuffer cmd) const { ctx_->fn().vkCmdEndRendering(cmd); }
 
-void ShadowMaps::beginHeadRendering(VkCommandBuffer cmd) const {
+void ShadowMaps::beginHeadRendering(VkCommandBuffer cmd, std::uint32_t slot) const {
   VkRenderingAttachmentInfo depth =
-      vk::depthAttachment(headImage_.view(), VK_ATTACHMENT_LOAD_OP_CLEAR, VK_ATTACHMENT_STORE_OP_STORE);
+      vk::depthAttachment(headImage_.layerView(slot), VK_ATTACHMENT_LOAD_OP_CLEAR, VK_ATTACHMENT_STORE_OP_STORE);
   VkRenderingInfo info{VK_STRUCTURE_TYPE_RENDERING_INFO};
   info.renderArea = {{0, 0}, headImage_.extent()};
   info.layerCount = 1;

@@ -1,14 +1,16 @@
 #pragma once
-// Contract: the opacity shadow maps of one light, shared by every hair instance a Renderer draws, so
-// heads shadow each other (docs/THEORY.md §5; compute/shadows/README.md "Opacity shadow maps"). Owns the
-// LightSpace buffer the bounds pass of every instance reduces into (one framing over all of them), the
-// 2D-array image of 4 RGBA layers = 16 slices every instance's OpacityPass draws into, and its sampler.
-// beginRendering()/endRendering() open and close the additive rendering into the 4 layers (cleared to 0);
-// the instances' OpacityPass::recordDraws go between them. Inserts no barriers: the frame recorder
-// (hp::recordShadowPasses) owns them.
-// Also owns the heads' depth shadow map (D32, back faces, head_shadow.glsl) every instance's head is
-// drawn into, with its compare sampler: the head occludes hair and itself through it, not the slices; and
-// the head bounce map (HeadBounceMap, the skin seen from the light) the hair gathers the skin's light from.
+// Contract: the opacity shadow maps of up to OPACITY_MAX_LIGHTS shadowed lights (`slots`), shared by every
+// hair instance a Renderer draws, so heads shadow each other (docs/THEORY.md §5; compute/shadows/README.md
+// "Opacity shadow maps"). Owns the buffer of one LightSpace per slot that the bounds pass of every instance
+// reduces into (one framing per light over all of them), the 2D-array image of OPACITY_LAYERS layers per
+// slot (4 RGBA layers = 16 slices, and the deep maps' first-hair layer) every instance's OpacityPass draws
+// into, and its sampler. beginRendering(slot)/endRendering() open and close the additive rendering into a
+// slot's 4 layers (cleared to 0); the instances' OpacityPass::recordDraws go between them. Inserts no
+// barriers: the frame recorder (hp::recordShadowPasses) owns them.
+// Also owns the heads' depth shadow map (D32, back faces, head_shadow.glsl; a layer per slot) every
+// instance's head is drawn into, with its compare sampler: the head occludes hair and itself through it,
+// not the slices; and the head bounce map (HeadBounceMap, the skin seen from slot 0's light) the hair
+// gathers the skin's light from.
 // On the compute path (OpacityRaster::Compute, or Auto where the bins fit the device) it also owns the bins
 // and resolve pass (compute::OpacityResolvePass) and the image has storage usage.
 // Construction clears the image (alpha = 0, T = 1) and the head map (far plane: lit) and leaves them in
@@ -30,22 +32,26 @@ class ShadowMaps {
   static constexpr VkFormat kHeadDepthFormat = VK_FORMAT_D32_SFLOAT;
 
   // `library`: the Renderer's, through which the opacity resolve's pipeline is built (null: its own).
-  ShadowMaps(const vk::Context& ctx, const OpacitySettings& settings, vk::PipelineLibrary* library = nullptr);
+  // slots: [1, OPACITY_MAX_LIGHTS].
+  ShadowMaps(const vk::Context& ctx, const OpacitySettings& settings, vk::PipelineLibrary* library = nullptr,
+             std::uint32_t slots = 1);
   ShadowMaps(const ShadowMaps&) = delete;
   ShadowMaps& operator=(const ShadowMaps&) = delete;
 
   // New opacities, k, bias or on/off with the same resolution and format (read at record time).
   void setTuning(const OpacitySettings& settings) {
-    const bool deep = settings_.deep;
+    const bool deep = settings_.deep;  // as in effect (not as asked for)
     settings_ = settings;
     settings_.deep = deep;
   }
 
-  // keep: load the layers (the compute resolve wrote them) instead of clearing them to 0.
-  void beginRendering(VkCommandBuffer cmd, bool keep = false) const;
+  // A slot's 4 slice layers; keep: load them (the compute resolve wrote them) instead of clearing them to 0.
+  void beginRendering(VkCommandBuffer cmd, std::uint32_t slot, bool keep = false) const;
   void endRendering(VkCommandBuffer cmd) const;
-  // The heads' depth map (back faces, cleared to the far plane): OpacityPass::recordHeadDepth between.
-  void beginHeadRendering(VkCommandBuffer cmd) const;
+  // A slot's layer of the heads' depth map (back faces, cleared to the far plane): OpacityPass::recordHeadDepth
+  // between.
+  void beginHeadRendering(VkCommandBuffer cmd, std::uint32_t slot) const;
+  std::uint32_t slots() const { return slots_; }
 
   const vk::Image& image() const { return image_; }
   const vk::Image& headImage() const { return headImage_; }
@@ -66,6 +72,7 @@ class ShadowMaps {
  private:
   const vk::Context* ctx_;
   OpacitySettings settings_;
+  std::uint32_t slots_;
   vk::Buffer lightSpace_;
   vk::Image image_;
   vk::Sampler sampler_;

@@ -125,7 +125,7 @@ void memoryBarrier(const Context& ctx, VkCommandBuffer cmd, BufferUse from, Buff
 }
 
 void imageBarrier(const Context& ctx, VkCommandBuffer cmd, VkImage image, VkImageAspectFlags aspect, ImageUse from,
-                  ImageUse to, std::uint32_t layers) {
+                  ImageUse to, std::uint32_t layers, std::uint32_t firstLayer) {
   ImageScope src = imageScope(from), dst = imageScope(to);
   VkImageMemoryBarrier2 b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2};
   b.srcStageMask = src.stage;
@@ -137,7 +137,7 @@ void imageBarrier(const Context& ctx, VkCommandBuffer cmd, VkImage image, VkImag
   b.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
   b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
   b.image = image;
-  b.subresourceRange = {aspect, 0, 1, 0, layers};
+  b.subresourceRange = {aspect, 0, 1, firstLayer, layers};
   VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
   dep.imageMemoryBarrierCount = 1;
   dep.pImageMemoryBarriers = &b;

@@ -52,8 +52,8 @@ void bufferBarrier(const Context& ctx, VkCommandBuffer cmd, VkBuffer buffer, Buf
                    VkDeviceSize offset = 0, VkDeviceSize size = VK_WHOLE_SIZE);
 // A global memory barrier between two uses (all buffers); for chains of dependent compute passes.
 void memoryBarrier(const Context& ctx, VkCommandBuffer cmd, BufferUse from, BufferUse to);
-// A layout transition (and its memory dependency) of all layers of one mip.
+// A layout transition (and its memory dependency) of `layers` layers from `firstLayer`, of one mip.
 void imageBarrier(const Context& ctx, VkCommandBuffer cmd, VkImage image, VkImageAspectFlags aspect, ImageUse from,
-                  ImageUse to, std::uint32_t layers = 1);
+                  ImageUse to, std::uint32_t layers = 1, std::uint32_t firstLayer = 0);
 VkImageLayout imageLayout(ImageUse use);
 }  // namespace hp::vk

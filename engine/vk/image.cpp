@@ -61,9 +61,10 @@ Image::Image(const Context& ctx, const ImageDesc& desc) : device_(ctx.device()),
     allocated_ = request.requirements.size;
     *tally_ += std::int64_t(allocated_);
     HP_VK_CHECK(fn_->vkBindImageMemory(device_, image_, memory_.memory, memory_.offset));
-    VkImageViewType type = desc.layers > 1 ? VK_IMAGE_VIEW_TYPE_2D_ARRAY : VK_IMAGE_VIEW_TYPE_2D;
-    view_ = createView(ctx, type, 0, desc.layers, desc.name + " view");
-    if (desc.layers > 1)
+    const bool array = desc.layers > 1 || desc.arrayView;
+    view_ = createView(ctx, array ? VK_IMAGE_VIEW_TYPE_2D_ARRAY : VK_IMAGE_VIEW_TYPE_2D, 0, desc.layers,
+                       desc.name + " view");
+    if (array)
       for (std::uint32_t i = 0; i < desc.layers; ++i)
         layerViews_.push_back(createView(ctx, VK_IMAGE_VIEW_TYPE_2D, i, 1, desc.name + " layer " + std::to_string(i)));
     else

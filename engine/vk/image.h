@@ -1,7 +1,7 @@
 #pragma once
 // Contract: a 2D (array) image with device-local memory (sub-allocated from the Context's MemoryPool, or
 // dedicated where the driver asks for it) and views, move-only. view() covers all
-// layers (2D, or 2D_ARRAY when layers > 1); layerView(i) is a 2D view of one layer for attachments.
+// layers (2D, or 2D_ARRAY when layers > 1 or arrayView); layerView(i) is a 2D view of one layer for attachments.
 // Layout tracking is the caller's job, through the named transitions in barriers.h.
 #include "hairpipe_volk.h"
 
@@ -25,6 +25,7 @@ struct ImageDesc {
   VkImageUsageFlags usage = 0;
   VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
   std::string name;
+  bool arrayView = false;  // view() is 2D_ARRAY even for one layer (for shaders that declare an array)
 };
 
 class Image {

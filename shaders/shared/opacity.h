@@ -12,6 +12,11 @@
 //
 // Opacity maps: one 2D-array image of OPACITY_TARGETS layers, RGBA; slice i is layer (i-1)/4,
 // channel (i-1)%4, and holds alpha(z_i) = sum of the per-fragment opacities at s <= i.
+//
+// Shadow slots: every shadowed light of a frame (up to OPACITY_MAX_LIGHTS) has a slot s with its own
+// LightSpace (element s of the light-space buffer), its own OPACITY_LAYERS layers of the maps' image from
+// layer s x OPACITY_LAYERS, and its own layer s of the heads' depth map. The passes take the slot in their
+// push constants; the shading passes loop over the frame's lights (RenderFrame, shared/render.h).
 #ifndef HP_SHARED_OPACITY_H
 #define HP_SHARED_OPACITY_H
 #include "common.h"
@@ -28,19 +33,20 @@ HP_CONST(float, OPACITY_NO_HAIR, 1.0e4f)           // exact in RGBA16F too
 // A fragment at slice coordinate s adds to slice i when s <= i + OPACITY_SLICE_EPSILON, so hair at
 // exactly z_far (s = 16 up to rounding) still lands in slice 16.
 HP_CONST(float, OPACITY_SLICE_EPSILON, 1.0e-3f)
+HP_CONST(uint, OPACITY_MAX_LIGHTS, 4)  // shadow slots (RendererSettings::shadowedLights at most)
 
 // Bounds pass (compute): per chunk a reduction, then one finalize dispatch.
 HP_CONST(uint, BOUNDS_WORKGROUP_SIZE, 256)
 HP_CONST(uint, BOUNDS_VERTICES_PER_THREAD, 8)
 HP_CONST(uint, BOUNDS_BINDING_POSITIONS, 0)   // vec4[chunk strands * Q] render strand positions
-HP_CONST(uint, BOUNDS_BINDING_LIGHT, 1)       // LightSpace (read-modify-write)
+HP_CONST(uint, BOUNDS_BINDING_LIGHT, 1)       // LightSpace[slots] (read-modify-write: the push's slot)
 HP_CONST(uint, BOUNDS_MODE_REDUCE, 0)
 HP_CONST(uint, BOUNDS_MODE_FINALIZE, 1)
 
 // Opacity pass (graphics): strands as lines, the head as triangles.
 HP_CONST(uint, OPACITY_BINDING_POSITIONS, 0)  // strands: vec4[chunk strands * Q]; head: vec4 positions
 HP_CONST(uint, OPACITY_BINDING_INDICES, 1)    // head only: uint indices (triangle list)
-HP_CONST(uint, OPACITY_BINDING_LIGHT, 2)      // LightSpace (read)
+HP_CONST(uint, OPACITY_BINDING_LIGHT, 2)      // LightSpace[slots] (read: the push's slot)
 
 // Opacity pass (compute, OpacityRaster::Compute): each segment's fragments (the texel centres inside the
 // 1-texel-wide rectangle along it: the strict-line rule of the graphics pass) add their opacity in fixed
@@ -50,7 +56,7 @@ HP_CONST(uint, OPACITY_BINDING_LIGHT, 2)      // LightSpace (read)
 HP_CONST(uint, OPACITY_SPLAT_WORKGROUP_SIZE, 64)
 HP_CONST(uint, OPACITY_RESOLVE_WORKGROUP_SIZE, 64)
 HP_CONST(uint, OPACITY_SPLAT_BINDING_POSITIONS, 0)  // vec4[chunk strands * Q] render strand positions
-HP_CONST(uint, OPACITY_SPLAT_BINDING_LIGHT, 1)      // LightSpace (read)
+HP_CONST(uint, OPACITY_SPLAT_BINDING_LIGHT, 1)      // LightSpace[slots] (read: the push's slot)
 HP_CONST(uint, OPACITY_SPLAT_BINDING_BINS, 2)       // uint bins (atomic adds)
 HP_CONST(uint, OPACITY_SPLAT_BINDING_FIRST, 3)      // uint[res * res]: each texel's first hair (atomicMin, ordered s)
 HP_CONST(uint, OPACITY_SPLAT_MODE_PLAIN, 0)         // bins of the global slices
@@ -89,13 +95,17 @@ struct BoundsPush {
   float tanCone;      // spot: tan of the cone half-angle, caps the angular box
   float nearLimit;    // spot: vertices with d <= nearLimit (at or behind the spot) are left out
   vec4 origin;        // spot: xyz = world position of the spot, w = 0; directional: 0
+  uint slot;          // the light's shadow slot: which LightSpace of the buffer
+  uint pad0;
+  uint pad1;
+  uint pad2;
 };
 
 struct OpacityPush {
   mat4 headToWorld;   // head draws only
   float opacity;      // head: added per fragment; strands: see footprint.w
   uint verticesPerStrand;  // strands: Q
-  uint pad0;
+  uint slot;               // the light's shadow slot: which LightSpace of the buffer
   uint pad1;
   // Strands: x = width at the root (scene units), y = tip width / root width, z = 1 / map resolution,
   // w = 1: a fragment adds opacity x width / texel size (the fraction of the texel the strand covers
@@ -109,7 +119,7 @@ struct OpacitySplatPush {
   uint segmentCount;       // segments in this chunk: strands x (Q - 1)
   uint resolution;         // map texels per side
   uint mode;               // OPACITY_SPLAT_MODE_*
-  uint pad0;
+  uint slot;               // the light's shadow slot: which LightSpace of the buffer
   uint pad1;
   uint pad2;
 };
@@ -117,6 +127,8 @@ struct OpacitySplatPush {
 struct OpacityResolvePush {
   uint resolution;         // map texels per side
   uint deep;               // 1: write the first-hair layer from the first-hair buffer
+  uint firstLayer;         // the slot's first layer of the maps (slot x OPACITY_LAYERS)
+  uint pad0;
 };
 HP_END
 
@@ -149,12 +161,13 @@ static_assert(hp::gpu::OPACITY_SLICES == 4 * hp::gpu::OPACITY_TARGETS);
 static_assert(sizeof(hp::gpu::LightSpace) == 128);
 static_assert(offsetof(hp::gpu::LightSpace, depthRange) == 64);
 static_assert(offsetof(hp::gpu::LightSpace, minBits) == 96);
-static_assert(sizeof(hp::gpu::BoundsPush) == 96);
+static_assert(sizeof(hp::gpu::BoundsPush) == 112);
 static_assert(offsetof(hp::gpu::BoundsPush, origin) == 80);
 static_assert(offsetof(hp::gpu::BoundsPush, vertexCount) == 48);
 static_assert(sizeof(hp::gpu::OpacityPush) == 96);
 static_assert(offsetof(hp::gpu::OpacityPush, footprint) == 80);
 static_assert(offsetof(hp::gpu::OpacityPush, opacity) == 64);
 static_assert(sizeof(hp::gpu::OpacitySplatPush) == 48);
+static_assert(sizeof(hp::gpu::OpacityResolvePush) == 16);
 #endif
 #endif

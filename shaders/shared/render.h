@@ -14,12 +14,12 @@ HP_CONST(uint, RENDER_BINDING_MARSCHNER, 1)   // UBO MarschnerParams (shaders/sh
 HP_CONST(uint, RENDER_BINDING_LUT_M, 2)       // sampler2D
 HP_CONST(uint, RENDER_BINDING_LUT_N0, 3)      // sampler2D
 HP_CONST(uint, RENDER_BINDING_LUT_N1, 4)      // sampler2D
-HP_CONST(uint, RENDER_BINDING_OPACITY, 5)     // sampler2DArray: 4 layers x RGBA = 16 opacity slices (shared/opacity.h)
-HP_CONST(uint, RENDER_BINDING_LIGHT, 6)       // storage LightSpace (shared/opacity.h), written on the device by the bounds pass
+HP_CONST(uint, RENDER_BINDING_OPACITY, 5)     // sampler2DArray: per shadow slot 4 layers x RGBA = 16 opacity slices + 1 (shared/opacity.h)
+HP_CONST(uint, RENDER_BINDING_LIGHT, 6)       // storage LightSpace[slots] (shared/opacity.h), written on the device by the bounds pass
 HP_CONST(uint, RENDER_BINDING_POSITIONS, 7)   // strands: vec4[S*Q]; head: vec4 positions
 HP_CONST(uint, RENDER_BINDING_TANGENTS, 8)    // strands: vec4[S*Q]; head: vec4 normals
 HP_CONST(uint, RENDER_BINDING_ATTRIBUTES, 9)  // strands: StrandAttributes[S]; head: uint indices
-HP_CONST(uint, RENDER_BINDING_HEAD_SHADOW, 10)  // sampler2DShadow: the head's depth shadow map (head_shadow.glsl)
+HP_CONST(uint, RENDER_BINDING_HEAD_SHADOW, 10)  // sampler2DArrayShadow: the heads' depth map, a layer per slot (head_shadow.glsl)
 // The head bounce map (head_bounce.glsl), numbered after the compute raster's own bindings
 // (shared/raster.h, 11-25), which share that raster's set.
 HP_CONST(uint, RENDER_BINDING_BOUNCE_FLUX, 26)      // sampler2D: flux, a = 1 + the hair's opacity (0: no skin)
@@ -47,29 +47,48 @@ HP_CONST(uint, RENDER_BOUNCE_RINGS, 6)
 HP_CONST(uint, RENDER_BOUNCE_SPOKES, 8)
 HP_CONST(float, RENDER_BOUNCE_RADIUS, 40.0f)
 
+// Lights per frame (RenderFrame::lights); the first OPACITY_MAX_LIGHTS shadowed ones have shadow slots.
+HP_CONST(uint, RENDER_MAX_LIGHTS, 8)
+// FrameLight::position.w: the kind of light.
+HP_CONST(float, RENDER_LIGHT_DIRECTIONAL, 0.0f)
+HP_CONST(float, RENDER_LIGHT_SPOT, 1.0f)
+HP_CONST(float, RENDER_LIGHT_POINT, 2.0f)
+
 HP_CONST(uint, STRAND_VERTICES_PER_QUAD, 6)
 HP_CONST(uint, STRAND_VERTICES_PER_LINE, 2)
+
+// One light of a frame (hp::LightSpec: compute/raster/frame_block.h fills it; shaders/light.glsl reads it).
+struct FrameLight {
+  vec4 direction;  // xyz unit, from the hair toward the light (spot: minus its axis; point: unused);
+                   // w = the light's shadow slot (shared/opacity.h), -1: it casts no hair shadow
+  vec4 radiance;   // rgb linear radiance (colour x intensity), w = 0
+  vec4 position;   // xyz world position (spot, point); w = RENDER_LIGHT_*
+  vec4 spot;       // spot: x = cos(cone half-angle), y = cos(inner angle, full radiance inside); spot and
+                   // point: z = range of the inverse-square falloff (0: none); w = 0
+};
+
+// The heads' depth map of one shadow slot (layer `slot` of the map; compute/shadows/head_shadow_view.h).
+struct FrameShadow {
+  mat4 headViewProj;  // world -> clip of the slot's head depth map
+  vec4 head;          // x = 1: the heads occlude this light (0: no map), y = receiver offset toward the
+                      // light (scene units), z = 1 / map resolution, w = 0
+};
 
 struct RenderFrame {
   mat4 view;
   mat4 proj;
   vec4 cameraPosition;   // xyz world; w = world size of one pixel at unit view depth
-  vec4 lightDirection;   // xyz unit, from the hair toward the light (spot: minus its axis)
-  vec4 lightRadiance;    // rgb linear radiance of the light
   vec4 hairColor;        // rgb exp(-2 sigma_a) (the scalp's tint); w = ambient (white sky) radiance
   vec4 skinColor;        // rgb albedo of the head; w = wrap in [0, 1]
   vec4 strand;           // x = width at the root (scene units), y = width at the tip / root, z = shadow k
                          // (T = exp(-k alpha)), w = shadow bias in slices (lookups move this far toward the light)
   uvec4 options;         // x = vertices per strand Q, y = 1 when opacity shadows are on,
                          // z = RENDER_SCATTERING_*, w = 1 for deep opacity maps (OpacitySettings::deep)
-  vec4 lightPosition;    // xyz world position of a spot; w = 1 for a spot, 0 for a directional light
-  vec4 lightSpot;        // spot: x = cos(cone half-angle), y = cos(inner angle, full radiance inside),
-                         // z = range of the inverse-square falloff (0: none), w = 0 (shaders/light.glsl)
-  mat4 headShadowViewProj;  // world -> clip of the head's depth shadow map (compute/shadows/shadow_maps.h, head_shadow_view.h)
-  vec4 headShadow;          // x = 1: the head occludes the light (0: no map), y = receiver offset toward the
-                            // light (scene units), z = 1 / map resolution, w = 0
-  vec4 headBounce;          // x = 1: the hair adds the light the skin reflects (compute raster; head_bounce.glsl),
-                            // y = the bounce map's texel size at the heads (scene units), z = w = 0
+  uvec4 lightCount;      // x = the lights in `lights`, y = the one in shadow slot 0 (the skin bounce's light), z = w = 0
+  vec4 headBounce;       // x = 1: the hair adds the light the skin reflects (head_bounce.glsl) of light
+                         // lightCount.y, y = the bounce map's texel size at the heads (scene units), z = w = 0
+  FrameLight lights[RENDER_MAX_LIGHTS];
+  FrameShadow shadows[OPACITY_MAX_LIGHTS];  // per shadow slot
 };
 
 struct StrandDrawPush {
@@ -90,11 +109,12 @@ HP_END
 #ifdef __cplusplus
 #include <cstddef>
 static_assert(offsetof(hp::gpu::RenderFrame, cameraPosition) == 128);
-static_assert(offsetof(hp::gpu::RenderFrame, options) == 224);
-static_assert(offsetof(hp::gpu::RenderFrame, lightPosition) == 240);
-static_assert(offsetof(hp::gpu::RenderFrame, headShadowViewProj) == 272);
-static_assert(offsetof(hp::gpu::RenderFrame, headBounce) == 352);
-static_assert(sizeof(hp::gpu::RenderFrame) == 368);
+static_assert(offsetof(hp::gpu::RenderFrame, options) == 192);
+static_assert(offsetof(hp::gpu::RenderFrame, lights) == 240);
+static_assert(offsetof(hp::gpu::RenderFrame, shadows) == 752);
+static_assert(sizeof(hp::gpu::RenderFrame) == 1072);
+static_assert(sizeof(hp::gpu::FrameLight) == 64);
+static_assert(sizeof(hp::gpu::FrameShadow) == 80);
 static_assert(sizeof(hp::gpu::StrandDrawPush) == 16);
 static_assert(sizeof(hp::gpu::TonemapPush) == 16);
 #endif

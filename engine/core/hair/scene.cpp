@@ -26,13 +26,28 @@ LightSpec LightSpec::makeSpot(const glm::vec3& position, const glm::vec3& target
   return l;
 }
 
+LightSpec LightSpec::makePoint(const glm::vec3& position, float range) {
+  LightSpec l;
+  l.type = Type::Point;
+  l.position = position;
+  l.range = range;
+  l.validate();
+  return l;
+}
+
 void LightSpec::validate() const {
   const float len = glm::length(direction);
   if (!std::isfinite(len) || std::abs(len - 1.0f) > 1e-3f) throw Error("light direction must be a unit vector");
   if (!finiteVec(color) || !glm::all(glm::greaterThanEqual(color, glm::vec3(0.0f))))
     throw Error("light color components must be >= 0");
   if (!(std::isfinite(intensity) && intensity >= 0.0f)) throw Error("light intensity must be >= 0");
+  if (type != Type::Directional && type != Type::Spot && type != Type::Point) throw Error("light type is not one of directional, spot, point");
   if (type == Type::Directional) return;
+  if (type == Type::Point) {
+    if (!finiteVec(position)) throw Error("point light position must be finite");
+    if (!(std::isfinite(range) && range >= 0.0f)) throw Error("point light range must be >= 0 (0: no distance falloff)");
+    return;
+  }
   if (!finiteVec(position)) throw Error("spot position must be finite");
   if (!(coneDeg > 0.0f && coneDeg <= 80.0f)) throw Error("spot coneDeg must be in (0, 80], got " + std::to_string(coneDeg));
   if (!(std::isfinite(range) && range >= 0.0f)) throw Error("spot range must be >= 0 (0: no distance falloff)");

@@ -31,19 +31,22 @@ std::optional<ModelSpec::Kind> modelKindOf(const std::filesystem::path& path);
 
 // One light. `direction` always points from the lit hair toward the light: for a directional light
 // that is all there is; for a spot it is minus the spot's axis (the spot shines along -direction from
-// `position`). makeSpot aims a spot from a position at a target.
+// `position`); a point light shines from `position` in every direction (direction unused, but kept a unit
+// vector). makeSpot aims a spot from a position at a target; makePoint places a point light.
 struct LightSpec {
-  enum class Type { Directional, Spot };
+  enum class Type { Directional, Spot, Point };
   Type type = Type::Directional;
   glm::vec3 direction = glm::normalize(glm::vec3(0.5f, 0.8f, 0.6f));  // unit, from the hair toward the light
   glm::vec3 color{1.0f};  // linear RGB radiance colour
   float intensity = 3.0f;
   glm::vec3 position{0.0f};  // spot: world position
   float coneDeg = 30.0f;     // spot: cone half-angle in degrees, (0, 80]; the last 20% of it fades out
-  float range = 0.0f;        // spot: inverse-square falloff (range / distance)^2 normalised at this
+  float range = 0.0f;        // spot, point: inverse-square falloff (range / distance)^2 normalised at this
                              // distance (scene units); 0 = no distance falloff
+  bool shadows = true;       // casts hair shadows while the Renderer has a shadow slot left for it
 
   static LightSpec makeSpot(const glm::vec3& position, const glm::vec3& target, float coneDeg);
+  static LightSpec makePoint(const glm::vec3& position, float range = 0.0f);
   void validate() const;  // throws hp::Error naming the field
 };
 

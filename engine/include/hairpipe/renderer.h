@@ -1,6 +1,6 @@
 #pragma once
 // Contract: the Renderer is what hairpipe shares per device and attachment formats (pipelines, the fibre
-// lookup textures cached by material, the opacity shadow maps of the frame's light, the queue of retired
+// lookup textures cached by material, the opacity shadow maps of the frame's shadowed lights, the queue of retired
 // objects); an Instance is one head of hair on it (simulation state, strand buffers, per-frame constants).
 // Every call is noexcept; each that can fail reports it as a Status / Result naming the problem, and a
 // failed record call has recorded nothing (its arguments are checked first).
@@ -27,7 +27,7 @@
 //   recordUpdate(cmd, frame, instances)   outside any rendering. Compute dispatches and transfers on
 //       hairpipe's buffers. Reads the ScalpInput::RootFrames buffer, if any, in COMPUTE_SHADER
 //       (SHADER_STORAGE_READ): the application's writes to it must be made visible to that first.
-//   recordShadows(cmd, frame, light, instances)   outside any rendering, every frame (it also orders the
+//   recordShadows(cmd, frame, lights, instances)   outside any rendering, every frame (it also orders the
 //       new strands before recordDraw reads them). Begins and ends its own renderings on hairpipe's
 //       shadow maps; touches nothing of the application's.
 //   recordDraw(cmd, frame, view, instances)   inside the application's vkCmdBeginRendering (dynamic
@@ -132,6 +132,9 @@ class Renderer {
                                   const Mat4& initialHeadToWorld = {}) noexcept;
 
   Status recordUpdate(VkCommandBuffer cmd, std::uint64_t frame, std::span<Instance* const> instances) noexcept;
+  // The frame's lights (at most 8; shadow slots as hairpipe::Light says), or one light.
+  Status recordShadows(VkCommandBuffer cmd, std::uint64_t frame, std::span<const Light> lights,
+                       std::span<Instance* const> instances) noexcept;
   Status recordShadows(VkCommandBuffer cmd, std::uint64_t frame, const Light& light,
                        std::span<Instance* const> instances) noexcept;
   Status recordDraw(VkCommandBuffer cmd, std::uint64_t frame, const View& view,

@@ -53,6 +53,11 @@ struct RendererSettings {
   OpacitySettings opacity;
   std::uint32_t framesInFlight = 2;    // [1, 8]
   std::uint32_t maxViewsPerFrame = 4;  // [1, 16]: recordDraw calls of one frame with different cameras
+  // How many of a frame's lights cast hair shadows, [1, 4] (the first that ask for shadows, in order; the
+  // rest shade unshadowed). Each costs its own opacity maps, resolution^2 x 5 texels of the opacity format
+  // (20 MiB at the default 512 RGBA32F), a layer of the heads' depth map (4 MiB at 1024) and its shadow
+  // passes per frame.
+  std::uint32_t shadowedLights = 1;
   RasterMode raster = RasterMode::Graphics;
   std::uint32_t tileBudget = 16384;    // compute raster: list entries kept per 8x8 tile, [1, 2^24]
   // The data of an earlier run's Renderer::pipelineCacheData(): every pipeline is built through a
@@ -158,15 +163,22 @@ struct InstanceSettings {
 
 // One light. `direction` points from the hair toward the light; a spot shines along -direction from
 // `position` with a cone of half-angle coneDeg (the last 20% fades out).
+// One light of a frame. direction: unit, from the lit hair toward the light (a spot's: minus its axis; a
+// point light's is unused but must still be a unit vector). A frame takes up to 8 lights; those with
+// `shadows` cast hair shadows (opacity maps, and the heads' depth map) while the Renderer has shadow slots
+// (RendererSettings::shadowedLights), the others light unshadowed. The skin's bounce light comes from the
+// first shadowed light only. A point light's shadows are drawn as a spot aimed at the heads, 80 degrees
+// wide: hair outside that cone (a point light among the hair) is lit unshadowed.
 struct Light {
-  enum class Type { Directional, Spot };
+  enum class Type { Directional, Spot, Point };
   Type type = Type::Directional;
   Vec3 direction{0.4472136f, 0.7155418f, 0.5366563f};  // unit
   Vec3 color{1.0f, 1.0f, 1.0f};                        // linear RGB
   float intensity = 3.0f;
-  Vec3 position{};        // spot
+  Vec3 position{};        // spot, point
   float coneDeg = 30.0f;  // spot: (0, 80]
-  float range = 0.0f;     // spot: (range / distance)^2 falloff; 0 = none
+  float range = 0.0f;     // spot, point: (range / distance)^2 falloff; 0 = none
+  bool shadows = true;    // casts hair shadows while a shadow slot is left
 };
 
 // One camera of a frame. view: world to view space (right-handed, looking down -Z); projection: view to

@@ -1,0 +1,37 @@
+// A frame's shadows per light, GLSL only, for the shading passes: the hair's opacity maps and the heads'
+// depth map of the light's shadow slot (shared/opacity.h), looked up per shaded point. The includer
+// declares `frame` (RenderFrame), `lightSpaces` (the LightSpace of each slot), `opacityMaps` and
+// `headShadowMap` after including shared/render.h.
+#ifndef HP_FRAME_SHADOWS_GLSL
+#define HP_FRAME_SHADOWS_GLSL
+#include "opacity_lookup.glsl"
+#include "head_shadow.glsl"
+#include "light.glsl"
+
+// The opacity-map value at p for shadow slot `slot`, with the frame's kind of slices and bias. `soft`: over
+// a few texels (opaque receivers: opacityAlphaSoft).
+float frameOpacityAlpha(uint slot, vec3 p, bool soft) {
+  OpacityVertex o = opacityVertex(lightSpaces[slot], p, frame.strand.w, frame.options.y != 0u);
+  if (frame.options.w != 0u)
+    return soft ? opacityAlphaDeepSoft(opacityMaps, slot, o.uvw, o.s, frame.strand.w)
+                : opacityAlphaDeep(opacityMaps, slot, o.uvw, o.s, frame.strand.w);
+  return soft ? opacityAlphaSoft(opacityMaps, slot, o.uvw, o.w0, o.w1, o.w2, o.w3)
+              : opacityAlpha(opacityMaps, slot, o.uvw, o.w0, o.w1, o.w2, o.w3);
+}
+
+// What stands between p and a light: alpha, the hair's opacity-map value (0 for an unshadowed light), and
+// head, the fraction of the light the heads let through (1 for an unshadowed light).
+struct LightShadow {
+  float alpha;
+  float head;
+};
+
+LightShadow frameLightShadow(FrameLight light, vec3 p, vec3 L, bool soft) {
+  LightShadow s = LightShadow(0.0, 1.0);
+  int slot = lightSlot(light);
+  if (slot < 0) return s;
+  s.alpha = frameOpacityAlpha(uint(slot), p, soft);
+  s.head = headVisibility(headShadowMap, uint(slot), frame.shadows[slot], p, L);
+  return s;
+}
+#endif
