@@ -28,9 +28,9 @@ void main() {
       alpha += float(bin & ~OPACITY_BIN_SATURATED) / OPACITY_FIXED_ONE;
       slices[c] = saturated ? OPACITY_SATURATED_ALPHA : alpha;
     }
-    imageStore(maps, ivec3(xy, int(push.firstLayer + layer)), slices);
+    imageStore(maps, ivec3(xy, int(layer)), slices);
   }
   // Deep maps: the first hair's s (the buffer starts at the largest uint: none there).
   float s0 = push.deep != 0u && first[texel] != 0xFFFFFFFFu ? floatFromOrdered(first[texel]) : OPACITY_NO_HAIR;
-  imageStore(maps, ivec3(xy, int(push.firstLayer + OPACITY_TARGETS)), vec4(s0, 0.0, 0.0, 0.0));
+  imageStore(maps, ivec3(xy, int(OPACITY_TARGETS)), vec4(s0, 0.0, 0.0, 0.0));
 }

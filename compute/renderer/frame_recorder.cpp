@@ -95,12 +95,9 @@ void recordShadowPasses(const vk::Context& ctx, VkCommandBuffer cmd, const rende
                         const compute::ShadowLight& shadowLight, const compute::BoundsFraming& framing,
                         vk::GpuProfiler* profiler, const render::HeadShadowView& headView) {
   if (casters.empty()) return;
-  // The slot's LightSpace: other slots' readers and writers are not this slot's concern.
+  // Barriers on the whole buffer of every slot's LightSpace: the readers' descriptors bind all of it.
   const VkBuffer light = maps.lightSpace().handle();
-  const VkDeviceSize offset = shadowLight.slot * sizeof(gpu::LightSpace), size = sizeof(gpu::LightSpace);
-  auto lightBarrier = [&](vk::BufferUse from, vk::BufferUse to) {
-    vk::bufferBarrier(ctx, cmd, light, from, to, offset, size);
-  };
+  auto lightBarrier = [&](vk::BufferUse from, vk::BufferUse to) { vk::bufferBarrier(ctx, cmd, light, from, to); };
   if (profiler) profiler->begin(cmd, "bounds");
   vk::memoryBarrier(ctx, cmd, vk::BufferUse::ComputeWrite, vk::BufferUse::ComputeRead);  // strand positions
   lightBarrier(vk::BufferUse::GraphicsRead, vk::BufferUse::ComputeWrite);  // last frame's readers: draws,

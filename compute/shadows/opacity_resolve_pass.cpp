@@ -41,7 +41,8 @@ bool OpacityResolvePass::fits(const vk::Context& ctx, std::uint32_t resolution) 
 }
 
 OpacityResolvePass::OpacityResolvePass(const vk::Context& ctx, std::uint32_t resolution, VkFormat format,
-                                       VkImageView maps, bool deep, vk::PipelineLibrary* library)
+                                       const std::vector<VkImageView>& slotMaps, bool deep,
+                                       vk::PipelineLibrary* library)
     : ctx_(&ctx),
       resolution_(resolution),
       deep_(deep),
@@ -49,13 +50,16 @@ OpacityResolvePass::OpacityResolvePass(const vk::Context& ctx, std::uint32_t res
             vk::MemoryKind::DeviceLocal, "opacity bins"),
       first_(ctx, VkDeviceSize(resolution) * resolution * sizeof(std::uint32_t),
              VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT, vk::MemoryKind::DeviceLocal,
-             "opacity first hair"),
-      set_(ctx, kBindings, "opacity resolve") {
-  set_.writeStorageBuffer(gpu::OPACITY_RESOLVE_BINDING_BINS, bins_.handle());
-  set_.writeStorageImage(gpu::OPACITY_RESOLVE_BINDING_MAPS, maps);
-  set_.writeStorageBuffer(gpu::OPACITY_RESOLVE_BINDING_FIRST, first_.handle());
+             "opacity first hair") {
+  for (std::size_t slot = 0; slot < slotMaps.size(); ++slot) {
+    vk::DescriptorSet set(ctx, kBindings, "opacity resolve [slot " + std::to_string(slot) + "]");
+    set.writeStorageBuffer(gpu::OPACITY_RESOLVE_BINDING_BINS, bins_.handle());
+    set.writeStorageImage(gpu::OPACITY_RESOLVE_BINDING_MAPS, slotMaps[slot]);
+    set.writeStorageBuffer(gpu::OPACITY_RESOLVE_BINDING_FIRST, first_.handle());
+    sets_.push_back(std::move(set));
+  }
   pipeline_ = vk::makeComputePipeline(ctx, library, resolveShader(format), gpu::OPACITY_RESOLVE_WORKGROUP_SIZE,
-                                      {set_.layout()}, sizeof(gpu::OpacityResolvePush), "opacity resolve");
+                                      {sets_.at(0).layout()}, sizeof(gpu::OpacityResolvePush), "opacity resolve");
 }
 
 void OpacityResolvePass::recordClear(VkCommandBuffer cmd) const {
@@ -64,8 +68,8 @@ void OpacityResolvePass::recordClear(VkCommandBuffer cmd) const {
 }
 
 void OpacityResolvePass::recordResolve(VkCommandBuffer cmd, std::uint32_t slot) const {
-  const gpu::OpacityResolvePush push{resolution_, deep_ ? 1u : 0u, slot * gpu::OPACITY_LAYERS, 0u};
-  pipeline_->bind(cmd, set_.set());
+  const gpu::OpacityResolvePush push{resolution_, deep_ ? 1u : 0u};
+  pipeline_->bind(cmd, sets_.at(slot).set());
   pipeline_->push(cmd, push);
   pipeline_->dispatch(cmd, resolution_ * resolution_);
 }

@@ -12,6 +12,7 @@
 #include "hairpipe_volk.h"
 
 #include <memory>
+#include <vector>
 
 #include "engine/vk/buffer.h"
 #include "engine/vk/descriptors.h"
@@ -24,11 +25,12 @@ class OpacityResolvePass {
   static VkDeviceSize binBytes(std::uint32_t resolution);
   static bool fits(const vk::Context& ctx, std::uint32_t resolution);
 
-  // maps: a 2D-array view of every slot's OPACITY_LAYERS layers in `format` (written as a storage image).
+  // slotMaps: per shadow slot, a 2D-array view of its OPACITY_LAYERS layers in `format` (written as a
+  // storage image; a view per slot, so a resolve touches its slot's layers only).
   // deep: deep opacity maps (the splats run OPACITY_SPLAT_MODE_FIRST, then _DEEP; the last layer gets the
   // first-hair buffer).
-  OpacityResolvePass(const vk::Context& ctx, std::uint32_t resolution, VkFormat format, VkImageView maps, bool deep,
-                     vk::PipelineLibrary* library = nullptr);
+  OpacityResolvePass(const vk::Context& ctx, std::uint32_t resolution, VkFormat format,
+                     const std::vector<VkImageView>& slotMaps, bool deep, vk::PipelineLibrary* library = nullptr);
   OpacityResolvePass(const OpacityResolvePass&) = delete;
   OpacityResolvePass& operator=(const OpacityResolvePass&) = delete;
 
@@ -45,7 +47,7 @@ class OpacityResolvePass {
   bool deep_;
   vk::Buffer bins_;
   vk::Buffer first_;
-  vk::DescriptorSet set_;
+  std::vector<vk::DescriptorSet> sets_;  // per slot
   std::shared_ptr<const vk::ComputePipeline> pipeline_;
 };
 }  // namespace hp::compute

@@ -34,6 +34,7 @@ vk::Image makeImage(const vk::Context& ctx, const OpacitySettings& settings, std
   vk::ImageDesc desc;
   desc.width = desc.height = settings.resolution;
   desc.layers = gpu::OPACITY_LAYERS * slots;
+  desc.groupLayers = gpu::OPACITY_LAYERS;  // a view per slot: the compute resolve writes one slot's layers
   desc.format = settings.format;
   desc.usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
                VK_IMAGE_USAGE_TRANSFER_DST_BIT;
@@ -68,9 +69,12 @@ ShadowMaps::ShadowMaps(const vk::Context& ctx, const OpacitySettings& settings, 
       headImage_(makeHeadImage(ctx, settings_, slots)),
       headSampler_(ctx, "head shadow sampler", VK_COMPARE_OP_LESS_OR_EQUAL),
       bounce_(ctx) {
-  if (onCompute(ctx, settings_))
-    resolve_ = std::make_unique<compute::OpacityResolvePass>(ctx, settings_.resolution, settings_.format, image_.view(),
+  if (onCompute(ctx, settings_)) {
+    std::vector<VkImageView> slotViews;
+    for (std::uint32_t slot = 0; slot < slots_; ++slot) slotViews.push_back(image_.groupView(slot));
+    resolve_ = std::make_unique<compute::OpacityResolvePass>(ctx, settings_.resolution, settings_.format, slotViews,
                                                              settings_.deep, library);
+  }
   settings_.deep = settings_.deep && resolve_ != nullptr;  // the graphics path draws global slices
   const std::vector<gpu::LightSpace> initial(slots_, compute::initialLightSpace());
   const std::uint32_t layers = gpu::OPACITY_LAYERS * slots_;

@@ -40,6 +40,9 @@ Image::Image(const Context& ctx, const ImageDesc& desc) : device_(ctx.device()),
                 " is outside 1.." + std::to_string(limits.maxImageDimension2D) + " for this device");
   if (desc.layers == 0 || desc.layers > limits.maxImageArrayLayers)
     throw Error("image '" + desc.name + "': bad layer count " + std::to_string(desc.layers));
+  if (desc.groupLayers > 0 && desc.layers % desc.groupLayers != 0)
+    throw Error("image '" + desc.name + "': " + std::to_string(desc.layers) + " layers are not whole groups of " +
+                std::to_string(desc.groupLayers));
   VkImageCreateInfo info{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
   info.imageType = VK_IMAGE_TYPE_2D;
   info.format = desc.format;
@@ -69,6 +72,10 @@ Image::Image(const Context& ctx, const ImageDesc& desc) : device_(ctx.device()),
         layerViews_.push_back(createView(ctx, VK_IMAGE_VIEW_TYPE_2D, i, 1, desc.name + " layer " + std::to_string(i)));
     else
       layerViews_.push_back(view_);
+    if (desc.groupLayers > 0)
+      for (std::uint32_t g = 0; g < desc.layers / desc.groupLayers; ++g)
+        groupViews_.push_back(createView(ctx, VK_IMAGE_VIEW_TYPE_2D_ARRAY, g * desc.groupLayers, desc.groupLayers,
+                                         desc.name + " group " + std::to_string(g)));
   } catch (...) {
     release();
     throw;
@@ -115,6 +122,8 @@ void Image::release() {
   for (VkImageView v : layerViews_)
     if (v != view_) fn_->vkDestroyImageView(device_, v, nullptr);
   layerViews_.clear();
+  for (VkImageView v : groupViews_) fn_->vkDestroyImageView(device_, v, nullptr);
+  groupViews_.clear();
   if (view_) fn_->vkDestroyImageView(device_, view_, nullptr);
   if (image_) fn_->vkDestroyImage(device_, image_, nullptr);
   if (pool_) pool_->free(memory_);

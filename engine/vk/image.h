@@ -1,7 +1,9 @@
 #pragma once
 // Contract: a 2D (array) image with device-local memory (sub-allocated from the Context's MemoryPool, or
 // dedicated where the driver asks for it) and views, move-only. view() covers all
-// layers (2D, or 2D_ARRAY when layers > 1 or arrayView); layerView(i) is a 2D view of one layer for attachments.
+// layers (2D, or 2D_ARRAY when layers > 1 or arrayView); layerView(i) is a 2D view of one layer for attachments;
+// groupView(g) a 2D_ARRAY view of layers [g x groupLayers, (g + 1) x groupLayers) when groupLayers is set
+// (a storage view that touches one group only).
 // Layout tracking is the caller's job, through the named transitions in barriers.h.
 #include "hairpipe_volk.h"
 
@@ -26,6 +28,7 @@ struct ImageDesc {
   VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
   std::string name;
   bool arrayView = false;  // view() is 2D_ARRAY even for one layer (for shaders that declare an array)
+  std::uint32_t groupLayers = 0;  // > 0: a groupView per this many layers (layers must be a multiple)
 };
 
 class Image {
@@ -41,6 +44,7 @@ class Image {
   VkImage handle() const { return image_; }
   VkImageView view() const { return view_; }
   VkImageView layerView(std::uint32_t layer) const { return layerViews_.at(layer); }
+  VkImageView groupView(std::uint32_t group) const { return groupViews_.at(group); }
   const ImageDesc& desc() const { return desc_; }
   VkExtent2D extent() const { return {desc_.width, desc_.height}; }
   VkImageAspectFlags aspect() const;
@@ -59,6 +63,7 @@ class Image {
   VkDeviceSize allocated_ = 0;
   VkImageView view_ = VK_NULL_HANDLE;
   std::vector<VkImageView> layerViews_;
+  std::vector<VkImageView> groupViews_;
   ImageDesc desc_;
 };
 

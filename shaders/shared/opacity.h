@@ -127,8 +127,6 @@ struct OpacitySplatPush {
 struct OpacityResolvePush {
   uint resolution;         // map texels per side
   uint deep;               // 1: write the first-hair layer from the first-hair buffer
-  uint firstLayer;         // the slot's first layer of the maps (slot x OPACITY_LAYERS)
-  uint pad0;
 };
 HP_END
 
@@ -168,6 +166,6 @@ static_assert(sizeof(hp::gpu::OpacityPush) == 96);
 static_assert(offsetof(hp::gpu::OpacityPush, footprint) == 80);
 static_assert(offsetof(hp::gpu::OpacityPush, opacity) == 64);
 static_assert(sizeof(hp::gpu::OpacitySplatPush) == 48);
-static_assert(sizeof(hp::gpu::OpacityResolvePush) == 16);
+static_assert(sizeof(hp::gpu::OpacityResolvePush) == 8);
 #endif
 #endif
