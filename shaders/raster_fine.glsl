@@ -12,10 +12,13 @@
 // sample, and the near one, the fragments in front of every head sample, with the mask of the samples
 // that hide hair; the composite gives each sample its layer (shared/raster.h), so the head's edge over
 // the hair is antialiased like its edge over the background.
+// With motion vectors (specialization constant MOTION) the vertices' screen motion is composited like the
+// radiance, into the far layer's coverage-weighted motion: sum(a s m) / sum(a s) (0 without hair).
 #include "shared/raster.h"
 #include "common.glsl"
 
 layout(local_size_x = RASTER_FINE_SIZE) in;
+layout(constant_id = 0) const uint MOTION = 0u;
 layout(std430, binding = RASTER_BINDING_SCREEN) readonly buffer Screen { vec4 screen[]; };
 layout(std430, binding = RASTER_BINDING_COLORS) readonly buffer Colors { uvec2 colors[]; };
 layout(std430, binding = RASTER_BINDING_TILES) readonly buffer Tiles { uvec2 tiles[]; };
@@ -28,24 +31,30 @@ layout(binding = RASTER_BINDING_OUTPUT_NEAR, rgba16f) uniform writeonly image2D 
 layout(binding = RASTER_BINDING_NEAR_MASK, r32ui) uniform writeonly uimage2D nearMaskImage;
 #endif
 layout(std430, binding = RASTER_BINDING_PARAMS) readonly buffer Params { RasterParams params; };
+layout(std430, binding = RASTER_BINDING_MOTION) readonly buffer Motion { uint motion[]; };
+layout(binding = RASTER_BINDING_MOTION_OUTPUT, rg16f) uniform writeonly image2D motionImage;
 
 vec3 radianceOf(uvec2 c) { return vec3(unpackHalf2x16(c.x), unpackHalf2x16(c.y).x); }
 uint samplesIn(uvec2 mask) { return uint(bitCount(mask.x) + bitCount(mask.y)); }  // of the 8 x 8 overlap mask
 
-// Hair composited front to back so far: premultiplied radiance, alpha, the overlap mask's covered samples.
+// Hair composited front to back so far: premultiplied radiance, alpha, the overlap mask's covered samples,
+// and the coverage-weighted screen motion (MOTION).
 struct Layer {
   vec3 color;
   float alpha;
   uvec2 covered;
+  vec3 motion;  // xy: sum of visible share x motion, z: sum of visible shares
 };
 
-// Adds a fragment of exact area `coverage` and overlap-mask samples `band` behind what the layer holds.
-void composite(inout Layer layer, float coverage, uvec2 band, vec3 c) {
+// Adds a fragment of exact area `coverage` and overlap-mask samples `band` behind what the layer holds;
+// returns the share of the pixel it added.
+float composite(inout Layer layer, float coverage, uvec2 band, vec3 c) {
   float share = rasterVisibleShare(samplesIn(band), samplesIn(layer.covered), samplesIn(band & layer.covered), layer.alpha);
   layer.covered |= band;
   float visible = coverage * share;
   layer.color += visible * c;
   layer.alpha = min(layer.alpha + visible, 1.0);
+  return visible;
 }
 
 #ifdef RASTER_HEAD_MULTISAMPLED
@@ -75,7 +84,7 @@ void main() {
   }
   uint start = tiles[tile].x + blocks[tile / RASTER_SCAN_SIZE];
   uint end = min(start + tiles[tile].y, params.capacity);
-  Layer far = Layer(vec3(0.0), 0.0, uvec2(0u));  // rows 0-3, 4-7 of the overlap mask
+  Layer far = Layer(vec3(0.0), 0.0, uvec2(0u), vec3(0.0));  // rows 0-3, 4-7 of the overlap mask
 #ifdef RASTER_HEAD_MULTISAMPLED
   Layer near = far;
   bool split = false;  // whether a fragment was hidden at some head samples (then `near` is its own layer)
@@ -119,9 +128,13 @@ void main() {
       composite(near, coverage, band, c);
     }
 #endif
-    composite(far, coverage, band, c);
+    float visible = composite(far, coverage, band, c);
+    if (MOTION != 0u)
+      far.motion += visible * vec3(mix(unpackHalf2x16(motion[v]), unpackHalf2x16(motion[v + 1u]), t), 1.0);
   }
   imageStore(outImage, ivec2(pixel), vec4(far.color, far.alpha));
+  if (MOTION != 0u)
+    imageStore(motionImage, ivec2(pixel), vec4(far.motion.z > 0.0 ? far.motion.xy / far.motion.z : vec2(0.0), 0.0, 0.0));
 #ifdef RASTER_HEAD_MULTISAMPLED
   if (!split) near = far;
   imageStore(nearImage, ivec2(pixel), vec4(near.color, near.alpha));

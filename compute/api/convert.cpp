@@ -56,6 +56,7 @@ hp::RendererSettings renderer(const RendererSettings& s) {
   r.framesInFlight = s.framesInFlight;
   r.maxViewsPerFrame = s.maxViewsPerFrame;
   r.shadowedLights = s.shadowedLights;
+  r.motionVectors = s.motionVectors;
   r.raster = raster(s.raster);
   r.rasterSettings.tileBudget = s.tileBudget;
   r.pipelineCache = s.pipelineCache;
@@ -159,6 +160,8 @@ hp::View view(const View& v) {
   h.extent = v.extent;
   h.index = v.index;
   h.lines = v.lines;
+  h.jitter = {v.jitterX, v.jitterY};
+  if (v.hasPrevious) h.previousViewProj = mat(v.previousViewProjection);
   return h;
 }
 

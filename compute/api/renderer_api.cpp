@@ -159,6 +159,12 @@ Status Renderer::setOpacityTuning(const OpacitySettings& opacity) noexcept {
 RasterMode Renderer::raster() const noexcept {
   return impl_ ? convert::raster(impl_->raster()) : RasterMode::Auto;  // Auto: a moved-from Renderer
 }
+Result<Renderer::MotionImage> Renderer::motionImage() const noexcept {
+  return guarded<MotionImage>("hairpipe::Renderer::motionImage", [&] {
+    const hp::vk::Image& image = implementation(impl_).motionImage();
+    return MotionImage{image.handle(), image.view(), image.desc().format, image.extent()};
+  });
+}
 Result<std::vector<std::uint8_t>> Renderer::pipelineCacheData() const noexcept {
   return guarded<std::vector<std::uint8_t>>("hairpipe::Renderer::pipelineCacheData",
                                             [&] { return implementation(impl_).pipelineCacheData(); });

@@ -64,6 +64,7 @@ gpu::RenderFrame makeRenderFrame(const CameraMatrices& camera, VkExtent2D extent
   const float pixelAtUnitDepth = 2.0f * std::tan(0.5f * camera.fovY) / float(extent.height);
   f.cameraPosition = glm::vec4(camera.position, pixelAtUnitDepth);
   setLights(f, lights, look.skinBounce);
+  f.previousViewProj = camera.proj * camera.view;  // no motion until setViewMotion says otherwise
   // The colour of one straight pass through the fibre (absorptionFromColor's inverse) as ambient albedo.
   const glm::dvec3 albedo = glm::exp(-2.0 * material.absorption);
   f.hairColor = glm::vec4(glm::vec3(albedo), look.ambient);
@@ -73,5 +74,16 @@ gpu::RenderFrame makeRenderFrame(const CameraMatrices& camera, VkExtent2D extent
                          look.scattering == Scattering::Dual ? gpu::RENDER_SCATTERING_DUAL : gpu::RENDER_SCATTERING_SINGLE,
                          opacity.deep ? 1u : 0u);
   return f;
+}
+
+void setViewMotion(gpu::RenderFrame& frame, VkExtent2D extent, const glm::vec2& jitter,
+                   const std::optional<glm::mat4>& previousViewProj) {
+  if (previousViewProj) frame.previousViewProj = *previousViewProj;
+  frame.jitter = glm::vec4(jitter, 0.0f, 0.0f);
+  // clip.xy += (2 j.x / width, -2 j.y / height) clip.w: pixel rows go down, clip +Y up.
+  glm::mat4 shift(1.0f);
+  shift[3][0] = 2.0f * jitter.x / float(extent.width);
+  shift[3][1] = -2.0f * jitter.y / float(extent.height);
+  frame.proj = shift * frame.proj;
 }
 }  // namespace hp::render

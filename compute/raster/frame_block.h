@@ -9,6 +9,7 @@
 #include "hairpipe/settings.h"
 #include "hairpipe_volk.h"
 
+#include <optional>
 #include <string>
 
 #include "shaders/shared/render.h"
@@ -42,4 +43,8 @@ struct LookSettings {
 gpu::RenderFrame makeRenderFrame(const CameraMatrices& camera, VkExtent2D extent, const FrameLights& lights,
                                  const HairMaterial& material, const LookSettings& look,
                                  std::uint32_t verticesPerStrand, const OpacitySettings& opacity);
+// A view's subpixel jitter (pixels, x right, y down) moved into `frame.proj`, and the previous frame's
+// unjittered proj * view for motion vectors (none: makeRenderFrame's, this frame's own: no camera motion).
+void setViewMotion(gpu::RenderFrame& frame, VkExtent2D extent, const glm::vec2& jitter,
+                   const std::optional<glm::mat4>& previousViewProj);
 }  // namespace hp::render

@@ -57,6 +57,9 @@ const vk::Binding kBindings[] = {
     {gpu::RASTER_BINDING_SHADE_ARGS, kStorage, kCompute},
     {gpu::RENDER_BINDING_BOUNCE_FLUX, kSampled, kCompute},
     {gpu::RENDER_BINDING_BOUNCE_POSITION, kSampled, kCompute},
+    {gpu::RASTER_BINDING_PREVIOUS, kStorage, kCompute},
+    {gpu::RASTER_BINDING_MOTION, kStorage, kCompute},
+    {gpu::RASTER_BINDING_MOTION_OUTPUT, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, kCompute},
 };
 constexpr VkBufferUsageFlags kStorageUsage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
 constexpr VkBufferUsageFlags kArmedUsage =
@@ -148,6 +151,7 @@ StrandRasterPass::StrandRasterPass(const vk::Context& ctx, std::span<const Raste
   shadeFlags_ = deviceBuffer(ctx, vertices * 4, kArmedUsage, "shade flags", limit);
   shadeList_ = deviceBuffer(ctx, vertices * 4, kStorageUsage, "shade list", limit);
   shadeArgs_ = deviceBuffer(ctx, chunks * 16, kArmedUsage | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, "shade dispatch", limit);
+  motion_ = deviceBuffer(ctx, settings.motion ? vertices * 4 : 16, kStorageUsage, "vertex motion", limit);
   state_ = deviceBuffer(ctx, sizeof(gpu::RasterState), kArmedUsage, "state", limit);
   counts_ = deviceBuffer(ctx, tiles * gpu::RASTER_DEPTH_BINS * 4, kArmedUsage, "key counts", limit);
   keys_ = deviceBuffer(ctx, tiles * gpu::RASTER_DEPTH_BINS * 8, kStorageUsage, "keys", limit);
@@ -158,6 +162,7 @@ StrandRasterPass::StrandRasterPass(const vk::Context& ctx, std::span<const Raste
   output_ = outputImage(ctx, extent, true, VK_FORMAT_R16G16B16A16_SFLOAT, "raster hair image");
   nearOutput_ = outputImage(ctx, extent, multisampled(), VK_FORMAT_R16G16B16A16_SFLOAT, "raster hair image (near layer)");
   nearMask_ = outputImage(ctx, extent, multisampled(), VK_FORMAT_R32_UINT, "raster near-layer sample mask");
+  motionOutput_ = outputImage(ctx, extent, settings.motion, VK_FORMAT_R16G16_SFLOAT, "raster hair motion");
   sampler_ = vk::Sampler(ctx, "raster depth sampler", VK_FILTER_NEAREST);  // D32 cannot filter
   const gpu::RasterState armed = armedState();
   vk::uploadBytes(ctx, state_, &armed, sizeof(armed), vk::BufferUse::ComputeWrite);
@@ -166,7 +171,9 @@ StrandRasterPass::StrandRasterPass(const vk::Context& ctx, std::span<const Raste
   const auto pipeline = [&](const char* shader, std::uint32_t size, const char* name) {
     return vk::ComputePipeline(ctx, shader, size, {setLayout}, 0, name, {}, cache);
   };
-  project_ = pipeline("raster_project.comp", gpu::RASTER_WORKGROUP_SIZE, "raster project");
+  const std::vector<std::uint32_t> motion = {settings.motion ? 1u : 0u};  // constant_id 0: MOTION
+  project_ = vk::ComputePipeline(ctx, "raster_project.comp", gpu::RASTER_WORKGROUP_SIZE, {setLayout}, 0,
+                                 "raster project", motion, cache);
   shade_ = pipeline("raster_shade.comp", gpu::RASTER_WORKGROUP_SIZE, "raster shade");
   tileDepthPipeline_ = pipeline(multisampled() ? "raster_tile_depth_ms.comp" : "raster_tile_depth.comp",
                                 gpu::RASTER_WORKGROUP_SIZE, "raster tile depth");
@@ -176,7 +183,8 @@ StrandRasterPass::StrandRasterPass(const vk::Context& ctx, std::span<const Raste
                                  {gpu::RASTER_MODE_SCATTER}, cache);
   scanTiles_ = pipeline("raster_scan_tiles.comp", gpu::RASTER_SCAN_SIZE, "raster scan tiles");
   scanBlocks_ = pipeline("raster_scan_blocks.comp", gpu::RASTER_SCAN_SIZE, "raster scan blocks");
-  fine_ = pipeline(multisampled() ? "raster_fine_ms.comp" : "raster_fine.comp", gpu::RASTER_FINE_SIZE, "raster fine");
+  fine_ = vk::ComputePipeline(ctx, multisampled() ? "raster_fine_ms.comp" : "raster_fine.comp", gpu::RASTER_FINE_SIZE,
+                              {setLayout}, 0, "raster fine", motion, cache);
 }
 
 void StrandRasterPass::bind(std::span<const RasterSource> sources) {
@@ -220,6 +228,10 @@ void StrandRasterPass::writeChunkSet(const vk::DescriptorSet& set, const Shading
   set.writeStorageBuffer(gpu::RENDER_BINDING_POSITIONS, c.positions.handle());
   set.writeStorageBuffer(gpu::RENDER_BINDING_TANGENTS, c.tangents.handle());
   set.writeStorageBuffer(gpu::RENDER_BINDING_ATTRIBUTES, c.attributes.handle());
+  // Without previous positions the current ones stand in (motion from the camera only).
+  set.writeStorageBuffer(gpu::RASTER_BINDING_PREVIOUS, (c.previous ? c.previous : c.positions).handle());
+  set.writeStorageBuffer(gpu::RASTER_BINDING_MOTION, motion_.handle());
+  set.writeStorageImage(gpu::RASTER_BINDING_MOTION_OUTPUT, motionOutput_.view());
   for (const auto& [binding, buffer] :
        {std::pair{gpu::RASTER_BINDING_SCREEN, &screen_}, {gpu::RASTER_BINDING_COLORS, &colors_},
         {gpu::RASTER_BINDING_STATE, &state_}, {gpu::RASTER_BINDING_COUNTS, &counts_}, {gpu::RASTER_BINDING_KEYS, &keys_},
@@ -372,6 +384,19 @@ std::vector<float> StrandRasterPass::readCoverage() const {
     coverage[i] = nearShare * near[i] + (1.0f - nearShare) * coverage[i];
   }
   return coverage;
+}
+
+std::vector<glm::vec2> StrandRasterPass::readMotion() const {
+  if (!settings_.motion) throw Error("compute raster: readMotion() needs RasterSettings::motion");
+  const std::size_t pixels = std::size_t(extent_.width) * extent_.height;
+  const std::vector<std::byte> bytes = vk::readbackImage(ctx_, motionOutput_, vk::ImageUse::FragmentSampled);
+  std::vector<glm::vec2> motion(pixels);
+  for (std::size_t i = 0; i < pixels; ++i) {
+    std::uint16_t half[2];
+    std::memcpy(half, bytes.data() + i * sizeof(half), sizeof(half));
+    motion[i] = {shading::halfToFloat(half[0]), shading::halfToFloat(half[1])};
+  }
+  return motion;
 }
 
 RasterStats StrandRasterPass::readStats() const {

@@ -14,6 +14,9 @@
 //            back until T < 1/255, into output(): RGBA16F, premultiplied radiance, alpha = 1 - T. With a
 //            multisampled head depth (headSamples > 1) also nearOutput() and nearMask(): the hair in front
 //            of every head sample and the samples that take it (shaders/shared/raster.h, the two layers).
+//            With settings.motion also motionOutput(): RG16F, the hair's coverage-weighted screen motion in
+//            pixels (current unjittered minus previous; StrandChunk::previous and the frame block's
+//            previousViewProj), 0 without hair.
 // The pass owns every buffer and image it writes and the barriers between its own steps. The frame
 // recorder guarantees before record(): strand buffers, the frame block, LightSpace and the opacity maps
 // visible to compute reads (maps in ImageUse::ComputeSampled), the depth image given to setDepth() in
@@ -37,6 +40,7 @@
 namespace hp::compute {
 struct RasterSettings {
   std::uint32_t tileBudget = 16384;  // list entries kept per 8x8 tile, [1, 1<<24]
+  bool motion = false;               // write motion vectors (motionOutput)
   void validate() const;
 };
 
@@ -92,6 +96,8 @@ class StrandRasterPass {
   // The near layer and its sample mask (R32_UINT); 1 x 1 and never written for a single-sample head depth.
   const vk::Image& nearOutput() const { return nearOutput_; }
   const vk::Image& nearMask() const { return nearMask_; }
+  // 1 x 1 and never written without settings.motion.
+  const vk::Image& motionOutput() const { return motionOutput_; }
   bool multisampled() const { return headSamples_ > 1; }
   VkExtent2D extent() const { return extent_; }
   std::uint32_t capacity() const { return capacity_; }
@@ -100,6 +106,8 @@ class StrandRasterPass {
   // Blocking readback of the last frame's hair coverage per pixel (rows top to bottom), averaged over the
   // head's samples: the alpha of the layer each sample takes. Outside the frame loop, after record().
   std::vector<float> readCoverage() const;
+  // Blocking readback of the last frame's motion (x, y per pixel, rows top to bottom); settings.motion only.
+  std::vector<glm::vec2> readMotion() const;
 
  private:
   struct Chunk {
@@ -109,7 +117,7 @@ class StrandRasterPass {
     std::uint32_t source;
     std::uint32_t verticesPerStrand;
   };
-  std::array<const vk::Image*, 3> outputs() const { return {&output_, &nearOutput_, &nearMask_}; }
+  std::array<const vk::Image*, 4> outputs() const { return {&output_, &nearOutput_, &nearMask_, &motionOutput_}; }
   void recordArm(VkCommandBuffer cmd) const;
   void writeChunkSet(const vk::DescriptorSet& set, const ShadingWriter& shading, const StrandChunk& c,
                      const vk::Buffer& params) const;
@@ -128,8 +136,8 @@ class StrandRasterPass {
   std::uint32_t tilesX_, tilesY_, capacity_ = 0;
   std::vector<std::uint32_t> sourceVertices_;  // render vertices of each source (bind() must match)
   vk::Buffer screen_, colors_, state_, counts_, keys_, tiles_, blocks_, list_, tileDepth_;
-  vk::Buffer shadeFlags_, shadeList_, shadeArgs_;
-  vk::Image output_, nearOutput_, nearMask_;
+  vk::Buffer shadeFlags_, shadeList_, shadeArgs_, motion_;
+  vk::Image output_, nearOutput_, nearMask_, motionOutput_;
   vk::Sampler sampler_;
   VkImageView depth_ = VK_NULL_HANDLE;
   std::vector<Chunk> chunks_;

@@ -9,6 +9,14 @@
 #include "shaders/shared/render.h"
 
 namespace hp {
+namespace {
+compute::RasterSettings rasterSettingsOf(const RendererSettings& settings) {
+  compute::RasterSettings r = settings.rasterSettings;
+  r.motion = settings.motionVectors;
+  return r;
+}
+}  // namespace
+
 std::vector<vk::Buffer> ComputeRaster::makeFrameBlocks(const vk::Context& ctx, std::size_t count) {
   std::vector<vk::Buffer> frames;
   for (std::size_t i = 0; i < count; ++i)
@@ -25,7 +33,7 @@ ComputeRaster::ComputeRaster(const vk::Context& ctx, const RendererSettings& set
       instances_(instances.begin(), instances.end()),
       frames_(makeFrameBlocks(ctx, instances.size())),
       depth_(depth),
-      pass_(ctx, sources(), extent, settings.rasterSettings, std::uint32_t(settings.formats.samples), cache),
+      pass_(ctx, sources(), extent, rasterSettingsOf(settings), std::uint32_t(settings.formats.samples), cache),
       composite_(ctx, settings.formats, cache) {
   pass_.setDepth(depth);
   composite_.setInput(pass_.output().view(), pass_.nearOutput().view(), pass_.nearMask().view());
@@ -70,6 +78,7 @@ std::vector<std::uint32_t> ComputeRaster::recordFrameBlocks(VkCommandBuffer cmd,
     gpu::RenderFrame frame = render::makeRenderFrame(view.camera, view.extent, lights, instance.settings().material,
                                                      lodLook(instance.settings().look, fraction),
                                                      instance.strands().layout().verticesPerStrand, shadows_.settings());
+    render::setViewMotion(frame, view.extent, view.jitter, view.previousViewProj);
     const VkBuffer block = frames_[i].handle();
     vk::bufferBarrier(ctx_, cmd, block, vk::BufferUse::ComputeRead, vk::BufferUse::TransferDst);
     ctx_.fn().vkCmdUpdateBuffer(cmd, block, 0, sizeof(frame), &frame);

@@ -39,6 +39,8 @@ class ComputeRaster {
   VkExtent2D extent() const { return pass_.extent(); }
   VkImageView depth() const { return depth_; }
   const vk::Image& image() const { return pass_.output(); }
+  const vk::Image& motionImage() const { return pass_.motionOutput(); }
+  std::vector<glm::vec2> readMotion() const { return pass_.readMotion(); }
   compute::RasterStats readStats() const { return pass_.readStats(); }
   std::vector<float> readCoverage() const { return pass_.readCoverage(); }
 

@@ -7,6 +7,21 @@
 #include "shaders/shared/opacity.h"
 
 namespace hp {
+namespace {
+// The positions into the previous positions of the work items whose `primed` is `before`, with the barriers
+// around the copies: the positions' last compute write and the previous positions' last read (the last
+// frame's compute raster) before them, their read of the positions before interpolate overwrites them.
+void recordKeepPrevious(const vk::Context& ctx, VkCommandBuffer cmd, std::span<const UpdateWork> work, bool before) {
+  const auto copies = [&](const UpdateWork& w) { return w.strands && w.strands->keepsPrevious() && w.primed == before; };
+  if (std::none_of(work.begin(), work.end(), copies)) return;
+  vk::memoryBarrier(ctx, cmd, vk::BufferUse::ComputeWrite, vk::BufferUse::TransferSrc);
+  vk::memoryBarrier(ctx, cmd, vk::BufferUse::ComputeRead, vk::BufferUse::TransferDst);
+  for (const UpdateWork& w : work)
+    if (copies(w)) w.strands->recordKeepPrevious(ctx, cmd);
+  vk::memoryBarrier(ctx, cmd, vk::BufferUse::TransferSrc, vk::BufferUse::ComputeWrite);
+}
+}  // namespace
+
 void recordUpdatePasses(const vk::Context& ctx, VkCommandBuffer cmd, std::span<const UpdateWork> work,
                         vk::GpuProfiler* profiler) {
   // The previous frame drew the strands and chained compute passes over the same buffers.
@@ -15,8 +30,11 @@ void recordUpdatePasses(const vk::Context& ctx, VkCommandBuffer cmd, std::span<c
   for (const UpdateWork& w : work) w.simulate->record(cmd, w.motion, profiler);
   vk::memoryBarrier(ctx, cmd, vk::BufferUse::ComputeWrite, vk::BufferUse::ComputeRead);
   for (const UpdateWork& w : work) w.tessellate->record(cmd, profiler);
+  recordKeepPrevious(ctx, cmd, work, true);  // the last frame's positions become the previous ones
   vk::memoryBarrier(ctx, cmd, vk::BufferUse::ComputeWrite, vk::BufferUse::ComputeRead);
   for (const UpdateWork& w : work) w.interpolate->record(cmd, profiler);
+  recordKeepPrevious(ctx, cmd, work, false);  // a first frame: no motion
+  vk::memoryBarrier(ctx, cmd, vk::BufferUse::TransferDst, vk::BufferUse::ComputeRead);  // the raster reads them
 }
 
 void makeStrandsDrawable(const vk::Context& ctx, VkCommandBuffer cmd) {

@@ -2,9 +2,10 @@
 // Contract: the barriers between hairpipe's passes, in one place (the passes insert none). The Renderer
 // records through these; they are public so tests can drive the passes over hand-made strands with the
 // same synchronization.
-//   recordUpdatePasses   simulate -> tessellate -> interpolate of every instance, batched per pass.
+//   recordUpdatePasses   simulate -> tessellate -> interpolate of every instance, batched per pass, with
+//                        the copies of the positions into the previous positions where kept.
 //                        Before: nothing (the previous frame's draws and compute are ordered here).
-//                        After: render strands in ComputeWrite.
+//                        After: render strands in ComputeWrite, previous positions in TransferDst.
 //   recordShadowPasses   bounds of every caster into the shared LightSpace, one finalize, then every
 //                        caster's strands and head into the shared opacity maps (drawn, or splatted in
 //                        compute and resolved: OpacitySettings::raster). The strand positions'
@@ -32,6 +33,10 @@ struct UpdateWork {
   HeadMotion motion;
   const compute::TessellatePass* tessellate;
   const compute::InterpolatePass* interpolate;
+  // Buffers that keep previous positions (StrandBuffers::keepsPrevious), or null; `primed`: they hold a
+  // frame, so the copy goes before interpolate (otherwise after it: no motion on a first frame).
+  const compute::StrandBuffers* strands = nullptr;
+  bool primed = false;
 };
 
 struct ShadowCaster {

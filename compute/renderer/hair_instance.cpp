@@ -19,6 +19,12 @@ void checkFinite(const glm::mat4& m, const char* what) {
   if (!allFinite(m)) throw Error(std::string(what) + " must be finite");
 }
 
+// Motion vectors read the previous frame's positions: the strand buffers keep them.
+compute::StrandOptions strandOptions(const Renderer& r, compute::StrandOptions options) {
+  options.previousPositions = options.previousPositions || r.settings().motionVectors;
+  return options;
+}
+
 std::uint32_t alignUp(std::size_t size, VkDeviceSize alignment) {
   return static_cast<std::uint32_t>((size + alignment - 1) / alignment * alignment);
 }
@@ -26,7 +32,7 @@ std::uint32_t alignUp(std::size_t size, VkDeviceSize alignment) {
 
 HairInstance::Geometry::Geometry(Renderer& r, const SimulatePass& sim, const InterpolationTopology& topology,
                                  const HeadMesh& head, const InstanceSettings& s)
-    : buffers(r.context(), sim.guideCount(), sim.particlesPerGuide(), topology, s.strands),
+    : buffers(r.context(), sim.guideCount(), sim.particlesPerGuide(), topology, strandOptions(r, s.strands)),
       tessellate(r.context(), sim.positions(), buffers, &r.pipelines()),
       interpolate(r.context(), buffers, &r.pipelines()),
       bounds(r.context(), buffers, r.shadows().lightSpace(), &r.pipelines()),

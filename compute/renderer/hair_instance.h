@@ -72,6 +72,7 @@ class HairInstance {
     compute::InterpolatePass interpolate;
     compute::BoundsPass bounds;
     render::OpacityPass opacity;
+    bool previousKept = false;  // the buffers' previous positions hold a frame (recordUpdate copied them once)
     Geometry(Renderer& r, const SimulatePass& sim, const InterpolationTopology& topology, const HeadMesh& head,
              const InstanceSettings& s);
   };

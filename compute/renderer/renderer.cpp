@@ -125,6 +125,14 @@ void Renderer::recordComposite(VkCommandBuffer cmd, VkExtent2D extent, vk::GpuPr
 const vk::Image& Renderer::rasterImage() const { return target().image(); }
 
 compute::RasterStats Renderer::rasterStats() const { return target().readStats(); }
+const vk::Image& Renderer::motionImage() const {
+  if (!settings_.motionVectors) throw Error("Renderer::motionImage: RendererSettings::motionVectors is off");
+  return target().motionImage();
+}
+std::vector<glm::vec2> Renderer::rasterMotion() const {
+  motionImage();  // the same refusals
+  return target().readMotion();
+}
 std::vector<float> Renderer::rasterCoverage() const { return target().readCoverage(); }
 
 std::shared_ptr<render::MarschnerTextures> Renderer::marschner(const HairMaterial& material, LutMode mode) {
@@ -173,8 +181,10 @@ void Renderer::recordUpdate(VkCommandBuffer cmd, std::uint64_t frame, std::span<
   std::vector<UpdateWork> work;
   work.reserve(instances.size());
   for (HairInstance* i : instances)
-    work.push_back({&i->simulate_, i->motion_, &i->geometry_->tessellate, &i->geometry_->interpolate});
+    work.push_back({&i->simulate_, i->motion_, &i->geometry_->tessellate, &i->geometry_->interpolate,
+                    &i->geometry_->buffers, i->geometry_->previousKept});
   recordUpdatePasses(ctx_, cmd, work, profiler);
+  for (HairInstance* i : instances) i->geometry_->previousKept = i->geometry_->buffers.keepsPrevious();
 }
 
 void Renderer::recordShadows(VkCommandBuffer cmd, std::uint64_t frame, std::span<const LightSpec> lights,
@@ -254,6 +264,7 @@ void Renderer::recordDraw(VkCommandBuffer cmd, std::uint64_t frame, const View& 
     *block = render::makeRenderFrame(view.camera, view.extent, lights, i->settings_.material,
                                      lodLook(i->settings_.look, fraction), i->strands().layout().verticesPerStrand,
                                      shadows_->settings());
+    render::setViewMotion(*block, view.extent, view.jitter, view.previousViewProj);
     const std::uint32_t offset = i->frameOffset(frame, view.index);
     if (profiler) profiler->begin(cmd, "head");
     i->head_->draw(cmd, view.extent, i->headToWorld(), offset);

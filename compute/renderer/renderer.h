@@ -95,6 +95,11 @@ class Renderer {
   // Blocking readback of the last frame's hair coverage per pixel (rows top to bottom), averaged over the
   // depth's samples (compute::StrandRasterPass::readCoverage).
   std::vector<float> rasterCoverage() const;
+  // With settings.motionVectors: the hair's motion image of the raster target (RG16F, pixels, current
+  // unjittered minus previous, coverage-weighted; 0 without hair), left by recordRaster in
+  // ImageUse::FragmentSampled like rasterImage(); and its blocking readback (x, y per pixel, rows top to bottom).
+  const vk::Image& motionImage() const;
+  std::vector<glm::vec2> rasterMotion() const;
 
   // Shadow tuning that keeps the maps' resolution and format (strand/head opacity, k, bias, on/off).
   void setOpacityTuning(const render::OpacitySettings& opacity);

@@ -67,6 +67,10 @@ void View::validate(std::uint32_t maxViews) const {
   if (!allFinite(camera.view) || !allFinite(camera.proj) || !std::isfinite(camera.fovY) ||
       !std::isfinite(glm::length(camera.position)))
     throw Error("the view's matrices, eye and fovY must be finite");
+  if (!(std::abs(jitter.x) <= 1.0f && std::abs(jitter.y) <= 1.0f))
+    throw Error("View.jitter must be finite, within [-1, 1] pixels, got (" + std::to_string(jitter.x) + ", " +
+                std::to_string(jitter.y) + ")");
+  if (previousViewProj && !allFinite(*previousViewProj)) throw Error("View.previousViewProj must be finite");
   if (index >= maxViews)
     throw Error("View.index " + std::to_string(index) + " is past RendererSettings.maxViewsPerFrame (" +
                 std::to_string(maxViews) + ")");

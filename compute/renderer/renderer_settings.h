@@ -5,6 +5,7 @@
 #include "hairpipe_volk.h"
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "compute/strands/scalp_input.h"
@@ -29,6 +30,9 @@ struct RendererSettings {
   // How many of a frame's lights cast hair shadows, [1, OPACITY_MAX_LIGHTS]: each owns opacity maps
   // (resolution^2 x 5 layers of the format), a LightSpace and a layer of the heads' depth map.
   std::uint32_t shadowedLights = 1;
+  // Motion vectors: every instance keeps its previous render positions (a copy per recordUpdate) and the
+  // compute raster target writes the hair's screen motion (Renderer::motionImage).
+  bool motionVectors = false;
   std::uint32_t framesInFlight = 2;   // [1, kMaxFramesInFlight]
   std::uint32_t maxViewsPerFrame = 4; // [1, kMaxViewsPerFrame]: draws of one frame with different cameras
   // How hair reaches the camera: Graphics (ribbons in recordDraw) or Compute (setRasterTarget,
@@ -73,6 +77,11 @@ struct View {
   bool lines = false;       // strands as 1-pixel lines instead of ribbons (debugging)
   std::uint32_t index = 0;  // which of the frame's views
   bool ribbons = true;      // false: heads only (the hair comes from the compute rasterizer)
+  // Subpixel jitter in pixels (x right, y down), each in [-1, 1]: hairpipe offsets its projection by it
+  // (heads and hair, both rasters); motion vectors leave it out.
+  glm::vec2 jitter{0.0f};
+  // The previous frame's unjittered proj * view, for motion vectors; none: the camera did not move.
+  std::optional<glm::mat4> previousViewProj;
   void validate(std::uint32_t maxViews) const;
 };
 }  // namespace hp

@@ -120,9 +120,20 @@ StrandBuffers::StrandBuffers(const vk::Context& ctx, std::uint32_t guideCount, s
     chunks_.push_back({range, deviceBuffer(ctx, strandBytes, "strand bindings" + tag),
                        deviceBuffer(ctx, vertexBytes, "strand positions" + tag),
                        deviceBuffer(ctx, vertexBytes, "strand tangents" + tag),
-                       deviceBuffer(ctx, VkDeviceSize(range.strandCount) * kVec4, "strand attributes" + tag)});
+                       deviceBuffer(ctx, VkDeviceSize(range.strandCount) * kVec4, "strand attributes" + tag),
+                       options.previousPositions ? deviceBuffer(ctx, vertexBytes, "strand previous positions" + tag)
+                                                 : vk::Buffer()});
   }
+  keepsPrevious_ = options.previousPositions;
   if (!layout_.guidesOnly) uploadTopology(ctx, topology);
+}
+
+void StrandBuffers::recordKeepPrevious(const vk::Context& ctx, VkCommandBuffer cmd) const {
+  if (!keepsPrevious_) return;
+  for (const StrandChunk& c : chunks_) {
+    const VkBufferCopy region{0, 0, c.positions.size()};
+    ctx.fn().vkCmdCopyBuffer(cmd, c.positions.handle(), c.previous.handle(), 1, &region);
+  }
 }
 
 void StrandBuffers::uploadTopology(const vk::Context& ctx, const InterpolationTopology& topology) {

@@ -35,6 +35,9 @@ struct StrandOptions {
   std::uint32_t verticesPerStrand = kDefaultVerticesPerStrand;  // Q, in [particlesPerGuide, 256]
   bool guidesOnly = false;       // debug: the render strands are the smoothed guides, one per guide
   VkDeviceSize maxChunkBytes = 0;  // 0: maxStorageBufferRange; smaller forces more chunks (tests)
+  // Keep each chunk's previous render positions (StrandChunk::previous, copied by keepPrevious): the
+  // compute raster's motion vectors read them.
+  bool previousPositions = false;
 };
 
 struct ChunkRange {
@@ -81,6 +84,8 @@ struct StrandChunk {
   vk::Buffer positions;   // vec4[count * Q]
   vk::Buffer tangents;    // vec4[count * Q]
   vk::Buffer attributes;  // StrandAttributes[count]
+  vk::Buffer previous;    // vec4[count * Q]: the positions of the frame before (StrandOptions::previousPositions;
+                          // empty otherwise)
 };
 
 class StrandBuffers {
@@ -93,6 +98,12 @@ class StrandBuffers {
   const vk::Buffer& guideTangents() const { return guideTangents_; }    // vec4[G * Q]
   const vk::Buffer& triangles() const { return triangles_; }            // uvec4[T] (guides only: placeholder)
   std::span<const StrandChunk> chunks() const { return chunks_; }
+  bool keepsPrevious() const { return keepsPrevious_; }
+  // With previousPositions: copies the positions into `previous` (vkCmdCopyBuffer per chunk). The caller
+  // records it before this frame's interpolate (the last frame's positions become the previous ones), or on
+  // the buffers' first frame after it (no motion yet), with the barriers: the positions' last write before
+  // TransferSrc, the previous positions' last read before TransferDst.
+  void recordKeepPrevious(const vk::Context& ctx, VkCommandBuffer cmd) const;
 
  private:
   void uploadTopology(const vk::Context& ctx, const InterpolationTopology& topology);
@@ -102,6 +113,7 @@ class StrandBuffers {
   vk::Buffer guideTangents_;
   vk::Buffer triangles_;
   std::vector<StrandChunk> chunks_;
+  bool keepsPrevious_ = false;
 };
 
 // Host copies, for tests and tools outside the frame loop. `before` is the buffers' last GPU use.

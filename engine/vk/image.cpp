@@ -21,6 +21,7 @@ std::uint32_t formatBytesPerPixel(VkFormat format) {
     case VK_FORMAT_R32_SFLOAT:
     case VK_FORMAT_R32_UINT:
     case VK_FORMAT_D32_SFLOAT:
+    case VK_FORMAT_R16G16_SFLOAT:
       return 4;
     case VK_FORMAT_R16G16B16A16_SFLOAT: return 8;
     case VK_FORMAT_R32G32B32A32_SFLOAT: return 16;

@@ -73,19 +73,20 @@ FrameResult benchFrame(const vk::Context& ctx, const FrameCase& c) {
   settings.look.skinBounce = c.skinBounce;
   settings.look.scattering = c.scattering;
   settings.lutMode = c.lutMode;
+  settings.shadowedLights = shadowSlotsFor(scene.lights);
   if (c.lodFraction < 1.0f) settings.lod = {true, 0.0f, 1e-3f, c.lodFraction};  // that fraction at any distance
   HairSystem hair(ctx, asset, settings);
   renderer.attach(hair);
   DrawView view;
   view.extent = renderer.extent();
   view.camera = orbitCamera(scene.camera, float(c.width) / float(c.height));
-  view.light = scene.light;
+  view.lights = scene.lights;
   vk::CopyReference copy(ctx, kCopyBytes);
   std::map<std::string, std::vector<double>> times;
   std::vector<double> hostMs;
   std::vector<double> residentAfter;  // after each frame, warm-up included
   for (std::uint32_t f = 0; f <= c.frames; ++f) {  // frame 0 warms up
-    vk::GpuProfiler profiler(ctx, 24, "bench frame");
+    vk::GpuProfiler profiler(ctx, 64, "bench frame");  // scopes: the passes, three per shadowed light
     const auto start = std::chrono::steady_clock::now();
     vk::submitAndWait(ctx, [&](VkCommandBuffer cmd) {
       profiler.reset(cmd);

@@ -3,6 +3,7 @@
 // pass. --dump-opacity DIR also writes the 16 opacity slices (PFM), a contact sheet (PNG) and the
 // slice depths (JSON); --export-frame DIR writes the frame for an offline renderer (frame_export.h);
 // --sequence DIR renders every frame of the animation instead (render_sequence.h).
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 
@@ -30,6 +31,7 @@ struct RenderOptions {
   std::string dumpOpacity;
   std::string dumpStrands;
   std::string exportFrame;
+  bool motionVectors = false;
   hp::cli::SequenceOptions sequence;
 };
 
@@ -51,14 +53,17 @@ void exportFrame(const std::filesystem::path& dir, const hp::RenderRequest& requ
   hp::writeFrameExport(dir, exported);
   hp::writePfm(dir / hp::FrameExportFiles::realtime, frame.linear);
   if (frame.hairAlpha.width > 0) hp::writePfm(dir / hp::FrameExportFiles::realtimeHairAlpha, frame.hairAlpha);
+  if (frame.motion.width > 0) hp::writePfm(dir / hp::FrameExportFiles::realtimeMotion, frame.motion);
 }
 
 void runRender(const RenderOptions& o, const CLI::App& cmd) {
   hp::RenderRequest request = hp::cli::makeRenderRequest(o.frame, cmd);
   if (o.sequence.fps) request.scene.simulation.dt = hp::cli::stepOfFps(*o.sequence.fps);
   if (!o.sequence.dir.empty()) {
-    if (cmd.count("--out") || !o.dumpOpacity.empty() || !o.dumpStrands.empty() || !o.exportFrame.empty())
-      throw hp::Error("--sequence writes DIR/frame_NNNN.png: --out, the dumps and --export-frame do not apply");
+    if (cmd.count("--out") || !o.dumpOpacity.empty() || !o.dumpStrands.empty() || !o.exportFrame.empty() ||
+        o.motionVectors)
+      throw hp::Error("--sequence writes DIR/frame_NNNN.png: --out, the dumps, --export-frame and --motion-vectors "
+                      "do not apply");
     hp::cli::checkSequence(o.frame.frames);
     hp::cli::prepareSequenceOutputs(o.sequence, hp::cli::sceneInputs(o.frame.scene, request.scene));
     hp::HairAsset asset = hp::buildSceneAsset(request.scene);
@@ -70,9 +75,15 @@ void runRender(const RenderOptions& o, const CLI::App& cmd) {
   if (!o.sequence.contactSheet.empty()) throw hp::Error("--contact-sheet needs --sequence DIR");
   if (!o.dumpOpacity.empty() && !request.opacity.enabled)
     throw hp::Error("--dump-opacity needs opacity shadows (drop --no-shadows)");
+  const auto casts = [](const hp::LightSpec& l) { return l.shadows; };
+  if (!o.dumpOpacity.empty() && std::none_of(request.scene.lights.begin(), request.scene.lights.end(), casts))
+    throw hp::Error("--dump-opacity needs a light that casts shadows (shadows=on)");
   request.captureOpacity = !o.dumpOpacity.empty();
   request.captureStrands = !o.dumpStrands.empty();
   request.captureFrame = !o.exportFrame.empty();
+  if (o.motionVectors && o.exportFrame.empty())
+    throw hp::Error("--motion-vectors writes realtime_motion.pfm into the --export-frame folder: give --export-frame DIR");
+  request.motionVectors = o.motionVectors;
   prepareOutputs(o, request.scene);
   hp::HairAsset asset = hp::buildSceneAsset(request.scene);
   const nlohmann::json guessed = hp::cli::frameCamera(request.scene, asset);
@@ -128,6 +139,9 @@ void setupRender(CLI::App& app) {
   cmd->add_option("--export-frame", o->exportFrame,
                   "Write the frame for an offline renderer to DIR: strands.hair, head.obj, frame.json "
                   "(docs/FRAME_EXPORT.md), and the real-time image as realtime.pfm + realtime_hair_alpha.pfm");
+  cmd->add_flag("--motion-vectors", o->motionVectors,
+                "With --export-frame (compute raster): also the hair's screen motion of the frame's own simulation "
+                "step, realtime_motion.pfm (x, y pixels, current minus previous; coverage-weighted)");
   cmd->add_option("--out", o->out, "Output PNG (default out/hair.png)");
   hp::cli::addSequenceOptions(*cmd, o->sequence);
   cmd->add_flag("--json", o->json, "Print JSON");

@@ -4,7 +4,9 @@
 #include <iostream>
 
 #include "engine/core/error.h"
+#include "engine/core/hair/input_file.h"
 #include "samples/tools/host/camera_fit.h"
+#include "samples/tools/host/light_option.h"
 #include "samples/cli/material_options.h"
 
 namespace hp::cli {
@@ -46,8 +48,27 @@ glm::vec3 vec3Option(const std::vector<float>& v, const char* name) {
   return p;
 }
 
-// --spot POS [--spot-target P] [--spot-angle DEG] [--spot-range R]: a spot light aimed at the
-// target (default: the camera's target); each bad value names its option.
+// The light the single-light options set: the first one (a scene with no lights gets the default sun).
+hp::LightSpec& firstLight(hp::Scene& scene) {
+  if (scene.lights.empty()) scene.lights.emplace_back();
+  return scene.lights.front();
+}
+
+// --light-dir X,Y,Z: the first light becomes directional, toward X,Y,Z (its colour and intensity stay).
+void applyLightDir(const FrameOptions& o, hp::Scene& scene) {
+  if (!o.lightDir) return;
+  if (o.lightDir->size() != 3) throw hp::Error("--light-dir takes X,Y,Z");
+  const glm::vec3 d{(*o.lightDir)[0], (*o.lightDir)[1], (*o.lightDir)[2]};
+  if (!(glm::length(d) > 1e-6f) || !std::isfinite(glm::length(d)))
+    throw hp::Error("--light-dir must be a non-zero finite vector");
+  hp::LightSpec& light = firstLight(scene);
+  light.direction = glm::normalize(d);
+  light.type = hp::LightSpec::Type::Directional;  // overrides a scene's spot or point light
+}
+
+// --spot POS [--spot-target P] [--spot-angle DEG] [--spot-range R]: the first light becomes a spot aimed
+// at the target (default: the camera's target), keeping its colour, intensity and shadows; each bad value
+// names its option.
 void applySpot(const FrameOptions& o, hp::Scene& scene) {
   if (!o.spot) {
     if (o.spotTarget || o.spotAngle || o.spotRange) throw hp::Error("--spot-target/--spot-angle/--spot-range need --spot");
@@ -62,13 +83,47 @@ void applySpot(const FrameOptions& o, hp::Scene& scene) {
   const float range = o.spotRange.value_or(0.0f);
   if (!(std::isfinite(range) && range >= 0.0f)) throw hp::Error("--spot-range must be >= 0 (0: no distance falloff)");
   hp::LightSpec light = hp::LightSpec::makeSpot(position, target, angle);
+  hp::LightSpec& first = firstLight(scene);
   light.range = range;
-  light.color = scene.light.color;
-  light.intensity = scene.light.intensity;
-  scene.light = light;
+  light.color = first.color;
+  light.intensity = first.intensity;
+  light.shadows = first.shadows;
+  first = light;
+}
+
+// --light options first (they replace the scene's lights); then --light-dir and --spot change the first
+// light, as they change a scene's.
+void applyLights(const FrameOptions& o, hp::Scene& scene) {
+  replaceLights(o.lights, scene);
+  applyLightDir(o, scene);
+  applySpot(o, scene);
+  hp::validateLights(scene.lights);
 }
 
 }  // namespace
+
+void replaceLights(const std::vector<std::string>& specs, hp::Scene& scene) {
+  if (specs.empty()) return;
+  if (specs.size() > hp::kMaxSceneLights)
+    throw hp::Error("--light is given " + std::to_string(specs.size()) + " times: at most " +
+                    std::to_string(hp::kMaxSceneLights) + " lights");
+  scene.lights.clear();
+  for (const std::string& spec : specs) {
+    try {
+      scene.lights.push_back(hp::parseLightOption(spec, scene.camera.target));
+    } catch (const hp::Error& e) {
+      throw hp::Error("--light '" + hp::excerpt(spec, 120) + "': " + e.what());
+    }
+  }
+}
+
+void addLightOption(CLI::App& cmd, std::vector<std::string>& specs) {
+  cmd.add_option("--light", specs,
+                 std::string("A light, repeatable (up to 8; replaces the scene's lights, the first 4 with shadows "
+                             "get shadow maps): ") + hp::lightOptionSyntax() +
+                     "; e.g. spot:pos=0.3,0.4,0.6:cone=35:range=0.8 (target default: the camera target)")
+      ->allow_extra_args(false);
+}
 
 hp::RenderRequest makeRenderRequest(const FrameOptions& o, const CLI::App& cmd) {
   hp::RenderRequest r;
@@ -81,19 +136,11 @@ hp::RenderRequest makeRenderRequest(const FrameOptions& o, const CLI::App& cmd) 
     r.scene.density.totalStrands = *o.density;
     r.scene.density.validate();
   }
-  if (o.lightDir) {
-    if (o.lightDir->size() != 3) throw hp::Error("--light-dir takes X,Y,Z");
-    r.scene.light.direction = {(*o.lightDir)[0], (*o.lightDir)[1], (*o.lightDir)[2]};
-    if (!(glm::length(r.scene.light.direction) > 1e-6f) || !std::isfinite(glm::length(r.scene.light.direction)))
-      throw hp::Error("--light-dir must be a non-zero finite vector");
-    r.scene.light.direction = glm::normalize(r.scene.light.direction);
-    r.scene.light.type = hp::LightSpec::Type::Directional;  // overrides a scene's spot
-  }
   if (o.orbit) {
     if (!std::isfinite(*o.orbit)) throw hp::Error("--camera-orbit must be a finite angle in degrees, got " + std::to_string(*o.orbit));
     r.scene.camera.orbitDeg = *o.orbit;
   }
-  applySpot(o, r.scene);
+  applyLights(o, r.scene);
   if (cmd.count("--eta") + cmd.count("--absorption") + cmd.count("--color") + cmd.count("--alpha-r") +
           cmd.count("--beta-r") + cmd.count("--kg") + cmd.count("--wc") + cmd.count("--deta") + cmd.count("--dhm") +
               cmd.count("--beta-n") > 0)
@@ -176,8 +223,10 @@ void addFrameOptions(CLI::App& cmd, FrameOptions& o) {
                  "(default: scene, auto = compute)");
   cmd.add_option("--tile-budget", o.tileBudget, "Compute raster: list entries kept per 8x8 tile (default 16384)");
   cmd.add_option("--density", o.density, "Render strands in total (default: scene, 20000)");
-  cmd.add_option("--light-dir", o.lightDir, "Direction toward the light, X,Y,Z")->delimiter(',')->expected(3);
-  cmd.add_option("--spot", o.spot, "Spot light at X,Y,Z instead of the directional light")->delimiter(',')->expected(3);
+  addLightOption(cmd, o.lights);
+  cmd.add_option("--light-dir", o.lightDir, "Direction toward the first light, X,Y,Z (it becomes directional)")
+      ->delimiter(',')->expected(3);
+  cmd.add_option("--spot", o.spot, "The first light becomes a spot at X,Y,Z")->delimiter(',')->expected(3);
   cmd.add_option("--spot-target", o.spotTarget, "Point the spot aims at, X,Y,Z (default: the camera target)")
       ->delimiter(',')->expected(3);
   cmd.add_option("--spot-angle", o.spotAngle, "Spot cone half-angle in degrees, (0, 80] (default 30)");

@@ -21,6 +21,7 @@ struct FrameOptions {
   HairMaterial material;
   std::uint32_t frames = 90;
   std::optional<std::uint32_t> width, height, msaa, density;
+  std::vector<std::string> lights;  // --light SPEC, repeatable (samples/tools/host/light_option.h)
   std::optional<std::vector<float>> lightDir, spot, spotTarget;
   std::optional<float> spotAngle, spotRange;
   std::optional<float> orbit;
@@ -44,6 +45,11 @@ struct FrameOptions {
 };
 
 void addFrameOptions(CLI::App& cmd, FrameOptions& o);
+// `--light SPEC` (repeatable; samples/tools/host/light_option.h), for the commands that take lights.
+void addLightOption(CLI::App& cmd, std::vector<std::string>& specs);
+// Given specs replace the scene's lights (spot targets default to its camera target); none: unchanged.
+// hp::Error naming the option, the spec and the bad key, or more than kMaxSceneLights.
+void replaceLights(const std::vector<std::string>& specs, Scene& scene);
 RenderRequest makeRenderRequest(const FrameOptions& o, const CLI::App& cmd);
 // A model loaded without a scene: frame the camera on its hair (said on stderr); returns what was
 // guessed (empty object: nothing). Throws when no guide particle is in view.

@@ -292,14 +292,14 @@ VkRenderingAttachmentInfo attachmentInfo(VkImageView view, VkImageLayout layout,
 // own rendering (its colour + depth attachments) with hairpipe's draw inside it. With the compute
 // rasterizer, the hair is drawn between that rendering and a second one of the same attachments.
 void recordFrame(VkCommandBuffer cmd, const App& app, hairpipe::Renderer& renderer, std::uint64_t frame,
-                 std::span<hairpipe::Instance* const> heads, const hairpipe::Light& light,
+                 std::span<hairpipe::Instance* const> heads, std::span<const hairpipe::Light> lights,
                  const hairpipe::View& view) {
   const bool compute = renderer.raster() == hairpipe::RasterMode::Compute;
   VkCommandBufferBeginInfo bi{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
   bi.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
   check(vkBeginCommandBuffer(cmd, &bi), "vkBeginCommandBuffer");
   check(renderer.recordUpdate(cmd, frame, heads));          // simulate, tessellate, interpolate
-  check(renderer.recordShadows(cmd, frame, light, heads));  // one opacity map set: heads shadow each other
+  check(renderer.recordShadows(cmd, frame, lights, heads));  // per shadowed light, one map set over all heads
   beginAttachments(cmd, app);
   VkRenderingAttachmentInfo color = attachmentInfo(app.color.view, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
                                                    VK_ATTACHMENT_STORE_OP_STORE, {{{0.2f, 0.25f, 0.3f, 1.0f}}});
@@ -370,6 +370,7 @@ void renderFrames(App& app, std::uint32_t frames, hairpipe::RasterMode raster) {
   rs.formats = {kColor, kDepth, VK_SAMPLE_COUNT_1_BIT};  // your attachments
   rs.framesInFlight = kFramesInFlight;
   rs.raster = raster;
+  rs.shadowedLights = 2;  // the key and the rim cast hair shadows
   hairpipe::Renderer renderer = take(hairpipe::Renderer::create(ctx, rs));
 
   // One asset (guides, head mesh, interpolation topology), two heads with their own state and material.
@@ -387,7 +388,19 @@ void renderFrames(App& app, std::uint32_t frames, hairpipe::RasterMode raster) {
 
   const hairpipe::View view = take(hairpipe::makeView(
       {{0.751f, 0.128f, 1.023f}, {0.16f, -0.08f, 0.0f}, {0.0f, 1.0f, 0.0f}, 0.6109f, 0.024f, 24.0f}, {kWidth, kHeight}));
-  const hairpipe::Light light;  // the default sun
+  // Your lights: a key (the default sun) and a cool rim from behind, both shadowed, and a warm point fill.
+  hairpipe::Light rim;
+  rim.direction = {-0.3939193f, 0.3939193f, -0.8304548f};
+  rim.color = {0.7f, 0.8f, 1.0f};
+  rim.intensity = 2.0f;
+  hairpipe::Light fill;
+  fill.type = hairpipe::Light::Type::Point;
+  fill.position = {-0.5f, 0.0f, 0.6f};
+  fill.range = 0.8f;
+  fill.color = {1.0f, 0.85f, 0.7f};
+  fill.intensity = 0.6f;
+  fill.shadows = false;
+  const hairpipe::Light lights[] = {hairpipe::Light{}, rim, fill};
   for (std::uint32_t f = 0; f < frames; ++f) {
     const std::uint32_t slot = f % kFramesInFlight;
     app.waitSlot(slot);  // frame f - kFramesInFlight is done: its slot and command buffer are free
@@ -395,7 +408,7 @@ void renderFrames(App& app, std::uint32_t frames, hairpipe::RasterMode raster) {
     const hairpipe::Mat4 bones[] = {toHairpipe(glm::mat4(1.0f)), toHairpipe(jawBone(pivot, t1))};
     check(jaw.setBones(bones));  // per-frame inputs: bones, colliders, motion
     check(other.setMotion({toHairpipe(rigidPlace * nod(t0)), toHairpipe(rigidPlace * nod(t1)), t0, false}));
-    recordFrame(app.cmds[slot], app, renderer, f, heads, light, view);
+    recordFrame(app.cmds[slot], app, renderer, f, heads, lights, view);
     app.submit(slot);
   }
   for (std::uint32_t slot = 0; slot < kFramesInFlight; ++slot) app.waitSlot(slot);

@@ -18,5 +18,6 @@ struct FrameCapture {
   CameraMatrices camera;
   LinearImage linear;     // RGB, radiance in the light's units, before exposure
   LinearImage hairAlpha;  // 1 channel; empty (0 x 0) with the graphics raster
+  LinearImage motion;     // 3 channels: the hair's screen motion x, y in pixels and 0; empty without motion vectors
 };
 }  // namespace hp

@@ -16,7 +16,7 @@
 namespace hp {
 namespace {
 constexpr const char* kFormat = "hairpipe-frame";
-constexpr std::uint32_t kVersion = 1;
+constexpr std::uint32_t kVersion = 2;  // 2: "lights", a list (point lights, shadows); 1: one "light", still read
 
 nlohmann::json vec(const glm::vec3& v) { return {v.x, v.y, v.z}; }
 nlohmann::json dvec(const glm::dvec3& v) { return {v.x, v.y, v.z}; }
@@ -56,10 +56,16 @@ void exportHead(ExportedFrame& out, const HeadMesh& head, const glm::mat4& headT
 }
 
 nlohmann::json lightJson(const LightSpec& l) {
-  return {{"type", l.type == LightSpec::Type::Spot ? "spot" : "directional"},
+  return {{"type", lightTypeName(l.type)},
           {"direction", vec(l.direction)}, {"color", vec(l.color)}, {"intensity", l.intensity},
           {"irradiance", vec(l.color * l.intensity)}, {"position", vec(l.position)},
-          {"cone_deg", l.coneDeg}, {"range", l.range}};
+          {"cone_deg", l.coneDeg}, {"range", l.range}, {"shadows", l.shadows}};
+}
+
+nlohmann::json lightsJson(const std::vector<LightSpec>& lights) {
+  nlohmann::json list = nlohmann::json::array();
+  for (const LightSpec& l : lights) list.push_back(lightJson(l));
+  return list;
 }
 
 nlohmann::json materialJson(const HairMaterial& m) {
@@ -73,7 +79,7 @@ nlohmann::json frameJson(const ExportedFrame& f) {
           {"files", {{"strands", FrameExportFiles::strands}, {"head", FrameExportFiles::head}}},
           {"camera", {{"position", vec(c.position)}, {"target", vec(c.target)}, {"up", vec(c.up)},
                       {"fov_y_deg", c.fovYDeg}, {"width", c.width}, {"height", c.height}}},
-          {"light", lightJson(f.light)},
+          {"lights", lightsJson(f.lights)},
           {"fibre", {{"model", f.fibreModel}, {"lut_mode", f.lutMode}, {"material", materialJson(f.material)},
                      {"albedo", vec(f.hairAlbedo)}}},
           {"skin", {{"color", vec(f.skinColor)}, {"wrap", f.wrap}}},
@@ -81,12 +87,14 @@ nlohmann::json frameJson(const ExportedFrame& f) {
           {"exposure", f.exposure}, {"tonemap", "filmic (shaders/shared/tonemap.h) then sRGB"}};
 }
 
-LightSpec readLight(JsonObject o) {
+// One light at `pointer`; "shadows" is absent from version 1 (every light cast shadows then).
+LightSpec readLight(JsonObject o, const std::string& pointer) {
   LightSpec l;
   std::string type;
   o.read("type", type);
-  if (type != "directional" && type != "spot") o.fail("type", "expected \"directional\" or \"spot\"");
-  l.type = type == "spot" ? LightSpec::Type::Spot : LightSpec::Type::Directional;
+  if (type == "spot") l.type = LightSpec::Type::Spot;
+  else if (type == "point") l.type = LightSpec::Type::Point;
+  else if (type != "directional") o.fail("type", "expected \"directional\", \"spot\" or \"point\"");
   o.read("direction", l.direction);
   o.read("color", l.color);
   o.read("intensity", l.intensity);
@@ -94,8 +102,13 @@ LightSpec readLight(JsonObject o) {
   o.read("position", l.position);
   o.read("cone_deg", l.coneDeg);
   o.read("range", l.range);
+  o.read("shadows", l.shadows);
   o.finish();
-  l.validate();
+  try {
+    l.validate();
+  } catch (const Error& e) {
+    throw Error(o.where(pointer) + ": " + e.what());
+  }
   return l;
 }
 
@@ -126,6 +139,21 @@ JsonObject required(JsonObject& parent, const char* key) {
   return *o;
 }
 
+// Version 1 holds one "light" object, version 2 a "lights" list (possibly empty).
+std::vector<LightSpec> readLights(JsonObject& o, std::uint32_t version) {
+  if (version == 1) return {readLight(required(o, "light"), o.pointer("light"))};
+  const nlohmann::json* list = o.array("lights");
+  if (!list) o.fail("lights", "missing");
+  if (list->size() > kMaxSceneLights)
+    o.fail("lights", "at most " + std::to_string(kMaxSceneLights) + " lights, got " + std::to_string(list->size()));
+  std::vector<LightSpec> lights;
+  for (std::size_t i = 0; i < list->size(); ++i) {
+    const std::string pointer = o.pointer("lights") + "/" + std::to_string(i);
+    lights.push_back(readLight(JsonObject((*list)[i], pointer, o.file()), pointer));
+  }
+  return lights;
+}
+
 void readCamera(JsonObject o, FrameCameraSpec& c) {
   o.read("position", c.position);
   o.read("target", c.target);
@@ -153,14 +181,15 @@ void readFrameJson(ExportedFrame& f, const std::filesystem::path& path) {
   std::uint32_t version = 0;
   o.read("format", format);
   o.read("version", version);
-  if (format != kFormat || version != kVersion) o.fail("format", "expected format \"hairpipe-frame\", version 1");
+  if (format != kFormat || version < 1 || version > kVersion)
+    o.fail("format", "expected format \"hairpipe-frame\", version 1 or 2");
   o.read("units", units);
   o.read("up", up);
   if (units != "metres" || up != "+y") o.fail("units", "expected units \"metres\" and up \"+y\"");
   o.value("files");
   o.value("tonemap");
   readCamera(required(o, "camera"), f.camera);
-  f.light = readLight(required(o, "light"));
+  f.lights = readLights(o, version);
   JsonObject fibre = required(o, "fibre");
   fibre.read("model", f.fibreModel);
   (void)reference::parseFibreModel(f.fibreModel);
@@ -228,8 +257,8 @@ ExportedFrame makeExportedFrame(const RenderRequest& request, const HairAsset& a
   f.environment = request.look.ambient;
   f.background = kBackgroundRadiance;
   f.exposure = request.exposure;
-  f.light = scene.light;
-  f.light.direction = glm::normalize(f.light.direction);
+  f.lights = scene.lights;
+  for (LightSpec& l : f.lights) l.direction = glm::normalize(l.direction);
   f.camera = {frame.camera.position, scene.camera.target, {0.0f, 1.0f, 0.0f}, scene.camera.fovDeg,
               scene.render.width, scene.render.height};
   f.strands = exportStrands(frame, request.look, f.hairAlbedo);

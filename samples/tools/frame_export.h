@@ -5,7 +5,7 @@
 //   DIR/strands.hair  the render strands as drawn: points, per-point thickness (fibre diameter) and
 //                     per-point colour (the strand's colour, the same on each of its points)
 //   DIR/head.obj      the opaque head: positions with per-vertex albedo ("v x y z r g b"), normals, triangles
-//   DIR/frame.json    camera, light, fibre material and model, skin, ambient, background, exposure
+//   DIR/frame.json    camera, lights, fibre material and model, skin, ambient, background, exposure
 // Every file is written atomically; readFrameExport validates everything and throws hp::Error naming
 // the file and the problem. write then read reproduces every number exactly (floats printed round-trip).
 #include <glm/glm.hpp>
@@ -34,7 +34,7 @@ struct ExportedFrame {
   std::vector<glm::vec3> headPositions, headNormals, headAlbedo;
   std::vector<std::uint32_t> headIndices;
   FrameCameraSpec camera;
-  LightSpec light;
+  std::vector<LightSpec> lights{LightSpec{}};  // [0, kMaxSceneLights] (default: the sun); a version 1 frame.json holds one
   HairMaterial material;
   std::string fibreModel = "marschner";  // reference/fibre.h names
   std::string lutMode = "float";         // what the real-time frame used
@@ -59,7 +59,8 @@ struct FrameExportFiles {
   static constexpr const char* json = "frame.json";
   static constexpr const char* realtime = "realtime.pfm";
   static constexpr const char* realtimeHairAlpha = "realtime_hair_alpha.pfm";
-  static std::vector<std::string> all() { return {strands, head, json, realtime, realtimeHairAlpha}; }
+  static constexpr const char* realtimeMotion = "realtime_motion.pfm";  // with --motion-vectors
+  static std::vector<std::string> all() { return {strands, head, json, realtime, realtimeHairAlpha, realtimeMotion}; }
 };
 void writeFrameExport(const std::filesystem::path& dir, const ExportedFrame& frame);
 ExportedFrame readFrameExport(const std::filesystem::path& dir);

@@ -8,6 +8,8 @@ RendererSettings rendererSettings(const HairSystemSettings& s) {
   RendererSettings r;
   r.formats = s.formats;
   r.opacity = s.opacity;
+  r.shadowedLights = s.shadowedLights;
+  r.motionVectors = s.motionVectors;
   r.framesInFlight = s.framesInFlight;
   r.maxViewsPerFrame = 1;
   r.raster = s.raster;
@@ -46,10 +48,10 @@ void HairSystem::recordUpdate(VkCommandBuffer cmd, const HeadMotion& motion, vk:
 
 void HairSystem::recordPrepareDraw(VkCommandBuffer cmd, const DrawView& view, vk::GpuProfiler* profiler) {
   viewOf(view, true).validate(1);
-  view.light.validate();
+  validateLights(view.lights);  // names the bad light by index, before anything is recorded
   instance_->setHeadToWorld(view.headToWorld);
   HairInstance* one[] = {instance_.get()};
-  renderer_.recordShadows(cmd, ++frame_, view.light, one, profiler);
+  renderer_.recordShadows(cmd, ++frame_, view.lights, one, profiler);
 }
 
 void HairSystem::recordDraw(VkCommandBuffer cmd, const DrawView& view, vk::GpuProfiler* profiler) {

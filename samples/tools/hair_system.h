@@ -14,6 +14,7 @@
 // on the GPU when a new one is prepared. Errors as Renderer's: construction, setMaterial and an invalid
 // view or motion throw hp::Error.
 #include <memory>
+#include <vector>
 
 #include "compute/raster/strand_raster_pass.h"
 #include "compute/renderer/hair_instance.h"
@@ -31,6 +32,8 @@ struct HairSystemSettings {
   hairpipe::AttachmentFormats formats;
   render::LookSettings look;
   render::OpacitySettings opacity;
+  std::uint32_t shadowedLights = 1;  // RendererSettings::shadowedLights: the lights that get shadow maps, [1, 4]
+  bool motionVectors = false;        // RendererSettings::motionVectors (compute raster: rasterMotion)
   std::uint32_t framesInFlight = 2;
   // Graphics by default here: an embedding that only calls recordDraw keeps drawing hair. The compute
   // path (RenderSpec::raster auto resolves to it for the CLI) needs setRasterTarget/recordRaster/recordComposite.
@@ -41,7 +44,7 @@ struct HairSystemSettings {
 struct DrawView {
   CameraMatrices camera;
   VkExtent2D extent{1, 1};
-  LightSpec light;
+  std::vector<LightSpec> lights{LightSpec{}};  // validateLights; the first shadowed ones get the shadow slots
   glm::mat4 headToWorld{1.0f};
   bool lines = false;
 };
@@ -64,9 +67,11 @@ class HairSystem {
   void recordRaster(VkCommandBuffer cmd, const DrawView& view, vk::GpuProfiler* profiler = nullptr);
   void recordComposite(VkCommandBuffer cmd, VkExtent2D extent, vk::GpuProfiler* profiler = nullptr) const;
   RasterMode raster() const { return renderer_.raster(); }
+  const HairSystemSettings& settings() const { return settings_; }
   const vk::Image& rasterImage() const { return renderer_.rasterImage(); }
   compute::RasterStats rasterStats() const { return renderer_.rasterStats(); }  // blocking readback
   std::vector<float> rasterCoverage() const { return renderer_.rasterCoverage(); }  // blocking readback
+  std::vector<glm::vec2> rasterMotion() const { return renderer_.rasterMotion(); }  // blocking; motionVectors only
 
   // Between frames, with earlier frames possibly in flight: the old textures are retired, not idled on.
   void setMaterial(const HairMaterial& material, LutMode mode);

@@ -17,12 +17,18 @@ namespace {
 struct RenderSession {
   RenderSession(const vk::Context& ctx, const HairAsset& asset, const RenderRequest& request)
       : request(request),
-        raster(resolveRasterMode(request.scene.render.raster, ctx.properties().deviceType)),
+        raster(motionRaster(request, resolveRasterMode(request.scene.render.raster, ctx.properties().deviceType))),
         renderer(ctx, request.scene.render.width, request.scene.render.height, request.scene.render.msaa, raster),
         hair(ctx, asset, systemSettings(resolved(request, raster), renderer.formats())),
         driver(ctx, hair.simulation(), request.animation, assetHeadRadius(asset)),
-        profiler(ctx, 16, "render frame") {
+        profiler(ctx, 64, "render frame") {
     renderer.attach(hair);
+  }
+
+  static RasterMode motionRaster(const RenderRequest& r, RasterMode raster) {
+    if (r.motionVectors && raster != RasterMode::Compute)
+      throw Error("motion vectors come from the compute raster: the graphics raster writes none");
+    return raster;
   }
 
   static RenderRequest resolved(RenderRequest r, RasterMode raster) {
@@ -34,10 +40,17 @@ struct RenderSession {
     DrawView v;
     v.extent = renderer.extent();
     v.camera = orbitCamera(request.scene.camera, float(v.extent.width) / float(v.extent.height));
-    v.light = request.scene.light;
+    v.lights = request.scene.lights;
     v.lines = request.lines;
     v.headToWorld = motion.to;
     return v;
+  }
+
+  // The next settling step as a frame's update (no draw): the render strands it interpolates become the
+  // previous positions of the frame after it.
+  void primeMotion(const vk::Context& ctx) {
+    const HeadMotion motion = driver.advance();
+    vk::submitAndWait(ctx, [&](VkCommandBuffer cmd) { hair.recordUpdate(cmd, motion); }, "motion prime");
   }
 
   // One frame in full (simulate, tessellate, interpolate, shadows, head, hair, tonemap), waited for.
@@ -82,6 +95,8 @@ HairSystemSettings systemSettings(const RenderRequest& r, const hairpipe::Attach
   s.formats = formats;
   s.look = r.look;
   s.opacity = r.opacity;
+  s.shadowedLights = shadowSlotsFor(r.scene.lights);
+  s.motionVectors = r.motionVectors;
   s.raster = r.scene.render.raster;
   s.rasterSettings = r.rasterSettings;
   return s;
@@ -90,10 +105,17 @@ HairSystemSettings systemSettings(const RenderRequest& r, const hairpipe::Attach
 void validateRequest(const RenderRequest& r) {
   if (r.settleFrames > 100000) throw Error("settle frames must be at most 100000");
   if (!(r.exposure > 0.0f) || !std::isfinite(r.exposure)) throw Error("exposure must be a positive number");
-  r.scene.light.validate();  // also catches a hand-built LightSpec that skipped the scene parser
+  validateLights(r.scene.lights);  // also catches a hand-built LightSpec that skipped the scene parser
 }
 
 namespace {
+// The light in shadow slot 0, whose maps captureOpacity reads: the first that casts shadows.
+const LightSpec* firstShadowedLight(const std::vector<LightSpec>& lights) {
+  for (const LightSpec& l : lights)
+    if (l.shadows) return &l;
+  return nullptr;
+}
+
 // What --export-frame writes: the drawn strands, the camera and head placement, the linear image.
 FrameCapture captureFrame(const vk::Context& ctx, const HairSystem& hair, const render::OffscreenRenderer& renderer,
                           const DrawView& view) {
@@ -107,6 +129,14 @@ FrameCapture captureFrame(const vk::Context& ctx, const HairSystem& hair, const 
     f.hairAlpha = LinearImage(renderer.extent().width, renderer.extent().height, 1);
     f.hairAlpha.values = hair.rasterCoverage();
   }
+  if (hair.settings().motionVectors) {
+    f.motion = LinearImage(renderer.extent().width, renderer.extent().height, 3);
+    const std::vector<glm::vec2> motion = hair.rasterMotion();
+    for (std::size_t i = 0; i < motion.size(); ++i) {
+      f.motion.values[3 * i] = motion[i].x;
+      f.motion.values[3 * i + 1] = motion[i].y;
+    }
+  }
   return f;
 }
 }  // namespace
@@ -115,7 +145,9 @@ RenderResult renderStill(const vk::Context& ctx, const HairAsset& asset, const R
                          const std::function<void(std::uint32_t settled)>& progress) {
   validateRequest(request);
   RenderSession session(ctx, asset, request);
-  if (request.settleFrames > 0) session.driver.runFrames(request.settleFrames, progress);
+  const bool prime = request.motionVectors && request.settleFrames > 0;
+  if (request.settleFrames > 0) session.driver.runFrames(request.settleFrames - (prime ? 1 : 0), progress);
+  if (prime) session.primeMotion(ctx);
   const HeadMotion motion = session.driver.nextMotion();
   RenderResult result = session.render(ctx, motion);
   HairSystem& hair = session.hair;
@@ -124,9 +156,10 @@ RenderResult renderStill(const vk::Context& ctx, const HairAsset& asset, const R
     result.strandDump = compute::renderStrandsToHairData(ctx, hair.strands(), vk::BufferUse::VertexRead,
                                                          "hairpipe render: render strands of the drawn frame");
   if (request.captureFrame) result.frame = captureFrame(ctx, hair, session.renderer, session.view(motion));
-  if (request.captureOpacity && request.opacity.enabled)
+  const LightSpec* shadowed = firstShadowedLight(request.scene.lights);
+  if (request.captureOpacity && request.opacity.enabled && shadowed)
     result.opacity = render::captureOpacity(ctx, hair.shadows().image(), hair.shadows().lightSpace(), hair.shadows().settings(),
-                                            glm::normalize(request.scene.light.direction));
+                                            glm::normalize(shadowed->direction));
   return result;
 }
 

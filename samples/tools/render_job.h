@@ -16,7 +16,7 @@
 
 namespace hp {
 struct RenderRequest {
-  Scene scene;                      // camera, light, render size, material, simulation, density
+  Scene scene;                      // camera, lights, render size, material, simulation, density
   std::uint32_t settleFrames = 90;  // simulated frames before the rendered one
   HeadAnimation animation = HeadAnimation::None;
   LutMode lutMode = LutMode::Physical;
@@ -28,9 +28,12 @@ struct RenderRequest {
   render::LookSettings look;
   render::OpacitySettings opacity;
   compute::RasterSettings rasterSettings;  // the compute raster's tile budget (scene.render.raster picks the path)
-  bool captureOpacity = false;      // read the opacity maps and light framing back (RenderResult::opacity)
+  bool captureOpacity = false;      // read shadow slot 0's opacity maps and light framing back (RenderResult::opacity)
   bool captureStrands = false;      // read the rendered frame's render strands back (RenderResult::strands)
   bool captureFrame = false;        // read strands, camera, linear image, hair coverage back (RenderResult::frame)
+  // Motion vectors (compute raster): the last settling step is recorded as a frame's update too, so the
+  // rendered frame's hair motion is that of its own simulation step; captureFrame reads it back.
+  bool motionVectors = false;
 };
 
 struct RenderResult {
@@ -44,7 +47,7 @@ struct RenderResult {
   RasterMode raster = RasterMode::Graphics;          // the path that drew the hair (Auto resolved)
   render::OpacityRaster opacityRaster = render::OpacityRaster::Graphics;  // the path into the opacity maps
   std::optional<compute::RasterStats> rasterStats;   // compute raster: tile-list entries and overflow
-  std::optional<render::OpacityCapture> opacity;  // with captureOpacity and shadows on
+  std::optional<render::OpacityCapture> opacity;  // with captureOpacity, shadows on and a light casting them
   std::optional<HairFileData> strandDump;         // with captureStrands: Q points per render strand
   std::optional<FrameCapture> frame;              // with captureFrame
 };
@@ -61,8 +64,9 @@ std::uint32_t renderSequence(const vk::Context& ctx, const HairAsset& asset, con
                              std::uint32_t frames,
                              const std::function<bool(std::uint32_t frame, const RenderResult& image)>& onFrame);
 
-// The HairSystem settings a render request implies for targets of `formats` (the viewer's too).
+// The HairSystem settings a render request implies for targets of `formats` (the viewer's too): a shadow
+// slot for each of the scene's lights that casts shadows, up to the Renderer's limit (shadowSlotsFor).
 HairSystemSettings systemSettings(const RenderRequest& request, const hairpipe::AttachmentFormats& formats);
-// Throws hp::Error for a request renderStill would refuse (frame counts, exposure, light).
+// Throws hp::Error for a request renderStill would refuse (frame counts, exposure, lights).
 void validateRequest(const RenderRequest& request);
 }  // namespace hp

@@ -10,6 +10,7 @@
 #include "samples/tools/host/camera_fit.h"
 #include "engine/vk/check.h"
 #include "samples/cli/command.h"
+#include "samples/cli/frame_options.h"
 #include "samples/cli/material_options.h"
 #include "samples/cli/output_paths.h"
 #include "samples/viewer/viewer_app.h"
@@ -32,6 +33,7 @@ struct ViewOptions {
   std::string resizeAt;
   std::string minimiseAt;
   std::vector<std::string> faultsAt;
+  std::vector<std::string> lights;  // --light SPEC: the panel's lights to start with
   bool noPanel = false;
   bool json = false;
 };
@@ -87,6 +89,7 @@ hp::viewer::ViewerOptions viewerOptions(const ViewOptions& o, const CLI::App& cm
   v.scene = o.scene;
   hp::RenderRequest& r = v.request;
   r.scene = hp::cli::loadScene(o.scene);
+  hp::cli::replaceLights(o.lights, r.scene);
   if (o.width) r.scene.render.width = *o.width;
   if (o.height) r.scene.render.height = *o.height;
   if (r.scene.render.width == 0 || r.scene.render.height == 0 || r.scene.render.width > kMaxWindowSide ||
@@ -163,6 +166,7 @@ void setupView(CLI::App& app) {
   cmd->add_option("--lut-mode", o->lutMode, "fibre model: physical (energy-conserving, default; dual scattering needs it), or the paper's model as float, paper or direct");
   cmd->add_option("--animate", o->animate, "Head motion at the start: none, nod, turn, shake");
   cmd->add_option("--exposure", o->exposure, "Exposure multiplier before tonemapping (default 1)");
+  hp::cli::addLightOption(*cmd, o->lights);
   cmd->add_option("--frames", o->frames, "Stop after N frames (default 0: when the window closes)");
   cmd->add_option("--screenshot", o->screenshot, "With --frames N: save the last frame's window image as PNG");
   cmd->add_option("--resize-at", o->resizeAt, "Testing: resize the window at a frame, FRAME:WxH");

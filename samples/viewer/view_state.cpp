@@ -15,16 +15,53 @@ void toggle(ViewState& s, HeadAnimation a) {
 }
 }  // namespace
 
+std::vector<EditedLight> editableLights(const Scene& scene) {
+  std::vector<EditedLight> out;
+  for (const LightSpec& l : scene.lights) {
+    EditedLight e{l, scene.camera.target};
+    if (l.type == LightSpec::Type::Spot)
+      e.target = l.position - l.direction * std::max(glm::length(l.position - scene.camera.target), 1e-3f);
+    out.push_back(e);
+  }
+  return out;
+}
+
 ViewState ViewState::fromScene(const Scene& scene) {
   ViewState s;
   s.camera = scene.camera;
   s.baseDistance = scene.camera.distance;
-  const glm::vec3 d = glm::normalize(scene.light.type == LightSpec::Type::Spot
-                                         ? scene.light.position - scene.camera.target
-                                         : scene.light.direction);
-  s.lightElevationDeg = glm::degrees(std::asin(std::clamp(d.y, -1.0f, 1.0f)));
-  s.lightAzimuthDeg = glm::degrees(std::atan2(d.x, d.z));
+  const std::vector<EditedLight> lights = editableLights(scene);
+  if (!lights.empty()) s.aimLight(s.towardLightOf(lights.front()));
   return s;
+}
+
+glm::vec3 ViewState::aimCentre(const EditedLight& l) const {
+  return l.light.type == LightSpec::Type::Spot ? l.target : camera.target;
+}
+
+glm::vec3 ViewState::towardLightOf(const EditedLight& l) const {
+  if (l.light.type == LightSpec::Type::Directional) return glm::normalize(l.light.direction);
+  const glm::vec3 d = l.light.position - aimCentre(l);
+  return glm::length(d) > 1e-6f ? glm::normalize(d) : glm::normalize(l.light.direction);
+}
+
+void ViewState::aimLight(const glm::vec3& towardLight) {
+  const glm::vec3 d = glm::normalize(towardLight);
+  lightElevationDeg = glm::degrees(std::asin(std::clamp(d.y, -1.0f, 1.0f)));
+  lightAzimuthDeg = glm::degrees(std::atan2(d.x, d.z));
+}
+
+void ViewState::steer(EditedLight& l) const {
+  const glm::vec3 toward = lightDirection();
+  if (l.light.type == LightSpec::Type::Directional) {
+    l.light.direction = toward;
+    return;
+  }
+  const glm::vec3 centre = aimCentre(l);
+  const float distance = glm::length(l.light.position - centre);
+  if (!(distance > 1e-6f)) return;  // on its centre: no sphere to move on
+  l.light.position = centre + toward * distance;
+  if (l.light.type == LightSpec::Type::Spot) l.light.direction = toward;  // still aimed at its target
 }
 
 void ViewState::drag(float dx, float dy, bool light) {

@@ -145,7 +145,7 @@ Viewer::Viewer(const ViewerOptions& options, const HairAsset& asset)
   state_.panel = options.panel;
   state_.animation = r.animation;
   tunables_ = {r.scene.simulation, 4.0, r.scene.density.totalStrands, r.scene.material, r.lutMode, r.opacity, r.look,
-               r.lod, r.exposure};
+               r.lod, r.exposure, editableLights(r.scene)};
   input_.state = &state_;
   installInput(window_.handle(), input_);
   imgui_ = std::make_unique<ImGuiSession>(window_.handle());
@@ -249,9 +249,9 @@ DrawView Viewer::makeView() {
   DrawView v;
   v.extent = gpu_->targets().extent();
   v.camera = orbitCamera(state_.camera, float(v.extent.width) / float(v.extent.height));
-  v.light = options_.request.scene.light;
-  v.light.type = LightSpec::Type::Directional;
-  v.light.direction = state_.lightDirection();
+  if (!tunables_.lights.empty()) state_.steer(tunables_.lights.front());  // the light drag turns the first
+  v.lights.clear();
+  for (const EditedLight& l : tunables_.lights) v.lights.push_back(l.light);
   v.headToWorld = head_;
   return v;
 }

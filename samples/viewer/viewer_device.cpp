@@ -4,10 +4,11 @@
 
 #include "engine/vk/check.h"
 #include "samples/cli/scene_options.h"
+#include "shaders/shared/opacity.h"
 
 namespace hp::viewer {
 namespace {
-constexpr std::uint32_t kMaxScopes = 24;
+constexpr std::uint32_t kMaxScopes = 48;  // the passes and three per shadowed light (up to 4)
 
 vk::ContextOptions windowExtensions() {
   vk::ContextOptions o;
@@ -31,7 +32,9 @@ ViewerDevice::ViewerDevice(const ViewerOptions& options, const HairAsset& asset,
     recreateTargets();
     RenderRequest resolved = options.request;
     resolved.scene.render.raster = raster_;
-    hair_ = std::make_unique<HairSystem>(*ctx_, asset, systemSettings(resolved, targets_->formats()));
+    HairSystemSettings settings = systemSettings(resolved, targets_->formats());
+    settings.shadowedLights = gpu::OPACITY_MAX_LIGHTS;  // the panel may add lights: every shadow slot from the start
+    hair_ = std::make_unique<HairSystem>(*ctx_, asset, settings);
     targets_->attach(*hair_);
     overlay_ = std::make_unique<ImGuiOverlay>(*ctx_, swapchain_->format(), kFramesInFlight);
     createSlots(generation);

@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <numbers>
+#include <optional>
+#include <string>
 
 namespace hp::viewer {
 namespace {
@@ -73,6 +75,91 @@ void materialSection(Tunables& t, PanelChanges& c) {
   c.material = ImGui::Button("apply material");
 }
 
+constexpr const char* kLightTypes[] = {"directional", "spot", "point"};  // LightSpec::Type's order
+
+// A spot aims from its position at its target; a degenerate pair keeps the last direction.
+void aimSpot(EditedLight& e) {
+  const glm::vec3 d = e.light.position - e.target;
+  if (glm::length(d) > 1e-6f) e.light.direction = glm::normalize(d);
+}
+
+// Another type keeps where the light comes from: a directional light's direction becomes a position at a
+// head-sized distance from the aim centre, and a position becomes the direction from it.
+void changeType(EditedLight& e, LightSpec::Type type, const ViewState& view) {
+  const glm::vec3 toward = view.towardLightOf(e);
+  if (e.light.type == LightSpec::Type::Directional)
+    e.light.position = view.camera.target + toward * (0.7f * view.baseDistance);
+  if (type == LightSpec::Type::Spot && e.light.type != LightSpec::Type::Spot) e.target = view.camera.target;
+  e.light.type = type;
+  e.light.direction = toward;
+  if (type == LightSpec::Type::Spot) aimSpot(e);
+}
+
+bool editVec3(const char* label, glm::vec3& v, float speed) { return ImGui::DragFloat3(label, &v.x, speed); }
+
+// Where the light shines from: a direction, or a position (and a spot's target, cone); the falloff range.
+bool editPlacement(EditedLight& e) {
+  LightSpec& l = e.light;
+  if (l.type == LightSpec::Type::Directional) {
+    glm::vec3 d = l.direction;
+    if (!ImGui::SliderFloat3("direction", &d.x, -1.0f, 1.0f) || !(glm::length(d) > 1e-3f)) return false;
+    l.direction = glm::normalize(d);
+    return true;
+  }
+  bool changed = editVec3("position", l.position, 0.005f);
+  if (l.type == LightSpec::Type::Spot) {
+    changed |= editVec3("target", e.target, 0.005f);
+    changed |= ImGui::SliderFloat("cone (deg)", &l.coneDeg, 1.0f, 80.0f, "%.1f");
+    aimSpot(e);
+  }
+  changed |= ImGui::SliderFloat("range (0: none)", &l.range, 0.0f, 4.0f, "%.2f");
+  return changed;
+}
+
+// One light's controls; true when it changed.
+bool editLight(EditedLight& e, const ViewState& view) {
+  bool changed = false;
+  int type = int(e.light.type);
+  if (ImGui::Combo("type", &type, kLightTypes, 3)) {
+    changeType(e, LightSpec::Type(type), view);
+    changed = true;
+  }
+  changed |= editPlacement(e);
+  changed |= ImGui::ColorEdit3("color", &e.light.color.x);
+  changed |= ImGui::SliderFloat("intensity", &e.light.intensity, 0.0f, 10.0f, "%.2f");
+  changed |= ImGui::Checkbox("shadows", &e.light.shadows);
+  return changed;
+}
+
+// The frame's lights: each editable, removable, and more added up to the frame's limit. The first also
+// follows the light drag, so the drag's angles follow its edits.
+void lightSection(Tunables& t, ViewState& view) {
+  if (!ImGui::CollapsingHeader("Lights")) return;
+  ImGui::TextUnformatted("the first 4 with shadows get shadow maps");
+  std::optional<std::size_t> removed;
+  for (std::size_t i = 0; i < t.lights.size(); ++i) {
+    ImGui::PushID(int(i));
+    const std::string name = "light " + std::to_string(i) + (i == 0 ? " (Shift/right drag turns it)" : "");
+    if (ImGui::TreeNodeEx(name.c_str(), i == 0 ? ImGuiTreeNodeFlags_DefaultOpen : 0)) {
+      if (editLight(t.lights[i], view) && i == 0) view.aimLight(view.towardLightOf(t.lights[0]));
+      if (ImGui::Button("remove")) removed = i;
+      ImGui::TreePop();
+    }
+    ImGui::PopID();
+  }
+  if (removed) {
+    t.lights.erase(t.lights.begin() + std::ptrdiff_t(*removed));
+    if (*removed == 0 && !t.lights.empty()) view.aimLight(view.towardLightOf(t.lights[0]));
+  }
+  if (t.lights.size() < kMaxSceneLights && ImGui::Button("add light")) {
+    EditedLight rim{LightSpec{}, view.camera.target};  // a dimmer light from behind the head to start from
+    rim.light.direction = glm::normalize(glm::vec3(-0.5f, 0.4f, -0.7f));
+    rim.light.intensity = 1.0f;
+    t.lights.push_back(rim);
+    if (t.lights.size() == 1) view.aimLight(view.towardLightOf(t.lights[0]));
+  }
+}
+
 void shadowSection(Tunables& t, PanelChanges& c) {
   if (!ImGui::CollapsingHeader("Shadows")) return;
   c.opacity |= ImGui::Checkbox("opacity shadow maps", &t.opacity.enabled);
@@ -134,6 +221,7 @@ PanelChanges drawPanel(Tunables& t, ViewState& view, const PanelStatus& status) 
   simulationSection(t, view, c);
   densitySection(t, c);
   materialSection(t, c);
+  lightSection(t, view);
   shadowSection(t, c);
   lookSection(t, c);
   lodSection(t, c);

@@ -73,6 +73,13 @@ HP_CONST(uint, RASTER_BINDING_SHADE_ARGS, 25)  // uvec4[chunks]: x, y, z = the s
 // the head hides hair the far samples see, take the near layer: the hair in front of every head sample.
 HP_CONST(uint, RASTER_BINDING_OUTPUT_NEAR, 28)  // storage image rgba16f: the near layer, as OUTPUT
 HP_CONST(uint, RASTER_BINDING_NEAR_MASK, 29)    // storage image r32ui: the samples that take the near layer
+// Motion vectors (RendererSettings::motionVectors; the passes' specialization constant 0 turns them on):
+// the project pass writes each vertex's screen motion, current unjittered pixel position minus its previous
+// one (previous positions through RenderFrame::previousViewProj), and the fine raster composites it like the
+// radiance: the hair's coverage-weighted motion per pixel, in pixels (x right, y down), 0 without hair.
+HP_CONST(uint, RASTER_BINDING_PREVIOUS, 30)     // vec4[chunk strands * Q]: the render strands' previous positions
+HP_CONST(uint, RASTER_BINDING_MOTION, 31)       // uint[V]: packHalf2x16 of each vertex's screen motion
+HP_CONST(uint, RASTER_BINDING_MOTION_OUTPUT, 32)  // storage image rg16f: the pixel's hair motion
 HP_CONST(uint, RASTER_MAX_HEAD_SAMPLES, 16)     // head depth samples per pixel the raster reads
 
 // The composite pass (composite.frag) samples the output images; its push constant picks the layer.

@@ -89,6 +89,8 @@ struct RenderFrame {
                          // lightCount.y, y = the bounce map's texel size at the heads (scene units), z = w = 0
   FrameLight lights[RENDER_MAX_LIGHTS];
   FrameShadow shadows[OPACITY_MAX_LIGHTS];  // per shadow slot
+  mat4 previousViewProj;  // the previous frame's unjittered proj * view (motion vectors; shared/raster.h)
+  vec4 jitter;            // xy = this view's subpixel jitter in pixels (x right, y down), already in `proj`; z = w = 0
 };
 
 struct StrandDrawPush {
@@ -112,7 +114,8 @@ static_assert(offsetof(hp::gpu::RenderFrame, cameraPosition) == 128);
 static_assert(offsetof(hp::gpu::RenderFrame, options) == 192);
 static_assert(offsetof(hp::gpu::RenderFrame, lights) == 240);
 static_assert(offsetof(hp::gpu::RenderFrame, shadows) == 752);
-static_assert(sizeof(hp::gpu::RenderFrame) == 1072);
+static_assert(offsetof(hp::gpu::RenderFrame, previousViewProj) == 1072);
+static_assert(sizeof(hp::gpu::RenderFrame) == 1152);
 static_assert(sizeof(hp::gpu::FrameLight) == 64);
 static_assert(sizeof(hp::gpu::FrameShadow) == 80);
 static_assert(sizeof(hp::gpu::StrandDrawPush) == 16);

@@ -4,6 +4,8 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <vector>
+
 #include <cmath>
 #include <cstring>
 #include <iostream>
@@ -106,6 +108,9 @@ TEST_F(PublicApi, RendererSettingsAreRefusedByField) {
   s.maxViewsPerFrame = 0;
   EXPECT_THAT(failureOf(hairpipe::Renderer::create(*ctx_, s)), HasSubstr("maxViewsPerFrame"));
   s = {};
+  s.shadowedLights = 5;
+  EXPECT_THAT(failureOf(hairpipe::Renderer::create(*ctx_, s)), HasSubstr("shadowedLights must be in [1, 4], got 5"));
+  s = {};
   s.opacity.resolution = 8;
   EXPECT_THAT(failureOf(hairpipe::Renderer::create(*ctx_, s)), HasSubstr("resolution"));
   s = {};
@@ -189,6 +194,12 @@ TEST_F(PublicApi, RecordCallsRefuseBadFramesBeforeRecording) {
   hairpipe::Light light;
   light.direction = {0.0f, 0.0f, 0.0f};
   EXPECT_THAT(failureOf(renderer_->recordShadows(VK_NULL_HANDLE, 0, light, heads)), HasSubstr("direction"));
+  std::vector<hairpipe::Light> lights(9);
+  EXPECT_THAT(failureOf(renderer_->recordShadows(VK_NULL_HANDLE, 0, lights, heads)), HasSubstr("at most 8 lights, got 9"));
+  lights.resize(2);
+  lights[1].type = hairpipe::Light::Type::Point;
+  lights[1].range = -1.0f;
+  EXPECT_THAT(failureOf(renderer_->recordShadows(VK_NULL_HANDLE, 0, lights, heads)), HasSubstr("point light range"));
   hairpipe::View view;
   view.index = 4;  // maxViewsPerFrame is 4
   EXPECT_THAT(failureOf(renderer_->recordDraw(VK_NULL_HANDLE, 0, view, heads)), HasSubstr("index"));

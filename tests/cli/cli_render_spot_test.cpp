@@ -23,10 +23,11 @@ TEST(CliRenderSpot, RendersASpotLitFrameAndExportsIt) {
   ASSERT_EQ(r.exitCode, 0) << r.err;
   EXPECT_EQ(hp::readPngRgba(png).width, 96u);
   const hp::ExportedFrame frame = hp::readFrameExport(dir);
-  EXPECT_EQ(frame.light.type, hp::LightSpec::Type::Spot);
-  EXPECT_EQ(frame.light.position, glm::vec3(0.3f, 0.5f, 0.8f));
-  EXPECT_EQ(frame.light.coneDeg, 20.0f);
-  EXPECT_EQ(frame.light.range, 1.0f);
+  ASSERT_EQ(frame.lights.size(), 1u);
+  EXPECT_EQ(frame.lights[0].type, hp::LightSpec::Type::Spot);
+  EXPECT_EQ(frame.lights[0].position, glm::vec3(0.3f, 0.5f, 0.8f));
+  EXPECT_EQ(frame.lights[0].coneDeg, 20.0f);
+  EXPECT_EQ(frame.lights[0].range, 1.0f);
   EXPECT_EQ(frame.strands.strandCount, 1000u);
   EXPECT_EQ(hp::readPfm(dir / "realtime.pfm").width, 96u);
   EXPECT_EQ(hp::readPfm(dir / "realtime_hair_alpha.pfm").channels, 1u);

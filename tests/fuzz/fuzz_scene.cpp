@@ -14,9 +14,10 @@ void checkScene(const hp::Scene& s) {
   s.growth.validate();
   s.density.validate();
   s.material.validate();
-  s.light.validate();
+  hp::validateLights(s.lights);
   s.simulation.validate();
-  HP_FUZZ_REQUIRE(hp::fuzz::finite(s.light.direction) && hp::fuzz::finite(s.light.position));
+  for (const hp::LightSpec& l : s.lights)
+    HP_FUZZ_REQUIRE(hp::fuzz::finite(l.direction) && hp::fuzz::finite(l.position) && hp::fuzz::finite(l.color));
   HP_FUZZ_REQUIRE(hp::fuzz::finite(s.camera.target) && std::isfinite(s.camera.distance) && s.camera.distance > 0.0f);
   HP_FUZZ_REQUIRE(std::isfinite(s.camera.orbitDeg) && std::isfinite(s.camera.fovDeg));
   HP_FUZZ_REQUIRE(s.render.width >= 1 && s.render.width <= 16384 && s.render.height >= 1 && s.render.height <= 16384);

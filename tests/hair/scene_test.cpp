@@ -62,8 +62,9 @@ TEST(Scene, ReadsEverySection) {
   EXPECT_NEAR(s.material.alphaR, glm::radians(-5.0), 1e-12);
   EXPECT_NEAR(s.material.wc, glm::radians(10.0), 1e-12);
   EXPECT_EQ(s.material.absorption, glm::dvec3(0.2, 0.3, 0.4));
-  EXPECT_EQ(s.light.direction, glm::vec3(0, 1, 0));  // normalized
-  EXPECT_EQ(s.light.intensity, 2.5f);
+  ASSERT_EQ(s.lights.size(), 1u);  // "light": the one light
+  EXPECT_EQ(s.lights[0].direction, glm::vec3(0, 1, 0));  // normalized
+  EXPECT_EQ(s.lights[0].intensity, 2.5f);
   EXPECT_EQ(s.camera.fovDeg, 40.0f);
   EXPECT_EQ(s.render.width, 640u);
   EXPECT_EQ(s.simulation.substeps, 3u);
@@ -246,7 +247,8 @@ TEST(SceneReadme, ExampleParsesAndMatchesTheDefaults) {
   EXPECT_EQ(s.simulation.iterations, d.simulation.iterations);
   EXPECT_EQ(s.render.width, d.render.width);
   EXPECT_EQ(s.camera.distance, d.camera.distance);
-  EXPECT_NEAR(glm::distance(s.light.direction, d.light.direction), 0.0f, 1e-6f);
+  ASSERT_EQ(s.lights.size(), d.lights.size());
+  EXPECT_NEAR(glm::distance(s.lights[0].direction, d.lights[0].direction), 0.0f, 1e-6f);
 }
 }  // namespace
 }  // namespace hp

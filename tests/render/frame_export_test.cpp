@@ -57,8 +57,13 @@ void expectSameFrames(const ExportedFrame& a, const ExportedFrame& b) {
   EXPECT_EQ(a.camera.fovYDeg, b.camera.fovYDeg);
   EXPECT_EQ(a.camera.width, b.camera.width);
   EXPECT_EQ(a.camera.height, b.camera.height);
-  EXPECT_EQ(a.light.direction, b.light.direction);
-  EXPECT_EQ(a.light.color * a.light.intensity, b.light.color * b.light.intensity);
+  ASSERT_EQ(a.lights.size(), b.lights.size());
+  for (std::size_t i = 0; i < a.lights.size(); ++i) {
+    EXPECT_EQ(a.lights[i].type, b.lights[i].type);
+    EXPECT_EQ(a.lights[i].direction, b.lights[i].direction);
+    EXPECT_EQ(a.lights[i].color * a.lights[i].intensity, b.lights[i].color * b.lights[i].intensity);
+    EXPECT_EQ(a.lights[i].shadows, b.lights[i].shadows);
+  }
   EXPECT_TRUE(a.material == b.material);
   EXPECT_EQ(a.headPositions, b.headPositions);
   EXPECT_EQ(a.headNormals, b.headNormals);
@@ -334,7 +339,7 @@ TEST_F(VulkanTest, ComputeRasterCoversSilhouettePixelsLikeThePathTracer) {
 // lavapipe: +7.0% over the hair pixels; asserted > +1%).
 TEST_F(VulkanTest, SkinBounceUnderASpotIsFiniteAndAddsLight) {
   RenderRequest request;
-  request.scene.light = LightSpec::makeSpot({0.3f, 0.4f, 0.6f}, {0.0f, -0.08f, 0.0f}, 40.0f);
+  request.scene.lights = {LightSpec::makeSpot({0.3f, 0.4f, 0.6f}, {0.0f, -0.08f, 0.0f}, 40.0f)};
   const BounceFrames frames = renderWithAndWithoutBounce(*ctx, request, 96, 72);
   const RenderResult& without = frames.without;
   const RenderResult& with = frames.with;

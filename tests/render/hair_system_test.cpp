@@ -33,10 +33,18 @@ TEST_F(VulkanTest, HairSystemRefusesADegenerateView) {
   HairSystem hair(*ctx, smallHead(), HairSystemSettings{});
   DrawView view;
   view.extent = {64, 64};
-  view.light.direction = {0.0f, 0.0f, 0.0f};
-  EXPECT_THROW(vk::submitAndWait(*ctx, [&](VkCommandBuffer cmd) { hair.recordPrepareDraw(cmd, view); }, "bad light"),
+  view.lights.resize(2);
+  view.lights[1].direction = {0.0f, 0.0f, 0.0f};
+  try {
+    vk::submitAndWait(*ctx, [&](VkCommandBuffer cmd) { hair.recordPrepareDraw(cmd, view); }, "bad light");
+    ADD_FAILURE() << "a zero light direction was accepted";
+  } catch (const hp::Error& e) {
+    EXPECT_NE(std::string(e.what()).find("lights[1]: light direction"), std::string::npos) << e.what();
+  }
+  view.lights.assign(9, LightSpec{});
+  EXPECT_THROW(vk::submitAndWait(*ctx, [&](VkCommandBuffer cmd) { hair.recordPrepareDraw(cmd, view); }, "9 lights"),
                hp::Error);
-  view.light = LightSpec{};
+  view.lights = {LightSpec{}};
   view.extent = {0, 64};
   EXPECT_THROW(vk::submitAndWait(*ctx, [&](VkCommandBuffer cmd) { hair.recordPrepareDraw(cmd, view); }, "bad extent"),
                hp::Error);

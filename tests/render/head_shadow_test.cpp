@@ -71,7 +71,7 @@ TEST_F(VulkanTest, HeadSkinShowsNoShadowBanding) {
   const RenderResult off = renderStill(*ctx, asset, frontRequest(false));
   std::vector<bool> measured = skinMask(off, renderStill(*ctx, asset, blonde));
   const test::HeadLightMap cpu =
-      test::traceHeadLight(*asset.sdf, on.scene.camera, on.scene.light, off.width, off.height);
+      test::traceHeadLight(*asset.sdf, on.scene.camera, on.scene.lights.front(), off.width, off.height);
   std::size_t skinPixels = 0, seenByCpu = 0, clearLit = 0;
   for (std::size_t p = 0; p < measured.size(); ++p) {
     if (!measured[p]) continue;

@@ -47,8 +47,8 @@ RenderRequest sheetRequest(float lightElevationDeg, LutMode mode = LutMode::Floa
   r.scene.camera.distance = 0.45f;
   r.scene.camera.target = {0.0f, 0.02f, -0.05f};
   const float e = glm::radians(lightElevationDeg);
-  r.scene.light.direction = glm::normalize(glm::vec3(0.0f, std::sin(e), -std::cos(e)));  // from the camera's side
-  r.scene.light.intensity = 4.0f;
+  r.scene.lights[0].direction = glm::normalize(glm::vec3(0.0f, std::sin(e), -std::cos(e)));  // from the camera's side
+  r.scene.lights[0].intensity = 4.0f;
   r.scene.material.absorption = {0.15, 0.35, 0.9};  // blonde: TRT is clearly yellow, R stays white
   r.scene.simulation.gravity = {0.0, 0.0, 0.0};
   r.scene.simulation.stiffness = 1.0;  // hold the rest pose exactly
@@ -96,7 +96,7 @@ namespace {
 // The image row where the sheet's centre strand has theta_h = target (degrees), by bisection on psi.
 double predictedRow(const RenderRequest& r, double targetDeg) {
   const CameraMatrices cam = orbitCamera(r.scene.camera, 1.0f);
-  const glm::dvec3 L = glm::normalize(glm::dvec3(r.scene.light.direction));
+  const glm::dvec3 L = glm::normalize(glm::dvec3(r.scene.lights[0].direction));
   auto thetaH = [&](double psi) {
     glm::dvec3 p(0.0, kRadius * std::cos(psi), -kRadius * std::sin(psi));
     glm::dvec3 t(0.0, -std::sin(psi), -std::cos(psi));

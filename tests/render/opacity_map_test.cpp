@@ -456,16 +456,16 @@ TEST_P(OpacityMapTest, OpacityOfASmallHeadSceneMatchesTheCpuReference) {
   settings.opacity.deep = false;  // the CPU reference slices the whole depth
   hp::HairSystem hair(*ctx, asset, settings);
   hp::DrawView view;
-  view.light.direction = glm::normalize(glm::vec3(0.4f, 0.7f, -0.6f));
+  view.lights[0].direction = glm::normalize(glm::vec3(0.4f, 0.7f, -0.6f));
   hp::vk::submitAndWait(*ctx, [&](VkCommandBuffer cmd) {
     hair.recordUpdate(cmd, hp::HeadMotion{});
     hair.recordPrepareDraw(cmd, view);
   }, "head scene frame");
   const OpacityCapture c = hp::render::captureOpacity(*ctx, hair.shadows().image(), hair.shadows().lightSpace(),
-                                                      settings.opacity, view.light.direction);
+                                                      settings.opacity, view.lights[0].direction);
   const hp::compute::StrandData strands = hp::compute::readRenderStrands(*ctx, hair.strands(), hp::vk::BufferUse::VertexRead);
 
-  const hp::test::LightBox box = hp::test::lightBounds(strands.positions, view.light.direction);
+  const hp::test::LightBox box = hp::test::lightBounds(strands.positions, view.lights[0].direction);
   EXPECT_NEAR(c.light.depthRange.x, box.lo.z, 1e-5);
   EXPECT_NEAR(c.light.depthRange.y, box.hi.z, 1e-5);
 
@@ -558,7 +558,7 @@ OpacityCapture headSceneMaps(const hp::vk::Context& ctx, const hp::HairAsset& as
   settings.opacity = opacity;
   hp::HairSystem hair(ctx, asset, settings);
   hp::DrawView view;
-  view.light = light;
+  view.lights = {light};
   hp::vk::submitAndWait(ctx, [&](VkCommandBuffer cmd) {
     hair.recordUpdate(cmd, hp::HeadMotion{});
     hair.recordPrepareDraw(cmd, view);

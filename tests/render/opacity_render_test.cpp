@@ -33,7 +33,7 @@ hp::HairAsset hairOnly() {
 hp::RenderRequest request(const glm::vec3& towardLight, float orbitDeg, bool shadows, float strandOpacity = 0.3f) {
   hp::RenderRequest r;
   r.scene.render = {kOpacityWidth, kOpacityHeight, 1};
-  r.scene.light.direction = glm::normalize(towardLight);
+  r.scene.lights[0].direction = glm::normalize(towardLight);
   r.scene.camera.orbitDeg = orbitDeg;
   r.settleFrames = 0;
   r.opacity.enabled = shadows;
@@ -76,7 +76,7 @@ bool lightOnTheRight(const hp::RenderRequest& r) {
     const glm::vec4 c = cam.proj * cam.view * glm::vec4(p, 1.0f);
     return c.x / c.w;
   };
-  return ndcX(r.scene.camera.target + 0.2f * r.scene.light.direction) > ndcX(r.scene.camera.target);
+  return ndcX(r.scene.camera.target + 0.2f * r.scene.lights[0].direction) > ndcX(r.scene.camera.target);
 }
 }  // namespace
 
@@ -156,9 +156,9 @@ TEST_F(VulkanTest, SpotLightsHairInsideItsConeOnly) {
   r.lutMode = hp::LutMode::Float;
   const hp::CameraMatrices cam = hp::orbitCamera(r.scene.camera, float(kOpacityWidth) / float(kOpacityHeight));
   const float cone = 8.0f;
-  r.scene.light = hp::LightSpec::makeSpot(cam.position, r.scene.camera.target, cone);
+  r.scene.lights = {hp::LightSpec::makeSpot(cam.position, r.scene.camera.target, cone)};
   const hp::RenderResult narrow = hp::renderStill(*ctx, asset, r);
-  r.scene.light.coneDeg = 60.0f;
+  r.scene.lights[0].coneDeg = 60.0f;
   const hp::RenderResult wide = hp::renderStill(*ctx, asset, r);
   const double radius = std::tan(glm::radians(double(cone))) / std::tan(0.5 * double(cam.fovY)) * 0.5 * kOpacityHeight;
   auto distance = [&](std::uint32_t x, std::uint32_t y) {

@@ -137,7 +137,7 @@ TEST_F(VulkanTest, TheDefaultTileBudgetKeepsEveryEntryAt3840x2160) {
                     "strands");
   const VkExtent2D extent{3840, 2160};
   const CameraMatrices camera = orbitCamera(scene.camera, float(extent.width) / float(extent.height));
-  test::RasterRig rig(*ctx, strands, extent, camera, render::LookSettings{}, scene.light);
+  test::RasterRig rig(*ctx, strands, extent, camera, render::LookSettings{}, scene.lights.front());
   rig.run(1.0f, /*binOnly=*/true);
   const compute::RasterStats stats = rig.pass->readStats();
   std::cout << "3840x2160: " << stats.requested << " entries, capacity " << rig.pass->capacity() << "\n";

@@ -1,11 +1,13 @@
 // What scene.h declares: LightSpec's spot constructor and the range checks shared by the scene file, the
-// CLI and the render job; RasterMode's names.
+// CLI and the render job; the light list's checks; RasterMode's names.
 #include "engine/core/hair/scene.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
 #include "engine/core/error.h"
+#include "shaders/shared/render.h"
 
 namespace hp {
 namespace {
@@ -52,6 +54,35 @@ void LightSpec::validate() const {
   if (!(coneDeg > 0.0f && coneDeg <= 80.0f)) throw Error("spot coneDeg must be in (0, 80], got " + std::to_string(coneDeg));
   if (!(std::isfinite(range) && range >= 0.0f)) throw Error("spot range must be >= 0 (0: no distance falloff)");
 }
+static_assert(kMaxSceneLights == gpu::RENDER_MAX_LIGHTS, "a scene holds what one frame takes");
+
+void validateLights(std::span<const LightSpec> lights) {
+  if (lights.size() > kMaxSceneLights)
+    throw Error("at most " + std::to_string(kMaxSceneLights) + " lights, got " + std::to_string(lights.size()));
+  for (std::size_t i = 0; i < lights.size(); ++i) {
+    try {
+      lights[i].validate();
+    } catch (const Error& e) {
+      throw Error("lights[" + std::to_string(i) + "]: " + e.what());
+    }
+  }
+}
+
+std::uint32_t shadowSlotsFor(std::span<const LightSpec> lights) {
+  const auto casting = std::count_if(lights.begin(), lights.end(), [](const LightSpec& l) { return l.shadows; });
+  // At least one slot: the settings' minimum, and a frame without a shadowed light leaves it unused.
+  return std::clamp(std::uint32_t(casting), 1u, gpu::OPACITY_MAX_LIGHTS);
+}
+
+const char* lightTypeName(LightSpec::Type type) {
+  switch (type) {
+    case LightSpec::Type::Directional: return "directional";
+    case LightSpec::Type::Spot: return "spot";
+    case LightSpec::Type::Point: return "point";
+  }
+  return "directional";
+}
+
 RasterMode parseRasterMode(const std::string& text) {
   if (text == "auto") return RasterMode::Auto;
   if (text == "compute") return RasterMode::Compute;

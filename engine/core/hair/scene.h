@@ -5,8 +5,11 @@
 // side consumes (the public loadAsset builds one from its AssetSource).
 #include <glm/glm.hpp>
 
+#include <cstddef>
+#include <cstdint>
 #include <filesystem>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -50,6 +53,17 @@ struct LightSpec {
   void validate() const;  // throws hp::Error naming the field
 };
 
+// A frame's lights: at most kMaxSceneLights (gpu::RENDER_MAX_LIGHTS, what the Renderer takes), none is
+// allowed (only the ambient sky then). Throws hp::Error naming the bad light by index:
+// "lights[2]: spot coneDeg must be in (0, 80], got 90".
+inline constexpr std::size_t kMaxSceneLights = 8;
+void validateLights(std::span<const LightSpec> lights);
+// The shadow slots a Renderer drawing `lights` needs (RendererSettings::shadowedLights): the lights that
+// ask for shadows (LightSpec::shadows), clamped to [1, gpu::OPACITY_MAX_LIGHTS] (the settings' range).
+std::uint32_t shadowSlotsFor(std::span<const LightSpec> lights);
+// The lower-case name of a light type ("directional", "spot", "point"), as the scene file and CLI spell it.
+const char* lightTypeName(LightSpec::Type type);
+
 struct CameraSpec {
   float orbitDeg = 30.0f;       // around +Y, 0 looks at the face from +Z
   float elevationDeg = 10.0f;   // above the horizon
@@ -88,7 +102,7 @@ struct Scene {
   std::optional<std::vector<SphereCollider>> colliders;
   std::vector<MeshColliderSpec> colliderMeshes;
   HairMaterial material;
-  LightSpec light;
+  std::vector<LightSpec> lights{LightSpec{}};  // validateLights; default: the one sun
   CameraSpec camera;
   RenderSpec render;
   SimulationParams simulation;

@@ -154,6 +154,21 @@ class Renderer {
   // The pipeline cache's data now (vkGetPipelineCacheData), for RendererSettings::pipelineCache of a later run.
   Result<std::vector<std::uint8_t>> pipelineCacheData() const noexcept;
 
+  // RendererSettings::motionVectors with the compute raster: the hair's motion image of the raster target
+  // (changes with setRasterTarget). RG16F, the raster target's extent: per pixel the hair's screen motion in
+  // pixels, this frame's unjittered position minus the previous frame's (x right, y down), weighted by each
+  // strand's visible coverage of the pixel; 0 where there is no hair (the hair's coverage is the alpha
+  // recordComposite blends with). recordRaster writes it in COMPUTE_SHADER (SHADER_STORAGE_WRITE) and leaves
+  // it in SHADER_READ_ONLY_OPTIMAL, visible to FRAGMENT_SHADER sampled reads; another stage needs the
+  // application's barrier from FRAGMENT_SHADER. The next recordRaster rewrites it: read it before then.
+  struct MotionImage {
+    VkImage image = VK_NULL_HANDLE;
+    VkImageView view = VK_NULL_HANDLE;
+    VkFormat format = VK_FORMAT_R16G16_SFLOAT;
+    VkExtent2D extent{};
+  };
+  Result<MotionImage> motionImage() const noexcept;
+
  private:
   friend struct Access;
   explicit Renderer(std::shared_ptr<hp::Renderer> impl) noexcept;

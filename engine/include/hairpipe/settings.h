@@ -58,6 +58,10 @@ struct RendererSettings {
   // (20 MiB at the default 512 RGBA32F), a layer of the heads' depth map (4 MiB at 1024) and its shadow
   // passes per frame.
   std::uint32_t shadowedLights = 1;
+  // Motion vectors for temporal anti-aliasing (compute raster only): each instance keeps its previous render
+  // positions (one copy of them per recordUpdate) and the raster target writes the hair's screen motion
+  // (Renderer::motionImage). The graphics raster writes none.
+  bool motionVectors = false;
   RasterMode raster = RasterMode::Graphics;
   std::uint32_t tileBudget = 16384;    // compute raster: list entries kept per 8x8 tile, [1, 2^24]
   // The data of an earlier run's Renderer::pipelineCacheData(): every pipeline is built through a
@@ -194,6 +198,14 @@ struct View {
   VkExtent2D extent{1, 1};
   std::uint32_t index = 0;       // [0, RendererSettings::maxViewsPerFrame)
   bool lines = false;            // debugging: strands as 1-pixel lines
+  // Subpixel jitter for temporal anti-aliasing, in pixels (x right, y down), each in [-1, 1]: hairpipe
+  // offsets `projection` by it for the heads and the hair (give it the unjittered projection). Motion
+  // vectors leave it out.
+  float jitterX = 0.0f, jitterY = 0.0f;
+  // The previous frame's unjittered projection * view, for motion vectors (hasPrevious false: the camera
+  // did not move).
+  Mat4 previousViewProjection;
+  bool hasPrevious = false;
 };
 
 // A camera in hairpipe's conventions (makeView turns it into a View): looking from eye at target,

@@ -122,42 +122,79 @@ void readMaterial(JsonObject& root, HairMaterial& m) {
   validateSection(m, *o, root.pointer("material"));
 }
 
-// "type": "directional" (default) reads direction; "spot" reads position (required), target and
-// coneDeg/range; a key of the other type is refused.
-void readLight(JsonObject& root, LightSpec& l) {
-  auto o = root.object("light");
-  if (!o) return;
+LightSpec::Type lightTypeOf(JsonObject& o) {
   std::string type = "directional";
-  o->read("type", type);
-  requireThat(type == "directional" || type == "spot", *o, "type",
-              "expected \"directional\" or \"spot\", got \"" + excerpt(type) + "\"");
-  const bool spot = type == "spot";
-  for (const char* key : {"position", "target", "coneDeg", "range"})
-    requireThat(spot || !o->has(key), *o, key, "is for a spot light only (\"type\": \"spot\")");
-  requireThat(!spot || !o->has("direction"), *o, "direction", "a spot light aims with \"target\", not \"direction\"");
-  requireThat(!spot || o->has("position"), *o, "position", "is required for a spot light");
+  o.read("type", type);
+  if (type == "directional") return LightSpec::Type::Directional;
+  if (type == "spot") return LightSpec::Type::Spot;
+  if (type == "point") return LightSpec::Type::Point;
+  o.fail("type", "expected \"directional\", \"spot\" or \"point\", got \"" + excerpt(type) + "\"");
+}
+
+// A key of another light type is refused rather than ignored: a forgotten "type" would otherwise pass.
+void refuseForeignKeys(JsonObject& o, LightSpec::Type type) {
+  const bool spot = type == LightSpec::Type::Spot, point = type == LightSpec::Type::Point;
+  for (const char* key : {"position", "range"})
+    requireThat(spot || point || !o.has(key), o, key, "is for a spot or point light only (\"type\": \"spot\" or \"point\")");
+  for (const char* key : {"target", "coneDeg"})
+    requireThat(spot || !o.has(key), o, key, "is for a spot light only (\"type\": \"spot\")");
+  requireThat(!spot || !o.has("direction"), o, "direction", "a spot light aims with \"target\", not \"direction\"");
+  requireThat(!point || !o.has("direction"), o, "direction", "a point light shines every way from \"position\": no \"direction\"");
+  requireThat(!(spot || point) || o.has("position"), o, "position",
+              std::string("is required for a ") + lightTypeName(type) + " light");
+}
+
+// One light object ("light", or an entry of "lights" at `pointer`): "type" directional (default) reads
+// direction; spot reads position (required), target, coneDeg and range; point reads position (required)
+// and range; every type reads color, intensity and shadows.
+LightSpec readLightObject(JsonObject& o, const std::string& pointer) {
+  LightSpec l;
+  l.type = lightTypeOf(o);
+  refuseForeignKeys(o, l.type);
   glm::vec3 target{0.0f};
-  o->read("direction", l.direction);
-  o->read("position", l.position);
-  o->read("target", target);
-  o->read("coneDeg", l.coneDeg);
-  o->read("range", l.range);
-  o->read("color", l.color);
-  o->read("intensity", l.intensity);
-  o->finish();
-  if (spot) {
-    l.type = LightSpec::Type::Spot;
+  o.read("direction", l.direction);
+  o.read("position", l.position);
+  o.read("target", target);
+  o.read("coneDeg", l.coneDeg);
+  o.read("range", l.range);
+  o.read("color", l.color);
+  o.read("intensity", l.intensity);
+  o.read("shadows", l.shadows);
+  o.finish();
+  if (l.type == LightSpec::Type::Spot) {
     l.direction = l.position - target;
-    requireThat(glm::length(l.direction) > 1e-6f, *o, "target", "must differ from position");
+    requireThat(glm::length(l.direction) > 1e-6f, o, "target", "must differ from position");
   }
   float len = glm::length(l.direction);
-  requireThat(std::isfinite(len) && len > 1e-6f, *o, "direction", "must be a non-zero vector");
+  requireThat(std::isfinite(len) && len > 1e-6f, o, "direction", "must be a non-zero vector");
   l.direction /= len;
-  requireThat(glm::all(glm::greaterThanEqual(l.color, glm::vec3(0.0f))), *o, "color", "components must be >= 0");
-  requireThat(std::isfinite(l.intensity) && l.intensity >= 0.0f, *o, "intensity", "must be >= 0");
-  requireThat(l.coneDeg > 0.0f && l.coneDeg <= 80.0f, *o, "coneDeg", "must be in (0, 80], got " + std::to_string(l.coneDeg));
-  requireThat(std::isfinite(l.range) && l.range >= 0.0f, *o, "range", "must be >= 0 (0: no distance falloff)");
-  validateSection(l, *o, root.pointer("light"));
+  requireThat(glm::all(glm::greaterThanEqual(l.color, glm::vec3(0.0f))), o, "color", "components must be >= 0");
+  requireThat(std::isfinite(l.intensity) && l.intensity >= 0.0f, o, "intensity", "must be >= 0");
+  requireThat(l.coneDeg > 0.0f && l.coneDeg <= 80.0f, o, "coneDeg", "must be in (0, 80], got " + std::to_string(l.coneDeg));
+  requireThat(std::isfinite(l.range) && l.range >= 0.0f, o, "range", "must be >= 0 (0: no distance falloff)");
+  validateSection(l, o, pointer);
+  return l;
+}
+
+// "light" (one light) or "lights" (a list of up to kMaxSceneLights, possibly empty), not both; either
+// replaces the default sun.
+void readLights(JsonObject& root, std::vector<LightSpec>& lights) {
+  if (root.has("light") && root.has("lights"))
+    root.fail("lights", "give either \"light\" (one light) or \"lights\" (a list), not both");
+  if (auto o = root.object("light")) {
+    lights = {readLightObject(*o, root.pointer("light"))};
+    return;
+  }
+  const nlohmann::json* list = root.array("lights");
+  if (!list) return;
+  if (list->size() > kMaxSceneLights)
+    root.fail("lights", "at most " + std::to_string(kMaxSceneLights) + " lights, got " + std::to_string(list->size()));
+  lights.clear();
+  for (std::size_t i = 0; i < list->size(); ++i) {
+    const std::string pointer = root.pointer("lights") + "/" + std::to_string(i);
+    JsonObject o((*list)[i], pointer, root.file());
+    lights.push_back(readLightObject(o, pointer));
+  }
 }
 
 void readCamera(JsonObject& root, CameraSpec& c) {
@@ -225,7 +262,7 @@ Scene parseScene(const std::string& jsonText, const std::string& source, const s
   readDensity(root, scene.density);
   readColliders(root, scene, baseDir);
   readMaterial(root, scene.material);
-  readLight(root, scene.light);
+  readLights(root, scene.lights);
   readCamera(root, scene.camera);
   readRender(root, scene.render);
   readSimulation(root, scene.simulation);

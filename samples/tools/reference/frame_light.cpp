@@ -27,8 +27,11 @@ LightArrival lightArrival(const LightSpec& light, const glm::dvec3& p) {
   const glm::dvec3 toLight = glm::dvec3(light.position) - p;
   a.distance = glm::length(toLight);
   a.L = toLight / std::max(a.distance, 1e-6);
-  const double cone = glm::radians(double(light.coneDeg));
-  double scale = smoothstep(std::cos(cone), std::cos(kSpotInnerFraction * cone), glm::dot(a.L, direction));
+  double scale = 1.0;  // a point light: no cone
+  if (light.type == LightSpec::Type::Spot) {
+    const double cone = glm::radians(double(light.coneDeg));
+    scale = smoothstep(std::cos(cone), std::cos(kSpotInnerFraction * cone), glm::dot(a.L, direction));
+  }
   if (light.range > 0.0f) {
     const double r = light.range / std::max(a.distance, 0.1 * light.range);
     scale *= r * r;

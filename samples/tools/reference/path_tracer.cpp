@@ -111,11 +111,16 @@ class Tracer {
     return std::sqrt(1.0 - s * s);
   }
 
+  // Next-event estimation of every light, each with its own shadow ray.
   glm::dvec3 fibreDirect(const SceneHit& h, const glm::dvec3& V) const {
-    const LightArrival a = lightArrival(frame_.light, h.axisPoint);
-    if (a.irradiance == glm::dvec3(0.0)) return glm::dvec3(0.0);
-    if (scene_.occluded(h.axisPoint, a.L, 0.0f, float(a.distance), leaveFibre(h, a.L))) return glm::dvec3(0.0);
-    return fibreS(h, a.L, V) * cosThetaI(a.L, h.tangent) * a.irradiance;
+    glm::dvec3 sum(0.0);
+    for (const LightSpec& light : frame_.lights) {
+      const LightArrival a = lightArrival(light, h.axisPoint);
+      if (a.irradiance == glm::dvec3(0.0)) continue;
+      if (scene_.occluded(h.axisPoint, a.L, 0.0f, float(a.distance), leaveFibre(h, a.L))) continue;
+      sum += fibreS(h, a.L, V) * cosThetaI(a.L, h.tangent) * a.irradiance;
+    }
+    return sum;
   }
 
   glm::dvec3 sampleFibre(const SceneHit& h, const glm::dvec3& V, Sampler& rng, glm::dvec3& origin, glm::dvec3& dir,
@@ -133,12 +138,16 @@ class Tracer {
 
   glm::dvec3 headDirect(const SceneHit& h, const glm::dvec3& V) const {
     const glm::dvec3 ng = facing(h.geometricNormal, V), n = facing(h.normal, ng);
-    const LightArrival a = lightArrival(frame_.light, h.point);
-    const double cosine = glm::dot(n, a.L);
-    if (cosine <= 0.0 || glm::dot(ng, a.L) <= 0.0 || a.irradiance == glm::dvec3(0.0)) return glm::dvec3(0.0);
     const glm::dvec3 origin = h.point + double(eps_) * ng;
-    if (scene_.occluded(origin, a.L, 0.0f, float(a.distance))) return glm::dvec3(0.0);
-    return h.albedo / kPi * cosine * a.irradiance;
+    glm::dvec3 sum(0.0);
+    for (const LightSpec& light : frame_.lights) {
+      const LightArrival a = lightArrival(light, h.point);
+      const double cosine = glm::dot(n, a.L);
+      if (cosine <= 0.0 || glm::dot(ng, a.L) <= 0.0 || a.irradiance == glm::dvec3(0.0)) continue;
+      if (scene_.occluded(origin, a.L, 0.0f, float(a.distance))) continue;
+      sum += h.albedo / kPi * cosine * a.irradiance;
+    }
+    return sum;
   }
 
   glm::dvec3 sampleHead(const SceneHit& h, const glm::dvec3& V, Sampler& rng, glm::dvec3& origin, glm::dvec3& dir,

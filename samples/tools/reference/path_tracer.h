@@ -2,8 +2,8 @@
 // Contract: the ground-truth reference of an exported frame, path traced on the CPU
 // (`hairpipe reference`, docs/SHADING.md "Reference"). Per pixel, `spp` camera rays over the pixel's
 // square, stratified when spp is a square number (the box filter the real-time coverage integrates). At every scattering
-// vertex (up to `bounces`): the light by next-event estimation with a shadow ray (the sun is a delta
-// light: no other way reaches it), and one continuation direction: at a fibre importance-sampled from
+// vertex (up to `bounces`): every light by next-event estimation with a shadow ray each (they are delta
+// lights: no other way reaches them), and one continuation direction: at a fibre importance-sampled from
 // its lobes (fibre_sampling.h; weight S cos(theta_i) / pdf times the strand's lightness scale; the
 // fibre scatters from its axis, far field), cosine-weighted at the Lambertian
 // head (weight albedo). A continuation ray that escapes brings the uniform white environment (the
