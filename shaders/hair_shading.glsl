@@ -33,17 +33,31 @@ vec3 hairLightRadiance(FrameLight light, LightSample ls, LightShadow shadow, vec
   return direct;
 }
 
+// 1: every light of the frame, in a loop; 0: the first light only, without one. lavapipe runs this shader
+// at half speed with the loop in it, even for one light, so the compute raster's shade pass has a variant
+// of each and takes the one-light variant for frames of one light (docs/PERFORMANCE.md "Several lights").
+// The graphics strand pass keeps the default.
+layout(constant_id = 0) const uint HAIR_LIGHT_LOOP = 1u;
+
 vec3 hairRadiance(vec3 world, vec3 tangent, float colorScale) {
   vec3 T = normalize(tangent);
   vec3 V = normalize(frame.cameraPosition.xyz - world);
   vec3 direct = vec3(0.0);
   vec3 bounce = vec3(0.0);
-  for (uint i = 0u; i < frame.lightCount.x; ++i) {
-    FrameLight light = frame.lights[i];
+  if (HAIR_LIGHT_LOOP != 0u) {
+    for (uint i = 0u; i < frame.lightCount.x; ++i) {
+      FrameLight light = frame.lights[i];
+      LightSample ls = sampleLight(light, world);
+      LightShadow shadow = frameLightShadow(light, world, ls.L, false);
+      direct += hairLightRadiance(light, ls, shadow, V, T);
+      if (i == frame.lightCount.y) bounce = headBounceAt(world, ls.L, shadow.alpha);
+    }
+  } else if (frame.lightCount.x > 0u) {
+    FrameLight light = frame.lights[0];
     LightSample ls = sampleLight(light, world);
     LightShadow shadow = frameLightShadow(light, world, ls.L, false);
     direct += hairLightRadiance(light, ls, shadow, V, T);
-    if (i == frame.lightCount.y) bounce = headBounceAt(world, ls.L, shadow.alpha);
+    if (frame.lightCount.y == 0u) bounce = headBounceAt(world, ls.L, shadow.alpha);
   }
   // The ambient is a uniform white sky: an unoccluded fibre returns the model's sky albedo times its
   // radiance, a fibre of a head of hair the mean visible fraction of it (shared/render.h).

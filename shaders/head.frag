@@ -15,18 +15,28 @@ layout(location = 2) in vec3 inWorld;
 layout(location = 0) out vec4 outColor;
 #include "frame_shadows.glsl"
 
+// 1: every light in a loop; 0: the first light only, without the loop (twice as fast on lavapipe, whose
+// loops run this body at half speed: compute/head/head_pass.h takes it for frames of one light).
+layout(constant_id = 0) const uint HEAD_LIGHT_LOOP = 1u;
+
+// One light's diffuse term, shadowed.
+vec3 headLight(FrameLight light, vec3 N, float wrap) {
+  LightSample ls = sampleLight(light, inWorld);
+  float diffuse = ls.scale * max((wrap + dot(N, ls.L)) / (1.0 + wrap), 0.0);
+  LightShadow shadow = frameLightShadow(light, inWorld, ls.L, true);
+  return light.radiance.rgb * (diffuse * exp(-frame.strand.z * shadow.alpha) * shadow.head);
+}
+
 void main() {
   vec3 N = normalize(inNormal);
   float wrap = frame.skinColor.w;
   // Under the hair the scalp takes the hair's albedo, darkened as the hair's own shadow would.
   vec3 albedo = mix(frame.skinColor.rgb, 0.5 * frame.hairColor.rgb, inScalp);
   vec3 direct = vec3(0.0);
-  for (uint i = 0u; i < frame.lightCount.x; ++i) {
-    FrameLight light = frame.lights[i];
-    LightSample ls = sampleLight(light, inWorld);
-    float diffuse = ls.scale * max((wrap + dot(N, ls.L)) / (1.0 + wrap), 0.0);
-    LightShadow shadow = frameLightShadow(light, inWorld, ls.L, true);
-    direct += light.radiance.rgb * (diffuse * exp(-frame.strand.z * shadow.alpha) * shadow.head);
+  if (HEAD_LIGHT_LOOP != 0u) {
+    for (uint i = 0u; i < frame.lightCount.x; ++i) direct += headLight(frame.lights[i], N, wrap);
+  } else if (frame.lightCount.x > 0u) {
+    direct = headLight(frame.lights[0], N, wrap);
   }
   outColor = vec4(albedo * (direct / 3.14159265 + frame.hairColor.w), 1.0);
 }

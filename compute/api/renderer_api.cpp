@@ -97,6 +97,7 @@ Status Instance::setDensity(const Density& density) noexcept {
                         instance.settings().strands);
   });
 }
+bool Instance::materialPending() const noexcept { return impl_ && impl_->instance->materialPending(); }
 std::uint32_t Instance::strandCount() const noexcept {
   return impl_ ? impl_->instance->strands().layout().strandCount : 0;  // 0: moved from
 }

@@ -52,7 +52,11 @@ HeadPass::HeadPass(const vk::Context& ctx, const HeadMesh& mesh, const vk::Buffe
   desc.sets = {set_.layout()};
   desc.pushSize = sizeof(glm::mat4);
   desc.name = "head";
+  desc.fragmentSpecialization = {1u};  // HEAD_LIGHT_LOOP
   pipeline_ = vk::makeGraphicsPipeline(ctx, library, desc);
+  desc.name = "head (one light)";
+  desc.fragmentSpecialization = {0u};
+  oneLightPipeline_ = vk::makeGraphicsPipeline(ctx, library, desc);
   if (empty()) return;
   positions_ = vk::Buffer(ctx, mesh.positions.size() * sizeof(glm::vec4), kUsage, vk::MemoryKind::DeviceLocal, "head positions");
   normals_ = vk::Buffer(ctx, mesh.normals.size() * sizeof(glm::vec4), kUsage, vk::MemoryKind::DeviceLocal, "head normals");
@@ -67,11 +71,12 @@ HeadPass::HeadPass(const vk::Context& ctx, const HeadMesh& mesh, const vk::Buffe
   set_.writeStorageBuffer(gpu::RENDER_BINDING_ATTRIBUTES, indices_.handle());
 }
 
-void HeadPass::draw(VkCommandBuffer cmd, VkExtent2D extent, const glm::mat4& headToWorld,
-                    std::uint32_t frameOffset) const {
+void HeadPass::draw(VkCommandBuffer cmd, VkExtent2D extent, const glm::mat4& headToWorld, std::uint32_t frameOffset,
+                    bool oneLight) const {
   if (empty()) return;
-  pipeline_->bind(cmd, set_.set(), extent, frameOffset);
-  pipeline_->push(cmd, headToWorld);
-  pipeline_->draw(cmd, indexCount_);
+  const vk::GraphicsPipeline& pipeline = oneLight ? *oneLightPipeline_ : *pipeline_;
+  pipeline.bind(cmd, set_.set(), extent, frameOffset);
+  pipeline.push(cmd, headToWorld);
+  pipeline.draw(cmd, indexCount_);
 }
 }  // namespace hp::render

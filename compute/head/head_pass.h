@@ -22,7 +22,9 @@ class HeadPass {
  public:
   HeadPass(const vk::Context& ctx, const HeadMesh& mesh, const vk::Buffer& frameBlock, const ShadowInputs& shadows,
            const hairpipe::AttachmentFormats& formats, vk::PipelineLibrary* library = nullptr);
-  void draw(VkCommandBuffer cmd, VkExtent2D extent, const glm::mat4& headToWorld, std::uint32_t frameOffset) const;
+  // oneLight: the frame block holds at most one light (the head.frag variant without the light loop).
+  void draw(VkCommandBuffer cmd, VkExtent2D extent, const glm::mat4& headToWorld, std::uint32_t frameOffset,
+            bool oneLight = false) const;
   bool empty() const { return indexCount_ == 0; }
   // The mesh as uploaded (positions; normals with the scalp weight in w; indices), for other head draws.
   const vk::Buffer& positions() const { return positions_; }
@@ -34,6 +36,6 @@ class HeadPass {
   std::uint32_t indexCount_ = 0;
   vk::Buffer positions_, normals_, indices_;
   vk::DescriptorSet set_;
-  std::shared_ptr<const vk::GraphicsPipeline> pipeline_;
+  std::shared_ptr<const vk::GraphicsPipeline> pipeline_, oneLightPipeline_;
 };
 }  // namespace hp::render

@@ -75,10 +75,8 @@ void makeVisibleToComputeToo(const vk::Context& ctx, const std::vector<const vk:
 }
 }  // namespace
 
-MarschnerTextures::MarschnerTextures(const vk::Context& ctx, const HairMaterial& material, LutMode mode,
-                                     const LutBuildOptions& options)
+MarschnerTextures::MarschnerTextures(const vk::Context& ctx, const MarschnerLut& lut, const LutBuildOptions& options)
     : ctx_(ctx), options_(options) {
-  MarschnerLut lut = buildLut(mode, material, options_);  // validates the material before any Vulkan work
   sampler_ = vk::Sampler(ctx, "Marschner LUT sampler");
   vk::ImageDesc dummy;
   dummy.format = VK_FORMAT_R8G8B8A8_UNORM;

@@ -39,7 +39,10 @@ namespace hp::render {
 class MarschnerTextures {
  public:
   MarschnerTextures(const vk::Context& ctx, const HairMaterial& material, LutMode mode,
-                    const LutBuildOptions& options = {});
+                    const LutBuildOptions& options = {})
+      : MarschnerTextures(ctx, buildLut(mode, material, options), options) {}
+  // From tables built beforehand (buildLut, e.g. on a worker thread): only the uploads here.
+  MarschnerTextures(const vk::Context& ctx, const MarschnerLut& lut, const LutBuildOptions& options = {});
   MarschnerTextures(const MarschnerTextures&) = delete;
   MarschnerTextures& operator=(const MarschnerTextures&) = delete;
 

@@ -174,7 +174,11 @@ StrandRasterPass::StrandRasterPass(const vk::Context& ctx, std::span<const Raste
   const std::vector<std::uint32_t> motion = {settings.motion ? 1u : 0u};  // constant_id 0: MOTION
   project_ = vk::ComputePipeline(ctx, "raster_project.comp", gpu::RASTER_WORKGROUP_SIZE, {setLayout}, 0,
                                  "raster project", motion, cache);
-  shade_ = pipeline("raster_shade.comp", gpu::RASTER_WORKGROUP_SIZE, "raster shade");
+  // constant_id 0 of the shade pass: HAIR_LIGHT_LOOP (every light in a loop, or the first without one).
+  shade_ = vk::ComputePipeline(ctx, "raster_shade.comp", gpu::RASTER_WORKGROUP_SIZE, {setLayout}, 0, "raster shade",
+                               {1u}, cache);
+  shadeOneLight_ = vk::ComputePipeline(ctx, "raster_shade.comp", gpu::RASTER_WORKGROUP_SIZE, {setLayout}, 0,
+                                       "raster shade (one light)", {0u}, cache);
   tileDepthPipeline_ = pipeline(multisampled() ? "raster_tile_depth_ms.comp" : "raster_tile_depth.comp",
                                 gpu::RASTER_WORKGROUP_SIZE, "raster tile depth");
   count_ = vk::ComputePipeline(ctx, "raster_bin.comp", gpu::RASTER_WORKGROUP_SIZE, {setLayout}, 0, "raster count",
@@ -342,14 +346,15 @@ void StrandRasterPass::recordBinning(VkCommandBuffer cmd, vk::GpuProfiler* profi
   end(cmd, profiler);
 }
 
-void StrandRasterPass::recordFine(VkCommandBuffer cmd, vk::GpuProfiler* profiler) const {
+void StrandRasterPass::recordFine(VkCommandBuffer cmd, vk::GpuProfiler* profiler, bool oneLight) const {
+  const vk::ComputePipeline& shade = oneLight ? shadeOneLight_ : shade_;
   begin(cmd, profiler, "raster shade");
   // The scan wrote the shade dispatches (indirect arguments) and the count step the shade lists.
   vk::bufferBarrier(ctx_, cmd, shadeArgs_.handle(), vk::BufferUse::ComputeWrite, vk::BufferUse::IndirectRead);
   chain(ctx_, cmd);
   for (std::size_t i = 0; i < chunks_.size(); ++i) {
-    shade_.bind(cmd, chunks_[i].set.set());
-    shade_.dispatchIndirect(cmd, shadeArgs_.handle(), i * sizeof(glm::uvec4));
+    shade.bind(cmd, chunks_[i].set.set());
+    shade.dispatchIndirect(cmd, shadeArgs_.handle(), i * sizeof(glm::uvec4));
   }
   end(cmd, profiler);
   begin(cmd, profiler, "raster fine");

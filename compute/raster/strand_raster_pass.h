@@ -81,16 +81,17 @@ class StrandRasterPass {
   void setDepth(VkImageView depth);
 
   // strandLimits: per source, the level of detail's prefix of its strands drawn (compute::strandsWithin);
-  // empty: all of them.
+  // empty: all of them. oneLight: the frame blocks hold at most one light, so the shade pass may take its
+  // one-light variant (shaders/hair_shading.glsl HAIR_LIGHT_LOOP: twice as fast on lavapipe).
   void record(VkCommandBuffer cmd, vk::GpuProfiler* profiler = nullptr,
-              std::span<const std::uint32_t> strandLimits = {}) const {
+              std::span<const std::uint32_t> strandLimits = {}, bool oneLight = false) const {
     recordBinning(cmd, profiler, strandLimits);
-    recordFine(cmd, profiler);
+    recordFine(cmd, profiler, oneLight);
   }
   // record() in two halves: project + bin (readStats() is complete after it), then shade + fine raster.
   void recordBinning(VkCommandBuffer cmd, vk::GpuProfiler* profiler = nullptr,
                      std::span<const std::uint32_t> strandLimits = {}) const;
-  void recordFine(VkCommandBuffer cmd, vk::GpuProfiler* profiler = nullptr) const;
+  void recordFine(VkCommandBuffer cmd, vk::GpuProfiler* profiler = nullptr, bool oneLight = false) const;
 
   const vk::Image& output() const { return output_; }
   // The near layer and its sample mask (R32_UINT); 1 x 1 and never written for a single-sample head depth.
@@ -141,7 +142,8 @@ class StrandRasterPass {
   vk::Sampler sampler_;
   VkImageView depth_ = VK_NULL_HANDLE;
   std::vector<Chunk> chunks_;
-  vk::ComputePipeline project_, shade_, tileDepthPipeline_, count_, scatter_, scanTiles_, scanBlocks_, fine_;
+  vk::ComputePipeline project_, shade_, shadeOneLight_, tileDepthPipeline_, count_, scatter_, scanTiles_, scanBlocks_,
+      fine_;
 };
 
 // List entries reserved for a frame: every segment in 8 tiles plus 16 per tile (the default head at

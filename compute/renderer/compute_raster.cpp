@@ -104,7 +104,7 @@ void ComputeRaster::record(VkCommandBuffer cmd, const View& view, const render::
                    vk::ImageUse::ComputeSampled, mapLayers);
   const render::HeadBounceMap& bounce = shadows_.bounceMap();
   bounce.transition(cmd, vk::ImageUse::FragmentSampled, vk::ImageUse::ComputeSampled);
-  pass_.record(cmd, profiler, strandLimits);
+  pass_.record(cmd, profiler, strandLimits, lights.lights.size() <= 1);
   bounce.transition(cmd, vk::ImageUse::ComputeSampled, vk::ImageUse::FragmentSampled);
   vk::bufferBarrier(ctx_, cmd, lightSpace, vk::BufferUse::ComputeRead, vk::BufferUse::GraphicsRead);
   vk::imageBarrier(ctx_, cmd, maps, VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::ComputeSampled,

@@ -103,9 +103,30 @@ void HairInstance::setHeadToWorld(const glm::mat4& headToWorld) {
 
 void HairInstance::setMaterial(const HairMaterial& material, LutMode mode) {
   material.validate();
+  pending_.reset();  // a newer change replaces a pending one (its worker finishes into nothing)
   if (material == settings_.material && mode == settings_.lutMode) return;
+  std::shared_ptr<render::MarschnerTextures> cached = renderer_.cachedMarschner(material, mode);
+  if (cached || !renderer_.inFrameLoop()) return applyMaterial(cached, material, mode);
+  // In the frame loop the tables (tens of ms of CPU) are built off the application's thread.
+  pending_ = LutBuild::start(material, mode);
+}
+
+void HairInstance::applyReadyMaterial() {
+  if (!pending_ || !pending_->done()) return;
+  const std::shared_ptr<LutBuild> done = std::move(pending_);
+  pending_.reset();
+  try {
+    if (!done->error().empty()) throw Error(done->error());
+    applyMaterial(renderer_.marschnerFrom(done->lut()), done->material(), done->mode());
+  } catch (const std::exception& e) {  // record calls do not throw: the old material stays, the reason is kept
+    materialError_ = e.what();
+  }
+}
+
+void HairInstance::applyMaterial(std::shared_ptr<render::MarschnerTextures> textures, const HairMaterial& material,
+                                 LutMode mode) {
   renderer_.withUploads("set material", [&] {
-    auto textures = renderer_.marschner(material, mode);
+    if (!textures) textures = renderer_.marschner(material, mode);
     auto pass = makeStrandPass(*geometry_, *textures);  // everything that can throw happens before the swap
     // The old textures and strand pass stay alive until the frames that sample them are done.
     renderer_.retire(marschner_);

@@ -17,7 +17,10 @@
 #include "compute/strands/tessellate_pass.h"
 #include "engine/core/hair/hair_asset.h"
 #include "compute/head/head_bounce_pass.h"
+#include <optional>
+#include <string>
 #include "compute/head/head_pass.h"
+#include "compute/renderer/lut_build.h"
 #include "compute/raster/marschner_textures.h"
 #include "compute/shadows/opacity_pass.h"
 #include "compute/raster/strand_pass.h"
@@ -43,7 +46,19 @@ class HairInstance {
     simulate_.setColliders(spheres, capsules);
   }
   void setBones(std::span<const glm::mat4> bones) { simulate_.setBones(bones); }
+  // Before the first frame, or for tables the Renderer has cached: applied at once (uploads batched as
+  // withUploads says). Otherwise the tables are built on a worker thread and the instance draws its current
+  // material until a recordUpdate or recordShadows finds them done (materialPending()); a later
+  // setMaterial replaces a pending one.
   void setMaterial(const HairMaterial& material, LutMode mode);
+  bool materialPending() const { return pending_ != nullptr; }
+  // Blocks until a pending material's tables are built (not applied: the next recordUpdate or recordShadows
+  // does that). For tools and tests that need a change in a known frame; waits on the CPU worker only.
+  void waitForMaterial() const {
+    if (pending_) pending_->wait();
+  }
+  // Why the last worker build was dropped (empty: none was).
+  const std::string& materialError() const { return materialError_; }
   void setLook(const render::LookSettings& look);
   void setLod(const hairpipe::LodSettings& lod);
   void setSimulation(const SimulationParams& params);
@@ -84,6 +99,10 @@ class HairInstance {
   void replaceStrandPass(std::shared_ptr<render::StrandPass> pass);
   std::uint32_t frameOffset(std::uint64_t frame, std::uint32_t view) const;
   gpu::RenderFrame* frameSlot(std::uint64_t frame, std::uint32_t view) const;
+  // The textures in use from now on (the old ones retired), for `material` in `mode`.
+  void applyMaterial(std::shared_ptr<render::MarschnerTextures> textures, const HairMaterial& material, LutMode mode);
+  // A worker's tables, once done: uploaded and applied (Renderer::applyReadyMaterials).
+  void applyReadyMaterial();
   // A view of `frame` draws `fraction` (the shadows of the next frame use the largest of a frame's).
   void noteViewFraction(std::uint64_t frame, float fraction);
 
@@ -94,6 +113,8 @@ class HairInstance {
   SimulatePass simulate_;
   std::shared_ptr<Geometry> geometry_;
   std::shared_ptr<render::MarschnerTextures> marschner_;
+  std::shared_ptr<LutBuild> pending_;  // a material's tables being built on a worker; null: none
+  std::string materialError_;
   vk::Buffer frames_;  // framesInFlight x maxViewsPerFrame gpu::RenderFrame slots, persistently mapped
   std::uint32_t frameStride_ = 0;
   std::shared_ptr<render::HeadPass> head_;

@@ -135,13 +135,27 @@ std::vector<glm::vec2> Renderer::rasterMotion() const {
 }
 std::vector<float> Renderer::rasterCoverage() const { return target().readCoverage(); }
 
-std::shared_ptr<render::MarschnerTextures> Renderer::marschner(const HairMaterial& material, LutMode mode) {
+std::shared_ptr<render::MarschnerTextures> Renderer::cachedMarschner(const HairMaterial& material, LutMode mode) {
   std::erase_if(luts_, [](const Lut& l) { return l.textures.expired(); });
   for (const Lut& l : luts_)
     if (l.mode == mode && l.material == material) return l.textures.lock();
-  auto textures = std::make_shared<render::MarschnerTextures>(ctx_, material, mode);
-  luts_.push_back({material, mode, textures});
+  return nullptr;
+}
+
+std::shared_ptr<render::MarschnerTextures> Renderer::marschner(const HairMaterial& material, LutMode mode) {
+  if (auto cached = cachedMarschner(material, mode)) return cached;
+  return marschnerFrom(buildLut(mode, material));
+}
+
+std::shared_ptr<render::MarschnerTextures> Renderer::marschnerFrom(const MarschnerLut& lut) {
+  if (auto cached = cachedMarschner(lut.material, lut.mode)) return cached;
+  auto textures = std::make_shared<render::MarschnerTextures>(ctx_, lut);
+  luts_.push_back({lut.material, lut.mode, textures});
   return textures;
+}
+
+void Renderer::applyReadyMaterials(std::span<HairInstance* const> instances) {
+  for (HairInstance* i : instances) i->applyReadyMaterial();
 }
 
 void Renderer::retire(std::shared_ptr<void> resource) {
@@ -177,6 +191,7 @@ void Renderer::beginFrame(std::uint64_t frame, std::span<HairInstance* const> in
 void Renderer::recordUpdate(VkCommandBuffer cmd, std::uint64_t frame, std::span<HairInstance* const> instances,
                             vk::GpuProfiler* profiler) {
   beginFrame(frame, instances);
+  applyReadyMaterials(instances);
   executeDeferred(cmd);
   std::vector<UpdateWork> work;
   work.reserve(instances.size());
@@ -191,6 +206,7 @@ void Renderer::recordShadows(VkCommandBuffer cmd, std::uint64_t frame, std::span
                              std::span<HairInstance* const> instances, vk::GpuProfiler* profiler) {
   render::FrameLights frameLights = render::assignShadowSlots(lights, shadows_->slots());  // validates them
   beginFrame(frame, instances);
+  applyReadyMaterials(instances);
   executeDeferred(cmd);
   render::FrameLights& current = frameLights_[frame % settings_.framesInFlight];
   current = std::move(frameLights);
@@ -267,7 +283,7 @@ void Renderer::recordDraw(VkCommandBuffer cmd, std::uint64_t frame, const View& 
     render::setViewMotion(*block, view.extent, view.jitter, view.previousViewProj);
     const std::uint32_t offset = i->frameOffset(frame, view.index);
     if (profiler) profiler->begin(cmd, "head");
-    i->head_->draw(cmd, view.extent, i->headToWorld(), offset);
+    i->head_->draw(cmd, view.extent, i->headToWorld(), offset, lights.lights.size() <= 1);
     if (profiler) profiler->end(cmd);
     if (!view.ribbons || raster_ == RasterMode::Compute) continue;
     if (profiler) profiler->begin(cmd, "shade");

@@ -114,6 +114,12 @@ class Renderer {
   std::vector<std::uint8_t> pipelineCacheData() const { return pipelines_.cacheData(); }
   // The LUT textures of a material and mode, built once and shared while any instance uses them.
   std::shared_ptr<render::MarschnerTextures> marschner(const HairMaterial& material, LutMode mode);
+  // The cached textures of a material and mode, or null (nothing built).
+  std::shared_ptr<render::MarschnerTextures> cachedMarschner(const HairMaterial& material, LutMode mode);
+  // Textures from tables built elsewhere (a worker thread), cached like marschner()'s.
+  std::shared_ptr<render::MarschnerTextures> marschnerFrom(const MarschnerLut& lut);
+  // Whether a frame was recorded: changes then defer their uploads, and new LUTs are built off this thread.
+  bool inFrameLoop() const { return lastFrame_.has_value(); }
   // Keeps `resource` alive until the frames that may use it now are done.
   void retire(std::shared_ptr<void> resource);
   // Runs `change` (construction or a setter) with its device work batched: before the first frame, one
@@ -127,6 +133,8 @@ class Renderer {
  private:
   friend class HairInstance;
   void beginFrame(std::uint64_t frame, std::span<HairInstance* const> instances);
+  // Instances whose new material's tables a worker finished take them (before the frame's deferred work).
+  void applyReadyMaterials(std::span<HairInstance* const> instances);
   // An instance's strands or material changed, or it goes (`removed`): the raster target follows.
   void instanceChanged(const HairInstance& instance, bool removed = false);
   // An instance destroyed without destroyInstance(): a raster target holding it is dropped (retired, not

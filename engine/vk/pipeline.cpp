@@ -104,6 +104,26 @@ void PipelineBase::pushConstants(VkCommandBuffer cmd, const void* data, std::uin
   fn_->vkCmdPushConstants(cmd, layout_, pushStages_, 0, size, data);
 }
 
+namespace {
+// The VkSpecializationInfo of `values` (constant_id i takes values[i]); null for none. Refers to `values`,
+// which must outlive it, and to itself: not copyable.
+class Specialization {
+ public:
+  explicit Specialization(const std::vector<std::uint32_t>& values) {
+    for (std::uint32_t i = 0; i < values.size(); ++i)
+      entries_.push_back({i, i * std::uint32_t(sizeof(std::uint32_t)), sizeof(std::uint32_t)});
+    info_ = {std::uint32_t(entries_.size()), entries_.data(), values.size() * sizeof(std::uint32_t), values.data()};
+  }
+  Specialization(const Specialization&) = delete;
+  Specialization& operator=(const Specialization&) = delete;
+  const VkSpecializationInfo* info() const { return entries_.empty() ? nullptr : &info_; }
+
+ private:
+  std::vector<VkSpecializationMapEntry> entries_;
+  VkSpecializationInfo info_{};
+};
+}  // namespace
+
 ComputePipeline::ComputePipeline(const Context& ctx, const std::string& shader, std::uint32_t workgroupSize,
                                  const std::vector<VkDescriptorSetLayout>& sets, std::uint32_t pushSize,
                                  const std::string& name, const std::vector<std::uint32_t>& specialization,
@@ -114,14 +134,10 @@ ComputePipeline::ComputePipeline(const Context& ctx, const std::string& shader, 
   bindPoint_ = VK_PIPELINE_BIND_POINT_COMPUTE;
   createLayout(ctx, sets, pushSize, VK_SHADER_STAGE_COMPUTE_BIT, name);
   ScopedModule module(ctx, shader);
-  std::vector<VkSpecializationMapEntry> entries;
-  for (std::uint32_t i = 0; i < specialization.size(); ++i)
-    entries.push_back({i, i * std::uint32_t(sizeof(std::uint32_t)), sizeof(std::uint32_t)});
-  VkSpecializationInfo specInfo{static_cast<std::uint32_t>(entries.size()), entries.data(),
-                                specialization.size() * sizeof(std::uint32_t), specialization.data()};
+  const Specialization spec(specialization);
   VkComputePipelineCreateInfo info{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
   info.stage = stageInfo(VK_SHADER_STAGE_COMPUTE_BIT, module.module);
-  if (!specialization.empty()) info.stage.pSpecializationInfo = &specInfo;
+  info.stage.pSpecializationInfo = spec.info();
   info.layout = layout_;
   HP_VK_CHECK(fn_->vkCreateComputePipelines(device_, cache, 1, &info, nullptr, &pipeline_));
   ctx.setName(VK_OBJECT_TYPE_PIPELINE, reinterpret_cast<std::uint64_t>(pipeline_), name);
@@ -150,9 +166,11 @@ GraphicsPipeline::GraphicsPipeline(const Context& ctx, const GraphicsPipelineDes
   ScopedModule vs(ctx, d.vertexShader);
   std::vector<VkPipelineShaderStageCreateInfo> stages{stageInfo(VK_SHADER_STAGE_VERTEX_BIT, vs.module)};
   std::optional<ScopedModule> fs;
+  const Specialization fragmentSpec(d.fragmentSpecialization);
   if (!d.fragmentShader.empty()) {
     fs.emplace(ctx, d.fragmentShader);
     stages.push_back(stageInfo(VK_SHADER_STAGE_FRAGMENT_BIT, fs->module));
+    stages.back().pSpecializationInfo = fragmentSpec.info();
   }
   VkPipelineVertexInputStateCreateInfo vertexInput{VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
   VkPipelineInputAssemblyStateCreateInfo assembly{VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO};

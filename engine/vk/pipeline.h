@@ -83,6 +83,8 @@ struct GraphicsPipelineDesc {
   std::vector<VkDescriptorSetLayout> sets;
   std::uint32_t pushSize = 0;
   std::string name;
+  // `fragmentSpecialization[i]`: the fragment shader's `layout(constant_id = i) const uint` (i from 0).
+  std::vector<std::uint32_t> fragmentSpecialization;
 };
 
 class GraphicsPipeline : public PipelineBase {

@@ -22,6 +22,8 @@ std::string graphicsKey(const GraphicsPipelineDesc& d) {
                     "|" + std::to_string(d.topology) + "|" + std::to_string(d.cullMode) + "|" +
                     std::to_string(d.pushSize) + "|" + std::to_string(d.sets.size());
   for (VkFormat f : d.colorFormats) key += "|" + std::to_string(f);
+  key += "|s";
+  for (std::uint32_t s : d.fragmentSpecialization) key += "|" + std::to_string(s);
   return key;
 }
 std::uint32_t readU32(std::span<const std::uint8_t> data, std::size_t offset) {

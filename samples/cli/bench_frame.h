@@ -27,6 +27,7 @@ struct FrameCase {
   render::Scattering scattering = render::LookSettings{}.scattering;  // both paths
   LutMode lutMode = LutMode::Physical;  // the fibre model's device form (dual needs physical)
   float lodFraction = 1.0f;  // the strands drawn (a level of detail forced at every distance), widened
+  std::uint32_t lights = 1;  // shadowed directional lights, [1, 4] (benchLights: the sun, then a rim, fill, top)
 };
 
 struct PassTiming {

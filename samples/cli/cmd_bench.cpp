@@ -37,6 +37,7 @@ struct BenchOptions {
   std::vector<std::string> scattering{hp::render::scatteringName(hp::render::LookSettings{}.scattering)};
   std::vector<std::string> lutModes{hp::lutModeName(hp::cli::FrameCase{}.lutMode)};
   std::vector<float> lodFractions{1.0f};
+  std::vector<std::uint32_t> lights{1};
   std::string json, plot, device;
 };
 
@@ -50,14 +51,15 @@ void parseResolution(const std::string& text, std::uint32_t& w, std::uint32_t& h
   h = b;
 }
 
-void addSampleCounts(hp::cli::FrameCase c, const std::vector<std::uint32_t>& msaa, const std::vector<float>& lods,
-                     std::vector<hp::cli::FrameCase>& out) {
-  for (std::uint32_t m : msaa)
-    for (float f : lods) {
-      c.msaa = m;
-      c.lodFraction = f;
-      out.push_back(c);
-    }
+void addSampleCounts(hp::cli::FrameCase c, const BenchOptions& o, std::vector<hp::cli::FrameCase>& out) {
+  for (std::uint32_t m : o.msaa)
+    for (float f : o.lodFractions)
+      for (std::uint32_t lights : o.lights) {
+        c.msaa = m;
+        c.lodFraction = f;
+        c.lights = lights;
+        out.push_back(c);
+      }
 }
 
 // A parser's error, prefixed with the option it came from.
@@ -99,6 +101,8 @@ std::vector<hp::cli::FrameCase> cases(const BenchOptions& o) {
   if (o.frames == 0 || o.frames > 1000) throw hp::Error("bench: --frames must be in [1, 1000]");
   for (float f : o.lodFractions)
     if (!(f > 0.0f && f <= 1.0f)) throw hp::Error("bench: --lod-fraction values must be in (0, 1], got " + std::to_string(f));
+  for (std::uint32_t n : o.lights)
+    if (n < 1 || n > 4) throw hp::Error("bench: --lights values must be in [1, 4], got " + std::to_string(n));
   hp::cli::FrameCase base;
   base.frames = o.frames;
   parseResolution(o.resolution, base.width, base.height);
@@ -119,7 +123,7 @@ std::vector<hp::cli::FrameCase> cases(const BenchOptions& o) {
         c.scattering = scattering;
         for (const bool bounce : mode == hp::RasterMode::Compute ? computeBounces : graphicsBounces) {
           c.skinBounce = bounce;
-          addSampleCounts(c, o.msaa, o.lodFractions, out);  // the head's samples (both paths), the graphics path's hair's
+          addSampleCounts(c, o, out);  // the head's samples (both paths), the graphics path's hair's; LOD; lights
         }
       }
     }
@@ -142,6 +146,7 @@ nlohmann::json toJson(const hp::cli::FrameResult& r) {
     passes[name] = p;
   }
   return {{"strands", r.c.strands},      {"width", r.c.width},          {"lod_fraction", r.c.lodFraction},
+          {"shadowed_lights", r.c.lights},
           {"height", r.c.height},        {"raster", hp::cli::frameCaseName(r.c)},
           {"lut_mode", hp::lutModeName(r.c.lutMode)},
           {"scattering", hp::render::scatteringName(r.c.scattering)},
@@ -154,9 +159,10 @@ nlohmann::json toJson(const hp::cli::FrameResult& r) {
 }
 
 void printText(const nlohmann::json& row) {
-  std::printf("%u strands (LOD %.2f), %ux%u, %s: frame %.1f ms (copy %.2f GB/s), host %.1f ms per frame, resident %.1f MiB "
-              "(%+.2f MiB per frame)\n",
-              row["strands"].get<unsigned>(), row["lod_fraction"].get<double>(), row["width"].get<unsigned>(), row["height"].get<unsigned>(),
+  std::printf("%u strands (LOD %.2f, %u shadowed lights), %ux%u, %s: frame %.1f ms (copy %.2f GB/s), host %.1f ms per "
+              "frame, resident %.1f MiB (%+.2f MiB per frame)\n",
+              row["strands"].get<unsigned>(), row["lod_fraction"].get<double>(), row["shadowed_lights"].get<unsigned>(),
+              row["width"].get<unsigned>(), row["height"].get<unsigned>(),
               row["raster"].get<std::string>().c_str(), row["frame_ms"].get<double>(),
               row["copy_gb_per_s"].get<double>(), row["host_frame_ms"].get<double>(),
               row["resident_mib"].get<double>(), row["resident_growth_mib_per_frame"].get<double>());
@@ -225,6 +231,9 @@ void setup(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--lod-fraction", o->lodFractions,
                   "Level-of-detail fractions of the strands drawn (widened to keep coverage), comma separated")
+      ->delimiter(',')->capture_default_str();
+  cmd->add_option("--lights", o->lights,
+                  "Shadowed directional lights per frame, 1-4 (comma separated): the sun, a rim, a fill, a top light")
       ->delimiter(',')->capture_default_str();
   cmd->add_option("--json", o->json, "Write the report as JSON to this file");
   cmd->add_option("--plot", o->plot, "Write an SVG of ms per pass against strand count to this file");

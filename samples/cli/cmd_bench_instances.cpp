@@ -5,10 +5,13 @@
 // count. Every frame is submitted and waited on; only the record calls are timed (host clock: this is CPU
 // work). Heads are the default head at `--strands`, side by side. With `--raster compute` the hair of every
 // instance goes through the Renderer's compute rasterizer (one target over all instances; the timed record
-// calls then include recordRaster and recordComposite).
+// calls then include recordRaster and recordComposite). Then the host cost of a material change in the frame
+// loop: the setMaterial call on the calling thread, and the frames (and ms) until the worker-built tables
+// are applied by a frame's recordUpdate.
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <functional>
 #include <iostream>
 #include <memory>
 #include <string>
@@ -19,6 +22,7 @@
 
 #include "engine/core/error.h"
 #include "engine/core/hair/default_head.h"
+#include "engine/core/shading/material_color.h"
 #include "compute/renderer/renderer.h"
 #include "engine/vk/context.h"
 #include "engine/vk/profiler.h"
@@ -42,6 +46,25 @@ struct BenchOptions {
 };
 
 double msSince(Clock::time_point t0) { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
+
+struct MaterialChange {
+  double callUs = 0.0;      // setMaterial on the calling thread
+  std::uint32_t frames = 0; // frames recorded until a recordUpdate applied it
+  double appliedMs = 0.0;   // from the call to the end of that frame
+};
+
+// A new (uncached) material for `head` during the frame loop; `frame(i)` records and waits for frame i.
+MaterialChange changeMaterial(hp::HairInstance& head, const std::function<void(std::uint32_t)>& frame) {
+  hp::HairMaterial material = head.settings().material;
+  material.absorption = hp::absorptionFromColor({0.85, 0.7, 0.45});  // blonde: tables not built yet
+  MaterialChange c;
+  const auto t0 = Clock::now();
+  head.setMaterial(material, head.settings().lutMode);
+  c.callUs = msSince(t0) * 1000.0;
+  while (head.materialPending() && c.frames < 1000) frame(c.frames++);
+  c.appliedMs = msSince(t0);
+  return c;
+}
 
 nlohmann::json benchCount(const hp::vk::Context& ctx, const hp::HairAsset& asset, std::uint32_t count,
                           const BenchOptions& o, hp::RasterMode raster) {
@@ -69,7 +92,7 @@ nlohmann::json benchCount(const hp::vk::Context& ctx, const hp::HairAsset& asset
   cam.distance = 1.0f + 0.3f * float(count);
   const hp::View view{hp::orbitCamera(cam, 320.0f / 180.0f), {320, 180}, false, 0};
   std::vector<double> recordUs;
-  for (std::uint32_t f = 0; f <= o.frames; ++f) {
+  const auto recordFrame = [&](std::uint32_t f) {
     double us = 0.0;
     hp::vk::submitAndWait(ctx, [&](VkCommandBuffer cmd) {
       auto t = Clock::now();
@@ -88,8 +111,13 @@ nlohmann::json benchCount(const hp::vk::Context& ctx, const hp::HairAsset& asset
         us += msSince(td) * 1000.0;
       }, 1.0f);
     }, "bench instances frame");
+    return us;
+  };
+  for (std::uint32_t f = 0; f <= o.frames; ++f) {
+    const double us = recordFrame(f);
     if (f > 0) recordUs.push_back(us);  // frame 0 is the warm-up
   }
+  const MaterialChange change = changeMaterial(*heads.front(), [&](std::uint32_t f) { recordFrame(o.frames + 1 + f); });
   const double later = count > 1 ? hp::vk::median(std::vector<double>(instanceMs.begin() + 1, instanceMs.end())) : 0.0;
   return {{"instances", count},
           {"renderer_create_ms", rendererMs},
@@ -97,7 +125,10 @@ nlohmann::json benchCount(const hp::vk::Context& ctx, const hp::HairAsset& asset
           {"later_instance_ms_median", later},
           {"shared_bytes", shared},
           {"per_instance_bytes", (all - shared) / count},
-          {"record_us_median", hp::vk::median(recordUs)}};
+          {"record_us_median", hp::vk::median(recordUs)},
+          {"material_call_us", change.callUs},
+          {"material_frames_until_applied", change.frames},
+          {"material_ms_until_applied", change.appliedMs}};
 }
 
 void run(const BenchOptions& o) {
@@ -118,10 +149,13 @@ void run(const BenchOptions& o) {
     nlohmann::json row = benchCount(*ctx, asset, n, o, raster);
     if (!o.json)
       std::printf("%3u instances  renderer %7.1f ms  1st instance %7.1f ms  later %7.1f ms  shared %6.2f MiB  "
-                  "per instance %6.2f MiB  record %8.1f us\n",
+                  "per instance %6.2f MiB  record %8.1f us  setMaterial %6.1f us, applied after %u frames "
+                  "(%.1f ms)\n",
                   n, row["renderer_create_ms"].get<double>(), row["first_instance_ms"].get<double>(),
                   row["later_instance_ms_median"].get<double>(), row["shared_bytes"].get<double>() / 1048576.0,
-                  row["per_instance_bytes"].get<double>() / 1048576.0, row["record_us_median"].get<double>());
+                  row["per_instance_bytes"].get<double>() / 1048576.0, row["record_us_median"].get<double>(),
+                  row["material_call_us"].get<double>(), row["material_frames_until_applied"].get<std::uint32_t>(),
+                  row["material_ms_until_applied"].get<double>());
     std::fflush(stdout);
     report["results"].push_back(row);
   }

@@ -99,7 +99,13 @@ class Instance {
                       std::span<const CapsuleCollider> capsules = {}) noexcept;
   // ScalpInput::Kind::Bones: the bone matrices (head-space rest pose to world) at the end of the next frame.
   Status setBones(std::span<const Mat4> bones) noexcept;
+  // A material whose lookup tables the Renderer holds (one an instance uses or used) applies at once.
+  // Another one, after the first recorded frame, has its tables built on a worker thread (tens of ms of
+  // CPU) while the instance keeps drawing its current material; the first recordUpdate or recordShadows
+  // after they are done applies it (materialPending() is false from then). Before the first frame it
+  // applies at once. A later setMaterial replaces a pending one.
   Status setMaterial(const Material& material, FibreModel fibre) noexcept;
+  bool materialPending() const noexcept;
   Status setLook(const LookSettings& look) noexcept;
   Status setLod(const LodSettings& lod) noexcept;
   Status setSimulation(const SimulationSettings& simulation) noexcept;
