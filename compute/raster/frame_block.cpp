@@ -50,7 +50,9 @@ void setLights(gpu::RenderFrame& f, const FrameLights& lights, bool skinBounce) 
   const int bounceLight = lights.lightOfSlot(0);
   const HeadShadowView& view = lights.headViews[0];
   const bool on = skinBounce && bounceLight >= 0 && view.params.x != 0.0f;
-  f.lightCount.y = on ? std::uint32_t(bounceLight) : gpu::RENDER_MAX_LIGHTS;  // no light has that index
+  // The bounce map's light whenever slot 0 has one (the map's draw reads it for every head, whatever its
+  // look); headBounce.x alone says whether this instance's hair gathers from the map.
+  f.lightCount.y = bounceLight >= 0 ? std::uint32_t(bounceLight) : gpu::RENDER_MAX_LIGHTS;
   f.headBounce = glm::vec4(on ? 1.0f : 0.0f, view.extentWorld / float(gpu::RENDER_BOUNCE_RESOLUTION), 0.0f, 0.0f);
 }
 }  // namespace

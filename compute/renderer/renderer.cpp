@@ -10,15 +10,17 @@
 
 namespace hp {
 namespace {
-const RendererSettings& validated(const RendererSettings& s) {
+const RendererSettings& validated(const RendererSettings& s, VkPhysicalDeviceType type) {
   s.validate();
+  if (s.motionVectors && resolveRasterMode(s.raster, type) != RasterMode::Compute)
+    throw Error("RendererSettings.motionVectors needs the compute raster: the graphics raster writes no motion");
   return s;
 }
 }  // namespace
 
 Renderer::Renderer(const vk::Context& ctx, const RendererSettings& settings)
     : ctx_(ctx),
-      settings_(validated(settings)),
+      settings_(validated(settings, ctx.properties().deviceType)),
       raster_(resolveRasterMode(settings.raster, ctx.properties().deviceType)),
       pipelines_(ctx, settings.pipelineCache),
       shadows_(std::make_unique<render::ShadowMaps>(ctx, settings.opacity, &pipelines_, settings.shadowedLights)),

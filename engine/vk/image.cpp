@@ -113,6 +113,8 @@ Image& Image::operator=(Image&& other) noexcept {
     view_ = std::exchange(other.view_, VK_NULL_HANDLE);
     layerViews_ = std::move(other.layerViews_);
     other.layerViews_.clear();
+    groupViews_ = std::move(other.groupViews_);
+    other.groupViews_.clear();
     desc_ = std::move(other.desc_);
   }
   return *this;

@@ -84,7 +84,8 @@ struct RenderFrame {
                          // (T = exp(-k alpha)), w = shadow bias in slices (lookups move this far toward the light)
   uvec4 options;         // x = vertices per strand Q, y = 1 when opacity shadows are on,
                          // z = RENDER_SCATTERING_*, w = 1 for deep opacity maps (OpacitySettings::deep)
-  uvec4 lightCount;      // x = the lights in `lights`, y = the one in shadow slot 0 (the skin bounce's light), z = w = 0
+  uvec4 lightCount;      // x = the lights in `lights`, y = the one in shadow slot 0 (the skin bounce's light;
+                         // RENDER_MAX_LIGHTS: no slot 0), z = w = 0
   vec4 headBounce;       // x = 1: the hair adds the light the skin reflects (head_bounce.glsl) of light
                          // lightCount.y, y = the bounce map's texel size at the heads (scene units), z = w = 0
   FrameLight lights[RENDER_MAX_LIGHTS];

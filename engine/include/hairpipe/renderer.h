@@ -166,7 +166,12 @@ class Renderer {
   // strand's visible coverage of the pixel; 0 where there is no hair (the hair's coverage is the alpha
   // recordComposite blends with). recordRaster writes it in COMPUTE_SHADER (SHADER_STORAGE_WRITE) and leaves
   // it in SHADER_READ_ONLY_OPTIMAL, visible to FRAGMENT_SHADER sampled reads; another stage needs the
-  // application's barrier from FRAGMENT_SHADER. The next recordRaster rewrites it: read it before then.
+  // application's barrier from FRAGMENT_SHADER. The next recordRaster rewrites it after a barrier from
+  // FRAGMENT_SHADER only: an application that reads it in another stage (a compute TAA resolve) leaves it in
+  // SHADER_READ_ONLY_OPTIMAL with a barrier from that stage to FRAGMENT_SHADER after its reads.
+  // The motion is that of the latest recordUpdate of each instance: an instance not updated for a frame
+  // shows its last step's motion again; a teleport (HeadMotion::teleport) shows the jump itself (the hair
+  // carried rigidly: its true screen motion, which a TAA may reject as a cut).
   struct MotionImage {
     VkImage image = VK_NULL_HANDLE;
     VkImageView view = VK_NULL_HANDLE;

@@ -58,7 +58,8 @@ struct RendererSettings {
   // (20 MiB at the default 512 RGBA32F), a layer of the heads' depth map (4 MiB at 1024) and its shadow
   // passes per frame.
   std::uint32_t shadowedLights = 1;
-  // Motion vectors for temporal anti-aliasing (compute raster only): each instance keeps its previous render
+  // Motion vectors for temporal anti-aliasing (compute raster only: with the graphics raster create fails):
+  // each instance keeps its previous render
   // positions (one copy of them per recordUpdate) and the raster target writes the hair's screen motion
   // (Renderer::motionImage). The graphics raster writes none.
   bool motionVectors = false;
@@ -165,14 +166,13 @@ struct InstanceSettings {
   LodSettings lod;
 };
 
-// One light. `direction` points from the hair toward the light; a spot shines along -direction from
-// `position` with a cone of half-angle coneDeg (the last 20% fades out).
 // One light of a frame. direction: unit, from the lit hair toward the light (a spot's: minus its axis; a
 // point light's is unused but must still be a unit vector). A frame takes up to 8 lights; those with
 // `shadows` cast hair shadows (opacity maps, and the heads' depth map) while the Renderer has shadow slots
 // (RendererSettings::shadowedLights), the others light unshadowed. The skin's bounce light comes from the
-// first shadowed light only. A point light's shadows are drawn as a spot aimed at the heads, 80 degrees
-// wide: hair outside that cone (a point light among the hair) is lit unshadowed.
+// first shadowed light only. A spot shines along -direction from `position` with a cone of half-angle
+// coneDeg (the last 20% fades out). A point light's shadows are drawn as a spot aimed at the heads with an
+// 80-degree half-angle: hair outside that cone (a point light among the hair) is lit unshadowed.
 struct Light {
   enum class Type { Directional, Spot, Point };
   Type type = Type::Directional;
