@@ -39,25 +39,24 @@ vec3 hairLightRadiance(FrameLight light, LightSample ls, LightShadow shadow, vec
 // The graphics strand pass keeps the default.
 layout(constant_id = 0) const uint HAIR_LIGHT_LOOP = 1u;
 
+// Light i's direct term into `direct`, and the skin's bounce into `bounce` when light i is the bounce's.
+void addHairLight(uint i, vec3 world, vec3 V, vec3 T, inout vec3 direct, inout vec3 bounce) {
+  FrameLight light = frame.lights[i];
+  LightSample ls = sampleLight(light, world);
+  LightShadow shadow = frameLightShadow(light, world, ls.L, false);
+  direct += hairLightRadiance(light, ls, shadow, V, T);
+  if (i == frame.lightCount.y) bounce = headBounceAt(world, ls.L, shadow.alpha);
+}
+
 vec3 hairRadiance(vec3 world, vec3 tangent, float colorScale) {
   vec3 T = normalize(tangent);
   vec3 V = normalize(frame.cameraPosition.xyz - world);
   vec3 direct = vec3(0.0);
   vec3 bounce = vec3(0.0);
   if (HAIR_LIGHT_LOOP != 0u) {
-    for (uint i = 0u; i < frame.lightCount.x; ++i) {
-      FrameLight light = frame.lights[i];
-      LightSample ls = sampleLight(light, world);
-      LightShadow shadow = frameLightShadow(light, world, ls.L, false);
-      direct += hairLightRadiance(light, ls, shadow, V, T);
-      if (i == frame.lightCount.y) bounce = headBounceAt(world, ls.L, shadow.alpha);
-    }
+    for (uint i = 0u; i < frame.lightCount.x; ++i) addHairLight(i, world, V, T, direct, bounce);
   } else if (frame.lightCount.x > 0u) {
-    FrameLight light = frame.lights[0];
-    LightSample ls = sampleLight(light, world);
-    LightShadow shadow = frameLightShadow(light, world, ls.L, false);
-    direct += hairLightRadiance(light, ls, shadow, V, T);
-    if (frame.lightCount.y == 0u) bounce = headBounceAt(world, ls.L, shadow.alpha);
+    addHairLight(0u, world, V, T, direct, bounce);
   }
   // The ambient is a uniform white sky: an unoccluded fibre returns the model's sky albedo times its
   // radiance, a fibre of a head of hair the mean visible fraction of it (shared/render.h).
