@@ -125,9 +125,12 @@ std::uint32_t rasterListCapacity(std::uint64_t segments, std::uint64_t tiles, st
 }
 
 StrandRasterPass::StrandRasterPass(const vk::Context& ctx, std::span<const RasterSource> sources, VkExtent2D extent,
-                                   const RasterSettings& settings, std::uint32_t headSamples, VkPipelineCache cache)
-    : ctx_(ctx), extent_(extent), settings_(settings), headSamples_(headSamples) {
+                                   const RasterSettings& settings, std::uint32_t headSamples, VkPipelineCache cache,
+                                   std::uint32_t frameSlots)
+    : ctx_(ctx), extent_(extent), settings_(settings), headSamples_(headSamples), frameSlots_(frameSlots) {
   settings.validate();
+  if (frameSlots == 0 || frameSlots > 16)
+    throw Error("compute raster: the frame slots must be in [1, 16], got " + std::to_string(frameSlots));
   if (headSamples == 0 || headSamples > gpu::RASTER_MAX_HEAD_SAMPLES || (headSamples & (headSamples - 1)) != 0)
     throw Error("compute raster: the head depth's sample count must be a power of two in [1, " +
                 std::to_string(gpu::RASTER_MAX_HEAD_SAMPLES) + "], got " + std::to_string(headSamples));
@@ -167,7 +170,7 @@ StrandRasterPass::StrandRasterPass(const vk::Context& ctx, std::span<const Raste
   const gpu::RasterState armed = armedState();
   vk::uploadBytes(ctx, state_, &armed, sizeof(armed), vk::BufferUse::ComputeWrite);
   bind(sources);
-  const auto setLayout = chunks_.front().set.layout();
+  const auto setLayout = chunks_.front().sets.front().layout();
   const auto pipeline = [&](const char* shader, std::uint32_t size, const char* name) {
     return vk::ComputePipeline(ctx, shader, size, {setLayout}, 0, name, {}, cache);
   };
@@ -213,16 +216,34 @@ void StrandRasterPass::bind(std::span<const RasterSource> sources) {
       params.chunkCount = chunkTotal;
       params.maxGroupsX = ctx_.properties().limits.maxComputeWorkGroupCount[0];
       firstVertex += c.range.strandCount * q;
-      Chunk chunk{vk::DescriptorSet(ctx_, kBindings, name),
+      Chunk chunk{{},
                   vk::Buffer(ctx_, sizeof(params), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                              vk::MemoryKind::DeviceLocal, name + " params"),
                   c.range, std::uint32_t(s), q};
       vk::uploadBytes(ctx_, chunk.params, &params, sizeof(params), vk::BufferUse::ComputeRead);
-      writeChunkSet(chunk.set, sources[s].shading, c, chunk.params);
+      for (std::uint32_t slot = 0; slot < frameSlots_; ++slot) {
+        chunk.sets.emplace_back(ctx_, kBindings, name + " [slot " + std::to_string(slot) + "]");
+        writeChunkSet(chunk.sets.back(), sources[s].shading, c, chunk.params);
+      }
       chunks.push_back(std::move(chunk));
     }
   }
   chunks_ = std::move(chunks);
+}
+
+void StrandRasterPass::rebindShading(std::uint32_t source, std::uint32_t slot, const ShadingWriter& shading) {
+  if (source >= sourceVertices_.size() || slot >= frameSlots_)
+    throw Error("compute raster: rebindShading(" + std::to_string(source) + ", " + std::to_string(slot) +
+                ") is past the pass's " + std::to_string(sourceVertices_.size()) + " sources and " +
+                std::to_string(frameSlots_) + " slots");
+  for (const Chunk& c : chunks_)
+    if (c.source == source) shading(c.sets[slot]);
+}
+
+const vk::DescriptorSet& StrandRasterPass::setOf(const Chunk& c, std::uint32_t slot) const {
+  if (slot >= frameSlots_)
+    throw Error("compute raster: frame slot " + std::to_string(slot) + " of " + std::to_string(frameSlots_));
+  return c.sets[slot];
 }
 
 void StrandRasterPass::writeChunkSet(const vk::DescriptorSet& set, const ShadingWriter& shading, const StrandChunk& c,
@@ -251,7 +272,8 @@ void StrandRasterPass::writeChunkSet(const vk::DescriptorSet& set, const Shading
 
 void StrandRasterPass::setDepth(VkImageView depth) {
   depth_ = depth;
-  for (const Chunk& c : chunks_) c.set.writeSampledImage(gpu::RASTER_BINDING_DEPTH, depth_, sampler_.handle());
+  for (const Chunk& c : chunks_)
+    for (const vk::DescriptorSet& set : c.sets) set.writeSampledImage(gpu::RASTER_BINDING_DEPTH, depth_, sampler_.handle());
 }
 
 void StrandRasterPass::recordArm(VkCommandBuffer cmd) const {
@@ -293,18 +315,19 @@ void StrandRasterPass::recordStrandCounts(VkCommandBuffer cmd, std::span<const s
 }
 
 void StrandRasterPass::recordPerChunk(VkCommandBuffer cmd, const vk::ComputePipeline& pipeline,
-                                      std::uint32_t perStrandLess, std::span<const std::uint32_t> strandLimits) const {
+                                      std::uint32_t perStrandLess, std::span<const std::uint32_t> strandLimits,
+                                      std::uint32_t slot) const {
   for (const Chunk& c : chunks_) {
     const std::uint32_t strands = drawnStrands(c, strandLimits);
     if (strands == 0) continue;
-    pipeline.bind(cmd, c.set.set());
+    pipeline.bind(cmd, setOf(c, slot).set());
     pipeline.dispatch(cmd, strands * (c.verticesPerStrand - perStrandLess));
   }
 }
 
 void StrandRasterPass::recordOnce(VkCommandBuffer cmd, const vk::ComputePipeline& pipeline,
-                                  std::uint32_t threads) const {
-  pipeline.bind(cmd, chunks_.front().set.set());
+                                  std::uint32_t threads, std::uint32_t slot) const {
+  pipeline.bind(cmd, setOf(chunks_.front(), slot).set());
   pipeline.dispatch(cmd, threads);
 }
 
@@ -323,7 +346,7 @@ void end(VkCommandBuffer cmd, vk::GpuProfiler* profiler) {
 }  // namespace
 
 void StrandRasterPass::recordBinning(VkCommandBuffer cmd, vk::GpuProfiler* profiler,
-                                     std::span<const std::uint32_t> strandLimits) const {
+                                     std::span<const std::uint32_t> strandLimits, std::uint32_t slot) const {
   if (depth_ == VK_NULL_HANDLE) throw Error("compute raster: setDepth() was not called before record()");
   if (!strandLimits.empty() && strandLimits.size() != sourceVertices_.size())
     throw Error("compute raster: one strand limit per source, got " + std::to_string(strandLimits.size()));
@@ -331,35 +354,36 @@ void StrandRasterPass::recordBinning(VkCommandBuffer cmd, vk::GpuProfiler* profi
   begin(cmd, profiler, "raster project");
   recordStrandCounts(cmd, strandLimits);
   recordArm(cmd);
-  recordPerChunk(cmd, project_, 0, strandLimits);
+  recordPerChunk(cmd, project_, 0, strandLimits, slot);
   end(cmd, profiler);
   begin(cmd, profiler, "raster bin");
-  recordOnce(cmd, tileDepthPipeline_, tiles);
+  recordOnce(cmd, tileDepthPipeline_, tiles, slot);
   chain(ctx_, cmd);
-  recordPerChunk(cmd, count_, 1, strandLimits);
+  recordPerChunk(cmd, count_, 1, strandLimits, slot);
   chain(ctx_, cmd);
-  recordOnce(cmd, scanTiles_, divUp(tiles, gpu::RASTER_SCAN_SIZE) * gpu::RASTER_SCAN_SIZE);
+  recordOnce(cmd, scanTiles_, divUp(tiles, gpu::RASTER_SCAN_SIZE) * gpu::RASTER_SCAN_SIZE, slot);
   chain(ctx_, cmd);
-  recordOnce(cmd, scanBlocks_, gpu::RASTER_SCAN_SIZE);
+  recordOnce(cmd, scanBlocks_, gpu::RASTER_SCAN_SIZE, slot);
   chain(ctx_, cmd);
-  recordPerChunk(cmd, scatter_, 1, strandLimits);
+  recordPerChunk(cmd, scatter_, 1, strandLimits, slot);
   end(cmd, profiler);
 }
 
-void StrandRasterPass::recordFine(VkCommandBuffer cmd, vk::GpuProfiler* profiler, bool oneLight) const {
+void StrandRasterPass::recordFine(VkCommandBuffer cmd, vk::GpuProfiler* profiler, bool oneLight,
+                                  std::uint32_t slot) const {
   const vk::ComputePipeline& shade = oneLight ? shadeOneLight_ : shade_;
   begin(cmd, profiler, "raster shade");
   // The scan wrote the shade dispatches (indirect arguments) and the count step the shade lists.
   vk::bufferBarrier(ctx_, cmd, shadeArgs_.handle(), vk::BufferUse::ComputeWrite, vk::BufferUse::IndirectRead);
   chain(ctx_, cmd);
   for (std::size_t i = 0; i < chunks_.size(); ++i) {
-    shade.bind(cmd, chunks_[i].set.set());
+    shade.bind(cmd, setOf(chunks_[i], slot).set());
     shade.dispatchIndirect(cmd, shadeArgs_.handle(), i * sizeof(glm::uvec4));
   }
   end(cmd, profiler);
   begin(cmd, profiler, "raster fine");
   chain(ctx_, cmd);
-  recordOnce(cmd, fine_, tilesX_ * tilesY_ * gpu::RASTER_FINE_SIZE);
+  recordOnce(cmd, fine_, tilesX_ * tilesY_ * gpu::RASTER_FINE_SIZE, slot);
   for (const vk::Image* image : outputs())
     vk::imageBarrier(ctx_, cmd, image->handle(), VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::ComputeStorageWrite,
                      vk::ImageUse::FragmentSampled);

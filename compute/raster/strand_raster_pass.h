@@ -21,7 +21,10 @@
 // recorder guarantees before record(): strand buffers, the frame block, LightSpace and the opacity maps
 // visible to compute reads (maps in ImageUse::ComputeSampled), the depth image given to setDepth() in
 // ImageUse::ComputeSampled. After record(): output() in ImageUse::FragmentSampled, every own buffer's
-// last use ComputeWrite. List overflow is never silent: readStats() reports entries dropped by the tile
+// last use ComputeWrite. Each chunk has one descriptor set per frame slot (`frameSlots`: the frames the
+// caller keeps in flight), so rebindShading() can point one slot's sets at new shading resources while
+// frames recorded with the other slots still run: the caller rewrites a slot only once the last frame
+// recorded with it is complete, and names the slot in record(). List overflow is never silent: readStats() reports entries dropped by the tile
 // budget and past the list capacity (capacity derived from the segment count and the frame size).
 #include "hairpipe_volk.h"
 
@@ -55,7 +58,7 @@ struct RasterStats {
 // Writes the shading bindings of shaders/shared/render.h (frame block and Marschner parameters as STORAGE
 // buffers, the LUTs, opacity maps, LightSpace, the head's depth shadow map) and the head bounce map's two
 // images (RENDER_BINDING_BOUNCE_*, compute/shadows/head_bounce_map.h) into a raster descriptor set: what
-// hairRadiance and the skin's bounce read.
+// hairRadiance and the skin's bounce read (compute/raster/raster_shading.h writes them).
 using ShadingWriter = std::function<void(const vk::DescriptorSet&)>;
 
 // One head's strands and the shading resources its segments are shaded with.
@@ -67,31 +70,38 @@ struct RasterSource {
 class StrandRasterPass {
  public:
   // headSamples: the sample count of the depth image setDepth() will get (1 to RASTER_MAX_HEAD_SAMPLES).
-  // Throws hp::Error for no source, a zero extent, bad settings or sample count, or buffers past
-  // maxStorageBufferRange.
+  // frameSlots: descriptor sets per chunk (1 to 16). Throws hp::Error for no source, a zero extent, bad
+  // settings, sample count or slot count, or buffers past maxStorageBufferRange.
   StrandRasterPass(const vk::Context& ctx, std::span<const RasterSource> sources, VkExtent2D extent,
-                   const RasterSettings& settings, std::uint32_t headSamples = 1, VkPipelineCache cache = VK_NULL_HANDLE);
+                   const RasterSettings& settings, std::uint32_t headSamples = 1, VkPipelineCache cache = VK_NULL_HANDLE,
+                   std::uint32_t frameSlots = 1);
   StrandRasterPass(const vk::Context& ctx, const StrandBuffers& strands, const ShadingWriter& shading,
                    VkExtent2D extent, const RasterSettings& settings, std::uint32_t headSamples = 1)
       : StrandRasterPass(ctx, std::span<const RasterSource>(std::vector<RasterSource>{{&strands, shading}}), extent,
                          settings, headSamples) {}
   // Outside the frame loop: rewrite descriptors after the shading resources changed (same strand sizes).
   void bind(std::span<const RasterSource> sources);
+  // In the frame loop: the shading bindings of one source's chunks in one slot's sets rewritten, when no
+  // pending frame was recorded with that slot (the strand and pass bindings stay).
+  void rebindShading(std::uint32_t source, std::uint32_t slot, const ShadingWriter& shading);
+  std::uint32_t frameSlots() const { return frameSlots_; }
   // The head's depth (D32, headSamples samples); 1.0 where nothing was drawn. Must be set before record().
   void setDepth(VkImageView depth);
 
   // strandLimits: per source, the level of detail's prefix of its strands drawn (compute::strandsWithin);
   // empty: all of them. oneLight: the frame blocks hold at most one light, so the shade pass may take its
-  // one-light variant (shaders/hair_shading.glsl HAIR_LIGHT_LOOP: twice as fast on lavapipe).
+  // one-light variant (shaders/hair_shading.glsl HAIR_LIGHT_LOOP: twice as fast on lavapipe). slot: the
+  // frame slot whose descriptor sets the frame binds.
   void record(VkCommandBuffer cmd, vk::GpuProfiler* profiler = nullptr,
-              std::span<const std::uint32_t> strandLimits = {}, bool oneLight = false) const {
-    recordBinning(cmd, profiler, strandLimits);
-    recordFine(cmd, profiler, oneLight);
+              std::span<const std::uint32_t> strandLimits = {}, bool oneLight = false, std::uint32_t slot = 0) const {
+    recordBinning(cmd, profiler, strandLimits, slot);
+    recordFine(cmd, profiler, oneLight, slot);
   }
   // record() in two halves: project + bin (readStats() is complete after it), then shade + fine raster.
   void recordBinning(VkCommandBuffer cmd, vk::GpuProfiler* profiler = nullptr,
-                     std::span<const std::uint32_t> strandLimits = {}) const;
-  void recordFine(VkCommandBuffer cmd, vk::GpuProfiler* profiler = nullptr, bool oneLight = false) const;
+                     std::span<const std::uint32_t> strandLimits = {}, std::uint32_t slot = 0) const;
+  void recordFine(VkCommandBuffer cmd, vk::GpuProfiler* profiler = nullptr, bool oneLight = false,
+                  std::uint32_t slot = 0) const;
 
   const vk::Image& output() const { return output_; }
   // The near layer and its sample mask (R32_UINT); 1 x 1 and never written for a single-sample head depth.
@@ -112,7 +122,7 @@ class StrandRasterPass {
 
  private:
   struct Chunk {
-    vk::DescriptorSet set;
+    std::vector<vk::DescriptorSet> sets;  // one per frame slot
     vk::Buffer params;  // gpu::RasterParams of the chunk (a storage buffer: no push constants, see .cpp)
     ChunkRange range;   // within its source's strands
     std::uint32_t source;
@@ -125,15 +135,18 @@ class StrandRasterPass {
   // One dispatch per chunk of strands * (verticesPerStrand - perStrandLess) invocations, strands those of
   // the chunk within its source's limit (all without limits).
   void recordPerChunk(VkCommandBuffer cmd, const vk::ComputePipeline& pipeline, std::uint32_t perStrandLess,
-                      std::span<const std::uint32_t> strandLimits) const;
+                      std::span<const std::uint32_t> strandLimits, std::uint32_t slot) const;
+  const vk::DescriptorSet& setOf(const Chunk& c, std::uint32_t slot) const;
   std::uint32_t drawnStrands(const Chunk& c, std::span<const std::uint32_t> strandLimits) const;
   void recordStrandCounts(VkCommandBuffer cmd, std::span<const std::uint32_t> strandLimits) const;
-  void recordOnce(VkCommandBuffer cmd, const vk::ComputePipeline& pipeline, std::uint32_t threads) const;
+  void recordOnce(VkCommandBuffer cmd, const vk::ComputePipeline& pipeline, std::uint32_t threads,
+                  std::uint32_t slot) const;
 
   const vk::Context& ctx_;
   VkExtent2D extent_;
   RasterSettings settings_;
   std::uint32_t headSamples_;
+  std::uint32_t frameSlots_;
   std::uint32_t tilesX_, tilesY_, capacity_ = 0;
   std::vector<std::uint32_t> sourceVertices_;  // render vertices of each source (bind() must match)
   vk::Buffer screen_, colors_, state_, counts_, keys_, tiles_, blocks_, list_, tileDepth_;

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "engine/core/error.h"
+#include "compute/raster/raster_shading.h"
 #include "compute/renderer/hair_instance.h"
 #include "engine/vk/barriers.h"
 #include "engine/vk/context.h"
@@ -33,7 +34,9 @@ ComputeRaster::ComputeRaster(const vk::Context& ctx, const RendererSettings& set
       instances_(instances.begin(), instances.end()),
       frames_(makeFrameBlocks(ctx, instances.size())),
       depth_(depth),
-      pass_(ctx, sources(), extent, rasterSettingsOf(settings), std::uint32_t(settings.formats.samples), cache),
+      pass_(ctx, sources(), extent, rasterSettingsOf(settings), std::uint32_t(settings.formats.samples), cache,
+            settings.framesInFlight),
+      stale_(settings.framesInFlight, std::vector<bool>(instances.size(), false)),
       composite_(ctx, settings.formats, cache) {
   pass_.setDepth(depth);
   composite_.setInput(pass_.output().view(), pass_.nearOutput().view(), pass_.nearMask().view());
@@ -42,26 +45,33 @@ ComputeRaster::ComputeRaster(const vk::Context& ctx, const RendererSettings& set
 std::vector<compute::RasterSource> ComputeRaster::sources() const {
   if (instances_.empty()) throw Error("Renderer::setRasterTarget: no instance to rasterize");
   std::vector<compute::RasterSource> sources;
-  for (std::size_t i = 0; i < instances_.size(); ++i) {
-    const HairInstance* instance = instances_[i];
-    const VkBuffer frame = frames_[i].handle();
-    sources.push_back({&instance->strands(), [this, instance, frame](const vk::DescriptorSet& set) {
-                         // Storage buffers: the raster shaders read no uniform blocks (compute/raster/strand_raster_pass.cpp).
-                         set.writeStorageBuffer(gpu::RENDER_BINDING_FRAME, frame);
-                         instance->marschner().writeDescriptors(set, gpu::RENDER_BINDING_MARSCHNER,
-                                                                gpu::RENDER_BINDING_LUT_M, gpu::RENDER_BINDING_LUT_N0,
-                                                                gpu::RENDER_BINDING_LUT_N1,
-                                                                VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);
-                         const render::ShadowInputs in = shadows_.inputs();
-                         set.writeSampledImage(gpu::RENDER_BINDING_OPACITY, in.opacityView, in.sampler);
-                         set.writeStorageBuffer(gpu::RENDER_BINDING_LIGHT, in.lightSpace);
-                         set.writeSampledImage(gpu::RENDER_BINDING_HEAD_SHADOW, in.headShadowView, in.headShadowSampler);
-                         set.writeSampledImage(gpu::RENDER_BINDING_BOUNCE_FLUX, in.bounceFluxView, in.bounceSampler);
-                         set.writeSampledImage(gpu::RENDER_BINDING_BOUNCE_POSITION, in.bouncePositionView,
-                                               in.bounceSampler);
-                       }});
-  }
+  for (std::size_t i = 0; i < instances_.size(); ++i) sources.push_back({&instances_[i]->strands(), shadingWriter(i)});
   return sources;
+}
+
+compute::ShadingWriter ComputeRaster::shadingWriter(std::size_t source) const {
+  const HairInstance* instance = instances_[source];
+  const VkBuffer frame = frames_[source].handle();
+  return [this, instance, frame](const vk::DescriptorSet& set) {
+    compute::writeRasterShading(set, frame, instance->marschner(), shadows_.inputs());
+  };
+}
+
+void ComputeRaster::shadingChanged(const HairInstance* instance) {
+  const auto it = std::find(instances_.begin(), instances_.end(), instance);
+  if (it == instances_.end()) throw Error("ComputeRaster::shadingChanged: the instance is not in the raster target");
+  for (std::vector<bool>& slot : stale_) slot[std::size_t(it - instances_.begin())] = true;
+}
+
+void ComputeRaster::rebindStale(std::uint64_t frame) {
+  if (lastFrame_ == frame) return;  // a later view of the same frame: its sets are bound already
+  lastFrame_ = frame;
+  const std::uint32_t slot = std::uint32_t(frame % stale_.size());
+  for (std::size_t source = 0; source < instances_.size(); ++source) {
+    if (!stale_[slot][source]) continue;
+    pass_.rebindShading(std::uint32_t(source), slot, shadingWriter(source));
+    stale_[slot][source] = false;
+  }
 }
 
 bool ComputeRaster::holds(const HairInstance* instance) const {
@@ -87,8 +97,9 @@ std::vector<std::uint32_t> ComputeRaster::recordFrameBlocks(VkCommandBuffer cmd,
   return strandLimits;
 }
 
-void ComputeRaster::record(VkCommandBuffer cmd, const View& view, const render::FrameLights& lights,
-                           vk::GpuProfiler* profiler) const {
+void ComputeRaster::record(VkCommandBuffer cmd, std::uint64_t frame, const View& view,
+                           const render::FrameLights& lights, vk::GpuProfiler* profiler) {
+  rebindStale(frame);
   const std::vector<std::uint32_t> strandLimits = recordFrameBlocks(cmd, view, lights);
   // The graphics readers' states (recordShadows) extended to compute for the pass, then back, so the
   // next frame's barriers (which wait on vertex/fragment readers) still cover these reads.
@@ -104,7 +115,7 @@ void ComputeRaster::record(VkCommandBuffer cmd, const View& view, const render::
                    vk::ImageUse::ComputeSampled, mapLayers);
   const render::HeadBounceMap& bounce = shadows_.bounceMap();
   bounce.transition(cmd, vk::ImageUse::FragmentSampled, vk::ImageUse::ComputeSampled);
-  pass_.record(cmd, profiler, strandLimits, lights.lights.size() <= 1);
+  pass_.record(cmd, profiler, strandLimits, lights.lights.size() <= 1, std::uint32_t(frame % stale_.size()));
   bounce.transition(cmd, vk::ImageUse::ComputeSampled, vk::ImageUse::FragmentSampled);
   vk::bufferBarrier(ctx_, cmd, lightSpace, vk::BufferUse::ComputeRead, vk::BufferUse::GraphicsRead);
   vk::imageBarrier(ctx_, cmd, maps, VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::ComputeSampled,

@@ -4,13 +4,17 @@
 // different heads is depth-ordered per pixel; each instance shaded with its own material, look and LUTs
 // through its own frame block), and the composite of the hair image over the application's colour.
 // Built by Renderer::setRasterTarget outside the frame loop, and rebuilt by the Renderer (the old one
-// retired after its frames) when an instance in it changes its strands or material or is destroyed.
-//   record(cmd, view, light, headShadow)  outside rendering, after the heads were drawn into the depth
+// retired after its frames) when an instance in it changes its strands or is destroyed. A material change
+// keeps the target: the instance's shading bindings are rewritten in each frame slot's descriptor sets as
+// the first frame recorded with that slot after the change begins (the frame framesInFlight earlier, the
+// last to use those sets, is complete by then: the Renderer's frame contract).
+//   record(cmd, frame, view, lights)      outside rendering, after the heads were drawn into the depth
 //                                         image (in ImageUse::ComputeSampled): per-instance frame blocks,
 //                                         then the rasterizer (which gathers the skin's bounce from the
 //                                         shadows' head bounce map); leaves image() in ImageUse::FragmentSampled
 //   recordComposite(cmd, extent)          inside a rendering of the application's attachments
 #include <memory>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -31,7 +35,10 @@ class ComputeRaster {
                 VkExtent2D extent, VkImageView depth, std::span<HairInstance* const> instances,
                 VkPipelineCache cache = VK_NULL_HANDLE);
 
-  void record(VkCommandBuffer cmd, const View& view, const render::FrameLights& lights, vk::GpuProfiler* profiler) const;
+  void record(VkCommandBuffer cmd, std::uint64_t frame, const View& view, const render::FrameLights& lights,
+              vk::GpuProfiler* profiler);
+  // `instance` (held) shades with new resources (its material's LUTs) from its next frame on.
+  void shadingChanged(const HairInstance* instance);
   void recordComposite(VkCommandBuffer cmd, VkExtent2D extent, vk::GpuProfiler* profiler) const;
 
   bool holds(const HairInstance* instance) const;
@@ -47,6 +54,9 @@ class ComputeRaster {
  private:
   static std::vector<vk::Buffer> makeFrameBlocks(const vk::Context& ctx, std::size_t count);
   std::vector<compute::RasterSource> sources() const;
+  compute::ShadingWriter shadingWriter(std::size_t source) const;
+  // The first view of a frame: the stale shading bindings of the frame's slot rewritten.
+  void rebindStale(std::uint64_t frame);
   // Each instance's frame block for the view (strands widened by its level of detail); returns the strands
   // each draws.
   std::vector<std::uint32_t> recordFrameBlocks(VkCommandBuffer cmd, const View& view,
@@ -58,6 +68,8 @@ class ComputeRaster {
   std::vector<vk::Buffer> frames_;  // per instance: its gpu::RenderFrame, written with vkCmdUpdateBuffer per view
   VkImageView depth_;
   compute::StrandRasterPass pass_;
+  std::vector<std::vector<bool>> stale_;   // [frame slot][instance]: its shading bindings name old resources
+  std::optional<std::uint64_t> lastFrame_;  // the frame of the views most recently recorded
   render::CompositePass composite_;
 };
 }  // namespace hp

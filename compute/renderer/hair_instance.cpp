@@ -79,6 +79,7 @@ gpu::RenderFrame* HairInstance::frameSlot(std::uint64_t frame, std::uint32_t vie
 
 std::shared_ptr<render::StrandPass> HairInstance::makeStrandPass(const Geometry& geometry,
                                                                  const render::MarschnerTextures& marschner) const {
+  if (renderer_.raster() == RasterMode::Compute) return nullptr;  // the raster target draws the strands
   return std::make_shared<render::StrandPass>(renderer_.context(), geometry.buffers, marschner, frames_,
                                               renderer_.shadows().inputs(), renderer_.settings().formats,
                                               &renderer_.pipelines());
@@ -106,7 +107,8 @@ void HairInstance::setMaterial(const HairMaterial& material, LutMode mode) {
   pending_.reset();  // a newer change replaces a pending one (its worker finishes into nothing)
   if (material == settings_.material && mode == settings_.lutMode) return;
   std::shared_ptr<render::MarschnerTextures> cached = renderer_.cachedMarschner(material, mode);
-  if (cached || !renderer_.inFrameLoop()) return applyMaterial(cached, material, mode);
+  if (cached) return applyMaterial([&] { return cached; }, material, mode);
+  if (!renderer_.inFrameLoop()) return applyMaterial([&] { return renderer_.marschner(material, mode); }, material, mode);
   // In the frame loop the tables (tens of ms of CPU) are built off the application's thread.
   pending_ = LutBuild::start(material, mode);
 }
@@ -117,16 +119,15 @@ void HairInstance::applyReadyMaterial() {
   pending_.reset();
   try {
     if (!done->error().empty()) throw Error(done->error());
-    applyMaterial(renderer_.marschnerFrom(done->lut()), done->material(), done->mode());
+    applyMaterial([&] { return renderer_.marschnerFrom(done->lut()); }, done->material(), done->mode());
   } catch (const std::exception& e) {  // record calls do not throw: the old material stays, the reason is kept
     materialError_ = e.what();
   }
 }
 
-void HairInstance::applyMaterial(std::shared_ptr<render::MarschnerTextures> textures, const HairMaterial& material,
-                                 LutMode mode) {
+void HairInstance::applyMaterial(const TexturesMaker& make, const HairMaterial& material, LutMode mode) {
   renderer_.withUploads("set material", [&] {
-    if (!textures) textures = renderer_.marschner(material, mode);
+    std::shared_ptr<render::MarschnerTextures> textures = make();
     auto pass = makeStrandPass(*geometry_, *textures);  // everything that can throw happens before the swap
     // The old textures and strand pass stay alive until the frames that sample them are done.
     renderer_.retire(marschner_);
@@ -135,7 +136,7 @@ void HairInstance::applyMaterial(std::shared_ptr<render::MarschnerTextures> text
     settings_.material = material;
     settings_.lutMode = mode;
   });
-  renderer_.instanceChanged(*this);  // a compute raster target names the old LUTs
+  renderer_.materialChanged(*this);  // a compute raster target rebinds the LUTs
 }
 
 void HairInstance::setLook(const render::LookSettings& look) {

@@ -8,7 +8,10 @@
 // that frame use motion.to). Setters validate their input and throw hp::Error; they are host-only and may
 // be called between frames while earlier frames are still in flight: what the GPU may still read is
 // retired through the Renderer and destroyed once those frames are done (no device idle).
+#include <functional>
 #include <memory>
+#include <optional>
+#include <string>
 
 #include "compute/shadows/bounds_pass.h"
 #include "compute/strands/interpolate_pass.h"
@@ -17,8 +20,6 @@
 #include "compute/strands/tessellate_pass.h"
 #include "engine/core/hair/hair_asset.h"
 #include "compute/head/head_bounce_pass.h"
-#include <optional>
-#include <string>
 #include "compute/head/head_pass.h"
 #include "compute/renderer/lut_build.h"
 #include "compute/raster/marschner_textures.h"
@@ -99,8 +100,10 @@ class HairInstance {
   void replaceStrandPass(std::shared_ptr<render::StrandPass> pass);
   std::uint32_t frameOffset(std::uint64_t frame, std::uint32_t view) const;
   gpu::RenderFrame* frameSlot(std::uint64_t frame, std::uint32_t view) const;
-  // The textures in use from now on (the old ones retired), for `material` in `mode`.
-  void applyMaterial(std::shared_ptr<render::MarschnerTextures> textures, const HairMaterial& material, LutMode mode);
+  // The textures `make` returns in use from now on (the old ones retired), for `material` in `mode`. `make`
+  // runs inside the change's upload batch: in the frame loop its uploads go into the next frame's commands.
+  using TexturesMaker = std::function<std::shared_ptr<render::MarschnerTextures>()>;
+  void applyMaterial(const TexturesMaker& make, const HairMaterial& material, LutMode mode);
   // A worker's tables, once done: uploaded and applied (Renderer::applyReadyMaterials).
   void applyReadyMaterial();
   // A view of `frame` draws `fraction` (the shadows of the next frame use the largest of a frame's).
@@ -122,7 +125,7 @@ class HairInstance {
   // the map's framing), written by Renderer::recordShadows with vkCmdUpdateBuffer.
   vk::Buffer bounceFrame_;
   std::unique_ptr<render::HeadBouncePass> bounce_;
-  std::shared_ptr<render::StrandPass> strandPass_;
+  std::shared_ptr<render::StrandPass> strandPass_;  // the graphics raster's ribbons; null with the compute raster
   bool viewsDrawn_ = false;
   std::uint64_t viewFrame_ = 0;       // the frame of the views most recently drawn
   float largestViewFraction_ = 1.0f;  // their largest LOD fraction

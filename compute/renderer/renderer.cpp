@@ -1,8 +1,9 @@
 #include "compute/renderer/renderer.h"
 
-#include "engine/vk/submit.h"
-
 #include <algorithm>
+#include <utility>
+
+#include "engine/vk/submit.h"
 
 #include "engine/core/error.h"
 #include "compute/renderer/frame_recorder.h"
@@ -99,6 +100,10 @@ void Renderer::instanceChanged(const HairInstance& instance, bool removed) {
   if (!kept.empty()) setRasterTarget(old->extent(), old->depth(), kept);
 }
 
+void Renderer::materialChanged(const HairInstance& instance) {
+  if (rasterTarget_ && rasterTarget_->holds(&instance)) rasterTarget_->shadingChanged(&instance);
+}
+
 void Renderer::forgetInstance(const HairInstance& instance) noexcept {
   if (!rasterTarget_ || !rasterTarget_->holds(&instance)) return;
   retired_.push_back({lastFrame_, std::move(rasterTarget_)});
@@ -110,13 +115,15 @@ const ComputeRaster& Renderer::target() const {
   return *rasterTarget_;
 }
 
+ComputeRaster& Renderer::target() { return const_cast<ComputeRaster&>(std::as_const(*this).target()); }
+
 void Renderer::recordRaster(VkCommandBuffer cmd, std::uint64_t frame, const View& view, vk::GpuProfiler* profiler) {
   requireNoDeferredWork("recordRaster");
-  const ComputeRaster& t = target();
+  ComputeRaster& t = target();
   view.validate(settings_.maxViewsPerFrame);
   beginFrame(frame, t.instances());
   for (HairInstance* i : t.instances()) i->noteViewFraction(frame, i->lodFraction(view.camera.position));
-  t.record(cmd, view, frameLights_[frame % settings_.framesInFlight], profiler);
+  t.record(cmd, frame, view, frameLights_[frame % settings_.framesInFlight], profiler);
 }
 
 void Renderer::recordComposite(VkCommandBuffer cmd, VkExtent2D extent, vk::GpuProfiler* profiler) const {

@@ -135,12 +135,15 @@ class Renderer {
   void beginFrame(std::uint64_t frame, std::span<HairInstance* const> instances);
   // Instances whose new material's tables a worker finished take them (before the frame's deferred work).
   void applyReadyMaterials(std::span<HairInstance* const> instances);
-  // An instance's strands or material changed, or it goes (`removed`): the raster target follows.
+  // An instance's strands changed, or it goes (`removed`): a raster target holding it is rebuilt.
   void instanceChanged(const HairInstance& instance, bool removed = false);
+  // An instance's material changed: a raster target holding it rebinds its LUTs slot by slot (not rebuilt).
+  void materialChanged(const HairInstance& instance);
   // An instance destroyed without destroyInstance(): a raster target holding it is dropped (retired, not
   // rebuilt: nothing may throw here); recordRaster then asks for setRasterTarget().
   void forgetInstance(const HairInstance& instance) noexcept;
   const ComputeRaster& target() const;
+  ComputeRaster& target();
   // The deferred work of changes since the last frame into `cmd` (outside any rendering), retired after it.
   void executeDeferred(VkCommandBuffer cmd);
   // recordDraw / recordRaster: every change's work was executed (a change between a frame's record calls

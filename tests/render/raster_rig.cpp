@@ -5,6 +5,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/packing.hpp>
 
+#include "compute/raster/raster_shading.h"
 #include "engine/vk/barriers.h"
 #include "engine/vk/context.h"
 #include "engine/vk/submit.h"
@@ -56,16 +57,7 @@ RasterRig::RasterRig(const vk::Context& c, const compute::StrandBuffers& strands
                 VK_SAMPLE_COUNT_1_BIT, "rig head depth"}) {
   vk::uploadBytes(c, frameBlock, &frame, sizeof(frame), vk::BufferUse::ComputeRead);
   const compute::ShadingWriter shading = [this](const vk::DescriptorSet& set) {
-    set.writeStorageBuffer(gpu::RENDER_BINDING_FRAME, frameBlock.handle());
-    marschner.writeDescriptors(set, gpu::RENDER_BINDING_MARSCHNER, gpu::RENDER_BINDING_LUT_M,
-                               gpu::RENDER_BINDING_LUT_N0, gpu::RENDER_BINDING_LUT_N1,
-                               VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);
-    const render::ShadowInputs inputs = shadows.inputs();
-    set.writeSampledImage(gpu::RENDER_BINDING_OPACITY, inputs.opacityView, inputs.sampler);
-    set.writeStorageBuffer(gpu::RENDER_BINDING_LIGHT, inputs.lightSpace);
-    set.writeSampledImage(gpu::RENDER_BINDING_HEAD_SHADOW, inputs.headShadowView, inputs.headShadowSampler);
-    set.writeSampledImage(gpu::RENDER_BINDING_BOUNCE_FLUX, inputs.bounceFluxView, inputs.bounceSampler);
-    set.writeSampledImage(gpu::RENDER_BINDING_BOUNCE_POSITION, inputs.bouncePositionView, inputs.bounceSampler);
+    compute::writeRasterShading(set, frameBlock.handle(), marschner, shadows.inputs());
   };
   pass = std::make_unique<compute::StrandRasterPass>(c, strands, shading, e, settings);
   pass->setDepth(depth.view());

@@ -12,41 +12,11 @@
 #include "engine/vk/buffer.h"
 #include "engine/vk/image.h"
 #include "tests/support/small_frame.h"
+#include "tests/support/device_call_counter.h"
 #include "tests/support/vk_fixture.h"
 
 using hp::test::VulkanTest;
 
-namespace {
-// Counts vkAllocateMemory through the context's table while alive.
-class AllocationCounter {
- public:
-  explicit AllocationCounter(const hp::vk::Context& ctx)
-      : table_(const_cast<VolkDeviceTable&>(ctx.fn())), saved_(table_.vkAllocateMemory) {
-    original() = saved_;
-    calls() = 0;
-    table_.vkAllocateMemory = [](VkDevice d, const VkMemoryAllocateInfo* i, const VkAllocationCallbacks* a,
-                                 VkDeviceMemory* m) {
-      ++calls();
-      return original()(d, i, a, m);
-    };
-  }
-  ~AllocationCounter() { table_.vkAllocateMemory = saved_; }
-  AllocationCounter(const AllocationCounter&) = delete;
-  AllocationCounter& operator=(const AllocationCounter&) = delete;
-  static std::size_t& calls() {
-    static std::size_t n = 0;
-    return n;
-  }
-
- private:
-  static PFN_vkAllocateMemory& original() {
-    static PFN_vkAllocateMemory f = nullptr;
-    return f;
-  }
-  VolkDeviceTable& table_;
-  PFN_vkAllocateMemory saved_;
-};
-}  // namespace
 
 TEST_F(VulkanTest, BuffersAndImagesShareAFewAllocationsWithoutOverlapping) {
   hp::vk::MemoryPool& pool = ctx->memoryPool();
@@ -54,7 +24,7 @@ TEST_F(VulkanTest, BuffersAndImagesShareAFewAllocationsWithoutOverlapping) {
   std::vector<hp::vk::Buffer> buffers;
   std::vector<hp::vk::Image> images;
   {
-    AllocationCounter counter(*ctx);
+    hp::test::DeviceCallCounter counter(*ctx);
     for (int i = 0; i < 200; ++i)
       buffers.emplace_back(*ctx, 1000 + 37 * i, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, hp::vk::MemoryKind::DeviceLocal,
                            "pool test buffer " + std::to_string(i));
@@ -69,7 +39,7 @@ TEST_F(VulkanTest, BuffersAndImagesShareAFewAllocationsWithoutOverlapping) {
     }
     // 200 buffers and 8 images: one block of buffers and one of images (more only where the driver asks
     // for dedicated memory, which it does not for these).
-    EXPECT_LE(AllocationCounter::calls(), 2u);
+    EXPECT_LE(counter.calls().allocations, 2u);
   }
   // Per block, the buffers' ranges (as bound) do not overlap and sit at their alignment.
   std::map<VkDeviceMemory, std::vector<std::pair<VkDeviceSize, VkDeviceSize>>> ranges;
@@ -97,14 +67,14 @@ TEST_F(VulkanTest, AHairInstanceCostsAFewDeviceAllocationsAndDescriptorPools) {
   const hp::HairAsset asset = hp::test::defaultHeadWithStrands(3000);
   auto first = renderer.createInstance(asset, {});
   const std::uint64_t poolsBefore = ctx->descriptorPools().poolsCreated();
-  AllocationCounter counter(*ctx);
+  hp::test::DeviceCallCounter counter(*ctx);
   std::vector<std::unique_ptr<hp::HairInstance>> more;
   for (int i = 0; i < 4; ++i) more.push_back(renderer.createInstance(asset, {}));
   // Each instance holds ~40 buffers (was one vkAllocateMemory each): now they fill the pool's blocks.
   const std::uint64_t pools = ctx->descriptorPools().poolsCreated() - poolsBefore;
-  std::cout << "for 4 more instances: " << AllocationCounter::calls() << " vkAllocateMemory calls, " << pools
+  std::cout << "for 4 more instances: " << counter.calls().allocations << " vkAllocateMemory calls, " << pools
             << " descriptor pools\n";
-  EXPECT_LE(AllocationCounter::calls(), 4u);
+  EXPECT_LE(counter.calls().allocations, 4u);
   EXPECT_LE(pools, 1u);  // ~30 sets each (was one pool per set) share pools of 256
   more.clear();
   first.reset();

@@ -103,7 +103,8 @@ class Instance {
   // Another one, after the first recorded frame, has its tables built on a worker thread (tens of ms of
   // CPU) while the instance keeps drawing its current material; the first recordUpdate or recordShadows
   // after they are done applies it (materialPending() is false from then). Before the first frame it
-  // applies at once. A later setMaterial replaces a pending one.
+  // applies at once. A later setMaterial replaces a pending one. A raster target holding the instance is
+  // kept (it takes the new tables frame slot by frame slot).
   Status setMaterial(const Material& material, FibreModel fibre) noexcept;
   bool materialPending() const noexcept;
   Status setLook(const LookSettings& look) noexcept;
