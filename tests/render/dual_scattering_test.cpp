@@ -49,7 +49,7 @@ TEST_F(VulkanTest, DualScatteringAddsTheReferencesHairToHairMultipleScattering) 
   const RenderResult dual = renderStill(*ctx, asset, request);
   ASSERT_TRUE(single.frame && dual.frame);
   const ExportedFrame frame = makeExportedFrame(request, asset, *dual.frame, "physical");
-  const reference::TraceResult full = reference::traceReference(frame, {16, 6, 1, 0, nullptr});
+  const reference::TraceResult full = reference::traceReference(frame, {64, 6, 1, 0, nullptr});
   const reference::TraceResult once = reference::traceReference(frame, {16, 1, 1, 0, nullptr});
   const LinearImage& mask = dual.frame->hairAlpha;
   const auto against = [&](const LinearImage& image) { return compareImages(image, full.radiance, mask, frame.exposure); };
@@ -65,7 +65,7 @@ TEST_F(VulkanTest, DualScatteringAddsTheReferencesHairToHairMultipleScattering) 
   EXPECT_GT(added / multiple, 0.5);
   EXPECT_LT(added / multiple, 1.3);
   EXPECT_LT(std::abs(d.luminanceRatio - 1.0), std::abs(s.luminanceRatio - 1.0) - 0.1);
-  EXPECT_GT(d.psnrDb, 23.5);  // 24.5 measured, single 24.6: at 16 spp the reference's noise decides
+  EXPECT_GT(d.psnrDb, 23.5);  // 27.0 measured, single 23.4 (the full reference at 64 spp)
   // Multiple scattering is redder than single scattering (each pass through a fibre filters again).
   EXPECT_LT(std::abs(d.redBlueImage / d.redBlueReference - 1.0), std::abs(s.redBlueImage / s.redBlueReference - 1.0));
 }

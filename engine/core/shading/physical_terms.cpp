@@ -11,10 +11,6 @@
 
 namespace hp::shading {
 namespace {
-// Panels of the h integral (8 Gauss-Legendre nodes each) over gamma_o in [-pi/2, pi/2]; convergence
-// is checked in tests/shading/physical_test.cpp (the white furnace, which needs every lobe exact).
-constexpr int kAzimuthPanels = 32;
-
 double safeCos(double s) { return std::max(std::sqrt(std::max(0.0, 1.0 - s * s)), kPhysicalMinCos); }
 }  // namespace
 
@@ -99,9 +95,9 @@ void physicalNRow(double sinThetaR, const HairMaterial& m, const double* phis, i
   };
   PhysicalFibre f = physicalFibre(sinThetaR, m);
   std::vector<Node> nodes;
-  nodes.reserve(kAzimuthPanels * 8);
+  nodes.reserve(kPhysicalAzimuthPanels * 8);
   // h = sin gamma_o, dh = cos gamma_o d gamma_o: smooth integrand in gamma_o.
-  gaussLegendre(-0.5 * kPi, 0.5 * kPi, kAzimuthPanels, [&](double g, double w) {
+  gaussLegendre(-0.5 * kPi, 0.5 * kPi, kPhysicalAzimuthPanels, [&](double g, double w) {
     nodes.push_back({0.5 * w * std::cos(g), physicalAttenuation(std::sin(g), f)});
   });
   glm::dvec3 res(0.0);
@@ -145,7 +141,7 @@ PhysicalN physicalNIntegral(double sinThetaR, const HairMaterial& m, double phiL
 std::array<glm::dvec3, kPhysicalLobes> physicalLobeEnergy(double sinThetaR, const HairMaterial& m) {
   PhysicalFibre f = physicalFibre(sinThetaR, m);
   std::array<glm::dvec3, kPhysicalLobes> e{};
-  gaussLegendre(-0.5 * kPi, 0.5 * kPi, kAzimuthPanels, [&](double g, double w) {
+  gaussLegendre(-0.5 * kPi, 0.5 * kPi, kPhysicalAzimuthPanels, [&](double g, double w) {
     PhysicalAttenuation a = physicalAttenuation(std::sin(g), f);
     for (int p = 0; p < kPhysicalLobes; ++p) e[p] += 0.5 * w * std::cos(g) * a.a[p];
   });

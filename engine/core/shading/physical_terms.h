@@ -22,6 +22,10 @@
 namespace hp::shading {
 inline constexpr int kPhysicalLobes = 4;
 inline constexpr double kPhysicalMinCos = 1e-6;  // floor of cos theta (poles)
+// Panels of the h integral of N_p (8 Gauss-Legendre nodes each) over gamma_o in [-pi/2, pi/2], node
+// weights 0.5 w cos(gamma_o) (h = sin gamma_o uniform on [-1, 1]); convergence is checked by the white
+// furnace in tests/shading/physical_test.cpp, which needs every lobe exact.
+inline constexpr int kPhysicalAzimuthPanels = 32;
 
 double logBesselI0(double x);  // log I0(x), x >= 0, finite for any x
 // d'Eon's M(v, theta_i, theta_r) from the sines and cosines (cosines >= 0); integrates to 1 against

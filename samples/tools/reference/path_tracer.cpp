@@ -13,6 +13,7 @@
 #include "samples/tools/reference/fibre.h"
 #include "samples/tools/reference/fibre_sampling.h"
 #include "samples/tools/reference/frame_light.h"
+#include "samples/tools/reference/physical_sampling.h"
 #include "samples/tools/reference/reference_scene.h"
 #include "samples/tools/reference/sampling.h"
 
@@ -56,10 +57,9 @@ class Tracer {
     const glm::dvec2 sub = pixelOffset(sample, rng);
     const double px = x + sub.x, py = y + sub.y;
     glm::dvec3 origin = camera_.position, dir = camera_.direction(px, py);
-    RaySkip skip;
     glm::dvec3 radiance(0.0), throughput(1.0);
     for (std::uint32_t vertex = 1;; ++vertex) {
-      const SceneHit hit = scene_.intersect(origin, dir, 0.0f, skip);
+      const SceneHit hit = scene_.intersect(origin, dir, 0.0f);
       if (vertex == 1) hairFirst = hit.kind == SceneHit::Kind::Fibre;
       if (hit.kind == SceneHit::Kind::None) {
         radiance += throughput * (vertex == 1 ? glm::dvec3(frame_.background) : glm::dvec3(frame_.environment));
@@ -70,10 +70,10 @@ class Tracer {
       glm::dvec3 weight;
       if (hit.kind == SceneHit::Kind::Fibre) {
         radiance += throughput * fibreDirect(hit, V);
-        weight = sampleFibre(hit, V, rng, origin, dir, skip);
+        weight = sampleFibre(hit, V, rng, origin, dir);
       } else {
         radiance += throughput * headDirect(hit, V);
-        weight = sampleHead(hit, V, rng, origin, dir, skip);
+        weight = sampleHead(hit, V, rng, origin, dir);
       }
       throughput *= weight;
       if (throughput == glm::dvec3(0.0)) break;
@@ -96,12 +96,6 @@ class Tracer {
     return {(sample % n + u) / n, (sample / n + v) / n};
   }
 
-  // The fibre scatters from its axis (far field): rays leave from there, skipping the own tube.
-  RaySkip leaveFibre(const SceneHit& h, const glm::dvec3& d) const {
-    const double c = glm::dot(d, h.tangent), sinAngle = std::sqrt(std::max(0.0, 1.0 - c * c));
-    return {h.strand, float(1.5 * h.radius / std::max(sinAngle, 0.02)) + eps_};
-  }
-
   glm::dvec3 fibreS(const SceneHit& h, const glm::dvec3& L, const glm::dvec3& V) const {
     return reference::fibreS(model_, L, V, h.tangent, frame_.material) * double(colorScales_[h.strand]);
   }
@@ -117,19 +111,25 @@ class Tracer {
     for (const LightSpec& light : frame_.lights) {
       const LightArrival a = lightArrival(light, h.axisPoint);
       if (a.irradiance == glm::dvec3(0.0)) continue;
-      if (scene_.occluded(h.axisPoint, a.L, 0.0f, float(a.distance), leaveFibre(h, a.L))) continue;
+      if (scene_.occluded(fibreExitOrigin(h, a.L), a.L, 0.0f, float(a.distance))) continue;
       sum += fibreS(h, a.L, V) * cosThetaI(a.L, h.tangent) * a.irradiance;
     }
     return sum;
   }
 
-  glm::dvec3 sampleFibre(const SceneHit& h, const glm::dvec3& V, Sampler& rng, glm::dvec3& origin, glm::dvec3& dir,
-                         RaySkip& skip) const {
-    const FibreSampler sampler(h.tangent, V, frame_.material);
+  glm::dvec3 sampleFibre(const SceneHit& h, const glm::dvec3& V, Sampler& rng, glm::dvec3& origin,
+                         glm::dvec3& dir) const {
+    if (model_ == FibreModel::Physical)
+      return continueFrom(PhysicalFibreSampler(h.tangent, V, frame_.material), h, V, rng, origin, dir);
+    return continueFrom(FibreSampler(h.tangent, V, frame_.material), h, V, rng, origin, dir);
+  }
+
+  template <class DirectionSampler>
+  glm::dvec3 continueFrom(const DirectionSampler& sampler, const SceneHit& h, const glm::dvec3& V, Sampler& rng,
+                          glm::dvec3& origin, glm::dvec3& dir) const {
     dir = sampler.sample(rng);
     if (dir == glm::dvec3(0.0)) return glm::dvec3(0.0);
-    origin = h.axisPoint;
-    skip = leaveFibre(h, dir);
+    origin = fibreExitOrigin(h, dir);
     return fibreS(h, dir, V) * cosThetaI(dir, h.tangent) / sampler.pdf(dir);
   }
 
@@ -150,13 +150,12 @@ class Tracer {
     return sum;
   }
 
-  glm::dvec3 sampleHead(const SceneHit& h, const glm::dvec3& V, Sampler& rng, glm::dvec3& origin, glm::dvec3& dir,
-                        RaySkip& skip) const {
+  glm::dvec3 sampleHead(const SceneHit& h, const glm::dvec3& V, Sampler& rng, glm::dvec3& origin,
+                        glm::dvec3& dir) const {
     const glm::dvec3 ng = facing(h.geometricNormal, V), n = facing(h.normal, ng);
     const double u1 = rng.next(), u2 = rng.next();
     dir = cosineHemisphere(n, u1, u2);
     origin = h.point + double(eps_) * ng;
-    skip = {};
     return glm::dot(dir, ng) > 0.0 ? h.albedo : glm::dvec3(0.0);
   }
 

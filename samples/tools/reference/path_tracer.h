@@ -4,8 +4,10 @@
 // square, stratified when spp is a square number (the box filter the real-time coverage integrates). At every scattering
 // vertex (up to `bounces`): every light by next-event estimation with a shadow ray each (they are delta
 // lights: no other way reaches them), and one continuation direction: at a fibre importance-sampled from
-// its lobes (fibre_sampling.h; weight S cos(theta_i) / pdf times the strand's lightness scale; the
-// fibre scatters from its axis, far field), cosine-weighted at the Lambertian
+// its lobes (physical_sampling.h for the physical model, fibre_sampling.h for the paper's; weight
+// S cos(theta_i) / pdf times the strand's lightness scale; the
+// far-field fibre scatters over its width: shadow and continuation rays leave from the side of its tube
+// that faces them, reference_scene.h), cosine-weighted at the Lambertian
 // head (weight albedo). A continuation ray that escapes brings the uniform white environment (the
 // real-time ambient strength); a camera ray that escapes sees the background. Russian roulette after
 // 3 vertices. The result is deterministic for a seed whatever the thread count: each pixel's samples

@@ -9,21 +9,19 @@
 
 namespace hp::reference {
 namespace {
-// The per-ray data the filter functions see: Embree hands back the context pointer it was given.
-struct SkipContext {
-  RTCIntersectContext ctx;
-  RaySkip skip;
-  const std::uint32_t* segmentStrand;
-};
-
-void skipOwnStrand(const RTCFilterFunctionNArguments* args) {
-  const auto* c = reinterpret_cast<const SkipContext*>(args->context);
-  if (c->skip.strand == kNoStrand) return;
+// A tube's exit: the hit point lies on the side of the segment's axis (at the hit's curve parameter) that
+// the ray is heading to. Embree reports the back of round curves too.
+void ignoreTubeExits(const RTCFilterFunctionNArguments* args) {
+  const auto* scene = static_cast<const ReferenceScene*>(args->geometryUserPtr);
   for (unsigned i = 0; i < args->N; ++i) {
     if (args->valid[i] == 0) continue;
-    const unsigned prim = RTCHitN_primID(args->hit, args->N, i);
-    if (c->segmentStrand[prim] == c->skip.strand && RTCRayN_tfar(args->ray, args->N, i) < c->skip.distance)
-      args->valid[i] = 0;
+    const glm::vec3 o(RTCRayN_org_x(args->ray, args->N, i), RTCRayN_org_y(args->ray, args->N, i),
+                      RTCRayN_org_z(args->ray, args->N, i));
+    const glm::vec3 d(RTCRayN_dir_x(args->ray, args->N, i), RTCRayN_dir_y(args->ray, args->N, i),
+                      RTCRayN_dir_z(args->ray, args->N, i));
+    const glm::vec3 p = o + RTCRayN_tfar(args->ray, args->N, i) * d;
+    const glm::vec3 axis = scene->axisAt(RTCHitN_primID(args->hit, args->N, i), RTCHitN_u(args->hit, args->N, i));
+    if (glm::dot(p - axis, d) > 0.0f) args->valid[i] = 0;
   }
 }
 
@@ -44,6 +42,19 @@ RTCRayHit makeRay(const glm::dvec3& o, const glm::dvec3& d, float tnear, float t
   return r;
 }
 }  // namespace
+
+glm::dvec3 fibreExitOrigin(const SceneHit& h, const glm::dvec3& dir) {
+  glm::dvec3 side = dir - glm::dot(dir, h.tangent) * h.tangent;
+  if (glm::dot(side, side) < 1e-12) {  // along the axis: any side (the tube's exit is not a hit)
+    side = glm::cross(h.tangent, std::abs(h.tangent.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0));
+  }
+  return h.axisPoint + (1.0 + 1e-3) * h.radius * glm::normalize(side);  // just outside: no grazing self-hit
+}
+
+glm::vec3 ReferenceScene::axisAt(std::uint32_t segment, float u) const {
+  const std::uint32_t i = segmentFirst_[segment];
+  return glm::mix(glm::vec3(curvePoints_[i]), glm::vec3(curvePoints_[i + 1]), u);
+}
 
 ReferenceScene::ReferenceScene(const ExportedFrame& frame) {
   device_ = rtcNewDevice(nullptr);
@@ -86,8 +97,9 @@ void ReferenceScene::addStrands(const HairFileData& strands) {
   check(device_, "allocating the strand buffers");
   std::memcpy(v, curvePoints_.data(), curvePoints_.size() * sizeof(glm::vec4));
   std::memcpy(idx, segmentFirst_.data(), segmentFirst_.size() * sizeof(std::uint32_t));
-  rtcSetGeometryIntersectFilterFunction(g, skipOwnStrand);
-  rtcSetGeometryOccludedFilterFunction(g, skipOwnStrand);
+  rtcSetGeometryUserData(g, this);
+  rtcSetGeometryIntersectFilterFunction(g, ignoreTubeExits);
+  rtcSetGeometryOccludedFilterFunction(g, ignoreTubeExits);
   rtcCommitGeometry(g);
   curveGeom_ = rtcAttachGeometry(scene_, g);
   rtcReleaseGeometry(g);
@@ -139,11 +151,11 @@ SceneHit ReferenceScene::headHit(std::uint32_t triangle, float u, float v, const
   return h;
 }
 
-SceneHit ReferenceScene::intersect(const glm::dvec3& origin, const glm::dvec3& dir, float tnear, RaySkip skip) const {
-  SkipContext c{{}, skip, segmentStrand_.data()};
-  rtcInitIntersectContext(&c.ctx);
+SceneHit ReferenceScene::intersect(const glm::dvec3& origin, const glm::dvec3& dir, float tnear) const {
+  RTCIntersectContext c;
+  rtcInitIntersectContext(&c);
   RTCRayHit r = makeRay(origin, dir, tnear, std::numeric_limits<float>::infinity());
-  rtcIntersect1(scene_, &c.ctx, &r);
+  rtcIntersect1(scene_, &c, &r);
   if (r.hit.geomID == RTC_INVALID_GEOMETRY_ID) return {};
   const glm::dvec3 point = origin + double(r.ray.tfar) * dir;
   SceneHit h = r.hit.geomID == curveGeom_ ? fibreHit(r.hit.primID, r.hit.u, point)
@@ -153,12 +165,11 @@ SceneHit ReferenceScene::intersect(const glm::dvec3& origin, const glm::dvec3& d
   return h;
 }
 
-bool ReferenceScene::occluded(const glm::dvec3& origin, const glm::dvec3& dir, float tnear, float tfar,
-                              RaySkip skip) const {
-  SkipContext c{{}, skip, segmentStrand_.data()};
-  rtcInitIntersectContext(&c.ctx);
+bool ReferenceScene::occluded(const glm::dvec3& origin, const glm::dvec3& dir, float tnear, float tfar) const {
+  RTCIntersectContext c;
+  rtcInitIntersectContext(&c);
   RTCRay r = makeRay(origin, dir, tnear, tfar).ray;
-  rtcOccluded1(scene_, &c.ctx, &r);
+  rtcOccluded1(scene_, &c, &r);
   return r.tfar < 0.0f;  // Embree sets tfar = -inf on a hit
 }
 }  // namespace hp::reference

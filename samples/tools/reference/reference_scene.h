@@ -3,8 +3,10 @@
 // round linear curve through its points with radius = thickness / 2 (rounded joints, as one tube),
 // and the head as an opaque triangle mesh. intersect() returns the nearest hit with what shading needs
 // (fibre: tangent and strand; head: normals and albedo interpolated as the rasteriser does);
-// occluded() answers a shadow ray. Both can skip the strand a ray leaves from (a far-field fibre
-// scatters from its axis, so its own tube is not an occluder) up to a distance. Thread-safe after
+// occluded() answers a shadow ray. Hits where a ray leaves a tube (the tube's outward normal along the
+// ray) are not hits: a ray that starts inside a tube (its own, or another strand's where tubes
+// overlap, or a root inside the head) is not stopped by that tube, so every hit is a ray entering the
+// union of tubes as drawn. Rays leave a fibre from its surface (fibreExitOrigin). Thread-safe after
 // construction; throws hp::Error when Embree fails.
 #include <glm/glm.hpp>
 
@@ -16,13 +18,6 @@
 #include "samples/tools/frame_export.h"
 
 namespace hp::reference {
-inline constexpr std::uint32_t kNoStrand = 0xFFFFFFFFu;
-
-struct RaySkip {
-  std::uint32_t strand = kNoStrand;  // hits on this strand closer than `distance` are ignored
-  float distance = 0.0f;
-};
-
 struct SceneHit {
   enum class Kind { None, Fibre, Head } kind = Kind::None;
   double t = 0.0;
@@ -36,6 +31,12 @@ struct SceneHit {
   glm::dvec3 albedo{0.0};        // head
 };
 
+// Where a ray leaving fibre hit `h` toward unit `dir` starts: the point of the tube's surface that faces
+// `dir` across the axis (at the hit's axis point). The far-field fibre scatters over its whole width;
+// light arriving from `dir` (or leaving toward it) meets the fibre on that side, so the ray starts on the
+// tube as drawn and not on its axis, which in dense hair lies inside other strands' tubes.
+glm::dvec3 fibreExitOrigin(const SceneHit& h, const glm::dvec3& dir);
+
 class ReferenceScene {
  public:
   explicit ReferenceScene(const ExportedFrame& frame);
@@ -43,9 +44,11 @@ class ReferenceScene {
   ReferenceScene(const ReferenceScene&) = delete;
   ReferenceScene& operator=(const ReferenceScene&) = delete;
 
-  SceneHit intersect(const glm::dvec3& origin, const glm::dvec3& dir, float tnear, RaySkip skip = {}) const;
-  bool occluded(const glm::dvec3& origin, const glm::dvec3& dir, float tnear, float tfar, RaySkip skip = {}) const;
+  SceneHit intersect(const glm::dvec3& origin, const glm::dvec3& dir, float tnear) const;
+  bool occluded(const glm::dvec3& origin, const glm::dvec3& dir, float tnear, float tfar) const;
   float sceneScale() const { return scale_; }  // bounding box diagonal, for ray offsets
+  // The axis point of a strand segment at curve parameter u (what the exit test of a hit measures from).
+  glm::vec3 axisAt(std::uint32_t segment, float u) const;
 
  private:
   void addStrands(const HairFileData& strands);
