@@ -59,9 +59,12 @@ vec3 hairRadiance(vec3 world, vec3 tangent, float colorScale) {
     addHairLight(0u, world, V, T, direct, bounce);
   }
   // The ambient is a uniform white sky: an unoccluded fibre returns the model's sky albedo times its
-  // radiance, a fibre of a head of hair the mean visible fraction of it (shared/render.h).
+  // radiance, a fibre of a head of hair the mean fraction of it that reaches it (shared/render.h); with
+  // dual scattering more of it does, passed on forward by the hair on the way (hp::skyVisibility).
   // The skin's bounce is treated the same way: the fibre's response to it is the sky albedo times its mean.
-  vec3 ambient = marschner.skyAlbedo.rgb * (frame.hairColor.w * RENDER_HAIR_SKY_VISIBILITY + bounce);
+  bool dual = frame.options.z == RENDER_SCATTERING_DUAL && marschner.control.x == MARSCHNER_MODE_LUT_PHYSICAL;
+  vec3 sky = dual ? marschner.skyVisibility.rgb : vec3(RENDER_HAIR_SKY_VISIBILITY);
+  vec3 ambient = marschner.skyAlbedo.rgb * (frame.hairColor.w * sky + bounce);
   return (direct + ambient) * colorScale;
 }
 #endif

@@ -40,6 +40,13 @@ struct MultipleScatteringTables {
 inline constexpr double kEdgeSine = 0.999;
 MultipleScatteringTables multipleScatteringTables(const HairMaterial& m, int entries);
 
+// The mean fraction of a uniform sky that a visible fibre of an optically thick head of hair receives when
+// the hair on the way passes a_f of the light on forward (dual scattering; docs/SHADING.md "Ambient"):
+// (1 - k ln(1 + 1/k)) / 2 per RGB, k = 1 - a_f averaged over the sky's directions (weight cos^2 theta d
+// theta: solid angle times the fibre's cross-section). k = 1 (no forward scattering) gives single
+// scattering's (1 - ln 2) / 2, RENDER_HAIR_SKY_VISIBILITY; k -> 0 gives 1/2, the open half of the sky.
+glm::dvec3 skyVisibility(const MultipleScatteringTables& t);
+
 // The back-scattered lobe's (shift, width) at sin theta, linear between the tables' entries (as the shader
 // reads the other tables); what the M texture's back-lobe columns are built from.
 glm::dvec2 backLobeAt(const MultipleScatteringTables& t, double sinTheta);
