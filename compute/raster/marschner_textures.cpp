@@ -75,7 +75,8 @@ void makeVisibleToComputeToo(const vk::Context& ctx, const std::vector<const vk:
 }
 }  // namespace
 
-MarschnerTextures::MarschnerTextures(const vk::Context& ctx, const MarschnerLut& lut, const LutBuildOptions& options)
+MarschnerTextures::MarschnerTextures(const vk::Context& ctx, const MarschnerLut& lut, const LutBuildOptions& options,
+                                     const gpu::MarschnerParams* params)
     : ctx_(ctx), options_(options) {
   sampler_ = vk::Sampler(ctx, "Marschner LUT sampler");
   vk::ImageDesc dummy;
@@ -89,7 +90,7 @@ MarschnerTextures::MarschnerTextures(const vk::Context& ctx, const MarschnerLut&
   paramsBuffer_ = vk::Buffer(ctx, sizeof(gpu::MarschnerParams),
                              VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                              vk::MemoryKind::Upload, "Marschner params UBO");
-  upload(lut);
+  upload(lut, params);
 }
 
 bool MarschnerTextures::rebuild(const HairMaterial& material, LutMode mode) {
@@ -98,7 +99,7 @@ bool MarschnerTextures::rebuild(const HairMaterial& material, LutMode mode) {
   return true;
 }
 
-void MarschnerTextures::upload(const MarschnerLut& lut) {
+void MarschnerTextures::upload(const MarschnerLut& lut, const gpu::MarschnerParams* params) {
   // Refuse an unusable format before touching anything, so that failure keeps the old state too.
   for (const LutTexture& t : lut.textures) requireLinearFiltering(ctx_, vkFormatOf(t.format), t.name);
   std::vector<const vk::Image*> uploaded;
@@ -124,7 +125,7 @@ void MarschnerTextures::upload(const MarschnerLut& lut) {
     uploaded.push_back(&images_[slot]);
   }
   makeVisibleToComputeToo(ctx_, uploaded);
-  params_ = marschnerGpuParams(lut);
+  params_ = params ? *params : marschnerGpuParams(lut);
   std::memcpy(paramsBuffer_.mapped(), &params_, sizeof(params_));  // coherent; visible to later submits
   lut_ = lut;
   ++buildCount_;

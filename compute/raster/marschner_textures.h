@@ -41,8 +41,10 @@ class MarschnerTextures {
   MarschnerTextures(const vk::Context& ctx, const HairMaterial& material, LutMode mode,
                     const LutBuildOptions& options = {})
       : MarschnerTextures(ctx, buildLut(mode, material, options), options) {}
-  // From tables built beforehand (buildLut, e.g. on a worker thread): only the uploads here.
-  MarschnerTextures(const vk::Context& ctx, const MarschnerLut& lut, const LutBuildOptions& options = {});
+  // From tables built beforehand (buildLut, e.g. on a worker thread): only the uploads here. `params`:
+  // their marschnerGpuParams when computed beforehand too (else computed here: the sky albedo's quadrature).
+  MarschnerTextures(const vk::Context& ctx, const MarschnerLut& lut, const LutBuildOptions& options = {},
+                    const gpu::MarschnerParams* params = nullptr);
   MarschnerTextures(const MarschnerTextures&) = delete;
   MarschnerTextures& operator=(const MarschnerTextures&) = delete;
 
@@ -68,7 +70,7 @@ class MarschnerTextures {
   const vk::Image& slotImage(std::uint32_t slot) const;
 
  private:
-  void upload(const MarschnerLut& lut);
+  void upload(const MarschnerLut& lut, const gpu::MarschnerParams* params = nullptr);
 
   const vk::Context& ctx_;
   LutBuildOptions options_;

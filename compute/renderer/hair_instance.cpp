@@ -119,7 +119,7 @@ void HairInstance::applyReadyMaterial() {
   pending_.reset();
   try {
     if (!done->error().empty()) throw Error(done->error());
-    applyMaterial([&] { return renderer_.marschnerFrom(done->lut()); }, done->material(), done->mode());
+    applyMaterial([&] { return renderer_.marschnerFrom(done->lut(), &done->params()); }, done->material(), done->mode());
   } catch (const std::exception& e) {  // record calls do not throw: the old material stays, the reason is kept
     materialError_ = e.what();
   }

@@ -37,6 +37,7 @@ std::shared_ptr<LutBuild> LutBuild::start(const HairMaterial& material, LutMode 
 void LutBuild::run() noexcept {
   try {
     lut_ = buildLut(mode_, material_);
+    params_ = marschnerGpuParams(lut_);
   } catch (const std::exception& e) {
     error_ = e.what();
   } catch (...) {

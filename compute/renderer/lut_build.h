@@ -1,6 +1,7 @@
 #pragma once
-// Contract: one material's lookup tables (buildLut) built on a detached POSIX thread, so a material change
-// in the frame loop costs the application's thread no table building (HairInstance::setMaterial). The
+// Contract: one material's lookup tables (buildLut) and their device parameter block (marschnerGpuParams:
+// the sky albedo's furnace quadrature, 30-250 ms of CPU) built on a detached POSIX thread, so a material
+// change in the frame loop costs the application's thread no table building (HairInstance::setMaterial). The
 // build owns copies of its inputs and is shared between the thread and its owner: dropping the owner's
 // handle lets the thread finish into nothing. A POSIX thread rather than std::thread: the library never
 // references std::terminate (tests/support: Library.NeverCallsAbortOrExit).
@@ -10,6 +11,7 @@
 #include <string>
 
 #include "engine/core/shading/lut.h"
+#include "engine/core/shading/marschner_gpu.h"
 #include "engine/core/shading/material.h"
 
 namespace hp {
@@ -23,6 +25,7 @@ class LutBuild {
   void wait() const;  // until done()
   // After done(): the tables, or (error() non-empty) why there are none.
   const MarschnerLut& lut() const { return lut_; }
+  const gpu::MarschnerParams& params() const { return params_; }
   const std::string& error() const { return error_; }
   const HairMaterial& material() const { return material_; }
   LutMode mode() const { return mode_; }
@@ -33,6 +36,7 @@ class LutBuild {
   HairMaterial material_;
   LutMode mode_;
   MarschnerLut lut_;
+  gpu::MarschnerParams params_{};
   std::string error_;
   mutable std::mutex mutex_;
   mutable std::condition_variable finished_;

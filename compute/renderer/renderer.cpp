@@ -156,9 +156,10 @@ std::shared_ptr<render::MarschnerTextures> Renderer::marschner(const HairMateria
   return marschnerFrom(buildLut(mode, material));
 }
 
-std::shared_ptr<render::MarschnerTextures> Renderer::marschnerFrom(const MarschnerLut& lut) {
+std::shared_ptr<render::MarschnerTextures> Renderer::marschnerFrom(const MarschnerLut& lut,
+                                                                   const gpu::MarschnerParams* params) {
   if (auto cached = cachedMarschner(lut.material, lut.mode)) return cached;
-  auto textures = std::make_shared<render::MarschnerTextures>(ctx_, lut);
+  auto textures = std::make_shared<render::MarschnerTextures>(ctx_, lut, LutBuildOptions{}, params);
   luts_.push_back({lut.material, lut.mode, textures});
   return textures;
 }

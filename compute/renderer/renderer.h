@@ -117,7 +117,8 @@ class Renderer {
   // The cached textures of a material and mode, or null (nothing built).
   std::shared_ptr<render::MarschnerTextures> cachedMarschner(const HairMaterial& material, LutMode mode);
   // Textures from tables built elsewhere (a worker thread), cached like marschner()'s.
-  std::shared_ptr<render::MarschnerTextures> marschnerFrom(const MarschnerLut& lut);
+  std::shared_ptr<render::MarschnerTextures> marschnerFrom(const MarschnerLut& lut,
+                                                           const gpu::MarschnerParams* params = nullptr);
   // Whether a frame was recorded: changes then defer their uploads, and new LUTs are built off this thread.
   bool inFrameLoop() const { return lastFrame_.has_value(); }
   // Keeps `resource` alive until the frames that may use it now are done.
