@@ -8,6 +8,15 @@
 #include "head_shadow.glsl"
 #include "light.glsl"
 
+// What light crossing optical depth tau of hair on its way to or from the skin keeps: the unscattered part,
+// and with dual scattering (frame.hairForward, 0 otherwise) also d_f of what the hair on the way passes on
+// forward, E[a_f^N; N >= 1] = exp(-tau (1 - a_f)) - exp(-tau) (the skin is Lambertian: the spread in
+// direction does not matter to it; docs/SHADING.md "Skin bounce").
+vec3 hairTransmittance(float tau) {
+  float unscattered = exp(-tau);
+  return unscattered + frame.hairForward.w * max(exp(-tau * (1.0 - frame.hairForward.rgb)) - unscattered, vec3(0.0));
+}
+
 // The opacity-map value at p for shadow slot `slot`, with the frame's kind of slices and bias. `soft`: over
 // a few texels (opaque receivers: opacityAlphaSoft).
 float frameOpacityAlpha(uint slot, vec3 p, bool soft) {

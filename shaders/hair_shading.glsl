@@ -2,7 +2,8 @@
 // strand shader (strands.frag, per fragment) and the compute rasterizer (raster_shade.comp, per vertex).
 // Per light of the frame: S(L, V, T) cos(theta_i) x light x transmittance [+ the light the hair in front
 // scattered forward and the light the hair around scatters back, dual scattering]; then sky albedo x (ambient
-// x RENDER_HAIR_SKY_VISIBILITY + the skin's bounce of the slot-0 light, head_bounce.glsl), all times the
+// x the sky's visibility (RENDER_HAIR_SKY_VISIBILITY, or with dual scattering MarschnerParams.skyVisibility)
+// + the skin's bounce of the slot-0 light, head_bounce.glsl), all times the
 // strand's lightness variation. The transmittance is the hair's (opacity maps of the light's shadow slot)
 // times the heads' (their depth map); a light without a slot is unshadowed.
 // The includer declares `frame` (RenderFrame), `marschner` (MarschnerParams), the LUT samplers lutM, lutN0,

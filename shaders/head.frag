@@ -1,8 +1,9 @@
 #version 460
 // The head: per light of the frame, diffuse with the paper's wrap term (wrap + N.L) / (1 + wrap) (L, cone
 // and distance scale from light.glsl), plus ambient; hair-coloured where hair grows. Each light's direct
-// term is shadowed by the hair (its slot's opacity maps, T = exp(-k alpha), looked up over a few texels) and
-// by the heads (their depth map): frame_shadows.glsl.
+// term is shadowed by the hair (its slot's opacity maps, T = hairTransmittance(k alpha): exp(-k alpha) and,
+// with dual scattering, the light the hair passes on forward; looked up over a few texels) and by the heads
+// (their depth map): frame_shadows.glsl.
 #include "shared/render.h"
 
 layout(std140, binding = RENDER_BINDING_FRAME) uniform Frame { RenderFrame frame; };
@@ -24,7 +25,7 @@ vec3 headLight(FrameLight light, vec3 N, float wrap) {
   LightSample ls = sampleLight(light, inWorld);
   float diffuse = ls.scale * max((wrap + dot(N, ls.L)) / (1.0 + wrap), 0.0);
   LightShadow shadow = frameLightShadow(light, inWorld, ls.L, true);
-  return light.radiance.rgb * (diffuse * exp(-frame.strand.z * shadow.alpha) * shadow.head);
+  return light.radiance.rgb * hairTransmittance(frame.strand.z * shadow.alpha) * (diffuse * shadow.head);
 }
 
 void main() {

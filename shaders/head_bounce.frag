@@ -27,6 +27,6 @@ void main() {
   float alpha = frameOpacityAlpha(0u, inWorld, true);
   float areaAcross = abs(dot(cross(dFdx(inWorld), dFdy(inWorld)), ls.L));
   vec3 E = light.radiance.rgb * ls.scale;
-  outFlux = vec4(albedo * E * (exp(-frame.strand.z * alpha) * areaAcross), 1.0 + alpha);
+  outFlux = vec4(albedo * E * hairTransmittance(frame.strand.z * alpha) * areaAcross, 1.0 + alpha);
   outPosition = vec4(inWorld, bounceEncodeNormal(normalize(inNormal)));
 }

@@ -5,7 +5,7 @@
 // samplers bounceFlux and bouncePosition (head_bounce.frag writes them).
 // Each texel of the map is a Lambertian patch of flux Phi; a point p receives from it the radiance
 // integral L A cos / r^2 = Phi cos_out / (pi r^2) (cos_out at the patch toward p), times the hair between
-// them, exp(-k (alpha_skin - alpha_p)): both opacity-map values are along the light, so their difference is
+// them, hairTransmittance(k (alpha_skin - alpha_p)): both opacity-map values are along the light, so their difference is
 // the hair between the two depths. The patches are gathered on rings around p's texel (shared/render.h),
 // each sample standing for its ring's share of texels. p is lifted one texel off each patch's plane so a
 // fibre lying on the skin sees it as the hemisphere it is, not as grazing patches.
@@ -68,7 +68,7 @@ vec3 headBounceLight(vec3 p, float alphaHere, float alphaLayer) {
       if (h < -lift) continue;  // behind the patch's plane
       float lifted = max(h, 0.0) + lift;
       float r2 = dot(d, d) - h * h + lifted * lifted;
-      float between = exp(-frame.strand.z * max(max(flux.a - 1.0 - alphaHere, 0.0), alphaLayer));
+      vec3 between = hairTransmittance(frame.strand.z * max(max(flux.a - 1.0 - alphaHere, 0.0), alphaLayer));
       sum += flux.rgb * (texels * lifted * inversesqrt(r2) / (PI * r2) * between);
     }
   }

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "engine/core/error.h"
+#include "shaders/shared/marschner.h"
 
 namespace hp::render {
 namespace {
@@ -59,7 +60,8 @@ void setLights(gpu::RenderFrame& f, const FrameLights& lights, bool skinBounce) 
 
 gpu::RenderFrame makeRenderFrame(const CameraMatrices& camera, VkExtent2D extent, const FrameLights& lights,
                                  const HairMaterial& material, const LookSettings& look,
-                                 std::uint32_t verticesPerStrand, const OpacitySettings& opacity) {
+                                 std::uint32_t verticesPerStrand, const OpacitySettings& opacity,
+                                 const glm::vec3& forwardAlbedo) {
   gpu::RenderFrame f{};
   f.view = camera.view;
   f.proj = camera.proj;
@@ -71,6 +73,8 @@ gpu::RenderFrame makeRenderFrame(const CameraMatrices& camera, VkExtent2D extent
   const glm::dvec3 albedo = glm::exp(-2.0 * material.absorption);
   f.hairColor = glm::vec4(glm::vec3(albedo), look.ambient);
   f.skinColor = glm::vec4(look.skinColor, look.wrap);
+  if (look.scattering == Scattering::Dual)
+    f.hairForward = glm::vec4(forwardAlbedo, gpu::MARSCHNER_FORWARD_DENSITY);
   f.strand = glm::vec4(look.strandWidth, look.tipWidthFraction, opacity.k, lookupBias(opacity));
   f.options = glm::uvec4(verticesPerStrand, opacity.enabled ? 1u : 0u,
                          look.scattering == Scattering::Dual ? gpu::RENDER_SCATTERING_DUAL : gpu::RENDER_SCATTERING_SINGLE,

@@ -85,9 +85,8 @@ std::vector<std::uint32_t> ComputeRaster::recordFrameBlocks(VkCommandBuffer cmd,
     const HairInstance& instance = *instances_[i];
     const float fraction = instance.lodFraction(view.camera.position);
     strandLimits.push_back(instance.lodStrands(fraction));
-    gpu::RenderFrame frame = render::makeRenderFrame(view.camera, view.extent, lights, instance.settings().material,
-                                                     lodLook(instance.settings().look, fraction),
-                                                     instance.strands().layout().verticesPerStrand, shadows_.settings());
+    gpu::RenderFrame frame =
+        instance.frameBlock(view.camera, view.extent, lights, lodLook(instance.settings().look, fraction));
     render::setViewMotion(frame, view.extent, view.jitter, view.previousViewProj);
     const VkBuffer block = frames_[i].handle();
     vk::bufferBarrier(ctx_, cmd, block, vk::BufferUse::ComputeRead, vk::BufferUse::TransferDst);

@@ -55,8 +55,7 @@ HairInstance::HairInstance(Renderer& renderer, const HairAsset& asset, const Ins
   // Valid blocks from the start, so a draw before any prepared view reads sane values.
   for (std::uint32_t slot = 0; slot < rs.framesInFlight * rs.maxViewsPerFrame; ++slot)
     *frameSlot(slot / rs.maxViewsPerFrame, slot % rs.maxViewsPerFrame) =
-        render::makeRenderFrame(CameraMatrices{}, {1, 1}, render::FrameLights{}, settings_.material, settings_.look,
-                                strands().layout().verticesPerStrand, renderer.shadows().settings());
+        frameBlock(CameraMatrices{}, {1, 1}, render::FrameLights{}, settings_.look);
   head_ = std::make_shared<render::HeadPass>(ctx, headMesh_, frames_, renderer.shadows().inputs(),
                                              rs.formats, &renderer.pipelines());
   bounceFrame_ = vk::Buffer(ctx, sizeof(gpu::RenderFrame), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
@@ -67,6 +66,12 @@ HairInstance::HairInstance(Renderer& renderer, const HairAsset& asset, const Ins
 }
 
 HairInstance::~HairInstance() { renderer_.forgetInstance(*this); }
+
+gpu::RenderFrame HairInstance::frameBlock(const CameraMatrices& camera, VkExtent2D extent,
+                                          const render::FrameLights& lights, const render::LookSettings& look) const {
+  return render::makeRenderFrame(camera, extent, lights, settings_.material, look, strands().layout().verticesPerStrand,
+                                 renderer_.shadows().settings(), glm::vec3(marschner_->params().forwardMean));
+}
 
 std::uint32_t HairInstance::frameOffset(std::uint64_t frame, std::uint32_t view) const {
   const RendererSettings& rs = renderer_.settings();

@@ -70,6 +70,9 @@ class HairInstance {
   const glm::mat4& headToWorld() const { return motion_.to; }
   const compute::StrandBuffers& strands() const { return geometry_->buffers; }
   const render::MarschnerTextures& marschner() const { return *marschner_; }
+  // The instance's frame block for a view or pass: its material and its tables' forward albedo, `look`.
+  gpu::RenderFrame frameBlock(const CameraMatrices& camera, VkExtent2D extent, const render::FrameLights& lights,
+                              const render::LookSettings& look) const;
   const SimulatePass& simulation() const { return simulate_; }
   // Level of detail: what a view with its eye at `eye` draws (fraction of the strands, their count), and
   // what the shadows draw (the largest fraction of the views most recently drawn; 1 before any).

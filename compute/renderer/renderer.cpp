@@ -262,9 +262,7 @@ void Renderer::recordHeadBounce(VkCommandBuffer cmd, const render::FrameLights& 
   if (profiler) profiler->begin(cmd, "head bounce");
   // The blocks the bounce draws read: the lights, colours and opacity settings, the map's framing.
   for (HairInstance* i : instances) {
-    const gpu::RenderFrame block = render::makeRenderFrame(CameraMatrices{}, {1, 1}, lights, i->settings_.material,
-                                                           i->settings_.look, i->strands().layout().verticesPerStrand,
-                                                           shadows_->settings());
+    const gpu::RenderFrame block = i->frameBlock(CameraMatrices{}, {1, 1}, lights, i->settings_.look);
     const VkBuffer buffer = i->bounceFrame_.handle();
     vk::bufferBarrier(ctx_, cmd, buffer, vk::BufferUse::GraphicsRead, vk::BufferUse::TransferDst);
     ctx_.fn().vkCmdUpdateBuffer(cmd, buffer, 0, sizeof(block), &block);
@@ -287,9 +285,7 @@ void Renderer::recordDraw(VkCommandBuffer cmd, std::uint64_t frame, const View& 
     const float fraction = i->lodFraction(view.camera.position);
     i->noteViewFraction(frame, fraction);
     gpu::RenderFrame* block = i->frameSlot(frame, view.index);
-    *block = render::makeRenderFrame(view.camera, view.extent, lights, i->settings_.material,
-                                     lodLook(i->settings_.look, fraction), i->strands().layout().verticesPerStrand,
-                                     shadows_->settings());
+    *block = i->frameBlock(view.camera, view.extent, lights, lodLook(i->settings_.look, fraction));
     render::setViewMotion(*block, view.extent, view.jitter, view.previousViewProj);
     const std::uint32_t offset = i->frameOffset(frame, view.index);
     if (profiler) profiler->begin(cmd, "head");

@@ -82,7 +82,8 @@ class Renderer {
   // into an image of `extent` against the depth image view `depth`, which has the settings'
   // AttachmentFormats sample count: multisampled, the head's edges over the hair are antialiased by its
   // samples (the composite then draws into attachments of that count). Rebuilt by the Renderer when one of
-  // them changes strands or material or is destroyed; call again for another extent or set.
+  // them changes strands or is destroyed; a material change rebinds its tables from the next frame on (a
+  // change between two views of a frame shows in the next frame); call again for another extent or set.
   void setRasterTarget(VkExtent2D extent, VkImageView depth, std::span<HairInstance* const> instances);
   // After recordDraw of the frame's view (heads drawn, depth in ImageUse::ComputeSampled), with the
   // lights recordShadows was given; leaves rasterImage() in ImageUse::FragmentSampled. View::index is unused

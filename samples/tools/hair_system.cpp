@@ -60,7 +60,7 @@ void HairSystem::recordDraw(VkCommandBuffer cmd, const DrawView& view, vk::GpuPr
 }
 
 void HairSystem::setMaterial(const HairMaterial& material, LutMode mode) {
-  instance_->setMaterial(material, mode);  // the Renderer rebuilds a raster target reading the old LUTs
+  instance_->setMaterial(material, mode);  // a raster target rebinds the new LUTs from the next frame on
   settings_.material = material;
   settings_.lutMode = mode;
 }

@@ -82,6 +82,8 @@ struct MarschnerParams {
   vec4 skyAlbedo;     // rgb = the fibre's albedo under a uniform white sky (hp::skyAlbedo), w = 0
   vec4 skyVisibility; // physical mode: rgb = the sky a visible fibre receives with dual scattering
                       // (hp::skyVisibility), w = 0; zero otherwise
+  vec4 forwardMean;   // physical mode: rgb = a_f over a uniform sky's directions (hp::meanForwardAlbedo),
+                      // w = 0; zero otherwise
   // Physical mode only (zero otherwise), at sin theta = -1 + 2k / (MARSCHNER_SPREAD_ENTRIES - 1):
   vec4 forwardAlbedo[MARSCHNER_SPREAD_ENTRIES];  // rgb = a_f(theta) of the light's theta, w = 0
   vec4 meanRTT[MARSCHNER_SPREAD_ENTRIES];        // x = mean N_R, yzw = mean N_TT (rgb), at theta_r

@@ -92,6 +92,9 @@ struct RenderFrame {
   FrameShadow shadows[OPACITY_MAX_LIGHTS];  // per shadow slot
   mat4 previousViewProj;  // the previous frame's unjittered proj * view (motion vectors; shared/raster.h)
   vec4 jitter;            // xy = this view's subpixel jitter in pixels (x right, y down), already in `proj`; z = w = 0
+  vec4 hairForward;       // with dual scattering on the physical model: rgb = the hair's mean forward albedo
+                          // (MarschnerParams.forwardMean), w = the forward density d_f; else 0: what the light
+                          // to and from the skin keeps through the hair (frame_shadows.glsl hairTransmittance)
 };
 
 struct StrandDrawPush {
@@ -116,7 +119,8 @@ static_assert(offsetof(hp::gpu::RenderFrame, options) == 192);
 static_assert(offsetof(hp::gpu::RenderFrame, lights) == 240);
 static_assert(offsetof(hp::gpu::RenderFrame, shadows) == 752);
 static_assert(offsetof(hp::gpu::RenderFrame, previousViewProj) == 1072);
-static_assert(sizeof(hp::gpu::RenderFrame) == 1152);
+static_assert(offsetof(hp::gpu::RenderFrame, hairForward) == 1152);
+static_assert(sizeof(hp::gpu::RenderFrame) == 1168);
 static_assert(sizeof(hp::gpu::FrameLight) == 64);
 static_assert(sizeof(hp::gpu::FrameShadow) == 80);
 static_assert(sizeof(hp::gpu::StrandDrawPush) == 16);

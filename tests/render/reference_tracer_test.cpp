@@ -338,9 +338,11 @@ TEST(ReferenceTracer, OneFibreUnderTheSunReturnsItsScatteringFunction) {
 }
 
 // The whole tracer's white furnace: 400 white non-absorbing fibres of the physical model crossing a
-// 0.2 m box at random, under a uniform sky of 1 with a background of 1: light is neither made nor lost
-// (every path ends in the sky), so every pixel returns 1 up to noise, however many bounces a path takes
-// between fibres. Far more bounces than paths need (roulette ends them).
+// 0.2 m box at random, under a uniform sky of 1 with a background of 1: light is neither made nor lost,
+// so every pixel returns 1 up to noise, however many bounces a path takes between fibres (far more are
+// allowed than paths need; roulette ends them). It holds the fibre sampler's density and the roulette to
+// account over many bounces (the lobe-mixture sampler read 0.56 and 2.05 at 4k and 65k paths); every white
+// bounce weighs 1 whatever the geometry, so where rays go is the slab test's to check.
 TEST(ReferenceTracer, WhiteFibresInADenseTuftUnderAUniformSkyReturnTheSky) {
   ExportedFrame f = fibreFrame();
   f.strands = {};

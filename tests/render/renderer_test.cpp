@@ -316,8 +316,8 @@ HairColumns hairColumns(const hp::vk::Context& ctx, const hp::Renderer& renderer
 }  // namespace
 
 // The middleware API on the compute raster: two heads side by side in one set of tile lists, both drawn;
-// a target of one head draws that head only; a material change rebuilds the target (the changed head's
-// hair brightens, the other's does not change). Sync-validation clean (fixture).
+// a target of one head draws that head only; after a material change the target (kept) draws the changed
+// head's hair brighter and the other's unchanged. Sync-validation clean (fixture).
 TEST_F(VulkanTest, TwoInstancesOnTheComputeRasterAreBothDrawnAndFollowAMaterialChange) {
   hp::render::OffscreenRenderer target(*ctx, kRendererWidth, kRendererHeight, 1, hp::RasterMode::Compute);
   hp::RendererSettings settings = rendererSettings(target);
@@ -367,7 +367,9 @@ TEST_F(VulkanTest, TwoInstancesOnTheComputeRasterAreBothDrawnAndFollowAMaterialC
 
 namespace {
 // Five frames of one head on the compute raster, two in flight on one queue; with `change`, the material
-// changes to blonde as frame 2 is recorded (frame 1 may still run), else it is blonde from the start.
+// changes to blonde while frame 1 is recorded (its tables built before frame 1 is submitted), so frame 2
+// applies it and rebinds slot 0 right after frame 1 was submitted, frame 1 still running on slot 1's sets;
+// without, it is blonde from the start.
 // Returns the images of frames 3 and 4 (drawn with the second and the first frame slot's descriptor sets)
 // and, with `change`, counts what the change and the frames after it cost the device.
 std::vector<std::vector<std::uint8_t>> computeFramesInFlight(const hp::vk::Context& ctx, bool change,
@@ -390,15 +392,15 @@ std::vector<std::vector<std::uint8_t>> computeFramesInFlight(const hp::vk::Conte
   std::vector<std::vector<std::uint8_t>> images;
   for (std::uint64_t frame = 0; frame < 5; ++frame) {
     VkCommandBuffer cmd = slots.begin(frame % 2);  // waits for frame - 2
-    if (change && frame == 2) {
-      counter = std::make_unique<hp::test::DeviceCallCounter>(ctx);
-      hair->setMaterial(blonde(), hp::LutMode::Float);
-      hair->waitForMaterial();
-    }
     const double t = frame / 60.0;
     hair->setMotion({glm::mat4(1.0f), glm::rotate(glm::mat4(1.0f), float(0.2 * t), {0, 1, 0}), t, false});
     renderer.recordUpdate(cmd, frame, one);
     renderer.recordShadows(cmd, frame, hp::LightSpec{}, one);
+    if (change && frame == 1) {  // in the frame loop: built on a worker, applied by frame 2's recordUpdate
+      counter = std::make_unique<hp::test::DeviceCallCounter>(ctx);
+      hair->setMaterial(blonde(), hp::LutMode::Float);
+      hair->waitForMaterial();
+    }
     target.record(cmd, renderer, frame, view, one, 1.0f);
     slots.submit(frame % 2);
     if (counter && frame == 3) {  // both slots' sets rebound (frames 2 and 3)

@@ -41,6 +41,7 @@ gpu::MarschnerParams marschnerGpuParams(const MarschnerLut& lut) {
   if (t.forwardAlbedo.size() != gpu::MARSCHNER_SPREAD_ENTRIES)
     throw Error("marschnerGpuParams: a physical LUT without its multiple-scattering tables");
   p.skyVisibility = glm::vec4(glm::vec3(skyVisibility(t)), 0.0f);
+  p.forwardMean = glm::vec4(glm::vec3(meanForwardAlbedo(t)), 0.0f);
   for (std::uint32_t k = 0; k < gpu::MARSCHNER_SPREAD_ENTRIES; ++k) {
     p.forwardAlbedo[k] = glm::vec4(glm::vec3(t.forwardAlbedo[k]), 0.0f);
     p.meanRTT[k] = glm::vec4(float(t.meanR[k]), glm::vec3(t.meanTT[k]));

@@ -11,7 +11,7 @@
 #include "shaders/shared/marschner.h"
 
 namespace hp {
-static_assert(sizeof(gpu::MarschnerParams) == 144 + 4 * 16 * gpu::MARSCHNER_SPREAD_ENTRIES);
+static_assert(sizeof(gpu::MarschnerParams) == 160 + 4 * 16 * gpu::MARSCHNER_SPREAD_ENTRIES);
 static_assert(offsetof(gpu::MarschnerParams, absorption) == 0);
 static_assert(offsetof(gpu::MarschnerParams, longitudinal) == 16);
 static_assert(offsetof(gpu::MarschnerParams, caustic) == 32);
@@ -21,7 +21,8 @@ static_assert(offsetof(gpu::MarschnerParams, n1Scale) == 80);
 static_assert(offsetof(gpu::MarschnerParams, control) == 96);
 static_assert(offsetof(gpu::MarschnerParams, skyAlbedo) == 112);
 static_assert(offsetof(gpu::MarschnerParams, skyVisibility) == 128);
-static_assert(offsetof(gpu::MarschnerParams, forwardAlbedo) == 144);
+static_assert(offsetof(gpu::MarschnerParams, forwardMean) == 144);
+static_assert(offsetof(gpu::MarschnerParams, forwardAlbedo) == 160);
 
 std::uint32_t gpuModeOf(LutMode mode);
 gpu::MarschnerParams marschnerGpuParams(const MarschnerLut& lut);

@@ -81,7 +81,7 @@ glm::dvec2 backLobeAt(const MultipleScatteringTables& t, double sinTheta) {
   return {(1.0 - f) * t.backShift[i] + f * t.backShift[i + 1], (1.0 - f) * t.backWidth[i] + f * t.backWidth[i + 1]};
 }
 
-glm::dvec3 skyVisibility(const MultipleScatteringTables& t) {
+glm::dvec3 meanForwardAlbedo(const MultipleScatteringTables& t) {
   // The entries are even in sin theta, where cos^2 theta d theta = cos theta d(sin theta): trapezoids.
   const int n = int(t.forwardAlbedo.size());
   glm::dvec3 sum(0.0);
@@ -92,7 +92,11 @@ glm::dvec3 skyVisibility(const MultipleScatteringTables& t) {
     sum += w * t.forwardAlbedo[i];
     weights += w;
   }
-  const glm::dvec3 k = glm::clamp(1.0 - sum / weights, 1e-9, 1.0);
+  return sum / weights;
+}
+
+glm::dvec3 skyVisibility(const MultipleScatteringTables& t) {
+  const glm::dvec3 k = glm::clamp(1.0 - meanForwardAlbedo(t), 1e-9, 1.0);
   return 0.5 * (1.0 - k * glm::log(1.0 + 1.0 / k));
 }
 }  // namespace hp

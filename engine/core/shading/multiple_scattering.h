@@ -46,6 +46,9 @@ MultipleScatteringTables multipleScatteringTables(const HairMaterial& m, int ent
 // theta: solid angle times the fibre's cross-section). k = 1 (no forward scattering) gives single
 // scattering's (1 - ln 2) / 2, RENDER_HAIR_SKY_VISIBILITY; k -> 0 gives 1/2, the open half of the sky.
 glm::dvec3 skyVisibility(const MultipleScatteringTables& t);
+// a_f averaged over a uniform sky's directions (weight cos^2 theta d theta), per RGB: what skyVisibility
+// and the hair's transmittance to and from the skin (with dual scattering) take for light of any direction.
+glm::dvec3 meanForwardAlbedo(const MultipleScatteringTables& t);
 
 // The back-scattered lobe's (shift, width) at sin theta, linear between the tables' entries (as the shader
 // reads the other tables); what the M texture's back-lobe columns are built from.

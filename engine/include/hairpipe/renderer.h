@@ -149,7 +149,8 @@ class Renderer {
 
   // Compute raster (raster() == RasterMode::Compute): the instances whose hair recordRaster draws, all in
   // one set of tile lists, into an image of `extent` against `depth`. Rebuilt by the Renderer when one of
-  // them changes density or material or is destroyed; call again for another extent or set.
+  // them changes density or is destroyed (a material change keeps it: it takes the new tables from the
+  // next frame on); call again for another extent or set.
   Status setRasterTarget(VkExtent2D extent, VkImageView depth, std::span<Instance* const> instances) noexcept;
   Status recordRaster(VkCommandBuffer cmd, std::uint64_t frame, const View& view) noexcept;
   Status recordComposite(VkCommandBuffer cmd, VkExtent2D extent) noexcept;

@@ -130,7 +130,9 @@ class Tracer {
     dir = sampler.sample(rng);
     if (dir == glm::dvec3(0.0)) return glm::dvec3(0.0);
     origin = fibreExitOrigin(h, dir);
-    return fibreS(h, dir, V) * cosThetaI(dir, h.tangent) / sampler.pdf(dir);
+    const double pdf = sampler.pdf(dir);
+    if (!(pdf > 0.0)) return glm::dvec3(0.0);  // a density that underflowed: S did too (0 / 0)
+    return fibreS(h, dir, V) * cosThetaI(dir, h.tangent) / pdf;
   }
 
   // The side of the surface the viewer is on.

@@ -2,7 +2,7 @@
 // Contract: importance sampling of incoming directions at a fibre of the physical model
 // (engine/core/shading/physical_terms.h) for the path tracer, by the model's own structure, so that
 // S cos(theta_i) / pdf stays near the fibre's albedo (exactly 1 for a white fibre, whatever the
-// directions; the lobe-shaped mixture of fibre_sampling.h had heavy tails there, which made many-bounce
+// directions; for coloured hair it varies with the direction by the lobes' colours; the lobe-shaped mixture of fibre_sampling.h had heavy tails there, which made many-bounce
 // paths in light hair noisy beyond use). One sample:
 //   an offset h: one node of N_p's h quadrature (the same nodes, chosen by their weights);
 //   a lobe p (R, TT, TRT or the residual p >= 3) by A_p(h)'s mean over r, g, b;
