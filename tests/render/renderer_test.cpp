@@ -483,3 +483,30 @@ TEST_F(VulkanTest, TwoMaterialChangesBetweenFramesDrawTheSecond) {
   const auto again = frame(2);
   EXPECT_EQ(differingPixels(changed, again), 0u);
 }
+
+// An instance's frame blocks carry its physical material's mean forward albedo and the forward density
+// with dual scattering (what the hair passes on to and from the skin, frame_shadows.glsl
+// hairTransmittance), and nothing with single scattering or the paper's model.
+TEST_F(VulkanTest, FrameBlocksCarryTheHairsForwardAlbedoWithDualScatteringOnly) {
+  hp::render::OffscreenRenderer target(*ctx, 64, 48, 1);
+  hp::Renderer renderer(*ctx, rendererSettings(target));
+  hp::InstanceSettings settings;
+  settings.material = blonde();
+  auto hair = renderer.createInstance(head(300), settings);
+  hp::render::LookSettings look = hair->settings().look;
+  look.scattering = hp::render::Scattering::Dual;
+  const glm::vec4 dual = hair->frameBlock(hp::CameraMatrices{}, {64, 48}, hp::render::FrameLights{}, look).hairForward;
+  const glm::vec4 mean = hair->marschner().params().forwardMean;
+  std::cout << "blonde mean forward albedo " << mean.x << " " << mean.y << " " << mean.z << "\n";
+  EXPECT_EQ(glm::vec3(dual), glm::vec3(mean));
+  EXPECT_EQ(dual.w, hp::gpu::MARSCHNER_FORWARD_DENSITY);
+  EXPECT_GT(mean.x, mean.z);  // blonde passes more red on than blue
+  for (int c = 0; c < 3; ++c) EXPECT_TRUE(mean[c] > 0.0f && mean[c] < 1.0f) << "channel " << c;
+  look.scattering = hp::render::Scattering::Single;
+  EXPECT_EQ(hair->frameBlock(hp::CameraMatrices{}, {64, 48}, hp::render::FrameLights{}, look).hairForward, glm::vec4(0.0f));
+  settings.lutMode = hp::LutMode::Float;  // the paper's model: no multiple-scattering tables
+  auto paper = renderer.createInstance(head(300), settings);
+  look.scattering = hp::render::Scattering::Dual;
+  EXPECT_EQ(glm::vec3(paper->frameBlock(hp::CameraMatrices{}, {64, 48}, hp::render::FrameLights{}, look).hairForward),
+            glm::vec3(0.0f));
+}
