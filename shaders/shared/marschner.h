@@ -64,9 +64,11 @@ HP_CONST(float, MARSCHNER_INV_SQRT2, 0.70710678f)
 
 // Multiple scattering (physical mode; engine/core/shading/multiple_scattering.h, docs/SHADING.md "Multiple
 // scattering"): tables at MARSCHNER_SPREAD_ENTRIES sines of theta evenly spaced over [-1, 1], linearly
-// interpolated; the forward density factor d_f of Zinke et al. 2008.
+// interpolated; the forward density factor d_f of Zinke et al. 2008: 1, all the light the hair in front
+// passes on (docs/SHADING.md "Multiple scattering": 0.7, Zinke's value, left blonde 13% darker against
+// the corrected reference).
 HP_CONST(uint, MARSCHNER_SPREAD_ENTRIES, 32u)
-HP_CONST(float, MARSCHNER_FORWARD_DENSITY, 0.7f)
+HP_CONST(float, MARSCHNER_FORWARD_DENSITY, 1.0f)
 // Zinke's back-scattering density factor d_b: the local back-scattering term's share of A_b.
 HP_CONST(float, MARSCHNER_BACK_DENSITY, 0.7f)
 

@@ -65,7 +65,7 @@ TEST_F(VulkanTest, DualScatteringAddsTheReferencesHairToHairMultipleScattering) 
   EXPECT_GT(added / multiple, 0.5);
   EXPECT_LT(added / multiple, 1.3);
   EXPECT_LT(std::abs(d.luminanceRatio - 1.0), std::abs(s.luminanceRatio - 1.0) - 0.1);
-  EXPECT_GT(d.psnrDb, 23.5);  // 27.0 measured, single 23.4 (the full reference at 64 spp)
+  EXPECT_GT(d.psnrDb, 23.5);  // 26.9 measured, single 23.4 (the full reference at 64 spp)
   // Multiple scattering is redder than single scattering (each pass through a fibre filters again).
   EXPECT_LT(std::abs(d.redBlueImage / d.redBlueReference - 1.0), std::abs(s.redBlueImage / s.redBlueReference - 1.0));
 }
