@@ -1,6 +1,6 @@
 #pragma once
 // Contract: one material's lookup tables (buildLut) and their device parameter block (marschnerGpuParams:
-// the sky albedo's furnace quadrature, 30-250 ms of CPU) built on a detached POSIX thread, so a material
+// the sky albedo's furnace quadrature, 12-28 ms of CPU) built on a detached POSIX thread, so a material
 // change in the frame loop costs the application's thread no table building (HairInstance::setMaterial). The
 // build owns copies of its inputs and is shared between the thread and its owner: dropping the owner's
 // handle lets the thread finish into nothing. A POSIX thread rather than std::thread: the library never
