@@ -24,7 +24,8 @@
 // last use ComputeWrite. Each chunk has one descriptor set per frame slot (`frameSlots`: the frames the
 // caller keeps in flight), so rebindShading() can point one slot's sets at new shading resources while
 // frames recorded with the other slots still run: the caller rewrites a slot only once the last frame
-// recorded with it is complete, and names the slot in record(). List overflow is never silent: readStats() reports entries dropped by the tile
+// recorded with it is complete, and names the slot in record(). List overflow is never silent:
+// readStats() reports entries dropped by the tile
 // budget and past the list capacity (capacity derived from the segment count and the frame size).
 #include "hairpipe_volk.h"
 
@@ -84,7 +85,6 @@ class StrandRasterPass {
   // In the frame loop: the shading bindings of one source's chunks in one slot's sets rewritten, when no
   // pending frame was recorded with that slot (the strand and pass bindings stay).
   void rebindShading(std::uint32_t source, std::uint32_t slot, const ShadingWriter& shading);
-  std::uint32_t frameSlots() const { return frameSlots_; }
   // The head's depth (D32, headSamples samples); 1.0 where nothing was drawn. Must be set before record().
   void setDepth(VkImageView depth);
 

@@ -63,10 +63,9 @@ void ComputeRaster::shadingChanged(const HairInstance* instance) {
   for (std::vector<bool>& slot : stale_) slot[std::size_t(it - instances_.begin())] = true;
 }
 
-void ComputeRaster::rebindStale(std::uint64_t frame) {
+void ComputeRaster::rebindStale(std::uint64_t frame, std::uint32_t slot) {
   if (lastFrame_ == frame) return;  // a later view of the same frame: its sets are bound already
   lastFrame_ = frame;
-  const std::uint32_t slot = std::uint32_t(frame % stale_.size());
   for (std::size_t source = 0; source < instances_.size(); ++source) {
     if (!stale_[slot][source]) continue;
     pass_.rebindShading(std::uint32_t(source), slot, shadingWriter(source));
@@ -98,7 +97,8 @@ std::vector<std::uint32_t> ComputeRaster::recordFrameBlocks(VkCommandBuffer cmd,
 
 void ComputeRaster::record(VkCommandBuffer cmd, std::uint64_t frame, const View& view,
                            const render::FrameLights& lights, vk::GpuProfiler* profiler) {
-  rebindStale(frame);
+  const auto slot = std::uint32_t(frame % stale_.size());  // the frame slot: one per frame in flight
+  rebindStale(frame, slot);
   const std::vector<std::uint32_t> strandLimits = recordFrameBlocks(cmd, view, lights);
   // The graphics readers' states (recordShadows) extended to compute for the pass, then back, so the
   // next frame's barriers (which wait on vertex/fragment readers) still cover these reads.
@@ -114,7 +114,7 @@ void ComputeRaster::record(VkCommandBuffer cmd, std::uint64_t frame, const View&
                    vk::ImageUse::ComputeSampled, mapLayers);
   const render::HeadBounceMap& bounce = shadows_.bounceMap();
   bounce.transition(cmd, vk::ImageUse::FragmentSampled, vk::ImageUse::ComputeSampled);
-  pass_.record(cmd, profiler, strandLimits, lights.lights.size() <= 1, std::uint32_t(frame % stale_.size()));
+  pass_.record(cmd, profiler, strandLimits, lights.lights.size() <= 1, slot);
   bounce.transition(cmd, vk::ImageUse::ComputeSampled, vk::ImageUse::FragmentSampled);
   vk::bufferBarrier(ctx_, cmd, lightSpace, vk::BufferUse::ComputeRead, vk::BufferUse::GraphicsRead);
   vk::imageBarrier(ctx_, cmd, maps, VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::ComputeSampled,

@@ -55,8 +55,8 @@ class ComputeRaster {
   static std::vector<vk::Buffer> makeFrameBlocks(const vk::Context& ctx, std::size_t count);
   std::vector<compute::RasterSource> sources() const;
   compute::ShadingWriter shadingWriter(std::size_t source) const;
-  // The first view of a frame: the stale shading bindings of the frame's slot rewritten.
-  void rebindStale(std::uint64_t frame);
+  // The first view of `frame`: the stale shading bindings of its slot rewritten.
+  void rebindStale(std::uint64_t frame, std::uint32_t slot);
   // Each instance's frame block for the view (strands widened by its level of detail); returns the strands
   // each draws.
   std::vector<std::uint32_t> recordFrameBlocks(VkCommandBuffer cmd, const View& view,

@@ -200,7 +200,7 @@ TEST(MultipleScattering, RefusesABadTableSize) {
 // The sky a visible fibre receives with dual scattering: single scattering's (1 - ln 2) / 2 where nothing
 // goes on forward, half the sky where everything does, and in between for real hair, more for lighter hair
 // and for red than blue (blonde passes more on). The closed form against a direct quadrature of
-// (1/2) int_0^inf e^-x E_2(k x) dx for brown's k.
+// (1/2) int_0^inf e^-x E_2(k x) dx for brown's k (k = 1 - the red mean forward albedo).
 TEST(MultipleScattering, SkyVisibilityGrowsFromSingleScatteringsWithTheForwardAlbedo) {
   MultipleScatteringTables none, all;
   none.forwardAlbedo.assign(kEntries, glm::dvec3(0.0));
@@ -220,15 +220,7 @@ TEST(MultipleScattering, SkyVisibilityGrowsFromSingleScatteringsWithTheForwardAl
   }
   EXPECT_GT(vBlonde.x, vBlonde.z);
   // (1/2) int e^-x E_2(k x) dx, E_2(z) = int_1^inf e^-zt / t^2 dt, for brown's red k, by quadrature.
-  const MultipleScatteringTables t = multipleScatteringTables(brown, 32);
-  double meanForward = 0.0, weights = 0.0;  // a_f over the sky: cos^2 theta d theta = cos theta d(sin theta)
-  for (int i = 0; i < 32; ++i) {
-    const double s = std::clamp(-1.0 + 2.0 * i / 31.0, -kEdgeSine, kEdgeSine);
-    const double w = std::sqrt(1.0 - s * s) * (i == 0 || i == 31 ? 0.5 : 1.0);
-    meanForward += w * t.forwardAlbedo[i].x;
-    weights += w;
-  }
-  const double k = 1.0 - meanForward / weights;
+  const double k = 1.0 - meanForwardAlbedo(multipleScatteringTables(brown, 32)).x;
   double integral = 0.0;
   shading::gaussLegendre(0.0, 1.0, 200, [&](double u, double wu) {  // t = 1 / u: dt / t^2 = du
     shading::gaussLegendre(0.0, 60.0, 200, [&](double x, double wx) { integral += wu * wx * std::exp(-x - k * x / u); });

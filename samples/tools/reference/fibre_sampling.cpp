@@ -14,23 +14,11 @@ double gaussian(double x, double sigma) {
   return std::exp(-0.5 * x * x / (sigma * sigma)) / (sigma * std::sqrt(2.0 * kPi));
 }
 
-// Standard normal from two uniforms (Box-Muller, one output).
-double normal(double u1, double u2) {
-  return std::sqrt(-2.0 * std::log(std::max(u1, 1e-300))) * std::cos(2.0 * kPi * u2);
-}
-
 double wrapPi(double x) { return x - 2.0 * kPi * std::floor((x + kPi) / (2.0 * kPi)); }
 }  // namespace
 
 FibreSampler::FibreSampler(const glm::dvec3& tangent, const glm::dvec3& toEye, const HairMaterial& m)
-    : T_(glm::normalize(tangent)) {
-  const glm::dvec3 v = glm::normalize(toEye);
-  const double s = std::clamp(glm::dot(v, T_), -1.0, 1.0);
-  thetaR_ = std::asin(s);
-  glm::dvec3 u = v - s * T_;
-  if (glm::dot(u, u) < 1e-20) u = glm::cross(T_, std::abs(T_.x) > 0.5 ? glm::dvec3(0, 1, 0) : glm::dvec3(1, 0, 0));
-  U_ = glm::normalize(u);
-  W_ = glm::cross(T_, U_);
+    : frame_(tangent, toEye), thetaR_(std::asin(frame_.sinR)) {
   const double a = m.alphaR, b = m.betaR;
   shift_[0] = a, shift_[1] = -0.5 * a, shift_[2] = -1.5 * a;
   width_[0] = b, width_[1] = 0.5 * b, width_[2] = 2.0 * b;
@@ -41,12 +29,12 @@ glm::dvec3 FibreSampler::sample(Sampler& rng) const {
   if (pick < kUniformShare) return uniformSphere(u1, u2);
   const double lobePick = (pick - kUniformShare) / (1.0 - kUniformShare);
   const int p = lobePick < kLobeShare[0] ? 0 : lobePick < kLobeShare[0] + kLobeShare[1] ? 1 : 2;
-  const double thetaH = shift_[p] + width_[p] * normal(u1, u2);
+  const double thetaH = shift_[p] + width_[p] * standardNormal(u1, u2);
   const double thetaI = 2.0 * thetaH - thetaR_;
   if (std::abs(thetaI) > 0.5 * kPi) return glm::dvec3(0.0);  // no direction: the sample carries nothing
   const double phi = u3 < kPhiUniformShare ? 2.0 * kPi * (u4 - 0.5)
-                                           : wrapPi(kPi + kPhiWidth * normal(u4, rng.next()));
-  return std::sin(thetaI) * T_ + std::cos(thetaI) * (std::cos(phi) * U_ + std::sin(phi) * W_);
+                                           : wrapPi(kPi + kPhiWidth * standardNormal(u4, rng.next()));
+  return frame_.direction(std::sin(thetaI), std::cos(thetaI), phi);
 }
 
 double FibreSampler::longitudinalPdf(double thetaI) const {
@@ -63,9 +51,9 @@ double FibreSampler::azimuthPdf(double phi) const {
 }
 
 double FibreSampler::pdf(const glm::dvec3& dir) const {
-  const double s = std::clamp(glm::dot(dir, T_), -1.0, 1.0);
+  const double s = frame_.sinThetaOf(dir);
   const double thetaI = std::asin(s), cosI = std::sqrt(1.0 - s * s);
-  const double phi = std::atan2(glm::dot(dir, W_), glm::dot(dir, U_));
+  const double phi = frame_.phiOf(dir);
   const double lobes = cosI > 1e-12 ? longitudinalPdf(thetaI) * azimuthPdf(phi) / cosI : 0.0;
   return kUniformShare / (4.0 * kPi) + (1.0 - kUniformShare) * lobes;
 }

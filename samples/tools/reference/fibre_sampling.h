@@ -24,7 +24,7 @@ class FibreSampler {
  private:
   double longitudinalPdf(double thetaI) const;  // density of theta_i from the lobe mixture
   double azimuthPdf(double phi) const;          // density of phi in [-pi, pi)
-  glm::dvec3 T_, U_, W_;  // tangent; U: the eye's azimuth (phi = 0); W = T x U
+  FibreFrame frame_;
   double thetaR_ = 0.0;
   double shift_[3], width_[3];
 };

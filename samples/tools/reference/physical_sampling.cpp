@@ -10,10 +10,6 @@ namespace hp::reference {
 namespace {
 constexpr int kResidual = 3;
 
-double normal(double u1, double u2) {  // Box-Muller, one output
-  return std::sqrt(-2.0 * std::log(std::max(u1, 1e-300))) * std::cos(2.0 * kPi * u2);
-}
-
 int pick(const double* probabilities, int count, double u) {
   for (int p = 0; p < count - 1; ++p) {
     if (u < probabilities[p]) return p;
@@ -25,14 +21,8 @@ int pick(const double* probabilities, int count, double u) {
 
 PhysicalFibreSampler::PhysicalFibreSampler(const glm::dvec3& tangent, const glm::dvec3& toEye,
                                            const HairMaterial& material)
-    : T_(glm::normalize(tangent)), material_(material) {
-  const glm::dvec3 v = glm::normalize(toEye);
-  sinR_ = std::clamp(glm::dot(v, T_), -1.0, 1.0);
-  glm::dvec3 u = v - sinR_ * T_;
-  if (glm::dot(u, u) < 1e-20) u = glm::cross(T_, std::abs(T_.x) > 0.5 ? glm::dvec3(0, 1, 0) : glm::dvec3(1, 0, 0));
-  U_ = glm::normalize(u);
-  W_ = glm::cross(T_, U_);
-  const shading::PhysicalFibre fibre = shading::physicalFibre(sinR_, material);
+    : frame_(tangent, toEye), material_(material) {
+  const shading::PhysicalFibre fibre = shading::physicalFibre(frame_.sinR, material);
   double running = 0.0;
   shading::gaussLegendre(-0.5 * kPi, 0.5 * kPi, shading::kPhysicalAzimuthPanels, [&](double g, double w) {
     const shading::PhysicalAttenuation a = shading::physicalAttenuation(std::sin(g), fibre);
@@ -51,8 +41,8 @@ PhysicalFibreSampler::PhysicalFibreSampler(const glm::dvec3& tangent, const glm:
 double PhysicalFibreSampler::sampleSinThetaI(int p, double u1, double u2) const {
   const int q = std::min(p, 2);  // the residual's longitudinal lobe is TRT's
   const double v = shading::physicalVariance(q, material_), s = shading::physicalShift(q, material_);
-  const double cosR = std::sqrt(std::max(0.0, 1.0 - sinR_ * sinR_));
-  const double sinRp = sinR_ * std::cos(s) - cosR * std::sin(s), cosRp = std::abs(cosR * std::cos(s) + sinR_ * std::sin(s));
+  const double sinR = frame_.sinR, cosR = std::sqrt(std::max(0.0, 1.0 - sinR * sinR));
+  const double sinRp = sinR * std::cos(s) - cosR * std::sin(s), cosRp = std::abs(cosR * std::cos(s) + sinR * std::sin(s));
   const double cosTheta = std::clamp(1.0 + v * std::log(std::max(u1, 1e-300) + (1.0 - u1) * std::exp(-2.0 / v)), -1.0, 1.0);
   const double sinTheta = std::sqrt(std::max(0.0, 1.0 - cosTheta * cosTheta));
   return std::clamp(-cosTheta * sinRp + sinTheta * std::cos(2.0 * kPi * u2) * cosRp, -1.0, 1.0);
@@ -67,8 +57,8 @@ glm::dvec3 PhysicalFibreSampler::sample(Sampler& rng) const {
   const double sinI = sampleSinThetaI(p, u1, u2), cosI = std::sqrt(std::max(0.0, 1.0 - sinI * sinI));
   const double u3 = rng.next(), u4 = rng.next();
   const double phi = p == kResidual ? 2.0 * kPi * u3
-                                    : shading::physicalPhi(p, n.gammaO, n.gammaT) + material_.betaN * normal(u3, u4);
-  return sinI * T_ + cosI * (std::cos(phi) * U_ + std::sin(phi) * W_);
+                                    : shading::physicalPhi(p, n.gammaO, n.gammaT) + material_.betaN * standardNormal(u3, u4);
+  return frame_.direction(sinI, cosI, phi);
 }
 
 double PhysicalFibreSampler::azimuthDensity(int p, double phi) const {
@@ -84,11 +74,11 @@ double PhysicalFibreSampler::azimuthDensity(int p, double phi) const {
 }
 
 double PhysicalFibreSampler::pdf(const glm::dvec3& dir) const {
-  const double sinI = std::clamp(glm::dot(dir, T_), -1.0, 1.0);
-  const double phi = std::atan2(glm::dot(dir, W_), glm::dot(dir, U_));
+  const double sinI = frame_.sinThetaOf(dir);
+  const double phi = frame_.phiOf(dir);
   double density = 0.0;
   for (int p = 0; p < 4; ++p)
-    density += shading::physicalM(std::min(p, 2), sinI, sinR_, material_) * azimuthDensity(p, phi);
+    density += shading::physicalM(std::min(p, 2), sinI, frame_.sinR, material_) * azimuthDensity(p, phi);
   return density;
 }
 }  // namespace hp::reference

@@ -34,8 +34,7 @@ class PhysicalFibreSampler {
   double sampleSinThetaI(int p, double u1, double u2) const;
   double azimuthDensity(int p, double phi) const;  // Ntilde_p(phi)
 
-  glm::dvec3 T_, U_, W_;  // tangent; U: the eye's azimuth (phi = 0); W = T x U
-  double sinR_ = 0.0;
+  FibreFrame frame_;
   HairMaterial material_;
   std::vector<Node> nodes_;
   std::vector<double> weights_, cumulative_;  // node weights (sum 1) and their running sums
