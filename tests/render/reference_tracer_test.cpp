@@ -342,7 +342,8 @@ TEST(ReferenceTracer, OneFibreUnderTheSunReturnsItsScatteringFunction) {
 // so every pixel returns 1 up to noise, however many bounces a path takes between fibres (far more are
 // allowed than paths need; roulette ends them). It holds the fibre sampler's density and the roulette to
 // account over many bounces (the lobe-mixture sampler read 0.56 and 2.05 at 4k and 65k paths); every white
-// bounce weighs 1 whatever the geometry, so where rays go is the slab test's to check.
+// bounce weighs 1 whatever the geometry, so where rays go is the slab test's to check. Seeds 3-11 read
+// 0.987-1.011 (this one, seed 3, the farthest); the 2% bound is past that spread.
 TEST(ReferenceTracer, WhiteFibresInADenseTuftUnderAUniformSkyReturnTheSky) {
   ExportedFrame f = fibreFrame();
   f.strands = {};
