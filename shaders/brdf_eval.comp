@@ -2,7 +2,6 @@
 // Evaluates the Marschner S for rows of (L, V, T): the GPU side of the direct/paper/float accuracy
 // checks. Interface: shaders/shared/brdf_eval.h.
 #include "shared/brdf_eval.h"
-#include "marschner.glsl"
 #include "common.glsl"
 
 layout(local_size_x = BRDF_EVAL_WORKGROUP_SIZE) in;
@@ -10,6 +9,7 @@ layout(local_size_x = BRDF_EVAL_WORKGROUP_SIZE) in;
 layout(std430, binding = BRDF_EVAL_BINDING_INPUT) readonly buffer Inputs { BrdfEvalInput rows[]; };
 layout(std430, binding = BRDF_EVAL_BINDING_OUTPUT) writeonly buffer Outputs { vec4 results[]; };
 layout(std140, binding = BRDF_EVAL_BINDING_PARAMS) uniform Params { MarschnerParams marschner; };
+#include "marschner.glsl"  // after `marschner`: its table functions read the block in place
 layout(binding = BRDF_EVAL_BINDING_M) uniform sampler2D mTex;
 layout(binding = BRDF_EVAL_BINDING_N0) uniform sampler2D n0Tex;
 layout(binding = BRDF_EVAL_BINDING_N1) uniform sampler2D n1Tex;

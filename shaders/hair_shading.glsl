@@ -3,15 +3,14 @@
 // Per light of the frame: S(L, V, T) cos(theta_i) x light x transmittance [+ the light the hair in front
 // scattered forward and the light the hair around scatters back, dual scattering]; then sky albedo x (ambient
 // x the sky's visibility (RENDER_HAIR_SKY_VISIBILITY, or with dual scattering MarschnerParams.skyVisibility)
-// + the skin's bounce of the slot-0 light, head_bounce.glsl), all times the
-// strand's lightness variation. The transmittance is the hair's (opacity maps of the light's shadow slot)
+// + the skin's bounce of the slot-0 light, which the caller passes in: strand_bounce.comp gathers it along the
+// strands once a frame, bounce_samples.glsl interpolates it), all times the strand's lightness variation. The transmittance is the hair's (opacity maps of the light's shadow slot)
 // times the heads' (their depth map); a light without a slot is unshadowed.
 // The includer declares `frame` (RenderFrame), `marschner` (MarschnerParams), the LUT samplers lutM, lutN0,
-// lutN1, and what frame_shadows.glsl and head_bounce.glsl need, before including this file.
+// lutN1, and what frame_shadows.glsl needs, before including this file.
 #ifndef HP_HAIR_SHADING_GLSL
 #define HP_HAIR_SHADING_GLSL
 #include "frame_shadows.glsl"
-#include "head_bounce.glsl"
 
 // One light's direct term at a fibre point; `shadow` is what stands between them.
 vec3 hairLightRadiance(FrameLight light, LightSample ls, LightShadow shadow, vec3 V, vec3 T) {
@@ -27,9 +26,9 @@ vec3 hairLightRadiance(FrameLight light, LightSample ls, LightShadow shadow, vec
   // E[a_f^N; N >= 1] = exp(-tau (1 - a_f)) - exp(-tau). The hair around the fibre scatters back A_b of
   // both the unscattered light and that spread light (local back-scattering).
   if (frame.options.z == RENDER_SCATTERING_DUAL && marschner.control.x == MARSCHNER_MODE_LUT_PHYSICAL) {
-    vec3 af = marschnerForwardAlbedo(sinThetaI, marschner);
+    vec3 af = marschnerForwardAlbedo(sinThetaI);
     vec3 spread = MARSCHNER_FORWARD_DENSITY * max(exp(-tau * (1.0 - af)) - exp(-tau), vec3(0.0));
-    direct += marschnerPhysicalMultipleResponse(L, V, T, exp(-tau), spread, lutM, marschner) * incident;
+    direct += marschnerPhysicalMultipleResponse(L, V, T, exp(-tau), spread, lutM) * incident;
   }
   return direct;
 }
@@ -40,24 +39,22 @@ vec3 hairLightRadiance(FrameLight light, LightSample ls, LightShadow shadow, vec
 // The graphics strand pass keeps the default.
 layout(constant_id = 0) const uint HAIR_LIGHT_LOOP = 1u;
 
-// Light i's direct term into `direct`, and the skin's bounce into `bounce` when light i is the bounce's.
-void addHairLight(uint i, vec3 world, vec3 V, vec3 T, inout vec3 direct, inout vec3 bounce) {
+// Light i's direct term.
+vec3 hairLight(uint i, vec3 world, vec3 V, vec3 T) {
   FrameLight light = frame.lights[i];
   LightSample ls = sampleLight(light, world);
-  LightShadow shadow = frameLightShadow(light, world, ls.L, false);
-  direct += hairLightRadiance(light, ls, shadow, V, T);
-  if (i == frame.lightCount.y) bounce = headBounceAt(world, ls.L, shadow.alpha);
+  return hairLightRadiance(light, ls, frameLightShadow(light, world, ls.L, false), V, T);
 }
 
-vec3 hairRadiance(vec3 world, vec3 tangent, float colorScale) {
+// bounce: the mean radiance the skin sends to this point (head_bounce.glsl; 0 without the skin's bounce).
+vec3 hairRadiance(vec3 world, vec3 tangent, float colorScale, vec3 bounce) {
   vec3 T = normalize(tangent);
   vec3 V = normalize(frame.cameraPosition.xyz - world);
   vec3 direct = vec3(0.0);
-  vec3 bounce = vec3(0.0);
   if (HAIR_LIGHT_LOOP != 0u) {
-    for (uint i = 0u; i < frame.lightCount.x; ++i) addHairLight(i, world, V, T, direct, bounce);
+    for (uint i = 0u; i < frame.lightCount.x; ++i) direct += hairLight(i, world, V, T);
   } else if (frame.lightCount.x > 0u) {
-    addHairLight(0u, world, V, T, direct, bounce);
+    direct = hairLight(0u, world, V, T);
   }
   // The ambient is a uniform white sky: an unoccluded fibre returns the model's sky albedo times its
   // radiance, a fibre of a head of hair the mean fraction of it that reaches it (shared/render.h); with

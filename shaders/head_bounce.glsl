@@ -1,6 +1,6 @@
 // The light the skin reflects onto a fibre (one bounce, sun -> skin -> fibre; docs/SHADING.md "Skin bounce"),
-// GLSL only, for the hair shading of both rasters (raster_shade.comp per vertex, strands.frag per fragment;
-// entry point headBounceAt). The light is the frame's light in shadow slot 0 (RenderFrame::lightCount.y);
+// GLSL only, gathered at a few points along every strand by strand_bounce.comp (entry point headBounceAt);
+// both rasters' hair shading interpolates between those points (bounce_samples.glsl). The light is the frame's light in shadow slot 0 (RenderFrame::lightCount.y);
 // the others add no skin bounce. The includer declares what frame_shadows.glsl needs and the bounce map's
 // samplers bounceFlux and bouncePosition (head_bounce.frag writes them).
 // Each texel of the map is a Lambertian patch of flux Phi; a point p receives from it the radiance

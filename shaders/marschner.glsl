@@ -7,6 +7,8 @@
 //   vec3 marschnerEvaluate(mode, L, V, T, mTex, n0Tex, n1Tex, p)                 switch on MARSCHNER_MODE_*
 // Samplers: linear min/mag filter, CLAMP_TO_EDGE, normalised coordinates, one mip level. Sampled with
 // textureLod(.., 0) so the same code is valid in compute shaders.
+// The includer declares its MarschnerParams block as `marschner` before including this file: the
+// multiple-scattering functions (physical mode) index its tables in place.
 // The LUT functions mirror engine/core/shading/lut_sampler.cpp (CPU emulation) exactly; both compute their
 // coordinates with the shared functions of shaders/shared/marschner.h.
 //
@@ -246,7 +248,10 @@ vec3 marschnerLutPhysical(vec3 L, vec3 V, vec3 T, sampler2D mTex, sampler2D n0Te
 }
 
 // Multiple scattering (physical mode; docs/SHADING.md "Multiple scattering"). The spread tables hold
-// MARSCHNER_SPREAD_ENTRIES values over sin theta in [-1, 1]: entry x and x + 1, mixed by y.
+// MARSCHNER_SPREAD_ENTRIES values over sin theta in [-1, 1]: entry x and x + 1, mixed by y. The functions
+// that index them read the includer's block `marschner` in place: given a MarschnerParams by value, a
+// compiler may copy the whole struct (2 KiB of tables) per call to index it, which made lavapipe's shade
+// pass 2.7x slower (docs/PERFORMANCE.md "The shade pass").
 vec2 marschnerSpreadCoord(float sinTheta) {
   float x = clamp(sinTheta * 0.5 + 0.5, 0.0, 1.0) * float(MARSCHNER_SPREAD_ENTRIES - 1u);
   float i = min(floor(x), float(MARSCHNER_SPREAD_ENTRIES - 2u));
@@ -254,10 +259,10 @@ vec2 marschnerSpreadCoord(float sinTheta) {
 }
 
 // The fraction a_f of light arriving at sin theta that one fibre scatters on forward (|phi| > pi/2).
-vec3 marschnerForwardAlbedo(float sinTheta, MarschnerParams prm) {
+vec3 marschnerForwardAlbedo(float sinTheta) {
   vec2 c = marschnerSpreadCoord(sinTheta);
   uint i = uint(c.x);
-  return mix(prm.forwardAlbedo[i].rgb, prm.forwardAlbedo[i + 1u].rgb, c.y);
+  return mix(marschner.forwardAlbedo[i].rgb, marschner.forwardAlbedo[i + 1u].rgb, c.y);
 }
 
 // Multiple scattering's response (physical mode; the counterpart of S cos theta_i), per unit light that
@@ -267,18 +272,17 @@ vec3 marschnerForwardAlbedo(float sinTheta, MarschnerParams prm) {
 //  - the light the hair around scatters back (A_b of the light's theta): d_b A_b M_back(theta_i, theta_r)
 //    x (1 + cos phi) / 2 pi for the unscattered light (the near half of the azimuths, smoothly; unit
 //    area) and 1 / 2 pi for the spread light. M_back is the M texture's fourth channel.
-vec3 marschnerPhysicalMultipleResponse(vec3 L, vec3 V, vec3 T, float lit, vec3 spread, sampler2D mTex,
-                                       MarschnerParams prm) {
+vec3 marschnerPhysicalMultipleResponse(vec3 L, vec3 V, vec3 T, float lit, vec3 spread, sampler2D mTex) {
   vec4 ang = marschnerAngles(L, V, T);
-  vec4 m = textureLod(mTex, marschnerPhysicalCoords(ang).xy, 0.0) * prm.mScale;
+  vec4 m = textureLod(mTex, marschnerPhysicalCoords(ang).xy, 0.0) * marschner.mScale;
   vec2 r = marschnerSpreadCoord(ang.y);
   uint j = uint(r.x);
-  vec4 rtt = mix(prm.meanRTT[j], prm.meanRTT[j + 1u], r.y);
-  vec3 trt = mix(prm.meanTRT[j].rgb, prm.meanTRT[j + 1u].rgb, r.y);
+  vec4 rtt = mix(marschner.meanRTT[j], marschner.meanRTT[j + 1u], r.y);
+  vec3 trt = mix(marschner.meanTRT[j].rgb, marschner.meanTRT[j + 1u].rgb, r.y);
   vec3 forward = (m.x * rtt.x + m.y * rtt.yzw + m.z * trt) * spread;
   vec2 c = marschnerSpreadCoord(ang.x);
   uint i = uint(c.x);
-  vec3 A = mix(prm.backScatter[i].rgb, prm.backScatter[i + 1u].rgb, c.y);
+  vec3 A = mix(marschner.backScatter[i].rgb, marschner.backScatter[i + 1u].rgb, c.y);
   vec3 back = MARSCHNER_BACK_DENSITY * A * m.w * (lit * (1.0 + ang.z) + spread) / MARSCHNER_TWO_PI;
   return forward + back;
 }

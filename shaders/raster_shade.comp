@@ -3,26 +3,25 @@
 // radiance by hairRadiance (shaders/hair_shading.glsl, the graphics path's entry point) with the
 // opacity-map lookups at the vertex (strand-space shading). Vertices of segments that touch no tile
 // (off-screen, behind the head's depth) are never shaded: the fine raster reads only listed segments' ends.
-// The light the skin reflects onto the vertex comes from the head bounce map (head_bounce.glsl).
+// The light the skin reflects onto the vertex is interpolated from the strand's bounce samples
+// (bounce_samples.glsl; strand_bounce.comp gathered them from the head bounce map).
 #include "shared/render.h"
 #include "shared/marschner.h"
 #include "shared/strands.h"
 #include "shared/raster.h"
 #include "common.glsl"
-#include "marschner.glsl"
 
 layout(local_size_x = RASTER_WORKGROUP_SIZE) in;
 // Storage blocks, not uniform blocks: see raster_project.comp.
 layout(std140, binding = RENDER_BINDING_FRAME) readonly buffer Frame { RenderFrame frame; };
 layout(std140, binding = RENDER_BINDING_MARSCHNER) readonly buffer Marschner { MarschnerParams marschner; };
+#include "marschner.glsl"  // after `marschner`: its table functions read the block in place
 layout(std430, binding = RASTER_BINDING_PARAMS) readonly buffer Params { RasterParams params; };
 layout(binding = RENDER_BINDING_LUT_M) uniform sampler2D lutM;
 layout(binding = RENDER_BINDING_LUT_N0) uniform sampler2D lutN0;
 layout(binding = RENDER_BINDING_LUT_N1) uniform sampler2D lutN1;
 layout(binding = RENDER_BINDING_OPACITY) uniform sampler2DArray opacityMaps;
 layout(binding = RENDER_BINDING_HEAD_SHADOW) uniform sampler2DArrayShadow headShadowMap;
-layout(binding = RENDER_BINDING_BOUNCE_FLUX) uniform sampler2D bounceFlux;
-layout(binding = RENDER_BINDING_BOUNCE_POSITION) uniform sampler2D bouncePosition;
 layout(std430, binding = RENDER_BINDING_LIGHT) readonly buffer Light { LightSpace lightSpaces[]; };
 layout(std430, binding = RENDER_BINDING_POSITIONS) readonly buffer Positions { vec4 positions[]; };
 layout(std430, binding = RENDER_BINDING_TANGENTS) readonly buffer Tangents { vec4 tangents[]; };
@@ -30,7 +29,9 @@ layout(std430, binding = RENDER_BINDING_ATTRIBUTES) readonly buffer Attributes {
 layout(std430, binding = RASTER_BINDING_COLORS) writeonly buffer Colors { uvec2 colors[]; };
 layout(std430, binding = RASTER_BINDING_SHADE_LIST) readonly buffer ShadeList { uint shadeList[]; };
 layout(std430, binding = RASTER_BINDING_SHADE_ARGS) readonly buffer ShadeArgs { uvec4 shadeArgs[]; };
+layout(std430, binding = RENDER_BINDING_BOUNCE_SAMPLES) readonly buffer BounceSamples { uvec2 bounceSamples[]; };
 #include "hair_shading.glsl"
+#include "bounce_samples.glsl"
 
 void main() {
   uint n = hpThreadId(RASTER_WORKGROUP_SIZE);
@@ -38,6 +39,8 @@ void main() {
   uint global = shadeList[params.firstVertex + n];
   uint i = global - params.firstVertex;
   vec4 pos = positions[i];
-  vec3 radiance = hairRadiance(pos.xyz, tangents[i].xyz, attributes[i / params.verticesPerStrand].colorScale);
+  uint q = params.verticesPerStrand, strand = i / q;
+  vec3 bounce = bounceAlongStrand(strand, i - strand * q, q);
+  vec3 radiance = hairRadiance(pos.xyz, tangents[i].xyz, attributes[strand].colorScale, bounce);
   colors[global] = uvec2(packHalf2x16(radiance.rg), packHalf2x16(vec2(radiance.b, 0.0)));
 }

@@ -1,22 +1,20 @@
 #version 460
 // Hair shading per fragment: hairRadiance (hair_shading.glsl, the same entry point as the compute
 // rasterizer's): every light of the frame with its shadows looked up at the fragment (frame_shadows.glsl),
-// the ambient and the skin's bounce. The ribbon's pixel coverage becomes a sample mask with MSAA (dithered
+// the ambient and the skin's bounce (interpolated from the vertex shader's). The ribbon's pixel coverage becomes a sample mask with MSAA (dithered
 // per strand and pixel, see coverageMask), alpha without.
 #include "shared/render.h"
 #include "shared/marschner.h"
-#include "marschner.glsl"
 #include "shared/strands.h"
 
 layout(std140, binding = RENDER_BINDING_FRAME) uniform Frame { RenderFrame frame; };
 layout(std140, binding = RENDER_BINDING_MARSCHNER) uniform Marschner { MarschnerParams marschner; };
+#include "marschner.glsl"  // after `marschner`: its table functions read the block in place
 layout(binding = RENDER_BINDING_LUT_M) uniform sampler2D lutM;
 layout(binding = RENDER_BINDING_LUT_N0) uniform sampler2D lutN0;
 layout(binding = RENDER_BINDING_LUT_N1) uniform sampler2D lutN1;
 layout(binding = RENDER_BINDING_OPACITY) uniform sampler2DArray opacityMaps;
 layout(binding = RENDER_BINDING_HEAD_SHADOW) uniform sampler2DArrayShadow headShadowMap;
-layout(binding = RENDER_BINDING_BOUNCE_FLUX) uniform sampler2D bounceFlux;
-layout(binding = RENDER_BINDING_BOUNCE_POSITION) uniform sampler2D bouncePosition;
 layout(std430, binding = RENDER_BINDING_LIGHT) readonly buffer Light { LightSpace lightSpaces[]; };
 
 layout(location = 0) in vec3 inWorld;
@@ -24,6 +22,7 @@ layout(location = 1) in vec3 inTangent;
 layout(location = 2) in float inCoverage;
 layout(location = 3) in float inColorScale;
 layout(location = 4) flat in uint inStrand;
+layout(location = 5) in vec3 inBounce;
 layout(push_constant) uniform Push { StrandDrawPush push; };
 layout(location = 0) out vec4 outColor;
 #include "hair_shading.glsl"
@@ -42,7 +41,7 @@ uint coverageMask(float coverage, uint samples) {
 }
 
 void main() {
-  vec3 radiance = hairRadiance(inWorld, inTangent, inColorScale);
+  vec3 radiance = hairRadiance(inWorld, inTangent, inColorScale, inBounce);
   if (push.samples > 1u) {
     uint mask = coverageMask(inCoverage, push.samples);
     if (mask == 0u) discard;

@@ -3,7 +3,8 @@
 // spans vertices k and k+1; the ribbon thins from the root to the tip. A ribbon narrower than a
 // pixel is widened to one pixel and its coverage is passed on (the fragment shader turns it into a
 // dithered sample mask with MSAA, alpha without), so thin
-// hair stays smooth instead of breaking into dashes. The fragment shader looks the shadows up per light.
+// hair stays smooth instead of breaking into dashes. The fragment shader looks the shadows up per light;
+// the skin's bounce comes per vertex from the strand's samples (bounce_samples.glsl).
 #include "shared/render.h"
 #include "shared/strands.h"
 
@@ -11,13 +12,16 @@ layout(std140, binding = RENDER_BINDING_FRAME) uniform Frame { RenderFrame frame
 layout(std430, binding = RENDER_BINDING_POSITIONS) readonly buffer Positions { vec4 positions[]; };
 layout(std430, binding = RENDER_BINDING_TANGENTS) readonly buffer Tangents { vec4 tangents[]; };
 layout(std430, binding = RENDER_BINDING_ATTRIBUTES) readonly buffer Attributes { StrandAttributes attributes[]; };
+layout(std430, binding = RENDER_BINDING_BOUNCE_SAMPLES) readonly buffer BounceSamples { uvec2 bounceSamples[]; };
 layout(push_constant) uniform Push { StrandDrawPush push; };
+#include "bounce_samples.glsl"
 
 layout(location = 0) out vec3 outWorld;
 layout(location = 1) out vec3 outTangent;
 layout(location = 2) out float outCoverage;
 layout(location = 3) out float outColorScale;
 layout(location = 4) flat out uint outStrand;  // global strand index: keys the coverage dither
+layout(location = 5) out vec3 outBounce;       // the skin's bounce at this end of the segment
 
 void main() {
   uint q = frame.options.x;
@@ -51,5 +55,6 @@ void main() {
   outCoverage = coverage;
   outColorScale = attr.colorScale;
   outStrand = push.firstStrand + strand;
+  outBounce = bounceAlongStrand(strand, v - strand * q, q);
   gl_Position = frame.proj * frame.view * vec4(p, 1.0);
 }

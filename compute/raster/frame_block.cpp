@@ -60,7 +60,7 @@ void setLights(gpu::RenderFrame& f, const FrameLights& lights, bool skinBounce) 
 
 gpu::RenderFrame makeRenderFrame(const CameraMatrices& camera, VkExtent2D extent, const FrameLights& lights,
                                  const HairMaterial& material, const LookSettings& look,
-                                 std::uint32_t verticesPerStrand, const OpacitySettings& opacity,
+                                 const compute::StrandLayout& strands, const OpacitySettings& opacity,
                                  const glm::vec3& forwardAlbedo) {
   gpu::RenderFrame f{};
   f.view = camera.view;
@@ -68,6 +68,7 @@ gpu::RenderFrame makeRenderFrame(const CameraMatrices& camera, VkExtent2D extent
   const float pixelAtUnitDepth = 2.0f * std::tan(0.5f * camera.fovY) / float(extent.height);
   f.cameraPosition = glm::vec4(camera.position, pixelAtUnitDepth);
   setLights(f, lights, look.skinBounce);
+  f.headBounce.z = float(strands.bounceSamples);
   f.previousViewProj = camera.proj * camera.view;  // no motion until setViewMotion says otherwise
   // The colour of one straight pass through the fibre (absorptionFromColor's inverse) as ambient albedo.
   const glm::dvec3 albedo = glm::exp(-2.0 * material.absorption);
@@ -76,7 +77,7 @@ gpu::RenderFrame makeRenderFrame(const CameraMatrices& camera, VkExtent2D extent
   if (look.scattering == Scattering::Dual)
     f.hairForward = glm::vec4(forwardAlbedo, gpu::MARSCHNER_FORWARD_DENSITY);
   f.strand = glm::vec4(look.strandWidth, look.tipWidthFraction, opacity.k, lookupBias(opacity));
-  f.options = glm::uvec4(verticesPerStrand, opacity.enabled ? 1u : 0u,
+  f.options = glm::uvec4(strands.verticesPerStrand, opacity.enabled ? 1u : 0u,
                          look.scattering == Scattering::Dual ? gpu::RENDER_SCATTERING_DUAL : gpu::RENDER_SCATTERING_SINGLE,
                          opacity.deep ? 1u : 0u);
   return f;

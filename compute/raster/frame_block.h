@@ -6,6 +6,7 @@
 #include "compute/raster/camera.h"
 #include "compute/shadows/frame_lights.h"
 #include "compute/shadows/opacity_settings.h"
+#include "compute/strands/strand_buffers.h"
 #include "hairpipe/settings.h"
 #include "hairpipe_volk.h"
 
@@ -40,10 +41,11 @@ struct LookSettings {
 
 // The skin's bounce (headBounce) is on where the look asks for it and slot 0 has a head map (the bounce map
 // is drawn from slot 0's light, framed like its head map). forwardAlbedo: the material's mean forward
-// albedo (MarschnerParams.forwardMean; 0 for the paper's model), taken with dual scattering.
+// albedo (MarschnerParams.forwardMean; 0 for the paper's model), taken with dual scattering. `strands`: the
+// vertices and bounce samples per strand of the instance's buffers.
 gpu::RenderFrame makeRenderFrame(const CameraMatrices& camera, VkExtent2D extent, const FrameLights& lights,
                                  const HairMaterial& material, const LookSettings& look,
-                                 std::uint32_t verticesPerStrand, const OpacitySettings& opacity,
+                                 const compute::StrandLayout& strands, const OpacitySettings& opacity,
                                  const glm::vec3& forwardAlbedo = glm::vec3(0.0f));
 // A view's subpixel jitter (pixels, x right, y down) moved into `frame.proj`, and the previous frame's
 // unjittered proj * view for motion vectors (none: makeRenderFrame's, this frame's own: no camera motion).

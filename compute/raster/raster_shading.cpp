@@ -11,7 +11,5 @@ void writeRasterShading(const vk::DescriptorSet& set, VkBuffer frameBlock, const
   set.writeSampledImage(gpu::RENDER_BINDING_OPACITY, shadows.opacityView, shadows.sampler);
   set.writeStorageBuffer(gpu::RENDER_BINDING_LIGHT, shadows.lightSpace);
   set.writeSampledImage(gpu::RENDER_BINDING_HEAD_SHADOW, shadows.headShadowView, shadows.headShadowSampler);
-  set.writeSampledImage(gpu::RENDER_BINDING_BOUNCE_FLUX, shadows.bounceFluxView, shadows.bounceSampler);
-  set.writeSampledImage(gpu::RENDER_BINDING_BOUNCE_POSITION, shadows.bouncePositionView, shadows.bounceSampler);
 }
 }  // namespace hp::compute

@@ -16,11 +16,10 @@ const vk::Binding kBindings[] = {
     {gpu::RENDER_BINDING_OPACITY, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kFragment},
     {gpu::RENDER_BINDING_HEAD_SHADOW, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kFragment},
     {gpu::RENDER_BINDING_LIGHT, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kFragment},
-    {gpu::RENDER_BINDING_BOUNCE_FLUX, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kFragment},
-    {gpu::RENDER_BINDING_BOUNCE_POSITION, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kFragment},
     {gpu::RENDER_BINDING_POSITIONS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kVertex},
     {gpu::RENDER_BINDING_TANGENTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kVertex},
     {gpu::RENDER_BINDING_ATTRIBUTES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kVertex},
+    {gpu::RENDER_BINDING_BOUNCE_SAMPLES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kVertex},
 };
 
 std::shared_ptr<const vk::GraphicsPipeline> makePipeline(const vk::Context& ctx, vk::PipelineLibrary* library,
@@ -60,8 +59,7 @@ StrandPass::StrandPass(const vk::Context& ctx, const compute::StrandBuffers& str
     set.writeSampledImage(gpu::RENDER_BINDING_OPACITY, shadows.opacityView, shadows.sampler);
     set.writeSampledImage(gpu::RENDER_BINDING_HEAD_SHADOW, shadows.headShadowView, shadows.headShadowSampler);
     set.writeStorageBuffer(gpu::RENDER_BINDING_LIGHT, shadows.lightSpace);
-    set.writeSampledImage(gpu::RENDER_BINDING_BOUNCE_FLUX, shadows.bounceFluxView, shadows.bounceSampler);
-    set.writeSampledImage(gpu::RENDER_BINDING_BOUNCE_POSITION, shadows.bouncePositionView, shadows.bounceSampler);
+    set.writeStorageBuffer(gpu::RENDER_BINDING_BOUNCE_SAMPLES, chunk.bounce.handle());
     sets_.push_back(std::move(set));
   }
   ribbons_ = makePipeline(ctx, library, sets_.front().layout(), formats, false);

@@ -22,7 +22,9 @@ constexpr VkDescriptorType kStorage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
 constexpr VkDescriptorType kSampled = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
 // The raster's own bindings follow the shading bindings of shaders/shared/render.h in one set.
 static_assert(gpu::RASTER_BINDING_SCREEN > gpu::RENDER_BINDING_HEAD_SHADOW, "raster bindings overlap render.h's");
-static_assert(gpu::RASTER_BINDING_SHADE_ARGS < gpu::RENDER_BINDING_BOUNCE_FLUX, "raster bindings overlap render.h's");
+static_assert(gpu::RASTER_BINDING_SHADE_ARGS < gpu::RENDER_BINDING_BOUNCE_FLUX &&
+                  gpu::RASTER_BINDING_MOTION_OUTPUT < gpu::RENDER_BINDING_BOUNCE_SAMPLES,
+              "raster bindings overlap render.h's");
 // No uniform buffers and no push constants: lavapipe would recompile each step per dispatch
 // (docs/DESIGN.md, driver notes); the frame block, the Marschner block and the per-chunk parameters are
 // read-only storage buffers.
@@ -55,8 +57,7 @@ const vk::Binding kBindings[] = {
     {gpu::RASTER_BINDING_SHADE_FLAGS, kStorage, kCompute},
     {gpu::RASTER_BINDING_SHADE_LIST, kStorage, kCompute},
     {gpu::RASTER_BINDING_SHADE_ARGS, kStorage, kCompute},
-    {gpu::RENDER_BINDING_BOUNCE_FLUX, kSampled, kCompute},
-    {gpu::RENDER_BINDING_BOUNCE_POSITION, kSampled, kCompute},
+    {gpu::RENDER_BINDING_BOUNCE_SAMPLES, kStorage, kCompute},
     {gpu::RASTER_BINDING_PREVIOUS, kStorage, kCompute},
     {gpu::RASTER_BINDING_MOTION, kStorage, kCompute},
     {gpu::RASTER_BINDING_MOTION_OUTPUT, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, kCompute},
@@ -253,6 +254,7 @@ void StrandRasterPass::writeChunkSet(const vk::DescriptorSet& set, const Shading
   set.writeStorageBuffer(gpu::RENDER_BINDING_POSITIONS, c.positions.handle());
   set.writeStorageBuffer(gpu::RENDER_BINDING_TANGENTS, c.tangents.handle());
   set.writeStorageBuffer(gpu::RENDER_BINDING_ATTRIBUTES, c.attributes.handle());
+  set.writeStorageBuffer(gpu::RENDER_BINDING_BOUNCE_SAMPLES, c.bounce.handle());
   // Without previous positions the current ones stand in (motion from the camera only).
   set.writeStorageBuffer(gpu::RASTER_BINDING_PREVIOUS, (c.previous ? c.previous : c.positions).handle());
   set.writeStorageBuffer(gpu::RASTER_BINDING_MOTION, motion_.handle());

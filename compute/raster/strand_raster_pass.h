@@ -57,9 +57,9 @@ struct RasterStats {
 };
 
 // Writes the shading bindings of shaders/shared/render.h (frame block and Marschner parameters as STORAGE
-// buffers, the LUTs, opacity maps, LightSpace, the head's depth shadow map) and the head bounce map's two
-// images (RENDER_BINDING_BOUNCE_*, compute/shadows/head_bounce_map.h) into a raster descriptor set: what
-// hairRadiance and the skin's bounce read (compute/raster/raster_shading.h writes them).
+// buffers, the LUTs, opacity maps, LightSpace, the head's depth shadow map) into a raster descriptor set:
+// what hairRadiance reads (compute/raster/raster_shading.h writes them). The pass binds each chunk's skin
+// bounce samples itself (StrandChunk::bounce).
 using ShadingWriter = std::function<void(const vk::DescriptorSet&)>;
 
 // One head's strands and the shading resources its segments are shaded with.

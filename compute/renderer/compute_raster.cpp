@@ -112,10 +112,7 @@ void ComputeRaster::record(VkCommandBuffer cmd, std::uint64_t frame, const View&
   vk::bufferBarrier(ctx_, cmd, lightSpace, vk::BufferUse::GraphicsRead, vk::BufferUse::ComputeRead);
   vk::imageBarrier(ctx_, cmd, maps, VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::FragmentSampled,
                    vk::ImageUse::ComputeSampled, mapLayers);
-  const render::HeadBounceMap& bounce = shadows_.bounceMap();
-  bounce.transition(cmd, vk::ImageUse::FragmentSampled, vk::ImageUse::ComputeSampled);
   pass_.record(cmd, profiler, strandLimits, lights.lights.size() <= 1, slot);
-  bounce.transition(cmd, vk::ImageUse::ComputeSampled, vk::ImageUse::FragmentSampled);
   vk::bufferBarrier(ctx_, cmd, lightSpace, vk::BufferUse::ComputeRead, vk::BufferUse::GraphicsRead);
   vk::imageBarrier(ctx_, cmd, maps, VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::ComputeSampled,
                    vk::ImageUse::FragmentSampled, mapLayers);

@@ -10,8 +10,8 @@
 // last to use those sets, is complete by then: the Renderer's frame contract).
 //   record(cmd, frame, view, lights)      outside rendering, after the heads were drawn into the depth
 //                                         image (in ImageUse::ComputeSampled): per-instance frame blocks,
-//                                         then the rasterizer (which gathers the skin's bounce from the
-//                                         shadows' head bounce map); leaves image() in ImageUse::FragmentSampled
+//                                         then the rasterizer (the skin's bounce from the strands' samples,
+//                                         recordShadows's); leaves image() in ImageUse::FragmentSampled
 //   recordComposite(cmd, extent)          inside a rendering of the application's attachments
 #include <memory>
 #include <optional>

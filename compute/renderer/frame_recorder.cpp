@@ -150,4 +150,25 @@ void recordShadowPasses(const vk::Context& ctx, VkCommandBuffer cmd, const rende
                    1, slot);
   if (profiler) profiler->end(cmd);
 }
+
+void recordStrandBounce(const vk::Context& ctx, VkCommandBuffer cmd, const render::ShadowMaps& maps,
+                        std::span<const BounceWork> work) {
+  if (work.empty()) return;
+  const VkImage opacity = maps.image().handle();
+  const std::uint32_t layers = maps.image().desc().layers;
+  const render::HeadBounceMap& bounce = maps.bounceMap();
+  // The samples' last readers (the last frame's shading) before they are rewritten; the positions' writes.
+  vk::memoryBarrier(ctx, cmd, vk::BufferUse::ComputeRead, vk::BufferUse::ComputeWrite);
+  vk::memoryBarrier(ctx, cmd, vk::BufferUse::VertexRead, vk::BufferUse::ComputeWrite);
+  vk::memoryBarrier(ctx, cmd, vk::BufferUse::ComputeWrite, vk::BufferUse::ComputeRead);
+  vk::imageBarrier(ctx, cmd, opacity, VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::FragmentSampled,
+                   vk::ImageUse::ComputeSampled, layers);
+  bounce.transition(cmd, vk::ImageUse::FragmentSampled, vk::ImageUse::ComputeSampled);
+  for (const BounceWork& w : work) w.pass->record(cmd, w.strandLimit);
+  bounce.transition(cmd, vk::ImageUse::ComputeSampled, vk::ImageUse::FragmentSampled);
+  vk::imageBarrier(ctx, cmd, opacity, VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::ComputeSampled,
+                   vk::ImageUse::FragmentSampled, layers);
+  vk::memoryBarrier(ctx, cmd, vk::BufferUse::ComputeWrite, vk::BufferUse::ComputeRead);
+  vk::memoryBarrier(ctx, cmd, vk::BufferUse::ComputeWrite, vk::BufferUse::VertexRead);
+}
 }  // namespace hp

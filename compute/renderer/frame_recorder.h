@@ -12,6 +12,10 @@
 //                        last ComputeWrite must be made visible to VertexRead first (makeStrandsDrawable);
 //                        this adds ComputeRead for the bounds and splats. Leaves LightSpace in
 //                        BufferUse::GraphicsRead (and ComputeRead) and the maps in ImageUse::FragmentSampled.
+//   recordStrandBounce   the skin's bounce along each instance's strands, after the head bounce map was drawn.
+//                        Before: this frame's opacity maps and head bounce map in ImageUse::FragmentSampled,
+//                        the bounce frame blocks in ComputeRead. After: the maps as before, the bounce
+//                        samples readable by the shading (BufferUse::ComputeRead and VertexRead).
 #include "hairpipe_volk.h"
 
 #include <glm/glm.hpp>
@@ -23,6 +27,7 @@
 #include "compute/strands/simulate_pass.h"
 #include "compute/strands/tessellate_pass.h"
 #include "engine/core/hair/scene.h"
+#include "compute/head/strand_bounce_pass.h"
 #include "compute/shadows/opacity_pass.h"
 #include "compute/shadows/shadow_maps.h"
 #include "engine/vk/profiler.h"
@@ -47,6 +52,11 @@ struct ShadowCaster {
   std::uint32_t strandLimit = compute::kAllStrands;  // the level of detail's prefix of the strands
 };
 
+struct BounceWork {
+  const render::StrandBouncePass* pass;
+  std::uint32_t strandLimit = compute::kAllStrands;
+};
+
 void recordUpdatePasses(const vk::Context& ctx, VkCommandBuffer cmd, std::span<const UpdateWork> work,
                         vk::GpuProfiler* profiler = nullptr);
 // The render strands' compute writes become visible to the vertex stage (shadows and draws).
@@ -58,4 +68,6 @@ void recordShadowPasses(const vk::Context& ctx, VkCommandBuffer cmd, const rende
                         std::span<const ShadowCaster> casters,
                         const compute::ShadowLight& light, const compute::BoundsFraming& framing,
                         vk::GpuProfiler* profiler = nullptr, const render::HeadShadowView& headView = {});
+void recordStrandBounce(const vk::Context& ctx, VkCommandBuffer cmd, const render::ShadowMaps& maps,
+                        std::span<const BounceWork> work);
 }  // namespace hp

@@ -25,18 +25,24 @@ compute::StrandOptions strandOptions(const Renderer& r, compute::StrandOptions o
   return options;
 }
 
+vk::Buffer makeBounceFrame(const vk::Context& ctx) {
+  return vk::Buffer(ctx, sizeof(gpu::RenderFrame), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                    vk::MemoryKind::DeviceLocal, "head bounce frame");
+}
+
 std::uint32_t alignUp(std::size_t size, VkDeviceSize alignment) {
   return static_cast<std::uint32_t>((size + alignment - 1) / alignment * alignment);
 }
 }  // namespace
 
 HairInstance::Geometry::Geometry(Renderer& r, const SimulatePass& sim, const InterpolationTopology& topology,
-                                 const HeadMesh& head, const InstanceSettings& s)
+                                 const HeadMesh& head, const InstanceSettings& s, const vk::Buffer& bounceFrame)
     : buffers(r.context(), sim.guideCount(), sim.particlesPerGuide(), topology, strandOptions(r, s.strands)),
       tessellate(r.context(), sim.positions(), buffers, &r.pipelines()),
       interpolate(r.context(), buffers, &r.pipelines()),
       bounds(r.context(), buffers, r.shadows().lightSpace(), &r.pipelines()),
-      opacity(r.context(), buffers, head, r.shadows(), &r.pipelines()) {}
+      opacity(r.context(), buffers, head, r.shadows(), &r.pipelines()),
+      bounce(r.context(), buffers, bounceFrame.handle(), r.shadows().inputs(), &r.pipelines()) {}
 
 HairInstance::HairInstance(Renderer& renderer, const HairAsset& asset, const InstanceSettings& settings,
                            const glm::mat4& initialHead)
@@ -45,7 +51,8 @@ HairInstance::HairInstance(Renderer& renderer, const HairAsset& asset, const Ins
       headMesh_(settings.drawHead ? asset.head : HeadMesh{}),
       motion_{initialHead, initialHead, 0.0, false},
       simulate_(renderer.context(), asset, settings.simulation, initialHead, &renderer.pipelines(), settings.scalp),
-      geometry_(std::make_shared<Geometry>(renderer, simulate_, asset.topology, headMesh_, settings_)),
+      bounceFrame_(makeBounceFrame(renderer.context())),
+      geometry_(std::make_shared<Geometry>(renderer, simulate_, asset.topology, headMesh_, settings_, bounceFrame_)),
       marschner_(renderer.marschner(settings.material, settings.lutMode)) {
   const vk::Context& ctx = renderer.context();
   const RendererSettings& rs = renderer.settings();
@@ -58,8 +65,6 @@ HairInstance::HairInstance(Renderer& renderer, const HairAsset& asset, const Ins
         frameBlock(CameraMatrices{}, {1, 1}, render::FrameLights{}, settings_.look);
   head_ = std::make_shared<render::HeadPass>(ctx, headMesh_, frames_, renderer.shadows().inputs(),
                                              rs.formats, &renderer.pipelines());
-  bounceFrame_ = vk::Buffer(ctx, sizeof(gpu::RenderFrame), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                            vk::MemoryKind::DeviceLocal, "head bounce frame");
   bounce_ = std::make_unique<render::HeadBouncePass>(ctx, *head_, bounceFrame_.handle(), renderer.shadows().inputs(),
                                                      &renderer.pipelines());
   strandPass_ = makeStrandPass(*geometry_, *marschner_);
@@ -69,7 +74,7 @@ HairInstance::~HairInstance() { renderer_.forgetInstance(*this); }
 
 gpu::RenderFrame HairInstance::frameBlock(const CameraMatrices& camera, VkExtent2D extent,
                                           const render::FrameLights& lights, const render::LookSettings& look) const {
-  return render::makeRenderFrame(camera, extent, lights, settings_.material, look, strands().layout().verticesPerStrand,
+  return render::makeRenderFrame(camera, extent, lights, settings_.material, look, strands().layout(),
                                  renderer_.shadows().settings(), glm::vec3(marschner_->params().forwardMean));
 }
 
@@ -178,7 +183,7 @@ void HairInstance::setStrands(const InterpolationTopology& topology, const compu
   renderer_.withUploads("set strands", [&] {
     InstanceSettings next = settings_;
     next.strands = options;
-    auto geometry = std::make_shared<Geometry>(renderer_, simulate_, topology, headMesh_, next);
+    auto geometry = std::make_shared<Geometry>(renderer_, simulate_, topology, headMesh_, next, bounceFrame_);
     auto pass = makeStrandPass(*geometry, *marschner_);
     renderer_.retire(geometry_);
     geometry_ = std::move(geometry);

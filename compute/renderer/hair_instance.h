@@ -21,6 +21,7 @@
 #include "engine/core/hair/hair_asset.h"
 #include "compute/head/head_bounce_pass.h"
 #include "compute/head/head_pass.h"
+#include "compute/head/strand_bounce_pass.h"
 #include "compute/renderer/lut_build.h"
 #include "compute/raster/marschner_textures.h"
 #include "compute/shadows/opacity_pass.h"
@@ -91,9 +92,10 @@ class HairInstance {
     compute::InterpolatePass interpolate;
     compute::BoundsPass bounds;
     render::OpacityPass opacity;
+    render::StrandBouncePass bounce;  // the skin's bounce along the strands, read by both rasters' shading
     bool previousKept = false;  // the buffers' previous positions hold a frame (recordUpdate copied them once)
     Geometry(Renderer& r, const SimulatePass& sim, const InterpolationTopology& topology, const HeadMesh& head,
-             const InstanceSettings& s);
+             const InstanceSettings& s, const vk::Buffer& bounceFrame);
   };
 
   HairInstance(Renderer& renderer, const HairAsset& asset, const InstanceSettings& settings,
@@ -117,6 +119,9 @@ class HairInstance {
   HeadMesh headMesh_;  // the asset's head (none when !drawHead); kept for rebuilding the opacity pass with new strands
   HeadMotion motion_;
   SimulatePass simulate_;
+  // The frame block the head bounce map's draw and the bounce along the strands read (light, colours, opacity
+  // settings, the map's framing), written by Renderer::recordShadows with vkCmdUpdateBuffer.
+  vk::Buffer bounceFrame_;
   std::shared_ptr<Geometry> geometry_;
   std::shared_ptr<render::MarschnerTextures> marschner_;
   std::shared_ptr<LutBuild> pending_;  // a material's tables being built on a worker; null: none
@@ -124,9 +129,7 @@ class HairInstance {
   vk::Buffer frames_;  // framesInFlight x maxViewsPerFrame gpu::RenderFrame slots, persistently mapped
   std::uint32_t frameStride_ = 0;
   std::shared_ptr<render::HeadPass> head_;
-  // The head bounce map's draw of this head and the frame block it reads (light, colours, opacity settings,
-  // the map's framing), written by Renderer::recordShadows with vkCmdUpdateBuffer.
-  vk::Buffer bounceFrame_;
+  // The head bounce map's draw of this head (it reads bounceFrame_).
   std::unique_ptr<render::HeadBouncePass> bounce_;
   std::shared_ptr<render::StrandPass> strandPass_;  // the graphics raster's ribbons; null with the compute raster
   bool viewsDrawn_ = false;

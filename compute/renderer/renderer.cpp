@@ -264,14 +264,25 @@ void Renderer::recordHeadBounce(VkCommandBuffer cmd, const render::FrameLights& 
   for (HairInstance* i : instances) {
     const gpu::RenderFrame block = i->frameBlock(CameraMatrices{}, {1, 1}, lights, i->settings_.look);
     const VkBuffer buffer = i->bounceFrame_.handle();
+    // The last frame's readers: the map's draw and the bounce along the strands.
     vk::bufferBarrier(ctx_, cmd, buffer, vk::BufferUse::GraphicsRead, vk::BufferUse::TransferDst);
+    vk::bufferBarrier(ctx_, cmd, buffer, vk::BufferUse::ComputeRead, vk::BufferUse::TransferDst);
     ctx_.fn().vkCmdUpdateBuffer(cmd, buffer, 0, sizeof(block), &block);
     vk::bufferBarrier(ctx_, cmd, buffer, vk::BufferUse::TransferDst, vk::BufferUse::GraphicsRead);
+    vk::bufferBarrier(ctx_, cmd, buffer, vk::BufferUse::TransferDst, vk::BufferUse::ComputeRead);
   }
   const render::HeadBounceMap& map = shadows_->bounceMap();
   map.begin(cmd);
   for (HairInstance* i : instances) i->bounce_->draw(cmd, i->headToWorld());
   map.end(cmd);
+  if (profiler) profiler->end(cmd);
+  // Every strand of each instance that takes the bounce: a view may draw more of them than the last frame's
+  // level of detail did.
+  if (profiler) profiler->begin(cmd, "strand bounce");
+  std::vector<BounceWork> work;
+  for (HairInstance* i : instances)
+    if (i->settings_.look.skinBounce) work.push_back({&i->geometry_->bounce});
+  recordStrandBounce(ctx_, cmd, *shadows_, work);
   if (profiler) profiler->end(cmd);
 }
 

@@ -12,6 +12,7 @@ namespace {
 constexpr VkBufferUsageFlags kUsage =
     VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
 constexpr VkDeviceSize kVec4 = 16;
+constexpr VkDeviceSize kBounceSample = 8;  // uvec2: rgb as half floats
 
 void refuseOversized(const char* what, std::uint64_t bytes, VkDeviceSize limit) {
   if (bytes > limit)
@@ -68,10 +69,14 @@ StrandLayout planStrandLayout(std::uint32_t guideCount, std::uint32_t particlesP
   validateVerticesPerStrand(options.verticesPerStrand, particlesPerGuide);
   if (particlesPerGuide < 2) throw Error("strand layout: particlesPerGuide must be at least 2");
   if (guideCount == 0) throw Error("strand layout: no guides");
+  if (options.bounceSamples < 2)
+    throw Error("strand layout: bounceSamples must be at least 2 (root and tip), got " +
+                std::to_string(options.bounceSamples));
   StrandLayout l;
   l.guideCount = guideCount;
   l.particlesPerGuide = particlesPerGuide;
   l.verticesPerStrand = options.verticesPerStrand;
+  l.bounceSamples = std::min(options.bounceSamples, options.verticesPerStrand);
   l.guidesOnly = options.guidesOnly;
   l.triangleCount = options.guidesOnly ? 0 : triangleCount;
   l.strandCount = options.guidesOnly ? guideCount : strandCount;
@@ -91,8 +96,10 @@ StrandLayout planStrandLayout(std::uint32_t guideCount, std::uint32_t particlesP
 }
 
 void checkStrandMemory(const StrandLayout& layout, VkDeviceSize heapBytes) {
-  // Per strand: positions and tangents (Q vec4 each), binding and attributes; plus the smoothed guides.
-  const double perStrand = double(layout.verticesPerStrand) * 2.0 * kVec4 + 2.0 * kVec4;
+  // Per strand: positions and tangents (Q vec4 each), binding, attributes and the bounce samples (8 bytes
+  // each); plus the smoothed guides.
+  const double perStrand =
+      double(layout.verticesPerStrand) * 2.0 * kVec4 + 2.0 * kVec4 + double(layout.bounceSamples) * kBounceSample;
   const double bytes = double(layout.strandCount) * perStrand +
                        double(layout.guideCount) * layout.verticesPerStrand * 2.0 * kVec4;
   if (bytes > double(heapBytes))
@@ -122,7 +129,9 @@ StrandBuffers::StrandBuffers(const vk::Context& ctx, std::uint32_t guideCount, s
                        deviceBuffer(ctx, vertexBytes, "strand tangents" + tag),
                        deviceBuffer(ctx, VkDeviceSize(range.strandCount) * kVec4, "strand attributes" + tag),
                        options.previousPositions ? deviceBuffer(ctx, vertexBytes, "strand previous positions" + tag)
-                                                 : vk::Buffer()});
+                                                 : vk::Buffer(),
+                       deviceBuffer(ctx, VkDeviceSize(range.strandCount) * layout_.bounceSamples * kBounceSample,
+                                    "strand bounce samples" + tag)});
   }
   keepsPrevious_ = options.previousPositions;
   if (!layout_.guidesOnly) uploadTopology(ctx, topology);

@@ -22,6 +22,7 @@
 #include "engine/core/hair/strand_topology.h"
 #include "engine/vk/barriers.h"
 #include "engine/vk/buffer.h"
+#include "shaders/shared/render.h"
 #include "shaders/shared/strands.h"
 
 namespace hp::vk {
@@ -38,6 +39,9 @@ struct StrandOptions {
   // Keep each chunk's previous render positions (StrandChunk::previous, copied by keepPrevious): the
   // compute raster's motion vectors read them.
   bool previousPositions = false;
+  // Points per strand where the skin's bounce is gathered (shaders/bounce_samples.glsl), at most Q: the
+  // shading interpolates between them. At least 2; Q (or more) gathers at every vertex.
+  std::uint32_t bounceSamples = gpu::RENDER_BOUNCE_STRAND_SAMPLES;
 };
 
 struct ChunkRange {
@@ -59,6 +63,7 @@ struct StrandLayout {
   std::uint32_t verticesPerStrand = 0;  // Q
   std::uint32_t triangleCount = 0;
   std::uint32_t strandCount = 0;        // S (guides only: G)
+  std::uint32_t bounceSamples = 0;      // the skin bounce's samples per strand: min(StrandOptions's, Q)
   bool guidesOnly = false;
   std::vector<ChunkRange> chunks;
 
@@ -86,6 +91,7 @@ struct StrandChunk {
   vk::Buffer attributes;  // StrandAttributes[count]
   vk::Buffer previous;    // vec4[count * Q]: the positions of the frame before (StrandOptions::previousPositions;
                           // empty otherwise)
+  vk::Buffer bounce;      // uvec2[count * bounceSamples]: the skin's bounce along each strand (half floats)
 };
 
 class StrandBuffers {

@@ -2,9 +2,13 @@
 // Contract: the whole-frame benchmark behind `hairpipe bench`: the default head at one strand count,
 // resolution and raster path, every frame recorded as `hairpipe render` records it (simulate,
 // tessellate, interpolate, bounds, opacity, head, hair raster/shade, composite, tonemap) plus a
-// vkCmdCopyBuffer reference in the same submission; one warm-up frame, then `frames` timed frames.
-// Per pass: GPU-timestamp median/min/max and, for compute passes, the compulsory bytes moved; per frame
-// the host wall time and the growth of the resident set (a driver that compiles per frame shows in both).
+// vkCmdCopyBuffer reference in the same submission; one warm-up frame, then `frames` timed frames; then
+// the copy alone in submissions of its own until stable (the bandwidth yardstick). Per pass: GPU-timestamp
+// median/min/max and, for compute passes, the compulsory bytes moved; per frame the host wall time and the
+// growth of the resident set (a driver that compiles per frame shows in both). The timestamps resolve the
+// frame's passes when they time the copy alone (at least a tenth of its submission's wall time) and the copy
+// inside the frame within 2x of alone; otherwise (lavapipe: a 64 MiB copy reads ~0.02 ms) no bandwidth is
+// derived and `unresolvedBecause` says why.
 #include <map>
 #include <string>
 #include <vector>
@@ -14,6 +18,7 @@
 #include "compute/shadows/opacity_settings.h"
 #include "engine/core/shading/lut.h"
 #include "engine/vk/context.h"
+#include "samples/tools/copy_reference.h"
 
 namespace hp::cli {
 struct FrameCase {
@@ -28,6 +33,7 @@ struct FrameCase {
   LutMode lutMode = LutMode::Physical;  // the fibre model's device form (dual needs physical)
   float lodFraction = 1.0f;  // the strands drawn (a level of detail forced at every distance), widened
   std::uint32_t lights = 1;  // shadowed directional lights, [1, 4] (benchLights: the sun, then a rim, fill, top)
+  std::uint32_t bounceSamples = gpu::RENDER_BOUNCE_STRAND_SAMPLES;  // StrandOptions::bounceSamples
 };
 
 struct PassTiming {
@@ -41,6 +47,9 @@ struct FrameResult {
   std::uint64_t rasterEntries = 0, rasterOverflow = 0;
   render::OpacityRaster opacityRaster = render::OpacityRaster::Graphics;  // the path taken (Auto resolved)
   double copyBytes = 0;
+  vk::CopyTiming copyAlone;             // the yardstick: the copy in submissions of its own
+  bool timestampsResolvePasses = false;
+  std::string unresolvedBecause;         // empty when they do
   double hostMs = 0;          // median wall time of a frame's submit-and-wait (driver compiles included)
   double residentMiB = 0;     // the process's resident memory after the last frame
   double residentGrowthMiB = 0;  // per timed frame over the second half of the timed frames

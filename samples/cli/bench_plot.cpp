@@ -25,7 +25,10 @@ std::string frameCaseName(const FrameCase& c) {
                                  : c.scattering == render::Scattering::Dual      ? ", dual scattering"
                                                                                  : ", single scattering";
   const std::string model = c.lutMode == LutMode::Physical ? std::string() : std::string(", ") + lutModeName(c.lutMode);
-  const std::string shading = model + scattering;
+  const std::string bounce = c.bounceSamples == gpu::RENDER_BOUNCE_STRAND_SAMPLES
+                                 ? ""
+                                 : ", bounce x" + std::to_string(c.bounceSamples);
+  const std::string shading = model + scattering + bounce;
   if (c.raster == RasterMode::Compute) {
     const std::string head = c.msaa == 4 ? "" : " head msaa" + std::to_string(c.msaa);
     return (c.skinBounce ? "compute" : "compute, no skin bounce") + head + shading;

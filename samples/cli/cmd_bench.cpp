@@ -38,6 +38,7 @@ struct BenchOptions {
   std::vector<std::string> lutModes{hp::lutModeName(hp::cli::FrameCase{}.lutMode)};
   std::vector<float> lodFractions{1.0f};
   std::vector<std::uint32_t> lights{1};
+  std::vector<std::uint32_t> bounceSamples{hp::gpu::RENDER_BOUNCE_STRAND_SAMPLES};
   std::string json, plot, device;
 };
 
@@ -54,12 +55,14 @@ void parseResolution(const std::string& text, std::uint32_t& w, std::uint32_t& h
 void addSampleCounts(hp::cli::FrameCase c, const BenchOptions& o, std::vector<hp::cli::FrameCase>& out) {
   for (std::uint32_t m : o.msaa)
     for (float f : o.lodFractions)
-      for (std::uint32_t lights : o.lights) {
-        c.msaa = m;
-        c.lodFraction = f;
-        c.lights = lights;
-        out.push_back(c);
-      }
+      for (std::uint32_t lights : o.lights)
+        for (std::uint32_t bounce : o.bounceSamples) {
+          c.msaa = m;
+          c.lodFraction = f;
+          c.lights = lights;
+          c.bounceSamples = bounce;
+          out.push_back(c);
+        }
 }
 
 // A parser's error, prefixed with the option it came from.
@@ -103,6 +106,10 @@ std::vector<hp::cli::FrameCase> cases(const BenchOptions& o) {
     if (!(f > 0.0f && f <= 1.0f)) throw hp::Error("bench: --lod-fraction values must be in (0, 1], got " + std::to_string(f));
   for (std::uint32_t n : o.lights)
     if (n < 1 || n > 4) throw hp::Error("bench: --lights values must be in [1, 4], got " + std::to_string(n));
+  for (std::uint32_t n : o.bounceSamples)
+    if (n < 2 || n > hp::gpu::MAX_VERTICES_PER_STRAND)
+      throw hp::Error("bench: --bounce-samples values must be in [2, " + std::to_string(hp::gpu::MAX_VERTICES_PER_STRAND) +
+                      "], got " + std::to_string(n));
   hp::cli::FrameCase base;
   base.frames = o.frames;
   parseResolution(o.resolution, base.width, base.height);
@@ -131,27 +138,31 @@ std::vector<hp::cli::FrameCase> cases(const BenchOptions& o) {
   return out;
 }
 
+// Bytes per second and the fraction of the copy's only where the timestamps resolve the frame's passes.
 nlohmann::json toJson(const hp::cli::FrameResult& r) {
-  const hp::cli::PassTiming& copy = r.passes.at("copy");
-  const double copyGbs = hp::vk::gigabytesPerSecond(r.copyBytes, copy.medianMs);
+  const double copyGbs = hp::vk::gigabytesPerSecond(r.copyBytes, r.copyAlone.medianMs);
+  const double inFrameGbs = hp::vk::gigabytesPerSecond(r.copyBytes, r.passes.at("copy").medianMs);
   nlohmann::json passes = nlohmann::json::object();
   for (const auto& [name, t] : r.passes) {
     nlohmann::json p = {{"median_ms", t.medianMs}, {"min_ms", t.minMs}, {"max_ms", t.maxMs}};
-    if (t.bytes > 0) {
+    if (t.bytes > 0) p["bytes"] = t.bytes;
+    if (t.bytes > 0 && r.timestampsResolvePasses) {
       const double gbs = hp::vk::gigabytesPerSecond(t.bytes, t.medianMs);
-      p["bytes"] = t.bytes;
       p["gb_per_s"] = gbs;
       p["fraction_of_copy"] = gbs / copyGbs;
     }
     passes[name] = p;
   }
   return {{"strands", r.c.strands},      {"width", r.c.width},          {"lod_fraction", r.c.lodFraction},
-          {"shadowed_lights", r.c.lights},
+          {"shadowed_lights", r.c.lights},            {"bounce_samples", r.c.bounceSamples},
           {"height", r.c.height},        {"raster", hp::cli::frameCaseName(r.c)},
           {"lut_mode", hp::lutModeName(r.c.lutMode)},
           {"scattering", hp::render::scatteringName(r.c.scattering)},
           {"opacity_raster", hp::render::opacityRasterName(r.opacityRaster)},
           {"frame_ms", r.passes.at("frame").medianMs}, {"copy_gb_per_s", copyGbs},
+          {"copy_runs", r.copyAlone.runs},             {"copy_stable", r.copyAlone.stable},
+          {"copy_in_frame_gb_per_s", inFrameGbs},      {"timestamps_resolve_passes", r.timestampsResolvePasses},
+          {"copy_wall_ms", r.copyAlone.wallMs},        {"unresolved_because", r.unresolvedBecause},
           {"raster_entries", r.rasterEntries},         {"raster_overflow", r.rasterOverflow},
           {"host_frame_ms", r.hostMs},                 {"resident_mib", r.residentMiB},
           {"resident_growth_mib_per_frame", r.residentGrowthMiB},
@@ -159,13 +170,18 @@ nlohmann::json toJson(const hp::cli::FrameResult& r) {
 }
 
 void printText(const nlohmann::json& row) {
-  std::printf("%u strands (LOD %.2f, %u shadowed lights), %ux%u, %s: frame %.1f ms (copy %.2f GB/s), host %.1f ms per "
-              "frame, resident %.1f MiB (%+.2f MiB per frame)\n",
+  std::printf("%u strands (LOD %.2f, %u shadowed lights), %ux%u, %s: frame %.1f ms, host %.1f ms per frame, resident "
+              "%.1f MiB (%+.2f MiB per frame)\n",
               row["strands"].get<unsigned>(), row["lod_fraction"].get<double>(), row["shadowed_lights"].get<unsigned>(),
-              row["width"].get<unsigned>(), row["height"].get<unsigned>(),
-              row["raster"].get<std::string>().c_str(), row["frame_ms"].get<double>(),
-              row["copy_gb_per_s"].get<double>(), row["host_frame_ms"].get<double>(),
-              row["resident_mib"].get<double>(), row["resident_growth_mib_per_frame"].get<double>());
+              row["width"].get<unsigned>(), row["height"].get<unsigned>(), row["raster"].get<std::string>().c_str(),
+              row["frame_ms"].get<double>(), row["host_frame_ms"].get<double>(), row["resident_mib"].get<double>(),
+              row["resident_growth_mib_per_frame"].get<double>());
+  std::printf("  copy yardstick %.2f GB/s alone (%u submissions, %s), %.2f GB/s inside the frame%s\n",
+              row["copy_gb_per_s"].get<double>(), row["copy_runs"].get<unsigned>(),
+              row["copy_stable"].get<bool>() ? "stable" : "not stable", row["copy_in_frame_gb_per_s"].get<double>(),
+              row["timestamps_resolve_passes"].get<bool>() ? "" : "; no bandwidth derived: this device's timestamps do not resolve the passes,");
+  if (!row["timestamps_resolve_passes"].get<bool>())
+    std::printf("  %s\n", row["unresolved_because"].get<std::string>().c_str());
   for (const auto& [name, p] : row["passes"].items()) {
     if (name == "frame") continue;
     std::printf("  %-14s %10.2f ms  (%.2f - %.2f)", name.c_str(), p["median_ms"].get<double>(),
@@ -234,6 +250,10 @@ void setup(CLI::App& app) {
       ->delimiter(',')->capture_default_str();
   cmd->add_option("--lights", o->lights,
                   "Shadowed directional lights per frame, 1-4 (comma separated): the sun, a rim, a fill, a top light")
+      ->delimiter(',')->capture_default_str();
+  cmd->add_option("--bounce-samples", o->bounceSamples,
+                  "Points per strand where the skin's bounce is gathered (comma separated; the vertex count, 36, "
+                  "gathers at every vertex)")
       ->delimiter(',')->capture_default_str();
   cmd->add_option("--json", o->json, "Write the report as JSON to this file");
   cmd->add_option("--plot", o->plot, "Write an SVG of ms per pass against strand count to this file");

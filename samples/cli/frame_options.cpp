@@ -153,6 +153,10 @@ hp::RenderRequest makeRenderRequest(const FrameOptions& o, const CLI::App& cmd) 
   r.lutMode = hp::parseLutMode(o.lutMode);
   r.lines = o.lines;
   r.guidesOnly = o.guidesOnly;
+  if (o.bounceSamples < 2 || o.bounceSamples > hp::gpu::MAX_VERTICES_PER_STRAND)
+    throw hp::Error("--bounce-samples must be in [2, " + std::to_string(hp::gpu::MAX_VERTICES_PER_STRAND) + "], got " +
+                    std::to_string(o.bounceSamples));
+  r.bounceSamples = o.bounceSamples;
   r.drawHead = !o.hairOnly;
   if (!o.lod.empty()) {
     r.lod = {true, o.lod[0], o.lod[1], o.lod[2]};
@@ -246,6 +250,9 @@ void addFrameOptions(CLI::App& cmd, FrameOptions& o) {
       ->delimiter(',')->expected(3);
   cmd.add_flag("--lines", o.lines, "Draw strands as lines instead of ribbons");
   cmd.add_flag("--guides-only", o.guidesOnly, "Draw the smoothed guides only (no interpolation)");
+  cmd.add_option("--bounce-samples", o.bounceSamples,
+                 "Points per strand where the skin's bounce is gathered, the shading interpolating between them, "
+                 "[2, 256] (default 8; the vertex count, 36, gathers at every vertex)");
   cmd.add_option("--lod", o.lod,
                  "Level of detail START,END,MIN: beyond START (distance from the eye to the head) the strands thin "
                  "to the fraction MIN at END, widened to keep the hair's coverage")

@@ -34,6 +34,7 @@ struct FrameOptions {
   float exposure = 1.0f;
   bool lines = false;
   bool guidesOnly = false;
+  std::uint32_t bounceSamples = hp::gpu::RENDER_BOUNCE_STRAND_SAMPLES;
   bool hairOnly = false;
   std::vector<float> lod;  // START,END,MIN: level of detail by distance
   bool noShadows = false;

@@ -1,5 +1,9 @@
 #include "samples/tools/copy_reference.h"
 
+#include <algorithm>
+#include <chrono>
+#include <vector>
+
 #include "engine/vk/barriers.h"
 #include "engine/vk/context.h"
 #include "engine/vk/submit.h"
@@ -26,6 +30,32 @@ void CopyReference::record(VkCommandBuffer cmd, GpuProfiler& profiler) const {
   VkBufferCopy region{0, 0, source_.size()};
   ctx_->fn().vkCmdCopyBuffer(cmd, source_.handle(), destination_.handle(), 1, &region);
   profiler.end(cmd);
+}
+
+CopyTiming CopyReference::measureAlone(std::uint32_t maxRuns) const {
+  GpuProfiler profiler(*ctx_, 2, "copy alone");
+  std::vector<double> ms, wall;
+  CopyTiming t;
+  while (t.runs < std::max(maxRuns, kSettled)) {
+    const auto start = std::chrono::steady_clock::now();
+    submitAndWait(*ctx_, [&](VkCommandBuffer cmd) {
+      profiler.reset(cmd);
+      record(cmd, profiler);
+    }, "copy alone");
+    wall.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+    ++t.runs;
+    ms.push_back(profiler.results().front().milliseconds);
+    if (ms.size() < kSettled) continue;
+    const std::vector<double> last(ms.end() - kSettled, ms.end());
+    const auto [lo, hi] = std::minmax_element(last.begin(), last.end());
+    t.medianMs = median(last);
+    t.wallMs = median(std::vector<double>(wall.end() - kSettled, wall.end()));
+    t.stable = *hi - *lo <= 0.05 * t.medianMs;
+    if (t.stable) return t;
+  }
+  t.medianMs = median(ms);
+  t.wallMs = median(wall);
+  return t;
 }
 
 double gigabytesPerSecond(double bytes, double milliseconds) {

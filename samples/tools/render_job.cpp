@@ -90,6 +90,7 @@ HairSystemSettings systemSettings(const RenderRequest& r, const hairpipe::Attach
   s.material = r.scene.material;
   s.lutMode = r.lutMode;
   s.strands.guidesOnly = r.guidesOnly;
+  s.strands.bounceSamples = r.bounceSamples;
   s.drawHead = r.drawHead;
   s.lod = r.lod;
   s.formats = formats;

@@ -22,6 +22,7 @@ struct RenderRequest {
   LutMode lutMode = LutMode::Physical;
   bool lines = false;
   bool guidesOnly = false;
+  std::uint32_t bounceSamples = gpu::RENDER_BOUNCE_STRAND_SAMPLES;  // compute::StrandOptions::bounceSamples
   bool drawHead = true;  // false: hair only (no proxy head drawn, shadowing or bouncing light)
   hairpipe::LodSettings lod;
   float exposure = 1.0f;

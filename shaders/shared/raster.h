@@ -68,7 +68,7 @@ HP_CONST(uint, RASTER_BINDING_TILE_DEPTH, 22)  // float[tiles]: the farthest hea
 HP_CONST(uint, RASTER_BINDING_SHADE_FLAGS, 23) // uint[V]: 1 once a vertex is listed for shading
 HP_CONST(uint, RASTER_BINDING_SHADE_LIST, 24)  // uint[V]: per chunk from its firstVertex, the vertices to shade
 HP_CONST(uint, RASTER_BINDING_SHADE_ARGS, 25)  // uvec4[chunks]: x, y, z = the shade dispatch, w = listed
-// 26, 27: shared/render.h's bounce map. A multisampled head depth splits a pixel's samples in two layers:
+// 26, 27: shared/render.h's bounce map (not bound here); 33 its samples along the strands. A multisampled head depth splits a pixel's samples in two layers:
 // the far layer (OUTPUT) is the hair in front of the farthest head sample; the samples of NEAR_MASK, where
 // the head hides hair the far samples see, take the near layer: the hair in front of every head sample.
 HP_CONST(uint, RASTER_BINDING_OUTPUT_NEAR, 28)  // storage image rgba16f: the near layer, as OUTPUT

@@ -24,6 +24,9 @@ HP_CONST(uint, RENDER_BINDING_HEAD_SHADOW, 10)  // sampler2DArrayShadow: the hea
 // (shared/raster.h, 11-25), which share that raster's set.
 HP_CONST(uint, RENDER_BINDING_BOUNCE_FLUX, 26)      // sampler2D: flux, a = 1 + the hair's opacity (0: no skin)
 HP_CONST(uint, RENDER_BINDING_BOUNCE_POSITION, 27)  // sampler2D: positions, w = the encoded normal
+// The skin's bounce sampled along each strand (strand_bounce.comp writes, bounce_samples.glsl reads): per
+// chunk uvec2[strands x samples], rgb as half floats (packHalf2x16: rg, then b and 0). After the raster's 32.
+HP_CONST(uint, RENDER_BINDING_BOUNCE_SAMPLES, 33)
 // The tonemap pass reads the resolved HDR image.
 HP_CONST(uint, TONEMAP_BINDING_HDR, 0)
 
@@ -46,6 +49,11 @@ HP_CONST(uint, RENDER_BOUNCE_RESOLUTION, 128)
 HP_CONST(uint, RENDER_BOUNCE_RINGS, 6)
 HP_CONST(uint, RENDER_BOUNCE_SPOKES, 8)
 HP_CONST(float, RENDER_BOUNCE_RADIUS, 40.0f)
+// The gather runs at a few points along each strand, evenly spaced in its vertices (the first at the root,
+// the last at the tip), and the shading interpolates between them (compute/strands/strand_buffers.h
+// StrandOptions::bounceSamples: this default, or every vertex). docs/SHADING.md "Skin bounce" measures it.
+HP_CONST(uint, RENDER_BOUNCE_STRAND_SAMPLES, 8)
+HP_CONST(uint, RENDER_BOUNCE_WORKGROUP_SIZE, 64)
 
 // Lights per frame (RenderFrame::lights); the first OPACITY_MAX_LIGHTS shadowed ones have shadow slots.
 HP_CONST(uint, RENDER_MAX_LIGHTS, 8)
@@ -87,7 +95,8 @@ struct RenderFrame {
   uvec4 lightCount;      // x = the lights in `lights`, y = the one in shadow slot 0 (the skin bounce's light;
                          // RENDER_MAX_LIGHTS: no slot 0), z = w = 0
   vec4 headBounce;       // x = 1: the hair adds the light the skin reflects (head_bounce.glsl) of light
-                         // lightCount.y, y = the bounce map's texel size at the heads (scene units), z = w = 0
+                         // lightCount.y, y = the bounce map's texel size at the heads (scene units), z = the
+                         // bounce's samples per strand (RENDER_BINDING_BOUNCE_SAMPLES), w = 0
   FrameLight lights[RENDER_MAX_LIGHTS];
   FrameShadow shadows[OPACITY_MAX_LIGHTS];  // per shadow slot
   mat4 previousViewProj;  // the previous frame's unjittered proj * view (motion vectors; shared/raster.h)
@@ -101,6 +110,14 @@ struct StrandDrawPush {
   uint firstStrand;      // global index of the chunk's first strand (for per-strand variation)
   uint lines;            // 1: line list, 2 vertices per segment
   uint samples;          // samples per pixel of the attachments (coverage becomes a sample mask when > 1)
+  uint pad0;
+};
+
+// strand_bounce.comp, per chunk: one invocation per sample.
+struct StrandBouncePush {
+  uint strandCount;  // strands of the chunk to sample (the level of detail's prefix)
+  uint vertices;     // Q
+  uint samples;      // samples per strand (StrandLayout::bounceSamples)
   uint pad0;
 };
 
@@ -123,6 +140,7 @@ static_assert(offsetof(hp::gpu::RenderFrame, hairForward) == 1152);
 static_assert(sizeof(hp::gpu::RenderFrame) == 1168);
 static_assert(sizeof(hp::gpu::FrameLight) == 64);
 static_assert(sizeof(hp::gpu::FrameShadow) == 80);
+static_assert(sizeof(hp::gpu::StrandBouncePush) == 16);
 static_assert(sizeof(hp::gpu::StrandDrawPush) == 16);
 static_assert(sizeof(hp::gpu::TonemapPush) == 16);
 #endif

@@ -121,6 +121,12 @@ TEST(CliBench, ScatteringAndLutModeListsAreCheckedThenCombined) {
   for (const auto& row : report["results"]) {
     names.push_back(row["raster"].get<std::string>());
     scatterings.push_back(row["scattering"].get<std::string>());
+    // The yardstick copy ran in submissions of its own; bandwidth only where the timestamps resolve passes.
+    EXPECT_GE(row["copy_runs"].get<unsigned>(), 5u);
+    EXPECT_GT(row["copy_gb_per_s"].get<double>(), 0.0);
+    const bool resolved = row["timestamps_resolve_passes"].get<bool>();
+    for (const auto& [name, pass] : row["passes"].items())
+      EXPECT_EQ(pass.contains("fraction_of_copy"), resolved && pass.contains("bytes")) << name;
   }
   EXPECT_EQ(names, (std::vector<std::string>{"compute, float", "compute, single scattering", "compute"}));
   EXPECT_EQ(scatterings, (std::vector<std::string>{"single", "single", "dual"}));

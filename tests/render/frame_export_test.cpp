@@ -358,3 +358,34 @@ TEST_F(VulkanTest, SkinBounceUnderASpotIsFiniteAndAddsLight) {
   std::cout << "spot: the hair's linear sum with the bounce / without " << sumWith / sumWithout << "\n";
   EXPECT_GT(sumWith, 1.01 * sumWithout);
 }
+
+// The skin's bounce gathered at 8 points per strand (StrandOptions::bounceSamples, the default) and
+// interpolated, against the gather at all 36 vertices, default view, 128x96, sky off. The bounce is the
+// light the frame gains with it (over the hair pixels). Measured on lavapipe: it adds 0.197 of the hair's light
+// gathered at every vertex, 0.213 at 8 points (1.08x); the frames 52.5 dB apart, luminance 1.014. Asserted: the
+// 8-point bounce within 15% of the every-vertex one, and the frames above 40 dB PSNR against each other.
+TEST_F(VulkanTest, SkinBounceAtEightPointsPerStrandMatchesTheGatherAtEveryVertex) {
+  RenderRequest request;
+  request.bounceSamples = 36;
+  const BounceFrames every = renderWithAndWithoutBounce(*ctx, request, 128, 96);
+  request.bounceSamples = 8;
+  request.look.skinBounce = true;
+  const RenderResult eight = renderStill(*ctx, every.asset, request);
+  ASSERT_TRUE(every.without.frame && every.with.frame && eight.frame);
+  const LinearImage& mask = every.with.frame->hairAlpha;
+  const std::size_t channels = every.with.frame->linear.values.size() / mask.values.size();
+  double off = 0.0, all = 0.0, sampled = 0.0;
+  for (std::size_t p = 0; p < mask.values.size(); ++p)
+    if (mask.values[p] > 0.5f)
+      for (std::size_t c = 0; c < channels; ++c) {
+        off += every.without.frame->linear.values[p * channels + c];
+        all += every.with.frame->linear.values[p * channels + c];
+        sampled += eight.frame->linear.values[p * channels + c];
+      }
+  const ImageComparison cmp = compareImages(eight.frame->linear, every.with.frame->linear, mask, 1.0f);
+  std::cout << "the bounce adds " << all / off - 1.0 << " of the hair's light at every vertex, " << sampled / off - 1.0
+            << " at 8 points; the frames: " << cmp.psnrDb << " dB, luminance " << cmp.luminanceRatio << "\n";
+  ASSERT_GT(all, 1.05 * off);  // the bounce is there to be sampled
+  EXPECT_NEAR((sampled - off) / (all - off), 1.0, 0.15);
+  EXPECT_GT(cmp.psnrDb, 40.0);
+}

@@ -46,7 +46,7 @@ RasterRig::RasterRig(const vk::Context& c, const compute::StrandBuffers& strands
                      const compute::RasterSettings& settings)
     : ctx(c),
       extent(e),
-      frame(render::makeRenderFrame(camera, e, render::assignShadowSlots(std::span(&light, 1), 1), HairMaterial{}, look, strands.layout().verticesPerStrand,
+      frame(render::makeRenderFrame(camera, e, render::assignShadowSlots(std::span(&light, 1), 1), HairMaterial{}, look, strands.layout(),
                                     shadowsOff())),
       marschner(c, HairMaterial{}, LutMode::Float),
       frameBlock(c, sizeof(gpu::RenderFrame), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
