@@ -122,12 +122,16 @@ hp::ScalpInput scalp(const ScalpInput& s) {
   return h;
 }
 
+// The public default is the library's (shaders/shared/render.h).
+static_assert(InstanceSettings{}.skinBounceSamples == hp::gpu::RENDER_BOUNCE_STRAND_SAMPLES);
+
 hp::InstanceSettings instance(const InstanceSettings& s) {
   hp::InstanceSettings h;
   h.simulation = simulation(s.simulation);
   h.material = material(s.material);
   h.lutMode = fibre(s.fibre);
   h.strands.verticesPerStrand = s.verticesPerStrand;
+  h.strands.bounceSamples = s.skinBounceSamples;
   h.strands.guidesOnly = s.guidesOnly;
   h.look = look(s.look);
   h.scalp = scalp(s.scalp);

@@ -69,9 +69,9 @@ StrandLayout planStrandLayout(std::uint32_t guideCount, std::uint32_t particlesP
   validateVerticesPerStrand(options.verticesPerStrand, particlesPerGuide);
   if (particlesPerGuide < 2) throw Error("strand layout: particlesPerGuide must be at least 2");
   if (guideCount == 0) throw Error("strand layout: no guides");
-  if (options.bounceSamples < 2)
-    throw Error("strand layout: bounceSamples must be at least 2 (root and tip), got " +
-                std::to_string(options.bounceSamples));
+  if (options.bounceSamples < 2 || options.bounceSamples > gpu::MAX_VERTICES_PER_STRAND)
+    throw Error("strand layout: the skin bounce's samples per strand must be in [2, " +
+                std::to_string(gpu::MAX_VERTICES_PER_STRAND) + "], got " + std::to_string(options.bounceSamples));
   StrandLayout l;
   l.guideCount = guideCount;
   l.particlesPerGuide = particlesPerGuide;

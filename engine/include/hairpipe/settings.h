@@ -157,6 +157,9 @@ struct InstanceSettings {
   ScalpInput scalp;
   std::uint32_t verticesPerStrand = 36;  // render strand vertices, [guide particles, 256]
   bool guidesOnly = false;               // debug: draw the smoothed guides instead of dense strands
+  // Points along each strand where the skin's bounce light is gathered once a frame; the shading
+  // interpolates between them. [2, 256]; verticesPerStrand or more gathers at every vertex.
+  std::uint32_t skinBounceSamples = 8;
   // false: hair only. The asset's proxy head is not drawn (recordDraw draws this instance's hair alone,
   // depth-tested against what the application drew before it; the compute rasterizer tests against the
   // depth image it is given), casts no shadow (neither in the opacity maps nor in the heads' depth map)
