@@ -30,10 +30,110 @@ void copyGuide(uint s) {
   attributes[s] = makeStrandAttributes(strandHash01(guide, 0u), guide);
 }
 
+// Groom detail (push.groom, shared/strands.h GroomParams; docs/THEORY.md "Groom detail"). Clumping pulls the
+// strand toward its clump centre: the nearest (in barycentrics) of push.groom.clump.x points hashed in its
+// scalp triangle, blended from the same guides. Curl winds it around that centreline on a helix of the
+// curl radius, in a frame carried along the centreline by projection; frizz adds smooth value noise across
+// it, growing as v^2. Both ramp in over GROOM_ROOT_RAMP of v and key their per-strand values on the strand's
+// random value, so a strand's shape is the same in every frame and run.
+vec3 unitOr(vec3 d, vec3 fallback) {
+  float len2 = dot(d, d);
+  return len2 > 1e-30 ? d * inversesqrt(len2) : fallback;
+}
+
+bool groomOn() { return push.groom.clump.x >= 1.0 || push.groom.curl.x > 0.0 || push.groom.frizz.x > 0.0; }
+
+vec3 blendAt(uvec3 src, vec3 w, uint j) {
+  return w.x * guidePositions[src.x + j].xyz + w.y * guidePositions[src.y + j].xyz + w.z * guidePositions[src.z + j].xyz;
+}
+
+// The barycentrics of the clump centre nearest to w among the triangle's hashed centres.
+vec3 clumpCentre(vec3 w, uint triangle) {
+  uint count = uint(push.groom.clump.x);
+  vec3 best = w;
+  float bestDist = 1e30;
+  for (uint k = 0u; k < count; ++k) {
+    uint key = triangle * 64u + k;
+    vec2 u = vec2(strandHash01(key, GROOM_STREAM_CLUMP), strandHash01(key, GROOM_STREAM_CLUMP + 1u));
+    if (u.x + u.y > 1.0) u = 1.0 - u;  // uniform over the triangle
+    vec3 c = vec3(u, 1.0 - u.x - u.y);
+    float d = dot(c - w, c - w);
+    if (d < bestDist) bestDist = d, best = c;
+  }
+  return best;
+}
+
+// Smooth value noise in [-1, 1] along x, one independent stream per key.
+float groomNoise(uint key, float x) {
+  float i = floor(x), f = x - i;
+  uint cell = uint(int(i) + 65536);
+  float a = strandHash01(key + cell, GROOM_STREAM_FRIZZ), b = strandHash01(key + cell + 1u, GROOM_STREAM_FRIZZ);
+  return mix(a, b, f * f * (3.0 - 2.0 * f)) * 2.0 - 1.0;
+}
+
+// The strand's centreline (guides blended, clumped) at vertex j, and its v.
+vec4 centreline(uvec3 src, vec3 w, vec3 centre, uint j) {
+  float v = guidePositions[src.x + j].w;
+  vec3 p = blendAt(src, w, j);
+  if (push.groom.clump.x >= 1.0) p = mix(p, blendAt(src, centre, j), push.groom.clump.y * pow(v, push.groom.clump.z));
+  return vec4(p, v);
+}
+
+void interpolateGroomed(uint s, StrandBindingGpu b, uvec3 src, vec3 w) {
+  uint key = uint(b.random * 16777216.0);
+  vec3 centre = push.groom.clump.x >= 1.0 ? clumpCentre(w, b.triangle) : w;
+  float vary = push.groom.curl.z;
+  float radius = push.groom.curl.x * (1.0 + vary * (strandHash01(key, GROOM_STREAM_CURL) - 0.5));
+  float turns = push.groom.curl.y * (1.0 + vary * (strandHash01(key, GROOM_STREAM_CURL + 1u) - 0.5));
+  float phase = 6.2831853 * strandHash01(key, GROOM_STREAM_CURL + 2u);
+  vec4 c = centreline(src, w, centre, 0u);
+  vec3 t = normalize(guideTangents[src.x].xyz);
+  // A normal to the root tangent, then carried along: projected onto each new tangent's normal plane.
+  vec3 n = abs(t.y) < 0.9 ? normalize(cross(t, vec3(0.0, 1.0, 0.0))) : normalize(cross(t, vec3(1.0, 0.0, 0.0)));
+  float along = 0.0;
+  uint dst = s * push.vertices;
+  vec3 before = vec3(0.0), here = vec3(0.0);
+  for (uint j = 0u; j < push.vertices; ++j) {
+    if (j > 0u) {
+      vec4 next = centreline(src, w, centre, j);
+      vec3 step = next.xyz - c.xyz;
+      float len = length(step);
+      if (len > 1e-12) t = step / len;
+      along += len;
+      c = next;
+      vec3 projected = n - dot(n, t) * t;
+      if (dot(projected, projected) > 1e-12) n = normalize(projected);
+    }
+    vec3 m = cross(t, n);
+    float ramp = smoothstep(0.0, GROOM_ROOT_RAMP, c.w);
+    float angle = phase + 6.2831853 * turns * along;
+    vec3 p = c.xyz + ramp * radius * (cos(angle) * n + sin(angle) * m);
+    float frizz = push.groom.frizz.x * c.w * c.w;
+    if (frizz > 0.0) {
+      float x = push.groom.frizz.y * along;
+      p += ramp * frizz * (groomNoise(key * 2u, x) * n + groomNoise(key * 2u + 1u, x) * m);
+    }
+    positions[dst + j] = vec4(p, c.w);
+    // Tangents by central differences, one vertex behind (one-sided at the ends).
+    if (j >= 1u) {
+      vec3 d = j >= 2u ? p - before : p - here;
+      tangents[dst + j - 1u] = vec4(unitOr(d, t), 0.0);
+    }
+    if (j + 1u == push.vertices) tangents[dst + j] = vec4(unitOr(p - here, t), 0.0);
+    before = here;
+    here = p;
+  }
+  attributes[s] = makeStrandAttributes(b.random, b.triangle);
+}
+
 void interpolate(uint s) {
   StrandBindingGpu b = bindings[s];
   uvec3 src = triangles[b.triangle].xyz * push.vertices;
   vec3 w = vec3(b.x1, b.x2, max(0.0, 1.0 - b.x1 - b.x2));
+  if (groomOn()) {
+    interpolateGroomed(s, b, src, w);
+    return;
+  }
   uint dst = s * push.vertices;
   for (uint j = 0u; j < push.vertices; ++j) {
     vec4 pa = guidePositions[src.x + j];

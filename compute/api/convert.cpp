@@ -89,6 +89,22 @@ hp::render::LookSettings look(const LookSettings& l) {
   return h;
 }
 
+static_assert(GroomSettings{}.clumpShape == hp::GroomSettings{}.clumpShape &&
+              GroomSettings{}.frizzFrequency == hp::GroomSettings{}.frizzFrequency);  // one default for both
+
+hp::GroomSettings groom(const GroomSettings& g) {
+  hp::GroomSettings h;
+  h.clumpsPerTriangle = g.clumpsPerTriangle;
+  h.clumpStrength = g.clumpStrength;
+  h.clumpShape = g.clumpShape;
+  h.curlRadius = g.curlRadius;
+  h.curlTurns = g.curlTurns;
+  h.curlVariation = g.curlVariation;
+  h.frizzAmplitude = g.frizzAmplitude;
+  h.frizzFrequency = g.frizzFrequency;
+  return h;
+}
+
 hp::SimulationParams simulation(const SimulationSettings& s) {
   hp::SimulationParams p;
   p.dt = s.dt;
@@ -137,6 +153,7 @@ hp::InstanceSettings instance(const InstanceSettings& s) {
   h.scalp = scalp(s.scalp);
   h.drawHead = s.drawHead;
   h.lod = s.lod;
+  h.groom = groom(s.groom);
   return h;
 }
 

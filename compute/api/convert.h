@@ -25,6 +25,7 @@ hp::LutMode fibre(FibreModel model);
 hp::RendererSettings renderer(const RendererSettings& s);
 hp::HairMaterial material(const Material& m);
 hp::render::LookSettings look(const LookSettings& l);
+hp::GroomSettings groom(const GroomSettings& g);
 hp::SimulationParams simulation(const SimulationSettings& s);
 hp::ScalpInput scalp(const ScalpInput& s);
 hp::InstanceSettings instance(const InstanceSettings& s);

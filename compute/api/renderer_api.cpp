@@ -81,6 +81,10 @@ Status Instance::setLod(const LodSettings& lod) noexcept {
   return guardedStatus("hairpipe::Instance::setLod", [&] { implementation(impl_.get()).setLod(lod); });
 }
 
+Status Instance::setGroom(const GroomSettings& groom) noexcept {
+  return guardedStatus("hairpipe::Instance::setGroom", [&] { implementation(impl_.get()).setGroom(convert::groom(groom)); });
+}
+
 Status Instance::setLook(const LookSettings& look) noexcept {
   return guardedStatus("hairpipe::Instance::setLook", [&] { implementation(impl_.get()).setLook(convert::look(look)); });
 }

@@ -39,7 +39,7 @@ HairInstance::Geometry::Geometry(Renderer& r, const SimulatePass& sim, const Int
                                  const HeadMesh& head, const InstanceSettings& s, const vk::Buffer& bounceFrame)
     : buffers(r.context(), sim.guideCount(), sim.particlesPerGuide(), topology, strandOptions(r, s.strands)),
       tessellate(r.context(), sim.positions(), buffers, &r.pipelines()),
-      interpolate(r.context(), buffers, &r.pipelines()),
+      interpolate(r.context(), buffers, &r.pipelines(), s.groom),
       bounds(r.context(), buffers, r.shadows().lightSpace(), &r.pipelines()),
       opacity(r.context(), buffers, head, r.shadows(), &r.pipelines()),
       bounce(r.context(), buffers, bounceFrame.handle(), r.shadows().inputs(), &r.pipelines()) {}
@@ -172,6 +172,11 @@ void HairInstance::noteViewFraction(std::uint64_t frame, float fraction) {
   viewsDrawn_ = true;
   viewFrame_ = frame;
   largestViewFraction_ = std::max(largestViewFraction_, fraction);
+}
+
+void HairInstance::setGroom(const GroomSettings& groom) {
+  geometry_->interpolate.setGroom(groom);  // validates; push constants of the next recordUpdate
+  settings_.groom = groom;
 }
 
 void HairInstance::setSimulation(const SimulationParams& params) {

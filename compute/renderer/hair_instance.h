@@ -64,6 +64,8 @@ class HairInstance {
   void setLook(const render::LookSettings& look);
   void setLod(const hairpipe::LodSettings& lod);
   void setSimulation(const SimulationParams& params);
+  // Clumps, curl and frizz from the next recordUpdate on (no buffers change).
+  void setGroom(const GroomSettings& groom);
   // A new interpolation topology (density) or strand options: new strand buffers, filled by the next update.
   void setStrands(const InterpolationTopology& topology, const compute::StrandOptions& options);
 

@@ -35,6 +35,7 @@ void InstanceSettings::validate() const {
   material.validate();
   look.validate();
   hp::validate(lod);
+  groom.validate();
 }
 
 void validate(const hairpipe::LodSettings& lod) {

@@ -11,6 +11,7 @@
 #include "compute/strands/scalp_input.h"
 #include "compute/strands/strand_buffers.h"
 #include "compute/raster/strand_raster_pass.h"
+#include "engine/core/hair/groom.h"
 #include "engine/core/hair/scene.h"
 #include "engine/core/hair/sim_params.h"
 #include "hairpipe/settings.h"
@@ -53,6 +54,7 @@ struct InstanceSettings {
   ScalpInput scalp;  // where the roots come from: rigid head (default), skinned root frames, or bones
   bool drawHead = true;  // false: hair only (hairpipe/settings.h says what that leaves out)
   hairpipe::LodSettings lod;
+  GroomSettings groom;  // clumps, curl and frizz added at interpolation (engine/core/hair/groom.h)
   void validate() const;
 };
 

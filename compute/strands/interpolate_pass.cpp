@@ -17,12 +17,20 @@ const vk::Binding kBindings[] = {
 };
 }  // namespace
 
-InterpolatePass::InterpolatePass(const vk::Context& ctx, const StrandBuffers& buffers, vk::PipelineLibrary* library)
+InterpolatePass::InterpolatePass(const vk::Context& ctx, const StrandBuffers& buffers, vk::PipelineLibrary* library,
+                                 const GroomSettings& groom)
     : ctx_(&ctx),
       layoutSet_(ctx, kBindings, "interpolate layout"),
       pipeline_(vk::makeComputePipeline(ctx, library, "interpolate.comp", gpu::INTERPOLATE_WORKGROUP_SIZE, {layoutSet_.layout()},
                 sizeof(gpu::InterpolatePush), "interpolate")) {
+  setGroom(groom);
   bind(buffers);
+}
+
+void InterpolatePass::setGroom(const GroomSettings& groom) {
+  groom.validate();
+  groom_ = groomParams(groom);
+  for (Chunk& c : chunks_) c.push.groom = groom_;
 }
 
 void InterpolatePass::bind(const StrandBuffers& buffers) {
@@ -31,7 +39,7 @@ void InterpolatePass::bind(const StrandBuffers& buffers) {
   std::vector<Chunk> chunks;
   for (const StrandChunk& c : buffers.chunks()) {
     Chunk chunk{vk::DescriptorSet(*ctx_, kBindings, "interpolate [chunk " + std::to_string(chunks.size()) + "]"),
-                {c.range.firstStrand, c.range.strandCount, l.verticesPerStrand, mode}};
+                {c.range.firstStrand, c.range.strandCount, l.verticesPerStrand, mode, groom_}};
     const vk::DescriptorSet& s = chunk.set;
     s.writeStorageBuffer(gpu::INTERPOLATE_BINDING_GUIDE_POSITIONS, buffers.guidePositions().handle());
     s.writeStorageBuffer(gpu::INTERPOLATE_BINDING_GUIDE_TANGENTS, buffers.guideTangents().handle());

@@ -2,7 +2,8 @@
 // Contract: the interpolation pass (docs/THEORY.md §1.4, shaders/interpolate.comp). Fills every scalp
 // triangle with render strands K_j = X1 A_j + X2 B_j + X3 C_j from its three smoothed guides, with
 // renormalised blended tangents and per-strand attributes (random, width and colour scales; see
-// makeStrandAttributes in shaders/shared/strands.h). In guides-only layouts (StrandOptions::guidesOnly)
+// makeStrandAttributes in shaders/shared/strands.h), and the groom detail of GroomSettings (clumps, curl,
+// frizz; engine/core/hair/groom.h) when any is set. In guides-only layouts (StrandOptions::guidesOnly)
 // it copies the smoothed guides instead, one render strand per guide. Owns its pipeline and one
 // descriptor set per chunk; record() adds one dispatch per chunk (one invocation per strand) and
 // inserts no barriers. The frame recorder guarantees:
@@ -16,6 +17,7 @@
 #include <vector>
 
 #include "compute/strands/strand_buffers.h"
+#include "engine/core/hair/groom.h"
 #include "engine/vk/descriptors.h"
 #include "engine/vk/pipeline_library.h"
 #include "engine/vk/profiler.h"
@@ -24,11 +26,14 @@
 namespace hp::compute {
 class InterpolatePass {
  public:
-  InterpolatePass(const vk::Context& ctx, const StrandBuffers& buffers, vk::PipelineLibrary* library = nullptr);
+  InterpolatePass(const vk::Context& ctx, const StrandBuffers& buffers, vk::PipelineLibrary* library = nullptr,
+                  const GroomSettings& groom = {});
 
   // After StrandBuffers was re-allocated (density, Q, guides-only change); outside the frame loop only.
   void bind(const StrandBuffers& buffers);
   void record(VkCommandBuffer cmd, vk::GpuProfiler* profiler = nullptr) const;
+  // The groom detail of the next record() (push constants: no GPU object changes). Validates it.
+  void setGroom(const GroomSettings& groom);
 
  private:
   struct Chunk {
@@ -41,5 +46,6 @@ class InterpolatePass {
   vk::DescriptorSet layoutSet_;
   std::shared_ptr<const vk::ComputePipeline> pipeline_;
   std::vector<Chunk> chunks_;
+  gpu::GroomParams groom_{};
 };
 }  // namespace hp::compute

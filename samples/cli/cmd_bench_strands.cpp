@@ -24,6 +24,7 @@
 #include "engine/vk/context.h"
 #include "samples/tools/copy_reference.h"
 #include "engine/vk/submit.h"
+#include "samples/cli/groom_options.h"
 #include "samples/cli/bench_context.h"
 #include "samples/cli/command.h"
 
@@ -38,6 +39,8 @@ struct BenchOptions {
   std::uint32_t vertices = hp::compute::kDefaultVerticesPerStrand;
   bool json = false;
   std::string device;
+  hp::cli::GroomOptions groomOptions;
+  hp::GroomSettings groom;  // from groomOptions
 };
 
 struct Result {
@@ -75,7 +78,7 @@ Result benchOne(const hp::vk::Context& ctx, std::uint32_t strands, const BenchOp
   hp::compute::StrandBuffers buffers(ctx, guides.guideCount(), guides.particlesPerGuide, asset.topology, options);
   hp::vk::Buffer particles = hp::compute::uploadGuideParticles(ctx, guides);
   hp::compute::TessellatePass tessellate(ctx, particles, buffers);
-  hp::compute::InterpolatePass interpolate(ctx, buffers);
+  hp::compute::InterpolatePass interpolate(ctx, buffers, nullptr, o.groom);
   hp::vk::CopyReference copy(ctx, kCopyBytes);
   hp::vk::GpuProfiler profiler(ctx, 8, "bench strands");
   std::map<std::string, std::vector<double>> times;
@@ -131,7 +134,8 @@ void printText(const nlohmann::json& report) {
   }
 }
 
-void run(const BenchOptions& o) {
+void run(BenchOptions& o) {
+  hp::cli::applyGroomOptions(o.groomOptions, o.groom);
   if (o.frames == 0 || o.frames > 1000) throw hp::Error("bench strands: --frames must be in [1, 1000]");
   for (std::uint32_t s : o.strands)
     if (s == 0 || s > 4'000'000) throw hp::Error("bench strands: --strands values must be in [1, 4000000]");
@@ -153,6 +157,7 @@ void setup(CLI::App& app) {
   cmd->add_option("--vertices", o->vertices, "Vertices per strand (Q)")->capture_default_str();
   cmd->add_flag("--json", o->json, "Print JSON");
   cmd->add_option("--device", o->device, "Vulkan device: index or name substring (env HAIRPIPE_DEVICE)");
+  hp::cli::addGroomOptions(*cmd, o->groomOptions);
   cmd->callback([o] { run(*o); });
 }
 }  // namespace

@@ -15,6 +15,7 @@
 #include "engine/core/error.h"
 #include "engine/core/hair/scene.h"
 #include "engine/vk/context.h"
+#include "samples/cli/groom_options.h"
 #include "samples/cli/command.h"
 #include "samples/cli/scene_options.h"
 #include "shaders/shared/strands.h"
@@ -28,6 +29,7 @@ constexpr std::int64_t kMaxDensity = 2'000'000;
 
 struct StrandsOptions {
   hp::cli::SceneOptions scene;
+  hp::cli::GroomOptions groom;
   std::int64_t density = -1;  // -1: the scene's own density
   std::int64_t vertices = hp::compute::kDefaultVerticesPerStrand;
   bool guidesOnly = false;
@@ -83,6 +85,7 @@ void runStrands(const StrandsOptions& o) {
     scene.density.totalStrands = static_cast<std::uint32_t>(o.density);
   }
   hp::cli::prepareOutputFile({"--out", o.out}, hp::cli::sceneInputs(o.scene, scene));
+  hp::cli::applyGroomOptions(o.groom, scene.groom);
   hp::HairAsset asset = hp::buildSceneAsset(scene);
   const std::uint32_t particles = asset.guides.particlesPerGuide;
   if (o.vertices < particles)
@@ -94,7 +97,7 @@ void runStrands(const StrandsOptions& o) {
   options.guidesOnly = o.guidesOnly;
   const std::string info = std::string("hairpipe strands ") + (o.guidesOnly ? "guides-only " : "") +
                            std::to_string(o.vertices) + " vertices: " + scene.source;
-  hp::compute::StrandRun run = hp::compute::computeRenderStrands(*ctx, asset, options, info);
+  hp::compute::StrandRun run = hp::compute::computeRenderStrands(*ctx, asset, options, info, scene.groom);
   hp::cli::checkValidation(*ctx);
   hp::writeHairFile(o.out, run.hair);
   report(o, asset, run, *ctx);
@@ -109,6 +112,7 @@ void setupStrands(CLI::App& app) {
   cmd->add_option("--vertices", o->vertices, "Vertices per smoothed strand (Q), particles per guide to 256")
       ->capture_default_str();
   cmd->add_flag("--guides-only", o->guidesOnly, "Debug: write the smoothed guides (one strand per guide), no interpolation");
+  hp::cli::addGroomOptions(*cmd, o->groom);
   cmd->add_option("--out", o->out, "Output .hair file (written atomically)")->required();
   cmd->add_flag("--json", o->json, "Print a JSON report");
   cmd->callback([o] { runStrands(*o); });

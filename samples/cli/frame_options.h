@@ -12,12 +12,14 @@
 #include <string>
 #include <vector>
 
+#include "samples/cli/groom_options.h"
 #include "samples/cli/scene_options.h"
 #include "samples/tools/render_job.h"
 
 namespace hp::cli {
 struct FrameOptions {
   SceneOptions scene;
+  GroomOptions groom;
   HairMaterial material;
   std::uint32_t frames = 90;
   std::optional<std::uint32_t> width, height, msaa, density;

@@ -21,6 +21,7 @@ InstanceSettings instanceSettings(const HairSystemSettings& s) {
   InstanceSettings i{s.simulation, s.material, s.lutMode, s.strands, s.look};
   i.drawHead = s.drawHead;
   i.lod = s.lod;
+  i.groom = s.groom;
   return i;
 }
 
@@ -68,6 +69,11 @@ void HairSystem::setMaterial(const HairMaterial& material, LutMode mode) {
 void HairSystem::setLook(const render::LookSettings& look) {
   instance_->setLook(look);
   settings_.look = look;
+}
+
+void HairSystem::setGroom(const GroomSettings& groom) {
+  instance_->setGroom(groom);
+  settings_.groom = groom;
 }
 
 void HairSystem::setStrands(const InterpolationTopology& topology) {

@@ -29,6 +29,7 @@ struct HairSystemSettings {
   compute::StrandOptions strands;
   bool drawHead = true;  // false: hair only (InstanceSettings::drawHead)
   hairpipe::LodSettings lod;
+  GroomSettings groom;
   hairpipe::AttachmentFormats formats;
   render::LookSettings look;
   render::OpacitySettings opacity;
@@ -76,6 +77,7 @@ class HairSystem {
   // Between frames, with earlier frames possibly in flight: the old textures are retired, not idled on.
   void setMaterial(const HairMaterial& material, LutMode mode);
   void setLook(const render::LookSettings& look);
+  void setGroom(const GroomSettings& groom);
   // A new density (interpolation topology): new strand buffers, and a new rasterizer reading them.
   void setStrands(const InterpolationTopology& topology);
 

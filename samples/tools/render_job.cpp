@@ -93,6 +93,7 @@ HairSystemSettings systemSettings(const RenderRequest& r, const hairpipe::Attach
   s.strands.bounceSamples = r.bounceSamples;
   s.drawHead = r.drawHead;
   s.lod = r.lod;
+  s.groom = r.scene.groom;
   s.formats = formats;
   s.look = r.look;
   s.opacity = r.opacity;

@@ -38,12 +38,12 @@ HairFileData renderStrandsToHairData(const vk::Context& ctx, const StrandBuffers
 }
 
 StrandRun computeRenderStrands(const vk::Context& ctx, const HairAsset& asset, const StrandOptions& options,
-                               const std::string& info) {
+                               const std::string& info, const GroomSettings& groom) {
   const GuideSet& guides = asset.guides;
   StrandBuffers buffers(ctx, guides.guideCount(), guides.particlesPerGuide, asset.topology, options);
   vk::Buffer particles = uploadGuideParticles(ctx, guides);
   TessellatePass tessellate(ctx, particles, buffers);
-  InterpolatePass interpolate(ctx, buffers);
+  InterpolatePass interpolate(ctx, buffers, nullptr, groom);
   vk::GpuProfiler profiler(ctx, 4, "strand passes");
   vk::submitAndWait(ctx, [&](VkCommandBuffer cmd) {
     profiler.reset(cmd);

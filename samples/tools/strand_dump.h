@@ -34,5 +34,5 @@ struct StrandRun {
 };
 // The rest pose of `asset` through both passes, read back as .hair data.
 StrandRun computeRenderStrands(const vk::Context& ctx, const HairAsset& asset, const StrandOptions& options,
-                               const std::string& info);
+                               const std::string& info, const GroomSettings& groom = {});
 }  // namespace hp::compute

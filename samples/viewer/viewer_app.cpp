@@ -145,7 +145,7 @@ Viewer::Viewer(const ViewerOptions& options, const HairAsset& asset)
   state_.panel = options.panel;
   state_.animation = r.animation;
   tunables_ = {r.scene.simulation, 4.0, r.scene.density.totalStrands, r.scene.material, r.lutMode, r.opacity, r.look,
-               r.lod, r.exposure, editableLights(r.scene)};
+               r.lod, r.exposure, editableLights(r.scene), r.scene.groom};
   input_.state = &state_;
   installInput(window_.handle(), input_);
   imgui_ = std::make_unique<ImGuiSession>(window_.handle());
@@ -215,6 +215,7 @@ void Viewer::applyPanel(const PanelChanges& c) {
     if (c.opacity) hair.renderer().setOpacityTuning(tunables_.opacity);
     if (c.look) hair.setLook(tunables_.look);
     if (c.lod) hair.instance().setLod(tunables_.lod);
+    if (c.groom) hair.setGroom(tunables_.groom);
     if (c.material) hair.setMaterial(tunables_.material, tunables_.lutMode);
     if (c.density) {
       DensityOptions d = options_.request.scene.density;
@@ -378,7 +379,7 @@ void Viewer::frameStep() {
   applyPanel(apply);
   edited_ = {edited_.simulation || apply.simulation, edited_.density || apply.density,
              edited_.material || apply.material, edited_.opacity || apply.opacity, edited_.look || apply.look,
-             edited_.lod || apply.lod};
+             edited_.lod || apply.lod, edited_.groom || apply.groom};
   const bool shot = !options_.screenshot.empty() && options_.frames > 0 && frame_ + 1 == options_.frames;
   record(slot, image, slotIndex, shot);
   submit(slot, image);

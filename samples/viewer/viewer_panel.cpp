@@ -183,6 +183,23 @@ void lookSection(Tunables& t, PanelChanges& c) {
   c.look |= ImGui::Checkbox("skin bounce", &t.look.skinBounce);
 }
 
+void groomSection(Tunables& t, PanelChanges& c) {
+  if (!ImGui::CollapsingHeader("Groom")) return;
+  GroomSettings& g = t.groom;
+  int clumps = int(g.clumpsPerTriangle);
+  if (ImGui::SliderInt("clumps per triangle", &clumps, 0, 8)) {
+    g.clumpsPerTriangle = std::uint32_t(clumps);
+    c.groom = true;
+  }
+  c.groom |= ImGui::SliderFloat("clump strength", &g.clumpStrength, 0.0f, 1.0f, "%.2f");
+  c.groom |= ImGui::SliderFloat("clump shape", &g.clumpShape, 0.1f, 4.0f, "%.2f");
+  c.groom |= ImGui::SliderFloat("curl radius", &g.curlRadius, 0.0f, 0.02f, "%.4f");
+  c.groom |= ImGui::SliderFloat("curl turns / unit", &g.curlTurns, 0.0f, 100.0f, "%.1f");
+  c.groom |= ImGui::SliderFloat("curl variation", &g.curlVariation, 0.0f, 1.0f, "%.2f");
+  c.groom |= ImGui::SliderFloat("frizz amplitude", &g.frizzAmplitude, 0.0f, 0.01f, "%.4f");
+  c.groom |= ImGui::SliderFloat("frizz frequency", &g.frizzFrequency, 1.0f, 200.0f, "%.1f");
+}
+
 void lodSection(Tunables& t, PanelChanges& c) {
   if (!ImGui::CollapsingHeader("Level of detail")) return;
   hairpipe::LodSettings next = t.lod;
@@ -224,6 +241,7 @@ PanelChanges drawPanel(Tunables& t, ViewState& view, const PanelStatus& status) 
   lightSection(t, view);
   shadowSection(t, c);
   lookSection(t, c);
+  groomSection(t, c);
   lodSection(t, c);
   if (!status.error.empty()) ImGui::TextColored(ImVec4(1.0f, 0.4f, 0.3f, 1.0f), "%s", status.error.c_str());
   ImGui::End();

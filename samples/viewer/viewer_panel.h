@@ -1,8 +1,8 @@
 #pragma once
 // Contract: the viewer's Dear ImGui panel: simulation (animation, wind, pause, solver), density,
 // material and scattering (the Marschner lobes, LUT mode), lights (add up to 8, remove; per light its type,
-// direction or position and target, colour, intensity, range, cone, shadows), shadows (opacity maps), look
-// (exposure, ambient, strand width) and the last completed frame's GPU time per pass. It edits a Tunables
+// direction or position and target, colour, intensity, range, cone, shadows), shadows (opacity maps), look, groom
+// (exposure, ambient, strand width), groom (clumps, curl, frizz) and the last completed frame's GPU time per pass. It edits a Tunables
 // copy; the frame loop applies what changed (the flags) through the hair's setters between frames (the
 // lights go into every frame as they are), and a setter's hp::Error comes back as `error`, shown in the
 // panel instead of ending the viewer. The panel keeps every light valid (LightSpec::validate): directions
@@ -29,6 +29,7 @@ struct Tunables {
   hairpipe::LodSettings lod;
   float exposure = 1.0f;
   std::vector<EditedLight> lights;   // the frame's lights, the first turned by the light drag too
+  GroomSettings groom;
 };
 
 struct PanelChanges {
@@ -38,6 +39,7 @@ struct PanelChanges {
   bool opacity = false;
   bool look = false;
   bool lod = false;
+  bool groom = false;
 };
 
 struct PanelStatus {

@@ -47,6 +47,12 @@ HP_CONST(uint, INTERPOLATE_MODE_STRANDS, 0)  // K_j = X1 A_j + X2 B_j + X3 C_j p
 HP_CONST(uint, INTERPOLATE_MODE_GUIDES, 1)   // debug: render strand s is smoothed guide s
 
 HP_CONST(uint, MAX_VERTICES_PER_STRAND, 256)
+// Groom detail (GroomParams): curl and frizz grow from 0 at the root to full over this much of v, so the
+// roots stay where they are bound; the hash streams of a strand's curl and frizz values.
+HP_CONST(float, GROOM_ROOT_RAMP, 0.15f)
+HP_CONST(uint, GROOM_STREAM_CLUMP, 16u)
+HP_CONST(uint, GROOM_STREAM_CURL, 32u)
+HP_CONST(uint, GROOM_STREAM_FRIZZ, 48u)
 
 // Attribute ranges: widthScale in [WIDTH_SCALE_MIN, WIDTH_SCALE_MAX), colorScale likewise.
 HP_CONST(float, WIDTH_SCALE_MIN, 0.75f)
@@ -61,11 +67,22 @@ struct TessellatePush {
   uint pad;
 };
 
+// Groom detail of the interpolated strands (hp::GroomSettings, engine/core/hair/groom.h; interpolate.comp):
+// all zero leaves every strand the plain blend of its guides.
+struct GroomParams {
+  vec4 clump;  // x = clump centres per scalp triangle (0: none), y = pull toward the centre at the tip,
+               // z = profile exponent (pull = y v^z along v in [0, 1]), w = 0
+  vec4 curl;   // x = radius (scene units), y = turns per scene unit of length, z = per-strand variation
+               // [0, 1], w = 0
+  vec4 frizz;  // x = amplitude at the tip (scene units; v^2 from the root), y = cycles per scene unit, zw = 0
+};
+
 struct InterpolatePush {
   uint firstStrand;  // global index of the chunk's first strand (guides mode: first guide)
   uint strandCount;  // strands in this chunk
   uint vertices;     // Q
   uint mode;         // INTERPOLATE_MODE_*
+  GroomParams groom;
 };
 
 // One render strand: barycentrics of guides A and B (C gets max(0, 1 - x1 - x2)), the asset's
@@ -133,7 +150,7 @@ HP_END
 
 #ifdef __cplusplus
 static_assert(sizeof(hp::gpu::TessellatePush) == 16);
-static_assert(sizeof(hp::gpu::InterpolatePush) == 16);
+static_assert(sizeof(hp::gpu::InterpolatePush) == 64);
 static_assert(sizeof(hp::gpu::StrandBindingGpu) == 16);
 static_assert(offsetof(hp::gpu::StrandBindingGpu, random) == 8);
 static_assert(offsetof(hp::gpu::StrandBindingGpu, triangle) == 12);

@@ -183,6 +183,16 @@ TEST_F(PublicApi, InstanceSettingsAndSettersAreRefusedByField) {
   bad.lod.startDistance = kNaN;
   EXPECT_THAT(failureOf(renderer_->createInstance(*asset_, bad)), HasSubstr("LodSettings: the distances"));
   bad = {};
+  bad.groom.curlRadius = 2.0f;
+  EXPECT_THAT(failureOf(renderer_->createInstance(*asset_, bad)), HasSubstr("GroomSettings.curlRadius must be in [0"));
+  hairpipe::GroomSettings groom;
+  groom.frizzFrequency = 0.0f;
+  EXPECT_THAT(failureOf(head.setGroom(groom)), HasSubstr("hairpipe::Instance::setGroom: GroomSettings.frizzFrequency"));
+  groom = {};
+  groom.curlRadius = 0.004f;
+  groom.curlTurns = 30.0f;
+  EXPECT_TRUE(head.setGroom(groom).ok());
+  bad = {};
   bad.skinBounceSamples = 1;
   EXPECT_THAT(failureOf(renderer_->createInstance(*asset_, bad)),
               HasSubstr("the skin bounce's samples per strand must be in [2, 256], got 1"));

@@ -71,6 +71,10 @@ TEST(CliRender, BadOptionsExitWithAMessageAndWriteNothing) {
       {{"--animate", "spin"}, "spin"},      {{"--density", "0"}, "total"},
       {{"--width", "16385"}, "--width/--height must be in [1, 16384]"},
       {{"--camera-orbit", "inf"}, "--camera-orbit must be a finite angle"},
+      {{"--clump", "2.5,0.5"}, "--clump: COUNT must be a whole number in [0, 64]"},
+      {{"--curl", "0.01,nan"}, "GroomSettings.curlTurns"},
+      {{"--frizz", "-1"}, "GroomSettings.frizzAmplitude"},
+      {{"--bounce-samples", "1"}, "--bounce-samples must be in [2, 256]"},
   };
   // Render targets past half the device-local heap are refused before anything is allocated. The largest
   // frame the options allow (16384^2 at msaa 8: 108 bytes a pixel, 27.6 GiB) exceeds that on lavapipe

@@ -135,6 +135,20 @@ TEST(Scene, OutOfRangeValuesNameThePath) {
   EXPECT_THAT_ERROR_CONTAINS_IMPL(sceneParseError(R"({"simulation": {"iterations": 0}})"),
                                   "scene.json: /simulation: simulation parameter iterations must be in [1, 1000], got 0");
   EXPECT_THAT_ERROR_CONTAINS_IMPL(sceneParseError(R"({"material": {"eta": -1}})"), "scene.json: /material: ");
+  EXPECT_THAT_ERROR_CONTAINS_IMPL(sceneParseError(R"({"groom": {"curlRadius": 2}})"),
+                                  "scene.json: /groom: GroomSettings.curlRadius must be in [0.000000, 1.000000], got 2.000000");
+  EXPECT_THAT_ERROR_CONTAINS_IMPL(sceneParseError(R"({"groom": {"curl": 1}})"), "scene.json: /groom/curl: unknown key");
+}
+
+TEST(Scene, ReadsTheGroom) {
+  const Scene s = parseScene(R"({"groom": {"clumpsPerTriangle": 2, "clumpStrength": 0.7, "curlRadius": 0.006,
+                                  "curlTurns": 40, "frizzAmplitude": 0.002}})", "scene.json", "/base");
+  EXPECT_EQ(s.groom.clumpsPerTriangle, 2u);
+  EXPECT_FLOAT_EQ(s.groom.clumpStrength, 0.7f);
+  EXPECT_FLOAT_EQ(s.groom.curlRadius, 0.006f);
+  EXPECT_FLOAT_EQ(s.groom.curlTurns, 40.0f);
+  EXPECT_FLOAT_EQ(s.groom.frizzAmplitude, 0.002f);
+  EXPECT_FLOAT_EQ(s.groom.frizzFrequency, GroomSettings{}.frizzFrequency);
 }
 
 TEST(Scene, LoadsFromAFileAndResolvesPathsAgainstIt) {
@@ -249,6 +263,7 @@ TEST(SceneReadme, ExampleParsesAndMatchesTheDefaults) {
   EXPECT_EQ(s.camera.distance, d.camera.distance);
   ASSERT_EQ(s.lights.size(), d.lights.size());
   EXPECT_NEAR(glm::distance(s.lights[0].direction, d.lights[0].direction), 0.0f, 1e-6f);
+  EXPECT_EQ(s.groom, d.groom);
 }
 }  // namespace
 }  // namespace hp

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "engine/core/hair/groom.h"
 #include "engine/core/hair/collider.h"
 #include "engine/core/hair/guide_growth.h"
 #include "engine/core/hair/hair_asset.h"
@@ -106,6 +107,7 @@ struct Scene {
   CameraSpec camera;
   RenderSpec render;
   SimulationParams simulation;
+  GroomSettings groom;  // clumps, curl and frizz at interpolation (none by default)
   // Set when a model is loaded without a scene: what was guessed (units, up axis; empty: nothing)
   // and whether the camera should be framed on the hair once it is built.
   std::string guessed;

@@ -109,6 +109,8 @@ class Instance {
   bool materialPending() const noexcept;
   Status setLook(const LookSettings& look) noexcept;
   Status setLod(const LodSettings& lod) noexcept;
+  // Clumps, curl and frizz from the next recordUpdate on (push constants: nothing is rebuilt).
+  Status setGroom(const GroomSettings& groom) noexcept;
   Status setSimulation(const SimulationSettings& simulation) noexcept;
   // Another density of render strands between the same guides (new strand buffers, filled by the next
   // recordUpdate; a raster target holding the instance is rebuilt).

@@ -149,6 +149,21 @@ struct LodSettings {
   float minFraction = 0.25f;   // (0, 1]
 };
 
+// Groom detail added to each render strand at interpolation, deterministic per strand (the same shape in
+// every frame and run): clumping toward clump centres hashed in each scalp triangle, curl around the clumped
+// centreline, frizz. The default adds nothing (each strand the plain blend of its three guides). Lengths are
+// scene units; v runs from 0 at the root to 1 at the tip; curl and frizz ramp in over the first 15% of v.
+struct GroomSettings {
+  std::uint32_t clumpsPerTriangle = 0;  // [0, 64]; 0: no clumping
+  float clumpStrength = 0.0f;           // pull toward the clump centre at the tip, [0, 1]
+  float clumpShape = 1.0f;              // the pull is clumpStrength x v^clumpShape, [0.1, 10]
+  float curlRadius = 0.0f;              // helix radius, [0, 1]; 0: no curl
+  float curlTurns = 0.0f;               // turns per unit of strand length, [0, 10000]
+  float curlVariation = 0.0f;           // per-strand spread of radius and turns, [0, 1]
+  float frizzAmplitude = 0.0f;          // at the tip (growing as v^2), [0, 1]; 0: no frizz
+  float frizzFrequency = 40.0f;         // noise cycles per unit of length, (0, 10000]
+};
+
 struct InstanceSettings {
   SimulationSettings simulation;
   Material material;
@@ -167,6 +182,7 @@ struct InstanceSettings {
   // unchanged: they come from the asset's colliders and distance field, never from what is drawn.
   bool drawHead = true;
   LodSettings lod;
+  GroomSettings groom;
 };
 
 // One light of a frame. direction: unit, from the lit hair toward the light (a spot's: minus its axis; a

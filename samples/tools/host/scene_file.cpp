@@ -250,6 +250,20 @@ void readSimulation(JsonObject& root, SimulationParams& s) {
   o->finish();
   validateSection(s, *o, root.pointer("simulation"));
 }
+void readGroom(JsonObject& root, GroomSettings& g) {
+  auto o = root.object("groom");
+  if (!o) return;
+  o->read("clumpsPerTriangle", g.clumpsPerTriangle);
+  o->read("clumpStrength", g.clumpStrength);
+  o->read("clumpShape", g.clumpShape);
+  o->read("curlRadius", g.curlRadius);
+  o->read("curlTurns", g.curlTurns);
+  o->read("curlVariation", g.curlVariation);
+  o->read("frizzAmplitude", g.frizzAmplitude);
+  o->read("frizzFrequency", g.frizzFrequency);
+  o->finish();
+  validateSection(g, *o, root.pointer("groom"));
+}
 }  // namespace
 
 Scene parseScene(const std::string& jsonText, const std::string& source, const std::filesystem::path& baseDir) {
@@ -266,6 +280,7 @@ Scene parseScene(const std::string& jsonText, const std::string& source, const s
   readCamera(root, scene.camera);
   readRender(root, scene.render);
   readSimulation(root, scene.simulation);
+  readGroom(root, scene.groom);
   root.finish();
   return scene;
 }

@@ -1,0 +1,37 @@
+#include "engine/core/hair/groom.h"
+
+#include <cmath>
+#include <string>
+
+#include "engine/core/error.h"
+
+namespace hp {
+namespace {
+void checkRange(const char* field, float value, float lo, float hi) {
+  if (!(value >= lo && value <= hi))
+    throw Error(std::string("GroomSettings.") + field + " must be in [" + std::to_string(lo) + ", " + std::to_string(hi) +
+                "], got " + std::to_string(value));
+}
+}  // namespace
+
+void GroomSettings::validate() const {
+  if (clumpsPerTriangle > 64)
+    throw Error("GroomSettings.clumpsPerTriangle must be in [0, 64], got " + std::to_string(clumpsPerTriangle));
+  checkRange("clumpStrength", clumpStrength, 0.0f, 1.0f);
+  checkRange("clumpShape", clumpShape, 0.1f, 10.0f);
+  checkRange("curlRadius", curlRadius, 0.0f, 1.0f);
+  checkRange("curlTurns", curlTurns, 0.0f, 10000.0f);
+  checkRange("curlVariation", curlVariation, 0.0f, 1.0f);
+  checkRange("frizzAmplitude", frizzAmplitude, 0.0f, 1.0f);
+  if (!(frizzFrequency > 0.0f && frizzFrequency <= 10000.0f))
+    throw Error("GroomSettings.frizzFrequency must be in (0, 10000], got " + std::to_string(frizzFrequency));
+}
+
+gpu::GroomParams groomParams(const GroomSettings& g) {
+  gpu::GroomParams p{};
+  p.clump = glm::vec4(float(g.clumpsPerTriangle), g.clumpStrength, g.clumpShape, 0.0f);
+  p.curl = glm::vec4(g.curlRadius, g.curlTurns, g.curlVariation, 0.0f);
+  p.frizz = glm::vec4(g.frizzAmplitude, g.frizzFrequency, 0.0f, 0.0f);
+  return p;
+}
+}  // namespace hp

@@ -1,0 +1,26 @@
+#pragma once
+// Contract: the groom detail the interpolation adds to each render strand (shaders/interpolate.comp,
+// docs/THEORY.md "Groom detail"): clumping toward clump centres in each scalp triangle, curl around the
+// clumped centreline and frizz, all deterministic per strand. The default adds nothing: every strand is
+// the plain blend of its three guides. Host-only; validate() throws hp::Error naming the field.
+#include <cstdint>
+
+#include "shaders/shared/strands.h"
+
+namespace hp {
+struct GroomSettings {
+  std::uint32_t clumpsPerTriangle = 0;  // clump centres hashed in each scalp triangle, [0, 64]; 0: none
+  float clumpStrength = 0.0f;           // pull toward the centre at the tip, [0, 1]
+  float clumpShape = 1.0f;              // the pull along the strand is strength x v^shape, [0.1, 10]
+  float curlRadius = 0.0f;              // helix radius around the centreline (scene units), [0, 1]
+  float curlTurns = 0.0f;               // turns per scene unit of strand length, [0, 10000]
+  float curlVariation = 0.0f;           // per-strand spread of radius and turns (+-half of it), [0, 1]
+  float frizzAmplitude = 0.0f;          // noise across the strand at the tip (scene units; v^2), [0, 1]
+  float frizzFrequency = 40.0f;         // noise cycles per scene unit of length, (0, 10000]
+  bool operator==(const GroomSettings&) const = default;
+  bool any() const { return clumpsPerTriangle > 0 || curlRadius > 0.0f || frizzAmplitude > 0.0f; }
+  void validate() const;
+};
+
+gpu::GroomParams groomParams(const GroomSettings& groom);
+}  // namespace hp

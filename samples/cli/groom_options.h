@@ -1,0 +1,20 @@
+#pragma once
+// Contract: the groom options shared by `render`, `reference`, `view` (through frame options) and `strands`:
+// --clump, --curl, --frizz, each overriding its part of the scene's "groom" section
+// (engine/core/hair/groom.h). applyGroomOptions validates the result (hp::Error naming the option).
+#include <CLI/CLI.hpp>
+
+#include <vector>
+
+#include "engine/core/hair/groom.h"
+
+namespace hp::cli {
+struct GroomOptions {
+  std::vector<float> clump;  // COUNT,STRENGTH[,SHAPE]
+  std::vector<float> curl;   // RADIUS,TURNS[,VARIATION]
+  std::vector<float> frizz;  // AMPLITUDE[,FREQUENCY]
+};
+
+void addGroomOptions(CLI::App& cmd, GroomOptions& o);
+void applyGroomOptions(const GroomOptions& o, GroomSettings& groom);
+}  // namespace hp::cli
