@@ -70,6 +70,13 @@ void runSimulate(const SimulateOptions& opt) {
                            {"max_speed", stats.maxSpeed},
                            {"gpu_ms_per_frame_median", driver.medianFrameMilliseconds()},
                            {"device", ctx->properties().deviceName}};
+  // The hair layer's thickness over the head (guide middles' distance from the head's surface), where the
+  // asset has a distance field to measure it with.
+  const hp::LayerThickness layer =
+      asset.sdf ? hp::hairLayerThickness(driver.readPositions(), pass.particlesPerGuide(), *asset.sdf, driver.head())
+                : hp::LayerThickness{};
+  report["layer_thickness"] = layer.guides ? nlohmann::json{{"mean", layer.mean}, {"p90", layer.p90}, {"guides", layer.guides}}
+                                           : nlohmann::json(nullptr);
   if (opt.json) {
     std::cout << report.dump(2) << "\n";
     return;
@@ -82,6 +89,9 @@ void runSimulate(const SimulateOptions& opt) {
             << "  nan_count               " << stats.nanCount << "\n"
             << "  max_speed               " << stats.maxSpeed << "\n"
             << "  gpu ms/frame (median)   " << driver.medianFrameMilliseconds() << "\n";
+  if (layer.guides)
+    std::cout << "  layer thickness         mean " << layer.mean << ", 90th percentile " << layer.p90
+              << " (guide middles from the head's surface)\n";
 }
 
 void setupSimulate(CLI::App& app) {

@@ -23,6 +23,12 @@ TEST(CliSimulate, ReportsTheSettledStateAsJsonAndWritesTheGuides) {
   EXPECT_GE(j["min_collider_clearance"].get<double>(), -1e-5);
   EXPECT_GT(j["max_speed"].get<double>(), 0.0);
   EXPECT_GT(j["gpu_ms_per_frame_median"].get<double>(), 0.0);
+  // The default head has a distance field: the guide middles stand off it, by 3 cm on average at rest.
+  ASSERT_TRUE(j["layer_thickness"].is_object()) << r.out;
+  EXPECT_EQ(j["layer_thickness"]["guides"], j["guides"]);
+  EXPECT_GT(j["layer_thickness"]["mean"].get<double>(), 0.005);
+  EXPECT_LT(j["layer_thickness"]["mean"].get<double>(), 0.2);
+  EXPECT_GE(j["layer_thickness"]["p90"].get<double>(), j["layer_thickness"]["mean"].get<double>());
   hp::HairFileData guides = hp::readHairFile(out);
   EXPECT_EQ(guides.strandPointCount(0), j["particles_per_guide"].get<std::uint32_t>());
   EXPECT_EQ(guides.pointCount(), j["guides"].get<std::uint32_t>() * j["particles_per_guide"].get<std::uint32_t>());

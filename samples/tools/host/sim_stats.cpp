@@ -1,5 +1,6 @@
 #include "samples/tools/host/sim_stats.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -38,5 +39,24 @@ SimStats computeSimStats(std::span<const glm::vec4> positions, std::span<const g
   }
   if (!std::isfinite(s.minColliderClearance)) s.minColliderClearance = 0.0;
   return s;
+}
+
+LayerThickness hairLayerThickness(std::span<const glm::vec4> positions, std::uint32_t particlesPerGuide,
+                                  const SdfGrid& sdf, const glm::mat4& head) {
+  LayerThickness t;
+  if (particlesPerGuide == 0 || sdf.empty()) return t;
+  const glm::mat4 toHead = glm::inverse(head);
+  std::vector<double> d;
+  for (std::size_t g = 0; g + 1 <= positions.size() / particlesPerGuide; ++g) {
+    const glm::vec3 p = glm::vec3(toHead * glm::vec4(glm::vec3(positions[g * particlesPerGuide + particlesPerGuide / 2]), 1.0f));
+    if (std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z)) d.push_back(sdf.sample(p));
+  }
+  if (d.empty()) return t;
+  t.guides = d.size();
+  for (double v : d) t.mean += v / double(d.size());
+  const std::size_t k = std::min(d.size() - 1, std::size_t(std::ceil(0.9 * double(d.size()))) - 1);
+  std::nth_element(d.begin(), d.begin() + std::ptrdiff_t(k), d.end());
+  t.p90 = d[k];
+  return t;
 }
 }  // namespace hp

@@ -1,6 +1,6 @@
 #pragma once
 // Contract: measures of a simulated guide state, computed on the host from a readback (outside the
-// frame loop): segment length error, clearance to the colliders, NaNs, speed. Used by
+// frame loop): segment length error, clearance to the colliders, NaNs, speed, the hair layer's thickness. Used by
 // `hairpipe simulate`, the tests and the benchmark.
 #include <glm/glm.hpp>
 
@@ -8,8 +8,19 @@
 #include <vector>
 
 #include "engine/core/hair/collider.h"
+#include "engine/core/hair/sdf_grid.h"
 
 namespace hp {
+// How far the hair stands off the head: the distance field's value at each guide's middle particle
+// (particle P / 2, moved into head space by inverse(head)), over the guides with finite positions.
+struct LayerThickness {
+  double mean = 0.0;
+  double p90 = 0.0;  // 90th percentile
+  std::size_t guides = 0;
+};
+LayerThickness hairLayerThickness(std::span<const glm::vec4> positions, std::uint32_t particlesPerGuide,
+                                  const SdfGrid& sdf, const glm::mat4& head);
+
 struct SimStats {
   double maxLengthError = 0.0;        // max over segments of |len - rest| / rest
   double minColliderClearance = 0.0;  // min over particles and colliders of |x - c| - r_c - r_p
