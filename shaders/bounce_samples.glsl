@@ -29,7 +29,9 @@ vec3 bounceAlongStrand(uint strand, uint vertex, uint vertices) {
   uint base = strand * samples;
   vec3 b0 = unpackBounce(bounceSamples[base + k]), b1 = unpackBounce(bounceSamples[base + k + 1u]);
   float f = t - float(k);
-  const vec3 lowest = vec3(1e-4);  // keeps the logarithm finite where a sample is 0
+  // A floor relative to the larger sample keeps the logarithm finite where a sample is 0 and the blend the
+  // same at any brightness (a fixed floor made it depend on the light's intensity).
+  vec3 lowest = 1e-3 * max(b0, b1) + 1e-30;
   vec3 exponential = exp(mix(log(b0 + lowest), log(b1 + lowest), f)) - lowest;
   return 0.5 * (mix(b0, b1, f) + exponential);
 }

@@ -63,11 +63,12 @@ vec3 clumpCentre(vec3 w, uint triangle) {
   return best;
 }
 
-// Smooth value noise in [-1, 1] along x, one independent stream per key.
-float groomNoise(uint key, float x) {
+// Smooth value noise in [-1, 1] along x, one independent stream per (key, axis): the key is hashed before
+// the cell is added, so neither neighbouring keys nor the two axes share shifted copies of one stream.
+float groomNoise(uint key, uint axis, float x) {
   float i = floor(x), f = x - i;
-  uint cell = uint(int(i) + 65536);
-  float a = strandHash01(key + cell, GROOM_STREAM_FRIZZ), b = strandHash01(key + cell + 1u, GROOM_STREAM_FRIZZ);
+  uint cell = strandHash(key * 2u + axis) + uint(int(i) + 65536);
+  float a = strandHash01(cell, GROOM_STREAM_FRIZZ), b = strandHash01(cell + 1u, GROOM_STREAM_FRIZZ);
   return mix(a, b, f * f * (3.0 - 2.0 * f)) * 2.0 - 1.0;
 }
 
@@ -111,7 +112,7 @@ void interpolateGroomed(uint s, StrandBindingGpu b, uvec3 src, vec3 w) {
     float frizz = push.groom.frizz.x * c.w * c.w;
     if (frizz > 0.0) {
       float x = push.groom.frizz.y * along;
-      p += ramp * frizz * (groomNoise(key * 2u, x) * n + groomNoise(key * 2u + 1u, x) * m);
+      p += ramp * frizz * (groomNoise(key, 0u, x) * n + groomNoise(key, 1u, x) * m);
     }
     positions[dst + j] = vec4(p, c.w);
     // Tangents by central differences, one vertex behind (one-sided at the ends).

@@ -1,7 +1,7 @@
 #version 460
 // One invocation simulates one guide for one frame (docs/THEORY.md §2): per substep, pin the root to
 // the moving scalp, Verlet-integrate the free particles (gravity, wind, damping, speed clamp), pull
-// mildly toward the rest pose, then iterate length constraints (Gauss-Seidel, root to tip; the last
+// mildly toward the rest pose, keep the local shape (when on), then iterate length constraints (Gauss-Seidel, root to tip; the last
 // sweep follow-the-leader) and pearl collisions, collisions last so the final state is outside every
 // collider, then the distance grid (sdf_collide.glsl), so the final state is outside the head mesh.
 // tests/compute/sim_reference.cpp is the same algorithm in double precision; keep them in step.
@@ -88,6 +88,38 @@ void pullTowardRest(uint base, uint n, mat4 head) {
   for (uint i = 1u; i < n && k > 0.0; ++i) {
     x[i] += k * (transformPoint(head, rest[base + i].xyz) - x[i]);
     k *= frame.stiffnessFalloff;
+  }
+}
+
+// The rotation taking unit a onto unit b along the shortest arc (identity when they are opposite).
+mat3 rotationBetween(vec3 a, vec3 b) {
+  vec3 v = cross(a, b);
+  float c = dot(a, b);
+  if (c < -0.9999) return mat3(1.0);
+  mat3 vx = mat3(0.0, v.z, -v.y, -v.z, 0.0, v.x, v.y, -v.x, 0.0);  // vx * w = cross(v, w)
+  return mat3(1.0) + vx + vx * vx / (1.0 + c);
+}
+
+// Local shape (docs/THEORY.md §2.6), root to tip: segment i moves frame.localStiffness of the way to its rest
+// segment turned by the frame its parent segment carries now, the correction split between its two ends (the
+// root's child alone moves), like the length constraints'. The frame starts as the
+// root's and follows each segment as it lies after the move, by the shortest rotation from where the frame
+// expected it, so bends are kept relative to the strand itself, not to the head.
+void keepLocalShape(uint base, uint n, mat4 root) {
+  float k = frame.localStiffness;
+  mat3 carried = mat3(root);
+  for (uint i = 1u; i < n; ++i) {
+    vec3 expected = carried * (rest[base + i].xyz - rest[base + i - 1u].xyz);
+    vec3 delta = k * (x[i - 1u] + expected - x[i]);
+    if (i == 1u) {
+      x[i] += delta;  // the root does not move
+    } else {
+      x[i - 1u] -= 0.5 * delta;
+      x[i] += 0.5 * delta;
+    }
+    vec3 now = x[i] - x[i - 1u];
+    float le = length(expected), ln = length(now);
+    if (le > 1e-12 && ln > 1e-12) carried = rotationBetween(expected / le, now / ln) * carried;
   }
 }
 
@@ -200,6 +232,7 @@ void main() {
     integrate(base, n, root, accel, h);
     pullTowardRest(base, n, root);
     for (uint it = 0u; it < frame.iterations; ++it) {
+      if (frame.localStiffness > 0.0) keepLocalShape(base, n, root);
       // Symmetric sweeps converge slowly for a chain hanging from a pinned root; the last sweep is
       // follow-the-leader so lengths are exact before the final collision push.
       satisfyLengths(base, n, it + 1u == frame.iterations);

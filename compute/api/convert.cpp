@@ -115,6 +115,7 @@ hp::SimulationParams simulation(const SimulationSettings& s) {
   p.pearlRadius = s.pearlRadius;
   p.stiffness = s.stiffness;
   p.stiffnessFalloff = s.stiffnessFalloff;
+  p.localStiffness = s.localStiffness;
   p.maxSpeed = s.maxSpeed;
   p.windDirection = dvec(s.windDirection);
   p.windStrength = s.windStrength;

@@ -123,6 +123,7 @@ gpu::SimFrame SimulatePass::frameConstants(const HeadMotion& motion) const {
   f.pearlRadius = float(params_.pearlRadius);
   f.stiffness = float(params_.stiffness);
   f.stiffnessFalloff = float(params_.stiffnessFalloff);
+  f.localStiffness = float(params_.localStiffness);
   f.maxSpeed = float(params_.maxSpeed);
   f.time = float(motion.time);
   f.gustFrequency = float(params_.windGustFrequency);

@@ -11,7 +11,18 @@
 namespace hp::vk {
 namespace {
 constexpr VkBufferUsageFlags kUsage = VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
+
+// The median host wall time of `runs` empty submissions: what submitting and waiting costs without work.
+double emptySubmissionMs(const Context& ctx, std::uint32_t runs) {
+  std::vector<double> wall;
+  for (std::uint32_t i = 0; i < runs; ++i) {
+    const auto start = std::chrono::steady_clock::now();
+    submitAndWait(ctx, [](VkCommandBuffer) {}, "empty submission");
+    wall.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+  }
+  return median(wall);
 }
+}  // namespace
 
 CopyReference::CopyReference(const Context& ctx, VkDeviceSize bytes)
     : ctx_(&ctx),
@@ -51,10 +62,13 @@ CopyTiming CopyReference::measureAlone(std::uint32_t maxRuns) const {
     t.medianMs = median(last);
     t.wallMs = median(std::vector<double>(wall.end() - kSettled, wall.end()));
     t.stable = *hi - *lo <= 0.05 * t.medianMs;
-    if (t.stable) return t;
+    if (t.stable) break;
   }
-  t.medianMs = median(ms);
-  t.wallMs = median(wall);
+  if (!t.stable) {
+    t.medianMs = median(ms);
+    t.wallMs = median(wall);
+  }
+  t.emptyWallMs = emptySubmissionMs(*ctx_, kSettled);
   return t;
 }
 

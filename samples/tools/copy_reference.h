@@ -10,7 +10,8 @@
 namespace hp::vk {
 struct CopyTiming {
   double medianMs = 0.0;   // GPU timestamps: over the last runs that agreed (all runs when they never did)
-  double wallMs = 0.0;     // host wall time of a submission (submit to fence), median over the same runs
+  double wallMs = 0.0;     // host wall time of a copy's submission (submit to fence), median over the same runs
+  double emptyWallMs = 0.0;  // the same for an empty submission: what a submission costs without work
   std::uint32_t runs = 0;  // submissions made
   bool stable = false;     // the last CopyReference::kSettled runs agreed within 5% of their median
 };

@@ -48,6 +48,7 @@ void simulationSection(Tunables& t, ViewState& view, PanelChanges& c) {
   c.simulation |= editCount("iterations", t.simulation.iterations, 1, 32);
   c.simulation |= editDouble("damping", t.simulation.damping, 0.0f, 0.5f);
   c.simulation |= editDouble("stiffness", t.simulation.stiffness, 0.0f, 1.0f);
+  c.simulation |= editDouble("local shape", t.simulation.localStiffness, 0.0f, 0.9f);
 }
 
 void densitySection(Tunables& t, PanelChanges& c) {

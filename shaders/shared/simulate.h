@@ -65,7 +65,7 @@ struct SimFrame {
   uint colliderCount;
   uint capsuleCount;
   uint boneCount;
-  uint pad2;
+  float localStiffness;  // SimulationParams::localStiffness (simulate.comp keepLocalShape)
   vec4 colliders[SIM_MAX_COLLIDERS];  // head space: xyz center, w radius
   vec4 capsules[2u * SIM_MAX_CAPSULES];  // head space: [2c] xyz end a, w radius; [2c + 1] xyz end b
 };

@@ -195,7 +195,7 @@ TEST_F(PublicApi, InstanceSettingsAndSettersAreRefusedByField) {
   bad = {};
   bad.skinBounceSamples = 1;
   EXPECT_THAT(failureOf(renderer_->createInstance(*asset_, bad)),
-              HasSubstr("the skin bounce's samples per strand must be in [2, 256], got 1"));
+              HasSubstr("skinBounceSamples must be in [2, 256], got 1"));
   EXPECT_EQ(head.strandCount(), 500u);  // a refused setter changes nothing
 }
 

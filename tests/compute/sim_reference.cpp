@@ -16,6 +16,32 @@ double gustPhase(std::uint32_t guide) {  // the shader's hash, bit for bit
 
 glm::dvec3 apply(const glm::dmat4& m, const glm::dvec3& p) { return glm::dvec3(m * glm::dvec4(p, 1.0)); }
 
+// The shader's rotationBetween and keepLocalShape.
+glm::dmat3 rotationBetween(const glm::dvec3& a, const glm::dvec3& b) {
+  const glm::dvec3 v = glm::cross(a, b);
+  const double c = glm::dot(a, b);
+  if (c < -0.9999) return glm::dmat3(1.0);
+  const glm::dmat3 vx(0.0, v.z, -v.y, -v.z, 0.0, v.x, v.y, -v.x, 0.0);
+  return glm::dmat3(1.0) + vx + vx * vx / (1.0 + c);
+}
+
+void keepLocalShape(glm::dvec3* x, const glm::dvec4* rest, std::uint32_t n, const glm::dmat4& root, double k) {
+  glm::dmat3 carried(root);
+  for (std::uint32_t i = 1; i < n; ++i) {
+    const glm::dvec3 expected = carried * (glm::dvec3(rest[i]) - glm::dvec3(rest[i - 1]));
+    const glm::dvec3 delta = k * (x[i - 1] + expected - x[i]);
+    if (i == 1) {
+      x[i] += delta;
+    } else {
+      x[i - 1] -= 0.5 * delta;
+      x[i] += 0.5 * delta;
+    }
+    const glm::dvec3 now = x[i] - x[i - 1];
+    const double le = glm::length(expected), ln = glm::length(now);
+    if (le > 1e-12 && ln > 1e-12) carried = rotationBetween(expected / le, now / ln) * carried;
+  }
+}
+
 // The shader's resolvePearl: the surface point at rest length from the parent nearest to p, else radial.
 glm::dvec3 resolvePearl(const glm::dvec3& p, const glm::dvec3& parent, double restLength, const glm::dvec3& center,
                         double reach) {
@@ -114,6 +140,7 @@ void SimReference::simulateGuide(std::size_t base, const HeadMotion& motion, std
     for (std::uint32_t i = 1; i < n_ && k > 0.0; ++i, k *= params_.stiffnessFalloff)
       x[i] += k * (apply(head, glm::dvec3(rest[i])) - x[i]);
     for (std::uint32_t it = 0; it < params_.iterations; ++it) {
+      if (params_.localStiffness > 0.0) keepLocalShape(x, rest, n_, head, params_.localStiffness);
       for (std::uint32_t i = 1; i < n_; ++i) {
         glm::dvec3 d = x[i] - x[i - 1];
         double len = glm::length(d);

@@ -38,6 +38,7 @@ void SimulationParams::validate() const {
   check(std::isfinite(pearlRadius) && pearlRadius >= 0.0, "pearlRadius", "must be >= 0", pearlRadius);
   checkRange(stiffness, 0.0, 1.0, "stiffness");
   checkRange(stiffnessFalloff, 0.0, 1.0, "stiffnessFalloff");
+  checkRange(localStiffness, 0.0, 0.9, "localStiffness");
   check(std::isfinite(maxSpeed) && maxSpeed > 0.0, "maxSpeed", "must be > 0", maxSpeed);
   checkVector(windDirection, "windDirection");
   check(std::isfinite(windStrength) && windStrength >= 0.0, "windStrength", "must be >= 0", windStrength);

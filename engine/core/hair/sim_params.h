@@ -16,6 +16,10 @@ struct SimulationParams {
   double pearlRadius = 0.002;             // r_p: sphere around every particle (scene units)
   double stiffness = 0.05;                // shape stiffness toward the rest pose at the root, [0, 1]
   double stiffnessFalloff = 0.7;          // per-segment decay of the stiffness toward the tip, [0, 1]
+  // Local shape (docs/THEORY.md §2.6): every constraint iteration, each segment moves this fraction of the way
+  // to its rest-pose segment as seen from its parent segment as it lies now; keeps a strand's own bends
+  // (waves, curls) under gravity and motion. [0, 0.9] (nearer 1 the corrections overshoot); 0: off.
+  double localStiffness = 0.0;
   double maxSpeed = 10.0;                 // particle speed clamp (scene units / s), > 0
   glm::dvec3 windDirection = {1.0, 0.0, 0.0};
   double windStrength = 0.0;              // acceleration (scene units / s^2) along windDirection

@@ -106,6 +106,9 @@ struct SimulationSettings {
   double pearlRadius = 0.002;             // sphere around every particle
   double stiffness = 0.05;                // shape stiffness toward the rest pose at the root, [0, 1]
   double stiffnessFalloff = 0.7;          // its per-segment decay toward the tip, [0, 1]
+  // Each segment's pull toward its rest-pose bend relative to its parent segment (keeps waves and curls
+  // under gravity and motion), [0, 0.9]; 0: off.
+  double localStiffness = 0.0;
   double maxSpeed = 10.0;                 // particle speed clamp, > 0
   std::array<double, 3> windDirection = {1.0, 0.0, 0.0};
   double windStrength = 0.0;              // acceleration along windDirection
@@ -172,9 +175,6 @@ struct InstanceSettings {
   ScalpInput scalp;
   std::uint32_t verticesPerStrand = 36;  // render strand vertices, [guide particles, 256]
   bool guidesOnly = false;               // debug: draw the smoothed guides instead of dense strands
-  // Points along each strand where the skin's bounce light is gathered once a frame; the shading
-  // interpolates between them. [2, 256]; verticesPerStrand or more gathers at every vertex.
-  std::uint32_t skinBounceSamples = 8;
   // false: hair only. The asset's proxy head is not drawn (recordDraw draws this instance's hair alone,
   // depth-tested against what the application drew before it; the compute rasterizer tests against the
   // depth image it is given), casts no shadow (neither in the opacity maps nor in the heads' depth map)
@@ -183,6 +183,9 @@ struct InstanceSettings {
   bool drawHead = true;
   LodSettings lod;
   GroomSettings groom;
+  // Points along each strand where the skin's bounce light is gathered once a frame; the shading
+  // interpolates between them. [2, 256]; verticesPerStrand or more gathers at every vertex.
+  std::uint32_t skinBounceSamples = 8;
 };
 
 // One light of a frame. direction: unit, from the lit hair toward the light (a spot's: minus its axis; a

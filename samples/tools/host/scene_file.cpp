@@ -242,6 +242,7 @@ void readSimulation(JsonObject& root, SimulationParams& s) {
   o->read("pearlRadius", s.pearlRadius);
   o->read("stiffness", s.stiffness);
   o->read("stiffnessFalloff", s.stiffnessFalloff);
+  o->read("localStiffness", s.localStiffness);
   o->read("maxSpeed", s.maxSpeed);
   o->read("windDirection", s.windDirection);
   o->read("windStrength", s.windStrength);
