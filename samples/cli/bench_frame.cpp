@@ -144,17 +144,7 @@ FrameResult benchFrame(const vk::Context& ctx, const FrameCase& c) {
   r.opacityRaster = hair.shadows().raster();
   r.copyBytes = copy.bytesMoved();
   r.copyAlone = copy.measureAlone();
-  const double inFrame = r.passes.at("copy").medianMs, alone = r.copyAlone.medianMs;
-  // What the copy's submission takes beyond an empty one's is (about) the copy itself.
-  const double executed = r.copyAlone.wallMs - r.copyAlone.emptyWallMs;
-  char why[200] = "";
-  if (!(alone >= 0.5 * executed))
-    std::snprintf(why, sizeof why,
-                  "the copy alone reads %.3f ms by timestamps, while its submission takes %.3f ms more than an empty one",
-                  alone, executed);
-  else if (!(inFrame >= 0.5 * alone && inFrame <= 2.0 * alone))
-    std::snprintf(why, sizeof why, "the copy reads %.3f ms inside the frame, %.3f ms alone", inFrame, alone);
-  r.unresolvedBecause = why;
+  r.unresolvedBecause = vk::timestampsUnresolvedBecause(r.copyAlone, r.passes.at("copy").medianMs);
   r.timestampsResolvePasses = r.unresolvedBecause.empty();
   countBytes(r, hair.strands().layout());
   return r;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
 #include <vector>
 
 #include "engine/vk/barriers.h"
@@ -70,6 +71,20 @@ CopyTiming CopyReference::measureAlone(std::uint32_t maxRuns) const {
   }
   t.emptyWallMs = emptySubmissionMs(*ctx_, kSettled);
   return t;
+}
+
+std::string timestampsUnresolvedBecause(const CopyTiming& alone, double inSubmissionMs) {
+  // What the copy's submission takes beyond an empty one's is (about) the copy itself.
+  const double executed = alone.wallMs - alone.emptyWallMs;
+  char why[200] = "";
+  if (!(alone.medianMs >= 0.5 * executed))
+    std::snprintf(why, sizeof why,
+                  "the copy alone reads %.3f ms by timestamps, while its submission takes %.3f ms more than an empty one",
+                  alone.medianMs, executed);
+  else if (!(inSubmissionMs >= 0.5 * alone.medianMs && inSubmissionMs <= 2.0 * alone.medianMs))
+    std::snprintf(why, sizeof why, "the copy reads %.3f ms beside the passes, %.3f ms alone", inSubmissionMs,
+                  alone.medianMs);
+  return why;
 }
 
 double gigabytesPerSecond(double bytes, double milliseconds) {

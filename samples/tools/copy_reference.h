@@ -4,6 +4,8 @@
 // the same device copies in the same run. The copy moves 2 x bytes (read + write). measureAlone() times it in
 // submissions of its own, repeated until it is stable: the yardstick; the copy recorded inside a frame tells
 // whether the device's timestamps resolve that frame's passes (lavapipe's do not: docs/PERFORMANCE.md).
+#include <string>
+
 #include "engine/vk/buffer.h"
 #include "engine/vk/profiler.h"
 
@@ -30,6 +32,11 @@ class CopyReference {
   Buffer source_;
   Buffer destination_;
 };
+
+// Why this device's timestamps do not resolve the passes recorded beside a copy that read inSubmissionMs
+// (empty: they do). They do when they time the copy alone (at least half of what its submission takes
+// beyond an empty submission's wall time) and the copy among the passes reads within 2x of alone.
+std::string timestampsUnresolvedBecause(const CopyTiming& alone, double inSubmissionMs);
 
 double gigabytesPerSecond(double bytes, double milliseconds);
 }  // namespace hp::vk

@@ -92,6 +92,26 @@ TEST(CliBench, SuitesAreSubcommandsOfBench) {
   EXPECT_EQ(assets.out.find("median of"), std::string::npos) << "the frame bench ran too";
 }
 
+// `bench strands` and `bench sim` time their copy yardstick alone too, and derive bandwidth only where the
+// device's timestamps resolve the passes (the same rule as the frame bench's).
+TEST(CliBench, StrandAndSimSuitesDeriveBandwidthOnlyWhereTimestampsResolve) {
+  auto strands = runCli({"bench", "strands", "--strands", "1000", "--frames", "1", "--json"});
+  ASSERT_EQ(strands.exitCode, 0) << strands.err;
+  for (const auto& row : nlohmann::json::parse(strands.out)["results"]) {
+    EXPECT_GE(row["copy"]["alone_runs"].get<unsigned>(), 5u);
+    const bool resolved = row["timestamps_resolve_passes"].get<bool>();
+    EXPECT_EQ(row["interpolate"].contains("fraction_of_copy"), resolved);
+    EXPECT_EQ(row["unresolved_because"].get<std::string>().empty(), resolved);
+  }
+  auto sim = runCli({"bench", "sim", "--guides", "100", "--frames", "1", "--json"});
+  ASSERT_EQ(sim.exitCode, 0) << sim.err;
+  for (const auto& row : nlohmann::json::parse(sim.out)["results"]) {
+    const bool resolved = row["timestamps_resolve_passes"].get<bool>();
+    EXPECT_EQ(row.contains("fraction_of_copy"), resolved);
+    EXPECT_GT(row["copy_gb_per_s"].get<double>(), 0.0);
+  }
+}
+
 // `bench --skin-bounce` takes off and/or on; anything else is refused by name before a frame runs.
 TEST(CliBench, RefusesABadSkinBounceValue) {
   auto r = runCli({"bench", "--raster", "compute", "--skin-bounce", "off,maybe", "--frames", "1"});
