@@ -202,6 +202,12 @@ nlohmann::json frameCamera(Scene& scene, const hp::HairAsset& asset) {
     std::cerr << "hairpipe: guessed " << scene.guessed << "; camera framed on the hair (target " << c.target.x
               << ", " << c.target.y << ", " << c.target.z << ", distance " << c.distance << ")\n";
   }
+  if (asset.fittedCollider && !asset.colliders.empty()) {
+    const float radius = asset.colliders.front().radius;
+    guessed["collider"] = {{"fitted_sphere_radius", radius}, {"drawn", false}};
+    std::cerr << "hairpipe: " << asset.name << " has no head mesh: the sphere fitted to its roots (radius " << radius
+              << ") keeps the hair out but is not drawn\n";
+  }
   const float aspect = float(scene.render.width) / float(scene.render.height);
   if (hp::pointsInView(scene.camera, aspect, asset.guides.positions) == 0) {
     const auto& c = scene.camera;

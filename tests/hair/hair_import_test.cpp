@@ -69,7 +69,9 @@ TEST(HairImport, BuildsTopologyAndFitsAHeadCollider) {
   ASSERT_EQ(a.colliders.size(), 1u);
   EXPECT_NEAR(a.colliders[0].radius, 0.1f, 1e-4f);
   EXPECT_NEAR(glm::length(a.colliders[0].center), 0.0f, 1e-4f);
-  for (const auto& p : a.head.positions) EXPECT_LE(glm::length(p - a.colliders[0].center), 0.1f);
+  // A fitted sphere collides but is not drawn: it would hide the hair it was fitted to.
+  EXPECT_TRUE(a.fittedCollider);
+  EXPECT_TRUE(a.head.positions.empty());
 }
 
 TEST(HairImport, SceneCollidersReplaceTheFittedOne) {
@@ -77,6 +79,8 @@ TEST(HairImport, SceneCollidersReplaceTheFittedOne) {
   o.colliders = std::vector<SphereCollider>{{{0, 0, 0}, 0.05f}, {{0, -0.2f, 0}, 0.04f}};
   HairAsset a = importHairAsset(model(), o, "m.hair");
   EXPECT_EQ(a.colliders, *o.colliders);
+  EXPECT_FALSE(a.fittedCollider);  // given colliders are drawn as the head
+  EXPECT_FALSE(a.head.positions.empty());
 }
 
 TEST(HairImport, RootsThatCannotBeTriangulatedAreAnError) {

@@ -34,5 +34,8 @@ struct HairAsset {
   std::vector<SphereCollider> colliders;
   std::shared_ptr<const SdfGrid> sdf;  // null: no distance-field collider (shared: grids are large)
   HeadMesh head;
+  // The colliders were fitted to the roots by an importer, not given: they collide but are not drawn (head
+  // is empty), and tools say so.
+  bool fittedCollider = false;
 };
 }  // namespace hp

@@ -64,7 +64,8 @@ HairAsset assembleImportedAsset(GuideSet guides, std::vector<glm::uvec3> triangl
   asset.colliders = options.colliders ? *options.colliders : fittedColliders(guides);
   asset.topology = buildInterpolationTopology(guides.roots(), std::move(triangles), options.density);
   asset.guides = std::move(guides);
-  asset.head = collidersMesh(asset.colliders);
+  asset.fittedCollider = !options.colliders || options.collidersFitted;
+  if (!asset.fittedCollider) asset.head = collidersMesh(asset.colliders);
   return asset;
 }
 

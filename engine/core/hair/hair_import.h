@@ -26,11 +26,14 @@ struct HairImportOptions {
   RootTriangulationOptions triangulation;
   DensityOptions density;
   std::optional<std::vector<SphereCollider>> colliders;  // empty optional: fit one to the roots
+  bool collidersFitted = false;  // `colliders` were fitted by the importer, not given (collide, draw no head)
 };
 
 GuideSet guidesFromHair(const HairFileData& data, const HairImportOptions& options, const std::string& source);
 
-// Builds topology, colliders and head mesh around existing guides (shared by .hair and .obj imports).
+// Builds topology, colliders and head mesh around existing guides (shared by .hair and .obj imports). Given
+// colliders are drawn as the head; fitted ones only collide (a sphere fitted to a strip of roots is a poor
+// guess that would hide the hair it was fitted to): the asset has no head mesh and fittedCollider set.
 HairAsset assembleImportedAsset(GuideSet guides, std::vector<glm::uvec3> triangles,
                                 const HairImportOptions& options, std::string name);
 

@@ -44,14 +44,15 @@ std::shared_ptr<const SdfGrid> colliderGrid(const Scene& scene) {
   }
 }
 
-// An OBJ scalp grows guides; without scene colliders a sphere fitted to the scalp keeps hair out.
+// An OBJ scalp grows guides; without scene colliders a sphere fitted to the scalp keeps hair out and is drawn
+// as the head (the scalp is a surface: its fit is well posed, unlike a strip of hair roots').
 // Scene collider meshes also shape the growth (guides slide over their grid).
 HairAsset objAsset(const Scene& scene, const std::shared_ptr<const SdfGrid>& grid) {
   ScalpMesh scalp = loadObjScalp(scene.model.path, scene.model.transform);
   HairImportOptions o = importOptions(scene);
   if (!o.colliders) {
     SphereCollider fitted = fitSphere(scalp.positions).sphere;
-    o.colliders = std::vector<SphereCollider>{fitted};
+    o.colliders = std::vector<SphereCollider>{fitted};  // fitted to a surface, not to roots: drawn
   }
   DistanceFunction field;
   if (grid) field = [&](const glm::vec3& p) { return grid->sample(p); };
