@@ -6,15 +6,12 @@
 // (uvec2[]) and `frame` (RenderFrame: headBounce.x on, headBounce.z = K).
 #ifndef HP_BOUNCE_SAMPLES_GLSL
 #define HP_BOUNCE_SAMPLES_GLSL
+#include "half_rgb.glsl"
 
 // Sample k's position along the strand, in vertices (continuous).
 float bounceSampleVertex(uint k, uint samples, uint vertices) {
   return float(k) * float(vertices - 1u) / float(max(samples, 2u) - 1u);
 }
-
-uvec2 packBounce(vec3 bounce) { return uvec2(packHalf2x16(bounce.rg), packHalf2x16(vec2(bounce.b, 0.0))); }
-
-vec3 unpackBounce(uvec2 v) { return vec3(unpackHalf2x16(v.x), unpackHalf2x16(v.y).x); }
 
 #ifndef HP_BOUNCE_SAMPLES_WRITER
 // The bounce at vertex `vertex` of the chunk's strand `strand` (0 when the frame has none): halfway between
@@ -27,7 +24,7 @@ vec3 bounceAlongStrand(uint strand, uint vertex, uint vertices) {
   float t = float(vertex) * float(samples - 1u) / float(vertices - 1u);
   uint k = min(uint(t), samples - 2u);  // the samples k and k + 1 around t
   uint base = strand * samples;
-  vec3 b0 = unpackBounce(bounceSamples[base + k]), b1 = unpackBounce(bounceSamples[base + k + 1u]);
+  vec3 b0 = unpackHalfRgb(bounceSamples[base + k]), b1 = unpackHalfRgb(bounceSamples[base + k + 1u]);
   float f = t - float(k);
   // A floor relative to the larger sample keeps the logarithm finite where a sample is 0 and the blend the
   // same at any brightness (a fixed floor made it depend on the light's intensity).

@@ -81,7 +81,7 @@ vec4 centreline(uvec3 src, vec3 w, vec3 centre, uint j) {
 }
 
 void interpolateGroomed(uint s, StrandBindingGpu b, uvec3 src, vec3 w) {
-  uint key = uint(b.random * 16777216.0);
+  uint key = strandKey(b.random);
   vec3 centre = push.groom.clump.x >= 1.0 ? clumpCentre(w, b.triangle) : w;
   float vary = push.groom.curl.z;
   float radius = push.groom.curl.x * (1.0 + vary * (strandHash01(key, GROOM_STREAM_CURL) - 0.5));
@@ -137,13 +137,9 @@ void interpolate(uint s) {
   }
   uint dst = s * push.vertices;
   for (uint j = 0u; j < push.vertices; ++j) {
-    vec4 pa = guidePositions[src.x + j];
-    vec3 pos = w.x * pa.xyz + w.y * guidePositions[src.y + j].xyz + w.z * guidePositions[src.z + j].xyz;
     vec3 ta = guideTangents[src.x + j].xyz;
-    vec3 tan = w.x * ta + w.y * guideTangents[src.y + j].xyz + w.z * guideTangents[src.z + j].xyz;
-    float len2 = dot(tan, tan);
-    tan = len2 > 1e-30 ? tan * inversesqrt(len2) : ta;
-    positions[dst + j] = vec4(pos, pa.w);  // w = v, the same for all guides
+    vec3 tan = unitOr(w.x * ta + w.y * guideTangents[src.y + j].xyz + w.z * guideTangents[src.z + j].xyz, ta);
+    positions[dst + j] = vec4(blendAt(src, w, j), guidePositions[src.x + j].w);  // w = v, the same for all guides
     tangents[dst + j] = vec4(tan, 0.0);
   }
   attributes[s] = makeStrandAttributes(b.random, b.triangle);

@@ -16,6 +16,7 @@
 // radiance, into the far layer's coverage-weighted motion: sum(a s m) / sum(a s) (0 without hair).
 #include "shared/raster.h"
 #include "common.glsl"
+#include "half_rgb.glsl"
 
 layout(local_size_x = RASTER_FINE_SIZE) in;
 layout(constant_id = 0) const uint MOTION = 0u;
@@ -34,7 +35,6 @@ layout(std430, binding = RASTER_BINDING_PARAMS) readonly buffer Params { RasterP
 layout(std430, binding = RASTER_BINDING_MOTION) readonly buffer Motion { uint motion[]; };
 layout(binding = RASTER_BINDING_MOTION_OUTPUT, rg16f) uniform writeonly image2D motionImage;
 
-vec3 radianceOf(uvec2 c) { return vec3(unpackHalf2x16(c.x), unpackHalf2x16(c.y).x); }
 uint samplesIn(uvec2 mask) { return uint(bitCount(mask.x) + bitCount(mask.y)); }  // of the 8 x 8 overlap mask
 
 // Hair composited front to back so far: premultiplied radiance, alpha, the overlap mask's covered samples,
@@ -118,7 +118,7 @@ void main() {
     uvec2 band = uvec2(0u);
     for (uint row = 0u; row < RASTER_MASK_SIDE; ++row)
       band[row >> 2u] |= rasterBandRowBits(d, w, n.x, n.y, row) << ((row & 3u) * 8u);
-    vec3 c = mix(radianceOf(colors[v]), radianceOf(colors[v + 1u]), t);
+    vec3 c = mix(unpackHalfRgb(colors[v]), unpackHalfRgb(colors[v + 1u]), t);
 #ifdef RASTER_HEAD_MULTISAMPLED  // one sample: nearest == farthest, nothing is hidden at some samples only
     if (z >= nearest) {  // hidden at some head samples: those keep only the hair in front of all of them
       if (!split) near = far;

@@ -42,5 +42,5 @@ void main() {
   uint q = params.verticesPerStrand, strand = i / q;
   vec3 bounce = bounceAlongStrand(strand, i - strand * q, q);
   vec3 radiance = hairRadiance(pos.xyz, tangents[i].xyz, attributes[strand].colorScale, bounce);
-  colors[global] = uvec2(packHalf2x16(radiance.rg), packHalf2x16(vec2(radiance.b, 0.0)));
+  colors[global] = packHalfRgb(radiance);
 }

@@ -1,8 +1,8 @@
 #version 460
 // One invocation simulates one guide for one frame (docs/THEORY.md §2): per substep, pin the root to
 // the moving scalp, Verlet-integrate the free particles (gravity, wind, damping, speed clamp), pull
-// mildly toward the rest pose, keep the local shape (when on), then iterate length constraints (Gauss-Seidel, root to tip; the last
-// sweep follow-the-leader) and pearl collisions, collisions last so the final state is outside every
+// mildly toward the rest pose, then iterate the local shape (when on), length constraints (Gauss-Seidel,
+// root to tip; the last sweep follow-the-leader) and pearl collisions, collisions last so the final state is outside every
 // collider, then the distance grid (sdf_collide.glsl), so the final state is outside the head mesh.
 // tests/compute/sim_reference.cpp is the same algorithm in double precision; keep them in step.
 #include "shared/simulate.h"

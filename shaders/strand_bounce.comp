@@ -25,7 +25,7 @@ void main() {
   uint n = hpThreadId(RENDER_BOUNCE_WORKGROUP_SIZE);
   if (n >= push.strandCount * push.samples) return;
   if (frame.headBounce.x == 0.0) {  // no light in slot 0 to bounce (the pass is not recorded then)
-    bounceSamples[n] = packBounce(vec3(0.0));
+    bounceSamples[n] = packHalfRgb(vec3(0.0));
     return;
   }
   uint strand = n / push.samples, k = n % push.samples;
@@ -35,5 +35,5 @@ void main() {
   uint base = strand * push.vertices;
   vec3 p = mix(positions[base + v0].xyz, positions[base + v1].xyz, along - float(v0));
   LightSample ls = sampleLight(frame.lights[frame.lightCount.y], p);  // the light of shadow slot 0
-  bounceSamples[n] = packBounce(headBounceAt(p, ls.L, frameOpacityAlpha(0u, p, false)));
+  bounceSamples[n] = packHalfRgb(headBounceAt(p, ls.L, frameOpacityAlpha(0u, p, false)));
 }

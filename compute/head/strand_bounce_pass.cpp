@@ -24,7 +24,7 @@ StrandBouncePass::StrandBouncePass(const vk::Context& ctx, const compute::Strand
     : strands_(&strands) {
   for (const compute::StrandChunk& c : strands.chunks()) {
     Chunk chunk{vk::DescriptorSet(ctx, kBindings, "strand bounce [chunk " + std::to_string(chunks_.size()) + "]"),
-                c.range};
+                c.range.strandCount};
     const vk::DescriptorSet& s = chunk.set;
     s.writeStorageBuffer(gpu::RENDER_BINDING_FRAME, frameBlock);
     s.writeSampledImage(gpu::RENDER_BINDING_OPACITY, shadows.opacityView, shadows.sampler);
@@ -40,15 +40,13 @@ StrandBouncePass::StrandBouncePass(const vk::Context& ctx, const compute::Strand
                                       {chunks_.front().set.layout()}, sizeof(gpu::StrandBouncePush), "strand bounce");
 }
 
-void StrandBouncePass::record(VkCommandBuffer cmd, std::uint32_t strandLimit) const {
+void StrandBouncePass::record(VkCommandBuffer cmd) const {
   const compute::StrandLayout& layout = strands_->layout();
   for (const Chunk& c : chunks_) {
-    const std::uint32_t strands = compute::strandsWithin(c.range, strandLimit);
-    if (strands == 0) continue;
-    const gpu::StrandBouncePush push{strands, layout.verticesPerStrand, layout.bounceSamples, 0u};
+    const gpu::StrandBouncePush push{c.strandCount, layout.verticesPerStrand, layout.bounceSamples, 0u};
     pipeline_->bind(cmd, c.set.set());
     pipeline_->push(cmd, push);
-    pipeline_->dispatch(cmd, strands * layout.bounceSamples);
+    pipeline_->dispatch(cmd, c.strandCount * layout.bounceSamples);
   }
 }
 }  // namespace hp::render

@@ -21,13 +21,13 @@ class StrandBouncePass {
  public:
   StrandBouncePass(const vk::Context& ctx, const compute::StrandBuffers& strands, VkBuffer frameBlock,
                    const ShadowInputs& shadows, vk::PipelineLibrary* library = nullptr);
-  // The first strandLimit strands (the level of detail's prefix; compute::kAllStrands: all).
-  void record(VkCommandBuffer cmd, std::uint32_t strandLimit) const;
+  // Every strand: a view may draw more of them than the last frame's level of detail did.
+  void record(VkCommandBuffer cmd) const;
 
  private:
   struct Chunk {
     vk::DescriptorSet set;
-    compute::ChunkRange range;
+    std::uint32_t strandCount;
   };
   const compute::StrandBuffers* strands_;
   std::vector<Chunk> chunks_;

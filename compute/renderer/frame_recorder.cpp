@@ -152,8 +152,8 @@ void recordShadowPasses(const vk::Context& ctx, VkCommandBuffer cmd, const rende
 }
 
 void recordStrandBounce(const vk::Context& ctx, VkCommandBuffer cmd, const render::ShadowMaps& maps,
-                        std::span<const BounceWork> work) {
-  if (work.empty()) return;
+                        std::span<const render::StrandBouncePass* const> passes) {
+  if (passes.empty()) return;
   const VkImage opacity = maps.image().handle();
   const std::uint32_t layers = maps.image().desc().layers;
   const render::HeadBounceMap& bounce = maps.bounceMap();
@@ -164,7 +164,7 @@ void recordStrandBounce(const vk::Context& ctx, VkCommandBuffer cmd, const rende
   vk::imageBarrier(ctx, cmd, opacity, VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::FragmentSampled,
                    vk::ImageUse::ComputeSampled, layers);
   bounce.transition(cmd, vk::ImageUse::FragmentSampled, vk::ImageUse::ComputeSampled);
-  for (const BounceWork& w : work) w.pass->record(cmd, w.strandLimit);
+  for (const render::StrandBouncePass* pass : passes) pass->record(cmd);
   bounce.transition(cmd, vk::ImageUse::ComputeSampled, vk::ImageUse::FragmentSampled);
   vk::imageBarrier(ctx, cmd, opacity, VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::ComputeSampled,
                    vk::ImageUse::FragmentSampled, layers);

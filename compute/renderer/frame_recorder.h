@@ -52,11 +52,6 @@ struct ShadowCaster {
   std::uint32_t strandLimit = compute::kAllStrands;  // the level of detail's prefix of the strands
 };
 
-struct BounceWork {
-  const render::StrandBouncePass* pass;
-  std::uint32_t strandLimit = compute::kAllStrands;
-};
-
 void recordUpdatePasses(const vk::Context& ctx, VkCommandBuffer cmd, std::span<const UpdateWork> work,
                         vk::GpuProfiler* profiler = nullptr);
 // The render strands' compute writes become visible to the vertex stage (shadows and draws).
@@ -69,5 +64,5 @@ void recordShadowPasses(const vk::Context& ctx, VkCommandBuffer cmd, const rende
                         const compute::ShadowLight& light, const compute::BoundsFraming& framing,
                         vk::GpuProfiler* profiler = nullptr, const render::HeadShadowView& headView = {});
 void recordStrandBounce(const vk::Context& ctx, VkCommandBuffer cmd, const render::ShadowMaps& maps,
-                        std::span<const BounceWork> work);
+                        std::span<const render::StrandBouncePass* const> passes);
 }  // namespace hp

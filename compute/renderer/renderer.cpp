@@ -276,13 +276,12 @@ void Renderer::recordHeadBounce(VkCommandBuffer cmd, const render::FrameLights& 
   for (HairInstance* i : instances) i->bounce_->draw(cmd, i->headToWorld());
   map.end(cmd);
   if (profiler) profiler->end(cmd);
-  // Every strand of each instance that takes the bounce: a view may draw more of them than the last frame's
-  // level of detail did.
+  // Every strand of each instance that takes the bounce (StrandBouncePass::record).
   if (profiler) profiler->begin(cmd, "strand bounce");
-  std::vector<BounceWork> work;
+  std::vector<const render::StrandBouncePass*> passes;
   for (HairInstance* i : instances)
-    if (i->settings_.look.skinBounce) work.push_back({&i->geometry_->bounce});
-  recordStrandBounce(ctx_, cmd, *shadows_, work);
+    if (i->settings_.look.skinBounce) passes.push_back(&i->geometry_->bounce);
+  recordStrandBounce(ctx_, cmd, *shadows_, passes);
   if (profiler) profiler->end(cmd);
 }
 

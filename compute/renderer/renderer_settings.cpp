@@ -36,9 +36,7 @@ void InstanceSettings::validate() const {
   look.validate();
   hp::validate(lod);
   groom.validate();
-  if (strands.bounceSamples < 2 || strands.bounceSamples > gpu::MAX_VERTICES_PER_STRAND)
-    throw Error("InstanceSettings: skinBounceSamples must be in [2, " + std::to_string(gpu::MAX_VERTICES_PER_STRAND) +
-                "], got " + std::to_string(strands.bounceSamples));
+  compute::validateBounceSamples(strands.bounceSamples, "InstanceSettings: skinBounceSamples");
 }
 
 void validate(const hairpipe::LodSettings& lod) {

@@ -63,15 +63,19 @@ void validateVerticesPerStrand(std::uint32_t q, std::uint32_t p) {
                 std::to_string(gpu::MAX_VERTICES_PER_STRAND) + "], got " + std::to_string(q));
 }
 
+void validateBounceSamples(std::uint32_t samples, const char* field) {
+  if (samples < 2 || samples > gpu::MAX_VERTICES_PER_STRAND)
+    throw Error(std::string(field) + " must be in [2, " + std::to_string(gpu::MAX_VERTICES_PER_STRAND) + "], got " +
+                std::to_string(samples));
+}
+
 StrandLayout planStrandLayout(std::uint32_t guideCount, std::uint32_t particlesPerGuide, std::uint32_t triangleCount,
                               std::uint32_t strandCount, const StrandOptions& options,
                               VkDeviceSize maxStorageBufferRange) {
   validateVerticesPerStrand(options.verticesPerStrand, particlesPerGuide);
   if (particlesPerGuide < 2) throw Error("strand layout: particlesPerGuide must be at least 2");
   if (guideCount == 0) throw Error("strand layout: no guides");
-  if (options.bounceSamples < 2 || options.bounceSamples > gpu::MAX_VERTICES_PER_STRAND)
-    throw Error("strand layout: the skin bounce's samples per strand must be in [2, " +
-                std::to_string(gpu::MAX_VERTICES_PER_STRAND) + "], got " + std::to_string(options.bounceSamples));
+  validateBounceSamples(options.bounceSamples, "strand layout: bounceSamples");
   StrandLayout l;
   l.guideCount = guideCount;
   l.particlesPerGuide = particlesPerGuide;

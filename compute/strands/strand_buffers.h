@@ -72,6 +72,8 @@ struct StrandLayout {
 
 // Throws hp::Error naming verticesPerStrand unless particlesPerGuide <= Q <= 256.
 void validateVerticesPerStrand(std::uint32_t verticesPerStrand, std::uint32_t particlesPerGuide);
+// Throws hp::Error "<field> must be in [2, 256], got N" unless the skin bounce's points per strand are there.
+void validateBounceSamples(std::uint32_t bounceSamples, const char* field);
 
 // Throws hp::Error naming the buffer and maxStorageBufferRange when a buffer that cannot be chunked
 // would exceed it (or one strand alone would).

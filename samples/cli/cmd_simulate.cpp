@@ -56,8 +56,9 @@ void runSimulate(const SimulateOptions& opt) {
   driver.runFrames(opt.frames, [&](std::uint32_t done) { progress.update(done); });
   progress.finish();
   hp::SimStats stats = driver.stats();
+  const std::vector<glm::vec4> positions = driver.readPositions();  // the final state, read back once
   if (!opt.out.empty())
-    hp::writeHairFile(opt.out, hp::guidesToHair(finalGuides(driver.readPositions(), pass.particlesPerGuide()),
+    hp::writeHairFile(opt.out, hp::guidesToHair(finalGuides(positions, pass.particlesPerGuide()),
                                                 "hairpipe simulate: final guides"));
   hp::cli::checkValidation(*ctx);
   nlohmann::json report = {{"guides", pass.guideCount()},
@@ -73,7 +74,7 @@ void runSimulate(const SimulateOptions& opt) {
   // The hair layer's thickness over the head (guide middles' distance from the head's surface), where the
   // asset has a distance field to measure it with.
   const hp::LayerThickness layer =
-      asset.sdf ? hp::hairLayerThickness(driver.readPositions(), pass.particlesPerGuide(), *asset.sdf, driver.head())
+      asset.sdf ? hp::hairLayerThickness(positions, pass.particlesPerGuide(), *asset.sdf, driver.head())
                 : hp::LayerThickness{};
   report["layer_thickness"] = layer.guides ? nlohmann::json{{"mean", layer.mean}, {"p90", layer.p90}, {"guides", layer.guides}}
                                            : nlohmann::json(nullptr);

@@ -115,7 +115,7 @@ struct StrandDrawPush {
 
 // strand_bounce.comp, per chunk: one invocation per sample.
 struct StrandBouncePush {
-  uint strandCount;  // strands of the chunk to sample (the level of detail's prefix)
+  uint strandCount;  // strands of the chunk (all of them are sampled)
   uint vertices;     // Q
   uint samples;      // samples per strand (StrandLayout::bounceSamples)
   uint pad0;

@@ -114,10 +114,13 @@ HP_STRANDS_FN float strandHash01(uint key, uint stream) {
   return float(strandHash(strandHash(key) + stream) >> 8u) * (1.0f / 16777216.0f);
 }
 
-// Attributes of a strand from its random value r in [0, 1): r is a multiple of 2^-24 (hashRandom),
-// so uint(r * 2^24) recovers its 24 bits exactly and keys two further independent hashes.
+// A strand's random value r in [0, 1) as a hash key: r is a multiple of 2^-24 (hashRandom), so
+// uint(r * 2^24) recovers its 24 bits exactly.
+HP_STRANDS_FN uint strandKey(float random) { return uint(random * 16777216.0f); }
+
+// Attributes of a strand from its random value: its key (strandKey) keys two further independent hashes.
 HP_STRANDS_FN StrandAttributes makeStrandAttributes(float random, uint source) {
-  uint key = uint(random * 16777216.0f);
+  uint key = strandKey(random);
   StrandAttributes a;
   a.random = random;
   a.widthScale = WIDTH_SCALE_MIN + (WIDTH_SCALE_MAX - WIDTH_SCALE_MIN) * strandHash01(key, 1u);

@@ -47,7 +47,7 @@ LayerThickness hairLayerThickness(std::span<const glm::vec4> positions, std::uin
   if (particlesPerGuide == 0 || sdf.empty()) return t;
   const glm::mat4 toHead = glm::inverse(head);
   std::vector<double> d;
-  for (std::size_t g = 0; g + 1 <= positions.size() / particlesPerGuide; ++g) {
+  for (std::size_t g = 0; g < positions.size() / particlesPerGuide; ++g) {
     const glm::vec3 p = glm::vec3(toHead * glm::vec4(glm::vec3(positions[g * particlesPerGuide + particlesPerGuide / 2]), 1.0f));
     if (std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z)) d.push_back(sdf.sample(p));
   }
