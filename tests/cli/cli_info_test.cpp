@@ -112,12 +112,18 @@ TEST(CliBench, StrandAndSimSuitesDeriveBandwidthOnlyWhereTimestampsResolve) {
   }
 }
 
-// `bench --skin-bounce` takes off and/or on; anything else is refused by name before a frame runs.
-TEST(CliBench, RefusesABadSkinBounceValue) {
+// `bench --skin-bounce` takes off and/or on, `--bounce-samples` values in [2, 256]; anything else is refused
+// by name before a frame runs.
+TEST(CliBench, RefusesBadSkinBounceAndBounceSampleValues) {
   auto r = runCli({"bench", "--raster", "compute", "--skin-bounce", "off,maybe", "--frames", "1"});
   EXPECT_EQ(r.exitCode, 1);
   EXPECT_NE(r.err.find("bench: --skin-bounce takes off and/or on, got 'maybe'"), std::string::npos) << r.err;
   EXPECT_EQ(r.out.find("median of"), std::string::npos) << "a frame ran: " << r.out;
+  auto samples = runCli({"bench", "--raster", "compute", "--bounce-samples", "8,1", "--frames", "1"});
+  EXPECT_EQ(samples.exitCode, 1);
+  EXPECT_NE(samples.err.find("bench: --bounce-samples values must be in [2, 256], got 1"), std::string::npos)
+      << samples.err;
+  EXPECT_EQ(samples.out.find("median of"), std::string::npos) << "a frame ran: " << samples.out;
 }
 
 // `bench --scattering` and `--lut-mode` are refused by name before a frame runs; dual with a model other than

@@ -224,6 +224,9 @@ TEST(SceneSimParams, DefaultsAreValidAndBadFieldsAreNamed) {
   p.pearlRadius = -0.1;
   EXPECT_ERROR_CONTAINS(p.validate(), "pearlRadius must be >= 0");
   p = {};
+  p.localStiffness = 0.95;  // local shape overshoots near 1 (docs/THEORY.md §2.6)
+  EXPECT_ERROR_CONTAINS(p.validate(), "simulation parameter localStiffness must be in [0.000000, 0.900000], got 0.95");
+  p = {};
   p.gravity.y = INFINITY;
   EXPECT_ERROR_CONTAINS(p.validate(), "gravity must be finite (component 1), got Inf");
   p = {};
