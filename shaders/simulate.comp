@@ -1,11 +1,12 @@
 #version 460
 // One invocation simulates one guide for one frame (docs/THEORY.md §2): per substep, pin the root to
 // the moving scalp, Verlet-integrate the free particles (gravity, wind, damping, speed clamp), pull
-// mildly toward the rest pose, then iterate the local shape (when on), length constraints (Gauss-Seidel,
+// mildly toward the rest pose (with the hair grid's friction and volume when on), then iterate the local shape (when on), length constraints (Gauss-Seidel,
 // root to tip; the last sweep follow-the-leader) and pearl collisions, collisions last so the final state is outside every
 // collider, then the distance grid (sdf_collide.glsl), so the final state is outside the head mesh.
 // tests/compute/sim_reference.cpp is the same algorithm in double precision; keep them in step.
 #include "shared/simulate.h"
+#include "shared/hair_grid.h"
 #include "common.glsl"
 
 layout(local_size_x = SIM_WORKGROUP_SIZE) in;
@@ -22,6 +23,8 @@ layout(std430, binding = SIM_BINDING_BONES) readonly buffer Bones { mat4 bones[]
 layout(std430, binding = SIM_BINDING_SKIN) readonly buffer Skin { SkinWeights skin[]; };
 #define SDF_BINDING SIM_BINDING_SDF
 #include "sdf_collide.glsl"
+#include "hair_grid.glsl"
+layout(std430, binding = SIM_BINDING_GRID) readonly buffer Grid { vec4 grid[]; };
 
 // Particles per guide, specialised to the asset's P when the pipeline is built, so the strand's arrays
 // have their exact size and constant-bound loops can be unrolled into registers.
@@ -70,16 +73,48 @@ void rootMatrices(uint guide, uint base, out mat4 from, out mat4 to) {
   }
 }
 
-void integrate(uint base, uint n, mat4 head, vec3 accel, float h) {
-  x[0] = transformPoint(head, rest[base].xyz);  // the root is pinned to the scalp
+// The hair grid at world point p (docs/THEORY.md §2.7): flow = (density x velocity, density), pressure =
+// (its head-space gradient, pressure), both trilinear.
+void sampleGrid(vec3 p, mat4 headInverse, out vec4 flow, out vec4 pressure) {
+  ivec3 cellBase;
+  vec3 frac;
+  gridFootprint((headInverse * vec4(p, 1.0)).xyz, frame.gridOriginCell, cellBase, frac);
+  flow = vec4(0.0);
+  pressure = vec4(0.0);
+  for (uint k = 0u; k < 8u; ++k) {
+    float w;
+    int cell = gridCorner(cellBase, frac, frame.gridDims.xyz, k, w);
+    if (cell < 0) continue;
+    flow += w * grid[GRID_CELL_VEC4S * uint(cell)];
+    pressure += w * grid[GRID_CELL_VEC4S * uint(cell) + 1u];
+  }
+}
+
+// Strand interaction through the grid: friction pulls the step v toward the hair's mean velocity around
+// the particle; where the hair is denser than the target, its pressure pushes the particle down the
+// pressure gradient (an added acceleration, returned).
+vec3 gridInteraction(vec3 p, inout vec3 v, float h, mat4 head, mat4 headInverse) {
+  vec4 flow, pressure;
+  sampleGrid(p, headInverse, flow, pressure);
+  if (flow.w > 1e-4) v = mix(v, flow.xyz * (h / flow.w), frame.gridForces.y);
+  if (pressure.w <= 0.0) return vec3(0.0);
+  float push = frame.gridForces.x * frame.gridOriginCell.w / max(flow.w, frame.gridForces.z);
+  return -push * (mat3(head) * pressure.xyz);
+}
+
+void integrate(uint base, uint n, mat4 root, vec3 accel, float h, mat4 head, mat4 headInverse) {
+  x[0] = transformPoint(root, rest[base].xyz);  // the root is pinned to the scalp
   xPrev[0] = x[0];
   float maxStep = frame.maxSpeed * h;
+  bool gridActs = frame.gridDims.w != 0u;
   for (uint i = 1u; i < n; ++i) {
     vec3 v = (x[i] - xPrev[i]) * (1.0 - frame.damping);
+    vec3 a = accel;
+    if (gridActs) a += gridInteraction(x[i], v, h, head, headInverse);
     float speed = length(v);
     if (speed > maxStep) v *= maxStep / speed;
     xPrev[i] = x[i];
-    x[i] += v + accel * (h * h);
+    x[i] += v + a * (h * h);
   }
 }
 
@@ -229,7 +264,7 @@ void main() {
     float gust = 1.0 + frame.wind.w * sin(6.28318530718 * frame.gustFrequency * (frame.time + h * float(s + 1u)) + phase);
     vec3 accel = frame.gravity.xyz + frame.wind.xyz * gust;
     mat4 headInverse = inverse(head);
-    integrate(base, n, root, accel, h);
+    integrate(base, n, root, accel, h, head, headInverse);
     pullTowardRest(base, n, root);
     for (uint it = 0u; it < frame.iterations; ++it) {
       if (frame.localStiffness > 0.0) keepLocalShape(base, n, root);

@@ -117,6 +117,10 @@ hp::SimulationParams simulation(const SimulationSettings& s) {
   p.stiffnessFalloff = s.stiffnessFalloff;
   p.localStiffness = s.localStiffness;
   p.maxSpeed = s.maxSpeed;
+  p.volume = s.volume;
+  p.volumeTarget = s.volumeTarget;
+  p.friction = s.friction;
+  p.gridResolution = s.gridResolution;
   p.windDirection = dvec(s.windDirection);
   p.windStrength = s.windStrength;
   p.windGust = s.windGust;

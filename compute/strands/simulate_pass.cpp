@@ -22,6 +22,7 @@ const vk::Binding kBindings[] = {
     {gpu::SIM_BINDING_BONES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
     {gpu::SIM_BINDING_SKIN, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
     {gpu::SIM_BINDING_SDF, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
+    {gpu::SIM_BINDING_GRID, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
 };
 
 VkDeviceSize particleBytes(const vk::Context& ctx, const GuideSet& guides) {
@@ -67,6 +68,8 @@ SimulatePass::SimulatePass(const vk::Context& ctx, const HairAsset& asset, const
   restBuffer_ = vk::Buffer(ctx, bytes, kParticleUsage, vk::MemoryKind::DeviceLocal, "guide rest pose");
   frame_ = vk::Buffer(ctx, sizeof(gpu::SimFrame), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                       vk::MemoryKind::DeviceLocal, "simulation frame");
+  grid_.emplace(ctx, rest_, particlesPerGuide_, params_.gridResolution, float(params_.pearlRadius), positions_, previous_,
+                library);
   set_ = vk::DescriptorSet(ctx, kBindings, "simulate");
   set_.writeStorageBuffer(gpu::SIM_BINDING_FRAME, frame_.handle());
   set_.writeStorageBuffer(gpu::SIM_BINDING_POSITIONS, positions_.handle());
@@ -74,6 +77,7 @@ SimulatePass::SimulatePass(const vk::Context& ctx, const HairAsset& asset, const
   set_.writeStorageBuffer(gpu::SIM_BINDING_REST, restBuffer_.handle());
   scalp_.writeDescriptors(set_);
   set_.writeStorageBuffer(gpu::SIM_BINDING_SDF, sdf_.buffer().handle());
+  set_.writeStorageBuffer(gpu::SIM_BINDING_GRID, grid_->cells().handle());
   static_assert(gpu::SIM_SPEC_PARTICLES == 0, "ComputePipeline numbers specialization constants from 0");
   pipeline_ = vk::makeComputePipeline(ctx, library, "simulate.comp", gpu::SIM_WORKGROUP_SIZE, {set_.layout()}, 0, "simulate",
                                   {particlesPerGuide_});
@@ -83,6 +87,9 @@ SimulatePass::SimulatePass(const vk::Context& ctx, const HairAsset& asset, const
 
 void SimulatePass::setParams(const SimulationParams& params) {
   params.validate();
+  if (params.gridResolution != params_.gridResolution)
+    throw Error("simulation: gridResolution is fixed when the simulation is created (" +
+                std::to_string(params_.gridResolution) + "), got " + std::to_string(params.gridResolution));
   params_ = params;
 }
 
@@ -111,7 +118,7 @@ void SimulatePass::reset(const glm::mat4& head) {
   vk::upload<glm::vec4>(ctx_, previous_, world, vk::BufferUse::ComputeWrite);
 }
 
-gpu::SimFrame SimulatePass::frameConstants(const HeadMotion& motion) const {
+gpu::SimFrame SimulatePass::frameConstants(const HeadMotion& motion, bool gridActs) const {
   gpu::SimFrame f{};
   const double h = params_.dt / params_.substeps;
   f.headFrom = motion.from;
@@ -140,12 +147,23 @@ gpu::SimFrame SimulatePass::frameConstants(const HeadMotion& motion) const {
   }
   f.scalpMode = scalp_.mode();
   f.boneCount = scalp_.boneCount();
+  const HairGridLayout& grid = grid_->layout();
+  f.gridOriginCell = glm::vec4(grid.origin, grid.cellSize);
+  f.gridDims = glm::uvec4(grid.dims, gridActs ? 1u : 0u);
+  f.gridForces = glm::vec4(float(params_.volume), float(params_.friction), float(params_.volumeTarget), 0.0f);
   return f;
 }
 
 void SimulatePass::record(VkCommandBuffer cmd, const HeadMotion& motion, vk::GpuProfiler* profiler) {
+  // The grid holds the hair where it is now; a teleport frame carries it elsewhere first, so it sits out.
+  const bool gridActs = params_.gridActs() && !motion.teleport;
+  if (gridActs) {
+    if (profiler) profiler->begin(cmd, "simulate grid");
+    grid_->record(cmd, glm::inverse(motion.from), params_.dt / params_.substeps, params_.maxSpeed, params_.volumeTarget);
+    if (profiler) profiler->end(cmd);
+  }
   if (profiler) profiler->begin(cmd, "simulate");
-  gpu::SimFrame f = frameConstants(motion);
+  gpu::SimFrame f = frameConstants(motion, gridActs);
   // The previous frame's dispatch may still read the block: order that read before this write.
   vk::bufferBarrier(ctx_, cmd, frame_.handle(), frameWritten_ ? vk::BufferUse::ComputeRead : vk::BufferUse::None,
                     vk::BufferUse::TransferDst);

@@ -3,13 +3,18 @@
 // (positions, previous, rest; layout in shaders/shared/simulate.h), its frame uniform block, pipeline
 // and descriptor set. record() writes this frame's constants into the command buffer and dispatches
 // one invocation per guide; nothing is read back. positions() is what tessellation reads. The asset's
-// distance grid (if any) is a separate read-only binding (SdfBuffer), uploaded once.
+// distance grid (if any) is a separate read-only binding (SdfBuffer), uploaded once. The hair grid
+// (HairGridPass, docs/THEORY.md §2.7) is built at construction with params.gridResolution, which cannot change
+// later; record() rebuilds it from the particles before the simulation whenever the params make it act
+// (volume or friction above 0), except on a teleport frame.
 // Barriers: record() guards its own uniform block; the caller orders positions()/previous() between
 // passes and frames (before: any earlier ComputeWrite/reads finished; after: BufferUse::ComputeWrite).
 #include <glm/glm.hpp>
 
+#include <optional>
 #include <span>
 
+#include "compute/strands/hair_grid_pass.h"
 #include "compute/strands/sdf_buffer.h"
 #include "engine/core/hair/hair_asset.h"
 #include "compute/strands/scalp_input.h"
@@ -37,6 +42,7 @@ class SimulatePass {
                const glm::mat4& initialHead = glm::mat4(1.0f), vk::PipelineLibrary* library = nullptr,
                const ScalpInput& scalp = {});
 
+  // Throws hp::Error on invalid params or a gridResolution other than the one the pass was built with.
   void setParams(const SimulationParams& params);
   // The colliders of the next frames, in head space (they move with HeadMotion): any time between frames.
   // Throws hp::Error on too many, negative or non-finite ones.
@@ -57,9 +63,11 @@ class SimulatePass {
   const std::vector<SphereCollider>& colliders() const { return colliders_; }
   const std::vector<CapsuleCollider>& capsules() const { return capsules_; }
   const std::shared_ptr<const SdfGrid>& sdf() const { return sdf_.grid(); }
+  const HairGridPass& grid() const { return *grid_; }
+  HairGridPass& grid() { return *grid_; }
 
  private:
-  gpu::SimFrame frameConstants(const HeadMotion& motion) const;
+  gpu::SimFrame frameConstants(const HeadMotion& motion, bool gridActs) const;
 
   const vk::Context& ctx_;
   SimulationParams params_;
@@ -74,6 +82,7 @@ class SimulatePass {
   vk::Buffer restBuffer_;
   vk::Buffer frame_;
   SdfBuffer sdf_;
+  std::optional<HairGridPass> grid_;
   vk::DescriptorSet set_;
   std::shared_ptr<const vk::ComputePipeline> pipeline_;
   bool frameWritten_ = false;

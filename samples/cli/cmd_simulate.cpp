@@ -1,11 +1,14 @@
 // `hairpipe simulate`: runs N frames of the guide simulation on the device and reports, from a
 // readback after the run, how well the constraints hold and what a frame costs on the GPU.
+#include <bit>
 #include <iostream>
 
 #include <nlohmann/json.hpp>
 
 #include "samples/tools/progress_reporter.h"
 #include "samples/tools/simulation_driver.h"
+#include "samples/tools/host/interaction_stats.h"
+#include "engine/vk/transfer.h"
 #include "engine/core/error.h"
 #include "engine/core/hair/hair_export.h"
 #include "engine/core/hair/hair_file.h"
@@ -22,6 +25,8 @@ struct SimulateOptions {
   std::optional<double> dt;
   std::optional<std::uint32_t> iterations;
   std::optional<std::uint32_t> substeps;
+  std::optional<double> volume, volumeTarget, friction;
+  std::optional<std::uint32_t> gridResolution;
   std::string animate = "none";
   std::string out;
   bool json = false;
@@ -31,8 +36,43 @@ hp::SimulationParams simulationParams(const SimulateOptions& opt, hp::Simulation
   if (opt.dt) params.dt = *opt.dt;
   if (opt.iterations) params.iterations = *opt.iterations;
   if (opt.substeps) params.substeps = *opt.substeps;
+  if (opt.volume) params.volume = *opt.volume;
+  if (opt.volumeTarget) params.volumeTarget = *opt.volumeTarget;
+  if (opt.friction) params.friction = *opt.friction;
+  if (opt.gridResolution) params.gridResolution = *opt.gridResolution;
   params.validate();
   return params;
+}
+
+// The hair grid's report: where it is, whether it acted, the run's peak density against the target (rest-mean
+// units) and its GPU ms a frame.
+nlohmann::json gridReport(const hp::vk::Context& ctx, const hp::SimulatePass& pass, const hp::SimulationDriver& driver) {
+  const hp::HairGridPass& grid = pass.grid();
+  const hp::SimulationParams& p = pass.params();
+  nlohmann::json r = {{"acts", p.gridActs()},
+                      {"cells", {grid.layout().dims.x, grid.layout().dims.y, grid.layout().dims.z}},
+                      {"cell_size", grid.layout().cellSize},
+                      {"volume", p.volume},
+                      {"volume_target", p.volumeTarget},
+                      {"friction", p.friction}};
+  if (!p.gridActs()) return r;
+  const auto peak = hp::vk::readback<std::uint32_t>(ctx, grid.peak(), hp::vk::BufferUse::ComputeWrite, 1);
+  r["peak_density"] = std::bit_cast<float>(peak[0]);
+  r["gpu_ms_per_frame_median"] = driver.medianGridMilliseconds();
+  return r;
+}
+
+// How the guides interact at the end of the run (samples/tools/host/interaction_stats.h): velocity spread in
+// the grid's cells, and guides with roots within 1 cm coming closer than two pearl radii.
+nlohmann::json interactionReport(const hp::SimulatePass& pass, const hp::SimulationDriver& driver,
+                                 const std::vector<glm::vec4>& positions, const std::vector<glm::vec4>& previous) {
+  const hp::SimulationParams& p = pass.params();
+  const hp::VelocitySpread spread = hp::velocitySpreadInCells(positions, previous, pass.particlesPerGuide(), driver.head(),
+                                                              pass.grid().layout().cellSize, p.dt / p.substeps);
+  const hp::CloseParticles close = hp::closeNeighbourParticles(positions, pass.particlesPerGuide(), 0.01, 2.0 * p.pearlRadius);
+  return {{"velocity_variance_in_cells", spread.withinCells},
+          {"velocity_mean_square", spread.overall},
+          {"close_neighbour_fraction", close.fraction}};
 }
 
 hp::GuideSet finalGuides(const std::vector<glm::vec4>& positions, std::uint32_t particlesPerGuide) {
@@ -55,8 +95,9 @@ void runSimulate(const SimulateOptions& opt) {
   hp::ProgressReporter progress("hairpipe simulate", opt.frames);
   driver.runFrames(opt.frames, [&](std::uint32_t done) { progress.update(done); });
   progress.finish();
-  hp::SimStats stats = driver.stats();
   const std::vector<glm::vec4> positions = driver.readPositions();  // the final state, read back once
+  const std::vector<glm::vec4> previous = driver.readPrevious();
+  const hp::SimStats stats = driver.stats(positions, previous);
   if (!opt.out.empty())
     hp::writeHairFile(opt.out, hp::guidesToHair(finalGuides(positions, pass.particlesPerGuide()),
                                                 "hairpipe simulate: final guides"));
@@ -76,6 +117,8 @@ void runSimulate(const SimulateOptions& opt) {
   const hp::LayerThickness layer =
       asset.sdf ? hp::hairLayerThickness(positions, pass.particlesPerGuide(), *asset.sdf, driver.head())
                 : hp::LayerThickness{};
+  report["grid"] = gridReport(*ctx, pass, driver);
+  report["interaction"] = interactionReport(pass, driver, positions, previous);
   report["layer_thickness"] = layer.guides ? nlohmann::json{{"mean", layer.mean}, {"p90", layer.p90}, {"guides", layer.guides}}
                                            : nlohmann::json(nullptr);
   if (opt.json) {
@@ -90,6 +133,9 @@ void runSimulate(const SimulateOptions& opt) {
             << "  nan_count               " << stats.nanCount << "\n"
             << "  max_speed               " << stats.maxSpeed << "\n"
             << "  gpu ms/frame (median)   " << driver.medianFrameMilliseconds() << "\n";
+  if (report["grid"]["acts"].get<bool>())
+    std::cout << "  hair grid               peak density " << report["grid"]["peak_density"].get<double>() << " (target "
+              << params.volumeTarget << "), " << driver.medianGridMilliseconds() << " gpu ms/frame\n";
   if (layer.guides)
     std::cout << "  layer thickness         mean " << layer.mean << ", 90th percentile " << layer.p90
               << " (guide middles from the head's surface)\n";
@@ -103,6 +149,13 @@ void setupSimulate(CLI::App& app) {
   cmd->add_option("--dt", opt->dt, "Frame time step in seconds (overrides the scene)");
   cmd->add_option("--iterations", opt->iterations, "Constraint iterations per substep, 1..1000");
   cmd->add_option("--substeps", opt->substeps, "Substeps per frame, 1..64");
+  cmd->add_option("--volume", opt->volume,
+                  "Hair grid: push (scene units/s^2) out of hair denser than the target, 0..1000 (0: off)");
+  cmd->add_option("--volume-target", opt->volumeTarget,
+                  "Hair grid: density the volume push keeps under, in units of the rest pose's mean, 0.01..100");
+  cmd->add_option("--friction", opt->friction,
+                  "Hair grid: fraction of velocity pulled toward the surrounding hair's per substep, 0..1 (0: off)");
+  cmd->add_option("--grid-resolution", opt->gridResolution, "Hair grid: cells along its longest side, 4..128");
   cmd->add_option("--animate", opt->animate, "Head motion: none, nod, turn, shake or teleport");
   cmd->add_option("--out", opt->out, "Write the final guides as .hair");
   cmd->add_flag("--json", opt->json, "Print JSON");

@@ -17,7 +17,7 @@ constexpr std::uint32_t kFramesPerReportedSubmit = 16;  // progress often enough
 SimulationDriver::SimulationDriver(const vk::Context& ctx, SimulatePass& pass, HeadAnimation animation,
                                    float headRadius, Timing timing)
     : ctx_(ctx), pass_(pass), animation_(animation), headRadius_(headRadius), timing_(timing),
-      profiler_(ctx, kMaxFramesPerSubmit, "simulation frames") {}
+      profiler_(ctx, 2 * kMaxFramesPerSubmit, "simulation frames") {}
 
 HeadMotion SimulationDriver::nextMotion() const {
   const double t0 = time(), t1 = (frame_ + 1) * pass_.params().dt;
@@ -46,7 +46,7 @@ void SimulationDriver::runFrames(std::uint32_t count, const std::function<void(s
       }
     }, "simulate frames");
     if (timed)
-      for (const auto& scope : profiler_.results()) frameMs_.push_back(scope.milliseconds);
+      for (const auto& scope : profiler_.results()) (scope.name == "simulate grid" ? gridMs_ : frameMs_).push_back(scope.milliseconds);
     count -= batch;
     if (progress) progress(total - count);
     if (count > 0) throwIfInterrupted("after " + std::to_string(total - count) + " of " + std::to_string(total) +
@@ -55,6 +55,8 @@ void SimulationDriver::runFrames(std::uint32_t count, const std::function<void(s
 }
 
 double SimulationDriver::medianFrameMilliseconds() const { return vk::median(frameMs_); }
+
+double SimulationDriver::medianGridMilliseconds() const { return vk::median(gridMs_); }
 
 std::vector<glm::vec4> SimulationDriver::readPositions() const {
   return vk::readback<glm::vec4>(ctx_, pass_.positions(), vk::BufferUse::ComputeWrite,
@@ -66,10 +68,12 @@ std::vector<glm::vec4> SimulationDriver::readPrevious() const {
                                  pass_.previous().size() / sizeof(glm::vec4));
 }
 
-SimStats SimulationDriver::stats() const {
+SimStats SimulationDriver::stats() const { return stats(readPositions(), readPrevious()); }
+
+SimStats SimulationDriver::stats(std::span<const glm::vec4> positions, std::span<const glm::vec4> previous) const {
   const auto& p = pass_.params();
-  return computeSimStats(readPositions(), readPrevious(), pass_.rest(), pass_.particlesPerGuide(), pass_.colliders(),
-                         head(), p.pearlRadius, p.dt / p.substeps);
+  return computeSimStats(positions, previous, pass_.rest(), pass_.particlesPerGuide(), pass_.colliders(), head(),
+                         p.pearlRadius, p.dt / p.substeps);
 }
 
 float assetHeadRadius(const HairAsset& asset) {

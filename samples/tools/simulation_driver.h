@@ -24,8 +24,13 @@ class SimulationDriver {
   void runFrames(std::uint32_t count, const std::function<void(std::uint32_t done)>& progress = {});
   const std::vector<double>& frameMilliseconds() const { return frameMs_; }
   // Forgets the recorded frame times (long runs keep their memory flat).
-  void clearFrameTimes() { frameMs_.clear(); frameMs_.shrink_to_fit(); }
+  void clearFrameTimes() {
+    frameMs_ = {};
+    gridMs_ = {};
+  }
+  // The simulation pass's GPU ms per frame, and the hair grid's (built before it when it acts; 0 when it never did).
   double medianFrameMilliseconds() const;
+  double medianGridMilliseconds() const;
 
   std::uint32_t frame() const { return frame_; }
   double time() const { return frame_ * pass_.params().dt; }
@@ -38,6 +43,8 @@ class SimulationDriver {
   std::vector<glm::vec4> readPositions() const;
   std::vector<glm::vec4> readPrevious() const;
   SimStats stats() const;
+  // The same from a state already read back.
+  SimStats stats(std::span<const glm::vec4> positions, std::span<const glm::vec4> previous) const;
 
  private:
   const vk::Context& ctx_;
@@ -48,6 +55,7 @@ class SimulationDriver {
   std::uint32_t frame_ = 0;
   vk::GpuProfiler profiler_;
   std::vector<double> frameMs_;
+  std::vector<double> gridMs_;
 };
 
 // A head radius for animations and tolerances: the largest collider's, else the roots' extent.

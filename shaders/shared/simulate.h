@@ -44,6 +44,7 @@ struct SkinWeights {
   vec4 weights;  // summing to 1
 };
 HP_CONST(uint, SIM_BINDING_SDF, 8)           // the head's distance grid (shared/sdf.h), read only
+HP_CONST(uint, SIM_BINDING_GRID, 9)          // the hair grid (shared/hair_grid.h), read only
 
 struct SimFrame {
   mat4 headFrom;         // head-to-world transform at the start of the frame
@@ -68,6 +69,10 @@ struct SimFrame {
   float localStiffness;  // SimulationParams::localStiffness (simulate.comp keepLocalShape)
   vec4 colliders[SIM_MAX_COLLIDERS];  // head space: xyz center, w radius
   vec4 capsules[2u * SIM_MAX_CAPSULES];  // head space: [2c] xyz end a, w radius; [2c + 1] xyz end b
+  // The hair grid (shared/hair_grid.h), built from this frame's starting state in head space.
+  vec4 gridOriginCell;   // xyz head-space corner of cell (0, 0, 0), w cell size
+  uvec4 gridDims;        // xyz cells per axis; w = 1 when the grid acts this frame
+  vec4 gridForces;       // x volume (SimulationParams::volume), y friction, z volumeTarget, w unused
 };
 HP_END
 
@@ -80,7 +85,8 @@ static_assert(offsetof(hp::gpu::SimFrame, guideCount) == 192);
 static_assert(offsetof(hp::gpu::SimFrame, colliderCount) == 208);
 static_assert(offsetof(hp::gpu::SimFrame, colliders) == 224);
 static_assert(offsetof(hp::gpu::SimFrame, capsules) == 224 + 16 * 32);
-static_assert(sizeof(hp::gpu::SimFrame) == 224 + 16 * 32 + 16 * 32);
+static_assert(offsetof(hp::gpu::SimFrame, gridOriginCell) == 224 + 16 * 32 + 16 * 32);
+static_assert(sizeof(hp::gpu::SimFrame) == 224 + 16 * 32 + 16 * 32 + 3 * 16);
 static_assert(sizeof(hp::gpu::SkinWeights) == 32);
 #endif
 #endif

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "engine/core/error.h"
+#include "shaders/shared/hair_grid.h"
 
 namespace hp {
 namespace {
@@ -40,6 +41,12 @@ void SimulationParams::validate() const {
   checkRange(stiffnessFalloff, 0.0, 1.0, "stiffnessFalloff");
   checkRange(localStiffness, 0.0, 0.9, "localStiffness");
   check(std::isfinite(maxSpeed) && maxSpeed > 0.0, "maxSpeed", "must be > 0", maxSpeed);
+  checkRange(volume, 0.0, 1000.0, "volume");
+  checkRange(volumeTarget, 0.01, 100.0, "volumeTarget");
+  checkRange(friction, 0.0, 1.0, "friction");
+  check(gridResolution >= gpu::GRID_MIN_RESOLUTION && gridResolution <= gpu::GRID_MAX_RESOLUTION, "gridResolution",
+        "must be in [" + std::to_string(gpu::GRID_MIN_RESOLUTION) + ", " + std::to_string(gpu::GRID_MAX_RESOLUTION) + "]",
+        gridResolution);
   checkVector(windDirection, "windDirection");
   check(std::isfinite(windStrength) && windStrength >= 0.0, "windStrength", "must be >= 0", windStrength);
   if (windStrength > 0.0)

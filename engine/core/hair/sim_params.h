@@ -21,11 +21,22 @@ struct SimulationParams {
   // (waves, curls) under gravity and motion. [0, 0.9] (nearer 1 the corrections overshoot); 0: off.
   double localStiffness = 0.0;
   double maxSpeed = 10.0;                 // particle speed clamp (scene units / s), > 0
+  // Strand interaction through a density / velocity grid around the instance (docs/THEORY.md §2.7), built once a
+  // frame from the guides' state at its start; the grid acts when volume or friction is above 0.
+  // volume: acceleration (scene units / s^2) down the pressure gradient where the hair is denser than
+  // volumeTarget, per unit of density excess per cell, [0, 1000]. volumeTarget: in units of the rest pose's mean
+  // density, [0.01, 100]. friction: fraction of each particle's velocity pulled toward the grid's (the hair
+  // around it) per substep, [0, 1]. gridResolution: cells along the grid's longest side, [4, 128].
+  double volume = 0.0;
+  double volumeTarget = 1.0;
+  double friction = 0.0;
+  std::uint32_t gridResolution = 32;
   glm::dvec3 windDirection = {1.0, 0.0, 0.0};
   double windStrength = 0.0;              // acceleration (scene units / s^2) along windDirection
   double windGust = 0.0;                  // relative gust amplitude, [0, 1]
   double windGustFrequency = 0.5;         // Hz
 
   void validate() const;
+  bool gridActs() const { return volume > 0.0 || friction > 0.0; }
 };
 }  // namespace hp

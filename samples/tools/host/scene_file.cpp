@@ -244,6 +244,10 @@ void readSimulation(JsonObject& root, SimulationParams& s) {
   o->read("stiffnessFalloff", s.stiffnessFalloff);
   o->read("localStiffness", s.localStiffness);
   o->read("maxSpeed", s.maxSpeed);
+  o->read("volume", s.volume);
+  o->read("volumeTarget", s.volumeTarget);
+  o->read("friction", s.friction);
+  o->read("gridResolution", s.gridResolution);
   o->read("windDirection", s.windDirection);
   o->read("windStrength", s.windStrength);
   o->read("windGust", s.windGust);
