@@ -1,7 +1,7 @@
 #version 460
 // One invocation per grid cell: fixed-point sums -> relative density, density times velocity, and the
 // pressure max(density - target, 0) with its gradient by central differences (one-sided at the grid's
-// faces), for simulate.comp (layout: shaders/shared/hair_grid.h). Raises the run's peak density.
+// faces), for simulate.comp (layout: shaders/shared/hair_grid.h). Raises the frame's peak density.
 #include "shared/hair_grid.h"
 #include "common.glsl"
 

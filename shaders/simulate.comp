@@ -90,16 +90,20 @@ void sampleGrid(vec3 p, mat4 headInverse, out vec4 flow, out vec4 pressure) {
   }
 }
 
-// Strand interaction through the grid: friction pulls the step v toward the hair's mean velocity around
-// the particle; where the hair is denser than the target, its pressure pushes the particle down the
-// pressure gradient (an added acceleration, returned).
-vec3 gridInteraction(vec3 p, inout vec3 v, float h, mat4 head, mat4 headInverse) {
+// Strand interaction through the grid (docs/THEORY.md §2.7). Friction pulls the step v toward the hair's mean
+// velocity around the particle. Where the hair is denser than the target, the particle is given an outward
+// speed of at least volume x pressure down the pressure gradient, GRID_VOLUME_BLEND of the shortfall per substep:
+// a velocity, not a force, so a grid one frame old cannot make hair at rest oscillate.
+void gridInteraction(vec3 p, inout vec3 v, float h, mat4 head, mat4 headInverse) {
   vec4 flow, pressure;
   sampleGrid(p, headInverse, flow, pressure);
   if (flow.w > 1e-4) v = mix(v, flow.xyz * (h / flow.w), frame.gridForces.y);
-  if (pressure.w <= 0.0) return vec3(0.0);
-  float push = frame.gridForces.x * frame.gridOriginCell.w / max(flow.w, frame.gridForces.z);
-  return -push * (mat3(head) * pressure.xyz);
+  vec3 slope = mat3(head) * pressure.xyz;
+  float len = length(slope);
+  if (pressure.w <= 0.0 || len < 1e-12) return;
+  vec3 outward = -slope / len;
+  float shortfall = frame.gridForces.x * pressure.w * h - dot(v, outward);
+  if (shortfall > 0.0) v += outward * (shortfall * GRID_VOLUME_BLEND);
 }
 
 void integrate(uint base, uint n, mat4 root, vec3 accel, float h, mat4 head, mat4 headInverse) {
@@ -109,12 +113,11 @@ void integrate(uint base, uint n, mat4 root, vec3 accel, float h, mat4 head, mat
   bool gridActs = frame.gridDims.w != 0u;
   for (uint i = 1u; i < n; ++i) {
     vec3 v = (x[i] - xPrev[i]) * (1.0 - frame.damping);
-    vec3 a = accel;
-    if (gridActs) a += gridInteraction(x[i], v, h, head, headInverse);
+    if (gridActs) gridInteraction(x[i], v, h, head, headInverse);
     float speed = length(v);
     if (speed > maxStep) v *= maxStep / speed;
     xPrev[i] = x[i];
-    x[i] += v + a * (h * h);
+    x[i] += v + accel * (h * h);
   }
 }
 

@@ -66,30 +66,19 @@ void HairGridPass::record(VkCommandBuffer cmd, const glm::mat4& worldToHead, dou
   p.fixedPoint = glm::vec4(fixedPoint_, 1.0f / fixedPoint_, float(1.0 / substep), float(maxSpeed));
   p.density = glm::vec4(restMean_ > 0.0 ? float(1.0 / restMean_) : 0.0f, float(target), 0.0f, 0.0f);
   const auto& fn = ctx_.fn();
-  // The last frame's resolve read the sums and the simulation read the cells.
-  vk::bufferBarrier(ctx_, cmd, accum_.handle(), recorded_ ? vk::BufferUse::ComputeRead : vk::BufferUse::None,
-                    vk::BufferUse::TransferDst);
+  // Global barriers: four a frame whatever the buffers. The last frame's resolve read the sums and its
+  // simulation read the cells; the splat reads the particles the simulation writes next.
+  vk::memoryBarrier(ctx_, cmd, vk::BufferUse::ComputeWrite, vk::BufferUse::TransferDst);
   fn.vkCmdFillBuffer(cmd, accum_.handle(), 0, VK_WHOLE_SIZE, 0u);
-  vk::bufferBarrier(ctx_, cmd, accum_.handle(), vk::BufferUse::TransferDst, vk::BufferUse::ComputeWrite);
-  if (peakStale_) {
-    vk::bufferBarrier(ctx_, cmd, peak_.handle(), recorded_ ? vk::BufferUse::ComputeWrite : vk::BufferUse::None,
-                      vk::BufferUse::TransferDst);
-    fn.vkCmdFillBuffer(cmd, peak_.handle(), 0, VK_WHOLE_SIZE, 0u);
-    vk::bufferBarrier(ctx_, cmd, peak_.handle(), vk::BufferUse::TransferDst, vk::BufferUse::ComputeWrite);
-    peakStale_ = false;
-  } else if (recorded_) {
-    vk::bufferBarrier(ctx_, cmd, peak_.handle(), vk::BufferUse::ComputeWrite, vk::BufferUse::ComputeWrite);
-  }
+  fn.vkCmdFillBuffer(cmd, peak_.handle(), 0, VK_WHOLE_SIZE, 0u);
+  vk::memoryBarrier(ctx_, cmd, vk::BufferUse::TransferDst, vk::BufferUse::ComputeWrite);
   splat_->bind(cmd, set_.set());
   splat_->push(cmd, p);
   splat_->dispatch(cmd, particles_);
-  vk::bufferBarrier(ctx_, cmd, accum_.handle(), vk::BufferUse::ComputeWrite, vk::BufferUse::ComputeRead);
-  vk::bufferBarrier(ctx_, cmd, cells_.handle(), recorded_ ? vk::BufferUse::ComputeRead : vk::BufferUse::None,
-                    vk::BufferUse::ComputeWrite);
+  vk::memoryBarrier(ctx_, cmd, vk::BufferUse::ComputeWrite, vk::BufferUse::ComputeWrite);
   resolve_->bind(cmd, set_.set());
   resolve_->push(cmd, p);
   resolve_->dispatch(cmd, layout_.cellCount());
-  vk::bufferBarrier(ctx_, cmd, cells_.handle(), vk::BufferUse::ComputeWrite, vk::BufferUse::ComputeRead);
-  recorded_ = true;
+  vk::memoryBarrier(ctx_, cmd, vk::BufferUse::ComputeWrite, vk::BufferUse::ComputeWrite);
 }
 }  // namespace hp

@@ -4,7 +4,8 @@
 // simulate.comp reads, the run's peak density and the two pipelines. The grid's place and cell size are fixed
 // at construction (hairGridLayout of the rest pose), so the buffers behind the simulation's descriptor never
 // change. record() clears, splats the particles as they are now and resolves: before it, the caller has
-// finished writing positions/previous (ComputeWrite); after it, cells() is ready for compute reads.
+// finished writing positions/previous (ComputeWrite); after it, cells() is ready for compute reads and the
+// particles for compute writes (it ends on a global compute barrier).
 #include <glm/glm.hpp>
 
 #include <span>
@@ -26,15 +27,14 @@ class HairGridPass {
   // `worldToHead`: where the particles are now, into head space; `substep`: the time between positions and
   // previous; `target`: the volume target in rest-mean units.
   void record(VkCommandBuffer cmd, const glm::mat4& worldToHead, double substep, double maxSpeed, double target);
-  // Zeroes the peak density at the next record() (a one-shot fill before the splat).
-  void resetPeak() { peakStale_ = true; }
 
   const HairGridLayout& layout() const { return layout_; }
   double restMeanDensity() const { return restMean_; }  // weight per cell
   float fixedPoint() const { return fixedPoint_; }
   const vk::Buffer& accumulation() const { return accum_; }
   const vk::Buffer& cells() const { return cells_; }
-  const vk::Buffer& peak() const { return peak_; }  // one uint: the float bits of the largest density
+  // One uint: the float bits of the largest density in the grid last recorded.
+  const vk::Buffer& peak() const { return peak_; }
 
  private:
   const vk::Context& ctx_;
@@ -48,7 +48,5 @@ class HairGridPass {
   vk::DescriptorSet set_;
   std::shared_ptr<const vk::ComputePipeline> splat_;
   std::shared_ptr<const vk::ComputePipeline> resolve_;
-  bool recorded_ = false;
-  bool peakStale_ = true;
 };
 }  // namespace hp

@@ -150,7 +150,9 @@ gpu::SimFrame SimulatePass::frameConstants(const HeadMotion& motion, bool gridAc
   const HairGridLayout& grid = grid_->layout();
   f.gridOriginCell = glm::vec4(grid.origin, grid.cellSize);
   f.gridDims = glm::uvec4(grid.dims, gridActs ? 1u : 0u);
-  f.gridForces = glm::vec4(float(params_.volume), float(params_.friction), float(params_.volumeTarget), 0.0f);
+  // volume is in cells a frame per unit of excess density: as a speed, scene units / s.
+  f.gridForces = glm::vec4(float(params_.volume * grid.cellSize / params_.dt), float(params_.friction),
+                           float(params_.volumeTarget), 0.0f);
   return f;
 }
 

@@ -1,8 +1,17 @@
 #include "engine/vk/barriers.h"
+
+#include <atomic>
+
 #include "engine/vk/context.h"
 
 namespace hp::vk {
 namespace {
+std::atomic<std::uint64_t> recordedBarriers{0};
+
+void record(const Context& ctx, VkCommandBuffer cmd, const VkDependencyInfo& dep) {
+  recordedBarriers.fetch_add(1, std::memory_order_relaxed);
+  ctx.fn().vkCmdPipelineBarrier2(cmd, &dep);
+}
 struct Scope {
   VkPipelineStageFlags2 stage;
   VkAccessFlags2 access;
@@ -108,7 +117,7 @@ void bufferBarrier(const Context& ctx, VkCommandBuffer cmd, VkBuffer buffer, Buf
   VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
   dep.bufferMemoryBarrierCount = 1;
   dep.pBufferMemoryBarriers = &b;
-  ctx.fn().vkCmdPipelineBarrier2(cmd, &dep);
+  record(ctx, cmd, dep);
 }
 
 void memoryBarrier(const Context& ctx, VkCommandBuffer cmd, BufferUse from, BufferUse to) {
@@ -121,7 +130,7 @@ void memoryBarrier(const Context& ctx, VkCommandBuffer cmd, BufferUse from, Buff
   VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
   dep.memoryBarrierCount = 1;
   dep.pMemoryBarriers = &b;
-  ctx.fn().vkCmdPipelineBarrier2(cmd, &dep);
+  record(ctx, cmd, dep);
 }
 
 void imageBarrier(const Context& ctx, VkCommandBuffer cmd, VkImage image, VkImageAspectFlags aspect, ImageUse from,
@@ -141,6 +150,8 @@ void imageBarrier(const Context& ctx, VkCommandBuffer cmd, VkImage image, VkImag
   VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
   dep.imageMemoryBarrierCount = 1;
   dep.pImageMemoryBarriers = &b;
-  ctx.fn().vkCmdPipelineBarrier2(cmd, &dep);
+  record(ctx, cmd, dep);
 }
+
+std::uint64_t barriersRecorded() { return recordedBarriers.load(std::memory_order_relaxed); }
 }  // namespace hp::vk

@@ -56,4 +56,7 @@ void memoryBarrier(const Context& ctx, VkCommandBuffer cmd, BufferUse from, Buff
 void imageBarrier(const Context& ctx, VkCommandBuffer cmd, VkImage image, VkImageAspectFlags aspect, ImageUse from,
                   ImageUse to, std::uint32_t layers = 1, std::uint32_t firstLayer = 0);
 VkImageLayout imageLayout(ImageUse use);
+// How many barriers the helpers above have recorded in this process (all contexts): the soak test's unit
+// for the validation layer's per-barrier bookkeeping.
+std::uint64_t barriersRecorded();
 }  // namespace hp::vk

@@ -2,7 +2,9 @@
 // head's guides repeated), and its achieved bytes/s as a fraction of vkCmdCopyBuffer bandwidth measured
 // in the same run. Bytes counted per frame: positions and previous read + written, rest pose read.
 // --colliders picks what the hair collides with: the default head's distance grid (sdf, default),
-// seven spheres roughly covering the same head and shoulders (spheres), or nothing (none).
+// seven spheres roughly covering the same head and shoulders (spheres), or nothing (none). --grid on, off or
+// both (default): the hair grid (docs/THEORY.md §2.7) at its defaults or off; with it on, its own passes
+// (clear, splat, resolve) are timed apart as grid_ms and are not in ms or the bytes.
 #include <algorithm>
 #include <iostream>
 
@@ -26,6 +28,7 @@ struct BenchOptions {
   std::vector<std::uint32_t> guides{1000, 10000, 100000};
   std::uint32_t frames = 20;
   std::string colliders = "sdf";
+  std::string grid = "both";
   bool json = false;
 };
 
@@ -46,11 +49,17 @@ hp::HairAsset repeatedGuides(const hp::HairAsset& head, std::uint32_t count, con
   return asset;
 }
 
+hp::SimulationParams benchParams(bool grid) {
+  hp::SimulationParams p;
+  if (!grid) p.volume = p.friction = 0.0;
+  return p;
+}
+
 nlohmann::json benchOne(const hp::vk::Context& ctx, const hp::HairAsset& asset, std::uint32_t frames,
-                        const hp::vk::CopyReference& copy) {
-  hp::SimulatePass pass(ctx, asset, hp::SimulationParams{});
-  hp::vk::GpuProfiler profiler(ctx, 2 * frames + 2, "bench sim");
-  std::vector<double> sim, copyMs;
+                        const hp::vk::CopyReference& copy, bool grid) {
+  hp::SimulatePass pass(ctx, asset, benchParams(grid));
+  hp::vk::GpuProfiler profiler(ctx, 3 * frames + 3, "bench sim");
+  std::vector<double> sim, gridMs, copyMs;
   for (std::uint32_t f = 0; f < frames; ++f) {
     hp::vk::submitAndWait(ctx, [&](VkCommandBuffer cmd) {
       profiler.reset(cmd);
@@ -58,9 +67,8 @@ nlohmann::json benchOne(const hp::vk::Context& ctx, const hp::HairAsset& asset, 
       pass.record(cmd, {glm::mat4(1.0f), glm::mat4(1.0f), f / 60.0, false}, &profiler);
       copy.record(cmd, profiler);
     }, "bench sim frame");
-    auto times = profiler.results();
-    sim.push_back(times[0].milliseconds);
-    copyMs.push_back(times[1].milliseconds);
+    for (const auto& t : profiler.results())
+      (t.name == "simulate" ? sim : t.name == "simulate grid" ? gridMs : copyMs).push_back(t.milliseconds);
   }
   const double particles = double(asset.guides.positions.size());
   const double bytes = particles * 16.0 * 5.0;
@@ -69,7 +77,8 @@ nlohmann::json benchOne(const hp::vk::Context& ctx, const hp::HairAsset& asset, 
   const hp::vk::CopyTiming alone = copy.measureAlone();
   const std::string why = hp::vk::timestampsUnresolvedBecause(alone, hp::vk::median(copyMs));
   const double copyGbs = hp::vk::gigabytesPerSecond(copy.bytesMoved(), alone.medianMs);
-  nlohmann::json r = {{"guides", asset.guides.guideCount()}, {"particles", particles}, {"ms", simMs}, {"bytes", bytes},
+  nlohmann::json r = {{"guides", asset.guides.guideCount()}, {"grid", grid}, {"particles", particles}, {"ms", simMs},
+                      {"grid_ms", grid ? nlohmann::json(hp::vk::median(gridMs)) : nlohmann::json(nullptr)}, {"bytes", bytes},
                       {"copy_gb_per_s", copyGbs}, {"timestamps_resolve_passes", why.empty()}, {"unresolved_because", why}};
   if (why.empty()) {
     const double simGbs = hp::vk::gigabytesPerSecond(bytes, simMs);
@@ -89,9 +98,13 @@ void runBench(const BenchOptions& o) {
                            {"substeps", hp::SimulationParams{}.substeps},
                            {"colliders", o.colliders},
                            {"results", nlohmann::json::array()}};
+  if (o.grid != "on" && o.grid != "off" && o.grid != "both")
+    throw hp::Error("--grid must be on, off or both, got '" + o.grid + "'");
   for (std::uint32_t g : o.guides) {
     if (g == 0 || g > 4000000) throw hp::Error("--guides values must be in [1, 4000000]");
-    report["results"].push_back(benchOne(*ctx, repeatedGuides(head, g, o.colliders), o.frames, copy));
+    const hp::HairAsset asset = repeatedGuides(head, g, o.colliders);
+    if (o.grid != "on") report["results"].push_back(benchOne(*ctx, asset, o.frames, copy, false));
+    if (o.grid != "off") report["results"].push_back(benchOne(*ctx, asset, o.frames, copy, true));
   }
   if (o.json) {
     std::cout << report.dump(2) << "\n";
@@ -99,15 +112,16 @@ void runBench(const BenchOptions& o) {
   }
   std::cout << "simulation on " << report["device"].get<std::string>() << " (median of " << o.frames
             << " frames, colliders: " << o.colliders << ")\n"
-            << "guides    ms/frame   GB/s   copy GB/s  of copy\n";
+            << "guides    grid ms   ms/frame   GB/s   copy GB/s  of copy\n";
   for (const auto& r : report["results"]) {
+    const std::string grid = r["grid"].get<bool>() ? std::to_string(r["grid_ms"].get<double>()).substr(0, 7) : "off";
     if (!r["timestamps_resolve_passes"].get<bool>()) {
-      std::printf("%-9u %-10.3f (no bandwidth derived: %s)\n", r["guides"].get<unsigned>(), r["ms"].get<double>(),
-                  r["unresolved_because"].get<std::string>().c_str());
+      std::printf("%-9u %-9s %-10.3f (no bandwidth derived: %s)\n", r["guides"].get<unsigned>(), grid.c_str(),
+                  r["ms"].get<double>(), r["unresolved_because"].get<std::string>().c_str());
       continue;
     }
-    std::printf("%-9u %-10.3f %-6.3f %-10.2f %.1f%%\n", r["guides"].get<unsigned>(), r["ms"].get<double>(),
-                r["gb_per_s"].get<double>(), r["copy_gb_per_s"].get<double>(),
+    std::printf("%-9u %-9s %-10.3f %-6.3f %-10.2f %.1f%%\n", r["guides"].get<unsigned>(), grid.c_str(),
+                r["ms"].get<double>(), r["gb_per_s"].get<double>(), r["copy_gb_per_s"].get<double>(),
                 100.0 * r["fraction_of_copy"].get<double>());
   }
 }
@@ -119,6 +133,7 @@ void setupBench(CLI::App& app) {
   cmd->add_option("--guides", o->guides, "Guide counts to measure (default 1000 10000 100000)");
   cmd->add_option("--frames", o->frames, "Frames per measurement (median is reported)");
   cmd->add_option("--colliders", o->colliders, "sdf (the default head's distance grid), spheres or none (default sdf)");
+  cmd->add_option("--grid", o->grid, "The hair grid: on, off or both (default both)");
   cmd->add_flag("--json", o->json, "Print JSON");
   cmd->callback([o] { runBench(*o); });
 }

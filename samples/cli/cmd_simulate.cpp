@@ -150,7 +150,8 @@ void setupSimulate(CLI::App& app) {
   cmd->add_option("--iterations", opt->iterations, "Constraint iterations per substep, 1..1000");
   cmd->add_option("--substeps", opt->substeps, "Substeps per frame, 1..64");
   cmd->add_option("--volume", opt->volume,
-                  "Hair grid: push (scene units/s^2) out of hair denser than the target, 0..1000 (0: off)");
+                  "Hair grid: how fast hair flows out of places denser than the target, in grid cells a frame per unit of "
+                  "excess density, 0..10 (0: off)");
   cmd->add_option("--volume-target", opt->volumeTarget,
                   "Hair grid: density the volume push keeps under, in units of the rest pose's mean, 0.01..100");
   cmd->add_option("--friction", opt->friction,

@@ -49,7 +49,7 @@ void simulationSection(Tunables& t, ViewState& view, PanelChanges& c) {
   c.simulation |= editDouble("damping", t.simulation.damping, 0.0f, 0.5f);
   c.simulation |= editDouble("stiffness", t.simulation.stiffness, 0.0f, 1.0f);
   c.simulation |= editDouble("local shape", t.simulation.localStiffness, 0.0f, 0.9f);
-  c.simulation |= editDouble("volume", t.simulation.volume, 0.0f, 100.0f);
+  c.simulation |= editDouble("volume", t.simulation.volume, 0.0f, 3.0f);
   c.simulation |= editDouble("volume target", t.simulation.volumeTarget, 0.1f, 10.0f);
   c.simulation |= editDouble("friction", t.simulation.friction, 0.0f, 1.0f);
 }

@@ -12,7 +12,7 @@
 //        [2c]     xyz density times velocity (world, scene units / s), w density
 //        [2c + 1] xyz gradient of the pressure (head space, per scene unit), w pressure
 //      where density is relative to the rest pose's (weight-averaged) mean cell density and the pressure is
-//      max(density - target, 0); and raises the run's peak density (float bits, atomicMax) in peak[0].
+//      max(density - target, 0); and raises the frame's peak density (float bits, atomicMax) in peak[0].
 #ifndef HP_SHARED_HAIR_GRID_H
 #define HP_SHARED_HAIR_GRID_H
 #include "common.h"
@@ -22,6 +22,7 @@ HP_CONST(uint, GRID_WORKGROUP_SIZE, 64)
 HP_CONST(uint, GRID_ACCUM_INTS, 4)         // per cell: weight, momentum x, y, z
 HP_CONST(uint, GRID_CELL_VEC4S, 2)         // per cell in the resolved grid
 HP_CONST(float, GRID_MAX_FIXED_POINT, 65536.0f)  // integer units per unit of weight, at most
+HP_CONST(float, GRID_VOLUME_BLEND, 0.5f)   // share of the outflow speed's shortfall made up per substep
 HP_CONST(uint, GRID_MIN_RESOLUTION, 4)
 HP_CONST(uint, GRID_MAX_RESOLUTION, 128)
 HP_CONST(uint, GRID_BINDING_POSITIONS, 0)

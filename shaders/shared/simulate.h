@@ -72,7 +72,7 @@ struct SimFrame {
   // The hair grid (shared/hair_grid.h), built from this frame's starting state in head space.
   vec4 gridOriginCell;   // xyz head-space corner of cell (0, 0, 0), w cell size
   uvec4 gridDims;        // xyz cells per axis; w = 1 when the grid acts this frame
-  vec4 gridForces;       // x volume (SimulationParams::volume), y friction, z volumeTarget, w unused
+  vec4 gridForces;       // x volume as a speed (volume x cell size / dt), y friction, z volumeTarget (unused here)
 };
 HP_END
 

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "engine/core/error.h"
 #include "shaders/shared/sdf.h"
 
 namespace hp::test {
@@ -95,6 +96,7 @@ glm::dvec3 keepOutsideGrid(const SdfGrid& g, const glm::dvec3& p, const glm::dma
 
 SimReference::SimReference(const SimulatePass& pass, const SimulationParams& params, const glm::mat4& initialHead)
     : params_(params), n_(pass.particlesPerGuide()), colliders_(pass.colliders()), sdf_(pass.sdf()) {
+  if (params.gridActs()) throw Error("SimReference: the CPU reference has no hair grid; pass withoutGrid(params)");
   for (const auto& r : pass.rest()) {
     rest_.push_back(glm::dvec4(r));
     x_.push_back(apply(glm::dmat4(initialHead), glm::dvec3(r)));

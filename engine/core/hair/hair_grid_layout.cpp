@@ -35,9 +35,14 @@ HairGridLayout hairGridLayout(std::span<const glm::vec4> rest, std::uint32_t par
   return layout;
 }
 
-std::vector<double> splatHairGrid(std::span<const glm::vec3> points, const HairGridLayout& layout) {
+std::vector<double> splatHairGrid(std::span<const glm::vec3> points, const HairGridLayout& layout,
+                                  std::span<const double> values) {
+  if (!values.empty() && values.size() != points.size())
+    throw Error("hair grid: " + std::to_string(values.size()) + " values for " + std::to_string(points.size()) + " points");
   std::vector<double> cells(layout.cellCount(), 0.0);
-  for (const glm::vec3& p : points) {
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const glm::vec3& p = points[i];
+    const double value = values.empty() ? 1.0 : values[i];
     const glm::vec3 g = (p - layout.origin) / layout.cellSize - 0.5f;
     const glm::vec3 base = glm::floor(g);
     const glm::vec3 frac = g - base;
@@ -47,7 +52,7 @@ std::vector<double> splatHairGrid(std::span<const glm::vec3> points, const HairG
       if (glm::any(glm::lessThan(c, glm::ivec3(0))) || glm::any(glm::greaterThanEqual(c, glm::ivec3(layout.dims))))
         continue;
       const glm::vec3 w = glm::mix(1.0f - frac, frac, glm::vec3(o));
-      cells[(std::size_t(c.z) * layout.dims.y + c.y) * layout.dims.x + c.x] += double(w.x) * w.y * w.z;
+      cells[(std::size_t(c.z) * layout.dims.y + c.y) * layout.dims.x + c.x] += value * w.x * w.y * w.z;
     }
   }
   return cells;

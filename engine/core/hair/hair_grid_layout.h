@@ -23,8 +23,10 @@ struct HairGridLayout {
 HairGridLayout hairGridLayout(std::span<const glm::vec4> rest, std::uint32_t particlesPerGuide,
                               std::uint32_t resolution, float pearlRadius);
 
-// Each point's weight 1 spread over the 8 cells around it (trilinear; cells outside dropped), per cell.
-std::vector<double> splatHairGrid(std::span<const glm::vec3> points, const HairGridLayout& layout);
+// Each point's value (1 when `values` is empty) spread over the 8 cells around it (trilinear; cells outside
+// dropped), per cell.
+std::vector<double> splatHairGrid(std::span<const glm::vec3> points, const HairGridLayout& layout,
+                                  std::span<const double> values = {});
 
 // sum(w^2) / sum(w) over cells: the density the average particle sees (0 for an empty grid).
 double weightedMeanDensity(std::span<const double> cellWeights);

@@ -41,7 +41,7 @@ void SimulationParams::validate() const {
   checkRange(stiffnessFalloff, 0.0, 1.0, "stiffnessFalloff");
   checkRange(localStiffness, 0.0, 0.9, "localStiffness");
   check(std::isfinite(maxSpeed) && maxSpeed > 0.0, "maxSpeed", "must be > 0", maxSpeed);
-  checkRange(volume, 0.0, 1000.0, "volume");
+  checkRange(volume, 0.0, 10.0, "volume");
   checkRange(volumeTarget, 0.01, 100.0, "volumeTarget");
   checkRange(friction, 0.0, 1.0, "friction");
   check(gridResolution >= gpu::GRID_MIN_RESOLUTION && gridResolution <= gpu::GRID_MAX_RESOLUTION, "gridResolution",

@@ -111,13 +111,14 @@ struct SimulationSettings {
   double localStiffness = 0.0;
   double maxSpeed = 10.0;                 // particle speed clamp, > 0
   // Strand interaction through a density / velocity grid around the instance, rebuilt every frame (acts when
-  // volume or friction is above 0). volume: push (scene units / s^2) out of hair denser than volumeTarget
-  // (in units of the rest pose's mean density), [0, 1000] and [0.01, 100]; friction: fraction of each
+  // volume or friction is above 0). volume: how fast hair flows out of places denser than volumeTarget (in
+  // units of the rest pose's mean density), in grid cells a frame per unit of excess, [0, 10] and [0.01, 100]; friction: fraction of each
   // particle's velocity pulled toward the hair's around it per substep, [0, 1]; gridResolution: cells along
   // the grid's longest side, [4, 128], fixed when the instance is created.
-  double volume = 0.0;
-  double volumeTarget = 1.0;
-  double friction = 0.0;
+  // On by default; volume = friction = 0 turns the grid off.
+  double volume = 0.6;
+  double volumeTarget = 0.5;
+  double friction = 0.1;
   std::uint32_t gridResolution = 32;
   std::array<double, 3> windDirection = {1.0, 0.0, 0.0};
   double windStrength = 0.0;              // acceleration along windDirection
