@@ -92,8 +92,9 @@ void sampleGrid(vec3 p, mat4 headInverse, out vec4 flow, out vec4 pressure) {
 
 // Strand interaction through the grid (docs/THEORY.md §2.7). Friction pulls the step v toward the hair's mean
 // velocity around the particle. Where the hair is denser than the target, the particle is given an outward
-// speed of at least volume x pressure down the pressure gradient, GRID_VOLUME_BLEND of the shortfall per substep:
-// a velocity, not a force, so a grid one frame old cannot make hair at rest oscillate.
+// speed down the pressure gradient of at least volume (as a speed) x |gradient| x cell size, GRID_VOLUME_BLEND
+// of the shortfall per substep: a velocity, not a force, so a grid one frame old does not make hair at rest
+// ring, and in proportion to the gradient, so it fades where the pressure peaks instead of flipping there.
 void gridInteraction(vec3 p, inout vec3 v, float h, mat4 head, mat4 headInverse) {
   vec4 flow, pressure;
   sampleGrid(p, headInverse, flow, pressure);
@@ -102,7 +103,7 @@ void gridInteraction(vec3 p, inout vec3 v, float h, mat4 head, mat4 headInverse)
   float len = length(slope);
   if (pressure.w <= 0.0 || len < 1e-12) return;
   vec3 outward = -slope / len;
-  float shortfall = frame.gridForces.x * pressure.w * h - dot(v, outward);
+  float shortfall = frame.gridForces.x * len * frame.gridOriginCell.w * h - dot(v, outward);
   if (shortfall > 0.0) v += outward * (shortfall * GRID_VOLUME_BLEND);
 }
 

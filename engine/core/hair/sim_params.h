@@ -24,15 +24,15 @@ struct SimulationParams {
   // Strand interaction through a density / velocity grid around the instance (docs/THEORY.md §2.7), built once a
   // frame from the guides' state at its start; the grid acts when volume or friction is above 0.
   // volume: how fast hair flows down the pressure gradient out of places denser than volumeTarget, in grid
-  // cells a frame per unit of density excess, [0, 10] (per cell and frame so that its stability does not
+  // cells a frame per unit of density excess over a cell, [0, 10] (per cell and frame so that its stability does not
   // depend on the resolution or the frame rate). volumeTarget: in units of the rest pose's mean density,
   // [0.01, 100]. friction: fraction of each particle's velocity pulled toward the grid's (the hair
   // around it) per substep, [0, 1]. gridResolution: cells along the grid's longest side, [4, 128].
-  // On by default (values chosen by looking at the default head, docs/THEORY.md §2.7); volume = friction = 0
-  // turns the grid off and gives the simulation without it exactly.
-  double volume = 0.6;
+  // Off by default (volume = friction = 0: exactly the simulation without it); volume 0.6, friction 0.1 are the
+  // values chosen by looking at the default head (docs/THEORY.md §2.7).
+  double volume = 0.0;
   double volumeTarget = 0.5;
-  double friction = 0.1;
+  double friction = 0.0;
   std::uint32_t gridResolution = 32;
   glm::dvec3 windDirection = {1.0, 0.0, 0.0};
   double windStrength = 0.0;              // acceleration (scene units / s^2) along windDirection

@@ -115,10 +115,10 @@ struct SimulationSettings {
   // units of the rest pose's mean density), in grid cells a frame per unit of excess, [0, 10] and [0.01, 100]; friction: fraction of each
   // particle's velocity pulled toward the hair's around it per substep, [0, 1]; gridResolution: cells along
   // the grid's longest side, [4, 128], fixed when the instance is created.
-  // On by default; volume = friction = 0 turns the grid off.
-  double volume = 0.6;
+  // Off by default (0, 0); volume 0.6 and friction 0.1 give the default head a body (docs/THEORY.md §2.7).
+  double volume = 0.0;
   double volumeTarget = 0.5;
-  double friction = 0.1;
+  double friction = 0.0;
   std::uint32_t gridResolution = 32;
   std::array<double, 3> windDirection = {1.0, 0.0, 0.0};
   double windStrength = 0.0;              // acceleration along windDirection
