@@ -1,7 +1,8 @@
 # Thin driver (as neovim does): install what is missing, configure, build, run.
 #   make demo   installs, builds (Release) and renders the default head to out/hair.png (and front,
 #               side and back views to out/); writes nothing outside out/
-#   make pictures  re-renders the README's pictures (docs/images: front, back, curly and clumped sides, a shaking head's sheet)
+#   make pictures  re-renders the README's pictures (docs/images: front, back, side without and with the hair grid,
+#                  curly and clumped sides, a shaking head's sheet)
 #   make api-docs  the API reference of the public headers (doxygen, warnings as errors) in out/api/
 #   make test   installs, builds and runs the whole CTest suite on lavapipe
 #   make fuzz   builds the libFuzzer targets (clang, ASan+UBSan) and runs each for FUZZ_SECONDS
@@ -53,6 +54,10 @@ pictures: build
 		--out docs/images/head_side_curly.png
 	./$(BUILD)/samples/hairpipe render --camera-orbit 90 --width 480 --height 360 --clump 1,0.9,1.5 \
 		--out docs/images/head_side_clumped.png
+	./$(BUILD)/samples/hairpipe render --camera-orbit 90 --width 480 --height 360 \
+		--out docs/images/head_side.png
+	./$(BUILD)/samples/hairpipe render --camera-orbit 90 --width 480 --height 360 --volume 0.6 --friction 0.1 \
+		--out docs/images/head_side_volume.png
 	./$(BUILD)/samples/hairpipe render --camera-orbit 150 --width 240 --height 180 --animate shake --fps 60 \
 		--frames 48 --sequence out/sequence --contact-sheet docs/images/shake_contact_sheet.png
 

@@ -13,6 +13,7 @@
 #include "engine/core/hair/hair_export.h"
 #include "engine/core/hair/hair_file.h"
 #include "samples/cli/command.h"
+#include "samples/cli/hair_grid_options.h"
 #include "samples/cli/scene_options.h"
 #include "samples/cli/output_paths.h"
 
@@ -25,8 +26,7 @@ struct SimulateOptions {
   std::optional<double> dt;
   std::optional<std::uint32_t> iterations;
   std::optional<std::uint32_t> substeps;
-  std::optional<double> volume, volumeTarget, friction;
-  std::optional<std::uint32_t> gridResolution;
+  hp::cli::HairGridOptions grid;
   std::string animate = "none";
   std::string out;
   bool json = false;
@@ -36,10 +36,7 @@ hp::SimulationParams simulationParams(const SimulateOptions& opt, hp::Simulation
   if (opt.dt) params.dt = *opt.dt;
   if (opt.iterations) params.iterations = *opt.iterations;
   if (opt.substeps) params.substeps = *opt.substeps;
-  if (opt.volume) params.volume = *opt.volume;
-  if (opt.volumeTarget) params.volumeTarget = *opt.volumeTarget;
-  if (opt.friction) params.friction = *opt.friction;
-  if (opt.gridResolution) params.gridResolution = *opt.gridResolution;
+  hp::cli::applyHairGridOptions(opt.grid, params);
   params.validate();
   return params;
 }
@@ -149,14 +146,7 @@ void setupSimulate(CLI::App& app) {
   cmd->add_option("--dt", opt->dt, "Frame time step in seconds (overrides the scene)");
   cmd->add_option("--iterations", opt->iterations, "Constraint iterations per substep, 1..1000");
   cmd->add_option("--substeps", opt->substeps, "Substeps per frame, 1..64");
-  cmd->add_option("--volume", opt->volume,
-                  "Hair grid: how fast hair flows out of places denser than the target, in grid cells a frame per unit of "
-                  "excess density, 0..10 (0: off)");
-  cmd->add_option("--volume-target", opt->volumeTarget,
-                  "Hair grid: density the volume push keeps under, in units of the rest pose's mean, 0.01..100");
-  cmd->add_option("--friction", opt->friction,
-                  "Hair grid: fraction of velocity pulled toward the surrounding hair's per substep, 0..1 (0: off)");
-  cmd->add_option("--grid-resolution", opt->gridResolution, "Hair grid: cells along its longest side, 4..128");
+  hp::cli::addHairGridOptions(*cmd, opt->grid);
   cmd->add_option("--animate", opt->animate, "Head motion: none, nod, turn, shake or teleport");
   cmd->add_option("--out", opt->out, "Write the final guides as .hair");
   cmd->add_flag("--json", opt->json, "Print JSON");

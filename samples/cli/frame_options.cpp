@@ -142,6 +142,7 @@ hp::RenderRequest makeRenderRequest(const FrameOptions& o, const CLI::App& cmd) 
   }
   applyLights(o, r.scene);
   applyGroomOptions(o.groom, r.scene.groom);
+  applyHairGridOptions(o.grid, r.scene.simulation);
   if (cmd.count("--eta") + cmd.count("--absorption") + cmd.count("--color") + cmd.count("--alpha-r") +
           cmd.count("--beta-r") + cmd.count("--kg") + cmd.count("--wc") + cmd.count("--deta") + cmd.count("--dhm") +
               cmd.count("--beta-n") > 0)
@@ -258,6 +259,7 @@ void addFrameOptions(CLI::App& cmd, FrameOptions& o) {
   cmd.add_flag("--lines", o.lines, "Draw strands as lines instead of ribbons");
   cmd.add_flag("--guides-only", o.guidesOnly, "Draw the smoothed guides only (no interpolation)");
   addGroomOptions(cmd, o.groom);
+  addHairGridOptions(cmd, o.grid);
   cmd.add_option("--bounce-samples", o.bounceSamples,
                  "Points per strand where the skin's bounce is gathered, the shading interpolating between them, "
                  "[2, 256] (default 8; the vertex count, 36, gathers at every vertex)");

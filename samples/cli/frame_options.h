@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "samples/cli/groom_options.h"
+#include "samples/cli/hair_grid_options.h"
 #include "samples/cli/scene_options.h"
 #include "samples/tools/render_job.h"
 
@@ -20,6 +21,7 @@ namespace hp::cli {
 struct FrameOptions {
   SceneOptions scene;
   GroomOptions groom;
+  HairGridOptions grid;
   HairMaterial material;
   std::uint32_t frames = 90;
   std::optional<std::uint32_t> width, height, msaa, density;
