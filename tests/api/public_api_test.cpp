@@ -167,6 +167,16 @@ TEST_F(PublicApi, InstanceSettingsAndSettersAreRefusedByField) {
   hairpipe::SimulationSettings sim;
   sim.dt = 0.0;
   EXPECT_THAT(failureOf(head.setSimulation(sim)), HasSubstr("dt"));
+  sim = {};
+  sim.friction = 1.5;
+  EXPECT_THAT(failureOf(head.setSimulation(sim)), HasSubstr("friction"));
+  sim = {};
+  sim.gridResolution = 64;  // the hair grid's cells are fixed when the instance is created
+  EXPECT_THAT(failureOf(head.setSimulation(sim)), HasSubstr("gridResolution is fixed"));
+  sim = {};
+  sim.volume = 0.6;  // turning the grid on between frames is allowed
+  sim.friction = 0.1;
+  EXPECT_TRUE(head.setSimulation(sim).ok());
   hairpipe::HeadMotion motion;
   motion.to.m[12] = kNaN;
   EXPECT_THAT(failureOf(head.setMotion(motion)), HasSubstr("hairpipe::Instance::setMotion"));

@@ -35,6 +35,18 @@ TEST(CliRender, WritesThePngReportsEveryPassAndDumpsTheStrands) {
   std::filesystem::remove(strands);
 }
 
+// The hair grid in the renderer's frame (its own passes before the simulation), under validation.
+TEST(CliRender, TheHairGridRunsInTheFrame) {
+  const auto png = freshTempPath("hairpipe_cli_render_grid.png");
+  auto r = runCli({"render", "--width", "96", "--height", "64", "--density", "1000", "--frames", "3", "--validation",
+                   "--volume", "0.6", "--friction", "0.1", "--json", "--out", png.string()});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  auto j = nlohmann::json::parse(r.out);
+  EXPECT_GT(j["gpu_ms"]["simulate grid"].get<double>(), 0.0) << r.out;
+  EXPECT_GT(j["gpu_ms"]["simulate"].get<double>(), 0.0);
+  std::filesystem::remove(png);
+}
+
 TEST(CliRender, TheGraphicsRasterStaysSelectable) {
   const auto png = freshTempPath("hairpipe_cli_render_graphics.png");
   auto r = runCli({"render", "--width", "96", "--height", "64", "--density", "1000", "--frames", "2", "--validation",
@@ -75,6 +87,8 @@ TEST(CliRender, BadOptionsExitWithAMessageAndWriteNothing) {
       {{"--curl", "0.01,nan"}, "GroomSettings.curlTurns"},
       {{"--frizz", "-1"}, "GroomSettings.frizzAmplitude"},
       {{"--bounce-samples", "1"}, "--bounce-samples must be in [2, 256]"},
+      {{"--volume", "11"}, "simulation parameter volume must be in [0.000000, 10.000000], got 11"},
+      {{"--grid-resolution", "3"}, "gridResolution must be in [4, 128], got 3"},
   };
   // Render targets past half the device-local heap are refused before anything is allocated. The largest
   // frame the options allow (16384^2 at msaa 8: 108 bytes a pixel, 27.6 GiB) exceeds that on lavapipe

@@ -42,7 +42,31 @@ TEST(CliSimulate, BadParametersExitWithAMessageNamingThem) {
       {{"--iterations", "1001"}, "iterations"}, {{"--substeps", "0"}, "substeps"},
       {{"--frames", "0"}, "frames"},   {{"--animate", "wobble"}, "wobble"},
       {{"--model", "missing.hair"}, "missing.hair"},
+      {{"--volume", "-1"}, "volume"},  {{"--volume", "nan"}, "volume"},
+      {{"--friction", "2"}, "friction"}, {{"--volume-target", "0"}, "volumeTarget"},
+      {{"--grid-resolution", "200"}, "gridResolution"},
   });
+}
+
+// The hair grid's report: off by default (no peak or timing), and where it acts its peak density (above the
+// target where the pinned roots crowd), its GPU time and the interaction measures.
+TEST(CliSimulate, ReportsTheHairGridWhereItActs) {
+  auto off = runCli({"simulate", "--frames", "4", "--json"});
+  ASSERT_EQ(off.exitCode, 0) << off.err;
+  auto j = nlohmann::json::parse(off.out);
+  EXPECT_FALSE(j["grid"]["acts"].get<bool>());
+  EXPECT_FALSE(j["grid"].contains("peak_density"));
+  ASSERT_TRUE(j["interaction"].is_object());
+  auto on = runCli({"simulate", "--frames", "4", "--volume", "0.6", "--friction", "0.1", "--grid-resolution", "16",
+                    "--json", "--validation"});
+  ASSERT_EQ(on.exitCode, 0) << on.err;
+  j = nlohmann::json::parse(on.out);
+  EXPECT_TRUE(j["grid"]["acts"].get<bool>());
+  EXPECT_EQ(j["grid"]["cells"].size(), 3u);
+  EXPECT_LE(j["grid"]["cells"][0].get<int>(), 16);
+  EXPECT_GT(j["grid"]["peak_density"].get<double>(), j["grid"]["volume_target"].get<double>());
+  EXPECT_GT(j["grid"]["gpu_ms_per_frame_median"].get<double>(), 0.0);
+  EXPECT_GE(j["interaction"]["close_neighbour_fraction"].get<double>(), 0.0);
 }
 
 TEST(CliSimulate, AFailedRunLeavesNoOutputFile) {
