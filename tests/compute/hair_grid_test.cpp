@@ -176,3 +176,4 @@ TEST_F(VulkanTest, HairGridRefusesBadParametersByName) {
   EXPECT_ERROR_CONTAINS(pass.setParams(p), "gridResolution is fixed when the simulation is created (32), got 64");
 }
 
+
