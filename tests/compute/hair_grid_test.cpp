@@ -102,6 +102,23 @@ TEST_F(VulkanTest, HairGridSplatMatchesTheHostSplatOfTheSameParticles) {
   EXPECT_LT(maxAbsDifference(accumulated(*ctx, grid, 3), splatHairGrid(points, grid.layout(), vz)), tolerance);
 }
 
+// With volume and friction 0 the grid is off whatever its other parameters: the same bits as the defaults
+// (the simulation without the grid, which tests/compute/simulate_test.cpp holds to the CPU reference).
+TEST_F(VulkanTest, HairGridOffLeavesTheSimulationBitForBitUnchanged) {
+  const HairAsset asset = thinnedDefaultHead(8);
+  auto run = [&](const SimulationParams& params) {
+    SimulatePass pass(*ctx, asset, params);
+    SimulationDriver driver(*ctx, pass, HeadAnimation::Shake, assetHeadRadius(asset), SimulationDriver::Timing::None);
+    driver.runFrames(60);
+    return driver.readPositions();
+  };
+  SimulationParams off = withGrid(0.0, 3.0, 0.0);
+  off.gridResolution = 8;
+  const auto a = run(SimulationParams{}), b = run(off);
+  ASSERT_EQ(a.size(), b.size());
+  EXPECT_EQ(0, std::memcmp(a.data(), b.data(), a.size() * sizeof(glm::vec4)));
+}
+
 // Integer sums do not depend on the order the atomics land in: two runs give the same bits.
 TEST_F(VulkanTest, HairGridSimulationIsDeterministic) {
   const HairAsset asset = thinnedDefaultHead(8);
