@@ -1,6 +1,7 @@
 // `hairpipe inspect FILE [--json]`: what is in a .hair model (strands, points, points per strand,
 // bounding box, arrays present, the head sphere fitted to the roots), a TressFX .tfx model (version,
-// strands, vertices per strand, arrays, bounds, head sphere) or an OBJ scalp (vertices,
+// strands, vertices per strand, arrays, bounds, head sphere), a TressFX .tfxbone skinning file (bones,
+// strands, influences, weights not summing to 1) or an OBJ scalp (vertices,
 // triangles, dropped degenerate faces, bounding box, fitted sphere). Bad files exit 1 with a message.
 #include <algorithm>
 #include <cstdio>
@@ -14,6 +15,7 @@
 #include "engine/core/hair/fit_sphere.h"
 #include "engine/core/hair/hair_file.h"
 #include "engine/core/hair/obj_import.h"
+#include "engine/core/hair/tfx_bone_file.h"
 #include "engine/core/hair/tfx_file.h"
 #include "samples/cli/command.h"
 
@@ -78,6 +80,25 @@ nlohmann::json inspectTfx(const std::filesystem::path& path) {
   return j;
 }
 
+// A skinning file has no points: its bones, its strands and how they are weighted.
+nlohmann::json inspectTfxBone(const std::filesystem::path& path) {
+  const hp::TfxBoneData d = hp::readTfxBoneFile(path);
+  std::size_t most = 0, unnormalised = 0;
+  for (const auto& s : d.strands) {
+    std::size_t used = 0;
+    float sum = 0.0f;
+    for (int k = 0; k < 4; ++k) {
+      used += s.weights[k] > 0.0f ? 1 : 0;
+      sum += s.weights[k];
+    }
+    most = std::max(most, used);
+    unnormalised += std::abs(sum - 1.0f) > 1e-3f ? 1 : 0;
+  }
+  return {{"file", path.string()}, {"format", "tfxbone"}, {"bones", d.boneNames.size()}, {"bone_names", d.boneNames},
+          {"strands", d.strands.size()}, {"most_influences_per_strand", most},
+          {"strands_with_weights_not_summing_to_1", unnormalised}};
+}
+
 nlohmann::json inspectObj(const std::filesystem::path& path) {
   hp::ScalpMesh m = hp::loadObjScalp(path);
   nlohmann::json j = {{"file", path.string()}, {"format", "obj"}, {"vertices", m.vertexCount()},
@@ -95,6 +116,14 @@ std::string text3(const nlohmann::json& v) {
 
 void printText(const nlohmann::json& j) {
   std::cout << "file: " << j["file"].get<std::string>() << "\n";
+  if (j["format"] == "tfxbone") {
+    std::cout << "TressFX skinning: " << j["bones"] << " bones, " << j["strands"] << " strands, up to "
+              << j["most_influences_per_strand"] << " influences a strand, "
+              << j["strands_with_weights_not_summing_to_1"] << " strands whose weights do not sum to 1\nbones:";
+    for (const auto& n : j["bone_names"]) std::cout << " " << n.get<std::string>();
+    std::cout << "\n";
+    return;
+  }
   if (j["format"] == "hair") {
     std::cout << "strands: " << j["strands"] << "\npoints: " << j["points"] << "\npoints per strand: min "
               << j["min_points_per_strand"] << ", max " << j["max_points_per_strand"] << "\narrays:";
@@ -122,16 +151,18 @@ void run(const InspectOptions& o) {
   nlohmann::json j;
   if (ext == ".hair") j = inspectHair(path);
   else if (ext == ".tfx") j = inspectTfx(path);
+  else if (ext == ".tfxbone") j = inspectTfxBone(path);
   else if (ext == ".obj") j = inspectObj(path);
-  else throw hp::Error(o.file + ": unknown file type (expected .hair, .tfx or .obj)");
+  else throw hp::Error(o.file + ": unknown file type (expected .hair, .tfx, .tfxbone or .obj)");
   if (o.json) std::cout << j.dump(2) << "\n";
   else printText(j);
 }
 
 void setup(CLI::App& app) {
   auto opts = std::make_shared<InspectOptions>();
-  auto* cmd = app.add_subcommand("inspect", "Describe a .hair or TressFX .tfx model or an OBJ scalp");
-  cmd->add_option("file", opts->file, "a .hair, .tfx or .obj file")->required();
+  auto* cmd = app.add_subcommand("inspect",
+                                 "Describe a .hair or TressFX .tfx model, a TressFX .tfxbone skinning file or an OBJ scalp");
+  cmd->add_option("file", opts->file, "a .hair, .tfx, .tfxbone or .obj file")->required();
   cmd->add_flag("--json", opts->json, "print JSON instead of text");
   cmd->callback([opts] { run(*opts); });
 }

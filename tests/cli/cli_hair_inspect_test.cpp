@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "engine/core/hair/hair_file.h"
+#include "engine/core/hair/tfx_bone_file.h"
 #include "samples/tools/host/synthetic_hair.h"
 #include "tests/hair/hair_test_util.h"
 #include "tests/support/cli_runner.h"
@@ -122,6 +123,33 @@ TEST(CliHairInspect, BadHairFilesExitOneNamingFileAndProblem) {
   }
 }
 
+// A TressFX skinning file: its bones, strands and weights; a corrupt one exits 1 naming the problem.
+TEST(CliHairInspect, ReportsATressFxSkinningFile) {
+  hp::test::TempDir dir;
+  hp::TfxBoneData d;
+  d.boneIndices = {0, 1};
+  d.boneNames = {"head", "jaw"};
+  d.strands = {{0, {0, -1, -1, -1}, {1.0f, 0.0f, 0.0f, 0.0f}}, {1, {0, 1, -1, -1}, {0.6f, 0.6f, 0.0f, 0.0f}}};
+  hp::test::writeBytes(dir / "hair.tfxbone", hp::encodeTfxBone(d));
+  auto r = runCli({"inspect", (dir / "hair.tfxbone").string(), "--json"});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["format"], "tfxbone");
+  EXPECT_EQ(j["bones"], 2);
+  EXPECT_EQ(j["bone_names"], (std::vector<std::string>{"head", "jaw"}));
+  EXPECT_EQ(j["strands"], 2);
+  EXPECT_EQ(j["most_influences_per_strand"], 2);
+  EXPECT_EQ(j["strands_with_weights_not_summing_to_1"], 1);
+  r = runCli({"inspect", (dir / "hair.tfxbone").string()});
+  EXPECT_NE(r.out.find("TressFX skinning: 2 bones, 2 strands"), std::string::npos) << r.out;
+  std::vector<std::byte> bytes = hp::encodeTfxBone(d);
+  bytes.resize(bytes.size() - 1);
+  hp::test::writeBytes(dir / "cut.tfxbone", bytes);
+  r = runCli({"inspect", (dir / "cut.tfxbone").string()});
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_NE(r.err.find("cut.tfxbone: strand count 2 needs 72 bytes, the file has 71 left"), std::string::npos) << r.err;
+}
+
 TEST(CliHairInspect, BadObjAndUnknownTypesExitOne) {
   hp::test::TempDir dir;
   hp::test::writeText(dir / "bad.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 -4\n");
@@ -131,7 +159,8 @@ TEST(CliHairInspect, BadObjAndUnknownTypesExitOne) {
       << r.err;
   r = runCli({"inspect", (dir / "model.fbx").string()});
   EXPECT_EQ(r.exitCode, 1);
-  EXPECT_NE(r.err.find("model.fbx: unknown file type (expected .hair, .tfx or .obj)"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("model.fbx: unknown file type (expected .hair, .tfx, .tfxbone or .obj)"), std::string::npos)
+      << r.err;
   r = runCli({"inspect", (dir / "missing.hair").string()});
   EXPECT_EQ(r.exitCode, 1);
   EXPECT_NE(r.err.find("missing.hair: cannot open"), std::string::npos) << r.err;
