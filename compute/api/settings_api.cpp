@@ -1,4 +1,5 @@
-// The helpers of hairpipe/settings.h and hairpipe/renderer.h that compute values: absorptionFromColor, makeView.
+// The helpers of hairpipe/settings.h and hairpipe/renderer.h that compute values: absorptionFromColor, makeView,
+// loadTfxBoneSkinning.
 #include <cmath>
 #include <string>
 
@@ -6,6 +7,7 @@
 
 #include "compute/api/access.h"
 #include "compute/api/convert.h"
+#include "engine/core/hair/tfx_bone_file.h"
 #include "engine/core/shading/material_color.h"
 
 namespace hairpipe {
@@ -13,6 +15,23 @@ Result<std::array<double, 3>> absorptionFromColor(float r, float g, float b) noe
   return guarded<std::array<double, 3>>("hairpipe::absorptionFromColor", [&] {
     const glm::dvec3 a = hp::absorptionFromColor({r, g, b});
     return std::array<double, 3>{a.x, a.y, a.z};
+  });
+}
+
+Result<TfxBoneSkinning> loadTfxBoneSkinning(const std::string& path, std::uint32_t guideCount) noexcept {
+  return guarded<TfxBoneSkinning>("hairpipe::loadTfxBoneSkinning", [&] {
+    const hp::TfxBoneData data = hp::readTfxBoneFile(path);
+    TfxBoneSkinning out;
+    out.boneNames = data.boneNames;
+    for (const hp::gpu::SkinWeights& s : hp::tfxBoneSkinWeights(data, guideCount, path)) {
+      SkinWeights w;
+      for (int k = 0; k < 4; ++k) {
+        w.bones[k] = s.bones[k];
+        w.weights[k] = s.weights[k];
+      }
+      out.skin.push_back(w);
+    }
+    return out;
   });
 }
 

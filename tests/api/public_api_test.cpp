@@ -7,6 +7,7 @@
 #include <vector>
 
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <iostream>
 #include <limits>
@@ -97,6 +98,8 @@ TEST(PublicApiWithoutDevice, AssetsAndHelpersRefuseBadInputByName) {
   camera.up = {0.0f, 0.0f, 1.0f};  // along the view direction
   EXPECT_THAT(failureOf(hairpipe::makeView(camera, {64, 64})), HasSubstr("up is parallel"));
   EXPECT_THAT(failureOf(hairpipe::makeView({}, {0, 64})), HasSubstr("extent"));
+  EXPECT_THAT(failureOf(hairpipe::loadTfxBoneSkinning("/nonexistent/hair.tfxbone", 10)),
+              HasSubstr("hairpipe::loadTfxBoneSkinning: /nonexistent/hair.tfxbone"));
   EXPECT_STREQ(hairpipe::versionString(), "0.2.0");
 }
 
@@ -146,6 +149,48 @@ TEST_F(PublicApi, PipelineCacheDataRoundTrips) {
     hairpipe::Result<hairpipe::Instance> second = again->createInstance(*asset_, {});
     EXPECT_TRUE(second.ok()) << second.message();
   }
+}
+
+// A TressFX skinning file as the application gets it: bone names and per-guide weights for ScalpInput::skin.
+TEST(PublicApiFiles, TressFxSkinningLoadsForEveryGuide) {
+  std::vector<unsigned char> bytes;
+  auto i32 = [&](std::int32_t v) {
+    unsigned char b[4];
+    std::memcpy(b, &v, 4);
+    bytes.insert(bytes.end(), b, b + 4);
+  };
+  auto f32 = [&](float v) {
+    std::int32_t i;
+    std::memcpy(&i, &v, 4);
+    i32(i);
+  };
+  i32(2);  // bones: index, name length with its NUL, name
+  for (const char* name : {"head", "jaw"}) {
+    i32(0);
+    i32(std::int32_t(std::strlen(name) + 1));
+    bytes.insert(bytes.end(), name, name + std::strlen(name) + 1);
+  }
+  i32(2);  // strands: index, 4 x (bone, weight)
+  for (int s = 0; s < 2; ++s) {
+    i32(s);
+    i32(0), f32(s == 0 ? 1.0f : 1.0f), i32(s == 0 ? -1 : 1), f32(s == 0 ? 0.0f : 3.0f);
+    i32(-1), f32(0.0f), i32(-1), f32(0.0f);
+  }
+  const std::string path = ::testing::TempDir() + "hairpipe_api.tfxbone";
+  std::FILE* f = std::fopen(path.c_str(), "wb");
+  ASSERT_NE(f, nullptr);
+  std::fwrite(bytes.data(), 1, bytes.size(), f);
+  std::fclose(f);
+  auto skinning = hairpipe::loadTfxBoneSkinning(path, 3);
+  ASSERT_TRUE(skinning.ok()) << skinning.message();
+  EXPECT_EQ(skinning.value().boneNames, (std::vector<std::string>{"head", "jaw"}));
+  ASSERT_EQ(skinning.value().skin.size(), 3u);
+  EXPECT_EQ(skinning.value().skin[0].weights[0], 1.0f);
+  EXPECT_EQ(skinning.value().skin[1].bones[1], 1u);
+  EXPECT_FLOAT_EQ(skinning.value().skin[1].weights[1], 0.75f);  // 1 and 3, normalised
+  EXPECT_EQ(skinning.value().skin[2].weights, skinning.value().skin[1].weights);
+  EXPECT_THAT(failureOf(hairpipe::loadTfxBoneSkinning(path, 1)), HasSubstr("2 strands of skinning for 1 guides"));
+  std::remove(path.c_str());
 }
 
 TEST_F(PublicApi, InstanceSettingsAndSettersAreRefusedByField) {

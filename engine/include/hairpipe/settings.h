@@ -8,6 +8,7 @@
 
 #include <array>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "hairpipe/math.h"
@@ -131,6 +132,16 @@ struct SkinWeights {
   std::array<std::uint32_t, 4> bones{};
   std::array<float, 4> weights{1.0f, 0.0f, 0.0f, 0.0f};
 };
+
+// The skinning of `guideCount` guides (Asset::guideCount()) from a TressFX .tfxbone file: per guide its bones
+// (positions in the file's bone list, whose names the application maps to its joints) and weights
+// normalised to sum 1; guides past the file's strands take its last strand's. Bad files, and files with more
+// strands than guides, fail naming the file and the problem. For ScalpInput::skin (Kind::Bones).
+struct TfxBoneSkinning {
+  std::vector<std::string> boneNames;
+  std::vector<SkinWeights> skin;
+};
+Result<TfxBoneSkinning> loadTfxBoneSkinning(const std::string& path, std::uint32_t guideCount) noexcept;
 
 // Where the guides' roots come from each frame.
 struct ScalpInput {
