@@ -11,6 +11,8 @@ void gridFootprint(vec3 q, vec4 originCell, out ivec3 base, out vec3 frac) {
   frac = g - lo;
 }
 
+uint gridCellIndex(ivec3 c, uvec3 dims) { return (uint(c.z) * dims.y + uint(c.y)) * dims.x + uint(c.x); }
+
 // Corner k (bit 0: x, 1: y, 2: z) of the footprint: its cell index, or -1 outside the grid, and its weight.
 int gridCorner(ivec3 base, vec3 frac, uvec3 dims, uint k, out float weight) {
   ivec3 o = ivec3(int(k & 1u), int((k >> 1u) & 1u), int(k >> 2u));
@@ -18,6 +20,6 @@ int gridCorner(ivec3 base, vec3 frac, uvec3 dims, uint k, out float weight) {
   weight = w.x * w.y * w.z;
   ivec3 c = base + o;
   if (any(lessThan(c, ivec3(0))) || any(greaterThanEqual(c, ivec3(dims)))) return -1;
-  return int((uint(c.z) * dims.y + uint(c.y)) * dims.x + uint(c.x));
+  return int(gridCellIndex(c, dims));
 }
 #endif

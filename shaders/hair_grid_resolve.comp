@@ -4,6 +4,7 @@
 // faces), for simulate.comp (layout: shaders/shared/hair_grid.h). Raises the frame's peak density.
 #include "shared/hair_grid.h"
 #include "common.glsl"
+#include "hair_grid.glsl"
 
 layout(local_size_x = GRID_WORKGROUP_SIZE) in;
 layout(push_constant) uniform Push { GridParams params; };
@@ -11,12 +12,9 @@ layout(std430, binding = GRID_BINDING_ACCUM) readonly buffer Accum { int accum[]
 layout(std430, binding = GRID_BINDING_CELLS) writeonly buffer Cells { vec4 cells[]; };
 layout(std430, binding = GRID_BINDING_PEAK) buffer Peak { uint peak[]; };
 
-uint cellIndex(ivec3 c) {
-  uvec3 d = params.dims.xyz;
-  return (uint(c.z) * d.y + uint(c.y)) * d.x + uint(c.x);
+float density(ivec3 c) {
+  return float(accum[gridCellIndex(c, params.dims.xyz) * GRID_ACCUM_INTS]) * params.fixedPoint.y * params.density.x;
 }
-
-float density(ivec3 c) { return float(accum[cellIndex(c) * GRID_ACCUM_INTS]) * params.fixedPoint.y * params.density.x; }
 
 float pressure(ivec3 c) { return max(density(c) - params.density.y, 0.0); }
 

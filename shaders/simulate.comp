@@ -1,9 +1,10 @@
 #version 460
-// One invocation simulates one guide for one frame (docs/THEORY.md §2): per substep, pin the root to
-// the moving scalp, Verlet-integrate the free particles (gravity, wind, damping, speed clamp), pull
-// mildly toward the rest pose (with the hair grid's friction and volume when on), then iterate the local shape (when on), length constraints (Gauss-Seidel,
-// root to tip; the last sweep follow-the-leader) and pearl collisions, collisions last so the final state is outside every
-// collider, then the distance grid (sdf_collide.glsl), so the final state is outside the head mesh.
+// One invocation simulates one guide for one frame (docs/THEORY.md §2): per substep, pin the root to the
+// moving scalp, Verlet-integrate the free particles (gravity, wind, damping, speed clamp; the hair grid's
+// friction and volume when on, §2.7), pull mildly toward the rest pose, then iterate the local shape (when
+// on), length constraints (Gauss-Seidel, root to tip; the last sweep follow-the-leader) and pearl
+// collisions, collisions last so the final state is outside every collider, then the distance grid
+// (sdf_collide.glsl), so the final state is outside the head mesh.
 // tests/compute/sim_reference.cpp is the same algorithm in double precision; keep them in step.
 #include "shared/simulate.h"
 #include "shared/hair_grid.h"
@@ -95,11 +96,11 @@ void sampleGrid(vec3 p, mat4 headInverse, out vec4 flow, out vec4 pressure) {
 // speed down the pressure gradient of at least volume (as a speed) x |gradient| x cell size, GRID_VOLUME_BLEND
 // of the shortfall per substep: a velocity, not a force, so a grid one frame old does not make hair at rest
 // ring, and in proportion to the gradient, so it fades where the pressure peaks instead of flipping there.
-void gridInteraction(vec3 p, inout vec3 v, float h, mat4 head, mat4 headInverse) {
+void gridInteraction(vec3 p, inout vec3 v, float h, mat4 headInverse) {
   vec4 flow, pressure;
   sampleGrid(p, headInverse, flow, pressure);
   if (flow.w > 1e-4) v = mix(v, flow.xyz * (h / flow.w), frame.gridForces.y);
-  vec3 slope = mat3(head) * pressure.xyz;
+  vec3 slope = transpose(mat3(headInverse)) * pressure.xyz;  // a gradient: by the inverse transpose
   float len = length(slope);
   if (pressure.w <= 0.0 || len < 1e-12) return;
   vec3 outward = -slope / len;
@@ -107,14 +108,14 @@ void gridInteraction(vec3 p, inout vec3 v, float h, mat4 head, mat4 headInverse)
   if (shortfall > 0.0) v += outward * (shortfall * GRID_VOLUME_BLEND);
 }
 
-void integrate(uint base, uint n, mat4 root, vec3 accel, float h, mat4 head, mat4 headInverse) {
+void integrate(uint base, uint n, mat4 root, vec3 accel, float h, mat4 headInverse) {
   x[0] = transformPoint(root, rest[base].xyz);  // the root is pinned to the scalp
   xPrev[0] = x[0];
   float maxStep = frame.maxSpeed * h;
   bool gridActs = frame.gridDims.w != 0u;
   for (uint i = 1u; i < n; ++i) {
     vec3 v = (x[i] - xPrev[i]) * (1.0 - frame.damping);
-    if (gridActs) gridInteraction(x[i], v, h, head, headInverse);
+    if (gridActs) gridInteraction(x[i], v, h, headInverse);
     float speed = length(v);
     if (speed > maxStep) v *= maxStep / speed;
     xPrev[i] = x[i];
@@ -268,7 +269,7 @@ void main() {
     float gust = 1.0 + frame.wind.w * sin(6.28318530718 * frame.gustFrequency * (frame.time + h * float(s + 1u)) + phase);
     vec3 accel = frame.gravity.xyz + frame.wind.xyz * gust;
     mat4 headInverse = inverse(head);
-    integrate(base, n, root, accel, h, head, headInverse);
+    integrate(base, n, root, accel, h, headInverse);
     pullTowardRest(base, n, root);
     for (uint it = 0u; it < frame.iterations; ++it) {
       if (frame.localStiffness > 0.0) keepLocalShape(base, n, root);

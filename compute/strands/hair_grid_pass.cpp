@@ -5,6 +5,7 @@
 #include "engine/core/error.h"
 #include "engine/vk/barriers.h"
 #include "engine/vk/context.h"
+#include "engine/vk/transfer.h"
 
 namespace hp {
 namespace {
@@ -25,9 +26,8 @@ VkDeviceSize checkedBytes(const vk::Context& ctx, std::uint64_t bytes) {
   return bytes;
 }
 
-double restMean(std::span<const glm::vec4> rest, const HairGridLayout& layout) {
-  std::vector<glm::vec3> points(rest.begin(), rest.end());
-  return weightedMeanDensity(splatHairGrid(points, layout));
+double restMean(std::span<const glm::vec4> rest, std::uint32_t particlesPerGuide, const HairGridLayout& layout) {
+  return weightedMeanDensity(splatHairGrid(freeParticles(rest, particlesPerGuide), layout));
 }
 }  // namespace
 
@@ -37,7 +37,8 @@ HairGridPass::HairGridPass(const vk::Context& ctx, std::span<const glm::vec4> re
     : ctx_(ctx),
       layout_(hairGridLayout(rest, particlesPerGuide, resolution, pearlRadius)),
       particles_(std::uint32_t(rest.size())),
-      restMean_(restMean(rest, layout_)),
+      particlesPerGuide_(particlesPerGuide),
+      restMean_(restMean(rest, particlesPerGuide, layout_)),
       fixedPoint_(hairGridFixedPoint(rest.size())) {
   const std::uint64_t cells = layout_.cellCount();
   accum_ = vk::Buffer(ctx, checkedBytes(ctx, cells * gpu::GRID_ACCUM_INTS * 4), kUsage, vk::MemoryKind::DeviceLocal,
@@ -55,6 +56,7 @@ HairGridPass::HairGridPass(const vk::Context& ctx, std::span<const glm::vec4> re
                                    sizeof(gpu::GridParams), "hair grid splat");
   resolve_ = vk::makeComputePipeline(ctx, library, "hair_grid_resolve.comp", gpu::GRID_WORKGROUP_SIZE, {set_.layout()},
                                      sizeof(gpu::GridParams), "hair grid resolve");
+  vk::upload<std::uint32_t>(ctx, peak_, std::vector<std::uint32_t>{0u}, vk::BufferUse::ComputeWrite);  // no peak yet
 }
 
 void HairGridPass::record(VkCommandBuffer cmd, const glm::mat4& worldToHead, double substep, double maxSpeed,
@@ -64,7 +66,7 @@ void HairGridPass::record(VkCommandBuffer cmd, const glm::mat4& worldToHead, dou
   p.originCell = glm::vec4(layout_.origin, layout_.cellSize);
   p.dims = glm::uvec4(layout_.dims, particles_);
   p.fixedPoint = glm::vec4(fixedPoint_, 1.0f / fixedPoint_, float(1.0 / substep), float(maxSpeed));
-  p.density = glm::vec4(restMean_ > 0.0 ? float(1.0 / restMean_) : 0.0f, float(target), 0.0f, 0.0f);
+  p.density = glm::vec4(restMean_ > 0.0 ? float(1.0 / restMean_) : 0.0f, float(target), float(particlesPerGuide_), 0.0f);
   const auto& fn = ctx_.fn();
   // Global barriers: four a frame whatever the buffers. The last frame's resolve read the sums and its
   // simulation read the cells; the splat reads the particles the simulation writes next.

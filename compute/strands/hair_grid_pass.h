@@ -40,6 +40,7 @@ class HairGridPass {
   const vk::Context& ctx_;
   HairGridLayout layout_;
   std::uint32_t particles_;
+  std::uint32_t particlesPerGuide_;
   double restMean_;
   float fixedPoint_;
   vk::Buffer accum_;

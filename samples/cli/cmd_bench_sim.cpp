@@ -50,14 +50,7 @@ hp::HairAsset repeatedGuides(const hp::HairAsset& head, std::uint32_t count, con
 }
 
 // The defaults, with the hair grid off or at its recommended values (docs/THEORY.md §2.7).
-hp::SimulationParams benchParams(bool grid) {
-  hp::SimulationParams p;
-  if (grid) {
-    p.volume = 0.6;
-    p.friction = 0.1;
-  }
-  return p;
-}
+hp::SimulationParams benchParams(bool grid) { return grid ? hp::withHairGrid({}) : hp::SimulationParams{}; }
 
 nlohmann::json benchOne(const hp::vk::Context& ctx, const hp::HairAsset& asset, std::uint32_t frames,
                         const hp::vk::CopyReference& copy, bool grid) {

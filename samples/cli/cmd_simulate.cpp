@@ -60,7 +60,7 @@ nlohmann::json gridReport(const hp::vk::Context& ctx, const hp::SimulatePass& pa
 }
 
 // How the guides interact at the end of the run (samples/tools/host/interaction_stats.h): velocity spread in
-// the grid's cells, and guides with roots within 1 cm coming closer than two pearl radii.
+// head-space cubes of the grid's cell size, and guides with roots within 1 cm coming closer than two pearl radii.
 nlohmann::json interactionReport(const hp::SimulatePass& pass, const hp::SimulationDriver& driver,
                                  const std::vector<glm::vec4>& positions, const std::vector<glm::vec4>& previous) {
   const hp::SimulationParams& p = pass.params();
@@ -72,11 +72,58 @@ nlohmann::json interactionReport(const hp::SimulatePass& pass, const hp::Simulat
           {"close_neighbour_fraction", close.fraction}};
 }
 
+// The run's report (what --json prints): accuracy, cost, the hair layer, the grid and the interaction.
+nlohmann::json simulateReport(const hp::vk::Context& ctx, const hp::SimulatePass& pass, const hp::SimulationDriver& driver,
+                              const hp::HairAsset& asset, const std::vector<glm::vec4>& positions,
+                              const std::vector<glm::vec4>& previous, std::uint32_t frames, hp::HeadAnimation animation) {
+  const hp::SimStats stats = driver.stats(positions, previous);
+  nlohmann::json report = {{"guides", pass.guideCount()},
+                           {"particles_per_guide", pass.particlesPerGuide()},
+                           {"frames", frames},
+                           {"animation", hp::headAnimationName(animation)},
+                           {"max_length_error", stats.maxLengthError},
+                           {"min_collider_clearance", stats.minColliderClearance},
+                           {"nan_count", stats.nanCount},
+                           {"max_speed", stats.maxSpeed},
+                           {"gpu_ms_per_frame_median", driver.medianFrameMilliseconds()},
+                           {"device", ctx.properties().deviceName}};
+  // The hair layer's thickness over the head (guide middles' distance from the head's surface), where the
+  // asset has a distance field to measure it with.
+  const hp::LayerThickness layer =
+      asset.sdf ? hp::hairLayerThickness(positions, pass.particlesPerGuide(), *asset.sdf, driver.head())
+                : hp::LayerThickness{};
+  report["grid"] = gridReport(ctx, pass, driver);
+  report["interaction"] = interactionReport(pass, driver, positions, previous);
+  report["layer_thickness"] = layer.guides ? nlohmann::json{{"mean", layer.mean}, {"p90", layer.p90}, {"guides", layer.guides}}
+                                           : nlohmann::json(nullptr);
+  return report;
+}
+
 hp::GuideSet finalGuides(const std::vector<glm::vec4>& positions, std::uint32_t particlesPerGuide) {
   hp::GuideSet guides;
   guides.particlesPerGuide = particlesPerGuide;
   for (const auto& p : positions) guides.positions.emplace_back(p);
   return guides;
+}
+
+// The report as text.
+void printReport(const nlohmann::json& r) {
+  std::cout << "simulated " << r["frames"] << " frames of " << r["guides"] << " guides x " << r["particles_per_guide"]
+            << " particles (" << r["animation"].get<std::string>() << ") on " << r["device"].get<std::string>() << "\n"
+            << "  max_length_error        " << r["max_length_error"].get<double>() << "\n"
+            << "  min_collider_clearance  " << r["min_collider_clearance"].get<double>() << "\n"
+            << "  nan_count               " << r["nan_count"] << "\n"
+            << "  max_speed               " << r["max_speed"].get<double>() << "\n"
+            << "  gpu ms/frame (median)   " << r["gpu_ms_per_frame_median"].get<double>() << "\n";
+  const auto& grid = r["grid"];
+  if (grid["acts"].get<bool>())
+    std::cout << "  hair grid               peak density " << grid["peak_density"].get<double>() << " (target "
+              << grid["volume_target"].get<double>() << "), " << grid["gpu_ms_per_frame_median"].get<double>()
+              << " gpu ms/frame\n";
+  const auto& layer = r["layer_thickness"];
+  if (!layer.is_null())
+    std::cout << "  layer thickness         mean " << layer["mean"].get<double>() << ", 90th percentile "
+              << layer["p90"].get<double>() << " (guide middles from the head's surface)\n";
 }
 
 void runSimulate(const SimulateOptions& opt) {
@@ -94,48 +141,13 @@ void runSimulate(const SimulateOptions& opt) {
   progress.finish();
   const std::vector<glm::vec4> positions = driver.readPositions();  // the final state, read back once
   const std::vector<glm::vec4> previous = driver.readPrevious();
-  const hp::SimStats stats = driver.stats(positions, previous);
   if (!opt.out.empty())
     hp::writeHairFile(opt.out, hp::guidesToHair(finalGuides(positions, pass.particlesPerGuide()),
                                                 "hairpipe simulate: final guides"));
   hp::cli::checkValidation(*ctx);
-  nlohmann::json report = {{"guides", pass.guideCount()},
-                           {"particles_per_guide", pass.particlesPerGuide()},
-                           {"frames", opt.frames},
-                           {"animation", hp::headAnimationName(animation)},
-                           {"max_length_error", stats.maxLengthError},
-                           {"min_collider_clearance", stats.minColliderClearance},
-                           {"nan_count", stats.nanCount},
-                           {"max_speed", stats.maxSpeed},
-                           {"gpu_ms_per_frame_median", driver.medianFrameMilliseconds()},
-                           {"device", ctx->properties().deviceName}};
-  // The hair layer's thickness over the head (guide middles' distance from the head's surface), where the
-  // asset has a distance field to measure it with.
-  const hp::LayerThickness layer =
-      asset.sdf ? hp::hairLayerThickness(positions, pass.particlesPerGuide(), *asset.sdf, driver.head())
-                : hp::LayerThickness{};
-  report["grid"] = gridReport(*ctx, pass, driver);
-  report["interaction"] = interactionReport(pass, driver, positions, previous);
-  report["layer_thickness"] = layer.guides ? nlohmann::json{{"mean", layer.mean}, {"p90", layer.p90}, {"guides", layer.guides}}
-                                           : nlohmann::json(nullptr);
-  if (opt.json) {
-    std::cout << report.dump(2) << "\n";
-    return;
-  }
-  std::cout << "simulated " << opt.frames << " frames of " << pass.guideCount() << " guides x "
-            << pass.particlesPerGuide() << " particles (" << report["animation"].get<std::string>() << ") on "
-            << ctx->properties().deviceName << "\n"
-            << "  max_length_error        " << stats.maxLengthError << "\n"
-            << "  min_collider_clearance  " << stats.minColliderClearance << "\n"
-            << "  nan_count               " << stats.nanCount << "\n"
-            << "  max_speed               " << stats.maxSpeed << "\n"
-            << "  gpu ms/frame (median)   " << driver.medianFrameMilliseconds() << "\n";
-  if (report["grid"]["acts"].get<bool>())
-    std::cout << "  hair grid               peak density " << report["grid"]["peak_density"].get<double>() << " (target "
-              << params.volumeTarget << "), " << driver.medianGridMilliseconds() << " gpu ms/frame\n";
-  if (layer.guides)
-    std::cout << "  layer thickness         mean " << layer.mean << ", 90th percentile " << layer.p90
-              << " (guide middles from the head's surface)\n";
+  const nlohmann::json report = simulateReport(*ctx, pass, driver, asset, positions, previous, opt.frames, animation);
+  if (opt.json) std::cout << report.dump(2) << "\n";
+  else printReport(report);
 }
 
 void setupSimulate(CLI::App& app) {

@@ -5,9 +5,10 @@
 // the same way on the host.
 // Per frame, before the simulation (compute/strands/hair_grid_pass.*):
 //   1. the accumulation buffer is cleared,
-//   2. hair_grid_splat.comp adds every guide particle's weight (1 per particle) and its weight times its
-//      velocity (in units of maxSpeed) as fixed-point integers (deterministic: integer sums do not depend on
-//      the order), 4 ints per cell,
+//   2. hair_grid_splat.comp adds every free guide particle's weight (1 per particle; the roots, pinned to the
+//      scalp, neither flow nor are pushed, so they are left out) and its weight times its velocity (in units of
+//      maxSpeed) as fixed-point integers (deterministic: integer sums do not depend on the order), 4 ints per
+//      cell; a particle that is not finite is left out too,
 //   3. hair_grid_resolve.comp turns them into 2 vec4 per cell, read by simulate.comp:
 //        [2c]     xyz density times velocity (world, scene units / s), w density
 //        [2c + 1] xyz gradient of the pressure (head space, per scene unit), w pressure
@@ -37,7 +38,8 @@ struct GridParams {
   vec4 originCell;    // xyz head-space corner of cell (0, 0, 0), w cell size
   uvec4 dims;         // xyz cells per axis, w particle count
   vec4 fixedPoint;    // x integer units per unit of weight, y its inverse, z 1 / substep time, w maxSpeed
-  vec4 density;       // x 1 / rest mean density (weight per cell), y target (relative), zw unused
+  vec4 density;       // x 1 / rest mean density (weight per cell), y target (relative), z particles per guide
+                      // (the roots are left out), w unused
 };
 HP_END
 

@@ -227,8 +227,7 @@ TEST_F(VulkanTest, LocalShapeKeepsAHelixThroughSixHundredFramesOfShaking) {
   for (const glm::vec3& p : asset.guides.positions) rest.emplace_back(p, 0.0f);
   const double restRadius = meanHelixRadius(rest);
   auto radiusAfter = [&](double localStiffness, bool grid = false) {
-    SimulationParams params;
-    if (grid) params.volume = 0.6, params.friction = 0.1;
+    SimulationParams params = grid ? withHairGrid({}) : SimulationParams{};
     params.localStiffness = localStiffness;
     SimulatePass pass(*ctx, asset, params);
     SimulationDriver driver(*ctx, pass, HeadAnimation::Shake, 0.1f);

@@ -58,6 +58,13 @@ std::vector<double> splatHairGrid(std::span<const glm::vec3> points, const HairG
   return cells;
 }
 
+std::vector<glm::vec3> freeParticles(std::span<const glm::vec4> particles, std::uint32_t particlesPerGuide) {
+  std::vector<glm::vec3> out;
+  for (std::size_t i = 0; i < particles.size(); ++i)
+    if (particlesPerGuide > 0 && i % particlesPerGuide != 0) out.emplace_back(particles[i]);
+  return out;
+}
+
 double weightedMeanDensity(std::span<const double> cellWeights) {
   double sum = 0.0, sumSquares = 0.0;
   for (double w : cellWeights) {

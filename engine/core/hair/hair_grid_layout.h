@@ -2,8 +2,8 @@
 // Contract: where an instance's hair grid lies (docs/THEORY.md §2.7, shaders/shared/hair_grid.h) and the
 // host's copy of its trilinear splat. The grid covers, in head space, every place a guide particle can reach:
 // the roots' box grown by the longest guide and the pearl radius, in cubic cells with `resolution` cells
-// along its longest side. The rest mean density (weight-averaged cell weight of the rest pose) is the
-// unit in which the device grid's densities and the volume target are expressed.
+// along its longest side. The rest mean density (weight-averaged cell weight of the rest pose's free
+// particles) is the unit in which the device grid's densities and the volume target are expressed.
 #include <glm/glm.hpp>
 
 #include <cstdint>
@@ -27,6 +27,9 @@ HairGridLayout hairGridLayout(std::span<const glm::vec4> rest, std::uint32_t par
 // dropped), per cell.
 std::vector<double> splatHairGrid(std::span<const glm::vec3> points, const HairGridLayout& layout,
                                   std::span<const double> values = {});
+
+// The particles the grid holds: every one but the roots (P per guide, root first), in order.
+std::vector<glm::vec3> freeParticles(std::span<const glm::vec4> particles, std::uint32_t particlesPerGuide);
 
 // sum(w^2) / sum(w) over cells: the density the average particle sees (0 for an empty grid).
 double weightedMeanDensity(std::span<const double> cellWeights);

@@ -42,4 +42,14 @@ struct SimulationParams {
   void validate() const;
   bool gridActs() const { return volume > 0.0 || friction > 0.0; }
 };
+
+// The hair grid's volume and friction chosen by looking at the default head (docs/THEORY.md §2.7).
+inline constexpr double kRecommendedVolume = 0.6;
+inline constexpr double kRecommendedFriction = 0.1;
+// `p` with the hair grid on at those values.
+inline SimulationParams withHairGrid(SimulationParams p) {
+  p.volume = kRecommendedVolume;
+  p.friction = kRecommendedFriction;
+  return p;
+}
 }  // namespace hp

@@ -113,7 +113,8 @@ struct SimulationSettings {
   double maxSpeed = 10.0;                 // particle speed clamp, > 0
   // Strand interaction through a density / velocity grid around the instance, rebuilt every frame (acts when
   // volume or friction is above 0). volume: how fast hair flows out of places denser than volumeTarget (in
-  // units of the rest pose's mean density), in grid cells a frame per unit of excess, [0, 10] and [0.01, 100]; friction: fraction of each
+  // units of the rest pose's mean density), in grid cells a frame per unit of density change over a cell,
+  // [0, 10] and [0.01, 100]; friction: fraction of each
   // particle's velocity pulled toward the hair's around it per substep, [0, 1]; gridResolution: cells along
   // the grid's longest side, [4, 128], fixed when the instance is created.
   // Off by default (0, 0); volume 0.6 and friction 0.1 give the default head a body (docs/THEORY.md §2.7).
