@@ -118,7 +118,8 @@ TEST_F(VulkanTest, HundredThousandFramesOfShakingStayFiniteDoNotDriftAndLeakNoth
   // bytes; the lavapipe recompile this test found leaked 1.4 MiB a frame). More barriers fail the test
   // rather than loosen the bound.
   const double perFrame = (double(hostEnd) - double(hostStart)) / double((kChunks - 1) * kChunk);
-  EXPECT_EQ(barriersPerFrame, 7.0) << "the barriers a frame that the bound below is built on";
+  // (The readbacks between chunks add a few barriers of their own: 0.002 a frame.)
+  EXPECT_NEAR(barriersPerFrame, 7.0, 0.01) << "the barriers a frame that the bound below is built on";
   const double bound = 40.0 * 7.0 + 128.0;
   std::printf("soak: %s growth %.1f bytes per frame (%.2f barriers a frame, bound %.0f)\n", kHostMemory, perFrame,
               barriersPerFrame, bound);
