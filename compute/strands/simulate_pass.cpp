@@ -150,7 +150,8 @@ gpu::SimFrame SimulatePass::frameConstants(const HeadMotion& motion, bool gridAc
   const HairGridLayout& grid = grid_->layout();
   f.gridOriginCell = glm::vec4(grid.origin, grid.cellSize);
   f.gridDims = glm::uvec4(grid.dims, gridActs ? 1u : 0u);
-  // volume is in cells a frame per unit of excess density: as a speed, scene units / s.
+  // volume (cells a frame per unit of density change over a cell) as a speed per unit of that change, scene
+  // units / s; simulate.comp multiplies it by the pressure gradient's size times the cell size.
   f.gridForces = glm::vec4(float(params_.volume * grid.cellSize / params_.dt), float(params_.friction),
                            float(params_.volumeTarget), 0.0f);
   return f;

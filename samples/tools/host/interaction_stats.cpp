@@ -54,7 +54,7 @@ Bin binOf(const glm::dvec3& p, double size) {
 std::map<Bin, std::vector<std::size_t>> binRoots(std::span<const glm::vec4> positions, std::uint32_t p, double size) {
   std::map<Bin, std::vector<std::size_t>> bins;
   for (std::size_t g = 0; g < positions.size() / p; ++g) {
-    const glm::dvec3 root(glm::vec3(positions[g * p]));
+    const glm::dvec3 root = glm::dvec3(glm::vec3(positions[g * p]));
     if (std::isfinite(root.x + root.y + root.z)) bins[binOf(root, size)].push_back(g);
   }
   return bins;
