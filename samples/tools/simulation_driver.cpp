@@ -46,7 +46,8 @@ void SimulationDriver::runFrames(std::uint32_t count, const std::function<void(s
       }
     }, "simulate frames");
     if (timed)
-      for (const auto& scope : profiler_.results()) (scope.name == "simulate grid" ? gridMs_ : frameMs_).push_back(scope.milliseconds);
+      for (const auto& scope : profiler_.results())
+        (scope.name == "simulate grid" ? gridMs_ : frameMs_).push_back(scope.milliseconds);
     count -= batch;
     if (progress) progress(total - count);
     if (count > 0) throwIfInterrupted("after " + std::to_string(total - count) + " of " + std::to_string(total) +

@@ -59,20 +59,19 @@ void expectResolvedFrom(const vk::Context& ctx, const HairGridPass& grid, const 
     density[c] /= grid.restMeanDensity();
     pressure[c] = std::max(density[c] - params.volumeTarget, 0.0);
   }
-  auto index = [&](glm::ivec3 c) { return (std::size_t(c.z) * l.dims.y + c.y) * l.dims.x + c.x; };
   const std::vector<double> mx = accumulated(ctx, grid, 1);
   double worst = 0.0, largest = 0.0;
   for (std::uint32_t z = 0; z < l.dims.z; ++z)
     for (std::uint32_t y = 0; y < l.dims.y; ++y)
       for (std::uint32_t x = 0; x < l.dims.x; ++x) {
         const glm::ivec3 c(x, y, z);
-        const std::size_t i = index(c);
+        const std::size_t i = l.cellIndex(c);
         glm::dvec3 slope(0.0);
         for (int a = 0; a < 3; ++a) {
           glm::ivec3 lo = c, hi = c;
           if (c[a] > 0) --lo[a];
           if (c[a] + 1 < int(l.dims[a])) ++hi[a];
-          if (hi[a] > lo[a]) slope[a] = (pressure[index(hi)] - pressure[index(lo)]) / ((hi[a] - lo[a]) * l.cellSize);
+          if (hi[a] > lo[a]) slope[a] = (pressure[l.cellIndex(hi)] - pressure[l.cellIndex(lo)]) / ((hi[a] - lo[a]) * l.cellSize);
         }
         const glm::vec4 flow = cells[2 * i], press = cells[2 * i + 1];
         const double expected[] = {density[i], mx[i] / grid.restMeanDensity() * params.maxSpeed, pressure[i],
@@ -98,10 +97,10 @@ Settled settle(const vk::Context& ctx, const HairAsset& asset, const SimulationP
   SimulatePass pass(ctx, asset, params);
   SimulationDriver driver(ctx, pass, HeadAnimation::None, assetHeadRadius(asset));
   driver.runFrames(frames);
-  const auto positions = driver.readPositions();
+  const auto positions = driver.readPositions(), previous = driver.readPrevious();
   return {hairLayerThickness(positions, pass.particlesPerGuide(), *asset.sdf, driver.head()),
           closeNeighbourParticles(positions, pass.particlesPerGuide(), 0.01, 2.0 * params.pearlRadius),
-          driver.stats().maxSpeed};
+          driver.stats(positions, previous).maxSpeed};
 }
 }  // namespace
 

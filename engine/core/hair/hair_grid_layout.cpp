@@ -52,7 +52,7 @@ std::vector<double> splatHairGrid(std::span<const glm::vec3> points, const HairG
       if (glm::any(glm::lessThan(c, glm::ivec3(0))) || glm::any(glm::greaterThanEqual(c, glm::ivec3(layout.dims))))
         continue;
       const glm::vec3 w = glm::mix(1.0f - frac, frac, glm::vec3(o));
-      cells[(std::size_t(c.z) * layout.dims.y + c.y) * layout.dims.x + c.x] += value * w.x * w.y * w.z;
+      cells[layout.cellIndex(c)] += value * w.x * w.y * w.z;
     }
   }
   return cells;

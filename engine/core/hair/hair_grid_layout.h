@@ -6,6 +6,7 @@
 // particles) is the unit in which the device grid's densities and the volume target are expressed.
 #include <glm/glm.hpp>
 
+#include <cstddef>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -16,6 +17,8 @@ struct HairGridLayout {
   float cellSize = 1.0f;
   glm::uvec3 dims{1u};
   std::uint32_t cellCount() const { return dims.x * dims.y * dims.z; }
+  // Cell c's index, x fastest (shaders/hair_grid.glsl gridCellIndex).
+  std::size_t cellIndex(const glm::ivec3& c) const { return (std::size_t(c.z) * dims.y + c.y) * dims.x + c.x; }
 };
 
 // `rest`: head-space particles (xyz; w the rest length of the segment ending there), P per guide, root first.
