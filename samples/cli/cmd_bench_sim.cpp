@@ -2,9 +2,9 @@
 // head's guides repeated), and its achieved bytes/s as a fraction of vkCmdCopyBuffer bandwidth measured
 // in the same run. Bytes counted per frame: positions and previous read + written, rest pose read.
 // --colliders picks what the hair collides with: the default head's distance grid (sdf, default),
-// seven spheres roughly covering the same head and shoulders (spheres), or nothing (none). --grid on, off or
-// both (default): the hair grid (docs/THEORY.md §2.7) at its recommended values (volume 0.6, friction 0.1) or off; with it on, its own passes
-// (clear, splat, resolve) are timed apart as grid_ms and are not in ms or the bytes.
+// seven spheres roughly covering the same head and shoulders (spheres), or nothing (none). --grid on, off
+// or both (default): the hair grid (docs/THEORY.md §2.7) at its recommended values or off; with it on, its
+// own passes (clear, splat, resolve) are timed apart as grid_ms and are not in ms or the bytes.
 #include <algorithm>
 #include <iostream>
 
@@ -86,6 +86,8 @@ nlohmann::json benchOne(const hp::vk::Context& ctx, const hp::HairAsset& asset, 
 }
 
 void runBench(const BenchOptions& o) {
+  if (o.grid != "on" && o.grid != "off" && o.grid != "both")
+    throw hp::Error("--grid must be on, off or both, got '" + o.grid + "'");
   if (o.frames == 0 || o.frames > 10000) throw hp::Error("--frames must be in [1, 10000]");
   auto ctx = hp::cli::createBenchContext(o.device, "bench sim");
   const hp::HairAsset head = hp::buildDefaultHeadAsset();
@@ -95,8 +97,6 @@ void runBench(const BenchOptions& o) {
                            {"substeps", hp::SimulationParams{}.substeps},
                            {"colliders", o.colliders},
                            {"results", nlohmann::json::array()}};
-  if (o.grid != "on" && o.grid != "off" && o.grid != "both")
-    throw hp::Error("--grid must be on, off or both, got '" + o.grid + "'");
   for (std::uint32_t g : o.guides) {
     if (g == 0 || g > 4000000) throw hp::Error("--guides values must be in [1, 4000000]");
     const hp::HairAsset asset = repeatedGuides(head, g, o.colliders);

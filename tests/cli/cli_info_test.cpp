@@ -105,11 +105,24 @@ TEST(CliBench, StrandAndSimSuitesDeriveBandwidthOnlyWhereTimestampsResolve) {
   }
   auto sim = runCli({"bench", "sim", "--guides", "100", "--frames", "1", "--json"});
   ASSERT_EQ(sim.exitCode, 0) << sim.err;
-  for (const auto& row : nlohmann::json::parse(sim.out)["results"]) {
+  const auto simRows = nlohmann::json::parse(sim.out)["results"];
+  ASSERT_EQ(simRows.size(), 2u) << "the hair grid off and on (--grid both, the default)";
+  for (const auto& row : simRows) {
     const bool resolved = row["timestamps_resolve_passes"].get<bool>();
     EXPECT_EQ(row.contains("fraction_of_copy"), resolved);
     EXPECT_GT(row["copy_gb_per_s"].get<double>(), 0.0);
+    EXPECT_EQ(row["grid_ms"].is_null(), !row["grid"].get<bool>()) << "the grid's passes are timed where it acts";
   }
+  EXPECT_FALSE(simRows[0]["grid"].get<bool>());
+  EXPECT_GT(simRows[1]["grid_ms"].get<double>(), 0.0);
+}
+
+// `bench sim --grid` takes on, off or both; anything else is refused by name before the device is opened.
+TEST(CliBench, SimRefusesABadGridChoice) {
+  auto r = runCli({"bench", "sim", "--guides", "100", "--frames", "1", "--grid", "sideways"});
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_NE(r.err.find("--grid must be on, off or both, got 'sideways'"), std::string::npos) << r.err;
+  EXPECT_EQ(r.out.find("simulation on"), std::string::npos) << "a benchmark ran: " << r.out;
 }
 
 // `bench --skin-bounce` takes off and/or on, `--bounce-samples` values in [2, 256]; anything else is refused
