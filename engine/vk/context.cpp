@@ -7,11 +7,10 @@
 #include "engine/core/error.h"
 #include "engine/vk/check.h"
 #include "engine/vk/device_probe.h"
+#include "engine/vk/instance_cache.h"
 
 namespace hp::vk {
 namespace {
-constexpr const char* kValidationLayer = "VK_LAYER_KHRONOS_validation";
-
 bool instanceExtensionAvailable(const char* name) {
   std::uint32_t count = 0;
   HP_VK_CHECK(vkEnumerateInstanceExtensionProperties(nullptr, &count, nullptr));
@@ -20,16 +19,6 @@ bool instanceExtensionAvailable(const char* name) {
   for (const auto& e : exts)
     if (std::strcmp(e.extensionName, name) == 0) return true;
   return false;
-}
-
-VkDebugUtilsMessengerCreateInfoEXT messengerInfo(ValidationLog* log) {
-  VkDebugUtilsMessengerCreateInfoEXT info{VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
-  info.messageSeverity = VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
-  info.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT |
-                     VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT;
-  info.pfnUserCallback = &ValidationLog::callback;
-  info.pUserData = log;
-  return info;
 }
 
 bool deviceExtensionAvailable(VkPhysicalDevice device, const std::string& name) {
@@ -123,48 +112,29 @@ void Context::checkAdopted() const {
     throw Error("Context::adopt: Vulkan 1.3 device functions did not load (was the device created with apiVersion 1.3?)");
 }
 
+// The instance is the process's shared one for these options (instance_cache.h); only the messenger is
+// this context's.
 void Context::createInstance(const ContextOptions& options) {
-  std::vector<const char*> layers;
-  std::vector<const char*> extensions;
+  InstanceRequest request;
+  request.appName = options.appName;
   if (instanceExtensionAvailable(VK_EXT_DEBUG_UTILS_EXTENSION_NAME)) {
-    extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
+    request.extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
     debugUtils_ = true;
   }
-  validation_ = options.validation;
+  validation_ = request.validation = options.validation;
   if (validation_) {
     if (!instanceLayerAvailable(kValidationLayer))
       throw Error("validation was requested but VK_LAYER_KHRONOS_validation is not installed (vulkan-validationlayers)");
     if (!debugUtils_) throw Error("validation was requested but VK_EXT_debug_utils is not available");
-    layers.push_back(kValidationLayer);
   }
   for (const auto& e : options.instanceExtensions) {
     if (!instanceExtensionAvailable(e.c_str())) throw Error("the Vulkan instance extension " + e + " is not available");
-    extensions.push_back(e.c_str());
+    request.extensions.push_back(e);
   }
-  VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
-  app.pApplicationName = options.appName.c_str();
-  app.pEngineName = "hairpipe";
-  app.apiVersion = VK_API_VERSION_1_3;
-
-  // Synchronization validation is opt-in in the layer; turn it on whenever validation is.
-  VkValidationFeatureEnableEXT enables[] = {VK_VALIDATION_FEATURE_ENABLE_SYNCHRONIZATION_VALIDATION_EXT};
-  VkValidationFeaturesEXT features{VK_STRUCTURE_TYPE_VALIDATION_FEATURES_EXT};
-  features.enabledValidationFeatureCount = 1;
-  features.pEnabledValidationFeatures = enables;
-  VkDebugUtilsMessengerCreateInfoEXT messenger = messengerInfo(log_.get());
-  messenger.pNext = &features;
-
-  VkInstanceCreateInfo info{VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO};
-  info.pNext = validation_ ? &messenger : nullptr;  // also captures messages of vkCreateInstance itself
-  info.pApplicationInfo = &app;
-  info.enabledLayerCount = static_cast<std::uint32_t>(layers.size());
-  info.ppEnabledLayerNames = layers.data();
-  info.enabledExtensionCount = static_cast<std::uint32_t>(extensions.size());
-  info.ppEnabledExtensionNames = extensions.data();
-  HP_VK_CHECK(vkCreateInstance(&info, nullptr, &instance_));
+  instance_ = sharedInstance(request, *log_);
   volkLoadInstanceOnly(instance_);
   if (validation_) {
-    VkDebugUtilsMessengerCreateInfoEXT m = messengerInfo(log_.get());
+    VkDebugUtilsMessengerCreateInfoEXT m = ValidationLog::messengerInfo(log_.get());
     HP_VK_CHECK(vkCreateDebugUtilsMessengerEXT(instance_, &m, nullptr, &messenger_));
   }
 }
@@ -234,7 +204,7 @@ Context::~Context() {
   if (!ownsInstanceAndDevice_) return;
   if (device_) fn_.vkDestroyDevice(device_, nullptr);
   if (messenger_) vkDestroyDebugUtilsMessengerEXT(instance_, messenger_, nullptr);
-  if (instance_) vkDestroyInstance(instance_, nullptr);
+  // The instance stays: the process's shared one (instance_cache.h).
 }
 
 std::uint32_t Context::findMemoryType(std::uint32_t typeBits, VkMemoryPropertyFlags required,

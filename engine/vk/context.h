@@ -1,6 +1,8 @@
 #pragma once
 // Contract: the Vulkan instance/device hairpipe works with, either created headless by hairpipe
-// (createHeadless) or handed over by the embedding application (adopt). It owns only what it created.
+// (createHeadless) or handed over by the embedding application (adopt). It owns only what it created: a
+// headless context owns its device and debug messenger; its VkInstance is the process's shared one for
+// its options (instance_cache.h), kept until exit, because a driver may refuse new instances after many.
 // Device functions are called through the context's own table (volk's VolkDeviceTable, fn()), so several
 // contexts may drive several devices in one process. Instance-level functions live in hairpipe's private
 // copy of volk (third_party/volk: its globals are renamed hpvk_*), loaded from the vkGetInstanceProcAddr

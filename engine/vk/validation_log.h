@@ -26,6 +26,8 @@ class ValidationLog {
   void clear();
   void setEcho(bool echo) { echo_ = echo; }
 
+  // A messenger for warnings and errors of every type into `log` (callback below).
+  static VkDebugUtilsMessengerCreateInfoEXT messengerInfo(ValidationLog* log);
   // The debug-utils callback; pUserData is a ValidationLog*.
   static VKAPI_ATTR VkBool32 VKAPI_CALL callback(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
                                                  VkDebugUtilsMessageTypeFlagsEXT types,

@@ -2,7 +2,8 @@
 # pack_bundle.sh BUILD_DIR OUT_DIR: packs a folder that runs hairpipe's GPU checks on a machine with an
 # NVIDIA driver (its Vulkan ICD) but no Vulkan packages: no loader, no glvnd, no validation layer
 # (tests/gpu/README.md). OUT_DIR is emptied and refilled:
-#   bin/     hairpipe and the device test suites of BUILD_DIR (a Release build)
+#   bin/     hairpipe and the device test suites of BUILD_DIR (a Release build), plus HP_PACK_EXTRA_BINS:
+#            space-separated NAME=PATH pairs (e.g. a baseline build's hairpipe, to bench both in one run)
 #   lib/     every shared library they and the libraries below need, glibc's own excepted; the Vulkan
 #            loader (libvulkan.so.1: volk opens it at run time, so ldd does not list it) and glvnd
 #            (libGLdispatch, libGLX, libEGL, libOpenGL, libGL: the NVIDIA ICD needs them, and without
@@ -43,6 +44,11 @@ grep -q '^HAIRPIPE_SANITIZE:BOOL=ON' "$BUILD/CMakeCache.txt" && die "$BUILD is a
 bins=("$BUILD/samples/hairpipe")
 for s in $SUITES; do bins+=("$BUILD/tests/$s"); done
 for b in "${bins[@]}"; do [ -x "$b" ] || die "missing $b (build it first: make build)"; done
+extra_bins=()
+for pair in ${HP_PACK_EXTRA_BINS:-}; do
+  [ -x "${pair#*=}" ] && [ "${pair%%=*}" != "$pair" ] || die "HP_PACK_EXTRA_BINS: '$pair' is not NAME=EXECUTABLE"
+  extra_bins+=("$pair")
+done
 # The applications built against the installed package by the Package.* tests (ctest -R Package first):
 # they call Vulkan through the loader themselves, as an engine does. Packed when present.
 for app in "$BUILD/tests/package_embed/embed/hairpipe_embed" "$BUILD/tests/package_hello/hello/hello_hair"; do
@@ -89,6 +95,7 @@ manifest=$OUT/MANIFEST
 record() { printf '%s\t%s\n' "$1" "$2" >>"$manifest"; }
 
 for b in "${bins[@]}"; do cp -p "$b" "$OUT/bin/"; record "bin/$(basename "$b")" "$b"; done
+for pair in "${extra_bins[@]}"; do cp -p "${pair#*=}" "$OUT/bin/${pair%%=*}"; record "bin/${pair%%=*}" "${pair#*=}"; done
 cp -L "$loader" "$OUT/lib/libvulkan.so.1"; record lib/libvulkan.so.1 "$loader"
 for pair in "${glvnd_files[@]}"; do
   cp -L "${pair#*=}" "$OUT/lib/${pair%%=*}"; record "lib/${pair%%=*}" "${pair#*=}"

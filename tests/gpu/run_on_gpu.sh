@@ -24,6 +24,9 @@
 #   HP_GPU_TEST_FILTER   extended regex on "suite<TAB>Test.Name" lines: only these run
 #   HP_GPU_TEST_EXCLUDE  extended regex of tests left out (default: CliView, which needs an X server)
 #   HP_GPU_SKIP_BENCH=1, HP_GPU_SKIP_TESTS=1   leave a part out
+#   HP_GPU_EXTRA         a bash file sourced after the benches, before the tests (profiling runs): it may call
+#                        `step NAME CAP DEADLINE STDOUT_FILE CMD...` and use $H (hairpipe), $W (the unpacked
+#                        bundle: bin/ holds any HP_PACK_EXTRA_BINS), $OUT, $BENCH_DEADLINE and $DEADLINE
 #   HP_WORK              where the bundle is unpacked (default $TMPDIR or /tmp, hairpipe-gpu-PID; removed at the end
 #                        unless HP_KEEP_WORK=1)
 #   HP_FORCE_FALLBACK=1  use the bundled libstdc++/libgcc_s even where the machine's are new enough
@@ -217,6 +220,16 @@ if [ "${HP_GPU_SKIP_BENCH:-0}" != 1 ]; then
   step bench/strands "$CAP_SUITE" "$BENCH_DEADLINE" "$OUT/bench/strands.json" "$H" bench strands "${STRANDS[@]}" --json
   step bench/opacity "$CAP_SUITE" "$BENCH_DEADLINE" "$OUT/bench/opacity.json" "$H" bench opacity "${OPACITY[@]}" --json
   step bench/instances "$CAP_SUITE" "$BENCH_DEADLINE" "$OUT/bench/instances.json" "$H" bench instances "${INSTANCES[@]}" --json
+fi
+
+if [ -n "${HP_GPU_EXTRA:-}" ]; then
+  if [ -f "$HP_GPU_EXTRA" ]; then
+    log "EXTRA $HP_GPU_EXTRA"
+    # shellcheck disable=SC1090
+    . "$HP_GPU_EXTRA" || FAILED_STEPS+=("extra")
+  else
+    log "WARNING: HP_GPU_EXTRA=$HP_GPU_EXTRA is not a file"; FAILED_STEPS+=("extra")
+  fi
 fi
 
 # --- tests, one per process ----------------------------------------------------------------------------------
