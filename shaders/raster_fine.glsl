@@ -20,6 +20,7 @@
 
 layout(local_size_x = RASTER_FINE_SIZE) in;
 layout(constant_id = 0) const uint MOTION = 0u;
+layout(constant_id = 1) const uint STAGED = 0u;  // the staged walk (GPUs) or the direct one (CPU devices)
 layout(std430, binding = RASTER_BINDING_SCREEN) readonly buffer Screen { vec4 screen[]; };
 layout(std430, binding = RASTER_BINDING_COLORS) readonly buffer Colors { uvec2 colors[]; };
 layout(std430, binding = RASTER_BINDING_TILES) readonly buffer Tiles { uvec2 tiles[]; };
@@ -67,71 +68,155 @@ uint headSamplesInFront(ivec2 pixel, float z) {
 }
 #endif
 
+// A list entry as the pixels read it: what every pixel of the tile would otherwise work out again.
+struct Segment {
+  vec4 a, b;      // screen[v], screen[v + 1]: x, y, z, width
+  vec4 axis;      // xy = b - a, zw = the unit normal (staged walk only)
+  float length2;  // |b - a|^2
+  uint rows;      // the tile rows it may cover (bits 0-7), RASTER_LAST_SEGMENT for the strand's tip segment;
+                  // 0 for a degenerate segment (skipped)
+  uint v;         // the global index of its first vertex
+  vec3 colorA, colorB;  // staged walk only: the direct one reads them for the fragments it composites
+  vec4 motion;    // xy = screen motion at a, zw = at b (MOTION; staged walk only)
+};
+
+Segment loadSegment(uvec2 item) {
+  Segment g;
+  uint v = item.x & ~RASTER_LAST_SEGMENT;
+  g.v = v;
+  g.a = screen[v];
+  g.b = screen[v + 1u];
+  vec2 ab = g.b.xy - g.a.xy;
+  g.length2 = dot(ab, ab);
+  g.rows = g.length2 < 1e-12 ? 0u : (item.y & 0xFFu) | (item.x & RASTER_LAST_SEGMENT);
+  g.axis = vec4(ab, 0.0, 0.0);
+  if (STAGED == 0u) return g;  // the direct walk works out the rest for the fragments it composites
+  g.axis.zw = vec2(-ab.y, ab.x) * inversesqrt(max(g.length2, 1e-12));
+  g.colorA = unpackHalfRgb(colors[v]);
+  g.colorB = unpackHalfRgb(colors[v + 1u]);
+  g.motion = MOTION != 0u ? vec4(unpackHalf2x16(motion[v]), unpackHalf2x16(motion[v + 1u])) : vec4(0.0);
+  return g;
+}
+
+// The pixel's state: fixed (where it is, its head depths) and composited so far.
+uvec2 pixel;
+vec2 centre;
+float farthest, nearest;  // over the pixel's head samples
+Layer far;                // rows 0-3, 4-7 of the overlap mask
+#ifdef RASTER_HEAD_MULTISAMPLED
+Layer near;
+bool split;     // whether a fragment was hidden at some head samples (then `near` is its own layer)
+uint nearMask;
+#endif
+
+// Composites the segment's fragment at this pixel, if it has one; returns whether the pixel is still open.
+bool compositeSegment(Segment g) {
+  float t = dot(centre - g.a.xy, g.axis.xy) / g.length2;
+  if (t < 0.0 || t > 1.0 || (t == 1.0 && (g.rows & RASTER_LAST_SEGMENT) == 0u)) return true;
+  vec2 n = STAGED != 0u ? g.axis.zw : vec2(-g.axis.y, g.axis.x) * inversesqrt(g.length2);
+  float d = dot(centre - g.a.xy, n);
+  float w = mix(g.a.w, g.b.w, t);
+  if (abs(d) > 0.5 * w + 0.75) return true;
+  float z = mix(g.a.z, g.b.z, t);
+  if (z >= farthest) return true;
+  float coverage = rasterBandCoverage(d, w, n.x, n.y);
+  if (coverage <= 0.0) return true;
+  uvec2 band = uvec2(0u);
+  for (uint row = 0u; row < RASTER_MASK_SIDE; ++row)
+    band[row >> 2u] |= rasterBandRowBits(d, w, n.x, n.y, row) << ((row & 3u) * 8u);
+  if (STAGED == 0u) {
+    g.colorA = unpackHalfRgb(colors[g.v]);
+    g.colorB = unpackHalfRgb(colors[g.v + 1u]);
+  }
+  vec3 c = mix(g.colorA, g.colorB, t);
+#ifdef RASTER_HEAD_MULTISAMPLED  // one sample: nearest == farthest, nothing is hidden at some samples only
+  if (z >= nearest) {  // hidden at some head samples: those keep only the hair in front of all of them
+    if (!split) near = far;
+    split = true;
+    nearMask |= headSamplesInFront(ivec2(pixel), z);
+  } else if (split) {
+    composite(near, coverage, band, c);
+  }
+#endif
+  float visible = composite(far, coverage, band, c);
+  if (MOTION != 0u && STAGED == 0u) g.motion = vec4(unpackHalf2x16(motion[g.v]), unpackHalf2x16(motion[g.v + 1u]));
+  if (MOTION != 0u) far.motion += visible * vec3(mix(g.motion.xy, g.motion.zw, t), 1.0);
+  return far.alpha <= 1.0 - RASTER_OPAQUE_T;
+}
+
+// Entries that touch none of this pixel's row are skipped in a tight loop before the body: a row of the
+// tile is one 8-wide SIMD vector on lavapipe (whose branches are predicated: a `continue` would still run
+// the body), and on GPUs the skip is as cheap as the body's first test.
+
+// The direct walk (CPU devices): each pixel walks the tile's list on its own and stops when it is opaque.
+void walkDirect(uint start, uint end, uint rowBit) {
+  bool open = true;
+  for (uint e = start; open;) {
+    while (e < end && (list[e].y & rowBit) == 0u) ++e;
+    if (e >= end) break;
+    open = compositeSegment(loadSegment(list[e++]));
+  }
+}
+
+// The staged walk (GPUs): the list in batches of RASTER_FINE_SIZE entries, each invocation loading one into
+// shared memory, then every pixel walking the batch. The batch's loads are issued at once instead of one
+// dependent chain (list, screen, colours) per entry and pixel, and each entry's set-up is done once per
+// tile instead of once per pixel. The workgroup stops after a batch in which every pixel became opaque (a
+// vote through `live`). On lavapipe it took 1.6x the direct walk's time (the default frame, 640x480).
+shared Segment staged[RASTER_FINE_SIZE];
+shared uint live[2];  // whether some pixel is still open, alternate batches
+
+void walkStaged(uint start, uint end, uint rowBit, uint lane, bool open) {
+  if (lane == 0u) live[0] = 0u;
+  for (uint base = start, batch = 0u; base < end; base += RASTER_FINE_SIZE, ++batch) {
+    if (base + lane < end) staged[lane] = loadSegment(list[base + lane]);
+    barrier();
+    // Every invocation has read the previous batch's vote: the next batch's may be cleared.
+    if (lane == 0u) live[(batch + 1u) & 1u] = 0u;
+    uint count = min(end - base, RASTER_FINE_SIZE);
+    for (uint j = 0u; open;) {
+      while (j < count && (staged[j].rows & rowBit) == 0u) ++j;
+      if (j >= count) break;
+      open = compositeSegment(staged[j++]);
+    }
+    if (open) live[batch & 1u] = 1u;
+    barrier();  // the vote is in; the staged batch is read
+    if (live[batch & 1u] == 0u) break;
+  }
+}
+
 void main() {
   uint invocation = hpThreadId(RASTER_FINE_SIZE);
   uint tile = invocation / RASTER_FINE_SIZE;
   uint lane = invocation % RASTER_FINE_SIZE;
-  if (tile >= params.tilesX * params.tilesY) return;
-  uvec2 pixel = uvec2(tile % params.tilesX, tile / params.tilesX) * RASTER_TILE_SIZE +
-                uvec2(lane % RASTER_TILE_SIZE, lane / RASTER_TILE_SIZE);
-  if (pixel.x >= params.width || pixel.y >= params.height) return;
-  vec2 centre = vec2(pixel) + 0.5;
-  float farthest = 0.0, nearest = 1.0;  // over the pixel's head samples
-  for (uint s = 0u; s < headSamples(); ++s) {
+  if (tile >= params.tilesX * params.tilesY) return;  // the whole workgroup: one workgroup is one tile
+  pixel = uvec2(tile % params.tilesX, tile / params.tilesX) * RASTER_TILE_SIZE +
+          uvec2(lane % RASTER_TILE_SIZE, lane / RASTER_TILE_SIZE);
+  // In the staged walk, pixels past the image's edge load entries and vote but composite nothing.
+  bool inside = pixel.x < params.width && pixel.y < params.height;
+  if (!inside && STAGED == 0u) return;
+  centre = vec2(pixel) + 0.5;
+  farthest = 0.0;
+  nearest = 1.0;
+  for (uint s = 0u; inside && s < headSamples(); ++s) {
     float depth = headDepthAt(ivec2(pixel), s);
     farthest = max(farthest, depth);
     nearest = min(nearest, depth);
   }
+  far = Layer(vec3(0.0), 0.0, uvec2(0u), vec3(0.0));
+#ifdef RASTER_HEAD_MULTISAMPLED
+  near = far;
+  split = false;
+  nearMask = 0u;
+#endif
   uint start = tiles[tile].x + blocks[tile / RASTER_SCAN_SIZE];
   uint end = min(start + tiles[tile].y, params.capacity);
-  Layer far = Layer(vec3(0.0), 0.0, uvec2(0u), vec3(0.0));  // rows 0-3, 4-7 of the overlap mask
-#ifdef RASTER_HEAD_MULTISAMPLED
-  Layer near = far;
-  bool split = false;  // whether a fragment was hidden at some head samples (then `near` is its own layer)
-  uint nearMask = 0u;
-#endif
-  // Entries that touch none of this pixel's row are skipped in a tight loop before the body: a row of the
-  // tile is one 8-wide SIMD vector on lavapipe (whose branches are predicated: a `continue` would still run
-  // the body), and on GPUs the skip is as cheap as the body's first test.
   uint rowBit = 1u << (lane / RASTER_TILE_SIZE);
-  uint e = start;
-  while (far.alpha <= 1.0 - RASTER_OPAQUE_T) {
-    while (e < end && (list[e].y & rowBit) == 0u) ++e;
-    if (e >= end) break;
-    uint entry = list[e++].x;
-    uint v = entry & ~RASTER_LAST_SEGMENT;
-    vec4 a = screen[v];
-    vec4 b = screen[v + 1u];
-    vec2 ab = b.xy - a.xy;
-    float len2 = dot(ab, ab);
-    if (len2 < 1e-12) continue;
-    float t = dot(centre - a.xy, ab) / len2;
-    if (t < 0.0 || t > 1.0 || (t == 1.0 && entry < RASTER_LAST_SEGMENT)) continue;
-    vec2 n = vec2(-ab.y, ab.x) * inversesqrt(len2);
-    float d = dot(centre - a.xy, n);
-    float w = mix(a.w, b.w, t);
-    if (abs(d) > 0.5 * w + 0.75) continue;
-    float z = mix(a.z, b.z, t);
-    if (z >= farthest) continue;
-    float coverage = rasterBandCoverage(d, w, n.x, n.y);
-    if (coverage <= 0.0) continue;
-    uvec2 band = uvec2(0u);
-    for (uint row = 0u; row < RASTER_MASK_SIDE; ++row)
-      band[row >> 2u] |= rasterBandRowBits(d, w, n.x, n.y, row) << ((row & 3u) * 8u);
-    vec3 c = mix(unpackHalfRgb(colors[v]), unpackHalfRgb(colors[v + 1u]), t);
-#ifdef RASTER_HEAD_MULTISAMPLED  // one sample: nearest == farthest, nothing is hidden at some samples only
-    if (z >= nearest) {  // hidden at some head samples: those keep only the hair in front of all of them
-      if (!split) near = far;
-      split = true;
-      nearMask |= headSamplesInFront(ivec2(pixel), z);
-    } else if (split) {
-      composite(near, coverage, band, c);
-    }
-#endif
-    float visible = composite(far, coverage, band, c);
-    if (MOTION != 0u)
-      far.motion += visible * vec3(mix(unpackHalf2x16(motion[v]), unpackHalf2x16(motion[v + 1u]), t), 1.0);
-  }
+  if (STAGED != 0u)
+    walkStaged(start, end, rowBit, lane, inside);
+  else
+    walkDirect(start, end, rowBit);
+  if (!inside) return;
   imageStore(outImage, ivec2(pixel), vec4(far.color, far.alpha));
   if (MOTION != 0u)
     imageStore(motionImage, ivec2(pixel), vec4(far.motion.z > 0.0 ? far.motion.xy / far.motion.z : vec2(0.0), 0.0, 0.0));

@@ -191,8 +191,12 @@ StrandRasterPass::StrandRasterPass(const vk::Context& ctx, std::span<const Raste
                                  {gpu::RASTER_MODE_SCATTER}, cache);
   scanTiles_ = pipeline("raster_scan_tiles.comp", gpu::RASTER_SCAN_SIZE, "raster scan tiles");
   scanBlocks_ = pipeline("raster_scan_blocks.comp", gpu::RASTER_SCAN_SIZE, "raster scan blocks");
+  const bool staged = settings.fineWalk == FineWalk::Staged ||
+                      (settings.fineWalk == FineWalk::Auto && ctx.properties().deviceType != VK_PHYSICAL_DEVICE_TYPE_CPU);
+  // constant_id 0: MOTION, 1: STAGED
   fine_ = vk::ComputePipeline(ctx, multisampled() ? "raster_fine_ms.comp" : "raster_fine.comp", gpu::RASTER_FINE_SIZE,
-                              {setLayout}, 0, "raster fine", motion, cache);
+                              {setLayout}, 0, staged ? "raster fine (staged)" : "raster fine",
+                              {motion[0], staged ? 1u : 0u}, cache);
 }
 
 void StrandRasterPass::bind(std::span<const RasterSource> sources) {

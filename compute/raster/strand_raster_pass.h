@@ -42,9 +42,15 @@
 #include "engine/vk/profiler.h"
 
 namespace hp::compute {
+// How the fine pass walks a tile's list (shaders/raster_fine.glsl): every pixel on its own (Direct), or in
+// batches the tile's invocations load together into shared memory (Staged). The image is the same; the
+// speed is not: Auto takes Direct on CPU devices (lavapipe) and Staged on GPUs.
+enum class FineWalk { Auto, Direct, Staged };
+
 struct RasterSettings {
   std::uint32_t tileBudget = 16384;  // list entries kept per 8x8 tile, [1, 1<<24]
   bool motion = false;               // write motion vectors (motionOutput)
+  FineWalk fineWalk = FineWalk::Auto;
   void validate() const;
 };
 
