@@ -2,7 +2,8 @@
 # pack_bundle.sh BUILD_DIR OUT_DIR: packs a folder that runs hairpipe's GPU checks on a machine with an
 # NVIDIA driver (its Vulkan ICD) but no Vulkan packages: no loader, no glvnd, no validation layer
 # (tests/gpu/README.md). OUT_DIR is emptied and refilled:
-#   bin/     hairpipe and the device test suites of BUILD_DIR (a Release build), plus HP_PACK_EXTRA_BINS:
+#   bin/     hairpipe and the device test suites of BUILD_DIR (a Release build), spirv-val (a test runs it),
+#            plus HP_PACK_EXTRA_BINS:
 #            space-separated NAME=PATH pairs (e.g. a baseline build's hairpipe, to bench both in one run)
 #   lib/     every shared library they and the libraries below need, glibc's own excepted; the Vulkan
 #            loader (libvulkan.so.1: volk opens it at run time, so ldd does not list it) and glvnd
@@ -44,6 +45,9 @@ grep -q '^HAIRPIPE_SANITIZE:BOOL=ON' "$BUILD/CMakeCache.txt" && die "$BUILD is a
 bins=("$BUILD/samples/hairpipe")
 for s in $SUITES; do bins+=("$BUILD/tests/$s"); done
 for b in "${bins[@]}"; do [ -x "$b" ] || die "missing $b (build it first: make build)"; done
+# spirv-val: EmbeddedShaders.EveryShaderIsValidSpirv... runs it from PATH (run_on_gpu.sh puts bin/ first).
+spirv_val=$(command -v spirv-val) || die "spirv-val is missing: apt-get install spirv-tools"
+bins+=("$spirv_val")
 extra_bins=()
 for pair in ${HP_PACK_EXTRA_BINS:-}; do
   [ -x "${pair#*=}" ] && [ "${pair%%=*}" != "$pair" ] || die "HP_PACK_EXTRA_BINS: '$pair' is not NAME=EXECUTABLE"

@@ -12,8 +12,9 @@
 #   performance_rows.md  markdown rows for docs/PERFORMANCE.md: frame ms and the main passes per case
 # Every part has a timeout taken from one budget (HP_GPU_BUDGET_S, default 450 s: the benches may use up
 # to HP_GPU_BENCH_BUDGET_S of it, default 240 s, the tests the rest); one part failing never stops the others.
-# Each test runs in its own process (a process that creates ~40 Vulkan contexts in a row hit
-# VK_ERROR_INCOMPATIBLE_DRIVER on the NVIDIA machine), HP_GPU_JOBS (8) at a time.
+# Each test runs in its own process, HP_GPU_JOBS (8) at a time: one failing test cannot take others with it,
+# and the tests run in parallel (a whole suite in one process runs since headless contexts share one
+# instance; before, the NVIDIA driver refused the 30th instance of a process).
 #
 # Settings (environment):
 #   OUT                  output folder (created)
@@ -105,6 +106,7 @@ fi
 export LD_LIBRARY_PATH=$LIBS${DRIVER_LIBS:+:$DRIVER_LIBS}${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}
 export VK_DRIVER_FILES=$ICD VK_ICD_FILENAMES=$ICD  # the second for loaders older than 1.3.207
 export VK_LAYER_PATH=$W/layer
+export PATH=$W/bin:$PATH  # the bundled spirv-val
 # The NVIDIA driver's shader cache, in a folder every process can write: the test processes share it.
 export __GL_SHADER_DISK_CACHE=1 __GL_SHADER_DISK_CACHE_PATH=$W/shader-cache __GL_SHADER_DISK_CACHE_SKIP_CLEANUP=1
 mkdir -p "$W/shader-cache"
