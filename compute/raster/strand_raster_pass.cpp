@@ -185,19 +185,18 @@ StrandRasterPass::StrandRasterPass(const vk::Context& ctx, std::span<const Raste
                                        "raster shade (one light)", {0u}, cache);
   tileDepthPipeline_ = pipeline(multisampled() ? "raster_tile_depth_ms.comp" : "raster_tile_depth.comp",
                                 gpu::RASTER_WORKGROUP_SIZE, "raster tile depth");
-  const bool shared = settings.sharing == WorkgroupSharing::On ||
-                      (settings.sharing == WorkgroupSharing::Auto && ctx.properties().deviceType != VK_PHYSICAL_DEVICE_TYPE_CPU);
-  // constant_id 0: MODE, 1: GROUPED
   count_ = vk::ComputePipeline(ctx, "raster_bin.comp", gpu::RASTER_WORKGROUP_SIZE, {setLayout}, 0, "raster count",
-                               {gpu::RASTER_MODE_COUNT, shared ? 1u : 0u}, cache);
+                               {gpu::RASTER_MODE_COUNT}, cache);
   scatter_ = vk::ComputePipeline(ctx, "raster_bin.comp", gpu::RASTER_WORKGROUP_SIZE, {setLayout}, 0, "raster scatter",
-                                 {gpu::RASTER_MODE_SCATTER, shared ? 1u : 0u}, cache);
+                                 {gpu::RASTER_MODE_SCATTER}, cache);
   scanTiles_ = pipeline("raster_scan_tiles.comp", gpu::RASTER_SCAN_SIZE, "raster scan tiles");
   scanBlocks_ = pipeline("raster_scan_blocks.comp", gpu::RASTER_SCAN_SIZE, "raster scan blocks");
+  const bool staged = settings.fineWalk == FineWalk::Staged ||
+                      (settings.fineWalk == FineWalk::Auto && ctx.properties().deviceType != VK_PHYSICAL_DEVICE_TYPE_CPU);
   // constant_id 0: MOTION, 1: STAGED
   fine_ = vk::ComputePipeline(ctx, multisampled() ? "raster_fine_ms.comp" : "raster_fine.comp", gpu::RASTER_FINE_SIZE,
-                              {setLayout}, 0, shared ? "raster fine (staged)" : "raster fine",
-                              {motion[0], shared ? 1u : 0u}, cache);
+                              {setLayout}, 0, staged ? "raster fine (staged)" : "raster fine",
+                              {motion[0], staged ? 1u : 0u}, cache);
 }
 
 void StrandRasterPass::bind(std::span<const RasterSource> sources) {

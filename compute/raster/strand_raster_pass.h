@@ -42,17 +42,15 @@
 #include "engine/vk/profiler.h"
 
 namespace hp::compute {
-// Whether the bin and fine passes share work within a workgroup through shared memory: On, the fine pass
-// walks each tile's list in batches its invocations load together (shaders/raster_fine.glsl) and the bin
-// pass counts a workgroup's entries of one (tile, bin) key with one atomic (raster_bin.comp); Off, every
-// invocation works alone. The image is the same; the speed is not: on lavapipe On took 1.6x (fine) and 3x
-// (bin) Off's time, on an H100 half (fine). Auto: Off on CPU devices, On on GPUs.
-enum class WorkgroupSharing { Auto, Off, On };
+// How the fine pass walks a tile's list (shaders/raster_fine.glsl): every pixel on its own (Direct), or in
+// batches the tile's invocations load together into shared memory (Staged). The image is the same; the
+// speed is not: Auto takes Direct on CPU devices (lavapipe) and Staged on GPUs.
+enum class FineWalk { Auto, Direct, Staged };
 
 struct RasterSettings {
   std::uint32_t tileBudget = 16384;  // list entries kept per 8x8 tile, [1, 1<<24]
   bool motion = false;               // write motion vectors (motionOutput)
-  WorkgroupSharing sharing = WorkgroupSharing::Auto;
+  FineWalk fineWalk = FineWalk::Auto;
   void validate() const;
 };
 
