@@ -111,6 +111,7 @@ uint nearMask;
 
 // Composites the segment's fragment at this pixel, if it has one; returns whether the pixel is still open.
 bool compositeSegment(Segment g) {
+  if (g.rows == 0u) return true;  // degenerate (the direct walk's row test read the list, not `rows`)
   float t = dot(centre - g.a.xy, g.axis.xy) / g.length2;
   if (t < 0.0 || t > 1.0 || (t == 1.0 && (g.rows & RASTER_LAST_SEGMENT) == 0u)) return true;
   vec2 n = STAGED != 0u ? g.axis.zw : vec2(-g.axis.y, g.axis.x) * inversesqrt(g.length2);

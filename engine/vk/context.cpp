@@ -68,7 +68,7 @@ bool instanceLayerAvailable(const char* name) {
 std::unique_ptr<Context> Context::createHeadless(const ContextOptions& options) {
   initializeLoader();
   std::unique_ptr<Context> ctx(new Context());
-  ctx->ownsInstanceAndDevice_ = true;
+  ctx->ownsDevice_ = true;
   ctx->createInstance(options);
   ctx->createDevice(options);
   ctx->finishSetup();
@@ -197,11 +197,11 @@ void Context::finishSetup() {
 Context::~Context() {
   // An adopted device belongs to the application: never wait idle on it, the app has already
   // ensured hairpipe's work is finished before destroying hairpipe (see the embedding contract).
-  if (ownsInstanceAndDevice_ && device_) fn_.vkDeviceWaitIdle(device_);
+  if (ownsDevice_ && device_) fn_.vkDeviceWaitIdle(device_);
   descriptorPools_.reset();  // destroys what is left (nothing, when every set went first)
   memoryPool_.reset();       // frees what is left (nothing, when every buffer and image went first)
   if (transientPool_) fn_.vkDestroyCommandPool(device_, transientPool_, nullptr);
-  if (!ownsInstanceAndDevice_) return;
+  if (!ownsDevice_) return;
   if (device_) fn_.vkDestroyDevice(device_, nullptr);
   if (messenger_) vkDestroyDebugUtilsMessengerEXT(instance_, messenger_, nullptr);
   // The instance stays: the process's shared one (instance_cache.h).
@@ -231,7 +231,7 @@ void Context::setName(VkObjectType type, std::uint64_t handle, const std::string
 }
 
 void Context::waitIdle() const {
-  if (!ownsInstanceAndDevice_) throw Error("Context::waitIdle: the device belongs to the application; hairpipe never waits idle on it");
+  if (!ownsDevice_) throw Error("Context::waitIdle: the device belongs to the application; hairpipe never waits idle on it");
   HP_VK_CHECK(fn_.vkDeviceWaitIdle(device_));
 }
 

@@ -34,7 +34,7 @@ class OneShotBatch;
 struct ContextOptions {
   bool validation = false;
   std::string device;  // --device NAME-SUBSTRING|INDEX; empty: HAIRPIPE_DEVICE, else the best device
-  std::string appName = "hairpipe";
+  std::string appName = "hairpipe";  // names the shared instance only when this context creates it
   // Extra extensions (a windowed tool: the surface ones and VK_KHR_swapchain); a missing one is an
   // hp::Error naming it. hairpipe itself needs none.
   std::vector<std::string> instanceExtensions;
@@ -70,7 +70,7 @@ class Context {
   bool timestampsSupported() const { return timestampsSupported_; }
   bool validationEnabled() const { return validation_; }
   ValidationLog& validationLog() { return *log_; }
-  // Shared so a test can still read messages reported while the device and instance are destroyed.
+  // Shared so a test can still read messages reported while the device is destroyed.
   std::shared_ptr<ValidationLog> sharedValidationLog() const { return log_; }
   const DeviceChoice& selection() const { return choice_; }
 
@@ -120,7 +120,7 @@ class Context {
   VkCommandPool transientPool_ = VK_NULL_HANDLE;
   VkPhysicalDeviceProperties properties_{};
   VkPhysicalDeviceMemoryProperties memory_{};
-  bool ownsInstanceAndDevice_ = false;
+  bool ownsDevice_ = false;
   bool debugUtils_ = false;
   bool validation_ = false;
   bool timestampsSupported_ = false;

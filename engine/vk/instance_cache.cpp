@@ -11,12 +11,21 @@ namespace {
 struct Cache {
   std::mutex mutex;
   std::map<std::string, VkInstance> instances;  // by key(request)
-  ValidationLog creationLog;  // outlives every instance: the layer may keep the creation messenger's pointer
+  ValidationLog* capturing = nullptr;  // the creating context's log while vkCreateInstance runs, else null
 };
 
 Cache& cache() {
   static Cache* c = new Cache();  // never destroyed, like the instances it holds
   return *c;
+}
+
+// The messenger chained into vkCreateInstance: its user data is the cache, which outlives every instance,
+// so a layer that kept calling it later would find no log (dropped) instead of a freed one.
+VKAPI_ATTR VkBool32 VKAPI_CALL creationCallback(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
+                                                VkDebugUtilsMessageTypeFlagsEXT types,
+                                                const VkDebugUtilsMessengerCallbackDataEXT* data, void* user) {
+  ValidationLog* log = static_cast<Cache*>(user)->capturing;
+  return log ? ValidationLog::callback(severity, types, data, log) : VK_FALSE;
 }
 
 std::string key(const InstanceRequest& r) {
@@ -27,7 +36,7 @@ std::string key(const InstanceRequest& r) {
   return k;
 }
 
-VkInstance create(const InstanceRequest& request, ValidationLog& creationLog) {
+VkInstance create(const InstanceRequest& request, Cache& cache) {
   std::vector<const char*> layers, extensions;
   if (request.validation) layers.push_back(kValidationLayer);
   for (const auto& e : request.extensions) extensions.push_back(e.c_str());
@@ -40,7 +49,9 @@ VkInstance create(const InstanceRequest& request, ValidationLog& creationLog) {
   VkValidationFeaturesEXT features{VK_STRUCTURE_TYPE_VALIDATION_FEATURES_EXT};
   features.enabledValidationFeatureCount = 1;
   features.pEnabledValidationFeatures = enables;
-  VkDebugUtilsMessengerCreateInfoEXT messenger = ValidationLog::messengerInfo(&creationLog);
+  VkDebugUtilsMessengerCreateInfoEXT messenger = ValidationLog::messengerInfo(nullptr);
+  messenger.pfnUserCallback = &creationCallback;
+  messenger.pUserData = &cache;
   messenger.pNext = &features;
 
   VkInstanceCreateInfo info{VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO};
@@ -61,10 +72,12 @@ VkInstance sharedInstance(const InstanceRequest& request, ValidationLog& log) {
   std::lock_guard<std::mutex> lock(c.mutex);
   const std::string k = key(request);
   if (auto it = c.instances.find(k); it != c.instances.end()) return it->second;
-  c.creationLog.clear();
-  VkInstance instance = create(request, c.creationLog);
-  for (const ValidationMessage& m : c.creationLog.messages()) log.record(m);
-  c.creationLog.clear();
+  struct Capture {  // the creating context's log takes vkCreateInstance's messages, and only those
+    Cache& c;
+    ~Capture() { c.capturing = nullptr; }
+  } capture{c};
+  c.capturing = &log;
+  VkInstance instance = create(request, c);
   c.instances.emplace(k, instance);
   return instance;
 }

@@ -4,10 +4,12 @@
 // Why: NVIDIA's driver (580.159, H100) refuses vkCreateInstance with VK_ERROR_INCOMPATIBLE_DRIVER after
 // about 30 instances were created and destroyed in one process, so an engine that remakes hairpipe's device
 // (after a device loss, a settings change) or a test run would stop working; devices still come and go.
-// The instances are never destroyed (the driver and loader go with the process). Thread-safe.
+// The instances are never destroyed (the driver and loader go with the process), so the layer's checks at
+// vkDestroyInstance (children left alive) no longer run; devices are still checked at vkDestroyDevice.
+// The cache is thread-safe (creating headless contexts concurrently is not: volk's private globals).
 // With validation, each Context adds its own debug messenger; messages about one context's device then
 // reach every validating context alive at the time, and those of vkCreateInstance itself reach the
-// context that created the instance (`log`), the only one alive then.
+// context that created the instance (`log`).
 #include "hairpipe_volk.h"
 
 #include <string>
@@ -24,7 +26,8 @@ struct InstanceRequest {
   std::string appName;                  // the first request's names the instance
 };
 
-// The instance for `request`, created now (its creation's validation messages go to `log`) or shared.
+// The instance for `request` (keyed by `validation` and the set of `extensions`), created now (its
+// creation's validation messages go to `log`) or shared.
 // Throws hp::Error naming the call when the driver refuses it.
 VkInstance sharedInstance(const InstanceRequest& request, ValidationLog& log);
 // Instances created so far in this process (tests: repeated contexts must not add any).

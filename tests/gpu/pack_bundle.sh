@@ -12,7 +12,7 @@
 #   lib/fallback/  libstdc++ and libgcc_s: used there only when the machine's own are older
 #   layer/   the Khronos validation layer and its JSON, library_path rewritten to ./ (VK_LAYER_PATH)
 #   data/    tests/data (the tests read it at the source path compiled in; run_on_gpu.sh links it there)
-#   run_on_gpu.sh, bundle.env (the compiled-in paths, versions), MANIFEST (files, sizes, sources)
+#   run_on_gpu.sh, compare_binaries.sh (an HP_GPU_EXTRA script), bundle.env (the compiled-in paths, versions), MANIFEST (files, sizes, sources)
 # Files over 256 KiB are stored gzipped (the device tool carries at most 64 MiB; the bundle is ~35 MiB
 # packed, ~95 MiB unpacked); run_on_gpu.sh unpacks a copy before it runs anything.
 # Needs at pack time (Debian 12): libvulkan1, vulkan-validationlayers, libglvnd0, libgl1, libegl1,
@@ -50,7 +50,10 @@ spirv_val=$(command -v spirv-val) || die "spirv-val is missing: apt-get install 
 bins+=("$spirv_val")
 extra_bins=()
 for pair in ${HP_PACK_EXTRA_BINS:-}; do
-  [ -x "${pair#*=}" ] && [ "${pair%%=*}" != "$pair" ] || die "HP_PACK_EXTRA_BINS: '$pair' is not NAME=EXECUTABLE"
+  name=${pair%%=*}
+  [ -x "${pair#*=}" ] && [ "$name" != "$pair" ] && [[ "$name" =~ ^[A-Za-z0-9._-]+$ ]] ||
+    die "HP_PACK_EXTRA_BINS: '$pair' is not NAME=EXECUTABLE (NAME without '/')"
+  for b in "${bins[@]}"; do [ "$(basename "$b")" != "$name" ] || die "HP_PACK_EXTRA_BINS: $name would replace the packed $b"; done
   extra_bins+=("$pair")
 done
 # The applications built against the installed package by the Package.* tests (ctest -R Package first):
@@ -156,6 +159,7 @@ glibc_needed=$(for f in "$OUT"/bin/* "$OUT"/lib/*.so* "$OUT"/lib/fallback/* "$OU
 done | sort -t. -k2,2n -u | tail -1)
 
 cp "$HERE/run_on_gpu.sh" "$OUT/run_on_gpu.sh"
+cp "$HERE/compare_binaries.sh" "$OUT/compare_binaries.sh"
 chmod +x "$OUT/run_on_gpu.sh" "$OUT"/bin/*
 {
   echo "# written by tests/gpu/pack_bundle.sh; read by run_on_gpu.sh"

@@ -27,7 +27,9 @@
 #   HP_GPU_SKIP_BENCH=1, HP_GPU_SKIP_TESTS=1   leave a part out
 #   HP_GPU_EXTRA         a bash file sourced after the benches, before the tests (profiling runs): it may call
 #                        `step NAME CAP DEADLINE STDOUT_FILE CMD...` and use $H (hairpipe), $W (the unpacked
-#                        bundle: bin/ holds any HP_PACK_EXTRA_BINS), $OUT, $BENCH_DEADLINE and $DEADLINE
+#                        bundle: bin/ holds any HP_PACK_EXTRA_BINS), $OUT, $BENCH_DEADLINE and $DEADLINE. It runs
+#                        in this shell under `set -u`: an unset variable or an `exit` in it ends the whole run
+#                        (no tests, no summary). tests/gpu/compare_binaries.sh is one.
 #   HP_WORK              where the bundle is unpacked (default $TMPDIR or /tmp, hairpipe-gpu-PID; removed at the end
 #                        unless HP_KEEP_WORK=1)
 #   HP_FORCE_FALLBACK=1  use the bundled libstdc++/libgcc_s even where the machine's are new enough
@@ -310,7 +312,7 @@ rows() {  # JSON...: one row per result
       if (ind == 2 && $0 ~ /"device":/) { kv($0); device = val }
       else if (ind == 4 && $0 ~ /^ *}/) {
         printf "| %s | %s | %sx%s | %s | **%s** |", device, date, r["width"], r["height"], thousands(r["strands"]), ms(p["frame"])
-        n = split("simulate,tessellate,interpolate,opacity,head,head shadow,head bounce,raster project,raster bin,raster shade,raster fine,composite", names, ",")
+        n = split("simulate,tessellate,interpolate,opacity,head,head shadow,head bounce,raster project,raster bin,raster shade,strand bounce,raster fine,composite,tonemap", names, ",")
         for (i = 1; i <= n; ++i) printf " %s |", ms(p[names[i]])
         printf " %s | %s | %s |\n", thousands(r["raster_overflow"]), ms(r["host_frame_ms"]), commit
         split("", r); split("", p)
@@ -322,8 +324,8 @@ rows() {  # JSON...: one row per result
 }
 {
   echo "<!-- hairpipe bench --raster compute, median of $([ "$QUICK" = 1 ] && echo 2 || echo 20) frames after one warm-up; GPU ms per pass (GpuProfiler timestamps); written by tests/gpu/run_on_gpu.sh -->"
-  echo "| device | date | resolution | strands | frame ms | simulate | tessellate | interpolate | opacity | head | head shadow | head bounce | raster project | raster bin | raster shade | raster fine | composite | tile entries dropped | host ms | commit |"
-  echo "|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|"
+  echo "| device | date | resolution | strands | frame ms | simulate | tessellate | interpolate | opacity | head | head shadow | head bounce | raster project | raster bin | raster shade | strand bounce | raster fine | composite | tonemap | tile entries dropped | host ms | commit |"
+  echo "|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|"
   for j in "$OUT"/bench/frame_*.json; do [ -s "$j" ] && rows "$j"; done
 } >"$OUT/performance_rows.md"
 

@@ -43,7 +43,7 @@ void uploadStrands(const hp::vk::Context& ctx, const hp::compute::StrandBuffers&
     for (std::uint32_t j = 0; j < kQ; ++j) {
       const float v = float(j) / float(kQ - 1);
       positions.emplace_back(glm::mix(a, b, v), v);
-      tangents.emplace_back(glm::normalize(b - a), 0.0f);
+      tangents.emplace_back(a == b ? glm::vec3(1.0f, 0.0f, 0.0f) : glm::normalize(b - a), 0.0f);
     }
     // The rig's root width is one pixel at unit depth: the scale makes it widthPixels at this depth.
     attributes.push_back({0.5f, p.widthPixels * p.depth, p.colorScale, std::uint32_t(s)});
@@ -281,5 +281,34 @@ TEST_F(VulkanTest, ARasterRefusesAHeadSampleCountItCannotRead) {
                 std::string::npos)
           << e.what();
     }
+  }
+}
+
+// A strand of zero length (every segment a point) is listed by the bin pass but draws nothing, in both
+// walks of the fine pass (compute/raster/strand_raster_pass.h FineWalk), leaves no NaN, and leaves the
+// strand beside it as it is. (The fine pass skips such segments; without the skip its 0/0 would still give
+// no coverage on lavapipe, whose max drops a NaN operand, but SPIR-V leaves that undefined.)
+TEST_F(VulkanTest, AZeroLengthStrandDrawsNothingInEitherFineWalk) {
+  const hp::CameraMatrices camera = hp::test::rigCamera(kExtent, kFov);
+  const PixelStrand point{{20.3f, 20.6f}, {20.3f, 20.6f}, 1.0f, 2.0f, 1.0f};
+  const PixelStrand line{{40.0f, 4.0f}, {44.0f, 44.0f}, 1.0f, 1.0f, 1.0f};
+  auto buffers = makeStrands(*ctx, camera, {point, line});
+  for (auto walk : {hp::compute::FineWalk::Direct, hp::compute::FineWalk::Staged}) {
+    hp::compute::RasterSettings settings;
+    settings.fineWalk = walk;
+    hp::test::RasterRig rig(*ctx, *buffers, kExtent, camera, rigLook(camera), darkLight(), settings);
+    rig.run();
+    const auto image = rig.image();
+    double around = 0.0, drawn = 0.0;
+    for (int y = 0; y < int(kExtent.height); ++y)
+      for (int x = 0; x < int(kExtent.width); ++x) {
+        const glm::vec4 p = image[at(x, y)];
+        ASSERT_TRUE(std::isfinite(p.r) && std::isfinite(p.g) && std::isfinite(p.b) && std::isfinite(p.a)) << x << "," << y;
+        if (std::abs(x - 20) <= 3 && std::abs(y - 20) <= 3) around += p.a;
+        drawn += p.a;
+      }
+    const bool direct = walk == hp::compute::FineWalk::Direct;
+    EXPECT_EQ(around, 0.0) << (direct ? "direct" : "staged") << " walk: the point drew";
+    EXPECT_NEAR(drawn, 40.2, 2.0) << (direct ? "direct" : "staged") << " walk: the line's coverage (~its length in pixels)";
   }
 }

@@ -12,7 +12,7 @@
 // its own fence: the application must not use that queue from another thread during those calls.
 // A Context must outlive every Renderer made on it.
 // A headless Context owns its device; its VkInstance is shared by every headless Context of the process
-// with the same options and lives until the process ends (a driver may refuse new instances after many
+// with the same validation setting and lives until the process ends (a driver may refuse new instances after many
 // were created and destroyed: NVIDIA 580 did from the 30th). With validation, each Context's log then
 // also receives the messages about the other validating headless Contexts alive at the same time.
 #include <vulkan/vulkan_core.h>
