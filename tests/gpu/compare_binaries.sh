@@ -3,22 +3,29 @@
 # bin/hairpipe_base, an older build packed beside it (HP_PACK_EXTRA_BINS="hairpipe_base=PATH"), in one
 # run: one warm-up case first (a GPU's first case may run at low clocks), then the two binaries
 # alternately for HP_COMPARE_ROUNDS rounds (2) at 136,320 and 1,000,000 strands at 1920x1080, and once each
-# at 136,320 strands at 1280x720. Reports: bench/ab_{base,new}_ROUND.json, bench/ab720_{base,new}.json.
+# at 136,320 strands at 1280x720 (with HP_GPU_QUICK=1, tiny sizes for a try on lavapipe). Reports:
+# bench/ab_{base,new}_ROUND.json, bench/ab720_{base,new}.json.
+if [ "$QUICK" = 1 ]; then
+  CMP_STRANDS=500,1000; CMP_RES=64x48; CMP_SMALL=96x54; CMP_FRAMES=2
+else
+  CMP_STRANDS=136320,1000000; CMP_RES=1920x1080; CMP_SMALL=1280x720; CMP_FRAMES=20
+fi
 if [ ! -x "$W/bin/hairpipe_base" ]; then
   log "compare_binaries: no bin/hairpipe_base in the bundle (HP_PACK_EXTRA_BINS); nothing to compare"
   FAILED_STEPS+=("compare_binaries")
 else
-  step compare/warmup 60 "$DEADLINE" - "$H" bench --raster compute --strands 136320 --resolution 1920x1080 --frames 30
+  step compare/warmup 60 "$DEADLINE" - "$H" bench --raster compute --strands "${CMP_STRANDS%%,*}" --resolution "$CMP_RES" \
+    --frames "$CMP_FRAMES"
   for round in $(seq 1 "${HP_COMPARE_ROUNDS:-2}"); do
     for who in base new; do
       exe=$H; [ $who = base ] && exe=$W/bin/hairpipe_base
-      step compare/ab_${who}_${round} 90 "$DEADLINE" - "$exe" bench --raster compute --strands 136320,1000000 \
-        --resolution 1920x1080 --frames 20 --json "$OUT/bench/ab_${who}_${round}.json"
+      step compare/ab_${who}_${round} 90 "$DEADLINE" - "$exe" bench --raster compute --strands "$CMP_STRANDS" \
+        --resolution "$CMP_RES" --frames "$CMP_FRAMES" --json "$OUT/bench/ab_${who}_${round}.json"
     done
   done
   for who in base new; do
     exe=$H; [ $who = base ] && exe=$W/bin/hairpipe_base
-    step compare/ab720_${who} 60 "$DEADLINE" - "$exe" bench --raster compute --strands 136320 --resolution 1280x720 \
-      --frames 20 --json "$OUT/bench/ab720_${who}.json"
+    step compare/ab720_${who} 60 "$DEADLINE" - "$exe" bench --raster compute --strands "${CMP_STRANDS%%,*}" --resolution "$CMP_SMALL" \
+      --frames "$CMP_FRAMES" --json "$OUT/bench/ab720_${who}.json"
   done
 fi
