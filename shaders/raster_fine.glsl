@@ -20,7 +20,14 @@
 
 layout(local_size_x = RASTER_FINE_SIZE) in;
 layout(constant_id = 0) const uint MOTION = 0u;
-layout(constant_id = 1) const uint STAGED = 0u;  // the staged walk (GPUs) or the direct one (CPU devices)
+// The staged walk (GPUs: raster_fine_staged*.comp) or the direct one (CPU devices: raster_fine*.comp): two
+// shaders, not a specialization constant, so the direct one has no barrier or shared memory at all (their
+// mere presence made lavapipe's direct walk 5% slower).
+#ifdef RASTER_FINE_STAGED
+const uint STAGED = 1u;
+#else
+const uint STAGED = 0u;
+#endif
 layout(std430, binding = RASTER_BINDING_SCREEN) readonly buffer Screen { vec4 screen[]; };
 layout(std430, binding = RASTER_BINDING_COLORS) readonly buffer Colors { uvec2 colors[]; };
 layout(std430, binding = RASTER_BINDING_TILES) readonly buffer Tiles { uvec2 tiles[]; };
@@ -111,37 +118,37 @@ uint nearMask;
 
 // Composites the segment's fragment at this pixel, if it has one; returns whether the pixel is still open.
 bool compositeSegment(Segment g) {
-  if (g.rows == 0u) return true;  // degenerate (the direct walk's row test read the list, not `rows`)
   float t = dot(centre - g.a.xy, g.axis.xy) / g.length2;
-  if (t < 0.0 || t > 1.0 || (t == 1.0 && (g.rows & RASTER_LAST_SEGMENT) == 0u)) return true;
-  vec2 n = STAGED != 0u ? g.axis.zw : vec2(-g.axis.y, g.axis.x) * inversesqrt(g.length2);
-  float d = dot(centre - g.a.xy, n);
-  float w = mix(g.a.w, g.b.w, t);
-  if (abs(d) > 0.5 * w + 0.75) return true;
-  float z = mix(g.a.z, g.b.z, t);
-  if (z >= farthest) return true;
-  float coverage = rasterBandCoverage(d, w, n.x, n.y);
-  if (coverage <= 0.0) return true;
-  uvec2 band = uvec2(0u);
-  for (uint row = 0u; row < RASTER_MASK_SIDE; ++row)
-    band[row >> 2u] |= rasterBandRowBits(d, w, n.x, n.y, row) << ((row & 3u) * 8u);
-  if (STAGED == 0u) {
-    g.colorA = unpackHalfRgb(colors[g.v]);
-    g.colorB = unpackHalfRgb(colors[g.v + 1u]);
-  }
-  vec3 c = mix(g.colorA, g.colorB, t);
+  // One exit (lavapipe lowers early returns of an inlined function into extra masks per fragment).
+  if (g.rows != 0u && t >= 0.0 && t <= 1.0 && (t != 1.0 || (g.rows & RASTER_LAST_SEGMENT) != 0u)) {
+    vec2 n = STAGED != 0u ? g.axis.zw : vec2(-g.axis.y, g.axis.x) * inversesqrt(g.length2);
+    float d = dot(centre - g.a.xy, n);
+    float w = mix(g.a.w, g.b.w, t);
+    float z = mix(g.a.z, g.b.z, t);
+    float coverage = abs(d) > 0.5 * w + 0.75 || z >= farthest ? 0.0 : rasterBandCoverage(d, w, n.x, n.y);
+    if (coverage > 0.0) {
+      uvec2 band = uvec2(0u);
+      for (uint row = 0u; row < RASTER_MASK_SIDE; ++row)
+        band[row >> 2u] |= rasterBandRowBits(d, w, n.x, n.y, row) << ((row & 3u) * 8u);
+      if (STAGED == 0u) {
+        g.colorA = unpackHalfRgb(colors[g.v]);
+        g.colorB = unpackHalfRgb(colors[g.v + 1u]);
+      }
+      vec3 c = mix(g.colorA, g.colorB, t);
 #ifdef RASTER_HEAD_MULTISAMPLED  // one sample: nearest == farthest, nothing is hidden at some samples only
-  if (z >= nearest) {  // hidden at some head samples: those keep only the hair in front of all of them
-    if (!split) near = far;
-    split = true;
-    nearMask |= headSamplesInFront(ivec2(pixel), z);
-  } else if (split) {
-    composite(near, coverage, band, c);
-  }
+      if (z >= nearest) {  // hidden at some head samples: those keep only the hair in front of all of them
+        if (!split) near = far;
+        split = true;
+        nearMask |= headSamplesInFront(ivec2(pixel), z);
+      } else if (split) {
+        composite(near, coverage, band, c);
+      }
 #endif
-  float visible = composite(far, coverage, band, c);
-  if (MOTION != 0u && STAGED == 0u) g.motion = vec4(unpackHalf2x16(motion[g.v]), unpackHalf2x16(motion[g.v + 1u]));
-  if (MOTION != 0u) far.motion += visible * vec3(mix(g.motion.xy, g.motion.zw, t), 1.0);
+      float visible = composite(far, coverage, band, c);
+      if (MOTION != 0u && STAGED == 0u) g.motion = vec4(unpackHalf2x16(motion[g.v]), unpackHalf2x16(motion[g.v + 1u]));
+      if (MOTION != 0u) far.motion += visible * vec3(mix(g.motion.xy, g.motion.zw, t), 1.0);
+    }
+  }
   return far.alpha <= 1.0 - RASTER_OPAQUE_T;
 }
 
@@ -164,6 +171,7 @@ void walkDirect(uint start, uint end, uint rowBit) {
 // dependent chain (list, screen, colours) per entry and pixel, and each entry's set-up is done once per
 // tile instead of once per pixel. The workgroup stops after a batch in which every pixel became opaque (a
 // vote through `live`). On lavapipe it took 1.6x the direct walk's time (the default frame, 640x480).
+#ifdef RASTER_FINE_STAGED
 shared Segment staged[RASTER_FINE_SIZE];
 shared uint live[2];  // whether some pixel is still open, alternate batches
 
@@ -186,6 +194,7 @@ void walkStaged(uint start, uint end, uint rowBit, uint lane, bool open) {
   }
 }
 
+#endif
 void main() {
   uint invocation = hpThreadId(RASTER_FINE_SIZE);
   uint tile = invocation / RASTER_FINE_SIZE;
@@ -213,10 +222,11 @@ void main() {
   uint start = tiles[tile].x + blocks[tile / RASTER_SCAN_SIZE];
   uint end = min(start + tiles[tile].y, params.capacity);
   uint rowBit = 1u << (lane / RASTER_TILE_SIZE);
-  if (STAGED != 0u)
-    walkStaged(start, end, rowBit, lane, inside);
-  else
-    walkDirect(start, end, rowBit);
+#ifdef RASTER_FINE_STAGED
+  walkStaged(start, end, rowBit, lane, inside);
+#else
+  walkDirect(start, end, rowBit);
+#endif
   if (!inside) return;
   imageStore(outImage, ivec2(pixel), vec4(far.color, far.alpha));
   if (MOTION != 0u)

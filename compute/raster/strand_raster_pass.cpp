@@ -193,10 +193,10 @@ StrandRasterPass::StrandRasterPass(const vk::Context& ctx, std::span<const Raste
   scanBlocks_ = pipeline("raster_scan_blocks.comp", gpu::RASTER_SCAN_SIZE, "raster scan blocks");
   const bool staged = settings.fineWalk == FineWalk::Staged ||
                       (settings.fineWalk == FineWalk::Auto && ctx.properties().deviceType != VK_PHYSICAL_DEVICE_TYPE_CPU);
-  // constant_id 0: MOTION, 1: STAGED
-  fine_ = vk::ComputePipeline(ctx, multisampled() ? "raster_fine_ms.comp" : "raster_fine.comp", gpu::RASTER_FINE_SIZE,
-                              {setLayout}, 0, staged ? "raster fine (staged)" : "raster fine",
-                              {motion[0], staged ? 1u : 0u}, cache);
+  const char* fineShader = staged ? (multisampled() ? "raster_fine_staged_ms.comp" : "raster_fine_staged.comp")
+                                  : (multisampled() ? "raster_fine_ms.comp" : "raster_fine.comp");
+  fine_ = vk::ComputePipeline(ctx, fineShader, gpu::RASTER_FINE_SIZE, {setLayout}, 0,
+                              staged ? "raster fine (staged)" : "raster fine", motion, cache);
 }
 
 void StrandRasterPass::bind(std::span<const RasterSource> sources) {
