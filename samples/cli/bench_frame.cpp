@@ -86,6 +86,7 @@ FrameResult benchFrame(const vk::Context& ctx, const FrameCase& c) {
   settings.opacity.raster = c.opacityRaster;
   settings.look.skinBounce = c.skinBounce;
   settings.strands.bounceSamples = c.bounceSamples;
+  settings.rasterSettings.fineWalk = c.fineWalk;
   settings.look.scattering = c.scattering;
   settings.lutMode = c.lutMode;
   const std::vector<LightSpec> lights = benchLights(c.lights);

@@ -15,6 +15,7 @@
 
 #include "engine/core/hair/scene.h"
 #include "compute/raster/frame_block.h"
+#include "compute/raster/strand_raster_pass.h"
 #include "compute/shadows/opacity_settings.h"
 #include "engine/core/shading/lut.h"
 #include "engine/vk/context.h"
@@ -34,6 +35,7 @@ struct FrameCase {
   float lodFraction = 1.0f;  // the strands drawn (a level of detail forced at every distance), widened
   std::uint32_t lights = 1;  // shadowed directional lights, [1, 4] (benchLights: the sun, then a rim, fill, top)
   std::uint32_t bounceSamples = gpu::RENDER_BOUNCE_STRAND_SAMPLES;  // StrandOptions::bounceSamples
+  compute::FineWalk fineWalk = compute::FineWalk::Auto;  // compute only: RasterSettings::fineWalk
 };
 
 struct PassTiming {

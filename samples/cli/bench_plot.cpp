@@ -31,7 +31,10 @@ std::string frameCaseName(const FrameCase& c) {
   const std::string shading = model + scattering + bounce;
   if (c.raster == RasterMode::Compute) {
     const std::string head = c.msaa == 4 ? "" : " head msaa" + std::to_string(c.msaa);
-    return (c.skinBounce ? "compute" : "compute, no skin bounce") + head + shading;
+    const std::string walk = c.fineWalk == compute::FineWalk::Auto     ? ""
+                             : c.fineWalk == compute::FineWalk::Staged ? ", staged fine walk"
+                                                                       : ", direct fine walk";
+    return (c.skinBounce ? "compute" : "compute, no skin bounce") + head + shading + walk;
   }
   return "graphics msaa" + std::to_string(c.msaa) + shading;
 }

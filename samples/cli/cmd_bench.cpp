@@ -39,6 +39,7 @@ struct BenchOptions {
   std::vector<float> lodFractions{1.0f};
   std::vector<std::uint32_t> lights{1};
   std::vector<std::uint32_t> bounceSamples{hp::gpu::RENDER_BOUNCE_STRAND_SAMPLES};
+  std::vector<std::string> fineWalks{"auto"};
   std::string json, plot, device;
 };
 
@@ -90,6 +91,18 @@ std::vector<std::pair<hp::LutMode, hp::render::Scattering>> shadings(const Bench
   return out;
 }
 
+// --fine-walk as values (the compute path's).
+std::vector<hp::compute::FineWalk> fineWalks(const BenchOptions& o) {
+  std::vector<hp::compute::FineWalk> out;
+  for (const std::string& w : o.fineWalks) {
+    if (w == "auto") out.push_back(hp::compute::FineWalk::Auto);
+    else if (w == "direct") out.push_back(hp::compute::FineWalk::Direct);
+    else if (w == "staged") out.push_back(hp::compute::FineWalk::Staged);
+    else throw hp::Error("bench: --fine-walk takes auto, direct and/or staged, got '" + w.substr(0, 40) + "'");
+  }
+  return out;
+}
+
 // --skin-bounce as values (the compute path's; the graphics path keeps FrameCase's default).
 std::vector<bool> skinBounces(const BenchOptions& o) {
   std::vector<bool> out;
@@ -116,6 +129,7 @@ std::vector<hp::cli::FrameCase> cases(const BenchOptions& o) {
   base.opacityRaster = hp::render::parseOpacityRaster(o.opacityRaster);
   const auto shadingList = shadings(o);
   const std::vector<bool> computeBounces = skinBounces(o), graphicsBounces{base.skinBounce};
+  const std::vector<hp::compute::FineWalk> computeWalks = fineWalks(o), graphicsWalks{base.fineWalk};
   std::vector<hp::cli::FrameCase> out;
   for (std::uint32_t s : o.strands) {
     if (s == 0 || s > 4'000'000) throw hp::Error("bench: --strands values must be in [1, 4000000]");
@@ -128,10 +142,12 @@ std::vector<hp::cli::FrameCase> cases(const BenchOptions& o) {
       for (const auto& [lut, scattering] : shadingList) {
         c.lutMode = lut;
         c.scattering = scattering;
-        for (const bool bounce : mode == hp::RasterMode::Compute ? computeBounces : graphicsBounces) {
-          c.skinBounce = bounce;
-          addSampleCounts(c, o, out);  // the head's samples (both paths), the graphics path's hair's; LOD; lights
-        }
+        for (const bool bounce : mode == hp::RasterMode::Compute ? computeBounces : graphicsBounces)
+          for (const hp::compute::FineWalk walk : mode == hp::RasterMode::Compute ? computeWalks : graphicsWalks) {
+            c.skinBounce = bounce;
+            c.fineWalk = walk;
+            addSampleCounts(c, o, out);  // the head's samples (both paths), the graphics path's hair's; LOD; lights
+          }
       }
     }
   }
@@ -155,6 +171,9 @@ nlohmann::json toJson(const hp::cli::FrameResult& r) {
   }
   return {{"strands", r.c.strands},      {"width", r.c.width},          {"lod_fraction", r.c.lodFraction},
           {"shadowed_lights", r.c.lights},            {"bounce_samples", r.c.bounceSamples},
+          {"fine_walk", r.c.fineWalk == hp::compute::FineWalk::Auto     ? "auto"
+                        : r.c.fineWalk == hp::compute::FineWalk::Staged ? "staged"
+                                                                        : "direct"},
           {"height", r.c.height},        {"raster", hp::cli::frameCaseName(r.c)},
           {"lut_mode", hp::lutModeName(r.c.lutMode)},
           {"scattering", hp::render::scatteringName(r.c.scattering)},
@@ -254,6 +273,10 @@ void setup(CLI::App& app) {
   cmd->add_option("--bounce-samples", o->bounceSamples,
                   "Points per strand where the skin's bounce is gathered (comma separated; the vertex count, 36, "
                   "gathers at every vertex)")
+      ->delimiter(',')->capture_default_str();
+  cmd->add_option("--fine-walk", o->fineWalks,
+                  "Compute raster: how the fine pass walks a tile's list, auto (staged on GPUs, direct on CPU devices), "
+                  "direct and/or staged (comma separated)")
       ->delimiter(',')->capture_default_str();
   cmd->add_option("--json", o->json, "Write the report as JSON to this file");
   cmd->add_option("--plot", o->plot, "Write an SVG of ms per pass against strand count to this file");

@@ -139,6 +139,30 @@ TEST(CliBench, RefusesBadSkinBounceAndBounceSampleValues) {
   EXPECT_EQ(samples.out.find("median of"), std::string::npos) << "a frame ran: " << samples.out;
 }
 
+// `bench --fine-walk` takes auto, direct and/or staged (refused by name before a frame runs); each walk is a
+// case of its own, named in the report.
+TEST(CliBench, FineWalkListIsCheckedThenBenched) {
+  auto bad = runCli({"bench", "--raster", "compute", "--fine-walk", "staged,sideways", "--frames", "1"});
+  EXPECT_EQ(bad.exitCode, 1);
+  EXPECT_NE(bad.err.find("bench: --fine-walk takes auto, direct and/or staged, got 'sideways'"), std::string::npos)
+      << bad.err;
+  EXPECT_EQ(bad.out.find("median of"), std::string::npos) << "a frame ran: " << bad.out;
+  const std::string json = ::testing::TempDir() + "bench_fine_walks.json";
+  auto run = runCli({"bench", "--raster", "compute", "--strands", "100", "--resolution", "32x24", "--frames", "1",
+                     "--fine-walk", "direct,staged", "--json", json});
+  ASSERT_EQ(run.exitCode, 0) << run.err;
+  std::ifstream in(json);
+  const nlohmann::json report = nlohmann::json::parse(in);
+  std::vector<std::string> names, walks;
+  for (const auto& row : report["results"]) {
+    names.push_back(row["raster"].get<std::string>());
+    walks.push_back(row["fine_walk"].get<std::string>());
+    EXPECT_TRUE(row["passes"].contains("raster fine")) << row.dump();
+  }
+  EXPECT_EQ(names, (std::vector<std::string>{"compute, direct fine walk", "compute, staged fine walk"}));
+  EXPECT_EQ(walks, (std::vector<std::string>{"direct", "staged"}));
+}
+
 // `bench --scattering` and `--lut-mode` are refused by name before a frame runs; dual with a model other than
 // the physical one (which has no dual tables) is benchmarked as single scattering, once.
 TEST(CliBench, ScatteringAndLutModeListsAreCheckedThenCombined) {
