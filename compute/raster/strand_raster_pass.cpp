@@ -115,6 +115,16 @@ std::size_t chunkCount(std::span<const RasterSource> sources) {
 std::vector<glm::uvec4> armedShadeArgs(std::size_t chunks) { return std::vector<glm::uvec4>(chunks, {0u, 1u, 1u, 0u}); }
 }  // namespace
 
+const char* fineWalkName(FineWalk walk) {
+  return walk == FineWalk::Auto ? "auto" : walk == FineWalk::Staged ? "staged" : "direct";
+}
+
+std::optional<FineWalk> parseFineWalk(const std::string& name) {
+  for (FineWalk w : {FineWalk::Auto, FineWalk::Direct, FineWalk::Staged})
+    if (name == fineWalkName(w)) return w;
+  return std::nullopt;
+}
+
 void RasterSettings::validate() const {
   if (tileBudget == 0 || tileBudget > (1u << 24))
     throw Error("tileBudget must be in [1, 16777216], got " + std::to_string(tileBudget));

@@ -31,7 +31,9 @@
 
 #include <array>
 #include <functional>
+#include <optional>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "compute/strands/strand_buffers.h"
@@ -46,6 +48,8 @@ namespace hp::compute {
 // batches the tile's invocations load together into shared memory (Staged). The image is the same; the
 // speed is not: Auto takes Direct on CPU devices (lavapipe) and Staged on GPUs.
 enum class FineWalk { Auto, Direct, Staged };
+const char* fineWalkName(FineWalk walk);                        // "auto", "direct", "staged"
+std::optional<FineWalk> parseFineWalk(const std::string& name);  // one of those names, or none
 
 struct RasterSettings {
   std::uint32_t tileBudget = 16384;  // list entries kept per 8x8 tile, [1, 1<<24]

@@ -3,11 +3,10 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
-#include <fstream>
-#include <unistd.h>
 
 #include "engine/core/hair/default_head.h"
 #include "samples/tools/hair_system.h"
+#include "samples/tools/host/process_use.h"
 #include "samples/tools/offscreen_renderer.h"
 #include "samples/tools/copy_reference.h"
 #include "engine/vk/submit.h"
@@ -25,13 +24,8 @@ PassTiming summarize(std::vector<double> ms) {
   return t;
 }
 
-// Resident set of this process (Linux /proc/self/statm; 0 where it cannot be read).
-double residentMiB() {
-  std::ifstream statm("/proc/self/statm");
-  double pages = 0, resident = 0;
-  if (!(statm >> pages >> resident)) return 0.0;
-  return resident * double(sysconf(_SC_PAGESIZE)) / (1024.0 * 1024.0);
-}
+// Resident set of this process (0 where it cannot be read).
+double residentMiB() { return double(residentBytes()) / (1024.0 * 1024.0); }
 
 // Compulsory bytes per frame of the compute passes: every input read once, every output written once
 // (formulas as bench strands / bench sim; raster: vertex records 16 + 8 bytes, list entries 8 bytes; the

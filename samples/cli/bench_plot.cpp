@@ -31,9 +31,8 @@ std::string frameCaseName(const FrameCase& c) {
   const std::string shading = model + scattering + bounce;
   if (c.raster == RasterMode::Compute) {
     const std::string head = c.msaa == 4 ? "" : " head msaa" + std::to_string(c.msaa);
-    const std::string walk = c.fineWalk == compute::FineWalk::Auto     ? ""
-                             : c.fineWalk == compute::FineWalk::Staged ? ", staged fine walk"
-                                                                       : ", direct fine walk";
+    const std::string walk =
+        c.fineWalk == compute::FineWalk::Auto ? "" : std::string(", ") + compute::fineWalkName(c.fineWalk) + " fine walk";
     return (c.skinBounce ? "compute" : "compute, no skin bounce") + head + shading + walk;
   }
   return "graphics msaa" + std::to_string(c.msaa) + shading;

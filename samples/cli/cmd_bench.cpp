@@ -95,10 +95,9 @@ std::vector<std::pair<hp::LutMode, hp::render::Scattering>> shadings(const Bench
 std::vector<hp::compute::FineWalk> fineWalks(const BenchOptions& o) {
   std::vector<hp::compute::FineWalk> out;
   for (const std::string& w : o.fineWalks) {
-    if (w == "auto") out.push_back(hp::compute::FineWalk::Auto);
-    else if (w == "direct") out.push_back(hp::compute::FineWalk::Direct);
-    else if (w == "staged") out.push_back(hp::compute::FineWalk::Staged);
-    else throw hp::Error("bench: --fine-walk takes auto, direct and/or staged, got '" + w.substr(0, 40) + "'");
+    const std::optional<hp::compute::FineWalk> walk = hp::compute::parseFineWalk(w);
+    if (!walk) throw hp::Error("bench: --fine-walk takes auto, direct and/or staged, got '" + w.substr(0, 40) + "'");
+    out.push_back(*walk);
   }
   return out;
 }
@@ -171,9 +170,7 @@ nlohmann::json toJson(const hp::cli::FrameResult& r) {
   }
   return {{"strands", r.c.strands},      {"width", r.c.width},          {"lod_fraction", r.c.lodFraction},
           {"shadowed_lights", r.c.lights},            {"bounce_samples", r.c.bounceSamples},
-          {"fine_walk", r.c.fineWalk == hp::compute::FineWalk::Auto     ? "auto"
-                        : r.c.fineWalk == hp::compute::FineWalk::Staged ? "staged"
-                                                                        : "direct"},
+          {"fine_walk", hp::compute::fineWalkName(r.c.fineWalk)},
           {"height", r.c.height},        {"raster", hp::cli::frameCaseName(r.c)},
           {"lut_mode", hp::lutModeName(r.c.lutMode)},
           {"scattering", hp::render::scatteringName(r.c.scattering)},

@@ -139,6 +139,22 @@ TEST(CliBench, RefusesBadSkinBounceAndBounceSampleValues) {
   EXPECT_EQ(samples.out.find("median of"), std::string::npos) << "a frame ran: " << samples.out;
 }
 
+namespace {
+// `hairpipe bench` of the compute path at 100 strands, 32x24, one frame, with `extra` options: its JSON report
+// (null when the run failed, which is then a test failure).
+nlohmann::json tinyComputeBench(std::vector<std::string> extra, const std::string& file) {
+  const std::string json = ::testing::TempDir() + file;
+  std::vector<std::string> args = {"bench", "--raster", "compute", "--strands", "100", "--resolution", "32x24",
+                                   "--frames", "1", "--json", json};
+  args.insert(args.end(), extra.begin(), extra.end());
+  const auto run = runCli(args);
+  EXPECT_EQ(run.exitCode, 0) << run.err;
+  if (run.exitCode != 0) return nullptr;
+  std::ifstream in(json);
+  return nlohmann::json::parse(in);
+}
+}  // namespace
+
 // `bench --fine-walk` takes auto, direct and/or staged (refused by name before a frame runs); each walk is a
 // case of its own, named in the report.
 TEST(CliBench, FineWalkListIsCheckedThenBenched) {
@@ -147,12 +163,8 @@ TEST(CliBench, FineWalkListIsCheckedThenBenched) {
   EXPECT_NE(bad.err.find("bench: --fine-walk takes auto, direct and/or staged, got 'sideways'"), std::string::npos)
       << bad.err;
   EXPECT_EQ(bad.out.find("median of"), std::string::npos) << "a frame ran: " << bad.out;
-  const std::string json = ::testing::TempDir() + "bench_fine_walks.json";
-  auto run = runCli({"bench", "--raster", "compute", "--strands", "100", "--resolution", "32x24", "--frames", "1",
-                     "--fine-walk", "direct,staged", "--json", json});
-  ASSERT_EQ(run.exitCode, 0) << run.err;
-  std::ifstream in(json);
-  const nlohmann::json report = nlohmann::json::parse(in);
+  const nlohmann::json report = tinyComputeBench({"--fine-walk", "direct,staged"}, "bench_fine_walks.json");
+  ASSERT_FALSE(report.is_null());
   std::vector<std::string> names, walks;
   for (const auto& row : report["results"]) {
     names.push_back(row["raster"].get<std::string>());
@@ -174,12 +186,9 @@ TEST(CliBench, ScatteringAndLutModeListsAreCheckedThenCombined) {
   EXPECT_EQ(lut.exitCode, 1);
   EXPECT_NE(lut.err.find("bench: --lut-mode: unknown LUT mode 'glossy'"), std::string::npos) << lut.err;
   EXPECT_EQ(lut.out.find("median of"), std::string::npos) << "a frame ran: " << lut.out;
-  const std::string json = ::testing::TempDir() + "bench_shadings.json";
-  auto run = runCli({"bench", "--raster", "compute", "--strands", "100", "--resolution", "32x24", "--frames", "1",
-                     "--lut-mode", "float,physical", "--scattering", "single,dual", "--json", json});
-  ASSERT_EQ(run.exitCode, 0) << run.err;
-  std::ifstream in(json);
-  const nlohmann::json report = nlohmann::json::parse(in);
+  const nlohmann::json report =
+      tinyComputeBench({"--lut-mode", "float,physical", "--scattering", "single,dual"}, "bench_shadings.json");
+  ASSERT_FALSE(report.is_null());
   std::vector<std::string> names, scatterings;
   for (const auto& row : report["results"]) {
     names.push_back(row["raster"].get<std::string>());

@@ -20,6 +20,24 @@ using hp::test::VulkanTest;
 namespace {
 constexpr std::uint32_t kFramingWidth = 160, kFramingHeight = 120;
 
+// A still of the hair as imported (no settling) on the compute raster, its hair coverage read back.
+RenderRequest coverageRequest() {
+  RenderRequest r;
+  r.scene.render = {kFramingWidth, kFramingHeight, 1};
+  r.scene.render.raster = RasterMode::Compute;
+  r.settleFrames = 0;
+  r.captureFrame = true;
+  return r;
+}
+
+// The share of the frame the hair covers (its exported alpha, summed).
+double hairAlphaCoverage(const RenderResult& result) {
+  if (!result.frame) throw Error("the render captured no frame");
+  double covered = 0.0;
+  for (float a : result.frame->hairAlpha.values) covered += a;
+  return covered / double(result.frame->hairAlpha.values.size());
+}
+
 // A head of radius 0.09 m (times 1/scale model units): 600 strands from the upper half of a sphere,
 // out and then down 0.3 m, in 8 points. Z up maps model (x, y, z) so that z is up.
 HairFileData syntheticHead(float unitsPerMetre, bool zUp) {
@@ -122,17 +140,9 @@ TEST_F(VulkanTest, AMohawkWithoutAMeshShowsItsHair) {
     if (given) options.colliders = std::vector<SphereCollider>{{glm::vec3(0.0f), 0.09f}};
     const HairAsset asset = importHairAsset(data, options, "mohawk.hair");
     EXPECT_EQ(asset.head.positions.empty(), !given);
-    RenderRequest r;
-    r.scene.render = {kFramingWidth, kFramingHeight, 1};
-    r.scene.render.raster = RasterMode::Compute;
-    r.settleFrames = 0;
-    r.captureFrame = true;
+    RenderRequest r = coverageRequest();
     fitCameraToPoints(r.scene.camera, asset.guides.positions);
-    const RenderResult result = renderStill(*ctx, asset, r);
-    ASSERT_TRUE(result.frame);
-    double covered = 0.0;
-    for (float a : result.frame->hairAlpha.values) covered += a;
-    const double fraction = covered / double(result.frame->hairAlpha.values.size());
+    const double fraction = hairAlphaCoverage(renderStill(*ctx, asset, r));
     std::cout << (given ? "head given" : "no head") << ": hair covers " << fraction << " of the frame\n";
     EXPECT_GT(fraction, 0.03) << (given ? "head given" : "no head");
   }
@@ -152,12 +162,6 @@ HairFileData fringe() {
     for (int k = 0; k < 7; ++k, p += 0.015f * glm::normalize(n + glm::vec3(0.0f, -1.5f, 0.0f))) d.points.push_back(p);
   }
   return d;
-}
-
-double hairAlphaCoverage(const RenderResult& result) {
-  double covered = 0.0;
-  for (float a : result.frame->hairAlpha.values) covered += a;
-  return covered / double(result.frame->hairAlpha.values.size());
 }
 }  // namespace
 
@@ -183,11 +187,7 @@ TEST_F(VulkanTest, AFringeStaysAFringe) {
   EXPECT_LT(farthest, 0.02);
   double coverage[2];
   for (int back = 0; back < 2; ++back) {
-    RenderRequest r;
-    r.scene.render = {kFramingWidth, kFramingHeight, 1};
-    r.scene.render.raster = RasterMode::Compute;
-    r.settleFrames = 0;
-    r.captureFrame = true;
+    RenderRequest r = coverageRequest();
     r.scene.camera.target = glm::vec3(0.0f);
     r.scene.camera.distance = 0.5f;
     r.scene.camera.orbitDeg = back ? 180.0f : 0.0f;

@@ -6,10 +6,8 @@
 // the same way (no drift), and neither the device memory hairpipe allocated nor the host's resident memory
 // has grown (beyond the validation layer's own bookkeeping, bounded per recorded barrier below).
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <cstdio>
-#include <fstream>
 #include <span>
 
 #if defined(__SANITIZE_ADDRESS__)
@@ -24,6 +22,7 @@
 #endif
 
 #include "engine/vk/barriers.h"
+#include "samples/tools/host/process_use.h"
 #include "samples/tools/simulation_driver.h"
 #include "tests/support/thinned_head.h"
 #include "tests/support/vk_fixture.h"
@@ -45,12 +44,7 @@ constexpr const char* kHostMemory = "host heap in use (AddressSanitizer's count)
 std::uint64_t hostMemoryBytes() { return __sanitizer_get_current_allocated_bytes(); }
 #else
 constexpr const char* kHostMemory = "host RSS";
-std::uint64_t hostMemoryBytes() {
-  std::ifstream statm("/proc/self/statm");
-  std::uint64_t size = 0, resident = 0;
-  statm >> size >> resident;
-  return resident * std::uint64_t(sysconf(_SC_PAGESIZE));
-}
+std::uint64_t hostMemoryBytes() { return residentBytes(); }
 #endif
 
 // Sum of 0.5 |v|^2 over the free particles (unit mass), v relative to where the head would have carried each

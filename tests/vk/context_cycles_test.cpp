@@ -5,11 +5,7 @@
 // driver says what grew and at which cycle creation first failed.
 #include <gtest/gtest.h>
 
-#include <dirent.h>
-
 #include <cstdio>
-#include <fstream>
-#include <string>
 #include <vector>
 
 #include "engine/core/error.h"
@@ -17,37 +13,11 @@
 #include "engine/vk/context.h"
 #include "engine/vk/instance_cache.h"
 #include "engine/vk/validation_log.h"
+#include "samples/tools/host/process_use.h"
 
 namespace {
-struct ProcessUse {
-  long fds = 0, threads = 0, mappings = 0, rssKiB = 0;
-};
-
-long countEntries(const char* dir) {
-  long n = 0;
-  if (DIR* d = opendir(dir)) {
-    while (readdir(d)) ++n;
-    closedir(d);
-  }
-  return n - 2;  // . and ..
-}
-
-long statusField(const std::string& key) {  // a "Key:  value" line of /proc/self/status
-  std::ifstream in("/proc/self/status");
-  for (std::string line; std::getline(in, line);)
-    if (line.rfind(key + ":", 0) == 0) return std::stol(line.substr(key.size() + 1));
-  return -1;
-}
-
-ProcessUse processUse() {
-  ProcessUse u;
-  u.fds = countEntries("/proc/self/fd") - 1;  // less the directory stream counting them
-  u.threads = statusField("Threads");
-  u.rssKiB = statusField("VmRSS");
-  std::ifstream maps("/proc/self/maps");
-  for (std::string line; std::getline(maps, line);) ++u.mappings;
-  return u;
-}
+using hp::ProcessUse;
+using hp::processUse;
 
 // One cycle: a headless context with validation (as every test makes), a buffer on it, all destroyed; the
 // log is read after the device is gone, so messages of vkDestroyDevice (objects left alive) count too.
@@ -80,8 +50,8 @@ TEST(ContextCycles, AHundredContextsGiveBackWhatTheyTake) {
     if (HasFatalFailure()) return;
     use.push_back(processUse());
     if (cycle % 10 == 0)  // so a driver that fails later still leaves a record of what grew until then
-      std::printf("cycle %d: fds %ld threads %ld mappings %ld rss %ld KiB\n", cycle, use.back().fds, use.back().threads,
-                  use.back().mappings, use.back().rssKiB);
+      std::printf("cycle %d: fds %ld threads %ld mappings %ld rss %llu KiB\n", cycle, use.back().fds,
+                  use.back().threads, use.back().mappings, (unsigned long long)(use.back().residentBytes / 1024));
   }
   EXPECT_EQ(hp::vk::sharedInstanceCount(), instances) << "each context made its own instance";
   const ProcessUse& settled = use[kSettled - 1];
@@ -90,5 +60,5 @@ TEST(ContextCycles, AHundredContextsGiveBackWhatTheyTake) {
   EXPECT_LE(last.threads, settled.threads) << "threads leak";
   EXPECT_LE(last.mappings, settled.mappings + 8) << "mappings leak";
   // 90 more cycles: under 64 KiB a cycle (allocator slack), where a leaked device or instance costs MiBs.
-  EXPECT_LE(last.rssKiB, settled.rssKiB + (kCycles - kSettled) * 64) << "memory leaks";
+  EXPECT_LE(last.residentBytes, settled.residentBytes + (kCycles - kSettled) * 64 * 1024) << "memory leaks";
 }
