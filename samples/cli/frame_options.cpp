@@ -192,6 +192,19 @@ hp::RenderRequest makeRenderRequest(const FrameOptions& o, const CLI::App& cmd) 
 }
 
 // A model loaded without a scene: frame the camera on its hair (the orbit and elevation stay). Any
+// The character mesh and how the roots bound to it, on stderr and as JSON.
+nlohmann::json characterReport(const hp::HairAsset& asset) {
+  const hp::CharacterMesh& m = *asset.character;
+  const hp::RootBindings& b = asset.rootBindings;
+  std::cerr << "hairpipe: mesh " << m.source << ": " << m.vertexCount() << " vertices, " << m.triangleCount()
+            << " triangles, " << m.skeleton.size() << " joints, " << m.animations.size() << " animations; the "
+            << b.roots.size() << " guide roots bound to it lie " << b.meanDistance << " from it on average (at most "
+            << b.maxDistance << "), " << b.farRoots << " farther than " << b.farDistance << "\n";
+  return {{"source", m.source},           {"vertices", m.vertexCount()},   {"triangles", m.triangleCount()},
+          {"joints", m.skeleton.size()},   {"animations", m.animations.size()}, {"roots_far", b.farRoots},
+          {"far_distance", b.farDistance}, {"root_distance_mean", b.meanDistance}, {"root_distance_max", b.maxDistance}};
+}
+
 // frame: refuse one in which no guide particle falls inside the view, naming why.
 nlohmann::json frameCamera(Scene& scene, const hp::HairAsset& asset) {
   nlohmann::json guessed = nlohmann::json::object();
@@ -209,6 +222,7 @@ nlohmann::json frameCamera(Scene& scene, const hp::HairAsset& asset) {
     std::cerr << "hairpipe: " << asset.name << " has no head mesh: the sphere fitted to its roots (radius " << radius
               << ") keeps the hair out but is not drawn\n";
   }
+  if (asset.character) guessed["mesh"] = characterReport(asset);
   const float aspect = float(scene.render.width) / float(scene.render.height);
   if (hp::pointsInView(scene.camera, aspect, asset.guides.positions) == 0) {
     const auto& c = scene.camera;

@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include "engine/core/error.h"
+#include "engine/core/hair/mesh_file.h"
 #include "samples/tools/host/model_guess.h"
 #include "samples/tools/host/scene_file.h"
 
@@ -13,6 +14,9 @@ void addSceneOptions(CLI::App& cmd, SceneOptions& options) {
       ->excludes(scene);
   cmd.add_option("--units", options.units, "Model units: m, cm or mm (default: the scene's, else guessed)");
   cmd.add_option("--up", options.up, "Model up axis: y or z (default: the scene's, else guessed)");
+  cmd.add_option("--mesh", options.mesh,
+                 "Character mesh for the model (.obj, .ply, .gltf, .glb or .tfxmesh, in the model's units): drawn, "
+                 "collided with, roots bound to it");
   cmd.add_option("--device", options.device, "Vulkan device: index or name substring (env HAIRPIPE_DEVICE)");
   cmd.add_flag("--validation", options.validation, "Run with the Khronos validation layer; fail on any message");
 }
@@ -25,7 +29,20 @@ void applyOverrides(const SceneOptions& options, Scene& scene) {
 }
 }  // namespace
 
+namespace {
+Scene sceneOf(const SceneOptions& options);
+}  // namespace
+
 Scene loadScene(const SceneOptions& options) {
+  if (!options.mesh.empty() && !meshKindOf(options.mesh))
+    throw Error("--mesh " + options.mesh + ": expected an .obj, .ply, .gltf, .glb or .tfxmesh file");
+  Scene scene = sceneOf(options);
+  if (!options.mesh.empty()) scene.mesh = CharacterMeshSpec{options.mesh};
+  return scene;
+}
+
+namespace {
+Scene sceneOf(const SceneOptions& options) {
   if (!options.units.empty()) unitScale(options.units);  // refuse a bad value before any work
   if (!options.up.empty()) parseUpAxis(options.up);
   if (!options.scenePath.empty()) {
@@ -58,6 +75,7 @@ Scene loadScene(const SceneOptions& options) {
   scene.fitCamera = true;
   return scene;
 }
+}  // namespace
 
 std::unique_ptr<vk::Context> createContext(const SceneOptions& options, const vk::ContextOptions& extensions) {
   vk::ContextOptions ctxOptions = extensions;

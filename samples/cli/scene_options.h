@@ -19,6 +19,7 @@ struct SceneOptions {
   std::string model = "default";
   std::string units;  // empty: from the scene, or guessed
   std::string up;
+  std::string mesh;  // a character mesh for the model (replaces the scene's)
   std::string device;
   bool validation = false;
 };

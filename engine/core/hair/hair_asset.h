@@ -12,7 +12,9 @@
 #include <string>
 #include <vector>
 
+#include "engine/core/hair/character_mesh.h"
 #include "engine/core/hair/collider.h"
+#include "engine/core/hair/root_binding.h"
 #include "engine/core/hair/guide_set.h"
 #include "engine/core/hair/sdf_grid.h"
 #include "engine/core/hair/strand_topology.h"
@@ -37,5 +39,9 @@ struct HairAsset {
   // The colliders were fitted to the roots by an importer, not given: they collide but are not drawn (head
   // is empty), and tools say so.
   bool fittedCollider = false;
+  // A character mesh given with the model (null: none): drawn as the head, the distance grid the hair
+  // collides with (unless the scene gives colliders), and the surface the guides' roots bind to.
+  std::shared_ptr<const CharacterMesh> character;
+  RootBindings rootBindings;  // one per guide on `character` (empty without one)
 };
 }  // namespace hp

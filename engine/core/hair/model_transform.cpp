@@ -17,6 +17,15 @@ glm::vec3 ModelTransform::applyToPoint(const glm::vec3& p) const {
 
 glm::vec3 ModelTransform::applyToNormal(const glm::vec3& n) const { return rotateUp(n, up); }
 
+glm::mat4 ModelTransform::matrix() const {
+  glm::mat4 m(1.0f);
+  m[0] = glm::vec4(applyToNormal({scale, 0.0f, 0.0f}), 0.0f);
+  m[1] = glm::vec4(applyToNormal({0.0f, scale, 0.0f}), 0.0f);
+  m[2] = glm::vec4(applyToNormal({0.0f, 0.0f, scale}), 0.0f);
+  m[3] = glm::vec4(translation, 1.0f);
+  return m;
+}
+
 void ModelTransform::validate() const {
   if (!std::isfinite(scale) || scale <= 0.0f)
     throw Error("model transform: scale must be positive, got " + std::to_string(scale));

@@ -17,6 +17,7 @@ struct ModelTransform {
 
   glm::vec3 applyToPoint(const glm::vec3& p) const;
   glm::vec3 applyToNormal(const glm::vec3& n) const;
+  glm::mat4 matrix() const;  // applyToPoint as a matrix
   void validate() const;  // scale finite and > 0, translation finite
   bool operator==(const ModelTransform&) const = default;
 };

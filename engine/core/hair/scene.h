@@ -93,6 +93,14 @@ struct MeshColliderSpec {
   float cell = 0.0f;  // grid spacing (scene units); 0: 1/64 of the mesh's longest side
 };
 
+// A character mesh (mesh_file.h: OBJ, PLY, glTF, .tfxmesh) in the model's units and axes (the model's
+// transform applies to it): drawn as the head, collided with through a distance grid built at load time,
+// and the surface the guides' roots bind to.
+struct CharacterMeshSpec {
+  std::filesystem::path path;
+  float cell = 0.0f;  // distance grid spacing (scene units); 0: 1/128 of the mesh's longest side
+};
+
 struct Scene {
   std::string source = "<defaults>";  // where the scene came from, for messages
   ModelSpec model;
@@ -102,6 +110,7 @@ struct Scene {
   // and one distance grid built from colliderMeshes (if any). Absent: the model's own.
   std::optional<std::vector<SphereCollider>> colliders;
   std::vector<MeshColliderSpec> colliderMeshes;
+  std::optional<CharacterMeshSpec> mesh;  // needs a model file (not the default head)
   HairMaterial material;
   std::vector<LightSpec> lights{LightSpec{}};  // validateLights; default: the one sun
   CameraSpec camera;

@@ -1,11 +1,14 @@
 // Scene -> HairAsset: dispatch on the model kind, then apply the scene's overrides.
+#include <algorithm>
 #include <cctype>
+#include <cmath>
 
 #include "engine/core/error.h"
 #include "engine/core/hair/default_head.h"
 #include "engine/core/hair/head_mesh.h"
 #include "engine/core/hair/fit_sphere.h"
 #include "engine/core/hair/hair_import.h"
+#include "engine/core/hair/mesh_file.h"
 #include "engine/core/hair/obj_import.h"
 #include "engine/core/hair/scene.h"
 #include "engine/core/hair/sdf_mesh.h"
@@ -77,6 +80,50 @@ HairAsset modelAsset(const Scene& scene, const std::shared_ptr<const SdfGrid>& g
 }
 }  // namespace
 
+namespace {
+struct CharacterParts {
+  std::shared_ptr<const CharacterMesh> mesh;
+  std::shared_ptr<const SdfGrid> grid;
+};
+
+CharacterParts loadCharacter(const Scene& scene) {
+  if (scene.model.kind == ModelSpec::Kind::Default)
+    throw Error(scene.source + ": a character mesh needs a model file (.hair, .tfx or .obj), not the default head");
+  CharacterParts parts;
+  parts.mesh = std::make_shared<const CharacterMesh>(loadCharacterMesh(scene.mesh->path, scene.model.transform));
+  const CharacterMesh& m = *parts.mesh;
+  glm::vec3 lo(INFINITY), hi(-INFINITY);
+  for (const auto& p : m.positions) lo = glm::min(lo, p), hi = glm::max(hi, p);
+  const float longest = std::max(hi.x - lo.x, std::max(hi.y - lo.y, hi.z - lo.z));
+  const float cell = scene.mesh->cell > 0.0f ? scene.mesh->cell : longest / 128.0f;
+  try {
+    parts.grid = std::make_shared<SdfGrid>(meshSdf(m.positions, m.triangles, cell));
+  } catch (const Error& e) {
+    throw Error(m.source + ": its distance grid: " + e.what());
+  }
+  return parts;
+}
+
+// The mesh becomes the drawn head and (without scene colliders) the only collider; the roots bind to it.
+// Roots more than 2% of the mesh's diagonal from it are counted as far.
+void attachCharacter(HairAsset& asset, const CharacterParts& character, bool collide) {
+  const CharacterMesh& m = *character.mesh;
+  asset.head = HeadMesh{};
+  asset.head.positions = m.positions;
+  asset.head.normals = m.normals;
+  for (const auto& t : m.triangles) asset.head.indices.insert(asset.head.indices.end(), {t.x, t.y, t.z});
+  if (collide) {
+    asset.colliders.clear();
+    asset.sdf = character.grid;
+    asset.fittedCollider = false;
+  }
+  glm::vec3 lo(INFINITY), hi(-INFINITY);
+  for (const auto& p : m.positions) lo = glm::min(lo, p), hi = glm::max(hi, p);
+  asset.rootBindings = bindRoots(asset.guides.roots(), m.positions, m.triangles, 0.02f * glm::length(hi - lo));
+  asset.character = character.mesh;
+}
+}  // namespace
+
 std::optional<ModelSpec::Kind> modelKindOf(const std::filesystem::path& path) {
   std::string ext = path.extension().string();
   for (auto& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
@@ -90,11 +137,14 @@ Scene::Scene() : growth(defaultHeadGrowth()) {}
 
 HairAsset buildSceneAsset(const Scene& scene) {
   const std::shared_ptr<const SdfGrid> grid = colliderGrid(scene);
-  HairAsset asset = modelAsset(scene, grid);
+  CharacterParts character;
+  if (scene.mesh) character = loadCharacter(scene);
+  HairAsset asset = modelAsset(scene, grid ? grid : character.grid);
   if (scene.colliders) {
     asset.colliders = *scene.colliders;
     asset.sdf = grid;
   }
+  if (scene.mesh) attachCharacter(asset, character, !scene.colliders);
   if (asset.head.scalp.empty()) markScalp(asset.head, asset.guides.roots());
   return asset;
 }

@@ -4,6 +4,7 @@
 #include "engine/core/error.h"
 #include "engine/core/hair/default_head.h"
 #include "engine/core/hair/input_file.h"
+#include "engine/core/hair/mesh_file.h"
 #include "samples/tools/host/json_reader.h"
 #include "engine/core/hair/scene.h"
 #include "samples/tools/host/scene_file.h"
@@ -104,6 +105,23 @@ void readColliders(JsonObject& root, Scene& scene, const std::filesystem::path& 
     requireThat(std::isfinite(s.radius) && s.radius > 0.0f, c, "radius", "must be > 0");
     scene.colliders->push_back(s);
   }
+}
+
+// "mesh": "body.glb" or {"source": "body.glb", "cell": 0.004}: the character mesh (in the model's units and axes).
+void readCharacterMesh(JsonObject& root, Scene& scene, const std::filesystem::path& baseDir) {
+  const nlohmann::json* v = root.value("mesh");
+  if (!v) return;
+  nlohmann::json object = v->is_string() ? nlohmann::json{{"source", *v}} : *v;
+  JsonObject o(object, root.pointer("mesh"), root.file());
+  CharacterMeshSpec m;
+  std::string source;
+  o.read("source", source);
+  o.read("cell", m.cell);
+  o.finish();
+  requireThat(meshKindOf(source).has_value(), o, "source", "must name an .obj, .ply, .gltf, .glb or .tfxmesh file, got \"" + excerpt(source) + "\"");
+  requireThat(std::isfinite(m.cell) && m.cell >= 0.0f, o, "cell", "must be > 0 (or 0: automatic)");
+  m.path = baseDir / source;
+  scene.mesh = m;
 }
 
 void readMaterial(JsonObject& root, HairMaterial& m) {
@@ -280,6 +298,7 @@ Scene parseScene(const std::string& jsonText, const std::string& source, const s
   readGrowth(root, scene.growth);
   readDensity(root, scene.density);
   readColliders(root, scene, baseDir);
+  readCharacterMesh(root, scene, baseDir);
   readMaterial(root, scene.material);
   readLights(root, scene.lights);
   readCamera(root, scene.camera);
