@@ -16,7 +16,7 @@ FUZZ_SECONDS ?= 60
 # Debian 12 packages the build, the tests and the demo need.
 PACKAGES := cmake make g++ pkg-config libvulkan-dev libvulkan-volk-dev glslc libshaderc-dev \
 	libglm-dev mesa-vulkan-drivers vulkan-validationlayers libcli11-dev nlohmann-json3-dev \
-	libtinyobjloader-dev libpng-dev libgtest-dev libembree-dev clang-14 libclang-rt-14-dev \
+	libtinyobjloader-dev libtinygltf-dev libpng-dev libgtest-dev libembree-dev clang-14 libclang-rt-14-dev \
 	libglfw3-dev libimgui-dev libstb-dev xvfb doxygen spirv-tools
 
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)

@@ -1,8 +1,9 @@
 // `hairpipe inspect FILE [--json]`: what is in a .hair model (strands, points, points per strand,
 // bounding box, arrays present, the head sphere fitted to the roots), a TressFX .tfx model (version,
 // strands, vertices per strand, arrays, bounds, head sphere), a TressFX .tfxbone skinning file (bones,
-// strands, influences, weights not summing to 1) or an OBJ scalp (vertices,
-// triangles, dropped degenerate faces, bounding box, fitted sphere). Bad files exit 1 with a message.
+// strands, influences, weights not summing to 1), an OBJ scalp (vertices, triangles, dropped degenerate
+// faces, bounding box, fitted sphere) or a character mesh (.ply, .gltf, .glb, .tfxmesh: vertices, triangles,
+// joints, animation clips, bounding box). Bad files exit 1 with a message.
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
@@ -14,6 +15,7 @@
 #include "engine/core/error.h"
 #include "engine/core/hair/fit_sphere.h"
 #include "engine/core/hair/hair_file.h"
+#include "engine/core/hair/mesh_file.h"
 #include "engine/core/hair/obj_import.h"
 #include "engine/core/hair/tfx_bone_file.h"
 #include "engine/core/hair/tfx_file.h"
@@ -108,6 +110,35 @@ nlohmann::json inspectObj(const std::filesystem::path& path) {
   return j;
 }
 
+nlohmann::json inspectMesh(const std::filesystem::path& path, MeshKind kind) {
+  const CharacterMesh m = loadCharacterMesh(path);
+  std::vector<std::string> joints;
+  for (const Joint& joint : m.skeleton) joints.push_back(joint.name);
+  nlohmann::json clips = nlohmann::json::array();
+  for (const AnimationClip& c : m.animations)
+    clips.push_back({{"name", c.name}, {"duration_s", c.duration}, {"channels", c.channels.size()}});
+  glm::vec3 lo(INFINITY), hi(-INFINITY);
+  for (const auto& p : m.positions) lo = glm::min(lo, p), hi = glm::max(hi, p);
+  return {{"file", path.string()}, {"format", "mesh"}, {"kind", meshKindName(kind)}, {"vertices", m.vertexCount()},
+          {"triangles", m.triangleCount()}, {"dropped_degenerate_triangles", m.droppedDegenerateTriangles},
+          {"skinned", m.skinned()}, {"joints", joints.size()}, {"joint_names", joints}, {"animations", clips},
+          {"bbox", {{"min", vec(lo)}, {"max", vec(hi)}}}};
+}
+
+void printMesh(const nlohmann::json& j) {
+  std::cout << j["kind"].get<std::string>() << " mesh: " << j["vertices"] << " vertices, " << j["triangles"]
+            << " triangles (" << j["dropped_degenerate_triangles"] << " degenerate dropped), "
+            << (j["skinned"].get<bool>() ? "skinned" : "rigid") << ", " << j["joints"] << " joints\n";
+  if (!j["joint_names"].empty()) {
+    std::cout << "joints:";
+    for (const auto& n : j["joint_names"]) std::cout << " " << n.get<std::string>();
+    std::cout << "\n";
+  }
+  for (const auto& c : j["animations"])
+    std::cout << "animation '" << c["name"].get<std::string>() << "': " << c["duration_s"].get<double>() << " s, "
+              << c["channels"] << " channels\n";
+}
+
 std::string text3(const nlohmann::json& v) {
   char buf[128];
   std::snprintf(buf, sizeof buf, "(%.6g, %.6g, %.6g)", v[0].get<double>(), v[1].get<double>(), v[2].get<double>());
@@ -116,6 +147,11 @@ std::string text3(const nlohmann::json& v) {
 
 void printText(const nlohmann::json& j) {
   std::cout << "file: " << j["file"].get<std::string>() << "\n";
+  if (j["format"] == "mesh") {
+    printMesh(j);
+    std::cout << "bbox: min " << text3(j["bbox"]["min"]) << " max " << text3(j["bbox"]["max"]) << "\n";
+    return;
+  }
   if (j["format"] == "tfxbone") {
     std::cout << "TressFX skinning: " << j["bones"] << " bones, " << j["strands"] << " strands, up to "
               << j["most_influences_per_strand"] << " influences a strand, "
@@ -153,7 +189,8 @@ void run(const InspectOptions& o) {
   else if (ext == ".tfx") j = inspectTfx(path);
   else if (ext == ".tfxbone") j = inspectTfxBone(path);
   else if (ext == ".obj") j = inspectObj(path);
-  else throw hp::Error(o.file + ": unknown file type (expected .hair, .tfx, .tfxbone or .obj)");
+  else if (const auto kind = meshKindOf(path)) j = inspectMesh(path, *kind);
+  else throw hp::Error(o.file + ": unknown file type (expected .hair, .tfx, .tfxbone, .obj, .ply, .gltf, .glb or .tfxmesh)");
   if (o.json) std::cout << j.dump(2) << "\n";
   else printText(j);
 }
@@ -161,8 +198,9 @@ void run(const InspectOptions& o) {
 void setup(CLI::App& app) {
   auto opts = std::make_shared<InspectOptions>();
   auto* cmd = app.add_subcommand("inspect",
-                                 "Describe a .hair or TressFX .tfx model, a TressFX .tfxbone skinning file or an OBJ scalp");
-  cmd->add_option("file", opts->file, "a .hair, .tfx, .tfxbone or .obj file")->required();
+                                 "Describe a .hair or TressFX .tfx model, a TressFX .tfxbone skinning file, an OBJ scalp or a "
+                                 "character mesh (.ply, .gltf, .glb, .tfxmesh)");
+  cmd->add_option("file", opts->file, "a .hair, .tfx, .tfxbone, .obj, .ply, .gltf, .glb or .tfxmesh file")->required();
   cmd->add_flag("--json", opts->json, "print JSON instead of text");
   cmd->callback([opts] { run(*opts); });
 }

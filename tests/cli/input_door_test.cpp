@@ -11,7 +11,11 @@
 
 #include "engine/core/error.h"
 #include "engine/core/hair/hair_file.h"
+#include "engine/core/hair/gltf_mesh.h"
 #include "engine/core/hair/obj_import.h"
+#include "engine/core/hair/ply_file.h"
+#include "engine/core/hair/tfx_bone_file.h"
+#include "engine/core/hair/tfx_mesh_file.h"
 #include "engine/core/hair/tfx_file.h"
 #include "samples/tools/frame_export.h"
 #include "samples/tools/host/scene_file.h"
@@ -31,6 +35,10 @@ const std::vector<Reader> kReaders = {
     {".hair", [](const auto& p) { (void)hp::readHairFile(p); }},
     {".tfx", [](const auto& p) { (void)hp::readTfxFile(p); }},
     {"OBJ scalp", [](const auto& p) { (void)hp::loadObjScalp(p); }},
+    {".tfxbone", [](const auto& p) { (void)hp::readTfxBoneFile(p); }},
+    {"PLY mesh", [](const auto& p) { (void)hp::readPlyFile(p); }},
+    {"glTF mesh", [](const auto& p) { (void)hp::readGltfFile(p); }},
+    {".tfxmesh", [](const auto& p) { (void)hp::readTfxMeshFile(p); }},
     {"scene JSON", [](const auto& p) { (void)hp::loadSceneFile(p); }},
     {"PFM", [](const auto& p) { (void)hp::readPfm(p); }},
     {"PNG", [](const auto& p) { (void)hp::readPngRgba(p); }},

@@ -12,6 +12,9 @@
 #include "engine/core/hair/hair_import.h"
 #include "samples/tools/host/model_guess.h"
 #include "samples/tools/render_job.h"
+#include "engine/core/hair/scene.h"
+#include "tests/hair/gltf_test_file.h"
+#include "tests/hair/hair_test_util.h"
 #include "tests/support/vk_fixture.h"
 
 using namespace hp;
@@ -146,6 +149,33 @@ TEST_F(VulkanTest, AMohawkWithoutAMeshShowsItsHair) {
     std::cout << (given ? "head given" : "no head") << ": hair covers " << fraction << " of the frame\n";
     EXPECT_GT(fraction, 0.03) << (given ? "head given" : "no head");
   }
+}
+
+// With a character mesh (a 9 cm sphere .glb beside the .hair, as a scene gives it) the mesh is drawn as the
+// head and is the only collider (no fitted sphere), every root binds to it within 4 mm (the uneven scalp's
+// 3 mm plus the facets' sag), and the mohawk's hair is in view: 0.077 of the frame on lavapipe.
+TEST_F(VulkanTest, AMohawkOnASphereMeshShowsItsHair) {
+  const test::TempDir dir;
+  writeHairFile(dir / "mohawk.hair", mohawk());
+  test::writeBytes(dir / "head.glb", test::glbBytes(test::uvSphere(0.09f)));
+  Scene scene;
+  scene.model.kind = ModelSpec::Kind::Hair;
+  scene.model.path = dir / "mohawk.hair";
+  scene.mesh = CharacterMeshSpec{dir / "head.glb"};
+  const HairAsset asset = buildSceneAsset(scene);
+  ASSERT_TRUE(asset.character);
+  EXPECT_EQ(asset.head.positions.size(), asset.character->positions.size());
+  EXPECT_TRUE(asset.colliders.empty());
+  EXPECT_FALSE(asset.fittedCollider);
+  ASSERT_TRUE(asset.sdf);
+  EXPECT_LT(asset.sdf->sample(glm::vec3(0.0f)), -0.08f);  // the sphere's inside
+  EXPECT_EQ(asset.rootBindings.farRoots, 0u);
+  EXPECT_LT(asset.rootBindings.maxDistance, 0.004f);
+  RenderRequest r = coverageRequest();
+  fitCameraToPoints(r.scene.camera, asset.guides.positions);
+  const double fraction = hairAlphaCoverage(renderStill(*ctx, asset, r));
+  std::cout << "mesh given: hair covers " << fraction << " of the frame\n";
+  EXPECT_GT(fraction, 0.03);
 }
 
 namespace {

@@ -24,7 +24,7 @@ const char* meshKindName(MeshKind kind) {
     case MeshKind::Obj: return "OBJ";
     case MeshKind::Ply: return "PLY";
     case MeshKind::Gltf: return "glTF";
-    case MeshKind::TfxMesh: return "TressFX mesh";
+    case MeshKind::TfxMesh: return "TressFX";
   }
   return "?";
 }
