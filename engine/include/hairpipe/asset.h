@@ -3,7 +3,8 @@
 // scalp triangles that interpolate render strands between guides, the colliders and distance field the
 // hair stays outside of, and the head mesh drawn with it. Immutable once made; an Asset is a shared
 // handle, cheap to copy, and one asset may back any number of instances on any number of renderers.
-// Made by loadAsset (a .hair, TressFX .tfx or scalp .obj file) or defaultHeadAsset (the procedural head).
+// Made by loadAsset (a .hair, TressFX .tfx or scalp .obj file, with a character mesh if given) or
+// defaultHeadAsset (the procedural head).
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -37,6 +38,21 @@ struct AssetSource {
   Vec3 translation{};        // after scale and rotation
   bool keepStrands = false;  // .hair/.tfx: keep each strand's own points instead of resampling to guides
   Density density;
+  // A character mesh for the model (.obj, .ply, .gltf, .glb or TressFX .tfxmesh; "" none), in the model's units
+  // and axes (scale, up and translation apply to it too): drawn as the head, the distance grid the hair
+  // collides with (instead of a sphere fitted to the roots), and the surface the guides' roots bind to.
+  std::string mesh;
+  float meshCell = 0.0f;  // its distance grid's spacing (scene units); 0: 1/128 of the mesh's longest side
+};
+
+// A character mesh as loaded (AssetSource::mesh) and how the asset's guide roots bound to it: each to its
+// nearest triangle; roots farther than farDistance (2% of the mesh's diagonal) are counted, not moved.
+struct CharacterInfo {
+  std::uint32_t vertices = 0, triangles = 0;
+  std::vector<std::string> jointNames;  // the skeleton (empty: a rigid mesh)
+  std::vector<std::string> clipNames;   // its animation clips (glTF)
+  std::uint32_t farRoots = 0;
+  float farDistance = 0.0f, meanRootDistance = 0.0f, maxRootDistance = 0.0f;
 };
 
 class Asset {
@@ -48,6 +64,8 @@ class Asset {
   std::uint32_t headTriangleCount() const noexcept;
   Result<std::vector<Vec3>> guideRoots() const noexcept;  // head space, one per guide (for skinning weights)
   const char* name() const noexcept;
+  // The character mesh the asset was loaded with; fails when it has none.
+  Result<CharacterInfo> character() const noexcept;
   // The same guides and head with another density of render strands.
   Result<Asset> withDensity(const Density& density) const noexcept;
 

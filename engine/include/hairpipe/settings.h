@@ -144,6 +144,23 @@ struct TfxBoneSkinning {
 };
 Result<TfxBoneSkinning> loadTfxBoneSkinning(const std::string& path, std::uint32_t guideCount) noexcept;
 
+class Asset;
+// The skinning of an asset's guides from its skinned character mesh (AssetSource::mesh: a glTF skin or a
+// .tfxmesh's weights): each root takes the weights of the triangle it is bound to, blended by its
+// barycentric coordinates (the four heaviest joints, normalised), as a TressFX exporter weights a strand by
+// the mesh where it grows. A root then moves exactly with a rigidly weighted region, and with a blended one
+// as linear blend skinning of the root itself (within the triangle's own blending error). boneNames: the
+// mesh's joints; bones index them. For ScalpInput::skin (Kind::Bones). Fails without a skinned mesh.
+struct MeshSkinning {
+  std::vector<std::string> boneNames;
+  std::vector<SkinWeights> skin;
+};
+Result<MeshSkinning> meshSkinning(const Asset& asset) noexcept;
+// The skinned mesh's bones posed by its animation clip `clip` at `seconds` (clamped to the clip): per bone
+// the head-space matrix from the bind pose to the pose (the identity for every bone at rest). Instance::setBones
+// takes headToWorld times each. Fails naming the clips there are when none is called `clip`.
+Result<std::vector<Mat4>> meshClipPose(const Asset& asset, const std::string& clip, float seconds) noexcept;
+
 // Where the guides' roots come from each frame.
 struct ScalpInput {
   enum class Kind {
