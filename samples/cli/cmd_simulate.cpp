@@ -94,6 +94,11 @@ nlohmann::json simulateReport(const hp::vk::Context& ctx, const hp::SimulatePass
                 : hp::LayerThickness{};
   report["grid"] = gridReport(ctx, pass, driver);
   report["interaction"] = interactionReport(pass, driver, positions, previous);
+  if (asset.character) {
+    const hp::MeshPenetration pen = hp::meshPenetration(positions, pass.particlesPerGuide(), *asset.character, driver.head());
+    report["mesh_penetration"] = {{"deepest", pen.deepest}, {"min_clearance", pen.minClearance},
+                                  {"particles_inside", pen.inside}, {"particles", pen.particles}};
+  }
   report["layer_thickness"] = layer.guides ? nlohmann::json{{"mean", layer.mean}, {"p90", layer.p90}, {"guides", layer.guides}}
                                            : nlohmann::json(nullptr);
   return report;
@@ -120,6 +125,11 @@ void printReport(const nlohmann::json& r) {
     std::cout << "  hair grid               peak density " << grid["peak_density"].get<double>() << " (target "
               << grid["volume_target"].get<double>() << "), " << grid["gpu_ms_per_frame_median"].get<double>()
               << " gpu ms/frame\n";
+  if (r.contains("mesh_penetration")) {
+    const auto& m = r["mesh_penetration"];
+    std::cout << "  character mesh          " << m["particles_inside"] << " of " << m["particles"]
+              << " particles inside, deepest " << m["deepest"].get<double>() << "\n";
+  }
   const auto& layer = r["layer_thickness"];
   if (!layer.is_null())
     std::cout << "  layer thickness         mean " << layer["mean"].get<double>() << ", 90th percentile "

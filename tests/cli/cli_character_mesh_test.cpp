@@ -62,6 +62,20 @@ TEST(CliCharacterMesh, ARenderWithAMeshReportsItsRootBinding) {
   EXPECT_TRUE(std::filesystem::exists(png));
 }
 
+// simulate --json says how deep the hair got into the mesh: the crown strands hang outside the sphere.
+TEST(CliCharacterMesh, SimulateReportsThePenetrationIntoTheMesh) {
+  const Character c = centimetreCharacter();
+  const auto r = runCli({"simulate", "--model", c.model.string(), "--mesh", c.mesh.string(), "--frames", "30",
+                         "--animate", "shake", "--json"});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  ASSERT_TRUE(j.contains("mesh_penetration")) << r.out;
+  const auto& m = j["mesh_penetration"];
+  EXPECT_EQ(m["particles"], 200 * 6);  // the free particles of 200 guides of 7
+  EXPECT_LT(m["deepest"].get<double>(), 0.002) << r.out;  // the pearl radius keeps them out; 2 mm of grid error allowed
+  EXPECT_GT(m["min_clearance"].get<double>(), -0.002);
+}
+
 TEST(CliCharacterMesh, InspectDescribesAMesh) {
   const Character c = centimetreCharacter();
   const auto r = runCli({"inspect", c.mesh.string(), "--json"});

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include "engine/core/hair/root_binding.h"
+
 namespace hp {
 namespace {
 bool finite(const glm::vec4& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); }
@@ -39,6 +41,26 @@ SimStats computeSimStats(std::span<const glm::vec4> positions, std::span<const g
   }
   if (!std::isfinite(s.minColliderClearance)) s.minColliderClearance = 0.0;
   return s;
+}
+
+MeshPenetration meshPenetration(std::span<const glm::vec4> positions, std::uint32_t particlesPerGuide,
+                                const CharacterMesh& mesh, const glm::mat4& head) {
+  MeshPenetration out;
+  if (particlesPerGuide == 0) return out;
+  const glm::mat4 toHead = glm::inverse(head);
+  std::vector<glm::vec3> points;
+  for (std::size_t i = 0; i < positions.size(); ++i)
+    if (i % particlesPerGuide != 0 && finite(positions[i])) points.push_back(glm::vec3(toHead * glm::vec4(glm::vec3(positions[i]), 1.0f)));
+  if (points.empty()) return out;
+  const RootBindings near = bindRoots(points, mesh.positions, mesh.triangles, 0.0f);
+  out.particles = points.size();
+  out.minClearance = std::numeric_limits<double>::infinity();
+  for (const RootBinding& b : near.roots) {
+    const double signedDistance = b.offset < 0.0f ? -double(b.distance) : double(b.distance);
+    out.minClearance = std::min(out.minClearance, signedDistance);
+    if (signedDistance < 0.0) ++out.inside, out.deepest = std::max(out.deepest, -signedDistance);
+  }
+  return out;
 }
 
 LayerThickness hairLayerThickness(std::span<const glm::vec4> positions, std::uint32_t particlesPerGuide,

@@ -7,6 +7,7 @@
 #include <span>
 #include <vector>
 
+#include "engine/core/hair/character_mesh.h"
 #include "engine/core/hair/collider.h"
 #include "engine/core/hair/sdf_grid.h"
 
@@ -20,6 +21,17 @@ struct LayerThickness {
 };
 LayerThickness hairLayerThickness(std::span<const glm::vec4> positions, std::uint32_t particlesPerGuide,
                                   const SdfGrid& sdf, const glm::mat4& head);
+
+// How deep the hair is inside a character's mesh: per free particle (moved into head space by
+// inverse(head)) its distance to the nearest triangle, negative where it lies behind that triangle's face.
+struct MeshPenetration {
+  double deepest = 0.0;        // the largest depth inside the mesh (0: none inside)
+  double minClearance = 0.0;   // the smallest signed distance (negative: inside)
+  std::size_t inside = 0;      // free particles inside
+  std::size_t particles = 0;   // free particles with finite positions
+};
+MeshPenetration meshPenetration(std::span<const glm::vec4> positions, std::uint32_t particlesPerGuide,
+                                const CharacterMesh& mesh, const glm::mat4& head);
 
 struct SimStats {
   double maxLengthError = 0.0;        // max over segments of |len - rest| / rest
