@@ -1,5 +1,7 @@
 #include "compute/renderer/hair_instance.h"
 
+#include "engine/vk/barriers.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -196,5 +198,21 @@ void HairInstance::setStrands(const InterpolationTopology& topology, const compu
     settings_ = next;
   });
   renderer_.instanceChanged(*this);  // a compute raster target reads the old strand buffers
+}
+}  // namespace hp
+
+namespace hp {
+void HairInstance::recordCharacterCopies(const vk::Context& ctx, VkCommandBuffer cmd) const {
+  const CharacterPass* character = simulate_.character();
+  if (!character || !simulate_.characterPosed() || !head_ || head_->empty()) return;
+  const VkDeviceSize bytes = VkDeviceSize(character->vertexCount()) * sizeof(glm::vec4);
+  const VkBufferCopy region{0, 0, bytes};
+  // The last frame's head draws (the view, the shadow maps' head depth, the bounce map) read these buffers.
+  vk::memoryBarrier(ctx, cmd, vk::BufferUse::GraphicsRead, vk::BufferUse::TransferDst);
+  const auto& fn = ctx.fn();
+  fn.vkCmdCopyBuffer(cmd, character->posedPositions().handle(), head_->positions().handle(), 1, &region);
+  fn.vkCmdCopyBuffer(cmd, character->posedNormals().handle(), head_->normals().handle(), 1, &region);
+  fn.vkCmdCopyBuffer(cmd, character->posedPositions().handle(), geometry_->opacity.headPositions().handle(), 1, &region);
+  vk::memoryBarrier(ctx, cmd, vk::BufferUse::TransferDst, vk::BufferUse::GraphicsRead);
 }
 }  // namespace hp

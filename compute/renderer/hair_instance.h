@@ -48,6 +48,9 @@ class HairInstance {
     simulate_.setColliders(spheres, capsules);
   }
   void setBones(std::span<const glm::mat4> bones) { simulate_.setBones(bones); }
+  // A skinned character's pose for the next frame (SimulatePass::setCharacterPose): the collision grid is
+  // rebuilt from it and the drawn head (the character) takes it.
+  void setCharacterPose(std::span<const glm::mat4> bones) { simulate_.setCharacterPose(bones); }
   // Before the first frame, or for tables the Renderer has cached: applied at once (uploads batched as
   // withUploads says). Otherwise the tables are built on a worker thread and the instance draws its current
   // material until a recordUpdate or recordShadows finds them done (materialPending()); a later
@@ -111,6 +114,8 @@ class HairInstance {
   // runs inside the change's upload batch: in the frame loop its uploads go into the next frame's commands.
   using TexturesMaker = std::function<std::shared_ptr<render::MarschnerTextures>()>;
   void applyMaterial(const TexturesMaker& make, const HairMaterial& material, LutMode mode);
+  // After a frame's update that posed the character: its posed vertices into the head draws' buffers.
+  void recordCharacterCopies(const vk::Context& ctx, VkCommandBuffer cmd) const;
   // A worker's tables, once done: uploaded and applied (Renderer::applyReadyMaterials).
   void applyReadyMaterial();
   // A view of `frame` draws `fraction` (the shadows of the next frame use the largest of a frame's).

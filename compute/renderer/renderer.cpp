@@ -209,7 +209,10 @@ void Renderer::recordUpdate(VkCommandBuffer cmd, std::uint64_t frame, std::span<
     work.push_back({&i->simulate_, i->motion_, &i->geometry_->tessellate, &i->geometry_->interpolate,
                     &i->geometry_->buffers, i->geometry_->previousKept});
   recordUpdatePasses(ctx_, cmd, work, profiler);
-  for (HairInstance* i : instances) i->geometry_->previousKept = i->geometry_->buffers.keepsPrevious();
+  for (HairInstance* i : instances) {
+    i->geometry_->previousKept = i->geometry_->buffers.keepsPrevious();
+    i->recordCharacterCopies(ctx_, cmd);
+  }
 }
 
 void Renderer::recordShadows(VkCommandBuffer cmd, std::uint64_t frame, std::span<const LightSpec> lights,

@@ -52,6 +52,8 @@ class OpacityPass {
   // The head's back faces into ShadowMaps' head depth map (between beginHeadRendering and endRendering).
   void recordHeadDepth(VkCommandBuffer cmd, const glm::mat4& headToLightClip) const;
   HeadSphere headSphere(const glm::mat4& headToWorld) const;  // bounding sphere in world space
+  // The head's positions as the head draws here read them (vec4 per vertex; a posed character copies into it).
+  const vk::Buffer& headPositions() const { return headPositions_; }
 
  private:
   void uploadHead(const HeadMesh& head);

@@ -29,7 +29,7 @@ SdfBuffer::SdfBuffer(const vk::Context& ctx, const std::shared_ptr<const SdfGrid
     throw Error("simulation: the distance grid needs " + std::to_string(bytes) +
                 " bytes, past this device's maxStorageBufferRange of " +
                 std::to_string(ctx.properties().limits.maxStorageBufferRange) + " (use a larger cell)");
-  buffer_ = vk::Buffer(ctx, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+  buffer_ = vk::Buffer(ctx, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
                        vk::MemoryKind::DeviceLocal, "distance grid");
   vk::upload<float>(ctx, buffer_, packed, vk::BufferUse::ComputeRead);
 }

@@ -82,7 +82,17 @@ SimulatePass::SimulatePass(const vk::Context& ctx, const HairAsset& asset, const
   pipeline_ = vk::makeComputePipeline(ctx, library, "simulate.comp", gpu::SIM_WORKGROUP_SIZE, {set_.layout()}, 0, "simulate",
                                   {particlesPerGuide_});
   vk::upload<glm::vec4>(ctx, restBuffer_, rest_, vk::BufferUse::ComputeRead);
+  if (asset.character && asset.character->skinned() && asset.characterCollides) {
+    const bool scalp = asset.head.scalp.size() == asset.character->positions.size();
+    character_ = std::make_unique<CharacterPass>(ctx, *asset.character, scalp ? std::span<const float>(asset.head.scalp)
+                                                                                : std::span<const float>(), sdf_, library);
+  }
   reset(initialHead);
+}
+
+void SimulatePass::setCharacterPose(std::span<const glm::mat4> bones) {
+  if (!character_) throw Error("simulation: the asset has no skinned character mesh it collides with to pose");
+  character_->setPose(bones);
 }
 
 void SimulatePass::setParams(const SimulationParams& params) {
@@ -160,6 +170,11 @@ gpu::SimFrame SimulatePass::frameConstants(const HeadMotion& motion, bool gridAc
 void SimulatePass::record(VkCommandBuffer cmd, const HeadMotion& motion, vk::GpuProfiler* profiler) {
   // The grid holds the hair where it is now; a teleport frame carries it elsewhere first, so it sits out.
   const bool gridActs = params_.gridActs() && !motion.teleport;
+  if (character_) {
+    if (profiler) profiler->begin(cmd, "character");
+    characterPosed_ = character_->record(cmd);
+    if (profiler) profiler->end(cmd);
+  }
   if (gridActs) {
     if (profiler) profiler->begin(cmd, "simulate grid");
     grid_->record(cmd, glm::inverse(motion.from), params_.dt / params_.substeps, params_.maxSpeed, params_.volumeTarget);

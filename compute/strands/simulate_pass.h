@@ -3,7 +3,8 @@
 // (positions, previous, rest; layout in shaders/shared/simulate.h), its frame uniform block, pipeline
 // and descriptor set. record() writes this frame's constants into the command buffer and dispatches
 // one invocation per guide; nothing is read back. positions() is what tessellation reads. The asset's
-// distance grid (if any) is a separate read-only binding (SdfBuffer), uploaded once. The hair grid
+// distance grid (if any) is a separate read-only binding (SdfBuffer), uploaded once, and rebuilt on the device
+// before the simulation on the frames a skinned character collider is given a pose (CharacterPass). The hair grid
 // (HairGridPass, docs/THEORY.md §2.7) is built at construction with params.gridResolution, which cannot change
 // later; record() rebuilds it from the particles before the simulation whenever the params make it act
 // (volume or friction above 0), except on a teleport frame.
@@ -14,6 +15,7 @@
 #include <optional>
 #include <span>
 
+#include "compute/strands/character_pass.h"
 #include "compute/strands/hair_grid_pass.h"
 #include "compute/strands/sdf_buffer.h"
 #include "engine/core/hair/hair_asset.h"
@@ -49,6 +51,13 @@ class SimulatePass {
   void setColliders(std::span<const SphereCollider> spheres, std::span<const CapsuleCollider> capsules = {});
   // Scalp input Bones: the bone matrices at the end of the next recorded frame (ScalpState::setBones).
   void setBones(std::span<const glm::mat4> bones) { scalp_.setBones(bones); }
+  // A skinned character the hair collides with (HairAsset::characterCollides): its pose for the next recorded
+  // frame (one head-space matrix per joint), which record() skins and rebuilds the distance grid from on the
+  // device (CharacterPass). Throws hp::Error when the asset has none or the pose does not fit it.
+  void setCharacterPose(std::span<const glm::mat4> bones);
+  // The character pass, or null; characterPosed(): whether the last record() posed it.
+  const CharacterPass* character() const { return character_.get(); }
+  bool characterPosed() const { return characterPosed_; }
   const SimulationParams& params() const { return params_; }
   // Puts every guide back in its rest pose at `head` (one-shot upload, outside the frame loop).
   void reset(const glm::mat4& head);
@@ -82,6 +91,8 @@ class SimulatePass {
   vk::Buffer restBuffer_;
   vk::Buffer frame_;
   SdfBuffer sdf_;
+  std::unique_ptr<CharacterPass> character_;
+  bool characterPosed_ = false;
   std::optional<HairGridPass> grid_;
   vk::DescriptorSet set_;
   std::shared_ptr<const vk::ComputePipeline> pipeline_;

@@ -94,8 +94,12 @@ nlohmann::json simulateReport(const hp::vk::Context& ctx, const hp::SimulatePass
                 : hp::LayerThickness{};
   report["grid"] = gridReport(ctx, pass, driver);
   report["interaction"] = interactionReport(pass, driver, positions, previous);
+  if (pass.character()) report["character_gpu_ms_per_frame_median"] = driver.medianCharacterMilliseconds();
   if (asset.character) {
-    const hp::MeshPenetration pen = hp::meshPenetration(positions, pass.particlesPerGuide(), *asset.character, driver.head());
+    const hp::CharacterMesh& m = *asset.character;
+    std::vector<glm::vec3> posed = driver.characterVertices();  // as the last frame left it
+    if (posed.empty()) posed = m.positions;
+    const hp::MeshPenetration pen = hp::meshPenetration(positions, pass.particlesPerGuide(), posed, m.triangles, driver.head());
     report["mesh_penetration"] = {{"deepest", pen.deepest}, {"min_clearance", pen.minClearance},
                                   {"particles_inside", pen.inside}, {"particles", pen.particles}};
   }
@@ -140,12 +144,15 @@ void runSimulate(const SimulateOptions& opt) {
   if (opt.frames == 0 || opt.frames > 1000000) throw hp::Error("--frames must be in [1, 1000000]");
   hp::Scene scene = hp::cli::loadScene(opt.scene);
   hp::SimulationParams params = simulationParams(opt, scene.simulation);
-  hp::HeadAnimation animation = hp::parseHeadAnimation(opt.animate);
+  const std::optional<std::string> clipName = hp::clipOfAnimate(opt.animate);
+  hp::HeadAnimation animation = clipName ? hp::HeadAnimation::None : hp::parseHeadAnimation(opt.animate);
   if (!opt.out.empty()) hp::cli::prepareOutputFile({"--out", opt.out}, hp::cli::sceneInputs(opt.scene, scene));
   hp::HairAsset asset = hp::buildSceneAsset(scene);
   auto ctx = hp::cli::createContext(opt.scene);
-  hp::SimulatePass pass(*ctx, asset, params);
+  const hp::CharacterClip clip = clipName ? hp::characterClip(asset, *clipName) : hp::CharacterClip{};
+  hp::SimulatePass pass(*ctx, asset, params, glm::mat4(1.0f), nullptr, clip.clip ? hp::characterScalp(asset) : hp::ScalpInput{});
   hp::SimulationDriver driver(*ctx, pass, animation, hp::assetHeadRadius(asset));
+  if (clip.clip) driver.setCharacterClip(clip);
   hp::ProgressReporter progress("hairpipe simulate", opt.frames);
   driver.runFrames(opt.frames, [&](std::uint32_t done) { progress.update(done); });
   progress.finish();
@@ -155,7 +162,8 @@ void runSimulate(const SimulateOptions& opt) {
     hp::writeHairFile(opt.out, hp::guidesToHair(finalGuides(positions, pass.particlesPerGuide()),
                                                 "hairpipe simulate: final guides"));
   hp::cli::checkValidation(*ctx);
-  const nlohmann::json report = simulateReport(*ctx, pass, driver, asset, positions, previous, opt.frames, animation);
+  nlohmann::json report = simulateReport(*ctx, pass, driver, asset, positions, previous, opt.frames, animation);
+  if (clip.clip) report["animation"] = opt.animate;
   if (opt.json) std::cout << report.dump(2) << "\n";
   else printReport(report);
 }
@@ -169,7 +177,7 @@ void setupSimulate(CLI::App& app) {
   cmd->add_option("--iterations", opt->iterations, "Constraint iterations per substep, 1..1000");
   cmd->add_option("--substeps", opt->substeps, "Substeps per frame, 1..64");
   hp::cli::addHairGridOptions(*cmd, opt->grid);
-  cmd->add_option("--animate", opt->animate, "Head motion: none, nod, turn, shake or teleport");
+  cmd->add_option("--animate", opt->animate, "Head motion: none, nod, turn, shake or teleport, or clip:NAME (an animation clip of the --mesh character: its body is posed and collided with, the roots follow its bones)");
   cmd->add_option("--out", opt->out, "Write the final guides as .hair");
   cmd->add_flag("--json", opt->json, "Print JSON");
   cmd->callback([opt] { runSimulate(*opt); });

@@ -4,6 +4,7 @@
 #include <iostream>
 
 #include "engine/core/error.h"
+#include "samples/tools/character_clip.h"
 #include "engine/core/hair/input_file.h"
 #include "samples/tools/host/camera_fit.h"
 #include "samples/tools/host/light_option.h"
@@ -151,7 +152,8 @@ hp::RenderRequest makeRenderRequest(const FrameOptions& o, const CLI::App& cmd) 
       r.scene.render.height > 16384)
     throw hp::Error("--width/--height must be in [1, 16384]");
   r.settleFrames = o.frames;
-  r.animation = hp::parseHeadAnimation(o.animate);
+  if (const auto clip = hp::clipOfAnimate(o.animate)) r.characterClip = *clip;
+  else r.animation = hp::parseHeadAnimation(o.animate);
   r.lutMode = hp::parseLutMode(o.lutMode);
   r.lines = o.lines;
   r.guidesOnly = o.guidesOnly;
@@ -259,7 +261,8 @@ void addFrameOptions(CLI::App& cmd, FrameOptions& o) {
   cmd.add_option("--spot-range", o.spotRange, "Spot inverse-square falloff, 1 at this distance (default 0: none)");
   cmd.add_option("--camera-orbit", o.orbit, "Camera orbit around the head in degrees (0: from the front)");
   cmd.add_option("--lut-mode", o.lutMode, "fibre model: physical (energy-conserving, default), or the paper's model as float, paper or direct");
-  cmd.add_option("--animate", o.animate, "Head motion while settling: none, nod, turn, shake, teleport");
+  cmd.add_option("--animate", o.animate, "Head motion while settling: none, nod, turn, shake, teleport, or clip:NAME (an animation clip of the --mesh "
+                 "character: its body is posed, collided with and drawn, and the roots follow its bones)");
   cmd.add_option("--exposure", o.exposure, "Exposure multiplier before tonemapping (default 1)");
   cmd.add_option("--ambient", o.ambient,
                  "Ambient fill light in [0, 10] (default 0.06; the reference's uniform sky radiance)");

@@ -22,6 +22,7 @@ InstanceSettings instanceSettings(const HairSystemSettings& s) {
   i.drawHead = s.drawHead;
   i.lod = s.lod;
   i.groom = s.groom;
+  i.scalp = s.scalp;
   return i;
 }
 

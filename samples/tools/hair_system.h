@@ -40,6 +40,7 @@ struct HairSystemSettings {
   // path (RenderSpec::raster auto resolves to it for the CLI) needs setRasterTarget/recordRaster/recordComposite.
   RasterMode raster = RasterMode::Graphics;
   compute::RasterSettings rasterSettings;
+  ScalpInput scalp;  // InstanceSettings::scalp (a character clip's Bones)
 };
 
 struct DrawView {

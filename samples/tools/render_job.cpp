@@ -19,10 +19,17 @@ struct RenderSession {
       : request(request),
         raster(motionRaster(request, resolveRasterMode(request.scene.render.raster, ctx.properties().deviceType))),
         renderer(ctx, request.scene.render.width, request.scene.render.height, request.scene.render.msaa, raster),
-        hair(ctx, asset, systemSettings(resolved(request, raster), renderer.formats())),
+        clip(request.characterClip.empty() ? CharacterClip{} : characterClip(asset, request.characterClip)),
+        hair(ctx, asset, withClipScalp(systemSettings(resolved(request, raster), renderer.formats()), asset, clip)),
         driver(ctx, hair.simulation(), request.animation, assetHeadRadius(asset)),
         profiler(ctx, 64, "render frame") {
     renderer.attach(hair);
+    if (clip.clip) driver.setCharacterClip(clip);
+  }
+
+  static HairSystemSettings withClipScalp(HairSystemSettings s, const HairAsset& asset, const CharacterClip& clip) {
+    if (clip.clip) s.scalp = characterScalp(asset);
+    return s;
   }
 
   static RasterMode motionRaster(const RenderRequest& r, RasterMode raster) {
@@ -78,6 +85,7 @@ struct RenderSession {
   const RenderRequest& request;
   RasterMode raster;
   render::OffscreenRenderer renderer;
+  CharacterClip clip;
   HairSystem hair;
   SimulationDriver driver;
   vk::GpuProfiler profiler;

@@ -19,6 +19,7 @@ struct RenderRequest {
   Scene scene;                      // camera, lights, render size, material, simulation, density
   std::uint32_t settleFrames = 90;  // simulated frames before the rendered one
   HeadAnimation animation = HeadAnimation::None;
+  std::string characterClip;  // an animation clip of the asset's skinned character (character_clip.h): "" none
   LutMode lutMode = LutMode::Physical;
   bool lines = false;
   bool guidesOnly = false;

@@ -1,5 +1,7 @@
 #include "samples/tools/simulation_driver.h"
 
+#include "engine/core/hair/skeleton_pose.h"
+
 #include <algorithm>
 #include <string>
 
@@ -25,8 +27,20 @@ HeadMotion SimulationDriver::nextMotion() const {
           headTeleportsBetween(animation_, t0, t1)};
 }
 
+void SimulationDriver::poseFor(const HeadMotion& motion) {
+  if (!clip_.clip) return;
+  posedAt_ = motion.time + pass_.params().dt;
+  poseCharacter(pass_, clip_, posedAt_, motion.to);
+}
+
+std::vector<glm::vec3> SimulationDriver::characterVertices() const {
+  if (!clip_.clip) return {};
+  return skinMesh(*clip_.mesh, characterPose(clip_, posedAt_)).positions;
+}
+
 HeadMotion SimulationDriver::advance() {
   const HeadMotion motion = nextMotion();
+  poseFor(motion);
   ++frame_;
   return motion;
 }
@@ -41,13 +55,16 @@ void SimulationDriver::runFrames(std::uint32_t count, const std::function<void(s
       for (std::uint32_t i = 0; i < batch; ++i) {
         // Each frame reads and writes what the previous one wrote.
         vk::memoryBarrier(ctx_, cmd, vk::BufferUse::ComputeWrite, vk::BufferUse::ComputeWrite);
-        pass_.record(cmd, nextMotion(), timed ? &profiler_ : nullptr);
+        const HeadMotion motion = nextMotion();
+        poseFor(motion);
+        pass_.record(cmd, motion, timed ? &profiler_ : nullptr);
         ++frame_;
       }
     }, "simulate frames");
     if (timed)
       for (const auto& scope : profiler_.results())
-        (scope.name == "simulate grid" ? gridMs_ : frameMs_).push_back(scope.milliseconds);
+        (scope.name == "simulate grid" ? gridMs_ : scope.name == "character" ? characterMs_ : frameMs_)
+            .push_back(scope.milliseconds);
     count -= batch;
     if (progress) progress(total - count);
     if (count > 0) throwIfInterrupted("after " + std::to_string(total - count) + " of " + std::to_string(total) +
@@ -58,6 +75,8 @@ void SimulationDriver::runFrames(std::uint32_t count, const std::function<void(s
 double SimulationDriver::medianFrameMilliseconds() const { return vk::median(frameMs_); }
 
 double SimulationDriver::medianGridMilliseconds() const { return vk::median(gridMs_); }
+
+double SimulationDriver::medianCharacterMilliseconds() const { return vk::median(characterMs_); }
 
 std::vector<glm::vec4> SimulationDriver::readPositions() const {
   return vk::readback<glm::vec4>(ctx_, pass_.positions(), vk::BufferUse::ComputeWrite,

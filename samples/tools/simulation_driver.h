@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "compute/strands/simulate_pass.h"
+#include "samples/tools/character_clip.h"
 #include "samples/tools/host/head_animation.h"
 #include "samples/tools/host/sim_stats.h"
 #include "engine/vk/profiler.h"
@@ -19,6 +20,8 @@ class SimulationDriver {
   SimulationDriver(const vk::Context& ctx, SimulatePass& pass, HeadAnimation animation, float headRadius,
                    Timing timing = Timing::GpuTimestamps);
 
+  // A skinned character's clip poses the character (and the roots, with Bones input) at each frame's end.
+  void setCharacterClip(const CharacterClip& clip) { clip_ = clip; }
   // Simulates `count` frames in submissions of up to 256 frames and waits for them. Appends each
   // frame's GPU ms. With `progress`, submissions are smaller and it is told the frames done after each.
   void runFrames(std::uint32_t count, const std::function<void(std::uint32_t done)>& progress = {});
@@ -27,10 +30,14 @@ class SimulationDriver {
   void clearFrameTimes() {
     frameMs_ = {};
     gridMs_ = {};
+    characterMs_ = {};
   }
   // The simulation pass's GPU ms per frame, and the hair grid's (built before it when it acts; 0 when it never did).
   double medianFrameMilliseconds() const;
   double medianGridMilliseconds() const;
+  double medianCharacterMilliseconds() const;  // the character's skinning and grid (0 when it never ran)
+  // The character's vertices as the last simulated frame posed them (rest without a clip; empty without a character).
+  std::vector<glm::vec3> characterVertices() const;
 
   std::uint32_t frame() const { return frame_; }
   double time() const { return frame_ * pass_.params().dt; }
@@ -56,6 +63,11 @@ class SimulationDriver {
   vk::GpuProfiler profiler_;
   std::vector<double> frameMs_;
   std::vector<double> gridMs_;
+  std::vector<double> characterMs_;
+  CharacterClip clip_;
+  double posedAt_ = 0.0;  // the clip time of the last pose
+  // The clip's pose for the frame `motion` simulates (at its end), when there is a clip.
+  void poseFor(const HeadMotion& motion);
 };
 
 // A head radius for animations and tolerances: the largest collider's, else the roots' extent.

@@ -42,6 +42,7 @@ struct HairAsset {
   // A character mesh given with the model (null: none): drawn as the head, the distance grid the hair
   // collides with (unless the scene gives colliders), and the surface the guides' roots bind to.
   std::shared_ptr<const CharacterMesh> character;
+  bool characterCollides = false;  // `sdf` is the character's grid (no scene colliders replaced it)
   RootBindings rootBindings;  // one per guide on `character` (empty without one)
 };
 }  // namespace hp

@@ -12,6 +12,7 @@
 #include "engine/core/hair/obj_import.h"
 #include "engine/core/hair/scene.h"
 #include "engine/core/hair/sdf_mesh.h"
+#include "engine/core/hair/skeleton_pose.h"
 #include "engine/core/hair/tfx_file.h"
 
 namespace hp {
@@ -86,6 +87,20 @@ struct CharacterParts {
   std::shared_ptr<const SdfGrid> grid;
 };
 
+// How far a skinned mesh's clips take its vertices past its rest box [lo, hi] (each clip at 33 times).
+float clipReach(const CharacterMesh& m, const glm::vec3& lo, const glm::vec3& hi) {
+  float reach = 0.0f;
+  for (const AnimationClip& clip : m.animations)
+    for (int k = 0; k <= 32; ++k) {
+      const SkinnedVertices posed = skinMesh(m, skinningMatrices(m, samplePose(m, clip, clip.duration * float(k) / 32.0f)));
+      for (const glm::vec3& p : posed.positions) {
+        const glm::vec3 out = glm::max(lo - p, p - hi);
+        reach = std::max(reach, std::max(out.x, std::max(out.y, out.z)));
+      }
+    }
+  return reach;
+}
+
 CharacterParts loadCharacter(const Scene& scene) {
   if (scene.model.kind == ModelSpec::Kind::Default)
     throw Error(scene.source + ": a character mesh needs a model file (.hair, .tfx or .obj), not the default head");
@@ -96,8 +111,11 @@ CharacterParts loadCharacter(const Scene& scene) {
   for (const auto& p : m.positions) lo = glm::min(lo, p), hi = glm::max(hi, p);
   const float longest = std::max(hi.x - lo.x, std::max(hi.y - lo.y, hi.z - lo.z));
   const float cell = scene.mesh->cell > 0.0f ? scene.mesh->cell : longest / 128.0f;
+  const float reach = clipReach(m, lo, hi);  // a skinned mesh's clips may take it past its rest box
+  if (!(reach <= 16.0f * longest))
+    throw Error(m.source + ": its animation clips move it more than 16 times its own size from its rest pose");
   try {
-    parts.grid = std::make_shared<SdfGrid>(meshSdf(m.positions, m.triangles, cell));
+    parts.grid = std::make_shared<SdfGrid>(meshSdf(m.positions, m.triangles, cell, 4 + std::uint32_t(std::ceil(reach / cell))));
   } catch (const Error& e) {
     throw Error(m.source + ": its distance grid: " + e.what());
   }
@@ -116,6 +134,7 @@ void attachCharacter(HairAsset& asset, const CharacterParts& character, bool col
     asset.colliders.clear();
     asset.sdf = character.grid;
     asset.fittedCollider = false;
+    asset.characterCollides = true;
   }
   glm::vec3 lo(INFINITY), hi(-INFINITY);
   for (const auto& p : m.positions) lo = glm::min(lo, p), hi = glm::max(hi, p);

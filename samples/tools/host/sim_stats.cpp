@@ -44,7 +44,8 @@ SimStats computeSimStats(std::span<const glm::vec4> positions, std::span<const g
 }
 
 MeshPenetration meshPenetration(std::span<const glm::vec4> positions, std::uint32_t particlesPerGuide,
-                                const CharacterMesh& mesh, const glm::mat4& head) {
+                                std::span<const glm::vec3> vertices, std::span<const glm::uvec3> triangles,
+                                const glm::mat4& head) {
   MeshPenetration out;
   if (particlesPerGuide == 0) return out;
   const glm::mat4 toHead = glm::inverse(head);
@@ -52,7 +53,7 @@ MeshPenetration meshPenetration(std::span<const glm::vec4> positions, std::uint3
   for (std::size_t i = 0; i < positions.size(); ++i)
     if (i % particlesPerGuide != 0 && finite(positions[i])) points.push_back(glm::vec3(toHead * glm::vec4(glm::vec3(positions[i]), 1.0f)));
   if (points.empty()) return out;
-  const RootBindings near = bindRoots(points, mesh.positions, mesh.triangles, 0.0f);
+  const RootBindings near = bindRoots(points, vertices, triangles, 0.0f);
   out.particles = points.size();
   out.minClearance = std::numeric_limits<double>::infinity();
   for (const RootBinding& b : near.roots) {

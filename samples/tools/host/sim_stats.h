@@ -7,7 +7,6 @@
 #include <span>
 #include <vector>
 
-#include "engine/core/hair/character_mesh.h"
 #include "engine/core/hair/collider.h"
 #include "engine/core/hair/sdf_grid.h"
 
@@ -30,8 +29,10 @@ struct MeshPenetration {
   std::size_t inside = 0;      // free particles inside
   std::size_t particles = 0;   // free particles with finite positions
 };
+// `vertices`: the mesh as posed (its rest positions, or a pose's skinMesh).
 MeshPenetration meshPenetration(std::span<const glm::vec4> positions, std::uint32_t particlesPerGuide,
-                                const CharacterMesh& mesh, const glm::mat4& head);
+                                std::span<const glm::vec3> vertices, std::span<const glm::uvec3> triangles,
+                                const glm::mat4& head);
 
 struct SimStats {
   double maxLengthError = 0.0;        // max over segments of |len - rest| / rest
