@@ -72,6 +72,14 @@ Status Instance::setBones(std::span<const Mat4> bones) noexcept {
     implementation(impl_.get()).setBones(m);
   });
 }
+Status Instance::setMeshPose(std::span<const Mat4> bones) noexcept {
+  return guardedStatus("hairpipe::Instance::setMeshPose", [&] {
+    std::vector<glm::mat4> m;
+    m.reserve(bones.size());
+    for (const Mat4& b : bones) m.push_back(convert::mat(b));
+    implementation(impl_.get()).setCharacterPose(m);
+  });
+}
 Status Instance::setMaterial(const Material& material, FibreModel fibre) noexcept {
   return guardedStatus("hairpipe::Instance::setMaterial", [&] {
     implementation(impl_.get()).setMaterial(convert::material(material), convert::fibre(fibre));

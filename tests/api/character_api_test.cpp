@@ -142,7 +142,8 @@ TEST(CharacterApi, BadMeshesAndAssetsWithoutOneFailByMessage) {
   std::filesystem::remove_all(f.dir);
 }
 
-// An instance takes the mesh's skinning as its scalp input and the clip's pose as its bones, under validation.
+// An instance takes the mesh's skinning as its scalp input and the clip's pose as its bones and its mesh's
+// pose, under validation; a pose of the wrong size is refused by message.
 TEST(CharacterApi, AnInstanceTakesTheMeshSkinningAsBones) {
   const Files f = writeFiles();
   const hairpipe::Asset asset = loadCharacter(f);
@@ -164,6 +165,9 @@ TEST(CharacterApi, AnInstanceTakesTheMeshSkinningAsBones) {
     const auto pose = hairpipe::meshClipPose(asset, "nod", 0.25f);
     ASSERT_TRUE(pose.ok());
     EXPECT_TRUE(instance.value().setBones(pose.value()).ok());
+    EXPECT_TRUE(instance.value().setMeshPose(pose.value()).ok());
+    EXPECT_THAT(meshFailureOf(instance.value().setMeshPose(std::span(pose.value()).first(1))),
+                HasSubstr("1 bone matrices for a skeleton of 2"));
   }
   EXPECT_TRUE(ctx.value().waitIdle().ok());
   const auto messages = ctx.value().validationMessages();

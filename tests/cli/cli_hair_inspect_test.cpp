@@ -159,7 +159,7 @@ TEST(CliHairInspect, BadObjAndUnknownTypesExitOne) {
       << r.err;
   r = runCli({"inspect", (dir / "model.fbx").string()});
   EXPECT_EQ(r.exitCode, 1);
-  EXPECT_NE(r.err.find("model.fbx: unknown file type (expected .hair, .tfx, .tfxbone or .obj)"), std::string::npos)
+  EXPECT_NE(r.err.find("model.fbx: unknown file type (expected .hair, .tfx, .tfxbone, .obj, .ply, .gltf, .glb or .tfxmesh)"), std::string::npos)
       << r.err;
   r = runCli({"inspect", (dir / "missing.hair").string()});
   EXPECT_EQ(r.exitCode, 1);

@@ -28,7 +28,7 @@ bool writeWholeFile(std::string* err, const std::string&, const std::vector<unsi
 }
 
 // tinygltf joins the folder and the URI; the result must stay inside the folder.
-bool readWholeFile(std::vector<unsigned char>* out, std::string* err, const std::string& path, void* user) noexcept {
+bool readWholeFile(std::vector<unsigned char>* out, std::string* err, const std::string& path, void* user) {
   try {
     auto& access = *static_cast<FileAccess*>(user);
     const std::filesystem::path p = std::filesystem::path(path).lexically_normal();

@@ -99,6 +99,12 @@ class Instance {
                       std::span<const CapsuleCollider> capsules = {}) noexcept;
   // ScalpInput::Kind::Bones: the bone matrices (head-space rest pose to world) at the end of the next frame.
   Status setBones(std::span<const Mat4> bones) noexcept;
+  // An asset with a skinned character mesh (AssetSource::mesh): its pose at the end of the next frame, one
+  // head-space matrix per joint (bind pose to pose: meshClipPose, or the application's skinning in head space).
+  // The next recordUpdate skins the mesh and rebuilds the distance grid the hair collides with on the device,
+  // and the head recordDraw draws (and the shadows) take the pose. Without a call the last pose stays.
+  // Fails for an asset without a skinned mesh, or one whose collisions scene colliders replaced.
+  Status setMeshPose(std::span<const Mat4> bones) noexcept;
   // A material whose lookup tables the Renderer holds (one an instance uses or used) applies at once.
   // Another one, after the first recorded frame, has its tables built on a worker thread (tens of ms of
   // CPU) while the instance keeps drawing its current material; the first recordUpdate or recordShadows
