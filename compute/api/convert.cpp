@@ -207,7 +207,12 @@ std::vector<hp::CapsuleCollider> capsules(std::span<const CapsuleCollider> c) {
 
 hp::DensityOptions density(const Density& d) {
   hp::DensityOptions h;
-  h.mode = d.mode == Density::Mode::PerTriangle ? hp::DensityOptions::Mode::PerTriangle : hp::DensityOptions::Mode::Total;
+  switch (d.mode) {
+    case Density::Mode::PerTriangle: h.mode = hp::DensityOptions::Mode::PerTriangle; break;
+    case Density::Mode::Total: h.mode = hp::DensityOptions::Mode::Total; break;
+    case Density::Mode::Guides: h.mode = hp::DensityOptions::Mode::Guides; break;
+    case Density::Mode::Auto: h.mode = hp::DensityOptions::Mode::Auto; break;
+  }
   h.strandsPerTriangle = d.strandsPerTriangle;
   h.totalStrands = d.totalStrands;
   h.seed = d.seed;

@@ -137,6 +137,7 @@ hp::RenderRequest makeRenderRequest(const FrameOptions& o, const CLI::App& cmd) 
     r.scene.density.totalStrands = *o.density;
     r.scene.density.validate();
   }
+  if (o.ownStrands) r.scene.density.mode = hp::DensityOptions::Mode::Guides;
   if (o.orbit) {
     if (!std::isfinite(*o.orbit)) throw hp::Error("--camera-orbit must be a finite angle in degrees, got " + std::to_string(*o.orbit));
     r.scene.camera.orbitDeg = *o.orbit;
@@ -250,7 +251,11 @@ void addFrameOptions(CLI::App& cmd, FrameOptions& o) {
                  "Hair drawing: compute (tile rasterizer, analytic coverage), graphics (MSAA ribbons) or auto "
                  "(default: scene, auto = compute)");
   cmd.add_option("--tile-budget", o.tileBudget, "Compute raster: list entries kept per 8x8 tile (default 16384)");
-  cmd.add_option("--density", o.density, "Render strands in total (default: scene, 20000)");
+  auto* density = cmd.add_option("--density", o.density,
+                                 "Render strands in total, interpolated between the guides (default: the scene's; "
+                                 "without one, a model of at least 20000 strands draws its own, else 20000)");
+  cmd.add_flag("--own-strands", o.ownStrands, "Draw the model's own strands: one render strand on every guide")
+      ->excludes(density);
   addLightOption(cmd, o.lights);
   cmd.add_option("--light-dir", o.lightDir, "Direction toward the first light, X,Y,Z (it becomes directional)")
       ->delimiter(',')->expected(3);

@@ -25,6 +25,7 @@ struct FrameOptions {
   HairMaterial material;
   std::uint32_t frames = 90;
   std::optional<std::uint32_t> width, height, msaa, density;
+  bool ownStrands = false;  // one render strand on every guide (--own-strands)
   std::vector<std::string> lights;  // --light SPEC, repeatable (samples/tools/host/light_option.h)
   std::optional<std::vector<float>> lightDir, spot, spotTarget;
   std::optional<float> spotAngle, spotRange;

@@ -66,3 +66,46 @@ TEST(CliRenderModel, AViewWithoutHairIsAnErrorAndWritesNothing) {
                  {{"--units", "cm"}, "--units/--up apply to a --model file"}},
                 png);
 }
+
+// A model of at least 20,000 strands draws its own strands (one render strand on every guide: the dumped roots
+// are the model's roots); a smaller one has 20,000 interpolated unless --own-strands asks for its own.
+TEST(CliRenderModel, AModelWithManyStrandsDrawsItsOwnStrands) {
+  for (const std::uint32_t strands : {20000u, 2000u}) {
+    const auto model = freshTempPath("hairpipe_cli_model_many_" + std::to_string(strands) + ".hair");
+    hp::HairFileData d;
+    d.strandCount = strands;
+    d.defaultSegments = 3;
+    std::vector<glm::vec3> roots;
+    for (std::uint32_t s = 0; s < strands; ++s) {
+      const float a = 2.39996f * float(s), y = 1.0f - 0.6f * float(s) / float(strands), r = std::sqrt(1.0f - y * y);
+      const glm::vec3 n(r * std::cos(a), y, r * std::sin(a));
+      roots.push_back(0.09f * n);
+      for (int k = 0; k < 4; ++k) d.points.push_back(0.09f * n + 0.03f * float(k) * glm::vec3(0.3f * n.x, -1.0f, 0.3f * n.z));
+    }
+    hp::writeHairFile(model, d);
+    for (const bool own : {false, true}) {
+      if (strands == 20000u && own) continue;
+      const auto dump = freshTempPath("hairpipe_cli_model_many.hair.out.hair");
+      std::vector<std::string> args{"render", "--model", model.string(), "--units", "m", "--width", "48", "--height", "36",
+                                    "--frames", "1", "--no-shadows", "--out", freshTempPath("many.png").string(),
+                                    "--dump-strands", dump.string()};
+      if (own) args.push_back("--own-strands");
+      const auto r = runCli(args);
+      ASSERT_EQ(r.exitCode, 0) << r.err;
+      const hp::HairFileData out = hp::readHairFile(dump);
+      const bool ownStrands = strands == 20000u || own;
+      EXPECT_EQ(out.strandCount, ownStrands ? strands : 20000u) << strands << (own ? " --own-strands" : "");
+      if (!ownStrands) continue;
+      // Every dumped root is a model root (a settling frame does not move roots).
+      double worst = 0.0;
+      std::uint32_t offset = 0;
+      for (std::uint32_t s = 0; s < out.strandCount; offset += out.strandPointCount(s), s += 97) {
+        double nearest = 1e30;
+        for (const glm::vec3& root : roots) nearest = std::min(nearest, double(glm::distance(root, out.points[offset])));
+        worst = std::max(worst, nearest);
+        for (std::uint32_t k = s + 1; k < std::min(s + 97, out.strandCount); ++k) offset += out.strandPointCount(k);
+      }
+      EXPECT_LT(worst, 1e-5) << strands;
+    }
+  }
+}

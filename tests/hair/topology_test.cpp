@@ -237,3 +237,48 @@ TEST(TopologyRoots, TriangulatesACapWithoutItsLid) {
 }
 }  // namespace
 }  // namespace hp
+
+namespace hp {
+// Own strands (DensityOptions::Mode::Guides): one render strand on every guide, exactly at its corner of a
+// triangle that has it; a guide in no triangle gets a triangle of its own; any prefix holds an even share of
+// the guides (two halves of the roots); Auto draws own strands from totalStrands guides on.
+TEST(Topology, OwnStrandsLieOnEveryGuideOnce) {
+  std::vector<glm::vec3> roots;
+  for (int i = 0; i < 400; ++i) roots.emplace_back(float(i % 20), float(i / 20), 0.0f);
+  std::vector<glm::uvec3> triangles;
+  for (std::uint32_t y = 0; y + 1 < 20; ++y)
+    for (std::uint32_t x = 0; x + 1 < 10; ++x) {  // the right half of the grid (x >= 10) is in no triangle
+      const std::uint32_t a = y * 20 + x;
+      triangles.emplace_back(a, a + 1, a + 20);
+      triangles.emplace_back(a + 1, a + 21, a + 20);
+    }
+  DensityOptions d;
+  d.mode = DensityOptions::Mode::Guides;
+  const InterpolationTopology t = buildInterpolationTopology(roots, triangles, d);
+  ASSERT_EQ(t.strands.size(), roots.size());
+  std::vector<int> seen(roots.size(), 0);
+  for (const StrandBinding& s : t.strands) {
+    const glm::uvec3 tri = t.triangles[s.triangle];
+    const glm::vec3 at = s.barycentric.x * roots[tri.x] + s.barycentric.y * roots[tri.y] + s.barycentric.z * roots[tri.z];
+    int guide = -1;
+    for (int k = 0; k < 3; ++k)
+      if (s.barycentric[k] == 1.0f) guide = int(tri[k]);
+    ASSERT_GE(guide, 0);
+    EXPECT_EQ(at, roots[std::size_t(guide)]);
+    ++seen[std::size_t(guide)];
+  }
+  EXPECT_EQ(std::count(seen.begin(), seen.end(), 1), 400);
+  EXPECT_GT(t.triangles.size(), triangles.size());  // own triangles for the right half
+  std::uint32_t leftOfFirstHalf = 0;
+  for (std::size_t i = 0; i < 200; ++i) leftOfFirstHalf += t.strands[i].triangle < triangles.size() ? 1u : 0u;
+  EXPECT_NEAR(double(leftOfFirstHalf), 100.0, 25.0);  // about half of the first 200 are in the left half
+  const InterpolationTopology again = buildInterpolationTopology(roots, triangles, d);  // deterministic
+  for (std::size_t i = 0; i < t.strands.size(); ++i) EXPECT_EQ(again.strands[i].triangle, t.strands[i].triangle);
+  d.mode = DensityOptions::Mode::Auto;
+  d.totalStrands = 400;
+  EXPECT_EQ(resolvedMode(d, roots.size()), DensityOptions::Mode::Guides);
+  d.totalStrands = 401;
+  EXPECT_EQ(resolvedMode(d, roots.size()), DensityOptions::Mode::Total);
+  EXPECT_EQ(buildInterpolationTopology(roots, triangles, d).strands.size(), 401u);
+}
+}  // namespace hp

@@ -61,14 +61,50 @@ std::vector<std::uint32_t> strandsPerTriangle(std::span<const glm::vec3> roots,
   return spreadByArea(roots, triangles, density.totalStrands);
 }
 
+DensityOptions::Mode resolvedMode(const DensityOptions& density, std::size_t guides) {
+  if (density.mode != DensityOptions::Mode::Auto) return density.mode;
+  return guides >= density.totalStrands ? DensityOptions::Mode::Guides : DensityOptions::Mode::Total;
+}
+
+namespace {
+// One strand on every guide: at its corner of the first triangle that has it (a triangle of its own added
+// where none does), ordered by a hash so any prefix is an even thinning.
+InterpolationTopology ownStrands(std::size_t guides, std::vector<glm::uvec3> triangles, std::uint32_t seed) {
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> corner(guides, {~0u, 0u});  // (triangle, corner)
+  for (std::uint32_t t = 0; t < triangles.size(); ++t)
+    for (std::uint32_t k = 0; k < 3; ++k)
+      if (corner[triangles[t][k]].first == ~0u) corner[triangles[t][k]] = {t, k};
+  std::vector<std::pair<float, std::uint32_t>> order;
+  for (std::uint32_t g = 0; g < guides; ++g) {
+    if (corner[g].first == ~0u) {
+      corner[g] = {std::uint32_t(triangles.size()), 0u};
+      triangles.emplace_back(g, g, g);
+    }
+    order.emplace_back(hashRandom(seed, g, 4), g);
+  }
+  std::sort(order.begin(), order.end());
+  InterpolationTopology topo;
+  for (const auto& [rank, g] : order) {
+    glm::vec3 x(0.0f);
+    x[int(corner[g].second)] = 1.0f;
+    topo.strands.push_back({corner[g].first, x, hashRandom(seed, g, 3)});
+  }
+  topo.triangles = std::move(triangles);
+  return topo;
+}
+}  // namespace
+
 InterpolationTopology buildInterpolationTopology(std::span<const glm::vec3> roots,
                                                  std::vector<glm::uvec3> triangles,
                                                  const DensityOptions& density) {
+  density.validate();
   if (triangles.empty()) throw Error("interpolation topology: no triangles");
   for (std::size_t t = 0; t < triangles.size(); ++t)
     if (glm::any(glm::greaterThanEqual(triangles[t], glm::uvec3(roots.size()))))
       throw Error("interpolation topology: triangle " + std::to_string(t) + " names a guide beyond " +
                   std::to_string(roots.size()));
+  if (resolvedMode(density, roots.size()) == DensityOptions::Mode::Guides)
+    return ownStrands(roots.size(), std::move(triangles), density.seed);
   std::vector<std::uint32_t> counts = strandsPerTriangle(roots, triangles, density);
   const std::size_t total = std::accumulate(counts.begin(), counts.end(), std::size_t(0));
   std::vector<StrandBinding> made;

@@ -25,8 +25,10 @@ struct InterpolationTopology {
 };
 
 struct DensityOptions {
-  enum class Mode { PerTriangle, Total };
-  Mode mode = Mode::Total;
+  // Guides: one render strand on every guide (a model's own strands, its own shape); Auto: Guides when there
+  // are at least totalStrands guides (a model with many strands draws its own), else Total.
+  enum class Mode { PerTriangle, Total, Guides, Auto };
+  Mode mode = Mode::Auto;
   std::uint32_t strandsPerTriangle = 8;  // Mode::PerTriangle
   std::uint32_t totalStrands = 20000;    // Mode::Total: spread in proportion to triangle area
   std::uint32_t seed = 7;
@@ -38,13 +40,18 @@ struct DensityOptions {
 // The fold: (u, v) uniform on the unit square -> uniform on the triangle.
 glm::vec3 foldBarycentric(float u, float v);
 
-// Strands per triangle: PerTriangle gives every triangle the same count; Total gives triangle i
+// Auto resolved for `guides` guides (PerTriangle, Total and Guides are kept).
+DensityOptions::Mode resolvedMode(const DensityOptions& density, std::size_t guides);
+
+// Strands per triangle (PerTriangle or Total): PerTriangle gives every triangle the same count; Total gives triangle i
 // floor(total * area_i / sum) plus one for the largest remainders, so the counts sum to exactly total.
 std::vector<std::uint32_t> strandsPerTriangle(std::span<const glm::vec3> roots,
                                               std::span<const glm::uvec3> triangles,
                                               const DensityOptions& density);
 
-// Throws hp::Error if a triangle names a guide outside roots, or there are no triangles.
+// Mode::Guides (or Auto resolving to it): strand g lies on guide g (barycentric 1 at its corner of a triangle
+// that has it, or of a triangle (g, g, g) added for a guide in none), in a hashed order so that any prefix
+// thins the hair evenly. Throws hp::Error if a triangle names a guide outside roots, or there are no triangles.
 InterpolationTopology buildInterpolationTopology(std::span<const glm::vec3> roots,
                                                  std::vector<glm::uvec3> triangles,
                                                  const DensityOptions& density);

@@ -22,8 +22,10 @@ struct Access;
 
 // How many render strands are interpolated between the guides.
 struct Density {
-  enum class Mode { PerTriangle, Total };
-  Mode mode = Mode::Total;
+  // Guides: one render strand on every guide (a model's own strands, in its own shape). Auto: Guides when the
+  // asset has at least totalStrands guides (a model with many strands draws its own), else Total.
+  enum class Mode { PerTriangle, Total, Guides, Auto };
+  Mode mode = Mode::Auto;
   std::uint32_t strandsPerTriangle = 8;  // PerTriangle
   std::uint32_t totalStrands = 20000;    // Total: spread in proportion to the triangles' areas
   std::uint32_t seed = 7;                // the strands' placement is reproducible for a seed

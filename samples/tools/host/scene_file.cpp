@@ -70,6 +70,12 @@ void readDensity(JsonObject& root, DensityOptions& d) {
   if (o->has("strandsPerTriangle") && o->has("totalStrands"))
     o->fail("totalStrands", "give either strandsPerTriangle or totalStrands, not both");
   if (o->has("strandsPerTriangle")) d.mode = DensityOptions::Mode::PerTriangle;
+  if (o->has("totalStrands")) d.mode = DensityOptions::Mode::Total;
+  bool own = false;
+  o->read("ownStrands", own);
+  if (own && (o->has("strandsPerTriangle") || o->has("totalStrands")))
+    o->fail("ownStrands", "draws the model's own strands: give no strand count with it");
+  if (own) d.mode = DensityOptions::Mode::Guides;
   o->read("strandsPerTriangle", d.strandsPerTriangle);
   o->read("totalStrands", d.totalStrands);
   o->read("seed", d.seed);
