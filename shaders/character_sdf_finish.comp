@@ -23,7 +23,7 @@ void main() {
   uint first = row * params.dims.x;
   for (uint x = 0u; x < params.dims.x; ++x) {
     uint key = keys[first + x];
-    if (key != 0xFFFFFFFFu) inside = (key & 1u) == 0u;
+    if (key != 0xFFFFFFFFu) inside = (key & 1u) == 1u;
     float d = key == 0xFFFFFFFFu ? band : uintBitsToFloat(key & ~1u);
     sdfValues[first + x] = inside ? -d : d;
   }

@@ -18,7 +18,8 @@ void main() {
   mat4 m = s.weights.x * bones[s.bones.x] + s.weights.y * bones[s.bones.y] + s.weights.z * bones[s.bones.z] +
            s.weights.w * bones[s.bones.w];
   posed[v] = vec4((m * vec4(rest[2u * v].xyz, 1.0)).xyz, 1.0);
-  // Normals go by the cofactor matrix (the inverse transpose times the determinant: the same direction).
+  // Normals go by the cofactor matrix (the inverse transpose times the determinant: the same direction for the
+  // proper transforms skinning makes; a mirroring bone would flip it).
   mat3 a = mat3(m);
   mat3 cofactor = mat3(cross(a[1], a[2]), cross(a[2], a[0]), cross(a[0], a[1]));
   vec4 n = rest[2u * v + 1u];

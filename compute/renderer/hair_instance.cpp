@@ -1,13 +1,12 @@
 #include "compute/renderer/hair_instance.h"
 
-#include "engine/vk/barriers.h"
-
 #include <algorithm>
 #include <cmath>
 
 #include "engine/core/error.h"
 #include "engine/core/hair/finite.h"
 #include "compute/renderer/renderer.h"
+#include "engine/vk/barriers.h"
 #include "engine/vk/context.h"
 
 namespace hp {
@@ -44,7 +43,13 @@ HairInstance::Geometry::Geometry(Renderer& r, const SimulatePass& sim, const Int
       interpolate(r.context(), buffers, &r.pipelines(), s.groom),
       bounds(r.context(), buffers, r.shadows().lightSpace(), &r.pipelines()),
       opacity(r.context(), buffers, head, r.shadows(), &r.pipelines()),
-      bounce(r.context(), buffers, bounceFrame.handle(), r.shadows().inputs(), &r.pipelines()) {}
+      bounce(r.context(), buffers, bounceFrame.handle(), r.shadows().inputs(), &r.pipelines()) {
+  // A posed character reaches past its rest mesh: its shadows are framed on the grid that covers its poses.
+  if (sim.character() && sim.sdf() && !head.positions.empty()) {
+    const SdfGrid& g = *sim.sdf();
+    opacity.encloseHead({0.5f * (g.origin + g.upper()), 0.5f * glm::length(g.upper() - g.origin)});
+  }
+}
 
 HairInstance::HairInstance(Renderer& renderer, const HairAsset& asset, const InstanceSettings& settings,
                            const glm::mat4& initialHead)

@@ -52,6 +52,8 @@ class OpacityPass {
   // The head's back faces into ShadowMaps' head depth map (between beginHeadRendering and endRendering).
   void recordHeadDepth(VkCommandBuffer cmd, const glm::mat4& headToLightClip) const;
   HeadSphere headSphere(const glm::mat4& headToWorld) const;  // bounding sphere in world space
+  // Grows the head's bounding sphere (head space) to hold `extra` too: a posed character's reach.
+  void encloseHead(const HeadSphere& extra) { sphere_ = enclose(sphere_, extra); }
   // The head's positions as the head draws here read them (vec4 per vertex; a posed character copies into it).
   const vk::Buffer& headPositions() const { return headPositions_; }
 

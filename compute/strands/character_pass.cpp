@@ -1,5 +1,6 @@
 #include "compute/strands/character_pass.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -36,6 +37,22 @@ vk::Buffer uploaded(const vk::Context& ctx, const std::vector<T>& data, const ch
   return b;
 }
 
+// The z slices of a posed triangle's box: its longest edge (as long in any pose of a skinning that does not
+// stretch it) and the band on either side, in cells. One slice (the splat invocation's loop) must stay within
+// CHARACTER_MAX_SLICE_NODES nodes, or the mesh's triangles are too large for the grid's cells.
+std::uint32_t slicesPerTriangle(const CharacterMesh& mesh, float cell) {
+  float longest = 0.0f;
+  for (const glm::uvec3& t : mesh.triangles) {
+    const glm::vec3 a = mesh.positions[t.x], b = mesh.positions[t.y], c = mesh.positions[t.z];
+    longest = std::max({longest, glm::distance(a, b), glm::distance(b, c), glm::distance(c, a)});
+  }
+  const double cells = std::ceil(double(longest) / double(cell)) + 2.0 * gpu::CHARACTER_SDF_BAND_CELLS + 2.0;
+  if (!(cells * cells <= double(gpu::CHARACTER_MAX_SLICE_NODES)))
+    throw Error(mesh.source + ": a triangle " + std::to_string(longest) + " long spans " + std::to_string(cells) +
+                " cells of its distance grid (" + std::to_string(cell) + "); a larger cell is needed");
+  return std::uint32_t(cells);
+}
+
 std::vector<glm::vec4> restVertices(const CharacterMesh& mesh, std::span<const float> scalp) {
   std::vector<glm::vec4> out;
   for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
@@ -64,7 +81,11 @@ CharacterPass::CharacterPass(const vk::Context& ctx, const CharacterMesh& mesh, 
   const SdfGrid& grid = *sdf.grid();
   params_.originCell = glm::vec4(grid.origin, grid.cell);
   params_.dims = glm::uvec4(grid.dims, std::uint32_t(grid.values.size()));
-  params_.counts = glm::uvec4(mesh.vertexCount(), mesh.triangleCount(), gpu::CHARACTER_SDF_BAND_CELLS, 0u);
+  params_.counts = glm::uvec4(mesh.vertexCount(), mesh.triangleCount(), gpu::CHARACTER_SDF_BAND_CELLS,
+                              slicesPerTriangle(mesh, grid.cell));
+  if (std::uint64_t(params_.counts.y) * params_.counts.w > (std::uint64_t(1) << 31))
+    throw Error(mesh.source + ": " + std::to_string(params_.counts.y) + " triangles of " + std::to_string(params_.counts.w) +
+                " grid slices each are more than one dispatch holds; a larger cell is needed");
   const std::vector<glm::vec4> rest = restVertices(mesh, scalp);
   rest_ = uploaded(ctx, rest, "rest vertices");
   skin_ = uploaded(ctx, skinOf(mesh), "skin weights");
@@ -119,7 +140,7 @@ bool CharacterPass::record(VkCommandBuffer cmd) {
   vk::memoryBarrier(ctx_, cmd, vk::BufferUse::ComputeWrite, vk::BufferUse::ComputeWrite);
   splat_->bind(cmd, set_.set());
   splat_->push(cmd, params_);
-  splat_->dispatch(cmd, params_.counts.y);
+  splat_->dispatch(cmd, params_.counts.y * params_.counts.w);  // per triangle and z slice
   vk::memoryBarrier(ctx_, cmd, vk::BufferUse::ComputeWrite, vk::BufferUse::ComputeWrite);
   finish_->bind(cmd, set_.set());
   finish_->push(cmd, params_);

@@ -94,7 +94,8 @@ nlohmann::json simulateReport(const hp::vk::Context& ctx, const hp::SimulatePass
                 : hp::LayerThickness{};
   report["grid"] = gridReport(ctx, pass, driver);
   report["interaction"] = interactionReport(pass, driver, positions, previous);
-  if (pass.character()) report["character_gpu_ms_per_frame_median"] = driver.medianCharacterMilliseconds();
+  if (driver.characterVertices().size() > 0)  // a clip posed it
+    report["character_gpu_ms_per_frame_median"] = driver.medianCharacterMilliseconds();
   if (asset.character) {
     const hp::CharacterMesh& m = *asset.character;
     std::vector<glm::vec3> posed = driver.characterVertices();  // as the last frame left it

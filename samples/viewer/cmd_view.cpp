@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "engine/core/error.h"
+#include "samples/tools/character_clip.h"
 #include "samples/tools/host/camera_fit.h"
 #include "engine/vk/check.h"
 #include "samples/cli/command.h"
@@ -107,7 +108,8 @@ hp::viewer::ViewerOptions viewerOptions(const ViewOptions& o, const CLI::App& cm
   if (o.opacityResolution) r.opacity.resolution = *o.opacityResolution;
   hp::render::validate(r.opacity);
   r.lutMode = hp::parseLutMode(o.lutMode);
-  r.animation = hp::parseHeadAnimation(o.animate);
+  if (const auto clip = hp::clipOfAnimate(o.animate)) r.characterClip = *clip;
+  else r.animation = hp::parseHeadAnimation(o.animate);
   if (!(o.exposure > 0.0f) || !std::isfinite(o.exposure)) throw hp::Error("--exposure must be a positive number");
   r.exposure = o.exposure;
   if (o.frames > kMaxFrames) throw hp::Error("--frames must be at most 1000000 (0: until the window closes)");
@@ -164,7 +166,8 @@ void setupView(CLI::App& app) {
   cmd->add_option("--opacity-resolution", o->opacityResolution, "Opacity map texels per side, 16-4096 (default 512)");
   cmd->add_flag("--no-shadows", o->noShadows, "Start with the opacity shadow maps off");
   cmd->add_option("--lut-mode", o->lutMode, "fibre model: physical (energy-conserving, default; dual scattering needs it), or the paper's model as float, paper or direct");
-  cmd->add_option("--animate", o->animate, "Head motion at the start: none, nod, turn, shake");
+  cmd->add_option("--animate", o->animate, "Head motion at the start: none, nod, turn, shake, or clip:NAME (an animation clip of the --mesh "
+                  "character, looped: its body posed, collided with and drawn, the roots following its bones)");
   cmd->add_option("--exposure", o->exposure, "Exposure multiplier before tonemapping (default 1)");
   hp::cli::addLightOption(*cmd, o->lights);
   cmd->add_option("--frames", o->frames, "Stop after N frames (default 0: when the window closes)");

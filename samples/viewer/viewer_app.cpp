@@ -17,6 +17,7 @@
 #include "engine/vk/fault_injection.h"
 #include "samples/tools/interrupt_flag.h"
 #include "samples/tools/png_file.h"
+#include "samples/tools/character_clip.h"
 #include "samples/tools/simulation_driver.h"
 #include "samples/viewer/viewer_device.h"
 #include "samples/viewer/viewer_panel.h"
@@ -124,6 +125,7 @@ class Viewer {
   PanelStatus status_;
   float headRadius_ = 1.0f;
   double animationTime_ = 0.0;
+  CharacterClip clip_;  // --animate clip:NAME: the character's clip (its own clock: animationTime_)
   glm::mat4 head_{1.0f};
   std::uint64_t frame_ = 0;
   std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
@@ -144,6 +146,7 @@ Viewer::Viewer(const ViewerOptions& options, const HairAsset& asset)
   const RenderRequest& r = options.request;
   state_.panel = options.panel;
   state_.animation = r.animation;
+  if (!r.characterClip.empty()) clip_ = characterClip(asset, r.characterClip);
   tunables_ = {r.scene.simulation, 4.0, r.scene.density.totalStrands, r.scene.material, r.lutMode, r.opacity, r.look,
                r.lod, r.exposure, editableLights(r.scene), r.scene.groom};
   input_.state = &state_;
@@ -243,6 +246,7 @@ HeadMotion Viewer::nextMotion() {
   const HeadMotion motion{head_, to, animationTime_, jump};
   animationTime_ += tunables_.simulation.dt;
   head_ = to;
+  if (clip_.clip) poseCharacter(gpu_->hair().simulation(), clip_, animationTime_, to);
   return motion;
 }
 

@@ -4,6 +4,7 @@
 
 #include "engine/vk/check.h"
 #include "samples/cli/scene_options.h"
+#include "samples/tools/character_clip.h"
 #include "shaders/shared/opacity.h"
 
 namespace hp::viewer {
@@ -34,6 +35,7 @@ ViewerDevice::ViewerDevice(const ViewerOptions& options, const HairAsset& asset,
     resolved.scene.render.raster = raster_;
     HairSystemSettings settings = systemSettings(resolved, targets_->formats());
     settings.shadowedLights = gpu::OPACITY_MAX_LIGHTS;  // the panel may add lights: every shadow slot from the start
+    if (!options.request.characterClip.empty()) settings.scalp = characterScalp(asset);  // the clip's bones move the roots
     hair_ = std::make_unique<HairSystem>(*ctx_, asset, settings);
     targets_->attach(*hair_);
     overlay_ = std::make_unique<ImGuiOverlay>(*ctx_, swapchain_->format(), kFramesInFlight);

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "engine/core/hair/hair_file.h"
+#include "samples/tools/png_file.h"
 #include "tests/hair/gltf_test_file.h"
 #include "tests/hair/hair_test_util.h"
 #include "tests/support/cli_runner.h"
@@ -17,8 +18,8 @@ using hp::test::freshTempPath;
 using hp::test::runCli;
 
 namespace {
-// 200 strands on the top of a 9 cm head, in centimetres, Z up, hanging down 25 cm; and the head as a
-// skinned sphere (.glb, the same units and axes) with a clip.
+// 200 strands on the top of a 9 cm head, in centimetres, Z up, standing out and falling outside it; and the
+// head as a skinned sphere (.glb, the same units and axes) with a clip.
 struct Character {
   std::filesystem::path model, mesh;
 };
@@ -31,7 +32,8 @@ Character centimetreCharacter() {
   for (std::uint32_t s = 0; s < d.strandCount; ++s) {
     const float a = 0.7f * float(s), z = 1.0f - 0.5f * float(s) / float(d.strandCount), r = std::sqrt(1.0f - z * z);
     const glm::vec3 root(9.0f * r * std::cos(a), 9.0f * r * std::sin(a), 9.0f * z);
-    for (int k = 0; k < 5; ++k) d.points.push_back(root + glm::vec3(0.0f, 0.0f, -6.0f * float(k)));
+    const glm::vec3 out = glm::normalize(glm::vec3(root.x, root.y, 0.0f) + glm::vec3(0.0f, 0.0f, -2.0f));
+    for (int k = 0; k < 5; ++k) d.points.push_back(root + 1.0f * float(k) * glm::normalize(root) + 5.0f * float(k) * glm::vec3(out.x, out.y, 0.0f) * 0.2f + glm::vec3(0.0f, 0.0f, -4.0f * float(k)) * 0.5f);
   }
   hp::writeHairFile(c.model, d);
   hp::test::GltfTestMesh m = hp::test::uvSphere(9.0f);
@@ -74,6 +76,56 @@ TEST(CliCharacterMesh, SimulateReportsThePenetrationIntoTheMesh) {
   EXPECT_EQ(m["particles"], 200 * 6);  // the free particles of 200 guides of 7
   EXPECT_LT(m["deepest"].get<double>(), 0.002) << r.out;  // the pearl radius keeps them out; 2 mm of grid error allowed
   EXPECT_GT(m["min_clearance"].get<double>(), -0.002);
+}
+
+namespace {
+// The share of an image's pixels that are green hair (--color 0.2,0.75,0.25).
+double greenShare(const std::filesystem::path& png) {
+  const hp::RgbaImage image = hp::readPngRgba(png);
+  std::size_t green = 0;
+  for (std::size_t i = 0; i < image.pixels.size(); i += 4)
+    green += image.pixels[i + 1] > image.pixels[i] + 12 && image.pixels[i + 1] > image.pixels[i + 2] + 12 ? 1u : 0u;
+  return double(green) / double(image.width * image.height);
+}
+}  // namespace
+
+// --animate clip:NAME plays the mesh's clip in render, simulate and view under validation (sync on): the
+// body posed and collided with on the device, the roots on its bones; the hair stays in view and outside.
+TEST(CliCharacterMesh, AClipPlaysInRenderSimulateAndView) {
+  const Character c = centimetreCharacter();
+  const auto png = freshTempPath("hairpipe_cli_clip.png");
+  const std::vector<std::string> look = {"--width", "96", "--height", "72", "--density", "1500", "--color",
+                                         "0.2,0.75,0.25", "--validation"};
+  std::vector<std::string> args = {"render", "--model", c.model.string(), "--mesh", c.mesh.string(), "--animate",
+                                   "clip:nod", "--frames", "30", "--out", png.string()};
+  args.insert(args.end(), look.begin(), look.end());
+  auto r = runCli(args);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const double posed = greenShare(png);
+  args[6] = "none";  // the same frame without the clip
+  r = runCli(args);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const double still = greenShare(png);
+  std::cout << "hair share of the frame: " << posed << " in the clip, " << still << " still\n";
+  EXPECT_GT(still, 0.01);
+  EXPECT_GT(posed, 0.6 * still);  // the posed hair stays in view
+  r = runCli({"simulate", "--model", c.model.string(), "--mesh", c.mesh.string(), "--animate", "clip:nod", "--frames",
+              "45", "--json", "--validation"});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["animation"], "clip:nod");
+  EXPECT_GT(j["character_gpu_ms_per_frame_median"].get<double>(), 0.0);
+  EXPECT_GT(j["mesh_penetration"]["min_clearance"].get<double>(), -0.002) << r.out;
+  hp::test::Xvfb x;
+  args = {"view", "--model", c.model.string(), "--mesh", c.mesh.string(), "--animate", "clip:nod", "--frames", "8",
+          "--screenshot", png.string(), "--opacity-resolution", "32"};
+  args.insert(args.end(), look.begin(), look.end());
+  r = runCli(args, {x.displayEnv()});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_GT(greenShare(png), 0.6 * still);
+  expectRefused({"render", "--model", c.model.string(), "--mesh", c.mesh.string(), "--frames", "1", "--out", png.string()},
+                {{{"--animate", "clip:walk"}, "no animation 'walk' (it has 'nod')"},
+                 {{"--animate", "clip:"}, "--animate clip:NAME needs the clip's name"}});
 }
 
 TEST(CliCharacterMesh, InspectDescribesAMesh) {

@@ -1,5 +1,6 @@
 #include "engine/core/hair/character_mesh.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "engine/core/error.h"
@@ -54,9 +55,10 @@ void checkSkin(CharacterMesh& m) {
     glm::vec4& w = m.weights[v];
     const std::string what = s + ": vertex " + std::to_string(v) + "'s ";
     if (!finite4(w) || w.x < 0 || w.y < 0 || w.z < 0 || w.w < 0) throw Error(what + "weights are negative or not finite");
-    const float sum = w.x + w.y + w.z + w.w;
-    if (!(sum > 0.0f)) throw Error(what + "weights sum to 0");
-    w /= sum;
+    const float largest = std::max(std::max(w.x, w.y), std::max(w.z, w.w));
+    if (!(largest > 0.0f)) throw Error(what + "weights sum to 0");
+    w /= largest;  // first, so that huge weights cannot sum to infinity
+    w /= w.x + w.y + w.z + w.w;
     for (int k = 0; k < 4; ++k)
       if (m.joints[v][k] >= m.skeleton.size()) {
         if (w[k] > 0.0f)
@@ -94,9 +96,11 @@ void checkAnimations(CharacterMesh& m) {
           throw Error(what + ": key " + std::to_string(k) + "'s time is negative, not finite or before the key before it");
         if (!finite4(ch.values[k])) throw Error(what + ": key " + std::to_string(k) + "'s value is not finite");
         if (ch.path == AnimationChannel::Path::Rotation) {
-          const float len = glm::length(ch.values[k]);
-          if (!(len > 1e-6f)) throw Error(what + ": key " + std::to_string(k) + " is a zero quaternion");
-          ch.values[k] /= len;
+          glm::vec4& q = ch.values[k];
+          const float largest = std::max(std::max(std::abs(q.x), std::abs(q.y)), std::max(std::abs(q.z), std::abs(q.w)));
+          if (!(largest > 1e-6f)) throw Error(what + ": key " + std::to_string(k) + " is a zero quaternion");
+          q /= largest;  // first, so that a huge one cannot have an infinite length
+          q /= glm::length(q);
         }
       }
       clip.duration = std::max(clip.duration, ch.times.back());

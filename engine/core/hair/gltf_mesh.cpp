@@ -5,6 +5,7 @@
 #include <glm/gtx/matrix_decompose.hpp>
 
 #include <cstring>
+#include <string_view>
 
 #include "engine/core/error.h"
 #include "engine/core/hair/gltf_accessor.h"
@@ -14,6 +15,8 @@
 namespace hp {
 namespace {
 constexpr std::uint64_t kMaxExternalBytes = 2ull << 30;  // all external buffers of one file together
+constexpr std::size_t kMaxGltfJsonBytes = std::size_t(128) << 20;
+constexpr int kMaxGltfJsonDepth = 64;
 
 struct FileAccess {
   std::filesystem::path folder;  // empty: no file is read
@@ -51,8 +54,43 @@ bool ignoreImage(tinygltf::Image*, const int, std::string*, std::string*, int, i
   return true;  // hairpipe reads geometry only
 }
 
+// The JSON of a .gltf (all of it) or a .glb (its first chunk, when the header holds one).
+std::string_view jsonPart(std::span<const std::byte> bytes, bool binary) {
+  const std::string_view all(reinterpret_cast<const char*>(bytes.data()), bytes.size());
+  if (!binary) return all;
+  if (bytes.size() < 20) return {};
+  std::uint32_t length = 0;
+  std::memcpy(&length, bytes.data() + 12, 4);
+  return all.substr(20, std::min<std::size_t>(length, bytes.size() - 20));
+}
+
+// tinygltf parses nested JSON values recursively without a limit (extras, extensions): refuse deep nesting
+// and very large JSON before it does (nlohmann's tree costs many times the text).
+void checkJson(std::string_view json, const std::string& source) {
+  if (json.size() > kMaxGltfJsonBytes)
+    throw Error(source + ": its JSON is " + std::to_string(json.size()) + " bytes, more than " +
+                std::to_string(kMaxGltfJsonBytes) + " (keep buffers in a .bin or a .glb)");
+  int depth = 0;
+  bool inString = false;
+  for (std::size_t i = 0; i < json.size(); ++i) {
+    const char c = json[i];
+    if (inString) {
+      if (c == '\\') ++i;
+      else if (c == '"') inString = false;
+    } else if (c == '"') {
+      inString = true;
+    } else if (c == '{' || c == '[') {
+      if (++depth > kMaxGltfJsonDepth)
+        throw Error(source + ": its JSON nests deeper than " + std::to_string(kMaxGltfJsonDepth) + " levels");
+    } else if (c == '}' || c == ']') {
+      --depth;
+    }
+  }
+}
+
 tinygltf::Model parseModel(std::span<const std::byte> bytes, const std::string& source, FileAccess& access) {
   if (bytes.size() > kMaxMeshFileBytes) throw Error(source + ": larger than hairpipe reads");
+  checkJson(jsonPart(bytes, bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0), source);
   tinygltf::TinyGLTF loader;
   loader.SetImageLoader(&ignoreImage, nullptr);
   loader.SetFsCallbacks({&fileExists, &expandPath, &readWholeFile, &writeWholeFile, &access});
@@ -70,9 +108,13 @@ tinygltf::Model parseModel(std::span<const std::byte> bytes, const std::string& 
 
 glm::vec3 pointOf(const std::array<double, 16>& v) { return {float(v[0]), float(v[1]), float(v[2])}; }
 
-// Triangles of a primitive's index list by its mode (4 list, 5 strip, 6 fan).
-void appendTriangles(int mode, const std::vector<std::uint32_t>& idx, std::uint32_t base, std::vector<glm::uvec3>& out) {
+// Triangles of a primitive's index list by its mode (4 list, 5 strip, 6 fan), refused before past kMaxMeshTriangles.
+void appendTriangles(int mode, const std::vector<std::uint32_t>& idx, std::uint32_t base, std::vector<glm::uvec3>& out,
+                     const std::string& what) {
   const std::size_t n = idx.size();
+  const std::size_t adding = mode == 4 ? n / 3 : (n > 2 ? n - 2 : 0);
+  if (out.size() + adding > kMaxMeshTriangles)
+    throw Error(what + " would take the mesh past " + std::to_string(kMaxMeshTriangles) + " triangles");
   if (mode == 4)
     for (std::size_t i = 0; i + 2 < n; i += 3) out.push_back(glm::uvec3(idx[i], idx[i + 1], idx[i + 2]) + base);
   if (mode == 5)
@@ -113,6 +155,15 @@ void readSkinAttributes(const AccessorRead& base, const tinygltf::Primitive& p, 
   if (nj != count || nw != count) throw Error(base.source + ": " + base.what + " has joints or weights for other than its " + std::to_string(count) + " vertices");
 }
 
+// A rigid primitive's vertices: placed by its node's rest transform, and in a skinned file moved into the bind
+// space of the joint it follows (so that joint's bind pose puts them back where its rest pose has them).
+glm::mat4 rigidToBind(const GltfScene& scene, const GltfSkeleton& skeleton, std::int32_t joint, int node) {
+  const glm::mat4& placed = scene.global[std::size_t(node)];
+  if (joint < 0 || skeleton.nodeOf[std::size_t(joint)] < 0) return placed;
+  const glm::mat4& jointRest = scene.global[std::size_t(skeleton.nodeOf[std::size_t(joint)])];
+  return glm::inverse(skeleton.joints[std::size_t(joint)].inverseBind) * glm::inverse(jointRest) * placed;
+}
+
 void appendPrimitive(const AccessorRead& base, const tinygltf::Primitive& p, const glm::mat4& toModel,
                      const PrimitiveSkin& skin, CharacterMesh& m) {
   const auto pos = p.attributes.find("POSITION");
@@ -138,7 +189,7 @@ void appendPrimitive(const AccessorRead& base, const tinygltf::Primitive& p, con
   }
   std::vector<std::uint32_t> idx;
   if (p.indices >= 0) {
-    r.what = base.what + " indices", r.types = {TINYGLTF_TYPE_SCALAR}, r.maxCount = 3 * kMaxMeshTriangles;
+    r.what = base.what + " indices", r.types = {TINYGLTF_TYPE_SCALAR}, r.maxCount = 3 * (kMaxMeshTriangles - m.triangles.size());
     r.components = {TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT, TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT};
     readAccessor(r, p.indices, [&](std::uint64_t, const auto& v) {
       if (v[0] >= double(count)) throw Error(base.source + ": " + base.what + " index " + std::to_string(std::uint64_t(v[0])) + " is past its " + std::to_string(count) + " vertices");
@@ -147,7 +198,7 @@ void appendPrimitive(const AccessorRead& base, const tinygltf::Primitive& p, con
   } else {
     for (std::uint32_t i = 0; i < count; ++i) idx.push_back(i);
   }
-  appendTriangles(p.mode < 0 ? 4 : p.mode, idx, std::uint32_t(first), m.triangles);
+  appendTriangles(p.mode < 0 ? 4 : p.mode, idx, std::uint32_t(first), m.triangles, base.source + ": " + base.what);
 }
 }  // namespace
 
@@ -167,7 +218,7 @@ CharacterMesh parseGltf(std::span<const std::byte> bytes, const std::string& sou
     PrimitiveSkin skin;
     if (skinned) skin.remap = &skeleton.remap;
     if (!skinned && scene.skin >= 0) skin.rigidJoint = rigidJointOf(skeleton, scene, node);
-    const glm::mat4 toModel = skinned ? glm::mat4(1.0f) : scene.global[std::size_t(node)];
+    const glm::mat4 toModel = skinned ? glm::mat4(1.0f) : rigidToBind(scene, skeleton, skin.rigidJoint, node);
     for (std::size_t p = 0; p < mesh.primitives.size(); ++p) {
       const int mode = mesh.primitives[p].mode;
       if (mode >= 0 && mode < 4) continue;  // points and lines

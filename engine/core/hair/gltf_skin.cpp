@@ -99,6 +99,7 @@ GltfScene gltfScene(const tinygltf::Model& model, const std::string& source) {
     const glm::mat4 parent = scene.parent[std::size_t(n)] >= 0 ? scene.global[std::size_t(scene.parent[std::size_t(n)])] : glm::mat4(1.0f);
     scene.global[std::size_t(n)] = parent * matrixOf(restOf(model.nodes[std::size_t(n)], source + ": " + nodeName(model, n)));
     done[std::size_t(n)] = true;
+    scene.order.push_back(n);
     for (int c : model.nodes[std::size_t(n)].children) queue.push_back(c);
   }
   if (const auto it = std::find(done.begin(), done.end(), false); it != done.end())
@@ -136,11 +137,14 @@ std::vector<glm::mat4> inverseBinds(const tinygltf::Model& model, const tinygltf
   return out;
 }
 
-// The nearest ancestor of `node` (not itself) whose node is in `joints`, or -1.
-int jointAncestor(const GltfScene& scene, const std::map<int, std::size_t>& joints, int node) {
-  for (int a = scene.parent[std::size_t(node)]; a >= 0; a = scene.parent[std::size_t(a)])
-    if (joints.count(a)) return a;
-  return -1;
+// Per node the nearest node at or above it that is in `joints` (or -1), in one pass parents first.
+std::vector<int> jointsAtOrAbove(const GltfScene& scene, const std::map<int, std::size_t>& joints) {
+  std::vector<int> at(scene.parent.size(), -1);
+  for (int n : scene.order) {
+    const int p = scene.parent[std::size_t(n)];
+    at[std::size_t(n)] = joints.count(n) ? n : (p >= 0 ? at[std::size_t(p)] : -1);
+  }
+  return at;
 }
 }  // namespace
 
@@ -154,24 +158,33 @@ GltfSkeleton gltfSkeleton(const tinygltf::Model& model, const GltfScene& scene, 
     if (n < 0 || std::size_t(n) >= model.nodes.size() || !position.emplace(n, i).second)
       throw Error(source + ": skin joint " + std::to_string(i) + " is not a node or is named twice");
   }
-  // Parents first: order the joints by how many joint ancestors they have (stable).
+  const std::vector<int> atOrAbove = jointsAtOrAbove(scene, position);
+  const auto jointAncestor = [&](int node) {  // the nearest joint strictly above
+    const int p = scene.parent[std::size_t(node)];
+    return p >= 0 ? atOrAbove[std::size_t(p)] : -1;
+  };
+  // Parents first: order the joints by how many joint ancestors they have (stable), counted parents first.
+  std::vector<std::size_t> jointDepth(scene.parent.size(), 0);
+  for (int n : scene.order)
+    if (position.count(n)) {
+      const int a = jointAncestor(n);
+      jointDepth[std::size_t(n)] = a >= 0 ? jointDepth[std::size_t(a)] + 1 : 0;
+    }
   std::vector<std::pair<std::size_t, std::size_t>> depth;  // (depth, position)
-  for (std::size_t i = 0; i < skin.joints.size(); ++i) {
-    std::size_t d = 0;
-    for (int a = jointAncestor(scene, position, skin.joints[i]); a >= 0; a = jointAncestor(scene, position, a)) ++d;
-    depth.emplace_back(d, i);
-  }
+  for (std::size_t i = 0; i < skin.joints.size(); ++i) depth.emplace_back(jointDepth[std::size_t(skin.joints[i])], i);
   std::stable_sort(depth.begin(), depth.end());
   const std::vector<glm::mat4> ibm = inverseBinds(model, skin, source);
   GltfSkeleton out;
+  out.jointAtOrAbove = atOrAbove;
   out.remap.resize(skin.joints.size());
   for (const auto& [d, i] : depth) {
     const int node = skin.joints[i];
     out.remap[i] = std::uint32_t(out.joints.size());
     out.ofNode[node] = std::uint32_t(out.joints.size());
+    out.nodeOf.push_back(node);
     Joint j;
     j.name = model.nodes[std::size_t(node)].name.empty() ? "joint " + std::to_string(i) : model.nodes[std::size_t(node)].name;
-    const int parentJoint = jointAncestor(scene, position, node);
+    const int parentJoint = jointAncestor(node);
     j.parent = parentJoint >= 0 ? std::int32_t(out.ofNode.at(parentJoint)) : -1;
     const int parentNode = scene.parent[std::size_t(node)];
     // Between a joint and its joint parent there may be plain nodes: their rest transforms are kept.
@@ -185,23 +198,27 @@ GltfSkeleton gltfSkeleton(const tinygltf::Model& model, const GltfScene& scene, 
   return out;
 }
 
-std::int32_t rigidJointOf(GltfSkeleton& skeleton, const GltfScene& scene, int node) {
-  for (int a = node; a >= 0; a = scene.parent[std::size_t(a)])
-    if (const auto it = skeleton.ofNode.find(a); it != skeleton.ofNode.end()) return std::int32_t(it->second);
-  const auto it = skeleton.ofNode.find(-1);  // the static joint, keyed by no node
-  if (it != skeleton.ofNode.end()) return std::int32_t(it->second);
+std::int32_t rigidJointOf(GltfSkeleton& skeleton, const GltfScene&, int node) {
+  const int joint = skeleton.jointAtOrAbove[std::size_t(node)];  // -1 keys the static joint
+  if (const auto it = skeleton.ofNode.find(joint); it != skeleton.ofNode.end()) return std::int32_t(it->second);
   Joint still;
   still.name = "<static>";
   skeleton.ofNode[-1] = std::uint32_t(skeleton.joints.size());
+  skeleton.nodeOf.push_back(-1);
   skeleton.joints.push_back(still);
   return std::int32_t(skeleton.joints.size() - 1);
 }
 
 namespace {
 AnimationChannel readChannel(const tinygltf::Model& model, const tinygltf::Animation& anim, const tinygltf::AnimationChannel& c,
-                             std::uint32_t joint, const std::string& what) {
+                             std::uint32_t joint, const std::string& what, std::uint64_t& keysLeft) {
   if (c.sampler < 0 || std::size_t(c.sampler) >= anim.samplers.size()) throw Error(what + " names no sampler");
   const tinygltf::AnimationSampler& s = anim.samplers[std::size_t(c.sampler)];
+  // Every channel copies its keys (channels may share a sampler): the file's keys in all are bounded.
+  const std::uint64_t keys = s.input >= 0 && std::size_t(s.input) < model.accessors.size() ? model.accessors[std::size_t(s.input)].count : 0;
+  if (keys > keysLeft)
+    throw Error(what + ": the file's animation channels hold more than " + std::to_string(kMaxAnimationKeys) + " keys in all");
+  keysLeft -= keys;
   AnimationChannel ch;
   ch.joint = joint;
   ch.path = c.target_path == "translation" ? AnimationChannel::Path::Translation
@@ -225,6 +242,7 @@ AnimationChannel readChannel(const tinygltf::Model& model, const tinygltf::Anima
 
 std::vector<AnimationClip> gltfAnimations(const tinygltf::Model& model, const GltfSkeleton& skeleton, const std::string& source) {
   std::vector<AnimationClip> clips;
+  std::uint64_t keysLeft = kMaxAnimationKeys;
   for (std::size_t a = 0; a < model.animations.size(); ++a) {
     const tinygltf::Animation& anim = model.animations[a];
     AnimationClip clip;
@@ -235,9 +253,11 @@ std::vector<AnimationClip> gltfAnimations(const tinygltf::Model& model, const Gl
       const bool pathRead = ch.target_path == "translation" || ch.target_path == "rotation" || ch.target_path == "scale";
       if (ch.target_node < 0 || joint == skeleton.ofNode.end() || !pathRead) continue;  // not a joint's transform
       const std::string what = source + ": animation '" + clip.name + "' channel " + std::to_string(c);
-      clip.channels.push_back(readChannel(model, anim, ch, joint->second, what));
+      clip.channels.push_back(readChannel(model, anim, ch, joint->second, what, keysLeft));
     }
-    if (!clip.channels.empty()) clips.push_back(std::move(clip));
+    if (clip.channels.empty()) continue;
+    if (clips.size() == kMaxClips) throw Error(source + ": more than " + std::to_string(kMaxClips) + " animation clips");
+    clips.push_back(std::move(clip));
   }
   return clips;
 }

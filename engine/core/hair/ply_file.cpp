@@ -183,6 +183,12 @@ int find(const Element& e, std::string_view name, bool list) {
   return -1;
 }
 
+// A number read from the file, for a message: an integer as such, anything else (huge, fractional) as a double.
+std::string numberText(double v) {
+  if (std::abs(v) < 9e15 && v == std::floor(v)) return std::to_string(std::int64_t(v));
+  return std::to_string(v);
+}
+
 struct Layout {
   int xyz[3] = {-1, -1, -1}, normal[3] = {-1, -1, -1}, indices = -1;
 };
@@ -206,14 +212,14 @@ void readRecord(Values& in, const Element& e, const Layout& l, std::uint64_t r, 
     const double count = in.next(p.countType, what + " count");
     const bool kept = face && l.indices == int(i);
     if (kept && (count < 3 || count > double(kMaxPolygonCorners)))
-      throw Error(what + " count " + std::to_string(std::int64_t(count)) + " is outside 3.." + std::to_string(kMaxPolygonCorners));
+      throw Error(what + " count " + numberText(count) + " is outside 3.." + std::to_string(kMaxPolygonCorners));
     if (count < 0 || count * double(in.minBytes(p.type)) > double(in.left()))
-      throw Error("the file ends before " + what + " (" + std::to_string(std::int64_t(count)) + " values)");
+      throw Error("the file ends before " + what + " (" + numberText(count) + " values)");
     for (std::uint64_t k = 0; k < std::uint64_t(count); ++k) {
       const double v = in.next(p.type, what);
       if (!kept) continue;
       if (v < 0 || v >= double(m.positions.size()))
-        throw Error(what + " refers to vertex " + std::to_string(std::int64_t(v)) + " of " + std::to_string(m.positions.size()));
+        throw Error(what + " refers to vertex " + numberText(v) + " of " + std::to_string(m.positions.size()));
       corners.push_back(std::uint32_t(v));
     }
   }
@@ -221,6 +227,8 @@ void readRecord(Values& in, const Element& e, const Layout& l, std::uint64_t r, 
     m.positions.push_back(tr.applyToPoint(glm::vec3(xyz[0], xyz[1], xyz[2])));
     if (l.normal[0] >= 0) m.normals.push_back(tr.applyToNormal(glm::vec3(n[0], n[1], n[2])));
   }
+  if (corners.size() > 2 && m.triangles.size() + corners.size() - 2 > kMaxMeshTriangles)
+    throw Error(e.name + " " + std::to_string(r) + " takes the mesh past " + std::to_string(kMaxMeshTriangles) + " triangles");
   for (std::size_t k = 2; k < corners.size(); ++k) m.triangles.push_back({corners[0], corners[k - 1], corners[k]});
 }
 
@@ -251,6 +259,7 @@ CharacterMesh parsePly(std::span<const std::byte> bytes, const std::string& sour
   Values in(bytes.subspan(h.dataStart), h.format, source);
   bool vertices = false;
   for (const Element& e : h.elements) {
+    if (e.properties.empty() && e.count > 0) throw Error(source + ": element '" + e.name + "' has no properties");
     if (e.count > in.left() / minRecordBytes(e, in))
       throw Error(source + ": element '" + e.name + "' count " + std::to_string(e.count) + " is more than the file holds");
     if (e.name == "vertex" && (vertices || e.count > kMaxMeshVertices)) throw Error(source + ": a second or too large vertex element");
@@ -263,7 +272,6 @@ CharacterMesh parsePly(std::span<const std::byte> bytes, const std::string& sour
       const std::string what = err.what();
       throw Error(what.rfind(source, 0) == 0 ? what : source + ": " + what);
     }
-    if (m.triangles.size() > kMaxMeshTriangles) throw Error(source + ": more than " + std::to_string(kMaxMeshTriangles) + " triangles");
   }
   if (!vertices) throw Error(source + ": no vertex element");
   finishCharacterMesh(m);

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <utility>
 
 #include "engine/core/error.h"
 
@@ -37,32 +38,49 @@ class TriangleGrid {
   TriangleGrid(std::span<const glm::vec3> positions, std::span<const glm::uvec3> triangles) {
     for (const auto& p : positions) lo_ = glm::min(lo_, p), hi_ = glm::max(hi_, p);
     const glm::vec3 size = glm::max(hi_ - lo_, glm::vec3(1e-6f));
-    // About two triangles per cell, at most 64 cells a side.
+    // About two triangles per cell, at most 64 cells a side; coarser while the triangles' boxes would make
+    // more than kMaxEntries entries (long triangles span many cells).
     const float volume = size.x * size.y * size.z;
     cell_ = std::max(std::cbrt(volume / float(std::max<std::size_t>(triangles.size() / 2, 1))), glm::length(size) / 110.0f);
     dims_ = glm::min(glm::ivec3(size / cell_) + 1, glm::ivec3(64));
+    while (entries(positions, triangles) > kMaxEntries && dims_ != glm::ivec3(1)) {
+      cell_ *= 2.0f;
+      dims_ = glm::max((dims_ + 1) / 2, glm::ivec3(1));
+    }
     cells_.resize(std::size_t(dims_.x) * std::size_t(dims_.y) * std::size_t(dims_.z));
     for (std::size_t t = 0; t < triangles.size(); ++t) {
-      const glm::uvec3 tri = triangles[t];
-      const glm::vec3 a = positions[tri.x], b = positions[tri.y], c = positions[tri.z];
-      const glm::ivec3 from = cellOf(glm::min(a, glm::min(b, c))), to = cellOf(glm::max(a, glm::max(b, c)));
+      const auto [from, to] = cellsOf(positions, triangles[t]);
       for (int z = from.z; z <= to.z; ++z)
         for (int y = from.y; y <= to.y; ++y)
           for (int x = from.x; x <= to.x; ++x) cells_[index({x, y, z})].push_back(std::uint32_t(t));
     }
   }
+  static constexpr std::uint64_t kMaxEntries = std::uint64_t(1) << 25;
   glm::ivec3 cellOf(const glm::vec3& p) const { return glm::clamp(glm::ivec3(glm::floor((p - lo_) / cell_)), glm::ivec3(0), dims_ - 1); }
   std::size_t index(const glm::ivec3& c) const { return (std::size_t(c.z) * std::size_t(dims_.y) + std::size_t(c.y)) * std::size_t(dims_.x) + std::size_t(c.x); }
   const std::vector<std::uint32_t>& at(const glm::ivec3& c) const { return cells_[index(c)]; }
   glm::ivec3 dims() const { return dims_; }
-  // The distance from p to anything outside the cells [from, to] (0 when p is outside them).
-  float clearance(const glm::vec3& p, const glm::ivec3& from, const glm::ivec3& to) const {
-    const glm::vec3 boxLo = lo_ + glm::vec3(from) * cell_, boxHi = lo_ + glm::vec3(to + 1) * cell_;
-    const glm::vec3 d = glm::min(p - boxLo, boxHi - p);
-    return std::max(0.0f, std::min(d.x, std::min(d.y, d.z)));
-  }
+  // A lower bound of the distance from p to every cell more than r cells (on some axis) from p's clamped cell:
+  // on that axis p lies inside its own cell's range or beyond the grid on the near side, so the gap is at
+  // least r whole cells.
+  float clearance(int r) const { return float(r) * cell_; }
 
  private:
+  std::pair<glm::ivec3, glm::ivec3> cellsOf(std::span<const glm::vec3> positions, const glm::uvec3& tri) const {
+    const glm::vec3 a = positions[tri.x], b = positions[tri.y], c = positions[tri.z];
+    return {cellOf(glm::min(a, glm::min(b, c))), cellOf(glm::max(a, glm::max(b, c)))};
+  }
+  std::uint64_t entries(std::span<const glm::vec3> positions, std::span<const glm::uvec3> triangles) const {
+    std::uint64_t n = 0;
+    for (const glm::uvec3& t : triangles) {
+      const auto [from, to] = cellsOf(positions, t);
+      const glm::ivec3 span = to - from + 1;
+      n += std::uint64_t(span.x) * std::uint64_t(span.y) * std::uint64_t(span.z);
+      if (n > kMaxEntries) return n;
+    }
+    return n;
+  }
+
   glm::vec3 lo_{std::numeric_limits<float>::max()}, hi_{std::numeric_limits<float>::lowest()};
   float cell_ = 1.0f;
   glm::ivec3 dims_{1};
@@ -91,7 +109,7 @@ Nearest nearestTriangle(const glm::vec3& p, const TriangleGrid& grid, std::span<
           }
         }
     const bool whole = from == glm::ivec3(0) && to == dims - 1;
-    if (whole || best.distance <= grid.clearance(p, from, to)) return best;
+    if (whole || best.distance <= grid.clearance(r)) return best;
   }
 }
 

@@ -105,7 +105,7 @@ struct Scene {
   std::string source = "<defaults>";  // where the scene came from, for messages
   ModelSpec model;
   GrowthOptions growth;  // defaults to defaultHeadGrowth()
-  DensityOptions density;
+  DensityOptions density{DensityOptions::Mode::Auto};  // none given: a model with many strands draws its own
   // Present: replaces the model's colliders (the default head's field included) with these spheres
   // and one distance grid built from colliderMeshes (if any). Absent: the model's own.
   std::optional<std::vector<SphereCollider>> colliders;

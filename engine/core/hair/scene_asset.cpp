@@ -87,15 +87,20 @@ struct CharacterParts {
   std::shared_ptr<const SdfGrid> grid;
 };
 
-// How far a skinned mesh's clips take its vertices past its rest box [lo, hi] (each clip at 33 times).
+// How far a skinned mesh's clips take its vertices past its rest box [lo, hi]: each clip at up to 33 times,
+// fewer when the clips and vertices are many (at most 2^27 skinned vertices in all).
 float clipReach(const CharacterMesh& m, const glm::vec3& lo, const glm::vec3& hi) {
+  if (m.animations.empty()) return 0.0f;
+  const std::uint64_t perSample = std::uint64_t(m.animations.size()) * std::max<std::size_t>(m.positions.size(), 1);
+  const int steps = int(std::clamp<std::uint64_t>((std::uint64_t(1) << 27) / perSample, 2, 33)) - 1;
   float reach = 0.0f;
   for (const AnimationClip& clip : m.animations)
-    for (int k = 0; k <= 32; ++k) {
-      const SkinnedVertices posed = skinMesh(m, skinningMatrices(m, samplePose(m, clip, clip.duration * float(k) / 32.0f)));
+    for (int k = 0; k <= steps; ++k) {
+      const SkinnedVertices posed = skinMesh(m, skinningMatrices(m, samplePose(m, clip, clip.duration * float(k) / float(steps))));
       for (const glm::vec3& p : posed.positions) {
         const glm::vec3 out = glm::max(lo - p, p - hi);
-        reach = std::max(reach, std::max(out.x, std::max(out.y, out.z)));
+        const float far = std::max(out.x, std::max(out.y, out.z));
+        reach = std::isfinite(far) ? std::max(reach, far) : INFINITY;  // refused by the caller
       }
     }
   return reach;

@@ -28,7 +28,7 @@ struct DensityOptions {
   // Guides: one render strand on every guide (a model's own strands, its own shape); Auto: Guides when there
   // are at least totalStrands guides (a model with many strands draws its own), else Total.
   enum class Mode { PerTriangle, Total, Guides, Auto };
-  Mode mode = Mode::Auto;
+  Mode mode = Mode::Total;  // a scene without a density asks for Auto (Scene::density)
   std::uint32_t strandsPerTriangle = 8;  // Mode::PerTriangle
   std::uint32_t totalStrands = 20000;    // Mode::Total: spread in proportion to triangle area
   std::uint32_t seed = 7;

@@ -9,27 +9,20 @@
 
 namespace hp {
 namespace {
-// The file's non-comment lines, split into tokens, read front to back.
+// The file's non-comment lines, split into tokens, read front to back without storing them.
 class TokenLines {
  public:
-  TokenLines(std::string_view text, const std::string& source) : source_(source) {
-    std::size_t at = 0, number = 0;
-    while (at < text.size()) {
-      std::size_t end = text.find('\n', at);
-      if (end == std::string_view::npos) end = text.size();
-      ++number;
-      std::string_view line = text.substr(at, end - at);
-      if (const auto hash = line.find('#'); hash != std::string_view::npos) line = line.substr(0, hash);
-      if (line.find_first_not_of(" \t\r") != std::string_view::npos) lines_.push_back({line, number});
-      at = end + 1;
-    }
+  TokenLines(std::string_view text, const std::string& source) : text_(text), source_(source) {}
+  // Bytes not read yet: each line left takes at least two of them (a field and its line end, the last aside).
+  std::size_t bytesLeft() const { return text_.size() - at_; }
+  bool done() {
+    skipBlank();
+    return at_ >= text_.size();
   }
-  std::size_t left() const { return lines_.size() - next_; }
   // The next line's tokens; exactly `count` of them or the line is refused.
   std::vector<std::string_view> take(std::size_t count, const std::string& what) {
-    if (next_ == lines_.size()) throw Error(source_ + ": the file ends before " + what);
-    const auto& [line, number] = lines_[next_++];
-    line_ = number;
+    if (done()) throw Error(source_ + ": the file ends before " + what);
+    const std::string_view line = nextLine();
     std::vector<std::string_view> tokens;
     std::size_t at = 0;
     while ((at = line.find_first_not_of(" \t\r", at)) != std::string_view::npos && tokens.size() <= count) {
@@ -44,8 +37,31 @@ class TokenLines {
   std::string where() const { return source_ + ": line " + std::to_string(line_) + ": "; }
 
  private:
-  std::vector<std::pair<std::string_view, std::size_t>> lines_;
-  std::size_t next_ = 0, line_ = 0;
+  // The next line without its comment (the cursor moves past it).
+  std::string_view nextLine() {
+    std::size_t end = text_.find('\n', at_);
+    if (end == std::string_view::npos) end = text_.size();
+    std::string_view line = text_.substr(at_, end - at_);
+    if (const auto hash = line.find('#'); hash != std::string_view::npos) line = line.substr(0, hash);
+    at_ = end + 1;
+    ++line_;
+    return line;
+  }
+  // Past blank and comment-only lines.
+  void skipBlank() {
+    while (at_ < text_.size()) {
+      std::size_t end = text_.find('\n', at_);
+      if (end == std::string_view::npos) end = text_.size();
+      std::string_view line = text_.substr(at_, end - at_);
+      if (const auto hash = line.find('#'); hash != std::string_view::npos) line = line.substr(0, hash);
+      if (line.find_first_not_of(" \t\r") != std::string_view::npos) return;
+      at_ = end + 1;
+      ++line_;
+    }
+  }
+
+  std::string_view text_;
+  std::size_t at_ = 0, line_ = 0;
   const std::string& source_;
 };
 
@@ -58,14 +74,14 @@ T number(TokenLines& in, std::string_view token, const std::string& what) {
   return v;
 }
 
-// "keyword N": N, at most what the lines left can hold and `limit`.
-std::size_t countLine(TokenLines& in, const char* keyword, std::uint64_t limit) {
+// "keyword N": N, at most what the bytes left can hold (records of at least `recordBytes`) and `limit`.
+std::size_t countLine(TokenLines& in, const char* keyword, std::uint64_t recordBytes, std::uint64_t limit) {
   const auto t = in.take(2, keyword);
   if (t[0] != keyword) throw Error(in.where() + "expected '" + keyword + "', got '" + excerpt(t[0]) + "'");
   const auto n = number<std::int64_t>(in, t[1], keyword);
-  if (n < 0 || std::uint64_t(n) > in.left() || std::uint64_t(n) > limit)
+  if (n < 0 || std::uint64_t(n) > (in.bytesLeft() + 1) / recordBytes || std::uint64_t(n) > limit)
     throw Error(in.where() + keyword + " " + std::to_string(n) + " is negative or more than the file holds (" +
-                std::to_string(in.left()) + " lines left)");
+                std::to_string(in.bytesLeft()) + " bytes left)");
   return std::size_t(n);
 }
 
@@ -100,16 +116,17 @@ CharacterMesh parseTfxMesh(std::string_view text, const std::string& source, con
   CharacterMesh m;
   m.source = source;
   m.modelToHead = transform.matrix();
-  const std::size_t bones = countLine(in, "numOfBones", kMaxMeshJoints);
+  // The shortest records: "0 b\n" (4 bytes), fifteen one-character fields (30), "0 0 1 2\n" (8).
+  const std::size_t bones = countLine(in, "numOfBones", 4, kMaxMeshJoints);
   for (std::size_t b = 0; b < bones; ++b) {
     const auto t = in.take(2, "bone " + std::to_string(b));
     checkIndex(in, t[0], b, "bone");
     m.skeleton.push_back(Joint{std::string(t[1])});
   }
-  const std::size_t vertices = countLine(in, "numOfVertices", kMaxMeshVertices);
+  const std::size_t vertices = countLine(in, "numOfVertices", 30, kMaxMeshVertices);
   m.positions.reserve(vertices);
   for (std::size_t v = 0; v < vertices; ++v) readVertex(in, v, bones, transform, m);
-  const std::size_t triangles = countLine(in, "numOfTriangles", kMaxMeshTriangles);
+  const std::size_t triangles = countLine(in, "numOfTriangles", 8, kMaxMeshTriangles);
   m.triangles.reserve(triangles);
   for (std::size_t i = 0; i < triangles; ++i) {
     const auto t = in.take(4, "triangle " + std::to_string(i));
@@ -124,7 +141,7 @@ CharacterMesh parseTfxMesh(std::string_view text, const std::string& source, con
     }
     m.triangles.push_back(tri);
   }
-  if (in.left() > 0) throw Error(source + ": " + std::to_string(in.left()) + " lines after the last triangle");
+  if (!in.done()) throw Error(in.where() + "more lines after the last triangle");
   finishCharacterMesh(m);
   return m;
 }

@@ -25,7 +25,7 @@ struct Density {
   // Guides: one render strand on every guide (a model's own strands, in its own shape). Auto: Guides when the
   // asset has at least totalStrands guides (a model with many strands draws its own), else Total.
   enum class Mode { PerTriangle, Total, Guides, Auto };
-  Mode mode = Mode::Auto;
+  Mode mode = Mode::Total;
   std::uint32_t strandsPerTriangle = 8;  // PerTriangle
   std::uint32_t totalStrands = 20000;    // Total: spread in proportion to the triangles' areas
   std::uint32_t seed = 7;                // the strands' placement is reproducible for a seed
@@ -39,7 +39,7 @@ struct AssetSource {
   UpAxis up = UpAxis::Y;     // the model's up axis; Z-up models are rotated to Y up
   Vec3 translation{};        // after scale and rotation
   bool keepStrands = false;  // .hair/.tfx: keep each strand's own points instead of resampling to guides
-  Density density;
+  Density density{Density::Mode::Auto};  // by default a model of at least 20000 strands draws its own
   // A character mesh for the model (.obj, .ply, .gltf, .glb or TressFX .tfxmesh; "" none), in the model's units
   // and axes (scale, up and translation apply to it too): drawn as the head, the distance grid the hair
   // collides with (instead of a sphere fitted to the roots), and the surface the guides' roots bind to.

@@ -157,7 +157,8 @@ struct MeshSkinning {
 };
 Result<MeshSkinning> meshSkinning(const Asset& asset) noexcept;
 // The skinned mesh's bones posed by its animation clip `clip` at `seconds` (clamped to the clip): per bone
-// the head-space matrix from the bind pose to the pose (the identity for every bone at rest). Instance::setBones
+// the head-space matrix from the bind pose to the pose (the identity for every bone in the rest pose when the
+// mesh's bind pose is its rest pose, as exporters usually write it). Instance::setBones
 // takes headToWorld times each. Fails naming the clips there are when none is called `clip`.
 Result<std::vector<Mat4>> meshClipPose(const Asset& asset, const std::string& clip, float seconds) noexcept;
 
