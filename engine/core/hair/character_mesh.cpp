@@ -26,6 +26,16 @@ void checkGeometry(const CharacterMesh& m) {
                 " vertices");
 }
 
+// v at unit length, or zero for a zero or non-finite v. Scaled by its largest component first, so tiny
+// (subnormal) and huge vectors normalise as well as any.
+glm::vec3 unitOrZero(const glm::vec3& v) {
+  if (!finite3(v)) return glm::vec3(0.0f);
+  const float largest = std::max(std::abs(v.x), std::max(std::abs(v.y), std::abs(v.z)));
+  if (!(largest > 0.0f) || !std::isfinite(largest)) return glm::vec3(0.0f);
+  const glm::vec3 scaled = v / largest;
+  return scaled / glm::length(scaled);
+}
+
 // Given normals are normalised; a vertex without a usable one takes the area-weighted normal of its
 // triangles (and a vertex in no triangle +Y: it is never drawn).
 void finishNormals(CharacterMesh& m) {
@@ -36,10 +46,9 @@ void finishNormals(CharacterMesh& m) {
   }
   if (m.normals.empty()) m.normals.assign(m.positions.size(), glm::vec3(0.0f));
   for (std::size_t i = 0; i < m.normals.size(); ++i) {
-    glm::vec3 n = m.normals[i];
-    if (!finite3(n) || !(glm::length(n) > 1e-12f)) n = computed[i];
-    const float len = glm::length(n);
-    m.normals[i] = len > 1e-30f && std::isfinite(len) ? n / len : glm::vec3(0.0f, 1.0f, 0.0f);
+    const glm::vec3 given = unitOrZero(m.normals[i]);
+    const glm::vec3 n = given != glm::vec3(0.0f) ? given : unitOrZero(computed[i]);
+    m.normals[i] = n != glm::vec3(0.0f) ? n : glm::vec3(0.0f, 1.0f, 0.0f);
   }
 }
 
