@@ -42,6 +42,12 @@ CharacterMesh loadGlb(const test::GltfTestMesh& m, const ModelTransform& transfo
   return parseGltf(test::glbBytes(m), "test.glb", {}, transform);
 }
 
+// `text` with the first `from` replaced by `to` (a corruption for the refusal tests).
+std::string replaced(std::string text, const std::string& from, const std::string& to) {
+  text.replace(text.find(from), from.size(), to);
+  return text;
+}
+
 std::uint32_t jointNamed(const CharacterMesh& m, const std::string& name) {
   for (std::size_t j = 0; j < m.skeleton.size(); ++j)
     if (m.skeleton[j].name == name) return std::uint32_t(j);
@@ -168,11 +174,7 @@ TEST(CharacterMesh, ATfxMeshReadsItsCountsAndValues) {
   EXPECT_FLOAT_EQ(m.weights[2].x, 1.0f);  // normalised from 2
   EXPECT_FLOAT_EQ(m.normals[0].z, 1.0f);
   // Corruptions, each named.
-  auto corrupt = [&](const std::string& from, const std::string& to) {
-    std::string t = text;
-    t.replace(t.find(from), from.size(), to);
-    return t;
-  };
+  auto corrupt = [&](const std::string& from, const std::string& to) { return replaced(text, from, to); };
   EXPECT_ERROR_CONTAINS(parseTfxMesh(corrupt("numOfVertices 3", "numOfVertices 300000000"), "t"), "more than the file holds");
   EXPECT_ERROR_CONTAINS(parseTfxMesh(corrupt("1 0 0 0 0.25", "7 0 0 0 0.25"), "t"), "is not a bone");
   EXPECT_ERROR_CONTAINS(parseTfxMesh(corrupt("0 0 1 2\n", "0 0 1 9\n"), "t"), "refers to vertex 9");
@@ -234,11 +236,7 @@ TEST(CharacterMesh, PlyFilesReadInEveryFormat) {
     EXPECT_FLOAT_EQ(m.normals[0].z, 1.0f);
     EXPECT_FALSE(m.skinned());
   }
-  auto corrupt = [&](const std::string& from, const std::string& to) {
-    std::string t = ascii;
-    t.replace(t.find(from), from.size(), to);
-    return textBytes(t);
-  };
+  auto corrupt = [&](const std::string& from, const std::string& to) { return textBytes(replaced(ascii, from, to)); };
   EXPECT_ERROR_CONTAINS(parsePly(corrupt("element vertex 4", "element vertex 4000000000"), "q"), "more than the file holds");
   EXPECT_ERROR_CONTAINS(parsePly(corrupt("4 0 1 2 3", "4 0 1 2 4"), "q"), "refers to vertex 4");
   EXPECT_ERROR_CONTAINS(parsePly(corrupt("4 0 1 2 3", "2 0 1 2 3"), "q"), "outside 3..1024");

@@ -45,15 +45,6 @@ JointPose restOf(const tinygltf::Node& n, const std::string& what) {
   return p;
 }
 
-glm::mat4 matrixOf(const JointPose& p) {
-  glm::mat4 m = glm::mat4_cast(p.rotation);
-  m[0] *= p.scale.x;
-  m[1] *= p.scale.y;
-  m[2] *= p.scale.z;
-  m[3] = glm::vec4(p.translation, 1.0f);
-  return m;
-}
-
 std::vector<int> parentsOf(const tinygltf::Model& model, const std::string& source) {
   std::vector<int> parent(model.nodes.size(), -1);
   for (std::size_t i = 0; i < model.nodes.size(); ++i)
@@ -97,7 +88,7 @@ GltfScene gltfScene(const tinygltf::Model& model, const std::string& source) {
     const int n = queue.front();
     queue.pop_front();
     const glm::mat4 parent = scene.parent[std::size_t(n)] >= 0 ? scene.global[std::size_t(scene.parent[std::size_t(n)])] : glm::mat4(1.0f);
-    scene.global[std::size_t(n)] = parent * matrixOf(restOf(model.nodes[std::size_t(n)], source + ": " + nodeName(model, n)));
+    scene.global[std::size_t(n)] = parent * jointMatrix(restOf(model.nodes[std::size_t(n)], source + ": " + nodeName(model, n)));
     done[std::size_t(n)] = true;
     scene.order.push_back(n);
     for (int c : model.nodes[std::size_t(n)].children) queue.push_back(c);
@@ -163,7 +154,7 @@ GltfSkeleton gltfSkeleton(const tinygltf::Model& model, const GltfScene& scene, 
     const int p = scene.parent[std::size_t(node)];
     return p >= 0 ? atOrAbove[std::size_t(p)] : -1;
   };
-  // Parents first: order the joints by how many joint ancestors they have (stable), counted parents first.
+  // Parents first: order the joints by how many joint ancestors they have (then by position), counted parents first.
   std::vector<std::size_t> jointDepth(scene.parent.size(), 0);
   for (int n : scene.order)
     if (position.count(n)) {
@@ -172,7 +163,7 @@ GltfSkeleton gltfSkeleton(const tinygltf::Model& model, const GltfScene& scene, 
     }
   std::vector<std::pair<std::size_t, std::size_t>> depth;  // (depth, position)
   for (std::size_t i = 0; i < skin.joints.size(); ++i) depth.emplace_back(jointDepth[std::size_t(skin.joints[i])], i);
-  std::stable_sort(depth.begin(), depth.end());
+  std::sort(depth.begin(), depth.end());  // (depth, position) pairs are distinct: the order is the stable one
   const std::vector<glm::mat4> ibm = inverseBinds(model, skin, source);
   GltfSkeleton out;
   out.jointAtOrAbove = atOrAbove;

@@ -7,15 +7,6 @@
 
 namespace hp {
 namespace {
-glm::mat4 localMatrix(const JointPose& p) {
-  glm::mat4 m = glm::mat4_cast(p.rotation);
-  m[0] *= p.scale.x;
-  m[1] *= p.scale.y;
-  m[2] *= p.scale.z;
-  m[3] = glm::vec4(p.translation, 1.0f);
-  return m;
-}
-
 // The channel's value at `t`: the keys around it blended (or the one before it for step keys).
 glm::vec4 sampleChannel(const AnimationChannel& ch, float t) {
   const auto& times = ch.times;
@@ -33,6 +24,15 @@ glm::vec4 sampleChannel(const AnimationChannel& ch, float t) {
   return {q.x, q.y, q.z, q.w};
 }
 }  // namespace
+
+glm::mat4 jointMatrix(const JointPose& p) {
+  glm::mat4 m = glm::mat4_cast(p.rotation);
+  m[0] *= p.scale.x;
+  m[1] *= p.scale.y;
+  m[2] *= p.scale.z;
+  m[3] = glm::vec4(p.translation, 1.0f);
+  return m;
+}
 
 std::vector<JointPose> restPose(const CharacterMesh& mesh) {
   std::vector<JointPose> pose;
@@ -72,7 +72,7 @@ std::vector<glm::mat4> skinningMatrices(const CharacterMesh& mesh, std::span<con
   for (std::size_t j = 0; j < pose.size(); ++j) {
     const Joint& joint = mesh.skeleton[j];
     const glm::mat4 parent = (joint.parent >= 0 ? global[std::size_t(joint.parent)] : glm::mat4(1.0f)) * joint.parentRest;
-    global[j] = parent * localMatrix(pose[j]);
+    global[j] = parent * jointMatrix(pose[j]);
     skin[j] = mesh.modelToHead * global[j] * joint.inverseBind * headToModel;
   }
   return skin;

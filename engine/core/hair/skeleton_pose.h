@@ -21,6 +21,8 @@ struct JointPose {
   glm::vec3 scale{1.0f};
 };
 
+// A local transform as a matrix: translation * rotation * scale.
+glm::mat4 jointMatrix(const JointPose& pose);
 std::vector<JointPose> restPose(const CharacterMesh& mesh);
 // Throws hp::Error naming the clips there are when none is called `name`.
 const AnimationClip& findClip(const CharacterMesh& mesh, const std::string& name);
