@@ -97,7 +97,7 @@ TEST(CliCharacterMesh, AClipPlaysInRenderSimulateAndView) {
   const std::vector<std::string> look = {"--width", "96", "--height", "72", "--density", "1500", "--color",
                                          "0.2,0.75,0.25", "--validation"};
   std::vector<std::string> args = {"render", "--model", c.model.string(), "--mesh", c.mesh.string(), "--animate",
-                                   "clip:nod", "--frames", "30", "--out", png.string()};
+                                   "clip:nod", "--frames", "20", "--out", png.string()};
   args.insert(args.end(), look.begin(), look.end());
   auto r = runCli(args);
   ASSERT_EQ(r.exitCode, 0) << r.err;
@@ -110,7 +110,7 @@ TEST(CliCharacterMesh, AClipPlaysInRenderSimulateAndView) {
   EXPECT_GT(still, 0.01);
   EXPECT_GT(posed, 0.6 * still);  // the posed hair stays in view
   r = runCli({"simulate", "--model", c.model.string(), "--mesh", c.mesh.string(), "--animate", "clip:nod", "--frames",
-              "45", "--json", "--validation"});
+              "30", "--json", "--validation"});
   ASSERT_EQ(r.exitCode, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j["animation"], "clip:nod");

@@ -147,7 +147,7 @@ TEST_F(VulkanTest, ACharacterPosedOnTheDeviceMatchesTheCpu) {
 namespace {
 // 200 guides of 7 particles hanging 10 cm from the crown of a 9 cm sphere (.hair), on the sphere skinned to a
 // "head" joint 5 cm up (weights blended over the middle 12 cm) whose clip "nod" turns it 45 degrees about x
-// and back each second; a 3 mm distance grid.
+// and back each second; a 4 mm distance grid.
 HairAsset noddingCharacter(const test::TempDir& dir) {
   HairFileData hair;
   hair.strandCount = 200;
@@ -171,7 +171,7 @@ HairAsset noddingCharacter(const test::TempDir& dir) {
   Scene scene;
   scene.model.kind = ModelSpec::Kind::Hair;
   scene.model.path = dir / "crown.hair";
-  scene.mesh = CharacterMeshSpec{dir / "head.glb", 0.003f};
+  scene.mesh = CharacterMeshSpec{dir / "head.glb", 0.004f};
   return buildSceneAsset(scene);
 }
 }  // namespace
