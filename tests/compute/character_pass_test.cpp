@@ -120,7 +120,6 @@ void expectDeviceMatchesCpu(const vk::Context& ctx, const PosedSphere& s, float 
         if (truth < 0.99f * band) {
           ++inBand;
           worst = std::max(worst, double(std::abs(std::abs(device) - truth)));
-          if (std::abs(std::abs(device) - truth) > 1e-4 && wrongSign < 3) std::cout << "DBG p " << p.x << " " << p.y << " " << p.z << " device " << device << " truth " << truth << " side " << side << "\n";
           if (std::abs(side) > cell && (device < 0.0f) != (side < 0.0f)) ++wrongSign;
         } else if (truth > 1.01f * band) {
           EXPECT_FLOAT_EQ(device, side < 0.0f ? -band : band) << i << " " << j << " " << k;
