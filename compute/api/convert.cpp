@@ -193,6 +193,13 @@ hp::View view(const View& v) {
 
 hp::HeadMotion motion(const HeadMotion& m) { return {mat(m.from), mat(m.to), m.time, m.teleport}; }
 
+std::vector<glm::mat4> mats(std::span<const Mat4> m) {
+  std::vector<glm::mat4> out;
+  out.reserve(m.size());
+  for (const Mat4& one : m) out.push_back(mat(one));
+  return out;
+}
+
 std::vector<hp::SphereCollider> spheres(std::span<const SphereCollider> s) {
   std::vector<hp::SphereCollider> out;
   for (const SphereCollider& c : s) out.push_back({vec(c.center), c.radius});

@@ -18,6 +18,7 @@ glm::vec3 vec(const Vec3& v);
 glm::dvec3 dvec(const std::array<double, 3>& v);
 glm::mat4 mat(const Mat4& m);
 Mat4 mat(const glm::mat4& m);
+std::vector<glm::mat4> mats(std::span<const Mat4> m);
 
 hp::RasterMode raster(RasterMode mode);
 RasterMode raster(hp::RasterMode mode);

@@ -65,20 +65,12 @@ Status Instance::setColliders(std::span<const SphereCollider> spheres, std::span
   });
 }
 Status Instance::setBones(std::span<const Mat4> bones) noexcept {
-  return guardedStatus("hairpipe::Instance::setBones", [&] {
-    std::vector<glm::mat4> m;
-    m.reserve(bones.size());
-    for (const Mat4& b : bones) m.push_back(convert::mat(b));
-    implementation(impl_.get()).setBones(m);
-  });
+  return guardedStatus("hairpipe::Instance::setBones",
+                       [&] { implementation(impl_.get()).setBones(convert::mats(bones)); });
 }
 Status Instance::setMeshPose(std::span<const Mat4> bones) noexcept {
-  return guardedStatus("hairpipe::Instance::setMeshPose", [&] {
-    std::vector<glm::mat4> m;
-    m.reserve(bones.size());
-    for (const Mat4& b : bones) m.push_back(convert::mat(b));
-    implementation(impl_.get()).setCharacterPose(m);
-  });
+  return guardedStatus("hairpipe::Instance::setMeshPose",
+                       [&] { implementation(impl_.get()).setCharacterPose(convert::mats(bones)); });
 }
 Status Instance::setMaterial(const Material& material, FibreModel fibre) noexcept {
   return guardedStatus("hairpipe::Instance::setMaterial", [&] {

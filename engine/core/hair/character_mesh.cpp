@@ -14,13 +14,8 @@ bool finite4(const glm::vec4& v) { return finite3(glm::vec3(v)) && std::isfinite
 
 void checkGeometry(const CharacterMesh& m) {
   const std::string& s = m.source;
-  for (std::size_t i = 0; i < m.positions.size(); ++i)
-    if (!finite3(m.positions[i])) throw Error(s + ": vertex " + std::to_string(i) + " is not finite");
-  for (std::size_t t = 0; t < m.triangles.size(); ++t)
-    for (int k = 0; k < 3; ++k)
-      if (m.triangles[t][k] >= m.positions.size())
-        throw Error(s + ": triangle " + std::to_string(t) + " refers to vertex " + std::to_string(m.triangles[t][k]) +
-                    " but there are only " + std::to_string(m.positions.size()));
+  checkMeshVertices(m.positions, s);
+  checkMeshIndices(m.triangles, m.positions.size(), s);
   if (!m.normals.empty() && m.normals.size() != m.positions.size())
     throw Error(s + ": " + std::to_string(m.normals.size()) + " normals for " + std::to_string(m.positions.size()) +
                 " vertices");

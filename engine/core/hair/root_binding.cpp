@@ -8,30 +8,10 @@
 #include <utility>
 
 #include "engine/core/error.h"
+#include "engine/core/hair/sdf_mesh.h"
 
 namespace hp {
 namespace {
-// The point of triangle abc nearest to p (the region tests of the triangle's Voronoi regions).
-glm::vec3 closestOnTriangle(const glm::vec3& p, const glm::vec3& a, const glm::vec3& b, const glm::vec3& c) {
-  const glm::vec3 ab = b - a, ac = c - a, ap = p - a;
-  const float d1 = glm::dot(ab, ap), d2 = glm::dot(ac, ap);
-  if (d1 <= 0 && d2 <= 0) return a;
-  const glm::vec3 bp = p - b;
-  const float d3 = glm::dot(ab, bp), d4 = glm::dot(ac, bp);
-  if (d3 >= 0 && d4 <= d3) return b;
-  const float vc = d1 * d4 - d3 * d2;
-  if (vc <= 0 && d1 >= 0 && d3 <= 0) return a + ab * (d1 / (d1 - d3));
-  const glm::vec3 cp = p - c;
-  const float d5 = glm::dot(ab, cp), d6 = glm::dot(ac, cp);
-  if (d6 >= 0 && d5 <= d6) return c;
-  const float vb = d5 * d2 - d1 * d6;
-  if (vb <= 0 && d2 >= 0 && d6 <= 0) return a + ac * (d2 / (d2 - d6));
-  const float va = d3 * d6 - d5 * d4;
-  if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0) return b + (c - b) * ((d4 - d3) / ((d4 - d3) + (d5 - d6)));
-  const float denom = 1.0f / (va + vb + vc);
-  return a + ab * (vb * denom) + ac * (vc * denom);
-}
-
 // Triangles bucketed by the grid cells their boxes overlap.
 class TriangleGrid {
  public:
@@ -104,7 +84,7 @@ Nearest nearestTriangle(const glm::vec3& p, const TriangleGrid& grid, std::span<
           if (std::max({std::abs(x - c.x), std::abs(y - c.y), std::abs(z - c.z)}) != r) continue;  // this shell only
           for (std::uint32_t t : grid.at({x, y, z})) {
             const glm::uvec3 tri = tris[t];
-            const float d = glm::distance(p, closestOnTriangle(p, pos[tri.x], pos[tri.y], pos[tri.z]));
+            const float d = glm::distance(p, closestPointOnTriangle(p, pos[tri.x], pos[tri.y], pos[tri.z]));
             if (d < best.distance || (d == best.distance && t < best.triangle)) best = {t, d};
           }
         }

@@ -13,20 +13,6 @@ float boundingDiagonal(const std::vector<glm::vec3>& positions) {
   return glm::length(hi - lo);
 }
 
-void checkFinite(const std::vector<glm::vec3>& positions, const std::string& source) {
-  for (std::size_t i = 0; i < positions.size(); ++i)
-    if (!std::isfinite(positions[i].x) || !std::isfinite(positions[i].y) || !std::isfinite(positions[i].z))
-      throw Error(source + ": vertex " + std::to_string(i) + " is not finite");
-}
-
-void checkIndices(const std::vector<glm::uvec3>& triangles, std::size_t vertexCount, const std::string& source) {
-  for (std::size_t t = 0; t < triangles.size(); ++t)
-    for (int k = 0; k < 3; ++k)
-      if (triangles[t][k] >= vertexCount)
-        throw Error(source + ": triangle " + std::to_string(t) + " refers to vertex " +
-                    std::to_string(triangles[t][k]) + " but there are only " + std::to_string(vertexCount));
-}
-
 std::vector<glm::vec3> areaWeightedNormals(const ScalpMesh& mesh) {
   std::vector<glm::vec3> normals(mesh.positions.size(), glm::vec3(0.0f));
   for (const auto& t : mesh.triangles) {
@@ -36,6 +22,20 @@ std::vector<glm::vec3> areaWeightedNormals(const ScalpMesh& mesh) {
   return normals;
 }
 }  // namespace
+
+void checkMeshVertices(const std::vector<glm::vec3>& positions, const std::string& source) {
+  for (std::size_t i = 0; i < positions.size(); ++i)
+    if (!std::isfinite(positions[i].x) || !std::isfinite(positions[i].y) || !std::isfinite(positions[i].z))
+      throw Error(source + ": vertex " + std::to_string(i) + " is not finite");
+}
+
+void checkMeshIndices(const std::vector<glm::uvec3>& triangles, std::size_t vertexCount, const std::string& source) {
+  for (std::size_t t = 0; t < triangles.size(); ++t)
+    for (int k = 0; k < 3; ++k)
+      if (triangles[t][k] >= vertexCount)
+        throw Error(source + ": triangle " + std::to_string(t) + " refers to vertex " +
+                    std::to_string(triangles[t][k]) + " but there are only " + std::to_string(vertexCount));
+}
 
 // Relative threshold: a triangle whose doubled area is below (1e-6 * diagonal)^2 is degenerate.
 std::uint32_t dropDegenerateTriangles(const std::vector<glm::vec3>& positions, std::vector<glm::uvec3>& triangles) {
@@ -60,8 +60,8 @@ ScalpMesh buildScalpMesh(std::vector<glm::vec3> positions, std::vector<glm::uvec
   if (!normals.empty() && normals.size() != positions.size())
     throw Error(source + ": " + std::to_string(normals.size()) + " normals for " +
                 std::to_string(positions.size()) + " vertices");
-  checkFinite(positions, source);
-  checkIndices(triangles, positions.size(), source);
+  checkMeshVertices(positions, source);
+  checkMeshIndices(triangles, positions.size(), source);
   ScalpMesh mesh;
   mesh.positions = std::move(positions);
   mesh.triangles = std::move(triangles);

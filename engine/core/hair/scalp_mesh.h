@@ -25,6 +25,10 @@ struct ScalpMesh {
 ScalpMesh buildScalpMesh(std::vector<glm::vec3> positions, std::vector<glm::uvec3> triangles,
                          std::vector<glm::vec3> normals = {}, const std::string& source = "scalp");
 
+// hp::Error naming `source` for a vertex that is not finite, or a triangle index past vertexCount.
+void checkMeshVertices(const std::vector<glm::vec3>& positions, const std::string& source);
+void checkMeshIndices(const std::vector<glm::uvec3>& triangles, std::size_t vertexCount, const std::string& source);
+
 // Removes zero-area triangles (relative to the mesh size) and returns how many it removed.
 std::uint32_t dropDegenerateTriangles(const std::vector<glm::vec3>& positions, std::vector<glm::uvec3>& triangles);
 

@@ -85,6 +85,7 @@ namespace {
 struct CharacterParts {
   std::shared_ptr<const CharacterMesh> mesh;
   std::shared_ptr<const SdfGrid> grid;
+  float diagonal = 0.0f;  // of the mesh's rest box
 };
 
 // How far a skinned mesh's clips take its vertices past its rest box [lo, hi]: each clip at up to 33 times,
@@ -115,6 +116,7 @@ CharacterParts loadCharacter(const Scene& scene) {
   glm::vec3 lo(INFINITY), hi(-INFINITY);
   for (const auto& p : m.positions) lo = glm::min(lo, p), hi = glm::max(hi, p);
   const float longest = std::max(hi.x - lo.x, std::max(hi.y - lo.y, hi.z - lo.z));
+  parts.diagonal = glm::length(hi - lo);
   const float cell = scene.mesh->cell > 0.0f ? scene.mesh->cell : longest / 128.0f;
   const float reach = clipReach(m, lo, hi);  // a skinned mesh's clips may take it past its rest box
   if (!(reach <= 16.0f * longest))
@@ -141,9 +143,7 @@ void attachCharacter(HairAsset& asset, const CharacterParts& character, bool col
     asset.fittedCollider = false;
     asset.characterCollides = true;
   }
-  glm::vec3 lo(INFINITY), hi(-INFINITY);
-  for (const auto& p : m.positions) lo = glm::min(lo, p), hi = glm::max(hi, p);
-  asset.rootBindings = bindRoots(asset.guides.roots(), m.positions, m.triangles, 0.02f * glm::length(hi - lo));
+  asset.rootBindings = bindRoots(asset.guides.roots(), m.positions, m.triangles, 0.02f * character.diagonal);
   asset.character = character.mesh;
 }
 }  // namespace

@@ -17,6 +17,8 @@ namespace hp {
 SdfGrid meshSdf(std::span<const glm::vec3> positions, std::span<const glm::uvec3> triangles, float cell = 0.0f,
                 std::uint32_t padding = 4, std::size_t maxNodes = std::size_t(1) << 23);
 
+// The point of triangle abc nearest to p (by the region of the triangle's plane p projects into).
+glm::vec3 closestPointOnTriangle(const glm::vec3& p, const glm::vec3& a, const glm::vec3& b, const glm::vec3& c);
 // Distance from p to triangle abc.
 float pointTriangleDistance(const glm::vec3& p, const glm::vec3& a, const glm::vec3& b, const glm::vec3& c);
 }  // namespace hp

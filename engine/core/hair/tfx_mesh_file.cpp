@@ -37,24 +37,26 @@ class TokenLines {
   std::string where() const { return source_ + ": line " + std::to_string(line_) + ": "; }
 
  private:
-  // The next line without its comment (the cursor moves past it).
-  std::string_view nextLine() {
-    std::size_t end = text_.find('\n', at_);
+  // The line starting at at_ without its comment; `end` is where it ends.
+  std::string_view lineHere(std::size_t& end) const {
+    end = text_.find('\n', at_);
     if (end == std::string_view::npos) end = text_.size();
     std::string_view line = text_.substr(at_, end - at_);
     if (const auto hash = line.find('#'); hash != std::string_view::npos) line = line.substr(0, hash);
+    return line;
+  }
+  // The next line (the cursor moves past it).
+  std::string_view nextLine() {
+    std::size_t end = 0;
+    const std::string_view line = lineHere(end);
     at_ = end + 1;
     ++line_;
     return line;
   }
   // Past blank and comment-only lines.
   void skipBlank() {
-    while (at_ < text_.size()) {
-      std::size_t end = text_.find('\n', at_);
-      if (end == std::string_view::npos) end = text_.size();
-      std::string_view line = text_.substr(at_, end - at_);
-      if (const auto hash = line.find('#'); hash != std::string_view::npos) line = line.substr(0, hash);
-      if (line.find_first_not_of(" \t\r") != std::string_view::npos) return;
+    std::size_t end = 0;
+    while (at_ < text_.size() && lineHere(end).find_first_not_of(" \t\r") == std::string_view::npos) {
       at_ = end + 1;
       ++line_;
     }
