@@ -1,9 +1,9 @@
 // The radiance a hair fibre sends toward the camera (docs/THEORY.md §3-6), GLSL only, shared by the graphics
 // strand shader (strands.frag, per fragment) and the compute rasterizer (raster_shade.comp, per vertex).
 // Per light of the frame: S(L, V, T) cos(theta_i) x light x transmittance [+ the light the hair in front
-// scattered forward and the light the hair around scatters back, dual scattering]; then sky albedo x (ambient
-// x the sky's visibility (RENDER_HAIR_SKY_VISIBILITY, or with dual scattering MarschnerParams.skyVisibility)
-// + the skin's bounce of the slot-0 light, which the caller passes in: strand_bounce.comp gathers it along the
+// scattered forward and the light the hair around scatters back, dual scattering]; then sky albedo x (the
+// environment's light around the fibre x the sky's visibility (RENDER_HAIR_SKY_VISIBILITY, or with dual
+// scattering MarschnerParams.skyVisibility) + the skin's bounce of the slot-0 light, which the caller passes in: strand_bounce.comp gathers it along the
 // strands once a frame, bounce_samples.glsl interpolates it), all times the strand's lightness variation. The transmittance is the hair's (opacity maps of the light's shadow slot)
 // times the heads' (their depth map); a light without a slot is unshadowed.
 // The includer declares `frame` (RenderFrame), `marschner` (MarschnerParams), the LUT samplers lutM, lutN0,
@@ -11,6 +11,7 @@
 #ifndef HP_HAIR_SHADING_GLSL
 #define HP_HAIR_SHADING_GLSL
 #include "frame_shadows.glsl"
+#include "environment.glsl"
 
 // One light's direct term at a fibre point; `shadow` is what stands between them.
 vec3 hairLightRadiance(FrameLight light, LightSample ls, LightShadow shadow, vec3 V, vec3 T) {
@@ -56,13 +57,20 @@ vec3 hairRadiance(vec3 world, vec3 tangent, float colorScale, vec3 bounce) {
   } else if (frame.lightCount.x > 0u) {
     direct = hairLight(0u, world, V, T);
   }
-  // The ambient is a uniform white sky: an unoccluded fibre returns the model's sky albedo times its
-  // radiance, a fibre of a head of hair the mean fraction of it that reaches it (shared/render.h); with
-  // dual scattering more of it does, passed on forward by the hair on the way (hp::skyVisibility).
-  // The skin's bounce is treated the same way: the fibre's response to it is the sky albedo times its mean.
+  // The environment (docs/SHADING.md "Environment"): an unoccluded fibre under a uniform sky returns the
+  // model's sky albedo times its radiance, a fibre of a head of hair the mean fraction of it that reaches
+  // it (shared/render.h); with dual scattering more of it does, passed on forward by the hair on the way
+  // (hp::skyVisibility). Under an environment, the albedo's part from the viewer's side of the fibre takes
+  // the environment's mean radiance around the fibre's normal toward the viewer, the rest the mean around
+  // the opposite normal. The skin's bounce: the fibre's response to it is the sky albedo times its mean.
   bool dual = frame.options.z == RENDER_SCATTERING_DUAL && marschner.control.x == MARSCHNER_MODE_LUT_PHYSICAL;
   vec3 sky = dual ? marschner.skyVisibility.rgb : vec3(RENDER_HAIR_SKY_VISIBILITY);
-  vec3 ambient = marschner.skyAlbedo.rgb * (frame.hairColor.w * sky + bounce);
+  vec3 across = V - dot(V, T) * T;
+  vec3 side = normalize(cross(T, abs(T.y) < 0.9 ? vec3(0.0, 1.0, 0.0) : vec3(1.0, 0.0, 0.0)));
+  vec3 N = dot(across, across) > 1e-8 ? normalize(across) : side;  // seen end-on: any side will do
+  vec3 front = marschner.skyAlbedoFront.rgb;
+  vec3 environment = front * environmentLight(N) + (marschner.skyAlbedo.rgb - front) * environmentLight(-N);
+  vec3 ambient = environment * sky + marschner.skyAlbedo.rgb * bounce;
   return (direct + ambient) * colorScale;
 }
 #endif

@@ -1,6 +1,6 @@
 #version 460
 // The head: per light of the frame, diffuse with the paper's wrap term (wrap + N.L) / (1 + wrap) (L, cone
-// and distance scale from light.glsl), plus ambient; hair-coloured where hair grows. Each light's direct
+// and distance scale from light.glsl), plus the environment's irradiance / pi (environment.glsl); hair-coloured where hair grows. Each light's direct
 // term is shadowed by the hair (its slot's opacity maps, T = hairTransmittance(k alpha): exp(-k alpha) and,
 // with dual scattering, the light the hair passes on forward; looked up over a few texels) and by the heads
 // (their depth map): frame_shadows.glsl.
@@ -15,6 +15,7 @@ layout(location = 1) in float inScalp;
 layout(location = 2) in vec3 inWorld;
 layout(location = 0) out vec4 outColor;
 #include "frame_shadows.glsl"
+#include "environment.glsl"
 
 // 1: every light in a loop; 0: the first light only, without the loop (twice as fast on lavapipe, whose
 // loops run this body at half speed: compute/head/head_pass.h takes it for frames of one light).
@@ -39,5 +40,5 @@ void main() {
   } else if (frame.lightCount.x > 0u) {
     direct = headLight(frame.lights[0], N, wrap);
   }
-  outColor = vec4(albedo * (direct / 3.14159265 + frame.hairColor.w), 1.0);
+  outColor = vec4(albedo * (direct / 3.14159265 + environmentLight(N)), 1.0);
 }

@@ -6,6 +6,7 @@
 
 namespace hairpipe::convert {
 glm::vec3 vec(const Vec3& v) { return {v.x, v.y, v.z}; }
+Vec3 vec(const glm::vec3& v) { return {v.x, v.y, v.z}; }
 glm::dvec3 dvec(const std::array<double, 3>& v) { return {v[0], v[1], v[2]}; }
 
 glm::mat4 mat(const Mat4& m) {
@@ -84,6 +85,7 @@ hp::render::LookSettings look(const LookSettings& l) {
   h.skinColor = vec(l.skinColor);
   h.wrap = l.wrap;
   h.ambient = l.ambient;
+  for (std::size_t i = 0; i < h.environment.size(); ++i) h.environment[i] = vec(l.environment[i]);
   h.scattering = l.scattering;
   h.skinBounce = l.skinBounce;
   return h;

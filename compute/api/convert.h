@@ -15,6 +15,7 @@
 
 namespace hairpipe::convert {
 glm::vec3 vec(const Vec3& v);
+Vec3 vec(const glm::vec3& v);
 glm::dvec3 dvec(const std::array<double, 3>& v);
 glm::mat4 mat(const Mat4& m);
 Mat4 mat(const glm::mat4& m);

@@ -1,5 +1,5 @@
 // The helpers of hairpipe/settings.h and hairpipe/renderer.h that compute values: absorptionFromColor, makeView,
-// loadTfxBoneSkinning.
+// loadTfxBoneSkinning, environmentLighting, studioEnvironment.
 #include <cmath>
 #include <string>
 
@@ -8,6 +8,7 @@
 #include "compute/api/access.h"
 #include "compute/api/convert.h"
 #include "engine/core/hair/tfx_bone_file.h"
+#include "engine/core/shading/environment_lights.h"
 #include "engine/core/shading/material_color.h"
 
 namespace hairpipe {
@@ -31,6 +32,34 @@ Result<TfxBoneSkinning> loadTfxBoneSkinning(const std::string& path, std::uint32
       }
       out.skin.push_back(w);
     }
+    return out;
+  });
+}
+
+Result<EnvironmentLighting> environmentLighting(const EnvironmentImage& image, std::uint32_t maxLights) noexcept {
+  return guarded<EnvironmentLighting>("hairpipe::environmentLighting", [&] {
+    hp::EnvironmentMap map{image.width, image.height, {}, image.rotationDeg, image.intensity};
+    map.texels.reserve(image.texels.size());
+    for (const Vec3& t : image.texels) map.texels.push_back(convert::vec(t));
+    const hp::EnvironmentSplit split = hp::splitEnvironment(map, {maxLights});
+    EnvironmentLighting out;
+    for (const hp::EnvironmentLight& e : split.lights) {
+      Light l;
+      l.direction = convert::vec(glm::vec3(e.direction));
+      l.color = convert::vec(glm::vec3(e.color()));
+      l.intensity = float(e.intensity());
+      out.lights.push_back(l);
+    }
+    for (std::size_t i = 0; i < split.residual.size(); ++i) out.harmonics[i] = convert::vec(glm::vec3(split.residual[i]));
+    return out;
+  });
+}
+
+Result<EnvironmentImage> studioEnvironment() noexcept {
+  return guarded<EnvironmentImage>("hairpipe::studioEnvironment", [] {
+    const hp::EnvironmentMap map = hp::studioEnvironment();
+    EnvironmentImage out{map.width, map.height, {}, 0.0, 1.0};
+    for (const glm::vec3& t : map.texels) out.texels.push_back(convert::vec(t));
     return out;
   });
 }

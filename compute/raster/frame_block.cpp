@@ -3,11 +3,13 @@
 #include <cmath>
 
 #include "engine/core/error.h"
+#include "engine/core/shading/environment_sh.h"
 #include "shaders/shared/marschner.h"
 
 namespace hp::render {
 namespace {
 constexpr float kSpotInnerFraction = 0.8f;  // full radiance inside 80% of the half-angle (shaders/light.glsl)
+constexpr float kMaxEnvironmentCoefficient = 1e4f;  // a sky of radiance ~2800: far beyond any real light
 }  // namespace
 
 const char* scatteringName(Scattering s) { return s == Scattering::Dual ? "dual" : "single"; }
@@ -24,6 +26,10 @@ void LookSettings::validate() const {
   if (!(tipWidthFraction >= 0.0f && tipWidthFraction <= 1.0f)) throw Error("tip width fraction must be in [0, 1]");
   if (!(wrap >= 0.0f && wrap <= 1.0f)) throw Error("wrap must be in [0, 1]");
   if (!(ambient >= 0.0f && ambient <= 10.0f)) throw Error("ambient must be in [0, 10]");
+  for (const glm::vec3& c : environment)
+    for (int i = 0; i < 3; ++i)
+      if (!(std::abs(c[i]) <= kMaxEnvironmentCoefficient))
+        throw Error("environment coefficients must be finite and within +-10000");
   if (scattering != Scattering::Single && scattering != Scattering::Dual) throw Error("scattering must be Single or Dual");
   for (int i = 0; i < 3; ++i)
     if (!(skinColor[i] >= 0.0f && skinColor[i] <= 1.0f)) throw Error("skin colour components must be in [0, 1]");
@@ -56,6 +62,13 @@ void setLights(gpu::RenderFrame& f, const FrameLights& lights, bool skinBounce) 
   f.lightCount.y = bounceLight >= 0 ? std::uint32_t(bounceLight) : gpu::RENDER_MAX_LIGHTS;
   f.headBounce = glm::vec4(on ? 1.0f : 0.0f, view.extentWorld / float(gpu::RENDER_BOUNCE_RESOLUTION), 0.0f, 0.0f);
 }
+// The environment's SH plus the uniform ambient, convolved for the shaders (shared/environment.h).
+void setEnvironment(gpu::RenderFrame& f, const LookSettings& look) {
+  EnvironmentSH radiance = uniformEnvironmentSH(glm::dvec3(look.ambient));
+  for (std::size_t i = 0; i < radiance.size(); ++i) radiance[i] += glm::dvec3(look.environment[i]);
+  const EnvironmentSH convolved = cosineConvolved(radiance);
+  for (std::size_t i = 0; i < convolved.size(); ++i) f.environment[i] = glm::vec4(glm::vec3(convolved[i]), 0.0f);
+}
 }  // namespace
 
 gpu::RenderFrame makeRenderFrame(const CameraMatrices& camera, VkExtent2D extent, const FrameLights& lights,
@@ -72,7 +85,8 @@ gpu::RenderFrame makeRenderFrame(const CameraMatrices& camera, VkExtent2D extent
   f.previousViewProj = camera.proj * camera.view;  // no motion until setViewMotion says otherwise
   // The colour of one straight pass through the fibre (absorptionFromColor's inverse) as ambient albedo.
   const glm::dvec3 albedo = glm::exp(-2.0 * material.absorption);
-  f.hairColor = glm::vec4(glm::vec3(albedo), look.ambient);
+  f.hairColor = glm::vec4(glm::vec3(albedo), 0.0f);
+  setEnvironment(f, look);
   f.skinColor = glm::vec4(look.skinColor, look.wrap);
   if (look.scattering == Scattering::Dual)
     f.hairForward = glm::vec4(forwardAlbedo, gpu::MARSCHNER_FORWARD_DENSITY);

@@ -10,6 +10,7 @@
 #include "hairpipe/settings.h"
 #include "hairpipe_volk.h"
 
+#include <array>
 #include <optional>
 #include <string>
 
@@ -27,7 +28,11 @@ struct LookSettings {
   float tipWidthFraction = 0.35f;    // width at the tip relative to the root
   glm::vec3 skinColor{0.62f, 0.45f, 0.36f};
   float wrap = 0.5f;                 // the paper's wrap term for the head, [0, 1]
-  float ambient = 0.06f;             // constant fill light, relative to the hair/skin albedo
+  float ambient = 0.06f;             // a uniform sky's radiance, added to `environment`
+  // The environment's radiance as 9 RGB spherical-harmonic coefficients (engine/core/shading/environment_sh.h:
+  // projectEnvironment of an EnvironmentMap); all zero: none. It lights the hair and the skin, occluded like
+  // the uniform sky (docs/SHADING.md "Environment").
+  std::array<glm::vec3, 9> environment{};
   // Dual (default): add the light the hair in front of a fibre scattered forward onto it and the light the
   // hair around it scattered back (physical fibre model only; the others draw single scattering either
   // way). docs/SHADING.md "Multiple scattering", "Local back-scattering".

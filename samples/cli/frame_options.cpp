@@ -172,6 +172,7 @@ hp::RenderRequest makeRenderRequest(const FrameOptions& o, const CLI::App& cmd) 
     }
   }
   r.exposure = o.exposure;
+  applyEnvironmentOptions(o.environment, r);
   if (o.ambient) r.look.ambient = *o.ambient;
   if (o.scattering) {
     r.look.scattering = hp::render::parseScattering(*o.scattering);
@@ -280,6 +281,7 @@ void addFrameOptions(CLI::App& cmd, FrameOptions& o) {
       ->delimiter(',')->expected(3);
   cmd.add_flag("--lines", o.lines, "Draw strands as lines instead of ribbons");
   cmd.add_flag("--guides-only", o.guidesOnly, "Draw the smoothed guides only (no interpolation)");
+  addEnvironmentOptions(cmd, o.environment);
   addGroomOptions(cmd, o.groom);
   addHairGridOptions(cmd, o.grid);
   cmd.add_option("--bounce-samples", o.bounceSamples,

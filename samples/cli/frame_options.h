@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "samples/cli/environment_options.h"
 #include "samples/cli/groom_options.h"
 #include "samples/cli/hair_grid_options.h"
 #include "samples/cli/scene_options.h"
@@ -22,6 +23,7 @@ struct FrameOptions {
   SceneOptions scene;
   GroomOptions groom;
   HairGridOptions grid;
+  EnvironmentOptions environment;
   HairMaterial material;
   std::uint32_t frames = 90;
   std::optional<std::uint32_t> width, height, msaa, density;

@@ -9,6 +9,7 @@
 #include "engine/core/hair/input_file.h"
 #include "engine/core/shading/lut.h"
 #include "samples/tools/host/json_reader.h"
+#include "samples/tools/linear_image.h"
 #include "samples/tools/obj_albedo_mesh.h"
 #include "samples/tools/reference/fibre.h"
 #include "samples/tools/render_targets.h"
@@ -75,7 +76,7 @@ nlohmann::json materialJson(const HairMaterial& m) {
 
 nlohmann::json frameJson(const ExportedFrame& f) {
   const auto& c = f.camera;
-  return {{"format", kFormat}, {"version", kVersion}, {"units", "metres"}, {"up", "+y"},
+  nlohmann::json j = {{"format", kFormat}, {"version", kVersion}, {"units", "metres"}, {"up", "+y"},
           {"files", {{"strands", FrameExportFiles::strands}, {"head", FrameExportFiles::head}}},
           {"camera", {{"position", vec(c.position)}, {"target", vec(c.target)}, {"up", vec(c.up)},
                       {"fov_y_deg", c.fovYDeg}, {"width", c.width}, {"height", c.height}}},
@@ -85,6 +86,42 @@ nlohmann::json frameJson(const ExportedFrame& f) {
           {"skin", {{"color", vec(f.skinColor)}, {"wrap", f.wrap}}},
           {"environment_radiance", f.environment}, {"background_radiance", vec(f.background)},
           {"exposure", f.exposure}, {"tonemap", "filmic (shaders/shared/tonemap.h) then sRGB"}};
+  if (f.environmentMap)
+    j["environment_map"] = {{"file", FrameExportFiles::environment}, {"intensity", f.environmentMap->intensity},
+                            {"rotation_deg", f.environmentMap->rotationDeg}};
+  return j;
+}
+
+// The environment map's texels as a PFM (intensity and rotation stay in frame.json).
+LinearImage environmentImage(const EnvironmentMap& map) {
+  LinearImage image(map.width, map.height, 3);
+  for (std::size_t i = 0; i < map.texels.size(); ++i)
+    for (int c = 0; c < 3; ++c) image.values[3 * i + c] = map.texels[i][c];
+  return image;
+}
+
+// "environment_map" of frame.json, with its image from the export folder.
+std::shared_ptr<const EnvironmentMap> readEnvironmentMap(JsonObject o, const std::filesystem::path& dir) {
+  std::string file;
+  auto map = std::make_shared<EnvironmentMap>();
+  o.read("file", file);
+  o.read("intensity", map->intensity);
+  o.read("rotation_deg", map->rotationDeg);
+  o.finish();
+  if (file != FrameExportFiles::environment) o.fail("file", "expected \"environment.pfm\"");
+  const LinearImage image = readPfm(dir / file);
+  if (image.channels != 3) o.fail("file", "the environment image must have 3 channels");
+  map->width = image.width;
+  map->height = image.height;
+  map->texels.resize(std::size_t(image.width) * image.height);
+  for (std::size_t i = 0; i < map->texels.size(); ++i)
+    map->texels[i] = {image.values[3 * i], image.values[3 * i + 1], image.values[3 * i + 2]};
+  try {
+    map->validate();
+  } catch (const Error& e) {
+    o.fail("file", e.what());
+  }
+  return map;
 }
 
 // One light at `pointer`; "shadows" is absent from version 1 (every light cast shadows then).
@@ -210,6 +247,7 @@ void readFrameJson(ExportedFrame& f, const std::filesystem::path& path) {
   if (!inUnitRange(glm::vec3(f.wrap))) skin.fail("wrap", "must be in [0, 1]");
   skin.finish();
   o.read("environment_radiance", f.environment);
+  if (auto map = o.object("environment_map")) f.environmentMap = readEnvironmentMap(*map, path.parent_path());
   o.read("background_radiance", f.background);
   o.read("exposure", f.exposure);
   o.finish();
@@ -255,6 +293,7 @@ ExportedFrame makeExportedFrame(const RenderRequest& request, const HairAsset& a
   f.skinColor = request.look.skinColor;
   f.wrap = request.look.wrap;
   f.environment = request.look.ambient;
+  f.environmentMap = request.environment;
   f.background = kBackgroundRadiance;
   f.exposure = request.exposure;
   f.lights = scene.lights;
@@ -269,6 +308,7 @@ ExportedFrame makeExportedFrame(const RenderRequest& request, const HairAsset& a
 void writeFrameExport(const std::filesystem::path& dir, const ExportedFrame& frame) {
   writeHairFile(dir / FrameExportFiles::strands, frame.strands);
   writeAlbedoObj(dir / FrameExportFiles::head, {frame.headPositions, frame.headNormals, frame.headAlbedo, frame.headIndices});
+  if (frame.environmentMap) writePfm(dir / FrameExportFiles::environment, environmentImage(*frame.environmentMap));
   const std::string text = frameJson(frame).dump(2) + "\n";
   writeFileAtomically(dir / FrameExportFiles::json, std::as_bytes(std::span(text.data(), text.size())));
 }

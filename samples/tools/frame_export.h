@@ -11,12 +11,14 @@
 #include <glm/glm.hpp>
 
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "engine/core/hair/hair_asset.h"
 #include "engine/core/hair/hair_file.h"
 #include "engine/core/hair/scene.h"
+#include "engine/core/shading/environment_map.h"
 #include "samples/tools/frame_capture.h"
 #include "samples/tools/render_job.h"
 
@@ -42,6 +44,9 @@ struct ExportedFrame {
   glm::vec3 skinColor{1.0f};
   float wrap = 0.0f;                     // the real-time head's wrap term (the reference's skin is Lambert)
   float environment = 0.0f;              // uniform white sky radiance = the real-time ambient strength
+  // The environment light, added to the uniform sky (environment.pfm beside frame.json, its intensity and
+  // rotation in the JSON's "environment_map"); null: none.
+  std::shared_ptr<const EnvironmentMap> environmentMap;
   glm::vec3 background{0.0f};            // radiance of camera rays that hit nothing
   float exposure = 1.0f;
 
@@ -57,6 +62,7 @@ struct FrameExportFiles {
   static constexpr const char* strands = "strands.hair";
   static constexpr const char* head = "head.obj";
   static constexpr const char* json = "frame.json";
+  static constexpr const char* environment = "environment.pfm";
   static constexpr const char* realtime = "realtime.pfm";
   static constexpr const char* realtimeHairAlpha = "realtime_hair_alpha.pfm";
   static constexpr const char* realtimeMotion = "realtime_motion.pfm";  // with --motion-vectors

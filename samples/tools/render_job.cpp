@@ -47,7 +47,7 @@ struct RenderSession {
     DrawView v;
     v.extent = renderer.extent();
     v.camera = orbitCamera(request.scene.camera, float(v.extent.width) / float(v.extent.height));
-    v.lights = request.scene.lights;
+    v.lights = frameLights(request);
     v.lines = request.lines;
     v.headToWorld = motion.to;
     return v;
@@ -105,7 +105,7 @@ HairSystemSettings systemSettings(const RenderRequest& r, const hairpipe::Attach
   s.formats = formats;
   s.look = r.look;
   s.opacity = r.opacity;
-  s.shadowedLights = shadowSlotsFor(r.scene.lights);
+  s.shadowedLights = shadowSlotsFor(frameLights(r));
   s.motionVectors = r.motionVectors;
   s.raster = r.scene.render.raster;
   s.rasterSettings = r.rasterSettings;
@@ -115,7 +115,13 @@ HairSystemSettings systemSettings(const RenderRequest& r, const hairpipe::Attach
 void validateRequest(const RenderRequest& r) {
   if (r.settleFrames > 100000) throw Error("settle frames must be at most 100000");
   if (!(r.exposure > 0.0f) || !std::isfinite(r.exposure)) throw Error("exposure must be a positive number");
-  validateLights(r.scene.lights);  // also catches a hand-built LightSpec that skipped the scene parser
+  validateLights(frameLights(r));  // also catches a hand-built LightSpec that skipped the scene parser
+}
+
+std::vector<LightSpec> frameLights(const RenderRequest& request) {
+  std::vector<LightSpec> lights = request.scene.lights;
+  lights.insert(lights.end(), request.environmentLights.begin(), request.environmentLights.end());
+  return lights;
 }
 
 namespace {

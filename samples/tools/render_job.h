@@ -4,10 +4,12 @@
 // the last frame in full (simulate, tessellate, interpolate, head, hair, tonemap) with GPU timestamps
 // per pass (bounds and opacity included when shadows are on) and reads the image back. Blocking; for tools and tests, not for a frame loop.
 #include <functional>
+#include <memory>
 #include <optional>
 #include <vector>
 
 #include "engine/core/hair/hair_file.h"
+#include "engine/core/shading/environment_map.h"
 #include "samples/tools/hair_system.h"
 #include "samples/tools/frame_capture.h"
 #include "samples/tools/opacity_capture.h"
@@ -28,6 +30,12 @@ struct RenderRequest {
   hairpipe::LodSettings lod;
   float exposure = 1.0f;
   render::LookSettings look;
+  // The environment light whose SH look.environment holds, kept whole for the frame export (the path-traced
+  // reference renders it texel for texel); null: none (the uniform look.ambient alone).
+  std::shared_ptr<const EnvironmentMap> environment;
+  // The environment's bright regions as lights, drawn after the scene's in the real-time frame only (the
+  // reference traces the map itself). frameLights gives both.
+  std::vector<LightSpec> environmentLights;
   render::OpacitySettings opacity;
   compute::RasterSettings rasterSettings;  // the compute raster's tile budget (scene.render.raster picks the path)
   bool captureOpacity = false;      // read shadow slot 0's opacity maps and light framing back (RenderResult::opacity)
@@ -37,6 +45,9 @@ struct RenderRequest {
   // rendered frame's hair motion is that of its own simulation step; captureFrame reads it back.
   bool motionVectors = false;
 };
+
+// The real-time frame's lights: the scene's, then the environment's.
+std::vector<LightSpec> frameLights(const RenderRequest& request);
 
 struct RenderResult {
   std::uint32_t width = 0;

@@ -257,6 +257,8 @@ DrawView Viewer::makeView() {
   if (!tunables_.lights.empty()) state_.steer(tunables_.lights.front());  // the light drag turns the first
   v.lights.clear();
   for (const EditedLight& l : tunables_.lights) v.lights.push_back(l.light);
+  for (const LightSpec& l : options_.request.environmentLights)  // the panel's lights first, up to the limit
+    if (v.lights.size() < kMaxSceneLights) v.lights.push_back(l);
   v.headToWorld = head_;
   return v;
 }

@@ -91,6 +91,8 @@ struct MarschnerParams {
   vec4 meanRTT[MARSCHNER_SPREAD_ENTRIES];        // x = mean N_R, yzw = mean N_TT (rgb), at theta_r
   vec4 meanTRT[MARSCHNER_SPREAD_ENTRIES];        // rgb = mean (N_TRT + N_res), w = 0, at theta_r
   vec4 backScatter[MARSCHNER_SPREAD_ENTRIES];    // rgb = A_b (local back-scattering) of the light's theta, w = 0
+  vec4 skyAlbedoFront;  // rgb = the part of skyAlbedo from the viewer's side of the fibre (incoming azimuths
+                        // within 90 degrees of the outgoing one; hp::skyAlbedoOver), w = 0
 };
 
 // Pseudo-angle of a in [0, pi/2] from cos(2a): sin(a)/sqrt2 below pi/4, 1 - cos(a)/sqrt2 above.

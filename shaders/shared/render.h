@@ -6,6 +6,7 @@
 #define HP_SHARED_RENDER_H
 #include "common.h"
 #include "opacity.h"
+#include "environment.h"
 
 HP_BEGIN
 // Set 0 of the strand and head pipelines.
@@ -86,7 +87,7 @@ struct RenderFrame {
   mat4 view;
   mat4 proj;
   vec4 cameraPosition;   // xyz world; w = world size of one pixel at unit view depth
-  vec4 hairColor;        // rgb exp(-2 sigma_a) (the scalp's tint); w = ambient (white sky) radiance
+  vec4 hairColor;        // rgb exp(-2 sigma_a) (the scalp's tint); w = 0
   vec4 skinColor;        // rgb albedo of the head; w = wrap in [0, 1]
   vec4 strand;           // x = width at the root (scene units), y = width at the tip / root, z = shadow k
                          // (T = exp(-k alpha)), w = shadow bias in slices (lookups move this far toward the light)
@@ -104,6 +105,9 @@ struct RenderFrame {
   vec4 hairForward;       // with dual scattering on the physical model: rgb = the hair's mean forward albedo
                           // (MarschnerParams.forwardMean), w = the forward density d_f; else 0: what the light
                           // to and from the skin keeps through the hair (frame_shadows.glsl hairTransmittance)
+  vec4 environment[ENV_SH_COEFFICIENTS];  // rgb = the environment's radiance SH convolved with the clamped
+                                          // cosine over pi (shared/environment.h), the uniform ambient in
+                                          // the first; w = 0
 };
 
 struct StrandDrawPush {
@@ -137,7 +141,8 @@ static_assert(offsetof(hp::gpu::RenderFrame, lights) == 240);
 static_assert(offsetof(hp::gpu::RenderFrame, shadows) == 752);
 static_assert(offsetof(hp::gpu::RenderFrame, previousViewProj) == 1072);
 static_assert(offsetof(hp::gpu::RenderFrame, hairForward) == 1152);
-static_assert(sizeof(hp::gpu::RenderFrame) == 1168);
+static_assert(offsetof(hp::gpu::RenderFrame, environment) == 1168);
+static_assert(sizeof(hp::gpu::RenderFrame) == 1312);
 static_assert(sizeof(hp::gpu::FrameLight) == 64);
 static_assert(sizeof(hp::gpu::FrameShadow) == 80);
 static_assert(sizeof(hp::gpu::StrandBouncePush) == 16);

@@ -1,16 +1,19 @@
 // The frame export's lights (docs/FRAME_EXPORT.md), on the host: version 2 writes "lights", a list of up to 8
 // (directional, spot, point, each with its shadows switch) that reads back bit for bit; a version 1
-// frame.json's single "light" still reads as one light; a bad or extra light is refused naming its place.
+// frame.json's single "light" still reads as one light; a bad or extra light is refused naming its place. The
+// environment map travels beside them.
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
 
 #include "engine/core/error.h"
 #include "samples/tools/frame_export.h"
+#include "samples/tools/linear_image.h"
 #include "tests/support/cli_runner.h"
 
 using namespace hp;
@@ -86,6 +89,36 @@ TEST(FrameExportLights, AListOfLightsRoundTripsBitForBit) {
   f.lights.clear();  // no light at all: the sky alone
   writeFrameExport(dir, f);
   EXPECT_TRUE(readFrameExport(dir).lights.empty());
+  std::filesystem::remove_all(dir);
+}
+
+// The environment map travels as environment.pfm beside frame.json, its intensity and rotation in the JSON;
+// a map whose file is missing or holds a negative texel is refused naming "environment_map".
+TEST(FrameExportLights, TheEnvironmentMapRoundTripsAndABadOneIsRefused) {
+  const auto dir = test::freshTempPath("hairpipe_frame_export_environment");
+  std::filesystem::create_directories(dir);
+  ExportedFrame f = tinyFrame();
+  auto map = std::make_shared<EnvironmentMap>(studioEnvironment(16, 8));
+  map->intensity = 1.5;
+  map->rotationDeg = 40.0;
+  f.environmentMap = map;
+  writeFrameExport(dir, f);
+  const ExportedFrame back = readFrameExport(dir);
+  ASSERT_TRUE(back.environmentMap);
+  EXPECT_EQ(back.environmentMap->texels, map->texels);
+  EXPECT_EQ(back.environmentMap->width, 16u);
+  EXPECT_EQ(back.environmentMap->intensity, 1.5);
+  EXPECT_EQ(back.environmentMap->rotationDeg, 40.0);
+  LinearImage negative(2, 1, 3);
+  negative.values[4] = -1.0f;
+  writePfm(dir / FrameExportFiles::environment, negative);
+  EXPECT_NE(readError(dir).find("environment_map"), std::string::npos) << readError(dir);
+  std::filesystem::remove(dir / FrameExportFiles::environment);
+  EXPECT_NE(readError(dir).find("environment.pfm"), std::string::npos) << readError(dir);
+  f.environmentMap = nullptr;  // none: no key, no file
+  writeFrameExport(dir, f);
+  EXPECT_FALSE(readJson(dir / FrameExportFiles::json).contains("environment_map"));
+  EXPECT_FALSE(readFrameExport(dir).environmentMap);
   std::filesystem::remove_all(dir);
 }
 

@@ -11,15 +11,19 @@
 //    the tubes as drawn are in their way (tubes the ray starts inside do not block);
 //  - one fibre under the sun returns S(L, V, T) cos(theta_i) E at every pixel;
 //  - white non-absorbing fibres in a dense tuft under a uniform sky, with the sky as background, return
-//    the sky everywhere (the whole tracer's furnace: many bounces, roulette, fibre-to-fibre rays).
+//    the sky everywhere (the whole tracer's furnace: many bounces, roulette, fibre-to-fibre rays);
+//  - an environment map of constant radiance renders as the uniform sky, and under a map linear in direction
+//    the Lambertian plane returns the exact irradiance / pi.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <limits>
+#include <memory>
 #include <vector>
 
+#include "engine/core/shading/environment_map.h"
 #include "engine/core/shading/fibre_model.h"
 #include "samples/tools/reference/path_tracer.h"
 #include "samples/tools/reference/reference_scene.h"
@@ -189,6 +193,42 @@ TEST(ReferenceTracer, LambertPlaneUnderAUniformSkyReturnsAlbedoTimesSky) {
   const auto r = reference::traceReference(f, {4, 1, 7, 2, nullptr});
   for (std::uint32_t c = 0; c < 3; ++c)
     EXPECT_NEAR(r.radiance.at(3, 5, c), f.headAlbedo[0][c] * 0.7, 1e-6);
+}
+
+// An environment map of constant radiance is the uniform sky of that radiance: the same image, bit for bit.
+TEST(ReferenceTracer, AUniformEnvironmentMapRendersAsTheUniformSky) {
+  ExportedFrame sky = fibreFrame();
+  sky.environment = 0.6f;
+  ExportedFrame mapped = sky;
+  mapped.environment = 0.0f;
+  mapped.environmentMap = std::make_shared<EnvironmentMap>(uniformEnvironment(glm::vec3(0.6f)));
+  const auto a = reference::traceReference(sky, {16, 4, 5, 2, nullptr});
+  const auto b = reference::traceReference(mapped, {16, 4, 5, 2, nullptr});
+  EXPECT_EQ(a.radiance.values, b.radiance.values);
+  EXPECT_GT(a.radiance.at(1, 1, 0), 0.0f);
+}
+
+// Under an environment whose radiance is linear in direction, 1 + 0.6 (d . w), the Lambertian plane (normal
+// +z) returns albedo x (1 + 0.4 d.z), the irradiance / pi: the escaping rays look the map up in their own
+// direction. Measured (16,384 cosine-weighted samples per channel): within 0.2%; 1% is ~4 standard errors.
+TEST(ReferenceTracer, LambertPlaneUnderALinearEnvironmentReturnsItsIrradiance) {
+  ExportedFrame f = lambertFrame();
+  const glm::dvec3 axis = glm::normalize(glm::dvec3(0.3, 0.5, 0.8));
+  auto map = std::make_shared<EnvironmentMap>();
+  map->width = 256;
+  map->height = 128;
+  for (std::uint32_t y = 0; y < 128; ++y)
+    for (std::uint32_t x = 0; x < 256; ++x)
+      map->texels.push_back(glm::vec3(1.0 + 0.6 * glm::dot(axis, map->direction((x + 0.5) / 256.0, (y + 0.5) / 128.0))));
+  f.environmentMap = map;
+  const auto r = reference::traceReference(f, {256, 1, 9, 2, nullptr});
+  const double irradianceOverPi = 1.0 + 0.4 * axis.z;
+  for (std::uint32_t c = 0; c < 3; ++c) {
+    double mean = 0.0;
+    for (std::uint32_t y = 0; y < 8; ++y)
+      for (std::uint32_t x = 0; x < 8; ++x) mean += r.radiance.at(x, y, c) / 64.0;
+    EXPECT_NEAR(mean, f.headAlbedo[0][c] * irradianceOverPi, 0.01 * f.headAlbedo[0][c] * irradianceOverPi) << c;
+  }
 }
 
 // The traced fibre's mean radiance under a sky of radiance 1 against the quadrature, per channel.

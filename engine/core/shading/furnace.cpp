@@ -11,11 +11,11 @@ namespace hp {
 namespace {
 constexpr double kPi = 3.14159265358979323846;
 
-glm::dvec3 marschnerFurnace(double sinThetaR, const HairMaterial& m, int panels) {
+glm::dvec3 marschnerFurnaceOver(double sinThetaR, const HairMaterial& m, double phiLo, double phiHi, int panels) {
   glm::dvec3 sum(0.0);
   shading::gaussLegendre(-0.5 * kPi, 0.5 * kPi, panels, [&](double ti, double wt) {
     double s = std::sin(ti), c = std::cos(ti);
-    shading::gaussLegendre(0.0, kPi, panels, [&](double phi, double wp) {
+    shading::gaussLegendre(phiLo, phiHi, panels, [&](double phi, double wp) {
       sum += 2.0 * wt * wp * c * c * marschnerS(s, sinThetaR, std::cos(phi), m);
     });
   });
@@ -41,18 +41,25 @@ glm::dvec3 physicalFurnaceOver(double sinThetaR, const HairMaterial& m, double p
 }
 
 glm::dvec3 whiteFurnace(FibreModel model, double sinThetaR, const HairMaterial& m, int panels) {
-  m.validate();
   // N is even in phi: int over [-pi, pi] = 2 int over [0, pi].
-  return model == FibreModel::Physical ? physicalFurnaceOver(sinThetaR, m, 0.0, kPi, panels)
-                                       : marschnerFurnace(sinThetaR, m, panels);
+  return whiteFurnaceOver(model, sinThetaR, m, 0.0, kPi, panels);
 }
 
-glm::dvec3 skyAlbedo(FibreModel model, const HairMaterial& m) {
+glm::dvec3 whiteFurnaceOver(FibreModel model, double sinThetaR, const HairMaterial& m, double phiLo, double phiHi,
+                            int panels) {
+  m.validate();
+  return model == FibreModel::Physical ? physicalFurnaceOver(sinThetaR, m, phiLo, phiHi, panels)
+                                       : marschnerFurnaceOver(sinThetaR, m, phiLo, phiHi, panels);
+}
+
+glm::dvec3 skyAlbedoOver(FibreModel model, const HairMaterial& m, double phiLo, double phiHi) {
   const int panels = model == FibreModel::Physical ? 16 : 4;
   glm::dvec3 sum(0.0);
   shading::gaussLegendre(-0.5 * kPi, 0.5 * kPi, 2, [&](double thetaR, double w) {
-    sum += 0.5 * w * std::cos(thetaR) * whiteFurnace(model, std::sin(thetaR), m, panels);
+    sum += 0.5 * w * std::cos(thetaR) * whiteFurnaceOver(model, std::sin(thetaR), m, phiLo, phiHi, panels);
   });
   return sum;
 }
+
+glm::dvec3 skyAlbedo(FibreModel model, const HairMaterial& m) { return skyAlbedoOver(model, m, 0.0, kPi); }
 }  // namespace hp

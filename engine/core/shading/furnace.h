@@ -18,6 +18,11 @@
 namespace hp {
 glm::dvec3 whiteFurnace(FibreModel model, double sinThetaR, const HairMaterial& m, int panels = 64);
 
+// W restricted to incoming azimuths |phi| in [phiLo, phiHi] relative to the outgoing one: [0, pi/2] is the
+// light from the viewer's side of the fibre (R and TRT mostly), [pi/2, pi] from behind it (TT).
+glm::dvec3 whiteFurnaceOver(FibreModel model, double sinThetaR, const HairMaterial& m, double phiLo, double phiHi,
+                            int panels);
+
 // The physical model's W restricted to incoming azimuths |phi| in [phiLo, phiHi] (whiteFurnace: [0, pi]);
 // [pi/2, pi] is the light one fibre scatters on forward (engine/core/shading/multiple_scattering.h).
 glm::dvec3 physicalFurnaceOver(double sinThetaR, const HairMaterial& m, double phiLo, double phiHi, int panels);
@@ -31,4 +36,8 @@ std::array<glm::dvec3, 3> physicalLobeFurnaceOver(double sinThetaR, const HairMa
 // radiance; the reference's sky returns exactly this from an unoccluded fibre. Quadrature: 16 panels
 // for the physical model (~5 ms), 4 for Marschner (~40 ms; within 0.5% of 64 panels, default brown).
 glm::dvec3 skyAlbedo(FibreModel model, const HairMaterial& m);
+// The part of it from incoming azimuths |phi| in [phiLo, phiHi] (skyAlbedo: [0, pi]): what an environment's
+// light from the viewer's side ([0, pi/2]) and from behind the fibre ([pi/2, pi]) is multiplied by
+// (docs/SHADING.md "Environment").
+glm::dvec3 skyAlbedoOver(FibreModel model, const HairMaterial& m, double phiLo, double phiHi);
 }  // namespace hp

@@ -3,6 +3,7 @@
 #include "engine/core/error.h"
 #include "engine/core/shading/fibre_model.h"
 #include "engine/core/shading/furnace.h"
+#include "engine/core/shading/math_constants.h"
 #include "engine/core/shading/multiple_scattering.h"
 #include "shaders/shared/brdf_eval.h"
 
@@ -36,6 +37,7 @@ gpu::MarschnerParams marschnerGpuParams(const MarschnerLut& lut) {
   }
   p.control = glm::uvec4(gpuModeOf(lut.mode), 0u, 0u, 0u);
   p.skyAlbedo = glm::vec4(glm::vec3(skyAlbedo(fibreModelOf(lut.mode), m)), 0.0f);
+  p.skyAlbedoFront = glm::vec4(glm::vec3(skyAlbedoOver(fibreModelOf(lut.mode), m, 0.0, 0.5 * shading::kPi)), 0.0f);
   if (lut.mode != LutMode::Physical) return p;
   const MultipleScatteringTables& t = lut.multipleScattering;
   if (t.forwardAlbedo.size() != gpu::MARSCHNER_SPREAD_ENTRIES)

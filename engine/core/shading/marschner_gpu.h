@@ -1,9 +1,10 @@
 #pragma once
 // Contract: fills the GPU block gpu::MarschnerParams (shaders/shared/marschner.h) from a material and
-// the LUT built for it, and pins that block's std140/std430 layout with static_asserts (8 + 4 x 32 vec4s,
+// the LUT built for it, and pins that block's std140/std430 layout with static_asserts (8 + 4 x 32 + 1 vec4s,
 // every member 16-byte aligned, identical in both layouts). The mode written into control.x is the
 // LUT's mode; the scale vectors are the textures' per-channel factors (1 where unused); skyAlbedo is
-// hp::skyAlbedo of the LUT's fibre model (the ambient term's albedo); the multiple-scattering tables are
+// hp::skyAlbedo of the LUT's fibre model (the ambient term's albedo), skyAlbedoFront its part from the viewer's
+// side (hp::skyAlbedoOver over [0, pi/2]); the multiple-scattering tables are
 // hp::multipleScatteringTables for the physical mode and zero for the others.
 #include <cstddef>
 
@@ -11,7 +12,8 @@
 #include "shaders/shared/marschner.h"
 
 namespace hp {
-static_assert(sizeof(gpu::MarschnerParams) == 160 + 4 * 16 * gpu::MARSCHNER_SPREAD_ENTRIES);
+static_assert(sizeof(gpu::MarschnerParams) == 160 + 4 * 16 * gpu::MARSCHNER_SPREAD_ENTRIES + 16);
+static_assert(offsetof(gpu::MarschnerParams, skyAlbedoFront) == 160 + 4 * 16 * gpu::MARSCHNER_SPREAD_ENTRIES);
 static_assert(offsetof(gpu::MarschnerParams, absorption) == 0);
 static_assert(offsetof(gpu::MarschnerParams, longitudinal) == 16);
 static_assert(offsetof(gpu::MarschnerParams, caustic) == 32);

@@ -93,7 +93,11 @@ struct LookSettings {
   float tipWidthFraction = 0.35f;    // width at the tip relative to the root, [0, 1]
   Vec3 skinColor{0.62f, 0.45f, 0.36f};  // the head's albedo, linear RGB in [0, 1]
   float wrap = 0.5f;                 // the head's wrap lighting, [0, 1]
-  float ambient = 0.06f;             // uniform sky radiance
+  float ambient = 0.06f;             // uniform sky radiance, added to `environment`
+  // The environment's radiance (what environmentLighting leaves for the ambient term) as 9 RGB spherical-
+  // harmonic coefficients of order <= 2 in world axes (the basis of docs/SHADING.md "Environment"); all zero:
+  // none. It lights the hair and the head like the uniform sky, by direction.
+  std::array<Vec3, 9> environment{};
   Scattering scattering = Scattering::Dual;  // Dual: physical model only
   bool skinBounce = true;            // sunlight the skin reflects onto the hair
 };
@@ -246,6 +250,27 @@ struct Light {
   float range = 0.0f;     // spot, point: (range / distance)^2 falloff; 0 = none
   bool shadows = true;    // casts hair shadows while a shadow slot is left
 };
+
+// An environment light as an equirectangular image of linear RGB radiance: row 0 straight up (+y), the last row
+// straight down, the middle column looking along +z; turned about +y by rotationDeg (counter-clockwise seen
+// from above) and scaled by intensity.
+struct EnvironmentImage {
+  std::uint32_t width = 0, height = 0;  // each 1..16384
+  std::vector<Vec3> texels;             // width x height, row-major, finite and >= 0
+  double rotationDeg = 0.0;
+  double intensity = 1.0;               // [0, 1000]
+};
+
+// What the renderer draws of an environment: its bright regions (up to maxLights, [0, 4]) as shadowed
+// directional lights, to be added to the frame's lights, and the rest as LookSettings::environment. The
+// path-traced reference renders the image itself; docs/SHADING.md "Environment" has the split and its accuracy.
+struct EnvironmentLighting {
+  std::vector<Light> lights;         // brightest first
+  std::array<Vec3, 9> harmonics{};   // for LookSettings::environment
+};
+Result<EnvironmentLighting> environmentLighting(const EnvironmentImage& image, std::uint32_t maxLights = 2) noexcept;
+// The built-in studio: a dim room, a soft box to the front left, a rim light above and behind (256 x 128).
+Result<EnvironmentImage> studioEnvironment() noexcept;
 
 // One camera of a frame. view: world to view space (right-handed, looking down -Z); projection: view to
 // clip space with depth in [0, 1] and y up (OpenGL-style, e.g. glm::perspectiveRH_ZO: hairpipe's draws

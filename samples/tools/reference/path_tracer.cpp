@@ -62,7 +62,7 @@ class Tracer {
       const SceneHit hit = scene_.intersect(origin, dir, 0.0f);
       if (vertex == 1) hairFirst = hit.kind == SceneHit::Kind::Fibre;
       if (hit.kind == SceneHit::Kind::None) {
-        radiance += throughput * (vertex == 1 ? glm::dvec3(frame_.background) : glm::dvec3(frame_.environment));
+        radiance += throughput * (vertex == 1 ? glm::dvec3(frame_.background) : skyRadiance(dir));
         break;
       }
       if (vertex > settings_.bounces) break;  // the last vertex's continuation only gathers the sky
@@ -87,6 +87,13 @@ class Tracer {
   }
 
  private:
+  // What a continuation ray that escapes brings: the uniform sky plus the environment map's texels.
+  glm::dvec3 skyRadiance(const glm::dvec3& dir) const {
+    glm::dvec3 sky(frame_.environment);
+    if (frame_.environmentMap) sky += frame_.environmentMap->radiance(dir);
+    return sky;
+  }
+
   // Stratified over the pixel when spp is a square (n x n cells, one jittered sample each): strands
   // thinner than a pixel make coverage the main noise, and strata cut it; else uniform.
   glm::dvec2 pixelOffset(std::uint32_t sample, Sampler& rng) const {

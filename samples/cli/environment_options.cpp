@@ -1,0 +1,58 @@
+#include "samples/cli/environment_options.h"
+
+#include <cmath>
+
+#include "engine/core/error.h"
+#include "engine/core/shading/environment_lights.h"
+#include "samples/tools/environment_file.h"
+
+namespace hp::cli {
+namespace {
+std::shared_ptr<const EnvironmentMap> environmentOf(const EnvironmentOptions& o) {
+  if (!(o.intensity >= 0.0 && o.intensity <= 1000.0)) throw Error("--environment-intensity must be in [0, 1000]");
+  if (!std::isfinite(o.rotationDeg) || std::abs(o.rotationDeg) > 1e6)
+    throw Error("--environment-rotation must be a finite angle in degrees");
+  if (o.source == "none") return nullptr;
+  EnvironmentMap map = o.source == "studio" ? studioEnvironment() : readEnvironmentFile(o.source);
+  map.intensity = o.intensity;
+  map.rotationDeg = std::fmod(o.rotationDeg, 360.0);
+  map.validate();
+  return std::make_shared<const EnvironmentMap>(std::move(map));
+}
+
+// A shadowed directional light of the environment's.
+LightSpec directionalLight(const EnvironmentLight& e) {
+  LightSpec l;
+  l.direction = glm::vec3(e.direction);
+  l.intensity = float(e.intensity());
+  l.color = glm::vec3(e.color());
+  l.shadows = true;
+  return l;
+}
+}  // namespace
+
+void addEnvironmentOptions(CLI::App& cmd, EnvironmentOptions& o) {
+  cmd.add_option("--environment", o.source,
+                 "Environment light: none (the uniform --ambient sky alone), studio (built in: a soft box front left, a "
+                 "rim light above and behind) or an equirectangular FILE.hdr / FILE.pfm of linear radiance (row 0 up, "
+                 "the middle column along +z); given, --ambient defaults to 0 (default none)");
+  cmd.add_option("--environment-intensity", o.intensity, "Environment radiance scale, [0, 1000] (default 1)");
+  cmd.add_option("--environment-rotation", o.rotationDeg,
+                 "Environment turned about the vertical axis, degrees (counter-clockwise seen from above; default 0)");
+  cmd.add_option("--environment-lights", o.lights,
+                 "The environment's bright regions drawn as shadowed directional lights, 0..3 (default 2; the rest "
+                 "lights the hair and skin through spherical harmonics)");
+}
+
+void applyEnvironmentOptions(const EnvironmentOptions& o, RenderRequest& r) {
+  if (o.lights > 3) throw Error("--environment-lights must be in [0, 3]");
+  r.environment = environmentOf(o);
+  r.environmentLights.clear();
+  r.look.environment = {};
+  if (!r.environment) return;
+  const EnvironmentSplit split = splitEnvironment(*r.environment, {o.lights});
+  for (const EnvironmentLight& e : split.lights) r.environmentLights.push_back(directionalLight(e));
+  for (std::size_t i = 0; i < split.residual.size(); ++i) r.look.environment[i] = glm::vec3(split.residual[i]);
+  r.look.ambient = 0.0f;
+}
+}  // namespace hp::cli
