@@ -3,8 +3,8 @@
 #include <cmath>
 
 #include "engine/core/error.h"
-#include "engine/core/shading/environment_lights.h"
 #include "samples/tools/environment_file.h"
+#include "samples/tools/environment_request.h"
 
 namespace hp::cli {
 namespace {
@@ -18,16 +18,6 @@ std::shared_ptr<const EnvironmentMap> environmentOf(const EnvironmentOptions& o)
   map.rotationDeg = std::fmod(o.rotationDeg, 360.0);
   map.validate();
   return std::make_shared<const EnvironmentMap>(std::move(map));
-}
-
-// A shadowed directional light of the environment's.
-LightSpec directionalLight(const EnvironmentLight& e) {
-  LightSpec l;
-  l.direction = glm::vec3(e.direction);
-  l.intensity = float(e.intensity());
-  l.color = glm::vec3(e.color());
-  l.shadows = true;
-  return l;
 }
 }  // namespace
 
@@ -46,13 +36,6 @@ void addEnvironmentOptions(CLI::App& cmd, EnvironmentOptions& o) {
 
 void applyEnvironmentOptions(const EnvironmentOptions& o, RenderRequest& r) {
   if (o.lights > 3) throw Error("--environment-lights must be in [0, 3]");
-  r.environment = environmentOf(o);
-  r.environmentLights.clear();
-  r.look.environment = {};
-  if (!r.environment) return;
-  const EnvironmentSplit split = splitEnvironment(*r.environment, {o.lights});
-  for (const EnvironmentLight& e : split.lights) r.environmentLights.push_back(directionalLight(e));
-  for (std::size_t i = 0; i < split.residual.size(); ++i) r.look.environment[i] = glm::vec3(split.residual[i]);
-  r.look.ambient = 0.0f;
+  setEnvironment(r, environmentOf(o), o.lights);
 }
 }  // namespace hp::cli

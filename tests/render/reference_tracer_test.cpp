@@ -12,8 +12,9 @@
 //  - one fibre under the sun returns S(L, V, T) cos(theta_i) E at every pixel;
 //  - white non-absorbing fibres in a dense tuft under a uniform sky, with the sky as background, return
 //    the sky everywhere (the whole tracer's furnace: many bounces, roulette, fibre-to-fibre rays);
-//  - an environment map of constant radiance renders as the uniform sky, and under a map linear in direction
-//    the Lambertian plane returns the exact irradiance / pi.
+//  - an environment map of constant radiance lights as the uniform sky, and under a map linear in direction
+//    the Lambertian plane returns the exact irradiance / pi (the map's next-event estimation and the escaping
+//    continuations, weighted against each other, add up to the integral).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -195,22 +196,24 @@ TEST(ReferenceTracer, LambertPlaneUnderAUniformSkyReturnsAlbedoTimesSky) {
     EXPECT_NEAR(r.radiance.at(3, 5, c), f.headAlbedo[0][c] * 0.7, 1e-6);
 }
 
-// An environment map of constant radiance is the uniform sky of that radiance: the same image, bit for bit.
-TEST(ReferenceTracer, AUniformEnvironmentMapRendersAsTheUniformSky) {
-  ExportedFrame sky = fibreFrame();
-  sky.environment = 0.6f;
-  ExportedFrame mapped = sky;
-  mapped.environment = 0.0f;
+// An environment map of constant radiance lights like the uniform sky of that radiance: on the Lambertian
+// plane the sky's estimate is exact per sample (albedo x sky), the map's (next-event estimation and escaping
+// continuations, weighted against each other) agrees on average. Measured: within 0.1%.
+TEST(ReferenceTracer, AUniformEnvironmentMapLightsAsTheUniformSky) {
+  ExportedFrame mapped = lambertFrame();
   mapped.environmentMap = std::make_shared<EnvironmentMap>(uniformEnvironment(glm::vec3(0.6f)));
-  const auto a = reference::traceReference(sky, {16, 4, 5, 2, nullptr});
-  const auto b = reference::traceReference(mapped, {16, 4, 5, 2, nullptr});
-  EXPECT_EQ(a.radiance.values, b.radiance.values);
-  EXPECT_GT(a.radiance.at(1, 1, 0), 0.0f);
+  const auto r = reference::traceReference(mapped, {64, 2, 5, 2, nullptr});
+  for (std::uint32_t c = 0; c < 3; ++c) {
+    double mean = 0.0;
+    for (std::uint32_t y = 0; y < 8; ++y)
+      for (std::uint32_t x = 0; x < 8; ++x) mean += r.radiance.at(x, y, c) / 64.0;
+    EXPECT_NEAR(mean, mapped.headAlbedo[0][c] * 0.6, 0.005 * mapped.headAlbedo[0][c] * 0.6) << c;
+  }
 }
 
 // Under an environment whose radiance is linear in direction, 1 + 0.6 (d . w), the Lambertian plane (normal
 // +z) returns albedo x (1 + 0.4 d.z), the irradiance / pi: the escaping rays look the map up in their own
-// direction. Measured (16,384 cosine-weighted samples per channel): within 0.2%; 1% is ~4 standard errors.
+// direction. Measured (16,384 paths per channel): within 0.2%; 1% is several standard errors.
 TEST(ReferenceTracer, LambertPlaneUnderALinearEnvironmentReturnsItsIrradiance) {
   ExportedFrame f = lambertFrame();
   const glm::dvec3 axis = glm::normalize(glm::dvec3(0.3, 0.5, 0.8));
@@ -373,6 +376,42 @@ TEST(ReferenceTracer, OneFibreUnderTheSunReturnsItsScatteringFunction) {
     for (std::uint32_t y = 0; y < 4; ++y)
       for (std::uint32_t x = 0; x < 4; ++x) mean += r.radiance.at(x, y, c) / 16.0;
     std::cout << "channel " << c << ": traced " << mean << ", S cos E " << expected[c] << "\n";
+    EXPECT_NEAR(mean, expected[c], 0.01 * expected[c]) << "channel " << c;
+  }
+}
+
+// The same fibre under an environment map that is black but for a small disc around the sun's direction
+// (radius 0.75 degrees, its texels' radiance chosen so they deliver the same irradiance): the map's next-event
+// estimation finds the disc that the fibre's own sampling almost never hits, and the image is the sun's within
+// what the disc's width changes. Measured: 0.3-0.4% low per channel (a 1.5-degree disc read 1.4% high: S
+// curves across it).
+TEST(ReferenceTracer, OneFibreUnderASmallBrightDiscReturnsTheSunsImage) {
+  ExportedFrame f = fibreFrame();
+  f.environment = 0.0f;
+  f.fibreModel = "physical";
+  const glm::dvec3 L = glm::normalize(glm::dvec3(0.3, 0.5, 0.8)), V(0, 0, 1), T(1, 0, 0);
+  const double cosRadius = std::cos(glm::radians(0.75));
+  auto map = std::make_shared<EnvironmentMap>();
+  map->width = 2048;
+  map->height = 1024;
+  double discSolidAngle = 0.0;  // of the texels inside, so that the map delivers exactly 2
+  for (std::uint32_t y = 0; y < map->height; ++y)
+    for (std::uint32_t x = 0; x < map->width; ++x) {
+      const bool inside = glm::dot(map->texelDirection(x, y), L) > cosRadius;
+      map->texels.push_back(glm::vec3(inside ? 1.0f : 0.0f));
+      discSolidAngle += inside ? map->texelSolidAngle(y) : 0.0;
+    }
+  map->intensity = 2.0 / discSolidAngle;
+  f.environmentMap = map;
+  f.lights.clear();
+  const auto r = reference::traceReference(f, {256, 1, 3, 2, nullptr});
+  const double cosTheta = std::sqrt(1.0 - glm::dot(L, T) * glm::dot(L, T));
+  const glm::dvec3 expected = exactS(FibreModel::Physical, L, V, T, f.material) * cosTheta * 2.0;
+  for (std::uint32_t c = 0; c < 3; ++c) {
+    double mean = 0.0;
+    for (std::uint32_t y = 0; y < 4; ++y)
+      for (std::uint32_t x = 0; x < 4; ++x) mean += r.radiance.at(x, y, c) / 16.0;
+    std::cout << "channel " << c << ": traced under the disc " << mean << ", the sun's S cos E " << expected[c] << "\n";
     EXPECT_NEAR(mean, expected[c], 0.01 * expected[c]) << "channel " << c;
   }
 }

@@ -10,8 +10,8 @@ namespace hp {
 namespace {
 constexpr std::uint32_t kMaxSide = 16384;
 
-// (u, v) of a world direction, before the rotation.
-glm::dvec2 imagePoint(const glm::dvec3& d) {
+// (u, v) of a direction of the unturned image.
+glm::dvec2 unturnedImagePoint(const glm::dvec3& d) {
   const double azimuth = std::atan2(d.x, d.z);  // 0 along +z, pi / 2 along +x
   const double polar = std::acos(std::clamp(d.y, -1.0, 1.0));
   return {azimuth / (2.0 * shading::kPi) + 0.5, polar / shading::kPi};
@@ -50,6 +50,10 @@ glm::dvec3 EnvironmentMap::direction(double u, double v) const {
   return turned(local, rotationDeg);
 }
 
+glm::dvec2 EnvironmentMap::imagePoint(const glm::dvec3& dir) const {
+  return unturnedImagePoint(turned(dir, -rotationDeg));
+}
+
 glm::dvec3 EnvironmentMap::texelDirection(std::uint32_t x, std::uint32_t y) const {
   return direction((x + 0.5) / width, (y + 0.5) / height);
 }
@@ -64,7 +68,7 @@ glm::dvec3 EnvironmentMap::texelRadiance(std::uint32_t x, std::uint32_t y) const
 }
 
 glm::dvec3 EnvironmentMap::radiance(const glm::dvec3& dir) const {
-  const glm::dvec2 p = imagePoint(turned(dir, -rotationDeg));
+  const glm::dvec2 p = imagePoint(dir);
   // Texel centres at (i + 0.5) / size; azimuth wraps, the poles clamp.
   const double x = p.x * width - 0.5, y = std::clamp(p.y * height - 0.5, 0.0, double(height - 1));
   const double fx = std::floor(x), fy = std::floor(y);

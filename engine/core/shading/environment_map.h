@@ -18,8 +18,9 @@ struct EnvironmentMap {
 
   // Radiance arriving from world direction `dir` (unit).
   glm::dvec3 radiance(const glm::dvec3& dir) const;
-  // The world direction of image point (u, v) in [0, 1]^2 (u across, v down).
+  // The world direction of image point (u, v) in [0, 1]^2 (u across, v down), and the point of a direction.
   glm::dvec3 direction(double u, double v) const;
+  glm::dvec2 imagePoint(const glm::dvec3& dir) const;
   // Texel (x, y): its centre's direction, its solid angle (the band between its rows' polar angles split
   // evenly in azimuth; they sum to 4 pi) and its radiance times the intensity.
   glm::dvec3 texelDirection(std::uint32_t x, std::uint32_t y) const;

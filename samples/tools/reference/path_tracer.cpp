@@ -4,12 +4,15 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <mutex>
+#include <optional>
 #include <ostream>
 #include <thread>
 #include <vector>
 
 #include "engine/core/error.h"
+#include "samples/tools/reference/environment_sampler.h"
 #include "samples/tools/reference/fibre.h"
 #include "samples/tools/reference/fibre_sampling.h"
 #include "samples/tools/reference/frame_light.h"
@@ -49,6 +52,8 @@ class Tracer {
       : frame_(frame), settings_(s), scene_(frame), camera_(frame.camera),
         model_(parseFibreModel(frame.fibreModel)), colorScales_(frame.strandColorScales()) {
     eps_ = 1e-5f * scene_.sceneScale();
+    if (frame.environmentMap) environment_.emplace(*frame.environmentMap);
+    if (environment_ && environment_->empty()) environment_.reset();
   }
 
   // Radiance of one camera sample; `hairFirst` says whether the camera ray hit a fibre first.
@@ -58,22 +63,23 @@ class Tracer {
     const double px = x + sub.x, py = y + sub.y;
     glm::dvec3 origin = camera_.position, dir = camera_.direction(px, py);
     glm::dvec3 radiance(0.0), throughput(1.0);
+    double continuationPdf = 0.0;  // the density the last continuation direction was drawn with
     for (std::uint32_t vertex = 1;; ++vertex) {
       const SceneHit hit = scene_.intersect(origin, dir, 0.0f);
       if (vertex == 1) hairFirst = hit.kind == SceneHit::Kind::Fibre;
       if (hit.kind == SceneHit::Kind::None) {
-        radiance += throughput * (vertex == 1 ? glm::dvec3(frame_.background) : skyRadiance(dir));
+        radiance += throughput * (vertex == 1 ? glm::dvec3(frame_.background) : skyRadiance(dir, continuationPdf));
         break;
       }
       if (vertex > settings_.bounces) break;  // the last vertex's continuation only gathers the sky
       const glm::dvec3 V = -dir;
       glm::dvec3 weight;
       if (hit.kind == SceneHit::Kind::Fibre) {
-        radiance += throughput * fibreDirect(hit, V);
-        weight = sampleFibre(hit, V, rng, origin, dir);
+        radiance += throughput * (fibreDirect(hit, V) + fibreEnvironment(hit, V, rng));
+        weight = sampleFibre(hit, V, rng, origin, dir, continuationPdf);
       } else {
-        radiance += throughput * headDirect(hit, V);
-        weight = sampleHead(hit, V, rng, origin, dir);
+        radiance += throughput * (headDirect(hit, V) + headEnvironment(hit, V, rng));
+        weight = sampleHead(hit, V, rng, origin, dir, continuationPdf);
       }
       throughput *= weight;
       if (throughput == glm::dvec3(0.0)) break;
@@ -87,11 +93,54 @@ class Tracer {
   }
 
  private:
-  // What a continuation ray that escapes brings: the uniform sky plus the environment map's texels.
-  glm::dvec3 skyRadiance(const glm::dvec3& dir) const {
+  // What a continuation ray drawn with density `pdf` brings when it escapes: the uniform sky, plus the
+  // environment map's radiance weighted against the map's own sampling (multiple importance sampling, the
+  // power heuristic; next-event estimation takes the rest).
+  glm::dvec3 skyRadiance(const glm::dvec3& dir, double pdf) const {
     glm::dvec3 sky(frame_.environment);
-    if (frame_.environmentMap) sky += frame_.environmentMap->radiance(dir);
-    return sky;
+    if (!frame_.environmentMap) return sky;
+    const double weight = environment_ ? powerHeuristic(pdf, environment_->pdf(dir)) : 1.0;
+    return sky + weight * frame_.environmentMap->radiance(dir);
+  }
+
+  static double powerHeuristic(double a, double b) { return a * a + b * b > 0.0 ? a * a / (a * a + b * b) : 0.0; }
+
+  // The environment map's light by next-event estimation: one direction drawn from the map, its shadow ray,
+  // weighted against the continuation's sampling of the same direction.
+  struct EnvironmentArrival {
+    glm::dvec3 L, radiance;
+    double pdf = 0.0;
+  };
+  bool sampleEnvironment(Sampler& rng, EnvironmentArrival& a) const {
+    if (!environment_) return false;  // no random number drawn: frames without a map trace as before
+    a.L = environment_->sample(rng, a.pdf);
+    if (!(a.pdf > 0.0)) return false;
+    a.radiance = frame_.environmentMap->radiance(a.L);
+    return a.radiance != glm::dvec3(0.0);
+  }
+
+  glm::dvec3 fibreEnvironment(const SceneHit& h, const glm::dvec3& V, Sampler& rng) const {
+    EnvironmentArrival a;
+    if (!sampleEnvironment(rng, a)) return glm::dvec3(0.0);
+    if (scene_.occluded(fibreExitOrigin(h, a.L), a.L, 0.0f, std::numeric_limits<float>::max())) return glm::dvec3(0.0);
+    const double mis = powerHeuristic(a.pdf, fibrePdf(h, V, a.L));
+    return fibreS(h, a.L, V) * cosThetaI(a.L, h.tangent) * a.radiance * (mis / a.pdf);
+  }
+
+  glm::dvec3 headEnvironment(const SceneHit& h, const glm::dvec3& V, Sampler& rng) const {
+    EnvironmentArrival a;
+    if (!sampleEnvironment(rng, a)) return glm::dvec3(0.0);
+    const glm::dvec3 ng = facing(h.geometricNormal, V), n = facing(h.normal, ng);
+    const double cosine = glm::dot(n, a.L);
+    if (cosine <= 0.0 || glm::dot(ng, a.L) <= 0.0) return glm::dvec3(0.0);
+    if (scene_.occluded(h.point + double(eps_) * ng, a.L, 0.0f, std::numeric_limits<float>::max())) return glm::dvec3(0.0);
+    const double mis = powerHeuristic(a.pdf, cosine / kPi);
+    return h.albedo / kPi * cosine * a.radiance * (mis / a.pdf);
+  }
+
+  double fibrePdf(const SceneHit& h, const glm::dvec3& V, const glm::dvec3& L) const {
+    if (model_ == FibreModel::Physical) return PhysicalFibreSampler(h.tangent, V, frame_.material).pdf(L);
+    return FibreSampler(h.tangent, V, frame_.material).pdf(L);
   }
 
   // Stratified over the pixel when spp is a square (n x n cells, one jittered sample each): strands
@@ -125,19 +174,20 @@ class Tracer {
   }
 
   glm::dvec3 sampleFibre(const SceneHit& h, const glm::dvec3& V, Sampler& rng, glm::dvec3& origin,
-                         glm::dvec3& dir) const {
+                         glm::dvec3& dir, double& pdf) const {
     if (model_ == FibreModel::Physical)
-      return continueFrom(PhysicalFibreSampler(h.tangent, V, frame_.material), h, V, rng, origin, dir);
-    return continueFrom(FibreSampler(h.tangent, V, frame_.material), h, V, rng, origin, dir);
+      return continueFrom(PhysicalFibreSampler(h.tangent, V, frame_.material), h, V, rng, origin, dir, pdf);
+    return continueFrom(FibreSampler(h.tangent, V, frame_.material), h, V, rng, origin, dir, pdf);
   }
 
   template <class DirectionSampler>
   glm::dvec3 continueFrom(const DirectionSampler& sampler, const SceneHit& h, const glm::dvec3& V, Sampler& rng,
-                          glm::dvec3& origin, glm::dvec3& dir) const {
+                          glm::dvec3& origin, glm::dvec3& dir, double& pdf) const {
     dir = sampler.sample(rng);
+    pdf = 0.0;
     if (dir == glm::dvec3(0.0)) return glm::dvec3(0.0);
     origin = fibreExitOrigin(h, dir);
-    const double pdf = sampler.pdf(dir);
+    pdf = sampler.pdf(dir);
     if (!(pdf > 0.0)) return glm::dvec3(0.0);  // a density that underflowed: S did too (0 / 0)
     return fibreS(h, dir, V) * cosThetaI(dir, h.tangent) / pdf;
   }
@@ -160,10 +210,11 @@ class Tracer {
   }
 
   glm::dvec3 sampleHead(const SceneHit& h, const glm::dvec3& V, Sampler& rng, glm::dvec3& origin,
-                        glm::dvec3& dir) const {
+                        glm::dvec3& dir, double& pdf) const {
     const glm::dvec3 ng = facing(h.geometricNormal, V), n = facing(h.normal, ng);
     const double u1 = rng.next(), u2 = rng.next();
     dir = cosineHemisphere(n, u1, u2);
+    pdf = std::max(glm::dot(n, dir), 0.0) / kPi;
     origin = h.point + double(eps_) * ng;
     return glm::dot(dir, ng) > 0.0 ? h.albedo : glm::dvec3(0.0);
   }
@@ -174,6 +225,7 @@ class Tracer {
   Camera camera_;
   FibreModel model_;
   std::vector<float> colorScales_;
+  std::optional<EnvironmentSampler> environment_;  // the map's next-event sampling; none without a lit map
   float eps_ = 0.0f;
 };
 

@@ -9,8 +9,9 @@
 // far-field fibre scatters over its width: shadow and continuation rays leave from the side of its tube
 // that faces them, reference_scene.h), cosine-weighted at the Lambertian
 // head (weight albedo). A continuation ray that escapes brings the uniform white environment (the
-// real-time ambient strength) plus the environment map's radiance in its direction (bilinear, when the frame
-// has one); a camera ray that escapes sees the background. Russian roulette after
+// real-time ambient strength) and, when the frame has an environment map, the map's radiance in its
+// direction; the map is also sampled by next-event estimation at every vertex (environment_sampler.h, a
+// shadow ray each), the two weighted by the power heuristic. A camera ray that escapes sees the background. Russian roulette after
 // 3 vertices. The result is deterministic for a seed whatever the thread count: each pixel's samples
 // depend only on (seed, pixel, sample). Progress lines on `progress` (tiles done, rate, ETA) at most
 // once a second when given.
