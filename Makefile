@@ -1,6 +1,7 @@
 # Thin driver (as neovim does): install what is missing, configure, build, run.
 #   make demo   installs, builds (Release) and renders the default head to out/hair.png (and front,
-#               side and back views to out/); writes nothing outside out/
+#               side and back views to out/), lit by the sun and the studio environment; writes nothing
+#               outside out/
 #   make pictures  re-renders the README's pictures (docs/images: front, back, side without and with the hair grid,
 #                  curly and clumped sides, a shaking head's sheet)
 #   make api-docs  the API reference of the public headers (doxygen, warnings as errors) in out/api/
@@ -12,6 +13,9 @@ BUILD_TYPE ?= Release
 JOBS ?= $(shell nproc)
 SAN_BUILD ?= build-asan
 FUZZ_SECONDS ?= 60
+# The look of the demo and the README's pictures: the sun plus the built-in studio environment
+# (docs/SHADING.md "Environment"); the library and `hairpipe render` default to the sun and a uniform sky.
+LOOK ?= --environment studio
 
 # Debian 12 packages the build, the tests and the demo need.
 PACKAGES := cmake make g++ pkg-config libvulkan-dev libvulkan-volk-dev glslc libshaderc-dev \
@@ -41,24 +45,24 @@ build: configure
 # The default head from behind and to the side, where the hair is; 90 settling frames first; then the
 # front, side and back views beside it.
 demo: build
-	./$(BUILD)/samples/hairpipe render --camera-orbit 145 --out out/hair.png
-	for orbit in 0 90 180; do ./$(BUILD)/samples/hairpipe render --camera-orbit $$orbit --width 480 --height 360 \
-		--out out/head_$$orbit.png || exit 1; done
+	./$(BUILD)/samples/hairpipe render $(LOOK) --camera-orbit 145 --out out/hair.png
+	for orbit in 0 90 180; do ./$(BUILD)/samples/hairpipe render $(LOOK) --camera-orbit $$orbit --width 480 \
+		--height 360 --out out/head_$$orbit.png || exit 1; done
 
 # The README's pictures: front and back (small, so the PNGs stay well under 300 KB) and a contact sheet of
 # a shaking head (--sequence; its frames go to out/sequence).
 pictures: build
-	./$(BUILD)/samples/hairpipe render --camera-orbit 0 --width 480 --height 360 --out docs/images/head_front.png
-	./$(BUILD)/samples/hairpipe render --camera-orbit 180 --width 480 --height 360 --out docs/images/head_back.png
-	./$(BUILD)/samples/hairpipe render --camera-orbit 90 --width 480 --height 360 --curl 0.006,40,0.4 \
+	./$(BUILD)/samples/hairpipe render $(LOOK) --camera-orbit 0 --width 480 --height 360 --out docs/images/head_front.png
+	./$(BUILD)/samples/hairpipe render $(LOOK) --camera-orbit 180 --width 480 --height 360 --out docs/images/head_back.png
+	./$(BUILD)/samples/hairpipe render $(LOOK) --camera-orbit 90 --width 480 --height 360 --curl 0.006,40,0.4 \
 		--out docs/images/head_side_curly.png
-	./$(BUILD)/samples/hairpipe render --camera-orbit 90 --width 480 --height 360 --clump 1,0.9,1.5 \
+	./$(BUILD)/samples/hairpipe render $(LOOK) --camera-orbit 90 --width 480 --height 360 --clump 1,0.9,1.5 \
 		--out docs/images/head_side_clumped.png
-	./$(BUILD)/samples/hairpipe render --camera-orbit 90 --width 480 --height 360 \
+	./$(BUILD)/samples/hairpipe render $(LOOK) --camera-orbit 90 --width 480 --height 360 \
 		--out docs/images/head_side.png
-	./$(BUILD)/samples/hairpipe render --camera-orbit 90 --width 480 --height 360 --volume 0.6 --friction 0.1 \
+	./$(BUILD)/samples/hairpipe render $(LOOK) --camera-orbit 90 --width 480 --height 360 --volume 0.6 --friction 0.1 \
 		--out docs/images/head_side_volume.png
-	./$(BUILD)/samples/hairpipe render --camera-orbit 150 --width 240 --height 180 --animate shake --fps 60 \
+	./$(BUILD)/samples/hairpipe render $(LOOK) --camera-orbit 150 --width 240 --height 180 --animate shake --fps 60 \
 		--frames 48 --sequence out/sequence --contact-sheet docs/images/shake_contact_sheet.png
 
 # The public API's reference from engine/include/hairpipe (docs/Doxyfile); any doxygen warning fails it.

@@ -103,6 +103,30 @@ TEST(PublicApiWithoutDevice, AssetsAndHelpersRefuseBadInputByName) {
   EXPECT_STREQ(hairpipe::versionString(), "0.2.0");
 }
 
+// The studio splits into its two bright regions as lights, the rim (brightest) first, and SH for the rest,
+// which a look takes; an image that is not an environment is refused naming the problem.
+TEST(PublicApiWithoutDevice, EnvironmentLightingSplitsTheStudioAndRefusesBadImages) {
+  hairpipe::Result<hairpipe::EnvironmentImage> studio = hairpipe::studioEnvironment();
+  ASSERT_TRUE(studio.ok()) << studio.message();
+  EXPECT_EQ(studio.value().texels.size(), std::size_t(studio.value().width) * studio.value().height);
+  hairpipe::Result<hairpipe::EnvironmentLighting> lit = hairpipe::environmentLighting(studio.value());
+  ASSERT_TRUE(lit.ok()) << lit.message();
+  ASSERT_EQ(lit.value().lights.size(), 2u);
+  EXPECT_LT(lit.value().lights[0].direction.z, 0.0f);  // the rim, behind
+  EXPECT_GT(lit.value().lights[1].direction.z, 0.0f);  // the soft box, in front
+  for (const hairpipe::Light& l : lit.value().lights) EXPECT_TRUE(l.shadows && l.intensity > 0.0f);
+  EXPECT_GT(lit.value().harmonics[0].y, 0.0f);  // the room
+  EXPECT_EQ(hairpipe::environmentLighting(studio.value(), 0).value().lights.size(), 0u);
+  hairpipe::EnvironmentImage bad = studio.value();
+  bad.texels[7].x = -1.0f;
+  EXPECT_THAT(failureOf(hairpipe::environmentLighting(bad)), HasSubstr("negative"));
+  bad = studio.value();
+  bad.width += 1;
+  EXPECT_THAT(failureOf(hairpipe::environmentLighting(bad)), HasSubstr("number of texels"));
+  EXPECT_THAT(failureOf(hairpipe::environmentLighting(studio.value(), 9)), HasSubstr("environment lights"));
+  EXPECT_THAT(failureOf(hairpipe::environmentLighting({})), HasSubstr("hairpipe::environmentLighting"));
+}
+
 TEST_F(PublicApi, RendererSettingsAreRefusedByField) {
   hairpipe::RendererSettings s;
   s.framesInFlight = 9;
@@ -209,6 +233,9 @@ TEST_F(PublicApi, InstanceSettingsAndSettersAreRefusedByField) {
   hairpipe::LookSettings look;
   look.strandWidth = kNaN;
   EXPECT_THAT(failureOf(head.setLook(look)), HasSubstr("strand width"));
+  look = {};
+  look.environment[4].y = kNaN;
+  EXPECT_THAT(failureOf(head.setLook(look)), HasSubstr("environment coefficients"));
   hairpipe::SimulationSettings sim;
   sim.dt = 0.0;
   EXPECT_THAT(failureOf(head.setSimulation(sim)), HasSubstr("dt"));

@@ -1,11 +1,12 @@
 // `hairpipe render --light SPEC` (repeatable): a frame lit by a directional, a spot and a point light (the
 // last without shadows) renders clean under validation and exports all three in order; bad specs exit 1
-// naming the option, the key and the value, writing nothing. `render --motion-vectors` exports the hair's
-// screen motion.
+// naming the option, the key and the value, writing nothing. `render --environment` renders an environment
+// and exports its map. `render --motion-vectors` exports the hair's screen motion.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 
 #include "samples/tools/frame_export.h"
@@ -74,6 +75,43 @@ TEST(CliRenderLights, BadLightSpecsExitWithAMessageNamingTheKey) {
       {{"--light", "directional:shadows=maybe"}, "shadows=maybe: expected on or off"},
       {nine, "--light is given 9 times: at most 8 lights"},
   }, png);
+}
+
+// --environment studio: the frame renders clean under validation, the export carries the map (its rotation
+// and intensity) but not the lights the real-time frame drew for its bright regions; bad environment options
+// and files exit 1 naming the option or the file, writing nothing.
+TEST(CliRenderEnvironment, RendersTheStudioAndExportsItsMap) {
+  const auto png = freshTempPath("hairpipe_cli_render_environment.png");
+  const auto dir = freshTempPath("hairpipe_cli_render_environment_export");
+  auto r = runCli({"render", "--width", "48", "--height", "36", "--density", "500", "--frames", "1", "--validation",
+                   "--opacity-resolution", "64", "--out", png.string(), "--export-frame", dir.string(), "--environment",
+                   "studio", "--environment-rotation", "30", "--environment-intensity", "0.5"});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_EQ(hp::readPngRgba(png).width, 48u);
+  const hp::ExportedFrame frame = hp::readFrameExport(dir);
+  EXPECT_EQ(frame.lights.size(), 1u);  // the sun; the studio's two lights stay out of the export
+  EXPECT_EQ(frame.environment, 0.0f);  // the environment is the sky
+  ASSERT_TRUE(frame.environmentMap);
+  EXPECT_EQ(frame.environmentMap->rotationDeg, 30.0);
+  EXPECT_EQ(frame.environmentMap->intensity, 0.5);
+  EXPECT_EQ(frame.environmentMap->width, 256u);
+  std::filesystem::remove(png);
+  std::filesystem::remove_all(dir);
+}
+
+TEST(CliRenderEnvironment, BadEnvironmentOptionsExitWithAMessage) {
+  const auto png = freshTempPath("hairpipe_cli_render_environment_bad.png");
+  const auto text = freshTempPath("hairpipe_cli_environment.hdr");
+  { std::ofstream(text) << "no image here\n"; }
+  expectRefused({"render", "--frames", "1", "--out", png.string()}, {
+      {{"--environment", "/nonexistent/sky.hdr"}, "/nonexistent/sky.hdr"},
+      {{"--environment", text.string()}, "not a Radiance .hdr image"},
+      {{"--environment", "sky.exr"}, "must be a Radiance .hdr or a .pfm"},
+      {{"--environment", "studio", "--environment-intensity", "-1"}, "--environment-intensity must be in [0, 1000]"},
+      {{"--environment", "studio", "--environment-rotation", "nan"}, "--environment-rotation must be a finite angle"},
+      {{"--environment", "studio", "--environment-lights", "4"}, "--environment-lights must be in [0, 3]"},
+  }, png);
+  std::filesystem::remove(text);
 }
 
 // render --motion-vectors --export-frame: with the head shaking, the exported hair motion (realtime_motion.pfm)

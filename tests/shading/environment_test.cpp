@@ -27,14 +27,7 @@ namespace {
 constexpr double kPiValue = 3.14159265358979323846;
 
 EnvironmentMap mapOf(std::uint32_t w, std::uint32_t h, const std::function<glm::dvec3(glm::dvec3)>& radiance) {
-  EnvironmentMap map;
-  map.width = w;
-  map.height = h;
-  map.texels.resize(std::size_t(w) * h);
-  for (std::uint32_t y = 0; y < h; ++y)
-    for (std::uint32_t x = 0; x < w; ++x)
-      map.texels[std::size_t(y) * w + x] = glm::vec3(radiance(map.direction((x + 0.5) / w, (y + 0.5) / h)));
-  return map;
+  return sampledEnvironment(w, h, [&](const glm::dvec3& d) { return radiance(d); });
 }
 
 std::vector<glm::dvec3> unitVectors(int count, std::uint64_t seed) {

@@ -93,15 +93,20 @@ void EnvironmentMap::validate() const {
   if (!std::isfinite(rotationDeg)) throw Error("environment rotation must be finite");
 }
 
-EnvironmentMap studioEnvironment(std::uint32_t width, std::uint32_t height) {
+EnvironmentMap sampledEnvironment(std::uint32_t width, std::uint32_t height,
+                                  const std::function<glm::dvec3(const glm::dvec3&)>& radiance) {
   EnvironmentMap map;
   map.width = width;
   map.height = height;
   map.texels.resize(std::size_t(width) * height);
   for (std::uint32_t y = 0; y < height; ++y)
     for (std::uint32_t x = 0; x < width; ++x)
-      map.texels[std::size_t(y) * width + x] = glm::vec3(studioRadiance(map.texelDirection(x, y)));
+      map.texels[std::size_t(y) * width + x] = glm::vec3(radiance(map.texelDirection(x, y)));
   return map;
+}
+
+EnvironmentMap studioEnvironment(std::uint32_t width, std::uint32_t height) {
+  return sampledEnvironment(width, height, studioRadiance);
 }
 
 EnvironmentMap uniformEnvironment(const glm::vec3& radiance) { return {1, 1, {radiance}, 0.0, 1.0}; }

@@ -5,6 +5,7 @@
 // down; column u in [0, 1) is the azimuth 2 pi u - pi from +z toward +x, so the middle column looks along
 // +z (where the default camera stands). Pure host code; docs/SHADING.md "Environment".
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -31,6 +32,9 @@ struct EnvironmentMap {
   void validate() const;
 };
 
+// A map of the given size whose texels hold `radiance` at their centres' directions.
+EnvironmentMap sampledEnvironment(std::uint32_t width, std::uint32_t height,
+                                  const std::function<glm::dvec3(const glm::dvec3&)>& radiance);
 // A photographer's studio, procedural (no file): a dim grey room brighter above than below, a large soft box
 // to the front left, and a strip light above and behind the subject for a rim. Built at the given size.
 EnvironmentMap studioEnvironment(std::uint32_t width = 256, std::uint32_t height = 128);
