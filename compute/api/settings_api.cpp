@@ -7,6 +7,7 @@
 
 #include "compute/api/access.h"
 #include "compute/api/convert.h"
+#include "compute/raster/frame_block.h"
 #include "engine/core/hair/tfx_bone_file.h"
 #include "engine/core/shading/environment_lights.h"
 #include "engine/core/shading/material_color.h"
@@ -51,6 +52,9 @@ Result<EnvironmentLighting> environmentLighting(const EnvironmentImage& image, s
       out.lights.push_back(l);
     }
     for (std::size_t i = 0; i < split.residual.size(); ++i) out.harmonics[i] = convert::vec(glm::vec3(split.residual[i]));
+    hp::render::LookSettings look;  // the harmonics must pass the look they are for
+    for (std::size_t i = 0; i < split.residual.size(); ++i) look.environment[i] = glm::vec3(split.residual[i]);
+    look.validate();
     return out;
   });
 }

@@ -76,7 +76,8 @@ void runRender(const RenderOptions& o, const CLI::App& cmd) {
   if (!o.dumpOpacity.empty() && !request.opacity.enabled)
     throw hp::Error("--dump-opacity needs opacity shadows (drop --no-shadows)");
   const auto casts = [](const hp::LightSpec& l) { return l.shadows; };
-  if (!o.dumpOpacity.empty() && std::none_of(request.scene.lights.begin(), request.scene.lights.end(), casts))
+  const std::vector<hp::LightSpec> lights = hp::frameLights(request);  // the environment's lights too
+  if (!o.dumpOpacity.empty() && std::none_of(lights.begin(), lights.end(), casts))
     throw hp::Error("--dump-opacity needs a light that casts shadows (shadows=on)");
   request.captureOpacity = !o.dumpOpacity.empty();
   request.captureStrands = !o.dumpStrands.empty();

@@ -3,11 +3,15 @@
 #include <cmath>
 
 #include "engine/core/error.h"
+#include "engine/core/shading/environment_lights.h"
 #include "samples/tools/environment_file.h"
 #include "samples/tools/environment_request.h"
 
 namespace hp::cli {
 namespace {
+// Every shadow slot but the one the scene's sun keeps.
+constexpr std::uint32_t kMaxCliLights = kMaxEnvironmentLights - 1;
+
 std::shared_ptr<const EnvironmentMap> environmentOf(const EnvironmentOptions& o) {
   if (!(o.intensity >= 0.0 && o.intensity <= 1000.0)) throw Error("--environment-intensity must be in [0, 1000]");
   if (!std::isfinite(o.rotationDeg) || std::abs(o.rotationDeg) > 1e6)
@@ -35,7 +39,7 @@ void addEnvironmentOptions(CLI::App& cmd, EnvironmentOptions& o) {
 }
 
 void applyEnvironmentOptions(const EnvironmentOptions& o, RenderRequest& r) {
-  if (o.lights > 3) throw Error("--environment-lights must be in [0, 3]");
+  if (o.lights > kMaxCliLights) throw Error("--environment-lights must be in [0, " + std::to_string(kMaxCliLights) + "]");
   setEnvironment(r, environmentOf(o), o.lights);
 }
 }  // namespace hp::cli

@@ -8,6 +8,7 @@
 #include "engine/core/hair/atomic_write.h"
 #include "engine/core/hair/input_file.h"
 #include "engine/core/shading/lut.h"
+#include "samples/tools/environment_file.h"
 #include "samples/tools/host/json_reader.h"
 #include "samples/tools/linear_image.h"
 #include "samples/tools/obj_albedo_mesh.h"
@@ -17,7 +18,8 @@
 namespace hp {
 namespace {
 constexpr const char* kFormat = "hairpipe-frame";
-constexpr std::uint32_t kVersion = 2;  // 2: "lights", a list (point lights, shadows); 1: one "light", still read
+// 3: an optional "environment_map"; 2: "lights", a list (point lights, shadows); 1: one "light". All are read.
+constexpr std::uint32_t kVersion = 3;
 
 nlohmann::json vec(const glm::vec3& v) { return {v.x, v.y, v.z}; }
 nlohmann::json dvec(const glm::dvec3& v) { return {v.x, v.y, v.z}; }
@@ -103,25 +105,21 @@ LinearImage environmentImage(const EnvironmentMap& map) {
 // "environment_map" of frame.json, with its image from the export folder.
 std::shared_ptr<const EnvironmentMap> readEnvironmentMap(JsonObject o, const std::filesystem::path& dir) {
   std::string file;
-  auto map = std::make_shared<EnvironmentMap>();
+  double intensity = 1.0, rotationDeg = 0.0;
   o.read("file", file);
-  o.read("intensity", map->intensity);
-  o.read("rotation_deg", map->rotationDeg);
+  o.read("intensity", intensity);
+  o.read("rotation_deg", rotationDeg);
   o.finish();
   if (file != FrameExportFiles::environment) o.fail("file", "expected \"environment.pfm\"");
-  const LinearImage image = readPfm(dir / file);
-  if (image.channels != 3) o.fail("file", "the environment image must have 3 channels");
-  map->width = image.width;
-  map->height = image.height;
-  map->texels.resize(std::size_t(image.width) * image.height);
-  for (std::size_t i = 0; i < map->texels.size(); ++i)
-    map->texels[i] = {image.values[3 * i], image.values[3 * i + 1], image.values[3 * i + 2]};
   try {
+    auto map = std::make_shared<EnvironmentMap>(readEnvironmentFile(dir / file));
+    map->intensity = intensity;
+    map->rotationDeg = rotationDeg;
     map->validate();
+    return map;
   } catch (const Error& e) {
     o.fail("file", e.what());
   }
-  return map;
 }
 
 // One light at `pointer`; "shadows" is absent from version 1 (every light cast shadows then).
@@ -219,7 +217,7 @@ void readFrameJson(ExportedFrame& f, const std::filesystem::path& path) {
   o.read("format", format);
   o.read("version", version);
   if (format != kFormat || version < 1 || version > kVersion)
-    o.fail("format", "expected format \"hairpipe-frame\", version 1 or 2");
+    o.fail("format", "expected format \"hairpipe-frame\", version 1, 2 or 3");
   o.read("units", units);
   o.read("up", up);
   if (units != "metres" || up != "+y") o.fail("units", "expected units \"metres\" and up \"+y\"");

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "engine/core/shading/luminance.h"
 #include "engine/core/error.h"
 #include "shaders/shared/tonemap.h"
 
@@ -16,10 +17,9 @@ double displayValue(float linear, float exposure) {
 }
 
 double luminance(const LinearImage& im, std::uint32_t x, std::uint32_t y, bool display, float exposure) {
-  const double w[3] = {0.2126, 0.7152, 0.0722};
-  double l = 0.0;
-  for (std::uint32_t c = 0; c < 3; ++c) l += w[c] * (display ? displayValue(im.at(x, y, c), exposure) : im.at(x, y, c));
-  return l;
+  glm::dvec3 rgb;
+  for (std::uint32_t c = 0; c < 3; ++c) rgb[int(c)] = display ? displayValue(im.at(x, y, c), exposure) : im.at(x, y, c);
+  return luminanceOf(rgb);
 }
 
 std::vector<double> displayLuminance(const LinearImage& im, float exposure) {

@@ -172,7 +172,8 @@ RenderResult renderStill(const vk::Context& ctx, const HairAsset& asset, const R
     result.strandDump = compute::renderStrandsToHairData(ctx, hair.strands(), vk::BufferUse::VertexRead,
                                                          "hairpipe render: render strands of the drawn frame");
   if (request.captureFrame) result.frame = captureFrame(ctx, hair, session.renderer, session.view(motion));
-  const LightSpec* shadowed = firstShadowedLight(request.scene.lights);
+  const std::vector<LightSpec> lights = frameLights(request);
+  const LightSpec* shadowed = firstShadowedLight(lights);
   if (request.captureOpacity && request.opacity.enabled && shadowed)
     result.opacity = render::captureOpacity(ctx, hair.shadows().image(), hair.shadows().lightSpace(), hair.shadows().settings(),
                                             glm::normalize(shadowed->direction));

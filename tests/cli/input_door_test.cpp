@@ -17,6 +17,7 @@
 #include "engine/core/hair/tfx_bone_file.h"
 #include "engine/core/hair/tfx_mesh_file.h"
 #include "engine/core/hair/tfx_file.h"
+#include "samples/tools/environment_file.h"
 #include "samples/tools/frame_export.h"
 #include "samples/tools/host/scene_file.h"
 #include "samples/tools/linear_image.h"
@@ -41,6 +42,7 @@ const std::vector<Reader> kReaders = {
     {".tfxmesh", [](const auto& p) { (void)hp::readTfxMeshFile(p); }},
     {"scene JSON", [](const auto& p) { (void)hp::loadSceneFile(p); }},
     {"PFM", [](const auto& p) { (void)hp::readPfm(p); }},
+    {"environment .hdr", [](const auto& p) { (void)hp::readHdrEnvironment(p); }},
     {"PNG", [](const auto& p) { (void)hp::readPngRgba(p); }},
     {"frame export head.obj", [](const auto& p) { (void)hp::readAlbedoObj(p); }},
 };

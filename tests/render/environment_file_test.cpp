@@ -1,7 +1,7 @@
-// Environment files (samples/tools/environment_file.h), on the host: a Radiance .hdr and a 3-channel .pfm read
-// back their texels exactly; what is not an environment is refused by a message naming the file and the
-// problem (another format, a size past 8192x4096 before anything is decoded, a 1-channel PFM, a negative
-// radiance, a file that is not RGBE at all).
+// Environment files (samples/tools/environment_file.h), on the host: a Radiance .hdr (flat and run-length) and a
+// 3-channel .pfm read back their texels exactly; what is not an environment is refused by a message naming the
+// file and the problem (another format, a size past 8192x4096 before anything is decoded, a 1-channel PFM, a
+// negative radiance, a file that is not RGBE at all, a truncated file, a broken run).
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -47,6 +47,28 @@ TEST(EnvironmentFile, ReadsRadianceHdrTexelsExactly) {
   std::filesystem::remove_all(dir);
 }
 
+// A run-length scanline (2, 2, width) of 8 texels: one run per channel, then a run that is cut short, a run of
+// 0 and a run past the scanline, each refused by name (Debian's stb_image 2.27 loops forever on the first).
+TEST(EnvironmentFile, ReadsRunLengthScanlinesAndRefusesBrokenRuns) {
+  const auto dir = test::freshTempPath("hairpipe_environment_rle");
+  std::filesystem::create_directories(dir);
+  const std::string start("\x02\x02\x00\x08", 4);
+  const std::string runs = std::string("\x88\x80\x88\x40\x88\x20\x88\x81", 8);  // 8 x (128, 64, 32, 129)
+  writeHdr(dir / "rle.hdr", 8, 1, start + runs);
+  const EnvironmentMap map = readEnvironmentFile(dir / "rle.hdr");
+  ASSERT_EQ(map.texels.size(), 8u);
+  EXPECT_EQ(map.texels[7], glm::vec3(1.0f, 0.5f, 0.25f));
+  writeHdr(dir / "cut.hdr", 8, 1, start + runs.substr(0, 3));
+  EXPECT_NE(errorOf(dir / "cut.hdr").find("truncated"), std::string::npos) << errorOf(dir / "cut.hdr");
+  writeHdr(dir / "zero.hdr", 8, 1, start + std::string(1, '\0'));
+  EXPECT_NE(errorOf(dir / "zero.hdr").find("a run of 0"), std::string::npos) << errorOf(dir / "zero.hdr");
+  writeHdr(dir / "long.hdr", 8, 1, start + std::string("\x89\x80", 2));
+  EXPECT_NE(errorOf(dir / "long.hdr").find("a run of 9 past its scanline"), std::string::npos) << errorOf(dir / "long.hdr");
+  writeHdr(dir / "flat_cut.hdr", 3, 2, std::string("\x80\x40\x20\x81", 4));
+  EXPECT_NE(errorOf(dir / "flat_cut.hdr").find("truncated"), std::string::npos) << errorOf(dir / "flat_cut.hdr");
+  std::filesystem::remove_all(dir);
+}
+
 TEST(EnvironmentFile, ReadsAThreeChannelPfm) {
   const auto dir = test::freshTempPath("hairpipe_environment_pfm");
   std::filesystem::create_directories(dir);
@@ -63,7 +85,8 @@ TEST(EnvironmentFile, RefusesWhatIsNotAnEnvironmentByName) {
   const auto dir = test::freshTempPath("hairpipe_environment_bad");
   std::filesystem::create_directories(dir);
   writeHdr(dir / "huge.hdr", 9000, 9000, "");
-  EXPECT_NE(errorOf(dir / "huge.hdr").find("8192x4096"), std::string::npos) << errorOf(dir / "huge.hdr");
+  EXPECT_NE(errorOf(dir / "huge.hdr").find("9000x9000 texels is empty or larger than"), std::string::npos)
+      << errorOf(dir / "huge.hdr");
   std::ofstream(dir / "text.hdr") << "not an image\n";
   EXPECT_NE(errorOf(dir / "text.hdr").find("not a Radiance .hdr"), std::string::npos) << errorOf(dir / "text.hdr");
   std::ofstream(dir / "sky.exr") << "x";

@@ -4,61 +4,77 @@
 #include <cmath>
 
 #include "engine/core/error.h"
+#include "engine/core/shading/luminance.h"
 #include "engine/core/shading/math_constants.h"
 
 namespace hp {
 namespace {
-struct Texel {
-  glm::dvec3 direction, radiance;
-  double solidAngle, luminance;
-  bool bright, taken;
+enum class TexelState : std::uint8_t { Dim, Bright, Taken };
+
+// Per texel, 5 bytes: its luminance and whether it is bright or taken (direction and solid angle are
+// recomputed where needed: an 8192 x 4096 map stays within 170 MB here).
+struct TexelTable {
+  const EnvironmentMap& map;
+  std::vector<float> luminance;
+  std::vector<TexelState> state;
+
+  explicit TexelTable(const EnvironmentMap& m) : map(m), luminance(m.texels.size()), state(m.texels.size()) {
+    for (std::uint32_t y = 0; y < m.height; ++y)
+      for (std::uint32_t x = 0; x < m.width; ++x) luminance[index(x, y)] = float(luminanceOf(m.texelRadiance(x, y)));
+  }
+  std::size_t index(std::uint32_t x, std::uint32_t y) const { return std::size_t(y) * map.width + x; }
+
+  void markBright(double factor) {
+    double sum = 0.0;
+    for (std::uint32_t y = 0; y < map.height; ++y)
+      for (std::uint32_t x = 0; x < map.width; ++x) sum += luminance[index(x, y)] * map.texelSolidAngle(y);
+    const double threshold = factor * sum / (4.0 * shading::kPi);
+    for (std::size_t i = 0; i < luminance.size(); ++i)
+      state[i] = luminance[i] > threshold && luminance[i] > 0.0f ? TexelState::Bright : TexelState::Dim;
+  }
+
+  // The brightest bright texel nobody took yet, or -1.
+  std::ptrdiff_t brightestFree() const {
+    std::ptrdiff_t best = -1;
+    for (std::size_t i = 0; i < luminance.size(); ++i)
+      if (state[i] == TexelState::Bright && (best < 0 || luminance[i] > luminance[std::size_t(best)]))
+        best = std::ptrdiff_t(i);
+    return best;
+  }
+
+  // Every free bright texel within the cluster's cone around `seed` becomes the light's.
+  EnvironmentLight gather(const glm::dvec3& seed, double cosCluster) {
+    EnvironmentLight light;
+    glm::dvec3 weighted(0.0);
+    for (std::uint32_t y = 0; y < map.height; ++y)
+      for (std::uint32_t x = 0; x < map.width; ++x) {
+        const std::size_t i = index(x, y);
+        if (state[i] != TexelState::Bright) continue;
+        const glm::dvec3 d = map.texelDirection(x, y);
+        if (glm::dot(d, seed) < cosCluster) continue;
+        state[i] = TexelState::Taken;
+        const double omega = map.texelSolidAngle(y);
+        light.irradiance += map.texelRadiance(x, y) * omega;
+        light.solidAngle += omega;
+        weighted += d * (double(luminance[i]) * omega);
+      }
+    light.direction = glm::length(weighted) > 0.0 ? glm::normalize(weighted) : seed;
+    return light;
+  }
+
+  // What no light took, projected on the SH.
+  EnvironmentSH residual() const {
+    EnvironmentSH sh{};
+    for (std::uint32_t y = 0; y < map.height; ++y)
+      for (std::uint32_t x = 0; x < map.width; ++x)
+        if (state[index(x, y)] != TexelState::Taken)
+          addToEnvironment(sh, map.texelDirection(x, y), map.texelRadiance(x, y) * map.texelSolidAngle(y));
+    return sh;
+  }
 };
 
-double luminanceOf(const glm::dvec3& rgb) { return 0.2126 * rgb.r + 0.7152 * rgb.g + 0.0722 * rgb.b; }
-
-std::vector<Texel> texelsOf(const EnvironmentMap& map) {
-  std::vector<Texel> texels;
-  texels.reserve(map.texels.size());
-  for (std::uint32_t y = 0; y < map.height; ++y)
-    for (std::uint32_t x = 0; x < map.width; ++x) {
-      const glm::dvec3 radiance = map.texelRadiance(x, y);
-      texels.push_back({map.texelDirection(x, y), radiance, map.texelSolidAngle(y), luminanceOf(radiance), false, false});
-    }
-  return texels;
-}
-
-void markBright(std::vector<Texel>& texels, double factor) {
-  double sum = 0.0;
-  for (const Texel& t : texels) sum += t.luminance * t.solidAngle;
-  const double threshold = factor * sum / (4.0 * shading::kPi);
-  for (Texel& t : texels) t.bright = t.luminance > threshold && t.luminance > 0.0;
-}
-
-// The brightest bright texel nobody took yet, or -1.
-std::ptrdiff_t brightestFree(const std::vector<Texel>& texels) {
-  std::ptrdiff_t best = -1;
-  for (std::size_t i = 0; i < texels.size(); ++i)
-    if (texels[i].bright && !texels[i].taken && (best < 0 || texels[i].luminance > texels[best].luminance))
-      best = std::ptrdiff_t(i);
-  return best;
-}
-
-EnvironmentLight gather(std::vector<Texel>& texels, const glm::dvec3& seed, double cosCluster) {
-  EnvironmentLight light;
-  glm::dvec3 weighted(0.0);
-  for (Texel& t : texels) {
-    if (!t.bright || t.taken || glm::dot(t.direction, seed) < cosCluster) continue;
-    t.taken = true;
-    light.irradiance += t.radiance * t.solidAngle;
-    light.solidAngle += t.solidAngle;
-    weighted += t.direction * (t.luminance * t.solidAngle);
-  }
-  light.direction = glm::length(weighted) > 0.0 ? glm::normalize(weighted) : seed;
-  return light;
-}
-
 void validate(const EnvironmentSplitSettings& s) {
-  if (s.maxLights > 4) throw Error("environment lights must be in [0, 4]");
+  if (s.maxLights > kMaxEnvironmentLights) throw Error("environment lights must be in [0, 4]");
   if (!(s.brightFactor > 0.0 && s.brightFactor < 1e6)) throw Error("environment bright factor must be in (0, 1e6)");
   if (!(s.clusterDeg > 0.0 && s.clusterDeg <= 180.0)) throw Error("environment cluster angle must be in (0, 180]");
 }
@@ -71,18 +87,17 @@ glm::dvec3 EnvironmentLight::color() const { return intensity() > 0.0 ? irradian
 EnvironmentSplit splitEnvironment(const EnvironmentMap& map, const EnvironmentSplitSettings& settings) {
   validate(settings);
   map.validate();
-  std::vector<Texel> texels = texelsOf(map);
-  markBright(texels, settings.brightFactor);
+  TexelTable table(map);
+  table.markBright(settings.brightFactor);
   EnvironmentSplit split;
   const double cosCluster = std::cos(glm::radians(settings.clusterDeg));
   while (split.lights.size() < settings.maxLights) {
-    const std::ptrdiff_t seed = brightestFree(texels);
+    const std::ptrdiff_t seed = table.brightestFree();
     if (seed < 0) break;
-    split.lights.push_back(gather(texels, texels[std::size_t(seed)].direction, cosCluster));
+    const auto x = std::uint32_t(std::size_t(seed) % map.width), y = std::uint32_t(std::size_t(seed) / map.width);
+    split.lights.push_back(table.gather(map.texelDirection(x, y), cosCluster));
   }
-  split.residual = {};
-  for (const Texel& t : texels)
-    if (!t.taken) addToEnvironment(split.residual, t.direction, t.radiance * t.solidAngle);
+  split.residual = table.residual();
   return split;
 }
 }  // namespace hp

@@ -15,8 +15,12 @@
 
 #include "engine/core/shading/environment_map.h"
 #include "engine/core/shading/environment_sh.h"
+#include "shaders/shared/opacity.h"
 
 namespace hp {
+// At most as many as there are shadow slots.
+inline constexpr std::uint32_t kMaxEnvironmentLights = gpu::OPACITY_MAX_LIGHTS;
+
 struct EnvironmentLight {
   glm::dvec3 direction{0.0, 1.0, 0.0};  // unit, toward the light
   glm::dvec3 irradiance{0.0};           // linear RGB, on a surface facing it
@@ -32,7 +36,7 @@ struct EnvironmentSplit {
 };
 
 struct EnvironmentSplitSettings {
-  std::uint32_t maxLights = 2;  // [0, 4]
+  std::uint32_t maxLights = 2;  // [0, kMaxEnvironmentLights]
   double brightFactor = 4.0;    // > 0
   double clusterDeg = 45.0;     // (0, 180]
 };

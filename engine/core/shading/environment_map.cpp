@@ -8,8 +8,6 @@
 
 namespace hp {
 namespace {
-constexpr std::uint32_t kMaxSide = 16384;
-
 // (u, v) of a direction of the unturned image.
 glm::dvec2 unturnedImagePoint(const glm::dvec3& d) {
   const double azimuth = std::atan2(d.x, d.z);  // 0 along +z, pi / 2 along +x
@@ -69,6 +67,7 @@ glm::dvec3 EnvironmentMap::texelRadiance(std::uint32_t x, std::uint32_t y) const
 
 glm::dvec3 EnvironmentMap::radiance(const glm::dvec3& dir) const {
   const glm::dvec2 p = imagePoint(dir);
+  if (!std::isfinite(p.x) || !std::isfinite(p.y)) return glm::dvec3(0.0);  // no direction: no light
   // Texel centres at (i + 0.5) / size; azimuth wraps, the poles clamp.
   const double x = p.x * width - 0.5, y = std::clamp(p.y * height - 0.5, 0.0, double(height - 1));
   const double fx = std::floor(x), fy = std::floor(y);
@@ -82,15 +81,18 @@ glm::dvec3 EnvironmentMap::radiance(const glm::dvec3& dir) const {
 }
 
 void EnvironmentMap::validate() const {
-  if (width < 1 || height < 1 || width > kMaxSide || height > kMaxSide)
+  if (width < 1 || height < 1 || std::uint64_t(width) * height > kMaxEnvironmentTexels)
     throw Error("environment image size " + std::to_string(width) + "x" + std::to_string(height) +
-                " is outside 1..16384 per side");
+                " is outside 1x1..8192x4096 texels");
   if (texels.size() != std::size_t(width) * height) throw Error("environment image holds the wrong number of texels");
-  for (const glm::vec3& t : texels)
-    for (int c = 0; c < 3; ++c)
-      if (!std::isfinite(t[c]) || t[c] < 0.0f) throw Error("environment image holds a negative or non-finite radiance");
   if (!(intensity >= 0.0 && intensity <= 1000.0)) throw Error("environment intensity must be in [0, 1000]");
   if (!std::isfinite(rotationDeg)) throw Error("environment rotation must be finite");
+  for (const glm::vec3& t : texels)
+    for (int c = 0; c < 3; ++c) {
+      if (!std::isfinite(t[c]) || t[c] < 0.0f) throw Error("environment image holds a negative or non-finite radiance");
+      if (double(t[c]) * intensity > kMaxEnvironmentRadiance)
+        throw Error("environment radiance above 1e9 (texel x intensity)");
+    }
 }
 
 EnvironmentMap sampledEnvironment(std::uint32_t width, std::uint32_t height,

@@ -11,6 +11,9 @@
 #include <glm/glm.hpp>
 
 namespace hp {
+inline constexpr std::uint64_t kMaxEnvironmentTexels = 8192ull * 4096ull;  // 400 MiB of float RGB
+inline constexpr double kMaxEnvironmentRadiance = 1e9;  // texel x intensity: far past the sun's, finite in float
+
 struct EnvironmentMap {
   std::uint32_t width = 0, height = 0;
   std::vector<glm::vec3> texels;  // row-major, width x height
@@ -27,8 +30,9 @@ struct EnvironmentMap {
   glm::dvec3 texelDirection(std::uint32_t x, std::uint32_t y) const;
   double texelSolidAngle(std::uint32_t y) const;
   glm::dvec3 texelRadiance(std::uint32_t x, std::uint32_t y) const;
-  // Throws hp::Error naming the problem: sizes (1..16384 each, texels = width x height), a texel that is not
-  // finite or is negative, an intensity outside [0, 1000] or a rotation that is not finite.
+  // Throws hp::Error naming the problem: sizes (at least 1 each, at most kMaxEnvironmentTexels in all, texels
+  // = width x height), a texel that is not finite or is negative, an intensity outside [0, 1000], a radiance
+  // (texel x intensity) above kMaxEnvironmentRadiance or a rotation that is not finite.
   void validate() const;
 };
 

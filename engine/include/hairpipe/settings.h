@@ -255,14 +255,15 @@ struct Light {
 // straight down, the middle column looking along +z; turned about +y by rotationDeg (counter-clockwise seen
 // from above) and scaled by intensity.
 struct EnvironmentImage {
-  std::uint32_t width = 0, height = 0;  // each 1..16384
-  std::vector<Vec3> texels;             // width x height, row-major, finite and >= 0
+  std::uint32_t width = 0, height = 0;  // at most 8192 x 4096 texels in all
+  std::vector<Vec3> texels;             // width x height, row-major, finite, >= 0, x intensity <= 1e9
   double rotationDeg = 0.0;
   double intensity = 1.0;               // [0, 1000]
 };
 
 // What the renderer draws of an environment: its bright regions (up to maxLights, [0, 4]) as shadowed
-// directional lights, to be added to the frame's lights, and the rest as LookSettings::environment. The
+// directional lights, to be added to the frame's lights, and the rest as LookSettings::environment (refused
+// when a coefficient would exceed LookSettings' +-10000: more lights or a lower intensity then). The
 // path-traced reference renders the image itself; docs/SHADING.md "Environment" has the split and its accuracy.
 struct EnvironmentLighting {
   std::vector<Light> lights;         // brightest first

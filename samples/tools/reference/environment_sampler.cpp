@@ -3,16 +3,14 @@
 #include <algorithm>
 #include <cmath>
 
-namespace hp::reference {
-namespace {
-double luminance(const glm::dvec3& c) { return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b; }
-}  // namespace
+#include "engine/core/shading/luminance.h"
 
+namespace hp::reference {
 EnvironmentSampler::EnvironmentSampler(const EnvironmentMap& map) : map_(map) {
   const std::uint32_t w = map.width, h = map.height;
   std::vector<double> lum(std::size_t(w) * h);
   for (std::uint32_t y = 0; y < h; ++y)
-    for (std::uint32_t x = 0; x < w; ++x) lum[std::size_t(y) * w + x] = luminance(map.texelRadiance(x, y));
+    for (std::uint32_t x = 0; x < w; ++x) lum[std::size_t(y) * w + x] = luminanceOf(map.texelRadiance(x, y));
   cdf_.resize(lum.size());
   for (std::uint32_t y = 0; y < h; ++y)
     for (std::uint32_t x = 0; x < w; ++x) {
@@ -35,7 +33,8 @@ double EnvironmentSampler::texelPdf(std::size_t texel) const {
 }
 
 std::size_t EnvironmentSampler::texelOf(const glm::dvec3& dir) const {
-  const glm::dvec2 p = map_.imagePoint(dir);
+  glm::dvec2 p = map_.imagePoint(dir);
+  if (!std::isfinite(p.x) || !std::isfinite(p.y)) p = glm::dvec2(0.0);  // not a direction: any texel, its pdf
   const auto x = std::uint32_t(std::clamp(std::floor(p.x * map_.width), 0.0, double(map_.width - 1)));
   const auto y = std::uint32_t(std::clamp(std::floor(p.y * map_.height), 0.0, double(map_.height - 1)));
   return std::size_t(y) * map_.width + x;
