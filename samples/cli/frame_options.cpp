@@ -184,6 +184,7 @@ hp::RenderRequest makeRenderRequest(const FrameOptions& o, const CLI::App& cmd) 
       throw hp::Error("--skin-bounce must be on or off, got '" + o.skinBounce->substr(0, 40) + "'");
     r.look.skinBounce = *o.skinBounce == "on";
   }
+  if (o.wrap) r.look.wrap = *o.wrap;  // range checked by look.validate below
   if (o.skinColor) {
     r.look.skinColor = vec3Option(*o.skinColor, "--skin-color");
     if (glm::any(glm::lessThan(r.look.skinColor, glm::vec3(0.0f))) || glm::any(glm::greaterThan(r.look.skinColor, glm::vec3(1.0f))))
@@ -277,6 +278,9 @@ void addFrameOptions(CLI::App& cmd, FrameOptions& o) {
                  "back (physical fibre model), or single");
   cmd.add_option("--skin-bounce", o.skinBounce,
                  "on or off: adds the sunlight the skin reflects onto the hair (default on)");
+  cmd.add_option("--wrap", o.wrap,
+                 "The skin's wrap lighting, [0, 1]: light reaches past the terminator as (wrap + N.L) / (1 + wrap) "
+                 "(default 0.5; 0 is Lambertian, as the reference's skin)");
   cmd.add_option("--skin-color", o.skinColor, "Skin albedo R,G,B, each in [0, 1] (default 0.62,0.45,0.36)")
       ->delimiter(',')->expected(3);
   cmd.add_flag("--lines", o.lines, "Draw strands as lines instead of ribbons");

@@ -36,6 +36,7 @@ struct FrameOptions {
   std::optional<std::string> scattering;
   std::optional<std::string> skinBounce;  // on | off
   std::optional<std::vector<float>> skinColor;
+  std::optional<float> wrap;  // the skin's wrap lighting
   std::string lutMode = "physical";
   std::string animate = "none";
   float exposure = 1.0f;
