@@ -3,9 +3,10 @@
 // Per light of the frame: S(L, V, T) cos(theta_i) x light x transmittance [+ the light the hair in front
 // scattered forward and the light the hair around scatters back, dual scattering]; then sky albedo x (the
 // environment's light around the fibre x the sky's visibility (RENDER_HAIR_SKY_VISIBILITY, or with dual
-// scattering MarschnerParams.skyVisibility) + the skin's bounce of the slot-0 light, which the caller passes in: strand_bounce.comp gathers it along the
-// strands once a frame, bounce_samples.glsl interpolates it), all times the strand's lightness variation. The transmittance is the hair's (opacity maps of the light's shadow slot)
-// times the heads' (their depth map); a light without a slot is unshadowed.
+// scattering MarschnerParams.skyVisibility) + the skin's bounce of the slot-0 light, which the caller passes
+// in: strand_bounce.comp gathers it along the strands once a frame, bounce_samples.glsl interpolates it), all
+// times the strand's lightness variation. The transmittance is the hair's (opacity maps of the light's shadow
+// slot) times the heads' (their depth map); a light without a slot is unshadowed.
 // The includer declares `frame` (RenderFrame), `marschner` (MarschnerParams), the LUT samplers lutM, lutN0,
 // lutN1, and what frame_shadows.glsl needs, before including this file.
 #ifndef HP_HAIR_SHADING_GLSL

@@ -1,9 +1,9 @@
 #version 460
 // The head: per light of the frame, diffuse with the paper's wrap term (wrap + N.L) / (1 + wrap) (L, cone
-// and distance scale from light.glsl), plus the environment's irradiance / pi (environment.glsl); hair-coloured where hair grows. Each light's direct
-// term is shadowed by the hair (its slot's opacity maps, T = hairTransmittance(k alpha): exp(-k alpha) and,
-// with dual scattering, the light the hair passes on forward; looked up over a few texels) and by the heads
-// (their depth map): frame_shadows.glsl.
+// and distance scale from light.glsl), plus the environment's irradiance / pi (environment.glsl);
+// hair-coloured where hair grows. Each light's direct term is shadowed by the hair (its slot's opacity maps,
+// T = hairTransmittance(k alpha): exp(-k alpha) and, with dual scattering, the light the hair passes on
+// forward; looked up over a few texels) and by the heads (their depth map): frame_shadows.glsl.
 #include "shared/render.h"
 
 layout(std140, binding = RENDER_BINDING_FRAME) uniform Frame { RenderFrame frame; };
