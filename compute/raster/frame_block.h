@@ -30,7 +30,7 @@ struct LookSettings {
   float wrap = 0.5f;                 // the paper's wrap term for the head, [0, 1]
   float ambient = 0.06f;             // a uniform sky's radiance, added to `environment`
   // The environment's radiance as 9 RGB spherical-harmonic coefficients (engine/core/shading/environment_sh.h:
-  // projectEnvironment of an EnvironmentMap); all zero: none. It lights the hair and the skin, occluded like
+  // what splitEnvironment leaves after its lights, or projectEnvironment of a whole map); all zero: none. It lights the hair and the skin, occluded like
   // the uniform sky (docs/SHADING.md "Environment").
   std::array<glm::vec3, 9> environment{};
   // Dual (default): add the light the hair in front of a fibre scattered forward onto it and the light the

@@ -51,35 +51,32 @@ PosedSphere posedSphere() {
 
 namespace {
 // A closed 8 cm box of 12 triangles (shared corners: smooth normals), one joint at rest: sharp edges and corners.
+// `m` (positions and triangles) bound wholly to one joint, at rest.
+PosedSphere restingRigid(CharacterMesh m) {
+  m.joints.assign(m.positions.size(), glm::uvec4(0));
+  m.weights.assign(m.positions.size(), glm::vec4(1, 0, 0, 0));
+  m.skeleton.push_back(Joint{"root"});
+  finishCharacterMesh(m);
+  return {std::move(m), {glm::mat4(1.0f)}};
+}
+
 PosedSphere restingBox() {
-  PosedSphere s;
-  CharacterMesh& m = s.mesh;
+  CharacterMesh m;
   m.source = "box";
   for (int i = 0; i < 8; ++i) m.positions.emplace_back(i & 1 ? 0.04f : -0.04f, i & 2 ? 0.04f : -0.04f, i & 4 ? 0.04f : -0.04f);
   const std::uint32_t quads[6][4] = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
   for (const auto& q : quads) m.triangles.insert(m.triangles.end(), {{q[0], q[1], q[2]}, {q[0], q[2], q[3]}});
-  m.joints.assign(8, glm::uvec4(0));
-  m.weights.assign(8, glm::vec4(1, 0, 0, 0));
-  m.skeleton.push_back(Joint{"root"});
-  finishCharacterMesh(m);
-  s.skin = {glm::mat4(1.0f)};
-  return s;
+  return restingRigid(std::move(m));
 }
 
 // A regular tetrahedron of 8 cm edges (dihedral angles of 70.5 degrees: sharper than a face normal can judge).
 PosedSphere restingTetrahedron() {
-  PosedSphere s;
-  CharacterMesh& m = s.mesh;
+  CharacterMesh m;
   m.source = "tetrahedron";
   const float a = 0.04f / std::sqrt(2.0f);
   m.positions = {{a, a, a}, {a, -a, -a}, {-a, a, -a}, {-a, -a, a}};
   m.triangles = {{0, 1, 2}, {0, 3, 1}, {0, 2, 3}, {1, 3, 2}};
-  m.joints.assign(4, glm::uvec4(0));
-  m.weights.assign(4, glm::vec4(1, 0, 0, 0));
-  m.skeleton.push_back(Joint{"root"});
-  finishCharacterMesh(m);
-  s.skin = {glm::mat4(1.0f)};
-  return s;
+  return restingRigid(std::move(m));
 }
 
 // Poses `s` on the device and compares with the CPU: posed vertices and normals, and at every grid node the
