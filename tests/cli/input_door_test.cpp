@@ -24,6 +24,7 @@
 #include "samples/tools/obj_albedo_mesh.h"
 #include "samples/tools/png_file.h"
 #include "tests/support/cli_runner.h"
+#include "tests/support/refusal.h"
 
 namespace {
 struct Reader {
@@ -48,12 +49,7 @@ const std::vector<Reader> kReaders = {
 };
 
 std::string refusal(const Reader& reader, const std::filesystem::path& path) {
-  try {
-    reader.read(path);
-  } catch (const hp::Error& e) {
-    return e.what();
-  }
-  return "(accepted)";
+  return hp::test::refusalOf([&] { reader.read(path); });
 }
 }  // namespace
 

@@ -12,6 +12,7 @@
 #include "samples/tools/environment_file.h"
 #include "samples/tools/linear_image.h"
 #include "tests/support/cli_runner.h"
+#include "tests/support/refusal.h"
 
 using namespace hp;
 
@@ -23,12 +24,7 @@ void writeHdr(const std::filesystem::path& path, int width, int height, const st
 }
 
 std::string errorOf(const std::filesystem::path& path) {
-  try {
-    readEnvironmentFile(path);
-  } catch (const Error& e) {
-    return e.what();
-  }
-  return "(accepted)";
+  return test::refusalOf([&] { readEnvironmentFile(path); });
 }
 }  // namespace
 

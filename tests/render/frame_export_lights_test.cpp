@@ -15,6 +15,7 @@
 #include "samples/tools/frame_export.h"
 #include "samples/tools/linear_image.h"
 #include "tests/support/cli_runner.h"
+#include "tests/support/refusal.h"
 
 using namespace hp;
 
@@ -53,12 +54,7 @@ nlohmann::json readJson(const std::filesystem::path& path) {
 void writeJson(const std::filesystem::path& path, const nlohmann::json& j) { std::ofstream(path) << j.dump(2); }
 
 std::string readError(const std::filesystem::path& dir) {
-  try {
-    readFrameExport(dir);
-  } catch (const Error& e) {
-    return e.what();
-  }
-  return "(accepted)";
+  return test::refusalOf([&] { readFrameExport(dir); });
 }
 }  // namespace
 

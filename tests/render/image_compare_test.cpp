@@ -10,6 +10,7 @@
 
 #include "engine/core/error.h"
 #include "samples/tools/image_compare.h"
+#include "tests/support/refusal.h"
 #include "samples/tools/linear_image.h"
 
 namespace {
@@ -21,12 +22,7 @@ hp::LinearImage grey(float value) {
 
 // The message of compareImages' refusal, or "(accepted)".
 std::string refusalOf(const hp::LinearImage& image, const hp::LinearImage& reference, float exposure = 1.0f) {
-  try {
-    hp::compareImages(image, reference, {}, exposure);
-  } catch (const hp::Error& e) {
-    return e.what();
-  }
-  return "(accepted)";
+  return hp::test::refusalOf([&] { hp::compareImages(image, reference, {}, exposure); });
 }
 
 TEST(ImageCompare, IdenticalImagesScore99AndDifferentOnesLess) {
@@ -63,12 +59,7 @@ namespace {
 std::string pfmRefusal(const std::string& bytes) {
   const std::filesystem::path path = std::filesystem::temp_directory_path() / "hairpipe_pfm_reader_test.pfm";
   { std::ofstream(path, std::ios::binary) << bytes; }
-  std::string message = "(accepted)";
-  try {
-    hp::readPfm(path);
-  } catch (const hp::Error& e) {
-    message = e.what();
-  }
+  const std::string message = hp::test::refusalOf([&] { hp::readPfm(path); });
   std::filesystem::remove(path);
   return message;
 }
