@@ -4,13 +4,18 @@
 // Tangents: the guides' unit tangents blended with the same weights and renormalised (A's tangent if
 // the blend vanishes). Also writes the strand's attributes (makeStrandAttributes, shared/strands.h).
 // Debug mode INTERPOLATE_MODE_GUIDES: strand s is smoothed guide firstStrand + s, copied as is.
-// One invocation per strand of one chunk, looping over its Q vertices: the binding and triangle are
-// read once per strand instead of once per vertex (1.65x faster on lavapipe than one invocation per
-// vertex, docs/PERFORMANCE.md); lanes write Q*16 bytes apart, which caches merge on GPUs.
+// Two walks (specialization constant PER_VERTEX, compute/strands/interpolate_pass.h InterpolateWalk):
+// - per strand (CPU devices, and the groom detail, which carries a frame along the strand): one invocation
+//   per strand of one chunk, looping over its Q vertices; the binding and triangle are read once per
+//   strand (1.65x faster on lavapipe than one invocation per vertex, docs/PERFORMANCE.md), but a warp's
+//   lanes write Q*16 bytes apart.
+// - per vertex (GPUs, plain blend): one invocation per vertex, so a warp's stores are contiguous; the
+//   strand's binding and triangle are re-read by its Q lanes from cache.
 #include "shared/strands.h"
 #include "common.glsl"
 
 layout(local_size_x = INTERPOLATE_WORKGROUP_SIZE) in;
+layout(constant_id = 0) const uint PER_VERTEX = 0u;
 layout(std430, binding = INTERPOLATE_BINDING_GUIDE_POSITIONS) readonly buffer GuidePositions { vec4 guidePositions[]; };
 layout(std430, binding = INTERPOLATE_BINDING_GUIDE_TANGENTS) readonly buffer GuideTangents { vec4 guideTangents[]; };
 layout(std430, binding = INTERPOLATE_BINDING_TRIANGLES) readonly buffer Triangles { uvec4 triangles[]; };
@@ -127,29 +132,46 @@ void interpolateGroomed(uint s, StrandBindingGpu b, uvec3 src, vec3 w) {
   attributes[s] = makeStrandAttributes(b.random, b.triangle);
 }
 
+// Vertex j of the plain blend of the guides `src` with weights w, at dst.
+void blendVertex(uvec3 src, vec3 w, uint j, uint dst) {
+  vec3 ta = guideTangents[src.x + j].xyz;
+  vec3 tan = unitOr(w.x * ta + w.y * guideTangents[src.y + j].xyz + w.z * guideTangents[src.z + j].xyz, ta);
+  positions[dst] = vec4(blendAt(src, w, j), guidePositions[src.x + j].w);  // w = v, the same for all guides
+  tangents[dst] = vec4(tan, 0.0);
+}
+
+vec3 bindingWeights(StrandBindingGpu b) { return vec3(b.x1, b.x2, max(0.0, 1.0 - b.x1 - b.x2)); }
+
 void interpolate(uint s) {
   StrandBindingGpu b = bindings[s];
   uvec3 src = triangles[b.triangle].xyz * push.vertices;
-  vec3 w = vec3(b.x1, b.x2, max(0.0, 1.0 - b.x1 - b.x2));
+  vec3 w = bindingWeights(b);
   if (groomOn()) {
     interpolateGroomed(s, b, src, w);
     return;
   }
-  uint dst = s * push.vertices;
-  for (uint j = 0u; j < push.vertices; ++j) {
-    vec3 ta = guideTangents[src.x + j].xyz;
-    vec3 tan = unitOr(w.x * ta + w.y * guideTangents[src.y + j].xyz + w.z * guideTangents[src.z + j].xyz, ta);
-    positions[dst + j] = vec4(blendAt(src, w, j), guidePositions[src.x + j].w);  // w = v, the same for all guides
-    tangents[dst + j] = vec4(tan, 0.0);
-  }
+  for (uint j = 0u; j < push.vertices; ++j) blendVertex(src, w, j, s * push.vertices + j);
   attributes[s] = makeStrandAttributes(b.random, b.triangle);
 }
 
+// The per-vertex walk: vertex i of the chunk (plain blend only; the pass keeps groomed and guides-only
+// chunks on the per-strand walk).
+void interpolateVertex(uint i) {
+  uint s = i / push.vertices, j = i % push.vertices;
+  StrandBindingGpu b = bindings[s];
+  blendVertex(triangles[b.triangle].xyz * push.vertices, bindingWeights(b), j, i);
+  if (j == 0u) attributes[s] = makeStrandAttributes(b.random, b.triangle);
+}
+
 void main() {
-  uint s = hpThreadId(INTERPOLATE_WORKGROUP_SIZE);
-  if (s >= push.strandCount) return;
+  uint id = hpThreadId(INTERPOLATE_WORKGROUP_SIZE);
+  if (PER_VERTEX != 0u) {
+    if (id < push.strandCount * push.vertices) interpolateVertex(id);
+    return;
+  }
+  if (id >= push.strandCount) return;
   if (push.mode == INTERPOLATE_MODE_GUIDES)
-    copyGuide(s);
+    copyGuide(id);
   else
-    interpolate(s);
+    interpolate(id);
 }

@@ -22,21 +22,17 @@ layout(std430, binding = RASTER_BINDING_SHADE_LIST) writeonly buffer ShadeList {
 layout(std430, binding = RASTER_BINDING_SHADE_ARGS) buffer ShadeArgs { uvec4 shadeArgs[]; };
 #include "raster.glsl"
 
-// Lists vertex v for raster_shade.comp once (the segments on either side of it may both ask).
-void listForShading(uint v) {
-  if (atomicExchange(shadeFlags[v], 1u) != 0u) return;
-  uint slot = atomicAdd(shadeArgs[params.chunkIndex].w, 1u);
-  shadeList[params.firstVertex + slot] = v;
-}
+// Count mode: the vertices this workgroup lists for raster_shade.comp, and where they go in the chunk's
+// shade list. One global atomic per workgroup instead of one per listed vertex on a single counter (which
+// serialises on GPUs), and a workgroup's vertices land next to each other, as the shade pass reads them.
+shared uint groupListed;
+shared uint groupBase;
 
-void main() {
-  uint segments = params.verticesPerStrand - 1u;
-  uint i = hpThreadId(RASTER_WORKGROUP_SIZE);
-  if (i >= params.strandCount * segments) return;
-  uint k = i % segments;
-  uint v = params.firstVertex + (i / segments) * params.verticesPerStrand + k;
+// Bins segment i of the chunk (its key counts, and in scatter mode its list entries); returns whether
+// some tile lists it.
+bool binSegment(uint i, uint v, uint k, uint segments) {
   Footprint f = segmentFootprint(v);
-  if (!f.visible) return;
+  if (!f.visible) return false;
   uint id = v | (k + 1u == segments ? RASTER_LAST_SEGMENT : 0u);
   bool listed = false;
   for (uint ty = f.tileMin.y; ty <= f.tileMax.y; ++ty)
@@ -51,9 +47,36 @@ void main() {
       uint index = tileListStart(tile) + keys[key].x + slot;
       if (index < params.capacity) list[index] = uvec2(id, rows);
     }
-  // Count mode: both ends of a segment in some tile's list get shaded; the others never composite.
-  if (MODE == RASTER_MODE_COUNT && listed) {
-    listForShading(v);
-    listForShading(v + 1u);
+  return listed;
+}
+
+// Whether this invocation is the one that lists vertex v for shading (the segments on either side of it
+// may both ask).
+bool claimForShading(uint v) { return atomicExchange(shadeFlags[v], 1u) == 0u; }
+
+void main() {
+  uint segments = params.verticesPerStrand - 1u;
+  uint i = hpThreadId(RASTER_WORKGROUP_SIZE);
+  bool inRange = i < params.strandCount * segments;
+  uint k = i % segments;
+  uint v = params.firstVertex + (i / segments) * params.verticesPerStrand + k;
+  if (MODE != RASTER_MODE_COUNT) {  // a specialization constant: uniform, no barrier below is skipped unevenly
+    if (inRange) binSegment(i, v, k, segments);
+    return;
   }
+  if (gl_LocalInvocationIndex == 0u) groupListed = 0u;
+  barrier();
+  // Count mode: both ends of a segment in some tile's list get shaded; the others never composite.
+  bool listed = inRange && binSegment(i, v, k, segments);
+  bool first = listed && claimForShading(v);
+  bool second = listed && claimForShading(v + 1u);
+  uint mine = uint(first) + uint(second);
+  uint local = mine > 0u ? atomicAdd(groupListed, mine) : 0u;
+  barrier();
+  if (gl_LocalInvocationIndex == 0u && groupListed > 0u)
+    groupBase = atomicAdd(shadeArgs[params.chunkIndex].w, groupListed);
+  barrier();
+  uint slot = params.firstVertex + groupBase + local;
+  if (first) shadeList[slot++] = v;
+  if (second) shadeList[slot] = v + 1u;
 }

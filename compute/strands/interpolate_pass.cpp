@@ -2,6 +2,8 @@
 
 #include <string>
 
+#include "engine/vk/context.h"
+
 namespace hp::compute {
 namespace {
 constexpr VkShaderStageFlags kCompute = VK_SHADER_STAGE_COMPUTE_BIT;
@@ -15,14 +17,36 @@ const vk::Binding kBindings[] = {
     {gpu::INTERPOLATE_BINDING_TANGENTS, kStorage, kCompute},
     {gpu::INTERPOLATE_BINDING_ATTRIBUTES, kStorage, kCompute},
 };
+
+bool perVertexOn(const vk::Context& ctx, InterpolateWalk walk) {
+  if (walk == InterpolateWalk::Auto) return ctx.properties().deviceType != VK_PHYSICAL_DEVICE_TYPE_CPU;
+  return walk == InterpolateWalk::PerVertex;
+}
+
+std::shared_ptr<const vk::ComputePipeline> makeWalk(const vk::Context& ctx, vk::PipelineLibrary* library,
+                                                    VkDescriptorSetLayout layout, bool perVertex) {
+  return vk::makeComputePipeline(ctx, library, "interpolate.comp", gpu::INTERPOLATE_WORKGROUP_SIZE, {layout},
+                                 sizeof(gpu::InterpolatePush), perVertex ? "interpolate per vertex" : "interpolate",
+                                 {perVertex ? 1u : 0u});
+}
 }  // namespace
 
+const char* interpolateWalkName(InterpolateWalk walk) {
+  return walk == InterpolateWalk::Auto ? "auto" : walk == InterpolateWalk::PerVertex ? "vertex" : "strand";
+}
+
+std::optional<InterpolateWalk> parseInterpolateWalk(const std::string& name) {
+  for (InterpolateWalk w : {InterpolateWalk::Auto, InterpolateWalk::PerStrand, InterpolateWalk::PerVertex})
+    if (name == interpolateWalkName(w)) return w;
+  return std::nullopt;
+}
+
 InterpolatePass::InterpolatePass(const vk::Context& ctx, const StrandBuffers& buffers, vk::PipelineLibrary* library,
-                                 const GroomSettings& groom)
+                                 const GroomSettings& groom, InterpolateWalk walk)
     : ctx_(&ctx),
       layoutSet_(ctx, kBindings, "interpolate layout"),
-      pipeline_(vk::makeComputePipeline(ctx, library, "interpolate.comp", gpu::INTERPOLATE_WORKGROUP_SIZE, {layoutSet_.layout()},
-                sizeof(gpu::InterpolatePush), "interpolate")) {
+      perStrand_(makeWalk(ctx, library, layoutSet_.layout(), false)),
+      perVertex_(perVertexOn(ctx, walk) ? makeWalk(ctx, library, layoutSet_.layout(), true) : nullptr) {
   setGroom(groom);
   bind(buffers);
 }
@@ -30,11 +54,15 @@ InterpolatePass::InterpolatePass(const vk::Context& ctx, const StrandBuffers& bu
 void InterpolatePass::setGroom(const GroomSettings& groom) {
   groom.validate();
   groom_ = groomParams(groom);
+  groomOn_ = groom.any();
   for (Chunk& c : chunks_) c.push.groom = groom_;
 }
 
+bool InterpolatePass::walksPerVertex() const { return perVertex_ && !groomOn_ && !guidesOnly_; }
+
 void InterpolatePass::bind(const StrandBuffers& buffers) {
   const StrandLayout& l = buffers.layout();
+  guidesOnly_ = l.guidesOnly;
   const std::uint32_t mode = l.guidesOnly ? gpu::INTERPOLATE_MODE_GUIDES : gpu::INTERPOLATE_MODE_STRANDS;
   std::vector<Chunk> chunks;
   for (const StrandChunk& c : buffers.chunks()) {
@@ -55,10 +83,12 @@ void InterpolatePass::bind(const StrandBuffers& buffers) {
 
 void InterpolatePass::record(VkCommandBuffer cmd, vk::GpuProfiler* profiler) const {
   if (profiler) profiler->begin(cmd, "interpolate");
+  const bool perVertex = walksPerVertex();
+  const vk::ComputePipeline& pipeline = perVertex ? *perVertex_ : *perStrand_;
   for (const Chunk& c : chunks_) {
-    pipeline_->bind(cmd, c.set.set());
-    pipeline_->push(cmd, c.push);
-    pipeline_->dispatch(cmd, c.push.strandCount);
+    pipeline.bind(cmd, c.set.set());
+    pipeline.push(cmd, c.push);
+    pipeline.dispatch(cmd, perVertex ? c.push.strandCount * c.push.vertices : c.push.strandCount);
   }
   if (profiler) profiler->end(cmd);
 }

@@ -5,8 +5,8 @@
 // makeStrandAttributes in shaders/shared/strands.h), and the groom detail of GroomSettings (clumps, curl,
 // frizz; engine/core/hair/groom.h) when any is set. In guides-only layouts (StrandOptions::guidesOnly)
 // it copies the smoothed guides instead, one render strand per guide. Owns its pipeline and one
-// descriptor set per chunk; record() adds one dispatch per chunk (one invocation per strand) and
-// inserts no barriers. The frame recorder guarantees:
+// descriptor set per chunk; record() adds one dispatch per chunk (one invocation per strand, or per
+// vertex: InterpolateWalk) and inserts no barriers. The frame recorder guarantees:
 //   before record: smoothed guides in BufferUse::ComputeRead (after TessellatePass's ComputeWrite);
 //                  triangles and bindings in ComputeRead (StrandBuffers leaves them there);
 //                  render strand buffers no longer read by the previous frame (last use -> ComputeWrite).
@@ -14,6 +14,8 @@
 //                  them to VertexRead/GraphicsRead for the draw passes (or TransferSrc for readback).
 #include "hairpipe_volk.h"
 
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "compute/strands/strand_buffers.h"
@@ -24,16 +26,25 @@
 #include "shaders/shared/strands.h"
 
 namespace hp::compute {
+// How the invocations cover a chunk (shaders/interpolate.comp). Per vertex makes a warp's stores
+// contiguous (GPUs); per strand reads each strand's binding once (CPU devices). Auto: per strand on CPU
+// devices, per vertex elsewhere. The groom detail and guides-only layouts always walk per strand.
+enum class InterpolateWalk { Auto, PerStrand, PerVertex };
+const char* interpolateWalkName(InterpolateWalk walk);                        // "auto", "strand", "vertex"
+std::optional<InterpolateWalk> parseInterpolateWalk(const std::string& name);  // one of those names, or none
+
 class InterpolatePass {
  public:
   InterpolatePass(const vk::Context& ctx, const StrandBuffers& buffers, vk::PipelineLibrary* library = nullptr,
-                  const GroomSettings& groom = {});
+                  const GroomSettings& groom = {}, InterpolateWalk walk = InterpolateWalk::Auto);
 
   // After StrandBuffers was re-allocated (density, Q, guides-only change); outside the frame loop only.
   void bind(const StrandBuffers& buffers);
   void record(VkCommandBuffer cmd, vk::GpuProfiler* profiler = nullptr) const;
   // The groom detail of the next record() (push constants: no GPU object changes). Validates it.
   void setGroom(const GroomSettings& groom);
+  // Whether the next record() walks per vertex (the walk asked for, the device, the groom and layout).
+  bool walksPerVertex() const;
 
  private:
   struct Chunk {
@@ -44,8 +55,11 @@ class InterpolatePass {
   // The pipeline layout is made from this set's layout; chunk sets have identical layouts, so they
   // are compatible, and chunk sets can be rebuilt without touching the pipeline.
   vk::DescriptorSet layoutSet_;
-  std::shared_ptr<const vk::ComputePipeline> pipeline_;
+  std::shared_ptr<const vk::ComputePipeline> perStrand_;
+  std::shared_ptr<const vk::ComputePipeline> perVertex_;  // none where the walk never goes per vertex
   std::vector<Chunk> chunks_;
   gpu::GroomParams groom_{};
+  bool groomOn_ = false;
+  bool guidesOnly_ = false;
 };
 }  // namespace hp::compute

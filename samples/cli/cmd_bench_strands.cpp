@@ -1,6 +1,7 @@
-// `hairpipe bench strands [--strands 10000,100000,1000000] [--frames F] [--vertices Q] [--json]`:
-// GPU time per frame of the tessellate and interpolate passes (GpuProfiler timestamps, median of F
-// frames after one warm-up frame) on the default head at each render-strand count, and the achieved
+// `hairpipe bench strands [--strands 10000,100000,1000000] [--frames F] [--vertices Q] [--walk auto,strand,vertex]
+// [--json]`: GPU time per frame of the tessellate and interpolate passes (GpuProfiler timestamps, median of F
+// frames after one warm-up frame) on the default head at each render-strand count and interpolate walk
+// (compute::InterpolateWalk), and the achieved
 // bandwidth as a fraction of a vkCmdCopyBuffer of 128 MiB timed in the same frames.
 // Bytes counted per pass are the compulsory traffic: every input read once, every output written once
 //   tessellate:  G*P*16 read + G*Q*32 written
@@ -37,6 +38,7 @@ struct BenchOptions {
   std::vector<std::uint32_t> strands{10000, 100000, 1000000};
   std::uint32_t frames = 5;
   std::uint32_t vertices = hp::compute::kDefaultVerticesPerStrand;
+  std::vector<std::string> walks{"auto"};
   bool json = false;
   std::string device;
   hp::cli::GroomOptions groomOptions;
@@ -45,6 +47,8 @@ struct BenchOptions {
 
 struct Result {
   hp::compute::StrandLayout layout;
+  hp::compute::InterpolateWalk walk = hp::compute::InterpolateWalk::Auto;
+  bool perVertex = false;  // the walk the pass took
   double tessellateMs = 0, interpolateMs = 0, copyMs = 0;
   double frameWallMs = 0;  // host wall clock of a whole frame submission (sanity check of the timestamps)
   hp::vk::CopyTiming copyAlone;  // the yardstick: the copy in submissions of its own
@@ -70,7 +74,7 @@ void recordFrame(const hp::vk::Context& ctx, VkCommandBuffer cmd, hp::vk::GpuPro
   copy.record(cmd, profiler);
 }
 
-Result benchOne(const hp::vk::Context& ctx, std::uint32_t strands, const BenchOptions& o) {
+Result benchOne(const hp::vk::Context& ctx, std::uint32_t strands, hp::compute::InterpolateWalk walk, const BenchOptions& o) {
   hp::DensityOptions density;
   density.totalStrands = strands;
   hp::HairAsset asset = hp::buildDefaultHeadAsset(hp::defaultHeadGrowth(), density);
@@ -80,7 +84,7 @@ Result benchOne(const hp::vk::Context& ctx, std::uint32_t strands, const BenchOp
   hp::compute::StrandBuffers buffers(ctx, guides.guideCount(), guides.particlesPerGuide, asset.topology, options);
   hp::vk::Buffer particles = hp::compute::uploadGuideParticles(ctx, guides);
   hp::compute::TessellatePass tessellate(ctx, particles, buffers);
-  hp::compute::InterpolatePass interpolate(ctx, buffers, nullptr, o.groom);
+  hp::compute::InterpolatePass interpolate(ctx, buffers, nullptr, o.groom, walk);
   hp::vk::CopyReference copy(ctx, kCopyBytes);
   hp::vk::GpuProfiler profiler(ctx, 8, "bench strands");
   std::map<std::string, std::vector<double>> times;
@@ -95,6 +99,8 @@ Result benchOne(const hp::vk::Context& ctx, std::uint32_t strands, const BenchOp
   }
   Result r;
   r.layout = buffers.layout();
+  r.walk = walk;
+  r.perVertex = interpolate.walksPerVertex();
   r.tessellateMs = hp::vk::median(times["tessellate"]);
   r.interpolateMs = hp::vk::median(times["interpolate"]);
   r.copyMs = hp::vk::median(times["copy"]);
@@ -120,6 +126,8 @@ nlohmann::json toJson(const Result& r) {
           {"guides", r.layout.guideCount},
           {"vertices_per_strand", r.layout.verticesPerStrand},
           {"chunks", r.layout.chunks.size()},
+          {"walk", hp::compute::interpolateWalkName(r.walk)},
+          {"per_vertex", r.perVertex},
           {"tessellate", pass(r.tessellateMs, r.tessellateBytes)},
           {"interpolate", pass(r.interpolateMs, r.interpolateBytes)},
           {"copy", {{"ms", r.copyMs}, {"bytes", 2.0 * kCopyBytes}, {"alone_ms", r.copyAlone.medianMs},
@@ -132,13 +140,14 @@ nlohmann::json toJson(const Result& r) {
 void printText(const nlohmann::json& report) {
   std::cout << "device: " << report["device"].get<std::string>() << ", median of " << report["frames"]
             << " frames\n";
-  std::cout << "strands  chunks  tessellate ms  interpolate ms  interp GB/s  of copy  copy GB/s  frame wall ms\n";
+  std::cout << "strands  chunks  walk          tessellate ms  interpolate ms  interp GB/s  of copy  copy GB/s  frame wall ms\n";
   for (const auto& r : report["results"]) {
-    char line[160];
+    char line[200];
     const bool resolved = r["timestamps_resolve_passes"].get<bool>();
     const nlohmann::json& interp = r["interpolate"];
-    std::snprintf(line, sizeof line, "%7u  %6zu  %13.3f  %14.3f  %11.2f  %6.0f%%  %9.2f  %13.1f\n", r["strands"].get<unsigned>(),
-                  r["chunks"].get<std::size_t>(), r["tessellate"]["ms"].get<double>(), interp["ms"].get<double>(),
+    const std::string walk = r["walk"].get<std::string>() + (r["per_vertex"].get<bool>() ? " (vertex)" : " (strand)");
+    std::snprintf(line, sizeof line, "%7u  %6zu  %-12s  %13.3f  %14.3f  %11.2f  %6.0f%%  %9.2f  %13.1f\n", r["strands"].get<unsigned>(),
+                  r["chunks"].get<std::size_t>(), walk.c_str(), r["tessellate"]["ms"].get<double>(), interp["ms"].get<double>(),
                   resolved ? interp["gb_per_s"].get<double>() : 0.0,
                   resolved ? 100.0 * interp["fraction_of_copy"].get<double>() : 0.0,
                   r["copy"]["alone_gb_per_s"].get<double>(), r["frame_wall_ms"].get<double>());
@@ -153,10 +162,17 @@ void run(BenchOptions& o) {
   if (o.frames == 0 || o.frames > 1000) throw hp::Error("bench strands: --frames must be in [1, 1000]");
   for (std::uint32_t s : o.strands)
     if (s == 0 || s > 4'000'000) throw hp::Error("bench strands: --strands values must be in [1, 4000000]");
+  std::vector<hp::compute::InterpolateWalk> walks;
+  for (const std::string& w : o.walks) {
+    const auto walk = hp::compute::parseInterpolateWalk(w);
+    if (!walk) throw hp::Error("bench strands: --walk values must be auto, strand or vertex, got '" + w + "'");
+    walks.push_back(*walk);
+  }
   auto ctx = hp::cli::createBenchContext(o.device, "bench strands");
   nlohmann::json report = {{"device", ctx->properties().deviceName}, {"frames", o.frames},
                            {"copy_bytes", kCopyBytes}, {"results", nlohmann::json::array()}};
-  for (std::uint32_t s : o.strands) report["results"].push_back(toJson(benchOne(*ctx, s, o)));
+  for (std::uint32_t s : o.strands)
+    for (hp::compute::InterpolateWalk w : walks) report["results"].push_back(toJson(benchOne(*ctx, s, w, o)));
   if (o.json)
     std::cout << report.dump(2) << "\n";
   else
@@ -169,6 +185,9 @@ void setup(CLI::App& app) {
   cmd->add_option("--strands", o->strands, "Render strand counts, comma separated")->delimiter(',')->capture_default_str();
   cmd->add_option("--frames", o->frames, "Timed frames per count (median), after one warm-up")->capture_default_str();
   cmd->add_option("--vertices", o->vertices, "Vertices per strand (Q)")->capture_default_str();
+  cmd->add_option("--walk", o->walks, "Interpolate walks, comma separated: auto, strand (one invocation per strand), vertex")
+      ->delimiter(',')
+      ->capture_default_str();
   cmd->add_flag("--json", o->json, "Print JSON");
   cmd->add_option("--device", o->device, "Vulkan device: index or name substring (env HAIRPIPE_DEVICE)");
   hp::cli::addGroomOptions(*cmd, o->groomOptions);

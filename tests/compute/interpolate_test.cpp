@@ -153,6 +153,53 @@ TEST_F(InterpolateTest, ChunkedOutputEqualsOneChunk) {
             0);
 }
 
+// The per-vertex walk (GPUs' default) and the per-strand walk (CPU devices') run the same arithmetic, so
+// they write the same bits, chunked or not; the groom detail and guides-only layouts stay per strand.
+TEST_F(InterpolateTest, PerVertexWalkWritesWhatThePerStrandWalkWrites) {
+  HairAsset asset = headWithStrands(10000);
+  compute::StrandOptions chunked;
+  chunked.maxChunkBytes = 36 * 16 * 1234 + 100;
+  for (const compute::StrandOptions& options : {compute::StrandOptions{}, chunked}) {
+    test::GpuStrands strand = test::runStrandPasses(*ctx, asset, options, compute::InterpolateWalk::PerStrand);
+    test::GpuStrands vertex = test::runStrandPasses(*ctx, asset, options, compute::InterpolateWalk::PerVertex);
+    ASSERT_EQ(vertex.strands.positions.size(), 10000u * 36);
+    EXPECT_TRUE(strand.strands.positions == vertex.strands.positions) << vertex.layout.chunks.size() << " chunks";
+    EXPECT_TRUE(strand.strands.tangents == vertex.strands.tangents) << vertex.layout.chunks.size() << " chunks";
+    EXPECT_EQ(std::memcmp(strand.strands.attributes.data(), vertex.strands.attributes.data(),
+                          strand.strands.attributes.size() * sizeof(gpu::StrandAttributes)),
+              0);
+  }
+}
+
+TEST_F(InterpolateTest, GroomAndGuidesOnlyKeepThePerStrandWalk) {
+  HairAsset asset = headWithStrands(2000);
+  const GuideSet& guides = asset.guides;
+  vk::Buffer particles = compute::uploadGuideParticles(*ctx, guides);
+  compute::StrandBuffers buffers(*ctx, guides.guideCount(), guides.particlesPerGuide, asset.topology);
+  compute::InterpolatePass perVertex(*ctx, buffers, nullptr, {}, compute::InterpolateWalk::PerVertex);
+  EXPECT_TRUE(perVertex.walksPerVertex());
+  GroomSettings curl;
+  curl.curlRadius = 0.002f;
+  curl.curlTurns = 100.0f;
+  perVertex.setGroom(curl);
+  EXPECT_FALSE(perVertex.walksPerVertex());  // the curl's frame is carried along the strand
+  perVertex.setGroom({});
+  EXPECT_TRUE(perVertex.walksPerVertex());
+  compute::StrandOptions guidesOnly;
+  guidesOnly.guidesOnly = true;
+  compute::StrandBuffers guideStrands(*ctx, guides.guideCount(), guides.particlesPerGuide, asset.topology, guidesOnly);
+  perVertex.bind(guideStrands);
+  EXPECT_FALSE(perVertex.walksPerVertex());
+  compute::InterpolatePass perStrand(*ctx, buffers, nullptr, {}, compute::InterpolateWalk::PerStrand);
+  EXPECT_FALSE(perStrand.walksPerVertex());
+  // Auto follows the device: per strand on a CPU device (lavapipe), per vertex on others.
+  compute::InterpolatePass automatic(*ctx, buffers);
+  EXPECT_EQ(automatic.walksPerVertex(), ctx->properties().deviceType != VK_PHYSICAL_DEVICE_TYPE_CPU);
+  EXPECT_EQ(compute::parseInterpolateWalk("vertex"), compute::InterpolateWalk::PerVertex);
+  EXPECT_EQ(compute::parseInterpolateWalk("strand"), compute::InterpolateWalk::PerStrand);
+  EXPECT_FALSE(compute::parseInterpolateWalk("warp").has_value());
+}
+
 TEST_F(InterpolateTest, RebindsToReallocatedBuffersAfterADensityChange) {
   HairAsset asset = headWithStrands(3000);
   HairAsset denser = headWithStrands(7000);  // same guides, more strands

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "compute/strands/interpolate_pass.h"
 #include "compute/strands/strand_buffers.h"
 #include "engine/core/hair/guide_set.h"
 #include "engine/core/hair/hair_asset.h"
@@ -37,7 +38,8 @@ struct GpuStrands {
   compute::StrandData guides;   // smoothed guides
   compute::StrandData strands;  // render strands
 };
-GpuStrands runStrandPasses(const vk::Context& ctx, const HairAsset& asset, const compute::StrandOptions& options);
+GpuStrands runStrandPasses(const vk::Context& ctx, const HairAsset& asset, const compute::StrandOptions& options,
+                           compute::InterpolateWalk walk = compute::InterpolateWalk::Auto);
 
 // "1.23e-07": for RecordProperty.
 std::string sci(double value);

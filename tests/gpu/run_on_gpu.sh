@@ -204,12 +204,12 @@ if [ "${HP_GPU_SKIP_BENCH:-0}" != 1 ]; then
   # shellcheck disable=SC2054  # the commas are the CLI's list separators
   if [ "$QUICK" = 1 ]; then
     FRAME_STRANDS=500,2000; FRAME_RES=64x48; FRAME_N=2; SMALL_STRANDS=1000; SMALL_RES=96x54
-    SIM=(--guides 100 300 --frames 2); STRANDS=(--strands 1000,4000 --frames 2)
+    SIM=(--guides 100 300 --frames 2); STRANDS=(--strands 1000,4000 --frames 2 --walk strand,vertex)
     OPACITY=(--strands 1000 --resolutions 64 --frames 1); INSTANCES=(--instances 1,2 --strands 200 --frames 1)
     CAP_FRAME=200; CAP_SMALL=90; CAP_SUITE=90
   else
     FRAME_STRANDS=20000,136320,1000000; FRAME_RES=1920x1080; FRAME_N=20; SMALL_STRANDS=136320; SMALL_RES=1280x720
-    SIM=(--guides 1000 10000 100000 --frames 20); STRANDS=(--strands 10000,100000,1000000 --frames 10)
+    SIM=(--guides 1000 10000 100000 --frames 20); STRANDS=(--strands 10000,136320,1000000 --frames 10 --walk strand,vertex)
     OPACITY=(--strands 10000,100000,1000000 --resolutions 512,1024 --frames 5)
     INSTANCES=(--instances 1,4,16 --frames 10)
     CAP_FRAME=120; CAP_SMALL=45; CAP_SUITE=45
