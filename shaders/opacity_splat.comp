@@ -44,7 +44,10 @@ End endOf(vec4 clip, float opacity) {
 void addFragment(ivec2 texel, float s, float opacity) {
   uint at = uint(texel.y) * push.resolution + uint(texel.x);
   if (push.mode == OPACITY_SPLAT_MODE_FIRST) {
-    atomicMin(first[at], orderedFromFloat(clamp(s, 0.0, float(OPACITY_SLICES))));
+    // The texel's value only falls, so a read (even a stale one) at or below this s means the atomic would
+    // change nothing: dense hair's later fragments skip it (fewer atomics on the same texels).
+    uint nearest = orderedFromFloat(clamp(s, 0.0, float(OPACITY_SLICES)));
+    if (first[at] > nearest) atomicMin(first[at], nearest);
     return;
   }
   if (push.mode == OPACITY_SPLAT_MODE_DEEP)

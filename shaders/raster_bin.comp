@@ -51,8 +51,8 @@ bool binSegment(uint i, uint v, uint k, uint segments) {
 }
 
 // Whether this invocation is the one that lists vertex v for shading (the segments on either side of it
-// may both ask).
-bool claimForShading(uint v) { return atomicExchange(shadeFlags[v], 1u) == 0u; }
+// may both ask). A flag only goes from 0 to 1 in a frame: one already read as set needs no atomic.
+bool claimForShading(uint v) { return shadeFlags[v] == 0u && atomicExchange(shadeFlags[v], 1u) == 0u; }
 
 void main() {
   uint segments = params.verticesPerStrand - 1u;

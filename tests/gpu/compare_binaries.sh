@@ -3,9 +3,10 @@
 # bin/hairpipe_base, an older build packed beside it (HP_PACK_EXTRA_BINS="hairpipe_base=PATH"), in one
 # run: one warm-up case first (a GPU's first case may run at low clocks), then the two binaries
 # alternately for HP_COMPARE_ROUNDS rounds (2) at 136,320 and 1,000,000 strands at 1920x1080, and once each
-# at 136,320 strands at 1280x720, and the new build's direct and staged fine walks (`bench --fine-walk`)
-# (with HP_GPU_QUICK=1, tiny sizes for a try on lavapipe). Reports:
-# bench/ab_{base,new}_ROUND.json, bench/ab720_{base,new}.json, bench/fine_walks.json.
+# at 136,320 strands at 1280x720, the new build's direct and staged fine walks (`bench --fine-walk`), and
+# the new build with 1 and 3 shadowed lights (`bench --lights`: the sun alone, or the sun and the studio
+# environment's two lights) (with HP_GPU_QUICK=1, tiny sizes for a try on lavapipe). Reports:
+# bench/ab_{base,new}_ROUND.json, bench/ab720_{base,new}.json, bench/fine_walks.json, bench/lights.json.
 if [ "$QUICK" = 1 ]; then
   CMP_STRANDS=500,1000; CMP_RES=64x48; CMP_SMALL=96x54; CMP_FRAMES=2
 else
@@ -27,6 +28,8 @@ else
   # The new build's two fine walks against each other (the staged one is what a GPU gets by default).
   step compare/fine_walks 60 "$DEADLINE" - "$H" bench --raster compute --strands "${CMP_STRANDS%%,*}" --resolution "$CMP_RES" \
     --frames "$CMP_FRAMES" --fine-walk direct,staged --json "$OUT/bench/fine_walks.json"
+  step compare/lights 60 "$DEADLINE" - "$H" bench --raster compute --strands "${CMP_STRANDS%%,*}" --resolution "$CMP_RES" \
+    --frames "$CMP_FRAMES" --lights 1,3 --json "$OUT/bench/lights.json"
   for who in base new; do
     exe=$H; [ $who = base ] && exe=$W/bin/hairpipe_base
     step compare/ab720_${who} 60 "$DEADLINE" - "$exe" bench --raster compute --strands "${CMP_STRANDS%%,*}" --resolution "$CMP_SMALL" \
