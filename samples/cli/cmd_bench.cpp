@@ -155,7 +155,7 @@ std::vector<hp::cli::FrameCase> cases(const BenchOptions& o) {
 
 // Bytes per second and the fraction of the copy's only where the timestamps resolve the frame's passes.
 nlohmann::json toJson(const hp::cli::FrameResult& r) {
-  const double copyGbs = hp::vk::gigabytesPerSecond(r.copyBytes, r.copyAlone.medianMs);
+  const double copyGbs = hp::vk::copyGigabytesPerSecond(r.copyAlone);
   const double inFrameGbs = hp::vk::gigabytesPerSecond(r.copyBytes, r.passes.at("copy").medianMs);
   nlohmann::json passes = nlohmann::json::object();
   for (const auto& [name, t] : r.passes) {
@@ -176,6 +176,8 @@ nlohmann::json toJson(const hp::cli::FrameResult& r) {
           {"scattering", hp::render::scatteringName(r.c.scattering)},
           {"opacity_raster", hp::render::opacityRasterName(r.opacityRaster)},
           {"frame_ms", r.passes.at("frame").medianMs}, {"copy_gb_per_s", copyGbs},
+          {"copy_transfer_gb_per_s", hp::vk::gigabytesPerSecond(r.copyAlone.bytes, r.copyAlone.medianMs)},
+          {"copy_compute_gb_per_s", hp::vk::gigabytesPerSecond(r.copyAlone.computeBytes, r.copyAlone.computeMs)},
           {"copy_runs", r.copyAlone.runs},             {"copy_stable", r.copyAlone.stable},
           {"copy_in_frame_gb_per_s", inFrameGbs},      {"timestamps_resolve_passes", r.timestampsResolvePasses},
           {"copy_wall_ms", r.copyAlone.wallMs},        {"unresolved_because", r.unresolvedBecause},
@@ -192,8 +194,9 @@ void printText(const nlohmann::json& row) {
               row["width"].get<unsigned>(), row["height"].get<unsigned>(), row["raster"].get<std::string>().c_str(),
               row["frame_ms"].get<double>(), row["host_frame_ms"].get<double>(), row["resident_mib"].get<double>(),
               row["resident_growth_mib_per_frame"].get<double>());
-  std::printf("  copy yardstick %.2f GB/s alone (%u submissions, %s), %.2f GB/s inside the frame%s\n",
-              row["copy_gb_per_s"].get<double>(), row["copy_runs"].get<unsigned>(),
+  std::printf("  copy yardstick %.2f GB/s alone (transfer %.2f, compute %.2f; transfer: %u submissions, %s), %.2f GB/s inside the frame%s\n",
+              row["copy_gb_per_s"].get<double>(), row["copy_transfer_gb_per_s"].get<double>(),
+              row["copy_compute_gb_per_s"].get<double>(), row["copy_runs"].get<unsigned>(),
               row["copy_stable"].get<bool>() ? "stable" : "not stable", row["copy_in_frame_gb_per_s"].get<double>(),
               row["timestamps_resolve_passes"].get<bool>() ? "" : "; no bandwidth derived: this device's timestamps do not resolve the passes,");
   if (!row["timestamps_resolve_passes"].get<bool>())

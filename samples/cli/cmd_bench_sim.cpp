@@ -73,7 +73,7 @@ nlohmann::json benchOne(const hp::vk::Context& ctx, const hp::HairAsset& asset, 
   // Bandwidth against the copy alone, and only where the timestamps resolve the passes.
   const hp::vk::CopyTiming alone = copy.measureAlone();
   const std::string why = hp::vk::timestampsUnresolvedBecause(alone, hp::vk::median(copyMs));
-  const double copyGbs = hp::vk::gigabytesPerSecond(copy.bytesMoved(), alone.medianMs);
+  const double copyGbs = hp::vk::copyGigabytesPerSecond(alone);
   nlohmann::json r = {{"guides", asset.guides.guideCount()}, {"grid", grid}, {"particles", particles}, {"ms", simMs},
                       {"grid_ms", grid ? nlohmann::json(hp::vk::median(gridMs)) : nlohmann::json(nullptr)}, {"bytes", bytes},
                       {"copy_gb_per_s", copyGbs}, {"timestamps_resolve_passes", why.empty()}, {"unresolved_because", why}};

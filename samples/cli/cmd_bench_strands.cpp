@@ -1,8 +1,8 @@
 // `hairpipe bench strands [--strands 10000,100000,1000000] [--frames F] [--vertices Q] [--walk auto,strand,vertex]
 // [--json]`: GPU time per frame of the tessellate and interpolate passes (GpuProfiler timestamps, median of F
 // frames after one warm-up frame) on the default head at each render-strand count and interpolate walk
-// (compute::InterpolateWalk), and the achieved
-// bandwidth as a fraction of a vkCmdCopyBuffer of 128 MiB timed in the same frames.
+// (compute::InterpolateWalk), and the achieved bandwidth as a fraction of the copy yardstick's (the faster
+// of a vkCmdCopyBuffer of 128 MiB and a shader's copy, each timed alone: samples/tools/copy_reference.h).
 // Bytes counted per pass are the compulsory traffic: every input read once, every output written once
 //   tessellate:  G*P*16 read + G*Q*32 written
 //   interpolate: S*16 bindings + T*16 triangles + G*Q*32 smoothed guides read + S*(Q*32 + 16) written
@@ -115,7 +115,7 @@ double gbPerSecond(double bytes, double ms) { return hp::vk::gigabytesPerSecond(
 
 // Bandwidth against the copy alone, and only where the timestamps resolve the passes.
 nlohmann::json toJson(const Result& r) {
-  const double copyGbs = gbPerSecond(2.0 * kCopyBytes, r.copyAlone.medianMs);
+  const double copyGbs = hp::vk::copyGigabytesPerSecond(r.copyAlone);
   const bool resolved = r.unresolvedBecause.empty();
   auto pass = [&](double ms, double bytes) {
     nlohmann::json p{{"ms", ms}, {"bytes", bytes}};
@@ -131,7 +131,9 @@ nlohmann::json toJson(const Result& r) {
           {"tessellate", pass(r.tessellateMs, r.tessellateBytes)},
           {"interpolate", pass(r.interpolateMs, r.interpolateBytes)},
           {"copy", {{"ms", r.copyMs}, {"bytes", 2.0 * kCopyBytes}, {"alone_ms", r.copyAlone.medianMs},
-                    {"alone_gb_per_s", copyGbs}, {"alone_runs", r.copyAlone.runs}}},
+                    {"alone_gb_per_s", copyGbs}, {"alone_runs", r.copyAlone.runs},
+                    {"transfer_gb_per_s", gbPerSecond(r.copyAlone.bytes, r.copyAlone.medianMs)},
+                    {"compute_gb_per_s", gbPerSecond(r.copyAlone.computeBytes, r.copyAlone.computeMs)}}},
           {"timestamps_resolve_passes", resolved},
           {"unresolved_because", r.unresolvedBecause},
           {"frame_wall_ms", r.frameWallMs}};

@@ -1,6 +1,7 @@
 // The info, devices and bench commands' front ends.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <fstream>
 #include <vector>
 
@@ -95,14 +96,27 @@ TEST(CliBench, SuitesAreSubcommandsOfBench) {
 // `bench strands` and `bench sim` time their copy yardstick alone too, and derive bandwidth only where the
 // device's timestamps resolve the passes (the same rule as the frame bench's).
 TEST(CliBench, StrandAndSimSuitesDeriveBandwidthOnlyWhereTimestampsResolve) {
-  auto strands = runCli({"bench", "strands", "--strands", "1000", "--frames", "1", "--json"});
+  auto strands = runCli({"bench", "strands", "--strands", "1000", "--frames", "1", "--walk", "strand,vertex", "--json"});
   ASSERT_EQ(strands.exitCode, 0) << strands.err;
-  for (const auto& row : nlohmann::json::parse(strands.out)["results"]) {
+  const auto strandRows = nlohmann::json::parse(strands.out)["results"];
+  ASSERT_EQ(strandRows.size(), 2u) << "one row per walk";
+  EXPECT_FALSE(strandRows[0]["per_vertex"].get<bool>());
+  EXPECT_TRUE(strandRows[1]["per_vertex"].get<bool>());
+  for (const auto& row : strandRows) {
     EXPECT_GE(row["copy"]["alone_runs"].get<unsigned>(), 5u);
+    // The yardstick is the faster of the transfer copy and the shader's copy, both timed alone.
+    const double transfer = row["copy"]["transfer_gb_per_s"].get<double>();
+    const double compute = row["copy"]["compute_gb_per_s"].get<double>();
+    EXPECT_GT(transfer, 0.0);
+    EXPECT_GT(compute, 0.0);
+    EXPECT_DOUBLE_EQ(row["copy"]["alone_gb_per_s"].get<double>(), std::max(transfer, compute));
     const bool resolved = row["timestamps_resolve_passes"].get<bool>();
     EXPECT_EQ(row["interpolate"].contains("fraction_of_copy"), resolved);
     EXPECT_EQ(row["unresolved_because"].get<std::string>().empty(), resolved);
   }
+  auto walk = runCli({"bench", "strands", "--walk", "warp"});
+  EXPECT_EQ(walk.exitCode, 1);
+  EXPECT_NE(walk.err.find("--walk values must be auto, strand or vertex, got 'warp'"), std::string::npos) << walk.err;
   auto sim = runCli({"bench", "sim", "--guides", "100", "--frames", "1", "--json"});
   ASSERT_EQ(sim.exitCode, 0) << sim.err;
   const auto simRows = nlohmann::json::parse(sim.out)["results"];
