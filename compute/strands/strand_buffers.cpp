@@ -81,6 +81,7 @@ StrandLayout planStrandLayout(std::uint32_t guideCount, std::uint32_t particlesP
   l.particlesPerGuide = particlesPerGuide;
   l.verticesPerStrand = options.verticesPerStrand;
   l.bounceSamples = std::min(options.bounceSamples, options.verticesPerStrand);
+  l.bounceAtGuides = options.bounceAtGuides && !options.guidesOnly;
   l.guidesOnly = options.guidesOnly;
   l.triangleCount = options.guidesOnly ? 0 : triangleCount;
   l.strandCount = options.guidesOnly ? guideCount : strandCount;
@@ -101,11 +102,12 @@ StrandLayout planStrandLayout(std::uint32_t guideCount, std::uint32_t particlesP
 
 void checkStrandMemory(const StrandLayout& layout, VkDeviceSize heapBytes) {
   // Per strand: positions and tangents (Q vec4 each), binding, attributes and the bounce samples (8 bytes
-  // each); plus the smoothed guides.
+  // each); plus the smoothed guides and their bounce samples.
   const double perStrand =
       double(layout.verticesPerStrand) * 2.0 * kVec4 + 2.0 * kVec4 + double(layout.bounceSamples) * kBounceSample;
   const double bytes = double(layout.strandCount) * perStrand +
-                       double(layout.guideCount) * layout.verticesPerStrand * 2.0 * kVec4;
+                       double(layout.guideCount) * (layout.verticesPerStrand * 2.0 * kVec4 +
+                                                    double(layout.bounceSamples) * kBounceSample);
   if (bytes > double(heapBytes))
     throw Error("strand buffers: " + std::to_string(layout.strandCount) + " strands x " +
                 std::to_string(layout.verticesPerStrand) + " vertices need " +
@@ -123,6 +125,8 @@ StrandBuffers::StrandBuffers(const vk::Context& ctx, std::uint32_t guideCount, s
   guidePositions_ = deviceBuffer(ctx, guideBytes, "smoothed guide positions");
   guideTangents_ = deviceBuffer(ctx, guideBytes, "smoothed guide tangents");
   triangles_ = deviceBuffer(ctx, VkDeviceSize(layout_.triangleCount) * kVec4, "strand triangles");
+  guideBounce_ = deviceBuffer(ctx, VkDeviceSize(guideCount) * layout_.bounceSamples * kBounceSample,
+                              "guide bounce samples");
   for (std::size_t c = 0; c < layout_.chunks.size(); ++c) {
     const ChunkRange range = layout_.chunks[c];
     const std::string tag = " [chunk " + std::to_string(c) + "]";

@@ -42,6 +42,10 @@ struct StrandOptions {
   // Points per strand where the skin's bounce is gathered (shaders/bounce_samples.glsl), at most Q: the
   // shading interpolates between them. At least 2; Q (or more) gathers at every vertex.
   std::uint32_t bounceSamples = gpu::RENDER_BOUNCE_STRAND_SAMPLES;
+  // Where the skin's bounce is gathered: along the smoothed guides, each render strand's samples blended
+  // from its guides' (true), or along every render strand (false). Guides-only layouts gather along their
+  // strands either way.
+  bool bounceAtGuides = true;
 };
 
 struct ChunkRange {
@@ -64,6 +68,7 @@ struct StrandLayout {
   std::uint32_t triangleCount = 0;
   std::uint32_t strandCount = 0;        // S (guides only: G)
   std::uint32_t bounceSamples = 0;      // the skin bounce's samples per strand: min(StrandOptions's, Q)
+  bool bounceAtGuides = false;          // StrandOptions's, and not guides only
   bool guidesOnly = false;
   std::vector<ChunkRange> chunks;
 
@@ -105,6 +110,9 @@ class StrandBuffers {
   const vk::Buffer& guidePositions() const { return guidePositions_; }  // vec4[G * Q]
   const vk::Buffer& guideTangents() const { return guideTangents_; }    // vec4[G * Q]
   const vk::Buffer& triangles() const { return triangles_; }            // uvec4[T] (guides only: placeholder)
+  // uvec2[G * bounceSamples]: the skin's bounce along the smoothed guides (render/StrandBouncePass blends
+  // the render strands' samples from them).
+  const vk::Buffer& guideBounce() const { return guideBounce_; }
   std::span<const StrandChunk> chunks() const { return chunks_; }
   bool keepsPrevious() const { return keepsPrevious_; }
   // With previousPositions: copies the positions into `previous` (vkCmdCopyBuffer per chunk). The caller
@@ -118,6 +126,7 @@ class StrandBuffers {
 
   StrandLayout layout_;
   vk::Buffer guidePositions_;
+  vk::Buffer guideBounce_;
   vk::Buffer guideTangents_;
   vk::Buffer triangles_;
   std::vector<StrandChunk> chunks_;

@@ -99,6 +99,7 @@ HairSystemSettings systemSettings(const RenderRequest& r, const hairpipe::Attach
   s.lutMode = r.lutMode;
   s.strands.guidesOnly = r.guidesOnly;
   s.strands.bounceSamples = r.bounceSamples;
+  s.strands.bounceAtGuides = r.bounceAtGuides;
   s.drawHead = r.drawHead;
   s.lod = r.lod;
   s.groom = r.scene.groom;

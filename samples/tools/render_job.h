@@ -26,6 +26,7 @@ struct RenderRequest {
   bool lines = false;
   bool guidesOnly = false;
   std::uint32_t bounceSamples = gpu::RENDER_BOUNCE_STRAND_SAMPLES;  // compute::StrandOptions::bounceSamples
+  bool bounceAtGuides = true;                                         // compute::StrandOptions::bounceAtGuides
   bool drawHead = true;  // false: hair only (no proxy head drawn, shadowing or bouncing light)
   hairpipe::LodSettings lod;
   float exposure = 1.0f;

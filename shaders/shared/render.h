@@ -28,6 +28,15 @@ HP_CONST(uint, RENDER_BINDING_BOUNCE_POSITION, 27)  // sampler2D: positions, w =
 // The skin's bounce sampled along each strand (strand_bounce.comp writes, bounce_samples.glsl reads): per
 // chunk uvec2[strands x samples], rgb as half floats (packHalf2x16: rg, then b and 0). After the raster's 32.
 HP_CONST(uint, RENDER_BINDING_BOUNCE_SAMPLES, 33)
+// strand_bounce.comp's blend step: the bounce gathered along the smoothed guides (uvec2[G x samples]), and
+// the interpolation topology (shared/strands.h: StrandBindingGpu[chunk strands], uvec4[T] guide triangles).
+HP_CONST(uint, RENDER_BINDING_BOUNCE_GUIDE_SAMPLES, 34)
+HP_CONST(uint, RENDER_BINDING_STRAND_BINDINGS, 35)
+HP_CONST(uint, RENDER_BINDING_SCALP_TRIANGLES, 36)
+// strand_bounce.comp's steps (a specialization constant): gather at the points of the bound positions'
+// strands, or blend each render strand's samples from its three guides' with its barycentrics.
+HP_CONST(uint, BOUNCE_STEP_GATHER, 0)
+HP_CONST(uint, BOUNCE_STEP_BLEND, 1)
 // The tonemap pass reads the resolved HDR image.
 HP_CONST(uint, TONEMAP_BINDING_HDR, 0)
 
@@ -119,7 +128,7 @@ struct StrandDrawPush {
 
 // strand_bounce.comp, per chunk: one invocation per sample.
 struct StrandBouncePush {
-  uint strandCount;  // strands of the chunk (all of them are sampled)
+  uint strandCount;  // strands sampled: the chunk's (all of them), or the guides (gather at the guides)
   uint vertices;     // Q
   uint samples;      // samples per strand (StrandLayout::bounceSamples)
   uint pad0;
