@@ -13,6 +13,8 @@
 #include "opacity_footprint.glsl"
 
 layout(local_size_x = OPACITY_SPLAT_WORKGROUP_SIZE) in;
+// 1: the first-hair step reads a texel before its atomic minimum (GPUs); 0: the atomic alone (CPU devices).
+layout(constant_id = 0) const uint READ_BEFORE_MIN = 1u;
 layout(std430, binding = OPACITY_SPLAT_BINDING_POSITIONS) readonly buffer Positions { vec4 positions[]; };
 layout(std430, binding = OPACITY_SPLAT_BINDING_LIGHT) readonly buffer Light { LightSpace lights[]; };
 layout(std430, binding = OPACITY_SPLAT_BINDING_BINS) buffer Bins { uint bins[]; };
@@ -47,7 +49,7 @@ void addFragment(ivec2 texel, float s, float opacity) {
     // The texel's value only falls, so a read (even a stale one) at or below this s means the atomic would
     // change nothing: dense hair's later fragments skip it (fewer atomics on the same texels).
     uint nearest = orderedFromFloat(clamp(s, 0.0, float(OPACITY_SLICES)));
-    if (first[at] > nearest) atomicMin(first[at], nearest);
+    if (READ_BEFORE_MIN == 0u || first[at] > nearest) atomicMin(first[at], nearest);
     return;
   }
   if (push.mode == OPACITY_SPLAT_MODE_DEEP)
