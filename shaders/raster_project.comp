@@ -34,39 +34,8 @@ vec2 screenMotion(uint i, vec2 pixelNow, float w) {
   return pixelNow - frame.jitter.xy - pixelOf(before.xy / before.w);
 }
 
-// The workgroup's depth range: on CPU devices (TREE_REDUCE 0) every invocation's atomics on two shared
-// words; on GPUs (1) a tree over one word per invocation, where 64 atomics on one shared word serialise.
-layout(constant_id = 1) const uint TREE_REDUCE = 0u;
 shared uint groupMin;
 shared uint groupMax;
-shared uint laneMin[RASTER_WORKGROUP_SIZE];
-shared uint laneMax[RASTER_WORKGROUP_SIZE];
-
-// Lane 0 gets the workgroup's range in groupMin, groupMax (empty: min > max), from each invocation's.
-void reduceDepthRange(uint lane, uint depthMin, uint depthMax) {
-  if (TREE_REDUCE == 0u) {
-    if (depthMin <= depthMax) {
-      atomicMin(groupMin, depthMin);
-      atomicMax(groupMax, depthMax);
-    }
-    barrier();
-    return;
-  }
-  laneMin[lane] = depthMin;
-  laneMax[lane] = depthMax;
-  barrier();
-  for (uint stride = RASTER_WORKGROUP_SIZE / 2u; stride > 0u; stride >>= 1u) {
-    if (lane < stride) {
-      laneMin[lane] = min(laneMin[lane], laneMin[lane + stride]);
-      laneMax[lane] = max(laneMax[lane], laneMax[lane + stride]);
-    }
-    barrier();
-  }
-  if (lane == 0u) {
-    groupMin = laneMin[0];
-    groupMax = laneMax[0];
-  }
-}
 
 void main() {
   uint lane = gl_LocalInvocationID.x;
@@ -77,7 +46,6 @@ void main() {
   barrier();
   uint q = params.verticesPerStrand;
   uint i = hpThreadId(RASTER_WORKGROUP_SIZE);
-  uint depthMin = 0xFFFFFFFFu, depthMax = 0u;  // none yet
   if (i < params.strandCount * q) {
     uint global = params.firstVertex + i;
     vec4 pos = positions[i];
@@ -92,10 +60,11 @@ void main() {
       float width = frame.strand.x * attributes[i / q].widthScale * mix(1.0, frame.strand.y, pos.w);
       screen[global] = vec4(pixel, ndc.z, width / (frame.cameraPosition.w * clip.w));
       // NDC depth in [0, 1] is non-negative, so its float bits order like the values.
-      depthMin = depthMax = floatBitsToUint(ndc.z);
+      atomicMin(groupMin, floatBitsToUint(ndc.z));
+      atomicMax(groupMax, floatBitsToUint(ndc.z));
     }
   }
-  reduceDepthRange(lane, depthMin, depthMax);
+  barrier();
   if (lane == 0u && groupMin <= groupMax) {
     atomicMin(state.depthBits.x, groupMin);
     atomicMax(state.depthBits.y, groupMax);

@@ -186,10 +186,8 @@ StrandRasterPass::StrandRasterPass(const vk::Context& ctx, std::span<const Raste
     return vk::ComputePipeline(ctx, shader, size, {setLayout}, 0, name, {}, cache);
   };
   const std::vector<std::uint32_t> motion = {settings.motion ? 1u : 0u};  // constant_id 0: MOTION
-  const bool cpu = ctx.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
-  // constant_id 1: TREE_REDUCE, the depth range's reduction over a tree (GPUs) or by shared atomics (CPUs).
   project_ = vk::ComputePipeline(ctx, "raster_project.comp", gpu::RASTER_WORKGROUP_SIZE, {setLayout}, 0,
-                                 "raster project", {motion[0], cpu ? 0u : 1u}, cache);
+                                 "raster project", motion, cache);
   // constant_id 0 of the shade pass: HAIR_LIGHT_LOOP (every light in a loop, or the first without one).
   shade_ = vk::ComputePipeline(ctx, "raster_shade.comp", gpu::RASTER_WORKGROUP_SIZE, {setLayout}, 0, "raster shade",
                                {1u}, cache);
@@ -203,6 +201,7 @@ StrandRasterPass::StrandRasterPass(const vk::Context& ctx, std::span<const Raste
                                  {gpu::RASTER_MODE_SCATTER}, cache);
   scanTiles_ = pipeline("raster_scan_tiles.comp", gpu::RASTER_SCAN_SIZE, "raster scan tiles");
   scanBlocks_ = pipeline("raster_scan_blocks.comp", gpu::RASTER_SCAN_SIZE, "raster scan blocks");
+  const bool cpu = ctx.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
   const bool staged = settings.fineWalk == FineWalk::Staged || (settings.fineWalk == FineWalk::Auto && !cpu);
   const char* fineShader = staged ? (multisampled() ? "raster_fine_staged_ms.comp" : "raster_fine_staged.comp")
                                   : (multisampled() ? "raster_fine_ms.comp" : "raster_fine.comp");
