@@ -248,15 +248,6 @@ TEST_F(VulkanTest, HeadSamplesAntialiasTheSkinsEdgeOverTheHair) {
   EXPECT_NEAR(sum1 / sum4, 1.0, 0.05);
 }
 
-// The skin's bounce (LookSettings::skinBounce, shaders/head_bounce.glsl) against the light the reference's
-// second bounce adds (2 bounces against 1: on this head mostly the skin's; brown hair's hair-to-hair light is
-// small, docs/SHADING.md "Local back-scattering"), sky off, default view (the face and shoulders lit beside
-// the hair), 2 settling frames, 128x96, 16 spp, the same mask (the frame's hair coverage) for every image.
-// Measured on lavapipe (deep maps, bias 0.5, single scattering, 4 head samples): the bounce adds 0.65 of the reference's second-bounce light (0.153 of the 2-bounce
-// reference's luminance against 0.235); PSNR against the 2-bounce reference 30.9 -> 31.0 dB. Asserted:
-// it adds between 0.4 and 1.1 of it, and PSNR does not drop by more than the noise. (The frame's
-// luminance ratio against the 2-bounce reference goes 0.95 -> 1.10: the direct light, 1.24x the
-// single-scattering reference at this view, is too strong; docs/SHADING.md.)
 // The same frame without and with the skin's bounce (a small compute-raster frame, sky off, captured).
 // `request` is left as the second frame was rendered, for the export.
 struct BounceFrames {
@@ -279,32 +270,49 @@ BounceFrames renderWithAndWithoutBounce(const vk::Context& ctx, RenderRequest& r
   return f;
 }
 
-TEST_F(VulkanTest, SkinBounceAddsTheReferencesSecondBounceOffTheSkin) {
+// The light the skin sends to the hair, real time against the reference, with the defaults (dual
+// scattering, deep maps at their default bias): the frame with the skin's bounce minus the frame without it,
+// against the reference of the same exported frame minus that reference with black skin (traced with the
+// same seed, so the two share their paths up to the skin), summed over the pixels the hair covers fully in
+// the reference (partly covered pixels also see the skin itself). Sky off, default view, 128x96, 16 spp,
+// 3 bounces.
+struct SkinShare {
+  double realTime = 0.0, reference = 0.0;
+  std::size_t pixels = 0;
+};
+SkinShare skinShareAgainstTheReference(const vk::Context& ctx, RenderRequest& request, std::uint64_t seed) {
+  const BounceFrames frames = renderWithAndWithoutBounce(ctx, request, 128, 96);
+  if (!frames.without.frame || !frames.with.frame) return {};
+  ExportedFrame frame = makeExportedFrame(request, frames.asset, *frames.with.frame, "physical");
+  const reference::TraceResult lit = reference::traceReference(frame, {16, 3, seed, 0, nullptr});
+  std::fill(frame.headAlbedo.begin(), frame.headAlbedo.end(), decltype(frame.headAlbedo)::value_type(0.0f));
+  const reference::TraceResult black = reference::traceReference(frame, {16, 3, seed, 0, nullptr});
+  SkinShare share;
+  const std::vector<float>& coverage = lit.hairCoverage.values;
+  for (std::size_t p = 0; p < coverage.size(); ++p) {
+    if (coverage[p] < 0.98f) continue;
+    ++share.pixels;
+    for (std::size_t c = 0; c < 3; ++c) {
+      share.realTime += frames.with.frame->linear.values[p * 3 + c] - frames.without.frame->linear.values[p * 3 + c];
+      share.reference += (lit.radiance.values[p * 3 + c] - black.radiance.values[p * 3 + c]) * frame.exposure;
+    }
+  }
+  return share;
+}
+
+// Measured on lavapipe, seeds 1 / 2 / 3 (the reference's noise at 16 spp; the real-time frames are the
+// same): the skin adds 1.03 / 1.12 / 1.17 of what it adds in the reference with the defaults, 0.85 / 0.93 /
+// 0.98 with single scattering (which this noise cannot tell apart). Asserted for seed 1: within [0.85, 1.35],
+// the seeds' spread with a margin on either side; without the bounce it adds 0 (the frame would fail).
+TEST_F(VulkanTest, SkinBounceAddsWhatTheReferencesSkinAdds) {
   RenderRequest request;
-  request.opacity.raster = render::OpacityRaster::Compute;
-  request.opacity.deep = true;  // the lighting this was measured with (the defaults until the tenth session)
-  request.opacity.deepBiasSlices = 0.5f;
-  request.look.scattering = render::Scattering::Single;
-  const BounceFrames frames = renderWithAndWithoutBounce(*ctx, request, 128, 96);
-  const RenderResult& without = frames.without;
-  const RenderResult& with = frames.with;
-  ASSERT_TRUE(without.frame && with.frame);  // the same strands (coverage up to the raster's atomics order)
-  const ExportedFrame frame = makeExportedFrame(request, frames.asset, *with.frame, "physical");
-  const reference::TraceResult ref = reference::traceReference(frame, {16, 2, 1, 0, nullptr});
-  const reference::TraceResult single = reference::traceReference(frame, {16, 1, 1, 0, nullptr});
-  const LinearImage& mask = with.frame->hairAlpha;
-  const ImageComparison off = compareImages(without.frame->linear, ref.radiance, mask, frame.exposure);
-  const ImageComparison on = compareImages(with.frame->linear, ref.radiance, mask, frame.exposure);
-  const double secondBounce = 1.0 - compareImages(single.radiance, ref.radiance, mask, frame.exposure).luminanceRatio;
-  const double added = on.luminanceRatio - off.luminanceRatio;
-  std::cout << "skin bounce off: " << off.psnrDb << " dB, luminance " << off.luminanceRatio << "; on: " << on.psnrDb
-            << " dB, luminance " << on.luminanceRatio << ", " << on.pixels << " hair pixels; adds " << added
-            << " of the 2-bounce reference's luminance, its second bounce " << secondBounce << "\n";
-  EXPECT_GT(on.pixels, 200u);
-  ASSERT_GT(secondBounce, 0.1);
-  EXPECT_GT(added / secondBounce, 0.4);
-  EXPECT_LT(added / secondBounce, 1.1);
-  EXPECT_GT(on.psnrDb, off.psnrDb - 0.3);
+  const SkinShare share = skinShareAgainstTheReference(*ctx, request, 1);
+  std::cout << share.pixels << " fully covered hair pixels; the skin adds " << share.realTime << " in real time, "
+            << share.reference << " in the reference: " << share.realTime / share.reference << "\n";
+  ASSERT_GT(share.pixels, 500u);
+  ASSERT_GT(share.reference, 0.0);
+  EXPECT_GT(share.realTime / share.reference, 0.85);
+  EXPECT_LT(share.realTime / share.reference, 1.35);
 }
 
 // The skin's bounce gathered along the guides and blended into each render strand (the default), against
