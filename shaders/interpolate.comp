@@ -39,8 +39,9 @@ void copyGuide(uint s) {
 // strand toward its clump centre: the nearest (in barycentrics) of push.groom.clump.x points hashed in its
 // scalp triangle, blended from the same guides. Curl winds it around that centreline on a helix of the
 // curl radius, in a frame carried along the centreline by projection; frizz adds smooth value noise across
-// it, growing as v^2. Both ramp in over GROOM_ROOT_RAMP of v and key their per-strand values on the strand's
-// random value, so a strand's shape is the same in every frame and run.
+// it, growing as v^2 and toward the hairline (GroomParams.frizz.zw). Both ramp in over GROOM_ROOT_RAMP of v
+// and key their per-strand values on the strand's random value, so a strand's shape is the same in every
+// frame and run.
 vec3 unitOr(vec3 d, vec3 fallback) {
   float len2 = dot(d, d);
   return len2 > 1e-30 ? d * inversesqrt(len2) : fallback;
@@ -92,6 +93,9 @@ void interpolateGroomed(uint s, StrandBindingGpu b, uvec3 src, vec3 w) {
   float radius = push.groom.curl.x * (1.0 + vary * (strandHash01(key, GROOM_STREAM_CURL) - 0.5));
   float turns = push.groom.curl.y * (1.0 + vary * (strandHash01(key, GROOM_STREAM_CURL + 1u) - 0.5));
   float phase = 6.2831853 * strandHash01(key, GROOM_STREAM_CURL + 2u);
+  // Frizz by region: more toward the hairline (the triangle's distance from it in triangles[].w).
+  float hairline = uintBitsToFloat(triangles[b.triangle].w);
+  float amplitude = push.groom.frizz.x * (1.0 + push.groom.frizz.z * exp(-hairline / push.groom.frizz.w));
   vec4 c = centreline(src, w, centre, 0u);
   vec3 t = normalize(guideTangents[src.x].xyz);
   // A normal to the root tangent, then carried along: projected onto each new tangent's normal plane.
@@ -114,7 +118,7 @@ void interpolateGroomed(uint s, StrandBindingGpu b, uvec3 src, vec3 w) {
     float ramp = smoothstep(0.0, GROOM_ROOT_RAMP, c.w);
     float angle = phase + 6.2831853 * turns * along;
     vec3 p = c.xyz + ramp * radius * (cos(angle) * n + sin(angle) * m);
-    float frizz = push.groom.frizz.x * c.w * c.w;
+    float frizz = amplitude * c.w * c.w;
     if (frizz > 0.0) {
       float x = push.groom.frizz.y * along;
       p += ramp * frizz * (groomNoise(key, 0u, x) * n + groomNoise(key, 1u, x) * m);

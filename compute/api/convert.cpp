@@ -92,7 +92,8 @@ hp::render::LookSettings look(const LookSettings& l) {
 }
 
 static_assert(GroomSettings{}.clumpShape == hp::GroomSettings{}.clumpShape &&
-              GroomSettings{}.frizzFrequency == hp::GroomSettings{}.frizzFrequency);  // one default for both
+              GroomSettings{}.frizzFrequency == hp::GroomSettings{}.frizzFrequency &&
+              GroomSettings{}.frizzHairlineWidth == hp::GroomSettings{}.frizzHairlineWidth);  // one default for both
 
 hp::GroomSettings groom(const GroomSettings& g) {
   hp::GroomSettings h;
@@ -104,6 +105,8 @@ hp::GroomSettings groom(const GroomSettings& g) {
   h.curlVariation = g.curlVariation;
   h.frizzAmplitude = g.frizzAmplitude;
   h.frizzFrequency = g.frizzFrequency;
+  h.frizzHairline = g.frizzHairline;
+  h.frizzHairlineWidth = g.frizzHairlineWidth;
   return h;
 }
 

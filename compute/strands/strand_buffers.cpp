@@ -1,9 +1,11 @@
 #include "compute/strands/strand_buffers.h"
 
 #include <algorithm>
+#include <bit>
 #include <string>
 
 #include "engine/core/error.h"
+#include "engine/core/hair/hairline_distance.h"
 #include "engine/vk/context.h"
 #include "engine/vk/transfer.h"
 
@@ -41,10 +43,12 @@ std::vector<gpu::StrandBindingGpu> packBindings(const InterpolationTopology& top
 }
 
 // w = the number of render strands in the triangle.
+// xyz: the guides; w: the bits of the triangle's hairline distance (kNoHairline where the topology has none).
 std::vector<glm::uvec4> packTriangles(const InterpolationTopology& topology) {
   std::vector<glm::uvec4> out(topology.triangles.size());
-  for (std::size_t t = 0; t < out.size(); ++t) out[t] = glm::uvec4(topology.triangles[t], 0u);
-  for (const StrandBinding& s : topology.strands) ++out[s.triangle].w;
+  const bool distances = topology.hairlineDistance.size() == out.size();
+  for (std::size_t t = 0; t < out.size(); ++t)
+    out[t] = glm::uvec4(topology.triangles[t], std::bit_cast<std::uint32_t>(distances ? topology.hairlineDistance[t] : kNoHairline));
   return out;
 }
 

@@ -16,9 +16,10 @@ void addGroomOptions(CLI::App& cmd, GroomOptions& o) {
                  "variation 0-1 (default 0)")
       ->delimiter(',')->expected(2, 3);
   cmd.add_option("--frizz", o.frizz,
-                 "Frizz AMPLITUDE[,FREQUENCY]: noise across the strand at the tip (scene units, growing as v^2), "
-                 "cycles per unit of length (default 40)")
-      ->delimiter(',')->expected(1, 2);
+                 "Frizz AMPLITUDE[,FREQUENCY[,HAIRLINE[,WIDTH]]]: noise across the strand at the tip (scene units, "
+                 "growing as v^2), cycles per unit of length (default 40), the amplitude's extra factor at the "
+                 "hairline (default 0) and the distance over which it falls off by 1/e (default 0.02)")
+      ->delimiter(',')->expected(1, 4);
 }
 
 void applyGroomOptions(const GroomOptions& o, GroomSettings& groom) {
@@ -38,6 +39,8 @@ void applyGroomOptions(const GroomOptions& o, GroomSettings& groom) {
   if (!o.frizz.empty()) {
     g.frizzAmplitude = o.frizz[0];
     if (o.frizz.size() > 1) g.frizzFrequency = o.frizz[1];
+    if (o.frizz.size() > 2) g.frizzHairline = o.frizz[2];
+    if (o.frizz.size() > 3) g.frizzHairlineWidth = o.frizz[3];
   }
   try {
     g.validate();

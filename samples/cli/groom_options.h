@@ -12,7 +12,7 @@ namespace hp::cli {
 struct GroomOptions {
   std::vector<float> clump;  // COUNT,STRENGTH[,SHAPE]
   std::vector<float> curl;   // RADIUS,TURNS[,VARIATION]
-  std::vector<float> frizz;  // AMPLITUDE[,FREQUENCY]
+  std::vector<float> frizz;  // AMPLITUDE[,FREQUENCY[,HAIRLINE[,WIDTH]]]
 };
 
 void addGroomOptions(CLI::App& cmd, GroomOptions& o);

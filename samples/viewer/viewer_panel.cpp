@@ -202,6 +202,8 @@ void groomSection(Tunables& t, PanelChanges& c) {
   c.groom |= ImGui::SliderFloat("curl variation", &g.curlVariation, 0.0f, 1.0f, "%.2f");
   c.groom |= ImGui::SliderFloat("frizz amplitude", &g.frizzAmplitude, 0.0f, 0.01f, "%.4f");
   c.groom |= ImGui::SliderFloat("frizz frequency", &g.frizzFrequency, 1.0f, 200.0f, "%.1f");
+  c.groom |= ImGui::SliderFloat("frizz at the hairline", &g.frizzHairline, 0.0f, 10.0f, "x%.1f more");
+  c.groom |= ImGui::SliderFloat("hairline width", &g.frizzHairlineWidth, 0.002f, 0.1f, "%.3f");
 }
 
 void lodSection(Tunables& t, PanelChanges& c) {

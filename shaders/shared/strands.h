@@ -37,7 +37,7 @@ HP_CONST(uint, TESSELLATE_BINDING_TANGENTS, 2)   // out: vec4[G*Q] smoothed guid
 HP_CONST(uint, INTERPOLATE_WORKGROUP_SIZE, 64)
 HP_CONST(uint, INTERPOLATE_BINDING_GUIDE_POSITIONS, 0)  // in:  vec4[G*Q]
 HP_CONST(uint, INTERPOLATE_BINDING_GUIDE_TANGENTS, 1)   // in:  vec4[G*Q]
-HP_CONST(uint, INTERPOLATE_BINDING_TRIANGLES, 2)        // in:  uvec4[T]
+HP_CONST(uint, INTERPOLATE_BINDING_TRIANGLES, 2)        // in:  uvec4[T]: guides, w = hairline distance bits
 HP_CONST(uint, INTERPOLATE_BINDING_BINDINGS, 3)         // in:  StrandBindingGpu[chunk strands]
 HP_CONST(uint, INTERPOLATE_BINDING_POSITIONS, 4)        // out: vec4[chunk strands * Q]
 HP_CONST(uint, INTERPOLATE_BINDING_TANGENTS, 5)         // out: vec4[chunk strands * Q]
@@ -74,7 +74,8 @@ struct GroomParams {
                // z = profile exponent (pull = y v^z along v in [0, 1]), w = 0
   vec4 curl;   // x = radius (scene units), y = turns per scene unit of length, z = per-strand variation
                // [0, 1], w = 0
-  vec4 frizz;  // x = amplitude at the tip (scene units; v^2 from the root), y = cycles per scene unit, zw = 0
+  vec4 frizz;  // x = amplitude at the tip (scene units; v^2 from the root), y = cycles per scene unit,
+               // z = the amplitude's extra factor at the hairline, w = its fall-off distance (scene units)
 };
 
 struct InterpolatePush {

@@ -271,6 +271,13 @@ TEST_F(PublicApi, InstanceSettingsAndSettersAreRefusedByField) {
   groom.frizzFrequency = 0.0f;
   EXPECT_THAT(failureOf(head.setGroom(groom)), HasSubstr("hairpipe::Instance::setGroom: GroomSettings.frizzFrequency"));
   groom = {};
+  groom.frizzHairlineWidth = kNaN;
+  EXPECT_THAT(failureOf(head.setGroom(groom)), HasSubstr("GroomSettings.frizzHairlineWidth must be in (0, 10]"));
+  groom = {};
+  groom.frizzAmplitude = 0.002f;
+  groom.frizzHairline = 3.0f;
+  EXPECT_TRUE(head.setGroom(groom).ok());
+  groom = {};
   groom.curlRadius = 0.004f;
   groom.curlTurns = 30.0f;
   EXPECT_TRUE(head.setGroom(groom).ok());

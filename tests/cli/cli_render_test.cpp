@@ -86,6 +86,7 @@ TEST(CliRender, BadOptionsExitWithAMessageAndWriteNothing) {
       {{"--clump", "2.5,0.5"}, "--clump: COUNT must be a whole number in [0, 64]"},
       {{"--curl", "0.01,nan"}, "GroomSettings.curlTurns"},
       {{"--frizz", "-1"}, "GroomSettings.frizzAmplitude"},
+      {{"--frizz", "0.002,40,3,0"}, "GroomSettings.frizzHairlineWidth"},
       {{"--bounce-samples", "1"}, "--bounce-samples must be in [2, 256]"},
       {{"--volume", "11"}, "simulation parameter volume must be in [0.000000, 10.000000], got 11"},
       {{"--grid-resolution", "3"}, "gridResolution must be in [4, 128], got 3"},

@@ -114,6 +114,39 @@ TEST_F(GroomTest, CurlWindsEachStrandAtItsRadiusAndTurns) {
   EXPECT_NEAR(turns, 1.0, 0.1);
 }
 
+// Frizz by region: with frizzHairline H each strand's frizz displacement (from the plain blend) is the even
+// frizz's times 1 + H exp(-d / width), d its scalp triangle's distance from the hairline, for every strand
+// (the noise is the same, only the amplitude scales). The default head's scalp has strands at its hairline
+// (factor near 1 + H) and far inside it (near 1).
+TEST_F(GroomTest, FrizzGrowsTowardTheHairline) {
+  const std::vector<glm::vec3> plain = strands({});
+  GroomSettings even;
+  even.frizzAmplitude = 0.004f;
+  GroomSettings region = even;
+  region.frizzHairline = 3.0f;
+  region.frizzHairlineWidth = 0.01f;
+  const std::vector<glm::vec3> a = strands(even), b = strands(region);
+  ASSERT_EQ(asset.topology.hairlineDistance.size(), asset.topology.triangles.size());
+  double worst = 0.0;
+  std::size_t nearHairline = 0, farInside = 0;
+  for (std::size_t s = 0; s < asset.topology.strands.size(); ++s) {
+    const float d = asset.topology.hairlineDistance[asset.topology.strands[s].triangle];
+    const double factor = 1.0 + 3.0 * std::exp(-double(d) / 0.01);
+    nearHairline += factor > 2.5;
+    farInside += factor < 1.1;
+    const glm::dvec3 tipPlain(plain[s * kQ + kQ - 1]);
+    const double evenTip = glm::length(glm::dvec3(a[s * kQ + kQ - 1]) - tipPlain);
+    const double regionTip = glm::length(glm::dvec3(b[s * kQ + kQ - 1]) - tipPlain);
+    if (evenTip < 1e-4) continue;  // the noise near one of its zeros
+    worst = std::max(worst, std::abs(regionTip / evenTip / factor - 1.0));
+  }
+  std::cout << "strands with the factor above 2.5: " << nearHairline << ", below 1.1: " << farInside
+            << "; worst relative error of the tip's displacement " << worst << "\n";
+  EXPECT_GT(nearHairline, 200u);
+  EXPECT_GT(farInside, 10000u);
+  EXPECT_LT(worst, 1e-3);
+}
+
 // The same groom twice gives the same strands, bit for bit; another per-strand variation changes them.
 TEST_F(GroomTest, GroomedStrandsAreTheSameInEveryRun) {
   GroomSettings groom;

@@ -22,6 +22,9 @@ TEST(GroomSettings, RefusesEachFieldOutsideItsRangeByName) {
       {"curlVariation", [](GroomSettings& g) { g.curlVariation = 2.0f; }},
       {"frizzAmplitude", [&](GroomSettings& g) { g.frizzAmplitude = nan; }},
       {"frizzFrequency", [](GroomSettings& g) { g.frizzFrequency = 0.0f; }},
+      {"frizzHairline", [](GroomSettings& g) { g.frizzHairline = -1.0f; }},
+      {"frizzHairline", [&](GroomSettings& g) { g.frizzHairline = nan; }},
+      {"frizzHairlineWidth", [](GroomSettings& g) { g.frizzHairlineWidth = 0.0f; }},
   };
   for (const auto& [field, spoil] : cases) {
     GroomSettings g;

@@ -142,13 +142,16 @@ TEST(Scene, OutOfRangeValuesNameThePath) {
 
 TEST(Scene, ReadsTheGroom) {
   const Scene s = parseScene(R"({"groom": {"clumpsPerTriangle": 2, "clumpStrength": 0.7, "curlRadius": 0.006,
-                                  "curlTurns": 40, "frizzAmplitude": 0.002}})", "scene.json", "/base");
+                                  "curlTurns": 40, "frizzAmplitude": 0.002, "frizzHairline": 2.5,
+                                  "frizzHairlineWidth": 0.03}})", "scene.json", "/base");
   EXPECT_EQ(s.groom.clumpsPerTriangle, 2u);
   EXPECT_FLOAT_EQ(s.groom.clumpStrength, 0.7f);
   EXPECT_FLOAT_EQ(s.groom.curlRadius, 0.006f);
   EXPECT_FLOAT_EQ(s.groom.curlTurns, 40.0f);
   EXPECT_FLOAT_EQ(s.groom.frizzAmplitude, 0.002f);
   EXPECT_FLOAT_EQ(s.groom.frizzFrequency, GroomSettings{}.frizzFrequency);
+  EXPECT_FLOAT_EQ(s.groom.frizzHairline, 2.5f);
+  EXPECT_FLOAT_EQ(s.groom.frizzHairlineWidth, 0.03f);
 }
 
 TEST(Scene, LoadsFromAFileAndResolvesPathsAgainstIt) {

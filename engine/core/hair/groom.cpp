@@ -25,13 +25,16 @@ void GroomSettings::validate() const {
   checkRange("frizzAmplitude", frizzAmplitude, 0.0f, 1.0f);
   if (!(frizzFrequency > 0.0f && frizzFrequency <= 10000.0f))
     throw Error("GroomSettings.frizzFrequency must be in (0, 10000], got " + std::to_string(frizzFrequency));
+  checkRange("frizzHairline", frizzHairline, 0.0f, 100.0f);
+  if (!(frizzHairlineWidth > 0.0f && frizzHairlineWidth <= 10.0f))
+    throw Error("GroomSettings.frizzHairlineWidth must be in (0, 10], got " + std::to_string(frizzHairlineWidth));
 }
 
 gpu::GroomParams groomParams(const GroomSettings& g) {
   gpu::GroomParams p{};
   p.clump = glm::vec4(float(g.clumpsPerTriangle), g.clumpStrength, g.clumpShape, 0.0f);
   p.curl = glm::vec4(g.curlRadius, g.curlTurns, g.curlVariation, 0.0f);
-  p.frizz = glm::vec4(g.frizzAmplitude, g.frizzFrequency, 0.0f, 0.0f);
+  p.frizz = glm::vec4(g.frizzAmplitude, g.frizzFrequency, g.frizzHairline, g.frizzHairlineWidth);
   return p;
 }
 }  // namespace hp

@@ -17,6 +17,10 @@ struct GroomSettings {
   float curlVariation = 0.0f;           // per-strand spread of radius and turns (+-half of it), [0, 1]
   float frizzAmplitude = 0.0f;          // noise across the strand at the tip (scene units; v^2), [0, 1]
   float frizzFrequency = 40.0f;         // noise cycles per scene unit of length, (0, 10000]
+  // Frizz by region: the amplitude times 1 + frizzHairline x exp(-d / frizzHairlineWidth), d the strand's
+  // scalp triangle's distance from the hairline (engine/core/hair/hairline_distance.h). [0, 100]; 0: even.
+  float frizzHairline = 0.0f;
+  float frizzHairlineWidth = 0.02f;     // scene units, (0, 10]
   bool operator==(const GroomSettings&) const = default;
   bool any() const { return clumpsPerTriangle > 0 || curlRadius > 0.0f || frizzAmplitude > 0.0f; }
   void validate() const;

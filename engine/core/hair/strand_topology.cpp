@@ -5,6 +5,7 @@
 #include <string>
 
 #include "engine/core/error.h"
+#include "engine/core/hair/hairline_distance.h"
 #include "engine/core/hair/rng.h"
 
 namespace hp {
@@ -92,12 +93,10 @@ InterpolationTopology ownStrands(std::size_t guides, std::vector<glm::uvec3> tri
   topo.triangles = std::move(triangles);
   return topo;
 }
-}  // namespace
 
-InterpolationTopology buildInterpolationTopology(std::span<const glm::vec3> roots,
-                                                 std::vector<glm::uvec3> triangles,
-                                                 const DensityOptions& density) {
-  density.validate();
+// The strands of buildInterpolationTopology, in level-of-detail order (the density was validated).
+InterpolationTopology bindStrands(std::span<const glm::vec3> roots, std::vector<glm::uvec3> triangles,
+                                  const DensityOptions& density) {
   if (triangles.empty()) throw Error("interpolation topology: no triangles");
   for (std::size_t t = 0; t < triangles.size(); ++t)
     if (glm::any(glm::greaterThanEqual(triangles[t], glm::uvec3(roots.size()))))
@@ -125,6 +124,16 @@ InterpolationTopology buildInterpolationTopology(std::span<const glm::vec3> root
   topo.strands.reserve(total);
   for (const auto& [rank, s] : order) topo.strands.push_back(made[s]);
   topo.triangles = std::move(triangles);
+  return topo;
+}
+}  // namespace
+
+InterpolationTopology buildInterpolationTopology(std::span<const glm::vec3> roots,
+                                                 std::vector<glm::uvec3> triangles,
+                                                 const DensityOptions& density) {
+  density.validate();
+  InterpolationTopology topo = bindStrands(roots, std::move(triangles), density);
+  topo.hairlineDistance = hairlineDistances(roots, topo.triangles);
   return topo;
 }
 }  // namespace hp

@@ -22,6 +22,9 @@ struct StrandBinding {
 struct InterpolationTopology {
   std::vector<glm::uvec3> triangles;     // guide indices
   std::vector<StrandBinding> strands;    // render strands
+  // Per triangle, its distance from the hairline (hairline_distance.h), in the roots' units; filled by
+  // buildInterpolationTopology. Empty (a topology built by hand): every triangle far from any hairline.
+  std::vector<float> hairlineDistance;
 };
 
 struct DensityOptions {
@@ -49,6 +52,7 @@ std::vector<std::uint32_t> strandsPerTriangle(std::span<const glm::vec3> roots,
                                               std::span<const glm::uvec3> triangles,
                                               const DensityOptions& density);
 
+// The triangles' hairline distances are filled in (hairline_distance.h).
 // Mode::Guides (or Auto resolving to it): strand g lies on guide g (barycentric 1 at its corner of a triangle
 // that has it, or of a triangle (g, g, g) added for a guide in none), in a hashed order so that any prefix
 // thins the hair evenly. Throws hp::Error if a triangle names a guide outside roots, or there are no triangles.

@@ -209,6 +209,10 @@ struct GroomSettings {
   float curlVariation = 0.0f;           // per-strand spread of radius and turns, [0, 1]
   float frizzAmplitude = 0.0f;          // at the tip (growing as v^2), [0, 1]; 0: no frizz
   float frizzFrequency = 40.0f;         // noise cycles per unit of length, (0, 10000]
+  // Frizz by region: the amplitude times 1 + frizzHairline x exp(-d / frizzHairlineWidth), d the distance
+  // of the strand's scalp triangle from the hairline (the scalp's open edge), [0, 100]; 0: the same everywhere.
+  float frizzHairline = 0.0f;
+  float frizzHairlineWidth = 0.02f;     // units of length, (0, 10]
 };
 
 struct InstanceSettings {

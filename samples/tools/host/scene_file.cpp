@@ -290,6 +290,8 @@ void readGroom(JsonObject& root, GroomSettings& g) {
   o->read("curlVariation", g.curlVariation);
   o->read("frizzAmplitude", g.frizzAmplitude);
   o->read("frizzFrequency", g.frizzFrequency);
+  o->read("frizzHairline", g.frizzHairline);
+  o->read("frizzHairlineWidth", g.frizzHairlineWidth);
   o->finish();
   validateSection(g, *o, root.pointer("groom"));
 }
