@@ -40,8 +40,10 @@ vec3 blendedSample(uint strand, uint k) {
   StrandBindingGpu b = bindings[strand];
   uvec3 guides = triangles[b.triangle].xyz * push.samples + k;
   vec3 w = vec3(b.x1, b.x2, max(0.0, 1.0 - b.x1 - b.x2));
-  vec3 b0 = unpackHalfRgb(guideSamples[guides.x]), b1 = unpackHalfRgb(guideSamples[guides.y]);
-  vec3 b2 = unpackHalfRgb(guideSamples[guides.z]);
+  // Clamped to the largest half float: a zero weight times the log of an infinite sample would be NaN.
+  const vec3 largest = vec3(65504.0);
+  vec3 b0 = min(unpackHalfRgb(guideSamples[guides.x]), largest), b1 = min(unpackHalfRgb(guideSamples[guides.y]), largest);
+  vec3 b2 = min(unpackHalfRgb(guideSamples[guides.z]), largest);
   vec3 lowest = 1e-3 * max(b0, max(b1, b2)) + 1e-30;  // keeps the logarithm finite where a sample is 0
   return exp(w.x * log(b0 + lowest) + w.y * log(b1 + lowest) + w.z * log(b2 + lowest)) - lowest;
 }

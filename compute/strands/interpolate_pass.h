@@ -4,8 +4,8 @@
 // renormalised blended tangents and per-strand attributes (random, width and colour scales; see
 // makeStrandAttributes in shaders/shared/strands.h), and the groom detail of GroomSettings (clumps, curl,
 // frizz; engine/core/hair/groom.h) when any is set. In guides-only layouts (StrandOptions::guidesOnly)
-// it copies the smoothed guides instead, one render strand per guide. Owns its pipeline and one
-// descriptor set per chunk; record() adds one dispatch per chunk (one invocation per strand, or per
+// it copies the smoothed guides instead, one render strand per guide. Owns its pipelines (one per walk it
+// may take) and one descriptor set per chunk; record() adds one dispatch per chunk (one invocation per strand, or per
 // vertex: InterpolateWalk) and inserts no barriers. The frame recorder guarantees:
 //   before record: smoothed guides in BufferUse::ComputeRead (after TessellatePass's ComputeWrite);
 //                  triangles and bindings in ComputeRead (StrandBuffers leaves them there);

@@ -42,7 +42,6 @@ std::vector<gpu::StrandBindingGpu> packBindings(const InterpolationTopology& top
   return out;
 }
 
-// w = the number of render strands in the triangle.
 // xyz: the guides; w: the bits of the triangle's hairline distance (kNoHairline where the topology has none).
 std::vector<glm::uvec4> packTriangles(const InterpolationTopology& topology) {
   std::vector<glm::uvec4> out(topology.triangles.size());
@@ -109,9 +108,9 @@ void checkStrandMemory(const StrandLayout& layout, VkDeviceSize heapBytes) {
   // each); plus the smoothed guides and their bounce samples.
   const double perStrand =
       double(layout.verticesPerStrand) * 2.0 * kVec4 + 2.0 * kVec4 + double(layout.bounceSamples) * kBounceSample;
-  const double bytes = double(layout.strandCount) * perStrand +
-                       double(layout.guideCount) * (layout.verticesPerStrand * 2.0 * kVec4 +
-                                                    double(layout.bounceSamples) * kBounceSample);
+  const double perGuide = layout.verticesPerStrand * 2.0 * kVec4 +
+                          (layout.bounceAtGuides ? double(layout.bounceSamples) * kBounceSample : 0.0);
+  const double bytes = double(layout.strandCount) * perStrand + double(layout.guideCount) * perGuide;
   if (bytes > double(heapBytes))
     throw Error("strand buffers: " + std::to_string(layout.strandCount) + " strands x " +
                 std::to_string(layout.verticesPerStrand) + " vertices need " +
@@ -129,7 +128,8 @@ StrandBuffers::StrandBuffers(const vk::Context& ctx, std::uint32_t guideCount, s
   guidePositions_ = deviceBuffer(ctx, guideBytes, "smoothed guide positions");
   guideTangents_ = deviceBuffer(ctx, guideBytes, "smoothed guide tangents");
   triangles_ = deviceBuffer(ctx, VkDeviceSize(layout_.triangleCount) * kVec4, "strand triangles");
-  guideBounce_ = deviceBuffer(ctx, VkDeviceSize(guideCount) * layout_.bounceSamples * kBounceSample,
+  // A placeholder where the bounce is gathered along the render strands themselves.
+  guideBounce_ = deviceBuffer(ctx, layout_.bounceAtGuides ? VkDeviceSize(guideCount) * layout_.bounceSamples * kBounceSample : 0,
                               "guide bounce samples");
   for (std::size_t c = 0; c < layout_.chunks.size(); ++c) {
     const ChunkRange range = layout_.chunks[c];

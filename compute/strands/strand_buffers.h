@@ -111,7 +111,7 @@ class StrandBuffers {
   const vk::Buffer& guideTangents() const { return guideTangents_; }    // vec4[G * Q]
   const vk::Buffer& triangles() const { return triangles_; }            // uvec4[T] (guides only: placeholder)
   // uvec2[G * bounceSamples]: the skin's bounce along the smoothed guides (render/StrandBouncePass blends
-  // the render strands' samples from them).
+  // the render strands' samples from them); a 16-byte placeholder unless StrandLayout::bounceAtGuides.
   const vk::Buffer& guideBounce() const { return guideBounce_; }
   std::span<const StrandChunk> chunks() const { return chunks_; }
   bool keepsPrevious() const { return keepsPrevious_; }

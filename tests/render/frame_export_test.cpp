@@ -345,6 +345,7 @@ TEST_F(VulkanTest, SkinBounceBlendedFromTheGuidesAddsWhatTheGatherAlongEveryStra
   ASSERT_GT(alongStrands, 1.05 * off);  // there is a bounce to compare
   EXPECT_NEAR((fromGuides - off) / (alongStrands - off), 1.0, 0.10);
   EXPECT_GT(between.psnrDb, 45.0);
+  EXPECT_LT(between.psnrDb, 80.0);  // the frames differ: the option reached the renderer (two identical: 99 dB)
 }
 
 // Coverage of the default view's hair (128x96, the default 20,000 strands) against the path tracer's

@@ -1,9 +1,12 @@
 #include "engine/core/hair/hairline_distance.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <functional>
 #include <map>
 #include <queue>
+#include <tuple>
 #include <utility>
 
 namespace hp {
@@ -24,6 +27,53 @@ std::map<Edge, std::vector<std::uint32_t>> edgeUsers(std::span<const glm::uvec3>
   }
   return users;
 }
+
+// The roots bucketed in cubes of side `cell`, to find the roots near a point.
+class RootGrid {
+ public:
+  RootGrid(std::span<const glm::vec3> roots, float cell) : roots_(roots), cell_(cell) {
+    for (std::uint32_t i = 0; i < roots.size(); ++i) buckets_[keyOf(roots[i])].push_back(i);
+  }
+  // Whether a root lies within `radius` (at most the cell) of p.
+  bool anyWithin(const glm::vec3& p, float radius) const {
+    const auto [x, y, z] = keyOf(p);
+    for (int dz = -1; dz <= 1; ++dz)
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+          const auto it = buckets_.find({x + dx, y + dy, z + dz});
+          if (it == buckets_.end()) continue;
+          for (std::uint32_t i : it->second)
+            if (glm::length(roots_[i] - p) < radius) return true;
+        }
+    return false;
+  }
+
+ private:
+  using Key = std::tuple<int, int, int>;
+  Key keyOf(const glm::vec3& p) const {
+    const glm::vec3 k = glm::floor(p / cell_);
+    return {int(k.x), int(k.y), int(k.z)};
+  }
+  std::span<const glm::vec3> roots_;
+  float cell_;
+  std::map<Key, std::vector<std::uint32_t>> buckets_;
+};
+
+// A boundary edge is the hairline when no root lies beyond it: probed one edge length out from its
+// midpoint, in its triangle's plane, away from the triangle. A gap inside the hair (a parting left open,
+// triangles dropped as too long) has roots on its far side within about that.
+bool onTheHairline(std::span<const glm::vec3> roots, const RootGrid& grid, const glm::uvec3& triangle, const Edge& e) {
+  const glm::vec3 a = roots[e.first], b = roots[e.second];
+  const std::uint32_t other = triangle.x != e.first && triangle.x != e.second   ? triangle.x
+                              : triangle.y != e.first && triangle.y != e.second ? triangle.y
+                                                                                : triangle.z;
+  const glm::vec3 mid = 0.5f * (a + b), along = b - a;
+  const float length = glm::length(along);
+  glm::vec3 out = mid - roots[other];
+  out -= along * (glm::dot(out, along) / std::max(glm::dot(along, along), 1e-30f));
+  if (!(length > 0.0f) || !(glm::length(out) > 0.0f)) return true;  // a sliver: count it as the rim
+  return !grid.anyWithin(mid + glm::normalize(out) * length, length);
+}
 }  // namespace
 
 std::vector<float> hairlineDistances(std::span<const glm::vec3> roots, std::span<const glm::uvec3> triangles) {
@@ -31,10 +81,15 @@ std::vector<float> hairlineDistances(std::span<const glm::vec3> roots, std::span
   for (std::size_t t = 0; t < triangles.size(); ++t)
     centroid[t] = (roots[triangles[t].x] + roots[triangles[t].y] + roots[triangles[t].z]) / 3.0f;
   const auto users = edgeUsers(triangles);
+  float longest = 0.0f;  // of the boundary edges: the grid's cell, so one probe looks at 27 cells
+  for (const auto& [edge, ts] : users)
+    if (ts.size() == 1) longest = std::max(longest, glm::length(roots[edge.first] - roots[edge.second]));
+  const RootGrid grid(roots, std::max(longest, 1e-6f));
   std::vector<float> distance(triangles.size(), kNoHairline);
   std::vector<std::vector<std::uint32_t>> neighbours(triangles.size());
   for (const auto& [edge, ts] : users) {
-    if (ts.size() == 1) {  // the hairline: the triangle's distance to the edge's midpoint
+    if (ts.size() == 1 && onTheHairline(roots, grid, triangles[ts[0]], edge)) {
+      // The triangle's distance to the edge's midpoint.
       const glm::vec3 mid = 0.5f * (roots[edge.first] + roots[edge.second]);
       distance[ts[0]] = std::min(distance[ts[0]], glm::length(centroid[ts[0]] - mid));
     }
