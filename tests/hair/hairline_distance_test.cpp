@@ -91,6 +91,17 @@ TEST(HairlineDistance, AClosedSurfaceAndADegenerateTriangleHaveNoHairline) {
   EXPECT_EQ(d[1], kNoHairline);
 }
 
+// Roots 1e38 apart (a hostile file's; the fuzzers found the grid's cell index overflowing an int) and a
+// sliver: every distance is a number, none undefined behaviour (the sanitizer build runs this).
+TEST(HairlineDistance, RootsFarApartAndSliversAreHandled) {
+  const std::vector<glm::vec3> roots = {{0, 0, 0}, {1e-3f, 0, 0}, {0, 1e-3f, 0}, {3e38f, 0, 0}, {-3e38f, 1, 0},
+                                        {0, 0, 1e-30f}};
+  const std::vector<glm::uvec3> triangles = {{0, 1, 2}, {0, 3, 4}, {0, 1, 5}};
+  const std::vector<float> d = hairlineDistances(roots, triangles);
+  ASSERT_EQ(d.size(), triangles.size());
+  for (float v : d) EXPECT_FALSE(std::isnan(v));
+}
+
 // buildInterpolationTopology fills one distance per triangle, the same as the function's.
 TEST(HairlineDistance, TheInterpolationTopologyCarriesThem) {
   const Grid g = grid(6);

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <map>
 #include <queue>
 #include <tuple>
@@ -28,18 +29,24 @@ std::map<Edge, std::vector<std::uint32_t>> edgeUsers(std::span<const glm::uvec3>
   return users;
 }
 
-// The roots bucketed in cubes of side `cell`, to find the roots near a point.
+// The roots bucketed in cubes of side `cell` from their bounding box's corner, to find the roots near a
+// point. Cell coordinates are clamped to [-1, kMaxCells] (a hostile file's roots may lie 1e30 apart), so
+// far cells merge: slower there, never wrong, since every candidate's distance is checked.
 class RootGrid {
  public:
+  static constexpr float kMaxCells = 1 << 20;
+  static constexpr int kMaxReach = 2;  // cells searched each way: radii past 2 cells are searched to 2 cells
   RootGrid(std::span<const glm::vec3> roots, float cell) : roots_(roots), cell_(cell) {
+    for (const glm::vec3& p : roots) low_ = glm::min(low_, p);
     for (std::uint32_t i = 0; i < roots.size(); ++i) buckets_[keyOf(roots[i])].push_back(i);
   }
-  // Whether a root lies within `radius` (at most the cell) of p.
+  // Whether a root lies within `radius` of p (within min(radius, kMaxReach cells) where radius is longer).
   bool anyWithin(const glm::vec3& p, float radius) const {
     const auto [x, y, z] = keyOf(p);
-    for (int dz = -1; dz <= 1; ++dz)
-      for (int dy = -1; dy <= 1; ++dy)
-        for (int dx = -1; dx <= 1; ++dx) {
+    const int reach = radius < cell_ ? 1 : radius < 2.0f * cell_ ? 2 : kMaxReach;
+    for (int dz = -reach; dz <= reach; ++dz)
+      for (int dy = -reach; dy <= reach; ++dy)
+        for (int dx = -reach; dx <= reach; ++dx) {
           const auto it = buckets_.find({x + dx, y + dy, z + dz});
           if (it == buckets_.end()) continue;
           for (std::uint32_t i : it->second)
@@ -51,11 +58,13 @@ class RootGrid {
  private:
   using Key = std::tuple<int, int, int>;
   Key keyOf(const glm::vec3& p) const {
-    const glm::vec3 k = glm::floor(p / cell_);
+    glm::vec3 k = glm::floor((p - low_) / cell_);
+    for (int c = 0; c < 3; ++c) k[c] = k[c] >= -1.0f ? std::min(k[c], kMaxCells) : -1.0f;  // NaN: -1
     return {int(k.x), int(k.y), int(k.z)};
   }
   std::span<const glm::vec3> roots_;
   float cell_;
+  glm::vec3 low_{std::numeric_limits<float>::max()};
   std::map<Key, std::vector<std::uint32_t>> buckets_;
 };
 
@@ -81,10 +90,14 @@ std::vector<float> hairlineDistances(std::span<const glm::vec3> roots, std::span
   for (std::size_t t = 0; t < triangles.size(); ++t)
     centroid[t] = (roots[triangles[t].x] + roots[triangles[t].y] + roots[triangles[t].z]) / 3.0f;
   const auto users = edgeUsers(triangles);
-  float longest = 0.0f;  // of the boundary edges: the grid's cell, so one probe looks at 27 cells
+  // The grid's cell: the boundary edges' median length (robust to an outlier root), so a probe looks at
+  // 27 cells for most edges and the cells hold a few roots each.
+  std::vector<float> lengths;
   for (const auto& [edge, ts] : users)
-    if (ts.size() == 1) longest = std::max(longest, glm::length(roots[edge.first] - roots[edge.second]));
-  const RootGrid grid(roots, std::max(longest, 1e-6f));
+    if (ts.size() == 1) lengths.push_back(glm::length(roots[edge.first] - roots[edge.second]));
+  std::nth_element(lengths.begin(), lengths.begin() + lengths.size() / 2, lengths.end());
+  const float median = lengths.empty() ? 1.0f : lengths[lengths.size() / 2];
+  const RootGrid grid(roots, median > 1e-30f && median < 1e30f ? median : 1.0f);
   std::vector<float> distance(triangles.size(), kNoHairline);
   std::vector<std::vector<std::uint32_t>> neighbours(triangles.size());
   for (const auto& [edge, ts] : users) {
