@@ -1,0 +1,34 @@
+// The benchmarks' copy yardstick (samples/tools/copy_reference.h) under the validation layer with
+// synchronization validation (the fixture fails on any message: the shader copy's buffers, descriptors
+// and pipeline, the transfer copy recorded twice in one submission as a frame records it): both copies
+// timed alone settle into positive times over the whole buffer, and the yardstick is the faster.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "engine/vk/submit.h"
+#include "samples/tools/copy_reference.h"
+#include "tests/support/vk_fixture.h"
+
+using namespace hp::vk;
+using hp::test::VulkanTest;
+
+TEST_F(VulkanTest, CopyYardstickTimesBothCopiesWithoutAHazard) {
+  const VkDeviceSize bytes = 8ull << 20;
+  CopyReference copy(*ctx, bytes);
+  GpuProfiler profiler(*ctx, 4, "copy in a frame");
+  submitAndWait(*ctx, [&](VkCommandBuffer cmd) {
+    profiler.reset(cmd);
+    copy.record(cmd, profiler);
+    copy.record(cmd, profiler);  // twice: the second orders its writes after the first's
+  }, "copy in a frame");
+  const CopyTiming t = copy.measureAlone(8);
+  EXPECT_GE(t.runs, CopyReference::kSettled);
+  EXPECT_GE(t.computeRuns, CopyReference::kSettled);
+  EXPECT_GT(t.medianMs, 0.0);
+  EXPECT_GT(t.computeMs, 0.0);
+  EXPECT_EQ(t.bytes, 2.0 * double(bytes));
+  EXPECT_EQ(t.computeBytes, 2.0 * double(bytes));  // 8 MiB is within every device's storage range
+  const double transfer = gigabytesPerSecond(t.bytes, t.medianMs), shader = gigabytesPerSecond(t.computeBytes, t.computeMs);
+  EXPECT_DOUBLE_EQ(copyGigabytesPerSecond(t), std::max(transfer, shader));
+}
