@@ -32,8 +32,8 @@ std::shared_ptr<const vk::ComputePipeline> makeStep(const vk::Context& ctx, vk::
 }  // namespace
 
 vk::DescriptorSet StrandBouncePass::makeSet(const vk::Context& ctx, VkBuffer frameBlock, const ShadowInputs& shadows,
-                                            VkBuffer positions, VkBuffer samples, VkBuffer bindings,
-                                            const std::string& name) const {
+                                            VkBuffer positions, VkBuffer samples, VkBuffer guideSamples,
+                                            VkBuffer bindings, const std::string& name) const {
   vk::DescriptorSet s(ctx, kBindings, name);
   s.writeStorageBuffer(gpu::RENDER_BINDING_FRAME, frameBlock);
   s.writeSampledImage(gpu::RENDER_BINDING_OPACITY, shadows.opacityView, shadows.sampler);
@@ -43,11 +43,7 @@ vk::DescriptorSet StrandBouncePass::makeSet(const vk::Context& ctx, VkBuffer fra
   s.writeStorageBuffer(gpu::RENDER_BINDING_LIGHT, shadows.lightSpace);
   s.writeStorageBuffer(gpu::RENDER_BINDING_POSITIONS, positions);
   s.writeStorageBuffer(gpu::RENDER_BINDING_BOUNCE_SAMPLES, samples);
-  // The gather step never reads the guides' samples: it gets the triangles there, so no binding of its set
-  // aliases the buffer it writes.
-  const bool blends = samples != strands_->guideBounce().handle();
-  s.writeStorageBuffer(gpu::RENDER_BINDING_BOUNCE_GUIDE_SAMPLES,
-                       blends ? strands_->guideBounce().handle() : strands_->triangles().handle());
+  s.writeStorageBuffer(gpu::RENDER_BINDING_BOUNCE_GUIDE_SAMPLES, guideSamples);
   s.writeStorageBuffer(gpu::RENDER_BINDING_STRAND_BINDINGS, bindings);
   s.writeStorageBuffer(gpu::RENDER_BINDING_SCALP_TRIANGLES, strands_->triangles().handle());
   return s;
@@ -58,12 +54,16 @@ StrandBouncePass::StrandBouncePass(const vk::Context& ctx, const compute::Strand
     : ctx_(&ctx), strands_(&strands) {
   const compute::StrandLayout& layout = strands.layout();
   for (const compute::StrandChunk& c : strands.chunks())
-    chunks_.push_back({makeSet(ctx, frameBlock, shadows, c.positions.handle(), c.bounce.handle(), c.bindings.handle(),
+    chunks_.push_back({makeSet(ctx, frameBlock, shadows, c.positions.handle(), c.bounce.handle(),
+                               strands.guideBounce().handle(), c.bindings.handle(),
                                "strand bounce [chunk " + std::to_string(chunks_.size()) + "]"),
                        c.range.strandCount});
+  // The gather never reads the guides' samples: its set gets the triangles there, so none of its bindings
+  // aliases the buffer it writes.
   if (layout.bounceAtGuides)
     guides_ = Chunk{makeSet(ctx, frameBlock, shadows, strands.guidePositions().handle(), strands.guideBounce().handle(),
-                            strands.chunks().front().bindings.handle(), "strand bounce [guides]"),
+                            strands.triangles().handle(), strands.chunks().front().bindings.handle(),
+                            "strand bounce [guides]"),
                     layout.guideCount};
   gather_ = makeStep(ctx, library, chunks_.front().set.layout(), gpu::BOUNCE_STEP_GATHER);
   if (guides_) blend_ = makeStep(ctx, library, chunks_.front().set.layout(), gpu::BOUNCE_STEP_BLEND);

@@ -34,9 +34,11 @@ class StrandBouncePass {
     vk::DescriptorSet set;
     std::uint32_t strandCount;
   };
-  // A set with every binding of the shader written: `positions` gathered or blended into `samples`.
+  // A set with every binding of the shader written: `positions` gathered, or `guideSamples` blended, into
+  // `samples`.
   vk::DescriptorSet makeSet(const vk::Context& ctx, VkBuffer frameBlock, const ShadowInputs& shadows,
-                            VkBuffer positions, VkBuffer samples, VkBuffer bindings, const std::string& name) const;
+                            VkBuffer positions, VkBuffer samples, VkBuffer guideSamples, VkBuffer bindings,
+                            const std::string& name) const;
   const vk::Context* ctx_;
   const compute::StrandBuffers* strands_;
   std::vector<Chunk> chunks_;          // blended (or, guides only, gathered) render strand samples

@@ -250,6 +250,16 @@ TEST_F(VulkanTest, HeadSamplesAntialiasTheSkinsEdgeOverTheHair) {
 
 // The same frame without and with the skin's bounce (a small compute-raster frame, sky off, captured).
 // `request` is left as the second frame was rendered, for the export.
+// The sum of an image's linear values over the pixels `mask` (a frame's hair alpha) covers more than half.
+double sumOverHair(const LinearImage& image, const LinearImage& mask) {
+  const std::size_t channels = image.values.size() / mask.values.size();
+  double sum = 0.0;
+  for (std::size_t p = 0; p < mask.values.size(); ++p)
+    if (mask.values[p] > 0.5f)
+      for (std::size_t c = 0; c < channels; ++c) sum += image.values[p * channels + c];
+  return sum;
+}
+
 struct BounceFrames {
   HairAsset asset;
   RenderResult without, with;
@@ -329,15 +339,9 @@ TEST_F(VulkanTest, SkinBounceBlendedFromTheGuidesAddsWhatTheGatherAlongEveryStra
   const RenderResult guides = renderStill(*ctx, strands.asset, request);
   ASSERT_TRUE(strands.without.frame && strands.with.frame && guides.frame);
   const LinearImage& mask = guides.frame->hairAlpha;
-  const std::size_t channels = guides.frame->linear.values.size() / mask.values.size();
-  double off = 0.0, alongStrands = 0.0, fromGuides = 0.0;
-  for (std::size_t p = 0; p < mask.values.size(); ++p)
-    if (mask.values[p] > 0.5f)
-      for (std::size_t c = 0; c < channels; ++c) {
-        off += strands.without.frame->linear.values[p * channels + c];
-        alongStrands += strands.with.frame->linear.values[p * channels + c];
-        fromGuides += guides.frame->linear.values[p * channels + c];
-      }
+  const double off = sumOverHair(strands.without.frame->linear, mask);
+  const double alongStrands = sumOverHair(strands.with.frame->linear, mask);
+  const double fromGuides = sumOverHair(guides.frame->linear, mask);
   const ImageComparison between = compareImages(guides.frame->linear, strands.with.frame->linear, mask, 1.0f);
   std::cout << "the bounce adds " << alongStrands / off - 1.0 << " of the hair's light gathered along every strand, "
             << fromGuides / off - 1.0 << " blended from the guides; the frames " << between.psnrDb << " dB, luminance "
@@ -394,15 +398,8 @@ TEST_F(VulkanTest, SkinBounceUnderASpotIsFiniteAndAddsLight) {
   ASSERT_TRUE(without.frame && with.frame);
   for (std::size_t i = 0; i < with.frame->linear.values.size(); ++i)
     ASSERT_TRUE(std::isfinite(with.frame->linear.values[i])) << "value " << i;
-  const std::vector<float>& alpha = with.frame->hairAlpha.values;
-  const std::size_t channels = with.frame->linear.values.size() / alpha.size();
-  double sumWithout = 0.0, sumWith = 0.0;  // over the hair
-  for (std::size_t p = 0; p < alpha.size(); ++p)
-    if (alpha[p] > 0.5f)
-      for (std::size_t c = 0; c < channels; ++c) {
-        sumWithout += without.frame->linear.values[p * channels + c];
-        sumWith += with.frame->linear.values[p * channels + c];
-      }
+  const double sumWithout = sumOverHair(without.frame->linear, with.frame->hairAlpha);
+  const double sumWith = sumOverHair(with.frame->linear, with.frame->hairAlpha);
   std::cout << "spot: the hair's linear sum with the bounce / without " << sumWith / sumWithout << "\n";
   EXPECT_GT(sumWith, 1.01 * sumWithout);
 }
@@ -423,15 +420,9 @@ TEST_F(VulkanTest, SkinBounceAtEightPointsPerStrandMatchesTheGatherAtEveryVertex
   const RenderResult eight = renderStill(*ctx, every.asset, request);
   ASSERT_TRUE(every.without.frame && every.with.frame && eight.frame);
   const LinearImage& mask = every.with.frame->hairAlpha;
-  const std::size_t channels = every.with.frame->linear.values.size() / mask.values.size();
-  double off = 0.0, all = 0.0, sampled = 0.0;
-  for (std::size_t p = 0; p < mask.values.size(); ++p)
-    if (mask.values[p] > 0.5f)
-      for (std::size_t c = 0; c < channels; ++c) {
-        off += every.without.frame->linear.values[p * channels + c];
-        all += every.with.frame->linear.values[p * channels + c];
-        sampled += eight.frame->linear.values[p * channels + c];
-      }
+  const double off = sumOverHair(every.without.frame->linear, mask);
+  const double all = sumOverHair(every.with.frame->linear, mask);
+  const double sampled = sumOverHair(eight.frame->linear, mask);
   const ImageComparison cmp = compareImages(eight.frame->linear, every.with.frame->linear, mask, 1.0f);
   std::cout << "the bounce adds " << all / off - 1.0 << " of the hair's light at every vertex, " << sampled / off - 1.0
             << " at 8 points; the frames: " << cmp.psnrDb << " dB, luminance " << cmp.luminanceRatio << "\n";
