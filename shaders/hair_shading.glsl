@@ -14,10 +14,21 @@
 #include "frame_shadows.glsl"
 #include "environment.glsl"
 
-// One light's direct term at a fibre point; `shadow` is what stands between them.
-vec3 hairLightRadiance(FrameLight light, LightSample ls, LightShadow shadow, vec3 V, vec3 T) {
+// Dual scattering: the physical fibre model's multiple scattering is on.
+bool hairDualScattering() {
+  return frame.options.z == RENDER_SCATTERING_DUAL && marschner.control.x == MARSCHNER_MODE_LUT_PHYSICAL;
+}
+
+// One light's direct term at a fibre point; `shadow` is what stands between them; tilt: the strand's cuticle
+// tilt offset (shared/strands.h strandTilt).
+vec3 hairLightRadiance(FrameLight light, LightSample ls, LightShadow shadow, vec3 V, vec3 T, float tilt) {
   vec3 L = ls.L;
-  vec3 S = marschnerEvaluate(marschner.control.x, L, V, T, lutM, lutN0, lutN1, marschner);
+  bool dual = hairDualScattering();
+  // With dual scattering the single and multiple scattering share the longitudinal terms' lookups.
+  vec4 ang = marschnerAngles(L, V, T);
+  vec4 m = dual ? marschnerPhysicalM(ang, tilt, lutM) : vec4(0.0);
+  vec3 S = dual ? marschnerPhysicalS(ang, m, lutN0, lutN1)
+                : marschnerEvaluate(marschner.control.x, L, V, T, lutM, lutN0, lutN1, marschner, tilt);
   float sinThetaI = clamp(dot(L, T), -1.0, 1.0);
   float cosThetaI = sqrt(1.0 - sinThetaI * sinThetaI);
   float tau = frame.strand.z * shadow.alpha;  // optical depth toward the light: the mean number of fibres crossed
@@ -27,10 +38,10 @@ vec3 hairLightRadiance(FrameLight light, LightSample ls, LightShadow shadow, vec
   // its way (N Poisson with mean tau), a fraction d_f a_f^N goes on forward, spread around the fibre:
   // E[a_f^N; N >= 1] = exp(-tau (1 - a_f)) - exp(-tau). The hair around the fibre scatters back A_b of
   // both the unscattered light and that spread light (local back-scattering).
-  if (frame.options.z == RENDER_SCATTERING_DUAL && marschner.control.x == MARSCHNER_MODE_LUT_PHYSICAL) {
+  if (dual) {
     vec3 af = marschnerForwardAlbedo(sinThetaI);
     vec3 spread = MARSCHNER_FORWARD_DENSITY * max(exp(-tau * (1.0 - af)) - exp(-tau), vec3(0.0));
-    direct += marschnerPhysicalMultipleResponse(L, V, T, exp(-tau), spread, lutM) * incident;
+    direct += marschnerPhysicalMultipleResponse(ang, m, exp(-tau), spread) * incident;
   }
   return direct;
 }
@@ -42,21 +53,22 @@ vec3 hairLightRadiance(FrameLight light, LightSample ls, LightShadow shadow, vec
 layout(constant_id = 0) const uint HAIR_LIGHT_LOOP = 1u;
 
 // Light i's direct term.
-vec3 hairLight(uint i, vec3 world, vec3 V, vec3 T) {
+vec3 hairLight(uint i, vec3 world, vec3 V, vec3 T, float tilt) {
   FrameLight light = frame.lights[i];
   LightSample ls = sampleLight(light, world);
-  return hairLightRadiance(light, ls, frameLightShadow(light, world, ls.L, false), V, T);
+  return hairLightRadiance(light, ls, frameLightShadow(light, world, ls.L, false), V, T, tilt);
 }
 
-// bounce: the mean radiance the skin sends to this point (head_bounce.glsl; 0 without the skin's bounce).
-vec3 hairRadiance(vec3 world, vec3 tangent, float colorScale, vec3 bounce) {
+// bounce: the mean radiance the skin sends to this point (head_bounce.glsl; 0 without the skin's bounce);
+// colorScale and tilt: the strand's lightness scale and cuticle tilt offset (shared/strands.h).
+vec3 hairRadiance(vec3 world, vec3 tangent, float colorScale, float tilt, vec3 bounce) {
   vec3 T = normalize(tangent);
   vec3 V = normalize(frame.cameraPosition.xyz - world);
   vec3 direct = vec3(0.0);
   if (HAIR_LIGHT_LOOP != 0u) {
-    for (uint i = 0u; i < frame.lightCount.x; ++i) direct += hairLight(i, world, V, T);
+    for (uint i = 0u; i < frame.lightCount.x; ++i) direct += hairLight(i, world, V, T, tilt);
   } else if (frame.lightCount.x > 0u) {
-    direct = hairLight(0u, world, V, T);
+    direct = hairLight(0u, world, V, T, tilt);
   }
   // The environment (docs/SHADING.md "Environment"): an unoccluded fibre under a uniform sky returns the
   // model's sky albedo times its radiance, a fibre of a head of hair the mean fraction of it that reaches
@@ -64,7 +76,7 @@ vec3 hairRadiance(vec3 world, vec3 tangent, float colorScale, vec3 bounce) {
   // (hp::skyVisibility). Under an environment, the albedo's part from the viewer's side of the fibre takes
   // the environment's mean radiance around the fibre's normal toward the viewer, the rest the mean around
   // the opposite normal. The skin's bounce: the fibre's response to it is the sky albedo times its mean.
-  bool dual = frame.options.z == RENDER_SCATTERING_DUAL && marschner.control.x == MARSCHNER_MODE_LUT_PHYSICAL;
+  bool dual = hairDualScattering();
   vec3 sky = dual ? marschner.skyVisibility.rgb : vec3(RENDER_HAIR_SKY_VISIBILITY);
   vec3 across = V - dot(V, T) * T;
   vec3 side = normalize(cross(T, abs(T.y) < 0.9 ? vec3(0.0, 1.0, 0.0) : vec3(1.0, 0.0, 0.0)));

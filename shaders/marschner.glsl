@@ -3,8 +3,9 @@
 //   vec3 marschnerDirect  (L, V, T, MarschnerParams p)                          analytic S, no textures
 //   vec3 marschnerLutPaper(L, V, T, sampler2D mTex, sampler2D nTex, p)            paper, RGBA8 128x128
 //   vec3 marschnerLutFloat(L, V, T, sampler2D mTex, sampler2D n0Tex, sampler2D n1Tex, p)  RGBA16F
-//   vec3 marschnerLutPhysical(L, V, T, mTex, n0Tex, n1Tex, p)   the physical model (docs/THEORY.md §4), RGBA16F
-//   vec3 marschnerEvaluate(mode, L, V, T, mTex, n0Tex, n1Tex, p)                 switch on MARSCHNER_MODE_*
+//   vec3 marschnerLutPhysical(L, V, T, mTex, n0Tex, n1Tex, p, tilt)  the physical model (docs/THEORY.md §4), RGBA16F
+//   vec3 marschnerEvaluate(mode, L, V, T, mTex, n0Tex, n1Tex, p, tilt)           switch on MARSCHNER_MODE_*
+// tilt: the fibre's cuticle tilt offset from alpha_R (radians), a strand's own (shared/strands.h strandTilt).
 // Samplers: linear min/mag filter, CLAMP_TO_EDGE, normalised coordinates, one mip level. Sampled with
 // textureLod(.., 0) so the same code is valid in compute shaders.
 // The includer declares its MarschnerParams block as `marschner` before including this file: the
@@ -235,16 +236,35 @@ vec3 marschnerLutFloat(vec3 L, vec3 V, vec3 T, sampler2D mTex, sampler2D n0Tex, 
   return (m.x * n0.w + m.y * n0.xyz + m.z * n1.xyz) * c.w;
 }
 
-// The physical model (docs/THEORY.md §4): M = (M_R, M_TT, M_TRT) over (theta_i, theta_r), N0 = (N_TT, N_R),
+// The physical model's longitudinal terms (M_R, M_TT, M_TRT, M_back) at marschnerAngles() `ang` for a fibre
+// whose cuticle tilt is alpha_R + tilt (radians; a strand's variation, shared/strands.h strandTilt): with a
+// tilt, each lobe is read at its own shifted theta_r (marschnerPhysicalTiltedMV), M_back where it lies.
+vec4 marschnerPhysicalM(vec4 ang, float tilt, sampler2D mTex) {
+  vec2 c = vec2(marschnerPhysicalMCoord(ang.x), marschnerPhysicalMCoord(ang.y));
+  vec4 m = textureLod(mTex, c, 0.0);
+  if (tilt != 0.0) {
+    vec3 shift = vec3(2.0, -1.0, -4.0) * tilt;
+    vec3 v = marschnerPhysicalTiltedMV(ang.y, cos(shift), sin(shift));
+    m.x = textureLod(mTex, vec2(c.x, v.x), 0.0).x;
+    m.y = textureLod(mTex, vec2(c.x, v.y), 0.0).y;
+    m.z = textureLod(mTex, vec2(c.x, v.z), 0.0).z;
+  }
+  return m * marschner.mScale;
+}
+
+// The physical model (docs/THEORY.md §4) from its longitudinal terms m (marschnerPhysicalM): N0 = (N_TT, N_R),
 // N1 = N_TRT + N_res over (phi/2, |theta_r|); S = (M_R N_R + M_TT N_TT + M_TRT N1) / cos theta_i.
-vec3 marschnerLutPhysical(vec3 L, vec3 V, vec3 T, sampler2D mTex, sampler2D n0Tex, sampler2D n1Tex,
-                          MarschnerParams prm) {
-  vec4 ang = marschnerAngles(L, V, T);
+vec3 marschnerPhysicalS(vec4 ang, vec4 m, sampler2D n0Tex, sampler2D n1Tex) {
   vec4 c = marschnerPhysicalCoords(ang);
-  vec4 m = textureLod(mTex, c.xy, 0.0) * prm.mScale;
-  vec4 n0 = textureLod(n0Tex, c.zw, 0.0) * prm.n0Scale;
-  vec4 n1 = textureLod(n1Tex, c.zw, 0.0) * prm.n1Scale;
+  vec4 n0 = textureLod(n0Tex, c.zw, 0.0) * marschner.n0Scale;
+  vec4 n1 = textureLod(n1Tex, c.zw, 0.0) * marschner.n1Scale;
   return (m.x * n0.w + m.y * n0.xyz + m.z * n1.xyz) * marschnerPhysicalInvCosI(ang);
+}
+
+vec3 marschnerLutPhysical(vec3 L, vec3 V, vec3 T, sampler2D mTex, sampler2D n0Tex, sampler2D n1Tex,
+                          MarschnerParams prm, float tilt) {
+  vec4 ang = marschnerAngles(L, V, T);
+  return marschnerPhysicalS(ang, marschnerPhysicalM(ang, tilt, mTex), n0Tex, n1Tex);
 }
 
 // Multiple scattering (physical mode; docs/SHADING.md "Multiple scattering"). The spread tables hold
@@ -272,9 +292,8 @@ vec3 marschnerForwardAlbedo(float sinTheta) {
 //  - the light the hair around scatters back (A_b of the light's theta): d_b A_b M_back(theta_i, theta_r)
 //    x (1 + cos phi) / 2 pi for the unscattered light (the near half of the azimuths, smoothly; unit
 //    area) and 1 / 2 pi for the spread light. M_back is the M texture's fourth channel.
-vec3 marschnerPhysicalMultipleResponse(vec3 L, vec3 V, vec3 T, float lit, vec3 spread, sampler2D mTex) {
-  vec4 ang = marschnerAngles(L, V, T);
-  vec4 m = textureLod(mTex, marschnerPhysicalCoords(ang).xy, 0.0) * marschner.mScale;
+// ang: marschnerAngles(L, V, T); m: marschnerPhysicalM there.
+vec3 marschnerPhysicalMultipleResponse(vec4 ang, vec4 m, float lit, vec3 spread) {
   vec2 r = marschnerSpreadCoord(ang.y);
   uint j = uint(r.x);
   vec4 rtt = mix(marschner.meanRTT[j], marschner.meanRTT[j + 1u], r.y);
@@ -287,13 +306,16 @@ vec3 marschnerPhysicalMultipleResponse(vec3 L, vec3 V, vec3 T, float lit, vec3 s
   return forward + back;
 }
 
-// The ONE shading entry point of every hair shading path (mode = MARSCHNER_MODE_*; paper mode reads
-// mTex and n0Tex only, direct none).
+// The ONE shading entry point of every hair shading path but the physical mode's with dual scattering, which
+// shares its longitudinal terms with the multiple scattering (hair_shading.glsl). mode = MARSCHNER_MODE_*;
+// paper mode reads mTex and n0Tex only, direct none. tilt: the fibre's cuticle tilt offset (radians), taken by
+// the physical and direct modes; the paper and float tables are of one tilt and ignore it.
 vec3 marschnerEvaluate(uint mode, vec3 L, vec3 V, vec3 T, sampler2D mTex, sampler2D n0Tex,
-                       sampler2D n1Tex, MarschnerParams prm) {
-  if (mode == MARSCHNER_MODE_LUT_PHYSICAL) return marschnerLutPhysical(L, V, T, mTex, n0Tex, n1Tex, prm);
+                       sampler2D n1Tex, MarschnerParams prm, float tilt) {
+  if (mode == MARSCHNER_MODE_LUT_PHYSICAL) return marschnerLutPhysical(L, V, T, mTex, n0Tex, n1Tex, prm, tilt);
   if (mode == MARSCHNER_MODE_LUT_FLOAT) return marschnerLutFloat(L, V, T, mTex, n0Tex, n1Tex, prm);
   if (mode == MARSCHNER_MODE_LUT_PAPER) return marschnerLutPaper(L, V, T, mTex, n0Tex, prm);
+  prm.longitudinal.x += tilt;
   return marschnerDirect(L, V, T, prm);
 }
 #endif  // MARSCHNER_GLSL_AS_CPP

@@ -41,6 +41,8 @@ void main() {
   vec4 pos = positions[i];
   uint q = params.verticesPerStrand, strand = i / q;
   vec3 bounce = bounceAlongStrand(strand, i - strand * q, q);
-  vec3 radiance = hairRadiance(pos.xyz, tangents[i].xyz, attributes[strand].colorScale, bounce);
+  StrandAttributes a = attributes[strand];
+  float tilt = strandTilt(a.random, marschner.caustic.z);
+  vec3 radiance = hairRadiance(pos.xyz, tangents[i].xyz, a.colorScale, tilt, bounce);
   colors[global] = packHalfRgb(radiance);
 }

@@ -23,6 +23,7 @@ layout(location = 2) in float inCoverage;
 layout(location = 3) in float inColorScale;
 layout(location = 4) flat in uint inStrand;
 layout(location = 5) in vec3 inBounce;
+layout(location = 6) flat in float inRandom;
 layout(push_constant) uniform Push { StrandDrawPush push; };
 layout(location = 0) out vec4 outColor;
 #include "hair_shading.glsl"
@@ -41,7 +42,8 @@ uint coverageMask(float coverage, uint samples) {
 }
 
 void main() {
-  vec3 radiance = hairRadiance(inWorld, inTangent, inColorScale, inBounce);
+  float tilt = strandTilt(inRandom, marschner.caustic.z);
+  vec3 radiance = hairRadiance(inWorld, inTangent, inColorScale, tilt, inBounce);
   if (push.samples > 1u) {
     uint mask = coverageMask(inCoverage, push.samples);
     if (mask == 0u) discard;

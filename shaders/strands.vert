@@ -22,6 +22,7 @@ layout(location = 2) out float outCoverage;
 layout(location = 3) out float outColorScale;
 layout(location = 4) flat out uint outStrand;  // global strand index: keys the coverage dither
 layout(location = 5) out vec3 outBounce;       // the skin's bounce at this end of the segment
+layout(location = 6) flat out float outRandom; // the strand's random value: keys its tilt (strandTilt)
 
 void main() {
   uint q = frame.options.x;
@@ -54,6 +55,7 @@ void main() {
   outTangent = t;
   outCoverage = coverage;
   outColorScale = attr.colorScale;
+  outRandom = attr.random;
   outStrand = push.firstStrand + strand;
   outBounce = bounceAlongStrand(strand, v - strand * q, q);
   gl_Position = frame.proj * frame.view * vec4(p, 1.0);

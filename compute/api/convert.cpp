@@ -75,6 +75,7 @@ hp::HairMaterial material(const Material& m) {
   h.dEta = m.dEta;
   h.dhM = m.dhM;
   h.betaN = m.betaN;
+  h.tiltVariation = m.tiltVariation;
   return h;
 }
 

@@ -58,6 +58,10 @@ void addMaterialOptions(CLI::App& app, HairMaterial& m) {
   addScalar(app, m, "--dhm", "caustic maximum h range, (0, 1] (default 0.5)", [](HairMaterial& x, double v) { x.dhM = v; });
   addScalar(app, m, "--beta-n", "physical model: azimuthal lobe width in degrees, [2, 45] (default 10)",
             [](HairMaterial& x, double v) { x.betaN = glm::radians(v); });
+  addScalar(app, m, "--tilt-variation",
+            "per-strand cuticle tilt variation in degrees: each strand's alpha R is offset by up to this much, [0, 10] "
+            "(default 2; physical and direct lookup modes)",
+            [](HairMaterial& x, double v) { x.tiltVariation = glm::radians(v); });
   auto* absorption = app.add_option_function<std::vector<double>>(
       "--absorption",
       [&m](const std::vector<double>& v) {

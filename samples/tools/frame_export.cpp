@@ -14,12 +14,14 @@
 #include "samples/tools/obj_albedo_mesh.h"
 #include "samples/tools/reference/fibre.h"
 #include "samples/tools/render_targets.h"
+#include "shaders/shared/strands.h"
 
 namespace hp {
 namespace {
 constexpr const char* kFormat = "hairpipe-frame";
-// 3: an optional "environment_map"; 2: "lights", a list (point lights, shadows); 1: one "light". All are read.
-constexpr std::uint32_t kVersion = 3;
+// 4: "fibre"/"strand_tilts_rad" and the material's "tilt_variation_rad"; 3: an optional "environment_map";
+// 2: "lights", a list (point lights, shadows); 1: one "light". All are read.
+constexpr std::uint32_t kVersion = 4;
 
 nlohmann::json vec(const glm::vec3& v) { return {v.x, v.y, v.z}; }
 nlohmann::json dvec(const glm::dvec3& v) { return {v.x, v.y, v.z}; }
@@ -73,7 +75,8 @@ nlohmann::json lightsJson(const std::vector<LightSpec>& lights) {
 
 nlohmann::json materialJson(const HairMaterial& m) {
   return {{"eta", m.eta}, {"absorption", dvec(m.absorption)}, {"alpha_r_rad", m.alphaR}, {"beta_r_rad", m.betaR},
-          {"kg", m.kG}, {"wc_rad", m.wc}, {"deta", m.dEta}, {"dhm", m.dhM}, {"beta_n_rad", m.betaN}};
+          {"kg", m.kG}, {"wc_rad", m.wc}, {"deta", m.dEta}, {"dhm", m.dhM}, {"beta_n_rad", m.betaN},
+          {"tilt_variation_rad", m.tiltVariation}};
 }
 
 nlohmann::json frameJson(const ExportedFrame& f) {
@@ -84,7 +87,7 @@ nlohmann::json frameJson(const ExportedFrame& f) {
                       {"fov_y_deg", c.fovYDeg}, {"width", c.width}, {"height", c.height}}},
           {"lights", lightsJson(f.lights)},
           {"fibre", {{"model", f.fibreModel}, {"lut_mode", f.lutMode}, {"material", materialJson(f.material)},
-                     {"albedo", vec(f.hairAlbedo)}}},
+                     {"albedo", vec(f.hairAlbedo)}, {"strand_tilts_rad", f.strandTilts}}},
           {"skin", {{"color", vec(f.skinColor)}, {"wrap", f.wrap}}},
           {"environment_radiance", f.environment}, {"background_radiance", vec(f.background)},
           {"exposure", f.exposure}, {"tonemap", "filmic (shaders/shared/tonemap.h) then sRGB"}};
@@ -163,9 +166,25 @@ HairMaterial readMaterial(JsonObject o) {
   o.read("deta", m.dEta);
   o.read("dhm", m.dhM);
   o.read("beta_n_rad", m.betaN);
+  o.read("tilt_variation_rad", m.tiltVariation);
   o.finish();
   m.validate();
   return m;
+}
+
+// "strand_tilts_rad" (absent before version 4: none): each a number within the material's tilt variation.
+std::vector<float> readStrandTilts(JsonObject& fibre, const HairMaterial& m) {
+  std::vector<float> tilts;
+  const nlohmann::json* list = fibre.array("strand_tilts_rad");
+  if (!list) return tilts;
+  const double bound = m.tiltVariation * (1.0 + 1e-6);
+  for (const nlohmann::json& t : *list) {
+    if (!t.is_number() || !(std::abs(t.get<double>()) <= bound))
+      fibre.fail("strand_tilts_rad", "each must be a number within the material's tilt_variation_rad, " +
+                                         std::to_string(m.tiltVariation));
+    tilts.push_back(t.get<float>());
+  }
+  return tilts;
 }
 
 JsonObject required(JsonObject& parent, const char* key) {
@@ -217,7 +236,7 @@ void readFrameJson(ExportedFrame& f, const std::filesystem::path& path) {
   o.read("format", format);
   o.read("version", version);
   if (format != kFormat || version < 1 || version > kVersion)
-    o.fail("format", "expected format \"hairpipe-frame\", version 1, 2 or 3");
+    o.fail("format", "expected format \"hairpipe-frame\", version 1 to 4");
   o.read("units", units);
   o.read("up", up);
   if (units != "metres" || up != "+y") o.fail("units", "expected units \"metres\" and up \"+y\"");
@@ -235,6 +254,7 @@ void readFrameJson(ExportedFrame& f, const std::filesystem::path& path) {
     fibre.fail("lut_mode", "expected \"direct\", \"paper\", \"float\" or \"physical\"");
   }
   f.material = readMaterial(required(fibre, "material"));
+  f.strandTilts = readStrandTilts(fibre, f.material);
   fibre.read("albedo", f.hairAlbedo);
   if (!inUnitRange(f.hairAlbedo)) fibre.fail("albedo", "each channel must be in [0, 1]");
   fibre.finish();
@@ -280,6 +300,22 @@ std::vector<float> ExportedFrame::strandColorScales() const {
   return scales;
 }
 
+HairMaterial ExportedFrame::strandMaterial(std::uint32_t s) const {
+  HairMaterial m = material;
+  if (s < strandTilts.size()) m.alphaR += strandTilts[s];
+  return m;
+}
+
+namespace {
+// Each strand's tilt offset as the real-time shading took it (the LUT modes of one tilt take none).
+std::vector<float> strandTiltsOf(const FrameCapture& frame, const HairMaterial& m, LutMode mode) {
+  std::vector<float> tilts;
+  if (m.tiltVariation == 0.0 || mode == LutMode::Paper || mode == LutMode::Float) return tilts;
+  for (const auto& a : frame.strands.attributes) tilts.push_back(gpu::strandTilt(a.random, float(m.tiltVariation)));
+  return tilts;
+}
+}  // namespace
+
 ExportedFrame makeExportedFrame(const RenderRequest& request, const HairAsset& asset, const FrameCapture& frame,
                                 const std::string& fibreModel) {
   const Scene& scene = request.scene;
@@ -299,6 +335,7 @@ ExportedFrame makeExportedFrame(const RenderRequest& request, const HairAsset& a
   f.camera = {frame.camera.position, scene.camera.target, {0.0f, 1.0f, 0.0f}, scene.camera.fovDeg,
               scene.render.width, scene.render.height};
   f.strands = exportStrands(frame, request.look, f.hairAlbedo);
+  f.strandTilts = strandTiltsOf(frame, f.material, request.lutMode);
   exportHead(f, request.drawHead ? asset.head : HeadMesh{}, frame.headToWorld);  // hair only: no head
   return f;
 }
@@ -317,6 +354,10 @@ ExportedFrame readFrameExport(const std::filesystem::path& dir) {
   readFrameJson(f, dir / FrameExportFiles::json);
   f.strands = readHairFile(dir / FrameExportFiles::strands);
   checkStrands(f.strands, (dir / FrameExportFiles::strands).string());
+  if (!f.strandTilts.empty() && f.strandTilts.size() != f.strands.strandCount)
+    throw Error((dir / FrameExportFiles::json).string() + ": /fibre/strand_tilts_rad: " +
+                std::to_string(f.strandTilts.size()) + " tilts for " + std::to_string(f.strands.strandCount) +
+                " strands");
   AlbedoMesh head = readAlbedoObj(dir / FrameExportFiles::head);
   f.headPositions = std::move(head.positions);
   f.headNormals = std::move(head.normals);

@@ -76,7 +76,7 @@ HP_CONST(float, MARSCHNER_BACK_DENSITY, 0.7f)
 struct MarschnerParams {
   vec4 absorption;    // xyz = sigma_a per unit fibre radius (RGB), w = eta
   vec4 longitudinal;  // x = alpha_R, y = beta_R, z = k_G, w = w_c (radians)
-  vec4 caustic;       // x = d_eta', y = dh_M, zw = 0
+  vec4 caustic;       // x = d_eta', y = dh_M, z = the strands' tilt variation (radians; strands.h strandTilt), w = 0
   vec4 mScale;        // sampled M texel * mScale = physical value (paper: per channel; float: 1)
   vec4 n0Scale;       // same for the first N texture
   vec4 n1Scale;       // same for the second N texture (float mode only)
@@ -175,16 +175,39 @@ HP_FN float marschnerPseudoAngleOfSin(float s) {
                                   : 1.0f - sqrt(max(0.0f, 1.0f - a * a)) * MARSCHNER_INV_SQRT2;
 }
 
+// The physical M texture's coordinate (u or v) of a longitudinal angle given by its sine.
+HP_FN float marschnerPhysicalMCoord(float sinTheta) {
+  float p = marschnerPseudoAngleOfSin(sinTheta);
+  return marschnerTexelCentreCoord(0.5f + 0.5f * (sinTheta >= 0.0f ? p : -p), float(MARSCHNER_PHYSICAL_M_SIZE));
+}
+
 // `physical` mode coordinates from marschnerAngles(): (M u, M v, N u, N v), square roots only.
 HP_FN vec4 marschnerPhysicalCoords(vec4 angles) {
-  float n = float(MARSCHNER_PHYSICAL_M_SIZE);
-  float pi = marschnerPseudoAngleOfSin(angles.x);
   float pr = marschnerPseudoAngleOfSin(angles.y);
-  float mu = marschnerTexelCentreCoord(0.5f + 0.5f * (angles.x >= 0.0f ? pi : -pi), n);
-  float mv = marschnerTexelCentreCoord(0.5f + 0.5f * (angles.y >= 0.0f ? pr : -pr), n);
+  float mu = marschnerPhysicalMCoord(angles.x);
+  float mv = marschnerPhysicalMCoord(angles.y);
   float nu = marschnerTexelCentreCoord(marschnerPseudoAngle(angles.z), float(MARSCHNER_PHYSICAL_N_WIDTH));
   float nv = marschnerTexelCentreCoord(pr, float(MARSCHNER_PHYSICAL_N_HEIGHT));
   return vec4(mu, mv, nu, nv);
+}
+
+// sin(theta - delta) from sin theta (theta in [-pi/2, pi/2]) and delta's cosine and sine; an angle that would
+// pass a pole stops at it (the M texture covers [-pi/2, pi/2] only).
+HP_FN float marschnerShiftedSin(float sinTheta, float cosDelta, float sinDelta) {
+  float c = sqrt(max(0.0f, 1.0f - sinTheta * sinTheta));
+  float s = sinTheta * cosDelta - c * sinDelta;
+  if (c * cosDelta + sinTheta * sinDelta < 0.0f) return s >= 0.0f ? 1.0f : -1.0f;
+  return clamp(s, -1.0f, 1.0f);
+}
+
+// A strand whose cuticle tilt is alpha_R + tilt reads lobe p of the physical M texture at theta_r - k_p tilt
+// (M_p = M(v_p, theta_i, theta_r - s_p), s_p = k_p alpha_R, k = 2, -1, -4; engine/core/shading/physical_terms.h):
+// the texture's v coordinates for R, TT and TRT from sin theta_r and the cosines (x) and sines (y) of the
+// three shifts 2 tilt, -tilt, -4 tilt.
+HP_FN vec3 marschnerPhysicalTiltedMV(float sinThetaR, vec3 cosShift, vec3 sinShift) {
+  return vec3(marschnerPhysicalMCoord(marschnerShiftedSin(sinThetaR, cosShift.x, sinShift.x)),
+              marschnerPhysicalMCoord(marschnerShiftedSin(sinThetaR, cosShift.y, sinShift.y)),
+              marschnerPhysicalMCoord(marschnerShiftedSin(sinThetaR, cosShift.z, sinShift.z)));
 }
 
 // 1 / cos theta_i of the physical S, floored like the exact form.

@@ -130,6 +130,14 @@ HP_STRANDS_FN StrandAttributes makeStrandAttributes(float random, uint source) {
   return a;
 }
 
+// A strand's cuticle tilt offset (radians), added to the material's alpha_R in its shading: uniform in
+// [-variation, variation) (MarschnerParams.caustic.z, hp::HairMaterial::tiltVariation), from the strand's key
+// on its own hash stream; the frame export writes each strand's value for the reference.
+HP_CONST(uint, STRAND_STREAM_TILT, 3u)
+HP_STRANDS_FN float strandTilt(float random, float variation) {
+  return variation * (2.0f * strandHash01(strandKey(random), STRAND_STREAM_TILT) - 1.0f);
+}
+
 // Sample distribution along a strand (Q vertices over the P - 1 Bezier segments). Particle i sits
 // exactly at vertex particleVertex(i) = round(i (Q-1) / (P-1)), so every particle is hit and the
 // Q - 1 intervals are spread as evenly as integers allow (P=7, Q=36: particles at vertices

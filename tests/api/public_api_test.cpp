@@ -230,6 +230,9 @@ TEST_F(PublicApi, InstanceSettingsAndSettersAreRefusedByField) {
   hairpipe::Material m;
   m.absorption[1] = -1.0;
   EXPECT_THAT(failureOf(head.setMaterial(m, hairpipe::FibreModel::Physical)), HasSubstr("hairpipe::Instance::setMaterial"));
+  m = {};
+  m.tiltVariation = 0.5;  // 29 degrees: beyond the 10 allowed
+  EXPECT_THAT(failureOf(head.setMaterial(m, hairpipe::FibreModel::Physical)), HasSubstr("tiltVariation"));
   hairpipe::LookSettings look;
   look.strandWidth = kNaN;
   EXPECT_THAT(failureOf(head.setLook(look)), HasSubstr("strand width"));

@@ -51,5 +51,6 @@ TEST(CliFurnace, BadOptionsExitOne) {
   hp::test::expectRefused({"furnace"}, {{{"--model", "bogus"}, "--model"},
                                         {{"--theta-r", "95"}, "--theta-r"},
                                         {{"--panels", "2"}, "--panels"},
-                                        {{"--beta-n", "1"}, "betaN"}});
+                                        {{"--beta-n", "1"}, "betaN"},
+                                        {{"--tilt-variation", "12"}, "tiltVariation"}});
 }

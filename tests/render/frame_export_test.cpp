@@ -65,6 +65,7 @@ void expectSameFrames(const ExportedFrame& a, const ExportedFrame& b) {
     EXPECT_EQ(a.lights[i].shadows, b.lights[i].shadows);
   }
   EXPECT_TRUE(a.material == b.material);
+  EXPECT_EQ(a.strandTilts, b.strandTilts);
   EXPECT_EQ(a.headPositions, b.headPositions);
   EXPECT_EQ(a.headNormals, b.headNormals);
   EXPECT_EQ(a.headAlbedo, b.headAlbedo);

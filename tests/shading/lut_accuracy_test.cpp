@@ -133,3 +133,29 @@ TEST(LutAccuracy, PhysicalModeMeetsTheLimits) {
     EXPECT_LE(s.relativeSum, 0.02) << n.name;
   }
 }
+
+// A strand's cuticle tilt offset (MarschnerParams.caustic.z, shaders/shared/strands.h strandTilt): the one
+// physical texture, built at the material's alpha_R, read at each lobe's shifted theta_r, against the exact
+// S of the material with alpha_R + tilt (the reference's per-strand material), within the untilted limits.
+// Negative control: the same lookups without the tilt miss that exact S by far more.
+TEST(LutAccuracy, PhysicalModeTakesAStrandsTiltLikeTheExactModel) {
+  const HairMaterial m;
+  const MarschnerLut lut = buildLut(LutMode::Physical, m);
+  for (double tiltDeg : {-3.0, 5.0}) {
+    const float tilt = float(glm::radians(tiltDeg));
+    HairMaterial tilted = m;
+    tilted.alphaR += double(tilt);
+    const test::AccuracyStats s = test::measureAccuracy(
+        [&](glm::dvec3 L, glm::dvec3 V, glm::dvec3 T) { return evaluateLut(lut, L, V, T, {}, tilt); }, tilted, 10000,
+        kSeed, FibreModel::Physical);
+    const test::AccuracyStats untilted = test::measureAccuracy(
+        [&](glm::dvec3 L, glm::dvec3 V, glm::dvec3 T) { return evaluateLut(lut, L, V, T); }, tilted, 10000, kSeed,
+        FibreModel::Physical);
+    std::cout << "[physical, tilt " << tiltDeg << " deg] " << s.str() << "; without the tilt " << untilted.str()
+              << "\n";
+    EXPECT_LE(s.median, 0.003) << tiltDeg;
+    EXPECT_LE(s.p99, 0.02) << tiltDeg;
+    EXPECT_LE(s.relativeSum, 0.02) << tiltDeg;
+    EXPECT_GT(untilted.relativeSum, 5.0 * s.relativeSum) << tiltDeg;
+  }
+}

@@ -49,6 +49,9 @@ TEST(Material, BadFieldsAreNamed) {
       {[](HairMaterial& m, double v) { m.dhM = v; }, nan, "dhM"},
       {[](HairMaterial& m, double v) { m.betaN = v; }, 0.01, "betaN"},
       {[](HairMaterial& m, double v) { m.betaN = v; }, 1.0, "betaN"},
+      {[](HairMaterial& m, double v) { m.tiltVariation = v; }, -0.01, "tiltVariation"},
+      {[](HairMaterial& m, double v) { m.tiltVariation = v; }, glm::radians(11.0), "tiltVariation"},
+      {[](HairMaterial& m, double v) { m.tiltVariation = v; }, nan, "tiltVariation"},
   };
   for (const Case& c : cases) {
     HairMaterial m;

@@ -39,9 +39,21 @@ glm::vec3 evaluateFloat(const MarschnerLut& lut, glm::vec4 ang, const LutSampler
   return (m.x * n0.w + m.y * glm::vec3(n0) + m.z * glm::vec3(n1)) * c.w;
 }
 
-glm::vec3 evaluatePhysical(const MarschnerLut& lut, glm::vec4 ang, const LutSamplerOptions& o) {
+// marschnerPhysicalM of shaders/marschner.glsl, unscaled.
+glm::vec4 physicalM(const LutTexture& t, glm::vec4 ang, float tilt, const LutSamplerOptions& o) {
+  const float u = gpu::marschnerPhysicalMCoord(ang.x);
+  glm::vec4 m = sampleBilinear(t, u, gpu::marschnerPhysicalMCoord(ang.y), o);
+  if (tilt != 0.0f) {
+    const glm::vec3 shift = glm::vec3(2.0f, -1.0f, -4.0f) * tilt;
+    const glm::vec3 v = gpu::marschnerPhysicalTiltedMV(ang.y, glm::cos(shift), glm::sin(shift));
+    for (int p = 0; p < 3; ++p) m[p] = sampleBilinear(t, u, v[p], o)[p];
+  }
+  return m;
+}
+
+glm::vec3 evaluatePhysical(const MarschnerLut& lut, glm::vec4 ang, const LutSamplerOptions& o, float tilt) {
   glm::vec4 c = gpu::marschnerPhysicalCoords(ang);
-  glm::vec4 m = sampleBilinear(lut.textures.at(0), c.x, c.y, o) * scaleOf(lut.textures[0]);
+  glm::vec4 m = physicalM(lut.textures.at(0), ang, tilt, o) * scaleOf(lut.textures[0]);
   glm::vec4 n0 = sampleBilinear(lut.textures.at(1), c.z, c.w, o) * scaleOf(lut.textures[1]);
   glm::vec4 n1 = sampleBilinear(lut.textures.at(2), c.z, c.w, o) * scaleOf(lut.textures[2]);
   return (m.x * n0.w + m.y * glm::vec3(n0) + m.z * glm::vec3(n1)) * gpu::marschnerPhysicalInvCosI(ang);
@@ -60,12 +72,12 @@ glm::vec4 sampleBilinear(const LutTexture& t, float u, float v, const LutSampler
 }
 
 glm::dvec3 evaluateLut(const MarschnerLut& lut, glm::dvec3 L, glm::dvec3 V, glm::dvec3 T,
-                       const LutSamplerOptions& options) {
+                       const LutSamplerOptions& options, float tilt) {
   glm::vec4 ang = gpu::marschnerAngles(glm::vec3(L), glm::vec3(V), glm::vec3(T));
   switch (lut.mode) {
     case LutMode::Paper: return glm::dvec3(evaluatePaper(lut, ang, options));
     case LutMode::Float: return glm::dvec3(evaluateFloat(lut, ang, options));
-    case LutMode::Physical: return glm::dvec3(evaluatePhysical(lut, ang, options));
+    case LutMode::Physical: return glm::dvec3(evaluatePhysical(lut, ang, options, tilt));
     case LutMode::Direct: break;
   }
   throw Error("evaluateLut: the direct mode has no lookup textures");

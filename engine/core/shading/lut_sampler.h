@@ -16,7 +16,9 @@ struct LutSamplerOptions {
 
 glm::vec4 sampleBilinear(const LutTexture& texture, float u, float v, const LutSamplerOptions& options = {});
 
-// S from the LUT for non-zero L, V, T. Throws hp::Error for LutMode::Direct (nothing to sample).
+// S from the LUT for non-zero L, V, T. Throws hp::Error for LutMode::Direct (nothing to sample). tilt: the
+// fibre's cuticle tilt offset from the material's alpha_R (radians), which the physical mode takes as the
+// shader does (marschnerPhysicalM); the paper and float modes ignore it.
 glm::dvec3 evaluateLut(const MarschnerLut& lut, glm::dvec3 L, glm::dvec3 V, glm::dvec3 T,
-                       const LutSamplerOptions& options = {});
+                       const LutSamplerOptions& options = {}, float tilt = 0.0f);
 }  // namespace hp

@@ -10,7 +10,8 @@
 
 namespace hp {
 namespace {
-bool isAngle(const std::string& field) { return field == "alphaR" || field == "betaR" || field == "wc" || field == "betaN"; }
+bool isAngle(const std::string& field) { return field == "alphaR" || field == "betaR" || field == "wc" || field == "betaN" ||
+                                                 field == "tiltVariation"; }
 
 [[noreturn]] void fail(const std::string& field, double value, const char* rule) {
   std::ostringstream os;
@@ -47,6 +48,7 @@ void HairMaterial::validate() const {
   requireRange("dEta", dEta, 0.0, true, 10.0, "must be in (0, 10]");
   requireRange("dhM", dhM, 0.0, true, 1.0, "must be in (0, 1]");
   requireRange("betaN", betaN, 2 * kDeg, false, 45 * kDeg, "must be in [2, 45] deg");
+  requireRange("tiltVariation", tiltVariation, 0.0, false, 10 * kDeg, "must be in [0, 10] deg");
 }
 
 glm::dvec3 absorptionFromColor(glm::dvec3 rgb) {

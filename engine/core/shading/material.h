@@ -17,6 +17,11 @@ struct HairMaterial {
   double dhM = 0.5;                                   // caustic maximum h range
   // Physical model only (docs/THEORY.md §4.2): std. dev. of the azimuthal scattering lobe D (radians).
   double betaN = glm::radians(10.0);
+  // Per-strand variation of the cuticle tilt (radians, [0, 10 deg]): each render strand shades with alphaR + t,
+  // t uniform in [-tiltVariation, tiltVariation) from the strand's key (shaders/shared/strands.h strandTilt),
+  // so neighbouring strands' highlights sit at slightly different places along the hair. The physical and
+  // direct modes and the reference take it; the paper and float LUT modes ignore it.
+  double tiltVariation = glm::radians(2.0);
 
   void validate() const;
   bool operator==(const HairMaterial&) const = default;

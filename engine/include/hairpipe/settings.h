@@ -83,6 +83,9 @@ struct Material {
   double dEta = 0.3;                                   // caustic fade range for eta'
   double dhM = 0.5;                                    // caustic maximum h range
   double betaN = 0.17453292519943295;                  // azimuthal width, physical model (10 degrees)
+  // Each strand's alphaR is offset by a value uniform in [-tiltVariation, tiltVariation) from its own hash,
+  // [0, 10 degrees] (physical and direct shading; the paper and float lookup modes ignore it).
+  double tiltVariation = 0.034906585039886591;         // 2 degrees
 };
 // The absorption that gives a fibre this colour of its forward-scattering highlight: each linear RGB
 // channel, in (0, 1], is what survives one pass through the fibre's centre (docs/THEORY.md).

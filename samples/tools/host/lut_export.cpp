@@ -80,7 +80,8 @@ nlohmann::json describeLut(const MarschnerLut& lut) {
                    {"wc_rad", m.wc},
                    {"dEta", m.dEta},
                    {"dhM", m.dhM},
-                   {"betaN_rad", m.betaN}};
+                   {"betaN_rad", m.betaN},
+                   {"tiltVariation_rad", m.tiltVariation}};
   j["textures"] = nlohmann::json::array();
   for (const LutTexture& t : lut.textures) {
     j["textures"].push_back({{"name", t.name},

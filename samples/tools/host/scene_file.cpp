@@ -142,6 +142,7 @@ void readMaterial(JsonObject& root, HairMaterial& m) {
   o->read("dEta", m.dEta);
   o->read("dhM", m.dhM);
   o->readDegrees("betaNDeg", m.betaN);
+  o->readDegrees("tiltVariationDeg", m.tiltVariation);
   o->finish();
   validateSection(m, *o, root.pointer("material"));
 }

@@ -139,8 +139,9 @@ class Tracer {
   }
 
   double fibrePdf(const SceneHit& h, const glm::dvec3& V, const glm::dvec3& L) const {
-    if (model_ == FibreModel::Physical) return PhysicalFibreSampler(h.tangent, V, frame_.material).pdf(L);
-    return FibreSampler(h.tangent, V, frame_.material).pdf(L);
+    const HairMaterial m = frame_.strandMaterial(h.strand);
+    if (model_ == FibreModel::Physical) return PhysicalFibreSampler(h.tangent, V, m).pdf(L);
+    return FibreSampler(h.tangent, V, m).pdf(L);
   }
 
   // Stratified over the pixel when spp is a square (n x n cells, one jittered sample each): strands
@@ -153,7 +154,8 @@ class Tracer {
   }
 
   glm::dvec3 fibreS(const SceneHit& h, const glm::dvec3& L, const glm::dvec3& V) const {
-    return reference::fibreS(model_, L, V, h.tangent, frame_.material) * double(colorScales_[h.strand]);
+    return reference::fibreS(model_, L, V, h.tangent, frame_.strandMaterial(h.strand)) *
+           double(colorScales_[h.strand]);
   }
 
   static double cosThetaI(const glm::dvec3& L, const glm::dvec3& T) {
@@ -175,9 +177,9 @@ class Tracer {
 
   glm::dvec3 sampleFibre(const SceneHit& h, const glm::dvec3& V, Sampler& rng, glm::dvec3& origin,
                          glm::dvec3& dir, double& pdf) const {
-    if (model_ == FibreModel::Physical)
-      return continueFrom(PhysicalFibreSampler(h.tangent, V, frame_.material), h, V, rng, origin, dir, pdf);
-    return continueFrom(FibreSampler(h.tangent, V, frame_.material), h, V, rng, origin, dir, pdf);
+    const HairMaterial m = frame_.strandMaterial(h.strand);
+    if (model_ == FibreModel::Physical) return continueFrom(PhysicalFibreSampler(h.tangent, V, m), h, V, rng, origin, dir, pdf);
+    return continueFrom(FibreSampler(h.tangent, V, m), h, V, rng, origin, dir, pdf);
   }
 
   template <class DirectionSampler>

@@ -5,7 +5,8 @@
 // vertex (up to `bounces`): every light by next-event estimation with a shadow ray each (they are delta
 // lights: no other way reaches them), and one continuation direction: at a fibre importance-sampled from
 // its lobes (physical_sampling.h for the physical model, fibre_sampling.h for the paper's; weight
-// S cos(theta_i) / pdf times the strand's lightness scale; the
+// S cos(theta_i) / pdf times the strand's lightness scale, S of the strand's own material: its cuticle tilt
+// offset added, ExportedFrame::strandMaterial; the
 // far-field fibre scatters over its width: shadow and continuation rays leave from the side of its tube
 // that faces them, reference_scene.h), cosine-weighted at the Lambertian
 // head (weight albedo). A continuation ray that escapes brings the uniform white environment (the
