@@ -43,7 +43,8 @@ uint coverageMask(float coverage, uint samples) {
 
 void main() {
   float tilt = strandTilt(inRandom, marschner.caustic.z);
-  vec3 radiance = hairRadiance(inWorld, inTangent, inColorScale, tilt, inBounce);
+  // The graphics raster draws the head in the same pass and cannot read its depth: the far side stays open.
+  vec3 radiance = hairRadiance(inWorld, inTangent, inColorScale, tilt, 0.0, inBounce);
   if (push.samples > 1u) {
     uint mask = coverageMask(inCoverage, push.samples);
     if (mask == 0u) discard;

@@ -82,6 +82,7 @@ gpu::RenderFrame makeRenderFrame(const CameraMatrices& camera, VkExtent2D extent
   f.cameraPosition = glm::vec4(camera.position, pixelAtUnitDepth);
   setLights(f, lights, look.skinBounce);
   f.headBounce.z = float(strands.bounceSamples);
+  f.headBounce.w = look.farSideFromDepth ? 1.0f : 0.0f;
   f.previousViewProj = camera.proj * camera.view;  // no motion until setViewMotion says otherwise
   // The colour of one straight pass through the fibre (absorptionFromColor's inverse) as ambient albedo.
   const glm::dvec3 albedo = glm::exp(-2.0 * material.absorption);

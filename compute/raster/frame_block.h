@@ -41,6 +41,10 @@ struct LookSettings {
   // needs the shadows on and a head, as the map is drawn with the head's depth shadow map and framed by
   // it). docs/SHADING.md "Skin bounce".
   bool skinBounce = true;
+  // Compute raster: where the depth image it composites over (the head's, or the engine's) lies behind a hair
+  // vertex, the sky on the fibre's far side is what the hair beneath passes on, not the open sky (docs/SHADING.md
+  // "Ambient"). false: every far side open, as the graphics raster draws it.
+  bool farSideFromDepth = true;
   void validate() const;             // throws hp::Error naming the field
 };
 

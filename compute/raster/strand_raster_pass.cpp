@@ -188,10 +188,12 @@ StrandRasterPass::StrandRasterPass(const vk::Context& ctx, std::span<const Raste
   const std::vector<std::uint32_t> motion = {settings.motion ? 1u : 0u};  // constant_id 0: MOTION
   project_ = vk::ComputePipeline(ctx, "raster_project.comp", gpu::RASTER_WORKGROUP_SIZE, {setLayout}, 0,
                                  "raster project", motion, cache);
-  // constant_id 0 of the shade pass: HAIR_LIGHT_LOOP (every light in a loop, or the first without one).
-  shade_ = vk::ComputePipeline(ctx, "raster_shade.comp", gpu::RASTER_WORKGROUP_SIZE, {setLayout}, 0, "raster shade",
-                               {1u}, cache);
-  shadeOneLight_ = vk::ComputePipeline(ctx, "raster_shade.comp", gpu::RASTER_WORKGROUP_SIZE, {setLayout}, 0,
+  // constant_id 0 of the shade pass: HAIR_LIGHT_LOOP (every light in a loop, or the first without one). It reads
+  // the head's depth (the sky on the fibres' far side), of the head's sample count.
+  const char* shadeShader = multisampled() ? "raster_shade_ms.comp" : "raster_shade.comp";
+  shade_ = vk::ComputePipeline(ctx, shadeShader, gpu::RASTER_WORKGROUP_SIZE, {setLayout}, 0, "raster shade", {1u},
+                               cache);
+  shadeOneLight_ = vk::ComputePipeline(ctx, shadeShader, gpu::RASTER_WORKGROUP_SIZE, {setLayout}, 0,
                                        "raster shade (one light)", {0u}, cache);
   tileDepthPipeline_ = pipeline(multisampled() ? "raster_tile_depth_ms.comp" : "raster_tile_depth.comp",
                                 gpu::RASTER_WORKGROUP_SIZE, "raster tile depth");

@@ -184,6 +184,11 @@ hp::RenderRequest makeRenderRequest(const FrameOptions& o, const CLI::App& cmd) 
       throw hp::Error("--skin-bounce must be on or off, got '" + o.skinBounce->substr(0, 40) + "'");
     r.look.skinBounce = *o.skinBounce == "on";
   }
+  if (o.farSide) {
+    if (*o.farSide != "depth" && *o.farSide != "open")
+      throw hp::Error("--far-side must be depth or open, got '" + o.farSide->substr(0, 40) + "'");
+    r.look.farSideFromDepth = *o.farSide == "depth";
+  }
   if (o.wrap) r.look.wrap = *o.wrap;  // range checked by look.validate below
   if (o.skinColor) {
     r.look.skinColor = vec3Option(*o.skinColor, "--skin-color");
@@ -278,6 +283,9 @@ void addFrameOptions(CLI::App& cmd, FrameOptions& o) {
                  "back (physical fibre model), or single");
   cmd.add_option("--skin-bounce", o.skinBounce,
                  "on or off: adds the sunlight the skin reflects onto the hair (default on)");
+  cmd.add_option("--far-side", o.farSide,
+                 "Compute raster: the sky on a hair fibre's far side: depth (default; where the depth image lies "
+                 "behind the fibre, the light the hair beneath passes on) or open (the open sky everywhere)");
   cmd.add_option("--wrap", o.wrap,
                  "The skin's wrap lighting, [0, 1]: light reaches past the terminator as (wrap + N.L) / (1 + wrap) "
                  "(default 0.5; 0 is Lambertian, as the reference's skin)");

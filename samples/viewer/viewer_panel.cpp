@@ -186,6 +186,7 @@ void lookSection(Tunables& t, PanelChanges& c) {
     c.look = true;
   }
   c.look |= ImGui::Checkbox("skin bounce", &t.look.skinBounce);
+  c.look |= ImGui::Checkbox("far side from depth", &t.look.farSideFromDepth);
 }
 
 void groomSection(Tunables& t, PanelChanges& c) {

@@ -106,7 +106,8 @@ struct RenderFrame {
                          // RENDER_MAX_LIGHTS: no slot 0), z = w = 0
   vec4 headBounce;       // x = 1: the hair adds the light the skin reflects (head_bounce.glsl) of light
                          // lightCount.y, y = the bounce map's texel size at the heads (scene units), z = the
-                         // bounce's samples per strand (RENDER_BINDING_BOUNCE_SAMPLES), w = 0
+                         // bounce's samples per strand (RENDER_BINDING_BOUNCE_SAMPLES), w = 1: the compute
+                         // raster's far-side sky follows the depth behind the hair (LookSettings::farSideFromDepth)
   FrameLight lights[RENDER_MAX_LIGHTS];
   FrameShadow shadows[OPACITY_MAX_LIGHTS];  // per shadow slot
   mat4 previousViewProj;  // the previous frame's unjittered proj * view (motion vectors; shared/raster.h)

@@ -106,6 +106,7 @@ TEST(CliRenderOpacity, RefusesBadShadowOptions) {
       {{"--opacity-raster", "splat"}, "opacity raster must be auto, compute or graphics"},
       {{"--scattering", "triple"}, "scattering must be single or dual"},
       {{"--skin-bounce", "maybe"}, "--skin-bounce must be on or off, got 'maybe'"},
+      {{"--far-side", "closed"}, "--far-side must be depth or open, got 'closed'"},
       {{"--skin-color", "2,0,0"}, "--skin-color components must be in [0, 1]"},
       {{"--skin-color", "0.5,nan,0.5"}, "--skin-color must be finite"},
       {{"--scattering", "dual", "--lut-mode", "float"}, "--scattering dual needs the physical fibre model"},

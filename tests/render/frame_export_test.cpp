@@ -178,7 +178,8 @@ RenderRequest smallCapturedFrame() {
 
 // The default frame (physical fibres, deep maps, skin bounce, compute raster over a 4-sample head) against
 // the reference over the hair, 64x48, reference 32 spp / 4 bounces. Measured on lavapipe (a8f24a4) against
-// reference seeds 1-3: 30.6-31.7 dB, luminance 1.028-1.070, red/blue 0.94-1.01 of the reference's (whose own
+// reference seeds 1-3: 30.6-31.7 dB, luminance 1.028-1.070 (seed 1: 1.011 since the far side's sky follows the
+// head's depth), red/blue 0.94-1.01 of the reference's (whose own
 // red/blue spreads 1.78-1.92 at 32 spp). Bounds: 29 dB, the luminance within [0.95, 1.15] and the hue within
 // 15%, about twice the seeds' spread around the measurement. Negative controls, measured earlier: a
 // single-sample head (the head's edges over the hair aliased, half-skin pixels drawn as hair) read 22.0-22.4

@@ -33,6 +33,7 @@ RenderRequest headRequest(RasterMode raster) {
   // decided the mean colour (compute 13% brighter at ambient 0.2), not the hair both draw.
   r.look.ambient = 0.4f;
   r.look.skinBounce = false;  // the compute raster alone adds it: the two rasters are compared, not the lighting
+  r.look.farSideFromDepth = false;  // likewise: the graphics raster cannot read the head's depth
   r.look.skinColor *= hp::gpu::RENDER_HAIR_SKY_VISIBILITY;
   return r;
 }

@@ -103,6 +103,9 @@ struct LookSettings {
   std::array<Vec3, 9> environment{};
   Scattering scattering = Scattering::Dual;  // Dual: physical model only
   bool skinBounce = true;            // sunlight the skin reflects onto the hair
+  // Compute raster: where the depth the hair is composited over (the character's, or the engine's) lies behind
+  // a hair vertex, the sky on the fibre's far side is the light the hair beneath passes on; false: open sky.
+  bool farSideFromDepth = true;
 };
 
 struct SimulationSettings {
