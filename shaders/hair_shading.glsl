@@ -77,17 +77,17 @@ vec3 hairRadiance(vec3 world, vec3 tangent, float colorScale, float tilt, float 
   // it (shared/render.h); with dual scattering more of it does, passed on forward by the hair on the way
   // (hp::skyVisibility). Under an environment, the albedo's part from the viewer's side of the fibre takes
   // the environment's mean radiance around the fibre's normal toward the viewer, the rest the mean around
-  // the opposite normal. Where the head lies behind the fibre, its far side faces the hair beneath and the head
-  // instead of the sky: that side gets what the hair beneath passes on forward, a_f of the sky (dual
-  // scattering; none with single scattering). The skin's bounce: the fibre's response to it is the sky albedo
-  // times its mean.
+  // the opposite normal. With dual scattering, where the head lies behind the fibre, its far side faces the hair
+  // beneath and the head instead of the sky: that side gets what the hair beneath passes on forward, a_f of the
+  // sky (single scattering keeps it open: its sky term stands for all the light it does not model). The skin's
+  // bounce: the fibre's response to it is the sky albedo times its mean.
   bool dual = hairDualScattering();
   vec3 sky = dual ? marschner.skyVisibility.rgb : vec3(RENDER_HAIR_SKY_VISIBILITY);
   vec3 across = V - dot(V, T) * T;
   vec3 side = normalize(cross(T, abs(T.y) < 0.9 ? vec3(0.0, 1.0, 0.0) : vec3(1.0, 0.0, 0.0)));
   vec3 N = dot(across, across) > 1e-8 ? normalize(across) : side;  // seen end-on: any side will do
   vec3 front = marschner.skyAlbedoFront.rgb;
-  vec3 farShare = mix(vec3(1.0), dual ? marschner.forwardMean.rgb : vec3(0.0), headBehind);
+  vec3 farShare = dual ? mix(vec3(1.0), marschner.forwardMean.rgb, headBehind) : vec3(1.0);
   vec3 environment =
       front * environmentLight(N) + (marschner.skyAlbedo.rgb - front) * environmentLight(-N) * farShare;
   vec3 ambient = environment * sky + marschner.skyAlbedo.rgb * bounce;

@@ -41,7 +41,8 @@ layout(std430, binding = RASTER_BINDING_SCREEN) readonly buffer Screen { vec4 sc
 // One sample of its pixel: the vertex stands for a segment's end across pixels, and the term it steers is
 // smooth; the samples of the head's edge would cost lavapipe 12% of the shade pass for nothing to see.
 float headBehindAt(vec4 s) {
-  ivec2 pixel = clamp(ivec2(s.xy), ivec2(0), headDepthSize() - 1);
+  ivec2 pixel = ivec2(floor(s.xy));
+  if (any(lessThan(pixel, ivec2(0))) || any(greaterThanEqual(pixel, headDepthSize()))) return 0.0;  // off-screen
   float d = headDepthAt(pixel, 0u);
   return d < 1.0 && d > s.z ? 1.0 : 0.0;
 }

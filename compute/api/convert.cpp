@@ -152,6 +152,7 @@ hp::ScalpInput scalp(const ScalpInput& s) {
 
 // The public default is the library's (shaders/shared/render.h).
 static_assert(InstanceSettings{}.skinBounceSamples == hp::gpu::RENDER_BOUNCE_STRAND_SAMPLES);
+static_assert(InstanceSettings{}.skinBounceAtGuides == hp::compute::StrandOptions{}.bounceAtGuides);
 
 hp::InstanceSettings instance(const InstanceSettings& s) {
   hp::InstanceSettings h;
@@ -160,6 +161,7 @@ hp::InstanceSettings instance(const InstanceSettings& s) {
   h.lutMode = fibre(s.fibre);
   h.strands.verticesPerStrand = s.verticesPerStrand;
   h.strands.bounceSamples = s.skinBounceSamples;
+  h.strands.bounceAtGuides = s.skinBounceAtGuides;
   h.strands.guidesOnly = s.guidesOnly;
   h.look = look(s.look);
   h.scalp = scalp(s.scalp);

@@ -155,8 +155,10 @@ bool inUnitRange(const glm::vec3& v) {
   return v.x >= 0.0f && v.y >= 0.0f && v.z >= 0.0f && v.x <= 1.0f && v.y <= 1.0f && v.z <= 1.0f;
 }
 
+// Before version 4 the strands shared one alpha_R: no tilt variation unless the file says one.
 HairMaterial readMaterial(JsonObject o) {
   HairMaterial m;
+  m.tiltVariation = 0.0;
   o.read("eta", m.eta);
   o.read("absorption", m.absorption);
   o.read("alpha_r_rad", m.alphaR);
@@ -172,11 +174,12 @@ HairMaterial readMaterial(JsonObject o) {
   return m;
 }
 
-// "strand_tilts_rad" (absent before version 4: none): each a number within the material's tilt variation.
-std::vector<float> readStrandTilts(JsonObject& fibre, const HairMaterial& m) {
+// "strand_tilts_rad" (version 4; none before): each a number within the material's tilt variation.
+std::vector<float> readStrandTilts(JsonObject& fibre, const HairMaterial& m, std::uint32_t version) {
   std::vector<float> tilts;
   const nlohmann::json* list = fibre.array("strand_tilts_rad");
   if (!list) return tilts;
+  if (version < 4 && !list->empty()) fibre.fail("strand_tilts_rad", "per-strand tilts need version 4");
   const double bound = m.tiltVariation * (1.0 + 1e-6);
   for (const nlohmann::json& t : *list) {
     if (!t.is_number() || !(std::abs(t.get<double>()) <= bound))
@@ -254,7 +257,7 @@ void readFrameJson(ExportedFrame& f, const std::filesystem::path& path) {
     fibre.fail("lut_mode", "expected \"direct\", \"paper\", \"float\" or \"physical\"");
   }
   f.material = readMaterial(required(fibre, "material"));
-  f.strandTilts = readStrandTilts(fibre, f.material);
+  f.strandTilts = readStrandTilts(fibre, f.material, version);
   fibre.read("albedo", f.hairAlbedo);
   if (!inUnitRange(f.hairAlbedo)) fibre.fail("albedo", "each channel must be in [0, 1]");
   fibre.finish();

@@ -240,6 +240,10 @@ struct InstanceSettings {
   // Points along each strand where the skin's bounce light is gathered once a frame; the shading
   // interpolates between them. [2, 256]; verticesPerStrand or more gathers at every vertex.
   std::uint32_t skinBounceSamples = 8;
+  // true: the skin's bounce is gathered along the guides and blended into each render strand (2,130 gathers on
+  // the default head instead of one per render strand; within 3% of the gather along every strand,
+  // docs/SHADING.md "Skin bounce"); false: gathered along every render strand.
+  bool skinBounceAtGuides = true;
 };
 
 // One light of a frame. direction: unit, from the lit hair toward the light (a spot's: minus its axis; a
