@@ -243,8 +243,7 @@ vec4 marschnerPhysicalM(vec4 ang, float tilt, sampler2D mTex) {
   vec2 c = vec2(marschnerPhysicalMCoord(ang.x), marschnerPhysicalMCoord(ang.y));
   vec4 m = textureLod(mTex, c, 0.0);
   if (tilt != 0.0) {
-    vec3 shift = vec3(2.0, -1.0, -4.0) * tilt;
-    vec3 v = marschnerPhysicalTiltedMV(ang.y, cos(shift), sin(shift));
+    vec3 v = marschnerPhysicalTiltedMV(ang.y, tilt);
     m.x = textureLod(mTex, vec2(c.x, v.x), 0.0).x;
     m.y = textureLod(mTex, vec2(c.x, v.y), 0.0).y;
     m.z = textureLod(mTex, vec2(c.x, v.z), 0.0).z;

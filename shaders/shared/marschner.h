@@ -17,6 +17,8 @@ namespace hp::gpu {
 using vec3 = glm::vec3;
 using uvec4 = glm::uvec4;
 using glm::clamp;
+using glm::cos;
+using glm::sin;
 using std::abs;
 using glm::dot;
 using glm::inversesqrt;
@@ -202,9 +204,10 @@ HP_FN float marschnerShiftedSin(float sinTheta, float cosDelta, float sinDelta) 
 
 // A strand whose cuticle tilt is alpha_R + tilt reads lobe p of the physical M texture at theta_r - k_p tilt
 // (M_p = M(v_p, theta_i, theta_r - s_p), s_p = k_p alpha_R, k = 2, -1, -4; engine/core/shading/physical_terms.h):
-// the texture's v coordinates for R, TT and TRT from sin theta_r and the cosines (x) and sines (y) of the
-// three shifts 2 tilt, -tilt, -4 tilt.
-HP_FN vec3 marschnerPhysicalTiltedMV(float sinThetaR, vec3 cosShift, vec3 sinShift) {
+// the texture's v coordinates for R, TT and TRT from sin theta_r and the tilt (radians).
+HP_FN vec3 marschnerPhysicalTiltedMV(float sinThetaR, float tilt) {
+  vec3 shift = vec3(2.0f, -1.0f, -4.0f) * tilt;
+  vec3 cosShift = cos(shift), sinShift = sin(shift);
   return vec3(marschnerPhysicalMCoord(marschnerShiftedSin(sinThetaR, cosShift.x, sinShift.x)),
               marschnerPhysicalMCoord(marschnerShiftedSin(sinThetaR, cosShift.y, sinShift.y)),
               marschnerPhysicalMCoord(marschnerShiftedSin(sinThetaR, cosShift.z, sinShift.z)));

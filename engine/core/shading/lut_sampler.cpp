@@ -44,8 +44,7 @@ glm::vec4 physicalM(const LutTexture& t, glm::vec4 ang, float tilt, const LutSam
   const float u = gpu::marschnerPhysicalMCoord(ang.x);
   glm::vec4 m = sampleBilinear(t, u, gpu::marschnerPhysicalMCoord(ang.y), o);
   if (tilt != 0.0f) {
-    const glm::vec3 shift = glm::vec3(2.0f, -1.0f, -4.0f) * tilt;
-    const glm::vec3 v = gpu::marschnerPhysicalTiltedMV(ang.y, glm::cos(shift), glm::sin(shift));
+    const glm::vec3 v = gpu::marschnerPhysicalTiltedMV(ang.y, tilt);
     for (int p = 0; p < 3; ++p) m[p] = sampleBilinear(t, u, v[p], o)[p];
   }
   return m;
