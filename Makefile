@@ -2,8 +2,8 @@
 #   make demo   installs, builds (Release) and renders the default head to out/hair.png (and front,
 #               side and back views to out/), lit by the sun and the studio environment; writes nothing
 #               outside out/
-#   make pictures  re-renders the README's pictures (docs/images: front, back, side without and with the hair grid,
-#                  curly and clumped sides, a shaking head's sheet)
+#   make pictures  re-renders the README's pictures (docs/images: front, back, side with and without the groom,
+#                  with the hair grid, curly and clumped sides, a shaking head's sheet)
 #   make api-docs  the API reference of the public headers (doxygen, warnings as errors) in out/api/
 #   make test   installs, builds and runs the whole CTest suite on lavapipe
 #   make fuzz   builds the libFuzzer targets (clang, ASan+UBSan) and runs each for FUZZ_SECONDS
@@ -60,6 +60,8 @@ pictures: build
 		--out docs/images/head_side_clumped.png
 	./$(BUILD)/samples/hairpipe render $(LOOK) --camera-orbit 90 --width 480 --height 360 \
 		--out docs/images/head_side.png
+	./$(BUILD)/samples/hairpipe render $(LOOK) --camera-orbit 90 --width 480 --height 360 --no-groom \
+		--out docs/images/head_side_plain.png
 	./$(BUILD)/samples/hairpipe render $(LOOK) --camera-orbit 90 --width 480 --height 360 --volume 0.6 --friction 0.1 \
 		--out docs/images/head_side_volume.png
 	./$(BUILD)/samples/hairpipe render $(LOOK) --camera-orbit 150 --width 240 --height 180 --animate shake --fps 60 \

@@ -93,9 +93,21 @@ hp::render::LookSettings look(const LookSettings& l) {
   return h;
 }
 
-static_assert(GroomSettings{}.clumpShape == hp::GroomSettings{}.clumpShape &&
-              GroomSettings{}.frizzFrequency == hp::GroomSettings{}.frizzFrequency &&
-              GroomSettings{}.frizzHairlineWidth == hp::GroomSettings{}.frizzHairlineWidth);  // one default for both
+namespace {
+constexpr bool sameGroom(const GroomSettings& g, const hp::GroomSettings& h) {
+  return g.clumpsPerTriangle == h.clumpsPerTriangle && g.clumpStrength == h.clumpStrength &&
+         g.clumpShape == h.clumpShape && g.curlRadius == h.curlRadius && g.curlTurns == h.curlTurns &&
+         g.curlVariation == h.curlVariation && g.frizzAmplitude == h.frizzAmplitude &&
+         g.frizzFrequency == h.frizzFrequency && g.frizzHairline == h.frizzHairline &&
+         g.frizzHairlineWidth == h.frizzHairlineWidth;
+}
+}  // namespace
+// One default for both: the public groom starts from the scenes' recommended one, none() is the bare blend.
+static_assert(sameGroom(GroomSettings{}, hp::recommendedGroom()) && sameGroom(GroomSettings::none(), hp::GroomSettings{}));
+static_assert(SimulationSettings{}.volume == hp::SimulationParams{}.volume &&
+              SimulationSettings{}.friction == hp::SimulationParams{}.friction &&
+              SimulationSettings{}.volumeTarget == hp::SimulationParams{}.volumeTarget &&
+              SimulationSettings{}.gridResolution == hp::SimulationParams{}.gridResolution);
 
 hp::GroomSettings groom(const GroomSettings& g) {
   hp::GroomSettings h;

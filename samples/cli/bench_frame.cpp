@@ -83,6 +83,7 @@ FrameResult benchFrame(const vk::Context& ctx, const FrameCase& c) {
   settings.rasterSettings.fineWalk = c.fineWalk;
   settings.look.scattering = c.scattering;
   settings.lutMode = c.lutMode;
+  settings.groom = c.groom ? scene.groom : GroomSettings{};
   const std::vector<LightSpec> lights = benchLights(c.lights);
   settings.shadowedLights = shadowSlotsFor(lights);
   if (c.lodFraction < 1.0f) settings.lod = {true, 0.0f, 1e-3f, c.lodFraction};  // that fraction at any distance

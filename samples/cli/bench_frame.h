@@ -36,6 +36,7 @@ struct FrameCase {
   std::uint32_t lights = 1;  // shadowed directional lights, [1, 4] (benchLights: the sun, then a rim, fill, top)
   std::uint32_t bounceSamples = gpu::RENDER_BOUNCE_STRAND_SAMPLES;  // StrandOptions::bounceSamples
   compute::FineWalk fineWalk = compute::FineWalk::Auto;  // compute only: RasterSettings::fineWalk
+  bool groom = true;  // the scene's groom at interpolation (recommendedGroom), or none (the plain blend)
 };
 
 struct PassTiming {

@@ -28,7 +28,7 @@ std::string frameCaseName(const FrameCase& c) {
   const std::string bounce = c.bounceSamples == gpu::RENDER_BOUNCE_STRAND_SAMPLES
                                  ? ""
                                  : ", bounce x" + std::to_string(c.bounceSamples);
-  const std::string shading = model + scattering + bounce;
+  const std::string shading = model + scattering + bounce + (c.groom ? "" : ", no groom");
   if (c.raster == RasterMode::Compute) {
     const std::string head = c.msaa == 4 ? "" : " head msaa" + std::to_string(c.msaa);
     const std::string walk =

@@ -1,5 +1,5 @@
 // `hairpipe bench [--strands LIST] [--resolution WxH] [--frames N] [--raster LIST] [--msaa LIST]
-// [--skin-bounce off,on] [--scattering single,dual] [--lut-mode LIST] [--json F]
+// [--skin-bounce off,on] [--scattering single,dual] [--lut-mode LIST] [--groom scene,none] [--json F]
 // [--plot F.svg]`: the whole frame on the default head (bench_frame.h) for each strand count and raster
 // path (once per --msaa value: the head's samples, and the graphics path's hair samples; once per fibre model
 // and scattering), after one warm-up frame: per pass the GPU-timestamp median (min/max) of N frames, the
@@ -40,6 +40,7 @@ struct BenchOptions {
   std::vector<std::uint32_t> lights{1};
   std::vector<std::uint32_t> bounceSamples{hp::gpu::RENDER_BOUNCE_STRAND_SAMPLES};
   std::vector<std::string> fineWalks{"auto"};
+  std::vector<std::string> grooms{"scene"};
   std::string json, plot, device;
 };
 
@@ -53,17 +54,29 @@ void parseResolution(const std::string& text, std::uint32_t& w, std::uint32_t& h
   h = b;
 }
 
+// --groom as values: the scene's groom (true) or none.
+std::vector<bool> grooms(const BenchOptions& o) {
+  std::vector<bool> out;
+  for (const std::string& g : o.grooms) {
+    if (g != "scene" && g != "none") throw hp::Error("bench: --groom takes scene and/or none, got '" + g.substr(0, 40) + "'");
+    out.push_back(g == "scene");
+  }
+  return out;
+}
+
 void addSampleCounts(hp::cli::FrameCase c, const BenchOptions& o, std::vector<hp::cli::FrameCase>& out) {
   for (std::uint32_t m : o.msaa)
     for (float f : o.lodFractions)
       for (std::uint32_t lights : o.lights)
-        for (std::uint32_t bounce : o.bounceSamples) {
-          c.msaa = m;
-          c.lodFraction = f;
-          c.lights = lights;
-          c.bounceSamples = bounce;
-          out.push_back(c);
-        }
+        for (std::uint32_t bounce : o.bounceSamples)
+          for (const bool groom : grooms(o)) {
+            c.msaa = m;
+            c.lodFraction = f;
+            c.lights = lights;
+            c.bounceSamples = bounce;
+            c.groom = groom;
+            out.push_back(c);
+          }
 }
 
 // A parser's error, prefixed with the option it came from.
@@ -170,7 +183,7 @@ nlohmann::json toJson(const hp::cli::FrameResult& r) {
   }
   return {{"strands", r.c.strands},      {"width", r.c.width},          {"lod_fraction", r.c.lodFraction},
           {"shadowed_lights", r.c.lights},            {"bounce_samples", r.c.bounceSamples},
-          {"fine_walk", hp::compute::fineWalkName(r.c.fineWalk)},
+          {"fine_walk", hp::compute::fineWalkName(r.c.fineWalk)}, {"groom", r.c.groom ? "scene" : "none"},
           {"height", r.c.height},        {"raster", hp::cli::frameCaseName(r.c)},
           {"lut_mode", hp::lutModeName(r.c.lutMode)},
           {"scattering", hp::render::scatteringName(r.c.scattering)},
@@ -188,10 +201,10 @@ nlohmann::json toJson(const hp::cli::FrameResult& r) {
 }
 
 void printText(const nlohmann::json& row) {
-  std::printf("%u strands (LOD %.2f, %u shadowed lights), %ux%u, %s: frame %.1f ms, host %.1f ms per frame, resident "
+  std::printf("%u strands (LOD %.2f, %u shadowed lights, groom %s), %ux%u, %s: frame %.1f ms, host %.1f ms per frame, resident "
               "%.1f MiB (%+.2f MiB per frame)\n",
               row["strands"].get<unsigned>(), row["lod_fraction"].get<double>(), row["shadowed_lights"].get<unsigned>(),
-              row["width"].get<unsigned>(), row["height"].get<unsigned>(), row["raster"].get<std::string>().c_str(),
+              row["groom"].get<std::string>().c_str(), row["width"].get<unsigned>(), row["height"].get<unsigned>(), row["raster"].get<std::string>().c_str(),
               row["frame_ms"].get<double>(), row["host_frame_ms"].get<double>(), row["resident_mib"].get<double>(),
               row["resident_growth_mib_per_frame"].get<double>());
   std::printf("  copy yardstick %.2f GB/s alone (transfer %.2f, compute %.2f; transfer: %u submissions, %s), %.2f GB/s inside the frame%s\n",
@@ -277,6 +290,10 @@ void setup(CLI::App& app) {
   cmd->add_option("--fine-walk", o->fineWalks,
                   "Compute raster: how the fine pass walks a tile's list, auto (staged on GPUs, direct on CPU devices), "
                   "direct and/or staged (comma separated)")
+      ->delimiter(',')->capture_default_str();
+  cmd->add_option("--groom", o->grooms,
+                  "The groom at interpolation: scene (the default head's clumps, wave and frizz) and/or none (comma "
+                  "separated)")
       ->delimiter(',')->capture_default_str();
   cmd->add_option("--json", o->json, "Write the report as JSON to this file");
   cmd->add_option("--plot", o->plot, "Write an SVG of ms per pass against strand count to this file");

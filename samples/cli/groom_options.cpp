@@ -1,29 +1,38 @@
 #include "samples/cli/groom_options.h"
 
 #include <cmath>
+#include <sstream>
 #include <string>
 
 #include "engine/core/error.h"
 
 namespace hp::cli {
 void addGroomOptions(CLI::App& cmd, GroomOptions& o) {
+  const GroomSettings d = recommendedGroom();
+  std::ostringstream text;
+  text << "No clumps, curl or frizz (each strand the plain blend of its guides) before --clump, --curl and --frizz "
+          "apply; a scene's groom is otherwise --clump "
+       << d.clumpsPerTriangle << ',' << d.clumpStrength << ',' << d.clumpShape << " --curl " << d.curlRadius << ','
+       << d.curlTurns << ',' << d.curlVariation << " --frizz " << d.frizzAmplitude << ',' << d.frizzFrequency << ','
+       << d.frizzHairline << ',' << d.frizzHairlineWidth;
+  cmd.add_flag("--no-groom", o.none, text.str());
   cmd.add_option("--clump", o.clump,
                  "Clumping COUNT,STRENGTH[,SHAPE]: COUNT clump centres per scalp triangle (0-64), pulling each "
-                 "strand STRENGTH (0-1) of the way to its centre at the tip, as v^SHAPE along it (default 1)")
+                 "strand STRENGTH (0-1) of the way to its centre at the tip, as v^SHAPE along it (omitted: the scene's)")
       ->delimiter(',')->expected(2, 3);
   cmd.add_option("--curl", o.curl,
                  "Curl RADIUS,TURNS[,VARIATION]: helix radius (scene units), turns per unit of length, per-strand "
-                 "variation 0-1 (default 0)")
+                 "variation 0-1 (omitted: the scene's)")
       ->delimiter(',')->expected(2, 3);
   cmd.add_option("--frizz", o.frizz,
                  "Frizz AMPLITUDE[,FREQUENCY[,HAIRLINE[,WIDTH]]]: noise across the strand at the tip (scene units, "
-                 "growing as v^2), cycles per unit of length (default 40), the amplitude's extra factor at the "
-                 "hairline (default 0) and the distance over which it falls off by 1/e (default 0.02)")
+                 "growing as v^2), cycles per unit of length, the amplitude's extra factor at the hairline and the "
+                 "distance over which it falls off by 1/e (each omitted: the scene's)")
       ->delimiter(',')->expected(1, 4);
 }
 
 void applyGroomOptions(const GroomOptions& o, GroomSettings& groom) {
-  GroomSettings g = groom;
+  GroomSettings g = o.none ? GroomSettings{} : groom;
   if (!o.clump.empty()) {
     if (!(o.clump[0] >= 0.0f && o.clump[0] <= 64.0f && o.clump[0] == std::floor(o.clump[0])))
       throw Error("--clump: COUNT must be a whole number in [0, 64], got " + std::to_string(o.clump[0]));

@@ -1,7 +1,7 @@
 #pragma once
 // Contract: the groom options shared by `render`, `reference`, `view` (through frame options) and `strands`:
-// --clump, --curl, --frizz, each overriding its part of the scene's "groom" section
-// (engine/core/hair/groom.h). applyGroomOptions validates the result (hp::Error naming the option).
+// --no-groom (start from no groom at all), then --clump, --curl, --frizz, each overriding its part of the
+// scene's "groom" section (engine/core/hair/groom.h). applyGroomOptions validates the result (hp::Error naming the option).
 #include <CLI/CLI.hpp>
 
 #include <vector>
@@ -10,6 +10,7 @@
 
 namespace hp::cli {
 struct GroomOptions {
+  bool none = false;         // --no-groom
   std::vector<float> clump;  // COUNT,STRENGTH[,SHAPE]
   std::vector<float> curl;   // RADIUS,TURNS[,VARIATION]
   std::vector<float> frizz;  // AMPLITUDE[,FREQUENCY[,HAIRLINE[,WIDTH]]]

@@ -189,6 +189,23 @@ TEST(CliBench, FineWalkListIsCheckedThenBenched) {
   EXPECT_EQ(walks, (std::vector<std::string>{"direct", "staged"}));
 }
 
+// `bench --groom` takes scene and/or none (refused by name before a frame runs); each is a case of its own.
+TEST(CliBench, GroomListIsCheckedThenBenched) {
+  auto bad = runCli({"bench", "--raster", "compute", "--groom", "scene,curly", "--frames", "1"});
+  EXPECT_EQ(bad.exitCode, 1);
+  EXPECT_NE(bad.err.find("bench: --groom takes scene and/or none, got 'curly'"), std::string::npos) << bad.err;
+  EXPECT_EQ(bad.out.find("median of"), std::string::npos) << "a frame ran: " << bad.out;
+  const nlohmann::json report = tinyComputeBench({"--groom", "scene,none"}, "bench_grooms.json");
+  ASSERT_FALSE(report.is_null());
+  std::vector<std::string> names, grooms;
+  for (const auto& row : report["results"]) {
+    names.push_back(row["raster"].get<std::string>());
+    grooms.push_back(row["groom"].get<std::string>());
+  }
+  EXPECT_EQ(names, (std::vector<std::string>{"compute", "compute, no groom"}));
+  EXPECT_EQ(grooms, (std::vector<std::string>{"scene", "none"}));
+}
+
 // `bench --scattering` and `--lut-mode` are refused by name before a frame runs; dual with a model other than
 // the physical one (which has no dual tables) is benchmarked as single scattering, once.
 TEST(CliBench, ScatteringAndLutModeListsAreCheckedThenCombined) {

@@ -4,6 +4,8 @@
 
 #include <cmath>
 #include <filesystem>
+#include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -77,4 +79,29 @@ TEST(CliStrands, OutIsRequired) {
   auto r = runCli({"strands"});
   EXPECT_NE(r.exitCode, 0);
   EXPECT_NE(r.err.find("--out"), std::string::npos) << r.err;
+}
+
+// The scene's groom is the default (the same strands as its values given as options), --no-groom the plain
+// blend of the guides (the same strands as zero clumps, curl and frizz), and --clump/--curl/--frizz apply on top.
+TEST(CliStrands, TheScenesGroomIsTheDefaultAndNoGroomThePlainBlend) {
+  const auto strands = [](const std::string& name, std::vector<std::string> options) {
+    const fs::path out = tempPath(name);
+    std::vector<std::string> args = {"strands", "--density", "2000", "--out", out.string()};
+    args.insert(args.end(), options.begin(), options.end());
+    const auto r = runCli(args);
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    return hp::readHairFile(out).points;
+  };
+  const auto groomed = strands("groom_default.hair", {});
+  const auto explicitGroom = strands("groom_explicit.hair", {"--clump", "4,0.4,1.5", "--curl", "0.004,5,0.5", "--frizz",
+                                                             "0.0008,40,4,0.02"});
+  const auto plain = strands("groom_none.hair", {"--no-groom"});
+  const auto zeros = strands("groom_zeros.hair", {"--clump", "0,0", "--curl", "0,0", "--frizz", "0"});
+  const auto curlOnly = strands("groom_curl.hair", {"--no-groom", "--curl", "0.004,5"});
+  ASSERT_EQ(groomed.size(), 2000u * 36);
+  EXPECT_EQ(groomed, explicitGroom);
+  EXPECT_EQ(plain, zeros);
+  EXPECT_NE(groomed, plain);
+  EXPECT_NE(curlOnly, plain);
+  EXPECT_NE(curlOnly, groomed);
 }

@@ -1,8 +1,9 @@
 #pragma once
 // Contract: the groom detail the interpolation adds to each render strand (shaders/interpolate.comp,
 // docs/THEORY.md "Groom detail"): clumping toward clump centres in each scalp triangle, curl around the
-// clumped centreline and frizz, all deterministic per strand. The default adds nothing: every strand is
-// the plain blend of its three guides. Host-only; validate() throws hp::Error naming the field.
+// clumped centreline and frizz, all deterministic per strand. A default-constructed GroomSettings adds
+// nothing (every strand the plain blend of its three guides); recommendedGroom() is what scenes and the
+// public API start from. Host-only; validate() throws hp::Error naming the field.
 #include <cstdint>
 
 #include "shaders/shared/strands.h"
@@ -25,6 +26,23 @@ struct GroomSettings {
   bool any() const { return clumpsPerTriangle > 0 || curlRadius > 0.0f || frizzAmplitude > 0.0f; }
   void validate() const;
 };
+
+// The groom a scene and the public API's GroomSettings start from, chosen by looking at the default head
+// (docs/THEORY.md "Groom detail"): four clumps a scalp triangle pulling the tips 40% of the way in (v^1.5), a
+// gentle wave (4 mm radius, 5 turns a metre, +-25% per strand), 0.8 mm of frizz at the tips and up to five
+// times that at the hairline. Lengths in scene units, metres for the default head.
+constexpr GroomSettings recommendedGroom() {
+  GroomSettings g;
+  g.clumpsPerTriangle = 4;
+  g.clumpStrength = 0.4f;
+  g.clumpShape = 1.5f;
+  g.curlRadius = 0.004f;
+  g.curlTurns = 5.0f;
+  g.curlVariation = 0.5f;
+  g.frizzAmplitude = 0.0008f;
+  g.frizzHairline = 4.0f;
+  return g;
+}
 
 gpu::GroomParams groomParams(const GroomSettings& groom);
 }  // namespace hp

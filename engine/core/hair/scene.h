@@ -116,7 +116,7 @@ struct Scene {
   CameraSpec camera;
   RenderSpec render;
   SimulationParams simulation;
-  GroomSettings groom;  // clumps, curl and frizz at interpolation (none by default)
+  GroomSettings groom = recommendedGroom();  // clumps, a wave and frizz at interpolation
   // Set when a model is loaded without a scene: what was guessed (units, up axis; empty: nothing)
   // and whether the camera should be framed on the hair once it is built.
   std::string guessed;

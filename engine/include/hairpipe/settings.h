@@ -204,21 +204,37 @@ struct LodSettings {
 
 // Groom detail added to each render strand at interpolation, deterministic per strand (the same shape in
 // every frame and run): clumping toward clump centres hashed in each scalp triangle, curl around the clumped
-// centreline, frizz. The default adds nothing (each strand the plain blend of its three guides). Lengths are
-// scene units; v runs from 0 at the root to 1 at the tip; curl and frizz ramp in over the first 15% of v.
+// centreline, frizz. Lengths are scene units; v runs from 0 at the root to 1 at the tip; curl and frizz ramp
+// in over the first 15% of v. The defaults were chosen by looking at the default head, in metres (docs/THEORY.md
+// "Groom detail"): four clumps a triangle, a gentle wave, a little frizz that grows toward the hairline.
+// GroomSettings::none() adds nothing (each strand the plain blend of its three guides).
 struct GroomSettings {
-  std::uint32_t clumpsPerTriangle = 0;  // [0, 64]; 0: no clumping
-  float clumpStrength = 0.0f;           // pull toward the clump centre at the tip, [0, 1]
-  float clumpShape = 1.0f;              // the pull is clumpStrength x v^clumpShape, [0.1, 10]
-  float curlRadius = 0.0f;              // helix radius, [0, 1]; 0: no curl
-  float curlTurns = 0.0f;               // turns per unit of strand length, [0, 10000]
-  float curlVariation = 0.0f;           // per-strand spread of radius and turns, [0, 1]
-  float frizzAmplitude = 0.0f;          // at the tip (growing as v^2), [0, 1]; 0: no frizz
+  std::uint32_t clumpsPerTriangle = 4;  // [0, 64]; 0: no clumping
+  float clumpStrength = 0.4f;           // pull toward the clump centre at the tip, [0, 1]
+  float clumpShape = 1.5f;              // the pull is clumpStrength x v^clumpShape, [0.1, 10]
+  float curlRadius = 0.004f;            // helix radius, [0, 1]; 0: no curl
+  float curlTurns = 5.0f;               // turns per unit of strand length, [0, 10000]
+  float curlVariation = 0.5f;           // per-strand spread of radius and turns, [0, 1]
+  float frizzAmplitude = 0.0008f;       // at the tip (growing as v^2), [0, 1]; 0: no frizz
   float frizzFrequency = 40.0f;         // noise cycles per unit of length, (0, 10000]
   // Frizz by region: the amplitude times 1 + frizzHairline x exp(-d / frizzHairlineWidth), d the distance
   // of the strand's scalp triangle from the hairline (the scalp's open edge), [0, 100]; 0: the same everywhere.
-  float frizzHairline = 0.0f;
+  float frizzHairline = 4.0f;
   float frizzHairlineWidth = 0.02f;     // units of length, (0, 10]
+
+  // No clumps, curl or frizz: every render strand the plain blend of its guides.
+  static constexpr GroomSettings none() {
+    GroomSettings g;
+    g.clumpsPerTriangle = 0;
+    g.clumpStrength = 0.0f;
+    g.clumpShape = 1.0f;
+    g.curlRadius = 0.0f;
+    g.curlTurns = 0.0f;
+    g.curlVariation = 0.0f;
+    g.frizzAmplitude = 0.0f;
+    g.frizzHairline = 0.0f;
+    return g;
+  }
 };
 
 struct InstanceSettings {
