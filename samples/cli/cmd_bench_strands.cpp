@@ -42,7 +42,7 @@ struct BenchOptions {
   bool json = false;
   std::string device;
   hp::cli::GroomOptions groomOptions;
-  hp::GroomSettings groom;  // from groomOptions
+  hp::GroomSettings groom = hp::recommendedGroom();  // the scenes' groom, then groomOptions
 };
 
 struct Result {
