@@ -42,17 +42,14 @@ uint coverageMask(float coverage, uint samples) {
 }
 
 void main() {
+  // The mask first: a fragment whose coverage rounds to no sample is dropped before it is shaded (at small
+  // sizes most of a thin strand's fragments are).
+  uint mask = push.samples > 1u ? coverageMask(inCoverage, push.samples) : 0xFFFFFFFFu;
+  if (mask == 0u) discard;
+  // A shader that writes the sample mask on one path must write it on all: left unwritten it is undefined.
+  gl_SampleMask[0] = int(mask);
   float tilt = strandTilt(inRandom, marschner.caustic.z);
   // The graphics raster draws the head in the same pass and cannot read its depth: the far side stays open.
   vec3 radiance = hairRadiance(inWorld, inTangent, inColorScale, tilt, 0.0, inBounce);
-  if (push.samples > 1u) {
-    uint mask = coverageMask(inCoverage, push.samples);
-    if (mask == 0u) discard;
-    gl_SampleMask[0] = int(mask);
-    outColor = vec4(radiance, 1.0);
-  } else {
-    // A shader that writes the sample mask on one path must write it on all: left unwritten it is undefined.
-    gl_SampleMask[0] = -1;
-    outColor = vec4(radiance, inCoverage);
-  }
+  outColor = vec4(radiance, push.samples > 1u ? 1.0 : inCoverage);
 }

@@ -85,6 +85,7 @@ TEST_F(VulkanTest, HairCoversASensiblePartOfTheFrame) {
   // The hair in shadow shows through the ambient term, sky albedo x 0.15 of the sky on dense hair
   // (shaders/hair_shading.glsl): a brighter sky keeps it above the 12-level threshold.
   dark.look.ambient = 0.4f;
+  dark.scene.render.raster = RasterMode::Auto;  // the default path (the golden test above draws the ribbons)
   RenderRequest blonde = dark;
   blonde.scene.material.absorption = {0.08, 0.15, 0.35};
   const HairAsset asset = buildSceneAsset(dark.scene);
