@@ -3,7 +3,7 @@
 #               side and back views to out/), lit by the sun and the studio environment; writes nothing
 #               outside out/
 #   make pictures  re-renders the README's pictures (docs/images: front, back, side with and without the groom,
-#                  with the hair grid, curly and clumped sides, a shaking head's sheet)
+#                  with the hair grid, curly and clumped sides, blonde, a shaking head's sheet)
 #   make api-docs  the API reference of the public headers (doxygen, warnings as errors) in out/api/
 #   make test   installs, builds and runs the whole CTest suite on lavapipe
 #   make fuzz   builds the libFuzzer targets (clang, ASan+UBSan) and runs each for FUZZ_SECONDS
@@ -64,6 +64,8 @@ pictures: build
 		--out docs/images/head_side_plain.png
 	./$(BUILD)/samples/hairpipe render $(LOOK) --camera-orbit 90 --width 480 --height 360 --volume 0.6 --friction 0.1 \
 		--out docs/images/head_side_volume.png
+	./$(BUILD)/samples/hairpipe render $(LOOK) --camera-orbit 145 --width 480 --height 360 --color 0.8,0.65,0.45 \
+		--out docs/images/head_blonde.png
 	./$(BUILD)/samples/hairpipe render $(LOOK) --camera-orbit 150 --width 240 --height 180 --animate shake --fps 60 \
 		--frames 48 --sequence out/sequence --contact-sheet docs/images/shake_contact_sheet.png
 
