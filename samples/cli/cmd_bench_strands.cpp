@@ -1,11 +1,13 @@
 // `hairpipe bench strands [--strands 10000,100000,1000000] [--frames F] [--vertices Q] [--walk auto,strand,vertex]
-// [--json]`: GPU time per frame of the tessellate and interpolate passes (GpuProfiler timestamps, median of F
-// frames after one warm-up frame) on the default head at each render-strand count and interpolate walk
-// (compute::InterpolateWalk), and the achieved bandwidth as a fraction of the copy yardstick's (the faster
+// [--no-groom] [--clump ..] [--curl ..] [--frizz ..] [--json]`: GPU time per frame of the tessellate and
+// interpolate passes (GpuProfiler timestamps, median of F frames after one warm-up frame) on the default head, with
+// the scenes' groom and the groom options, at each render-strand count and interpolate walk
+// (compute::InterpolateWalk; groomed strands walk per strand), and the achieved bandwidth as a fraction of the copy yardstick's (the faster
 // of a vkCmdCopyBuffer of 128 MiB and a shader's copy, each timed alone: samples/tools/copy_reference.h).
 // Bytes counted per pass are the compulsory traffic: every input read once, every output written once
 //   tessellate:  G*P*16 read + G*Q*32 written
-//   interpolate: S*16 bindings + T*16 triangles + G*Q*32 smoothed guides read + S*(Q*32 + 16) written
+//   interpolate: S*16 bindings + T*16 triangles + G*Q*32 smoothed guides read + S*(Q*32 + 16) written (the
+//                plain blend's; a groomed strand reads no guide tangents, but its clump centre's positions)
 //   copy:        2 * 128 MiB (read + write)
 #include <algorithm>
 #include <chrono>

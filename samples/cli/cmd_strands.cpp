@@ -1,6 +1,7 @@
 // `hairpipe strands [--scene FILE | --model default|FILE.hair|FILE.obj] [--density N] [--vertices Q]
-// [--guides-only] --out FILE.hair [--json] [--device D] [--validation]`: builds the asset, uploads
-// its rest-pose guides, runs tessellate + interpolate on the device once, reads the render strands
+// [--guides-only] [--no-groom] [--clump ..] [--curl ..] [--frizz ..] --out FILE.hair [--json] [--device D]
+// [--validation]`: builds the asset, uploads its rest-pose guides, runs tessellate + interpolate (with the
+// scene's groom and the groom options) on the device once, reads the render strands
 // back and writes them as .hair (Q points per strand), atomically. The dump itself is
 // hp::compute::computeRenderStrands / renderStrandsToHairData (tools/strand_dump.h), which
 // `hairpipe render --dump-strands` reuses.

@@ -11,7 +11,7 @@ void addGroomOptions(CLI::App& cmd, GroomOptions& o) {
   const GroomSettings d = recommendedGroom();
   std::ostringstream text;
   text << "No clumps, curl or frizz (each strand the plain blend of its guides) before --clump, --curl and --frizz "
-          "apply; a scene's groom is otherwise --clump "
+          "apply; without it the scene's groom, by default --clump "
        << d.clumpsPerTriangle << ',' << d.clumpStrength << ',' << d.clumpShape << " --curl " << d.curlRadius << ','
        << d.curlTurns << ',' << d.curlVariation << " --frizz " << d.frizzAmplitude << ',' << d.frizzFrequency << ','
        << d.frizzHairline << ',' << d.frizzHairlineWidth;

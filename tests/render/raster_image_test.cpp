@@ -126,14 +126,15 @@ TEST_F(VulkanTest, ASmallTileBudgetReportsItsOverflowAndStillDrawsHair) {
 }
 
 TEST_F(VulkanTest, TheDefaultTileBudgetKeepsEveryEntryAt3840x2160) {
-  // Default head and density, its render strands as the frame computes them (rest pose), binned only.
+  // Default head, density and groom (clumps gather strands into fewer tiles), its render strands as the frame
+  // computes them (rest pose), binned only.
   const Scene scene;
   const HairAsset asset = buildSceneAsset(scene);
   compute::StrandBuffers strands(*ctx, asset.guides.guideCount(), asset.guides.particlesPerGuide, asset.topology,
                                  compute::StrandOptions{});
   vk::Buffer particles = compute::uploadGuideParticles(*ctx, asset.guides);
   compute::TessellatePass tessellate(*ctx, particles, strands);
-  compute::InterpolatePass interpolate(*ctx, strands);
+  compute::InterpolatePass interpolate(*ctx, strands, nullptr, scene.groom);
   vk::submitAndWait(*ctx, [&](VkCommandBuffer cmd) { compute::recordStrandPasses(*ctx, cmd, tessellate, interpolate); },
                     "strands");
   const VkExtent2D extent{3840, 2160};
