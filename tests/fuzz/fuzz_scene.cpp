@@ -16,6 +16,7 @@ void checkScene(const hp::Scene& s) {
   s.material.validate();
   hp::validateLights(s.lights);
   s.simulation.validate();
+  s.groom.validate();
   for (const hp::LightSpec& l : s.lights)
     HP_FUZZ_REQUIRE(hp::fuzz::finite(l.direction) && hp::fuzz::finite(l.position) && hp::fuzz::finite(l.color));
   HP_FUZZ_REQUIRE(hp::fuzz::finite(s.camera.target) && std::isfinite(s.camera.distance) && s.camera.distance > 0.0f);
