@@ -24,8 +24,8 @@ bool hairDualScattering() {
 vec3 hairLightRadiance(FrameLight light, LightSample ls, LightShadow shadow, vec3 V, vec3 T, float tilt) {
   vec3 L = ls.L;
   bool dual = hairDualScattering();
-  // With dual scattering the single and multiple scattering share the longitudinal terms' lookups.
-  vec4 ang = marschnerAngles(L, V, T);
+  // With dual scattering the single and multiple scattering share the angles and the longitudinal terms' lookups.
+  vec4 ang = dual ? marschnerAngles(L, V, T) : vec4(0.0);
   vec4 m = dual ? marschnerPhysicalM(ang, tilt, lutM) : vec4(0.0);
   vec3 S = dual ? marschnerPhysicalS(ang, m, lutN0, lutN1)
                 : marschnerEvaluate(marschner.control.x, L, V, T, lutM, lutN0, lutN1, marschner, tilt);

@@ -54,22 +54,28 @@ void parseResolution(const std::string& text, std::uint32_t& w, std::uint32_t& h
   h = b;
 }
 
-// --groom as values: the scene's groom (true) or none.
-std::vector<bool> grooms(const BenchOptions& o) {
+// A list option whose values are one of two words: true where a value is `yes`; anything else refused by name
+// ("bench: --groom takes scene and/or none, got 'curly'").
+std::vector<bool> twoWordList(const char* option, const std::vector<std::string>& values, const std::string& first,
+                              const std::string& second, const std::string& yes) {
   std::vector<bool> out;
-  for (const std::string& g : o.grooms) {
-    if (g != "scene" && g != "none") throw hp::Error("bench: --groom takes scene and/or none, got '" + g.substr(0, 40) + "'");
-    out.push_back(g == "scene");
+  for (const std::string& v : values) {
+    if (v != first && v != second)
+      throw hp::Error(std::string("bench: ") + option + " takes " + first + " and/or " + second + ", got '" +
+                      v.substr(0, 40) + "'");
+    out.push_back(v == yes);
   }
   return out;
 }
 
-void addSampleCounts(hp::cli::FrameCase c, const BenchOptions& o, std::vector<hp::cli::FrameCase>& out) {
+// c once for each --msaa, --lod-fraction, --lights, --bounce-samples and groom (true: the scene's).
+void addSampleCounts(hp::cli::FrameCase c, const BenchOptions& o, const std::vector<bool>& grooms,
+                     std::vector<hp::cli::FrameCase>& out) {
   for (std::uint32_t m : o.msaa)
     for (float f : o.lodFractions)
       for (std::uint32_t lights : o.lights)
         for (std::uint32_t bounce : o.bounceSamples)
-          for (const bool groom : grooms(o)) {
+          for (const bool groom : grooms) {
             c.msaa = m;
             c.lodFraction = f;
             c.lights = lights;
@@ -115,16 +121,6 @@ std::vector<hp::compute::FineWalk> fineWalks(const BenchOptions& o) {
   return out;
 }
 
-// --skin-bounce as values (the compute path's; the graphics path keeps FrameCase's default).
-std::vector<bool> skinBounces(const BenchOptions& o) {
-  std::vector<bool> out;
-  for (const std::string& b : o.skinBounce) {
-    if (b != "off" && b != "on") throw hp::Error("bench: --skin-bounce takes off and/or on, got '" + b.substr(0, 40) + "'");
-    out.push_back(b == "on");
-  }
-  return out;
-}
-
 std::vector<hp::cli::FrameCase> cases(const BenchOptions& o) {
   if (o.frames == 0 || o.frames > 1000) throw hp::Error("bench: --frames must be in [1, 1000]");
   for (float f : o.lodFractions)
@@ -140,7 +136,10 @@ std::vector<hp::cli::FrameCase> cases(const BenchOptions& o) {
   parseResolution(o.resolution, base.width, base.height);
   base.opacityRaster = hp::render::parseOpacityRaster(o.opacityRaster);
   const auto shadingList = shadings(o);
-  const std::vector<bool> computeBounces = skinBounces(o), graphicsBounces{base.skinBounce};
+  // --skin-bounce is the compute path's; the graphics path keeps FrameCase's default.
+  const std::vector<bool> computeBounces = twoWordList("--skin-bounce", o.skinBounce, "off", "on", "on"),
+                          graphicsBounces{base.skinBounce};
+  const std::vector<bool> grooms = twoWordList("--groom", o.grooms, "scene", "none", "scene");
   const std::vector<hp::compute::FineWalk> computeWalks = fineWalks(o), graphicsWalks{base.fineWalk};
   std::vector<hp::cli::FrameCase> out;
   for (std::uint32_t s : o.strands) {
@@ -158,7 +157,7 @@ std::vector<hp::cli::FrameCase> cases(const BenchOptions& o) {
           for (const hp::compute::FineWalk walk : mode == hp::RasterMode::Compute ? computeWalks : graphicsWalks) {
             c.skinBounce = bounce;
             c.fineWalk = walk;
-            addSampleCounts(c, o, out);  // the head's samples (both paths), the graphics path's hair's; LOD; lights
+            addSampleCounts(c, o, grooms, out);  // head (and graphics hair) samples, LOD, lights, bounce, groom
           }
       }
     }
