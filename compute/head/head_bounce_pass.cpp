@@ -6,23 +6,21 @@
 
 namespace hp::render {
 namespace {
-constexpr VkShaderStageFlags kVertex = VK_SHADER_STAGE_VERTEX_BIT;
 constexpr VkShaderStageFlags kFragment = VK_SHADER_STAGE_FRAGMENT_BIT;
-constexpr VkDescriptorType kStorage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-const vk::Binding kBindings[] = {
-    {gpu::RENDER_BINDING_FRAME, kStorage, kVertex | kFragment},
-    {gpu::RENDER_BINDING_POSITIONS, kStorage, kVertex},
-    {gpu::RENDER_BINDING_TANGENTS, kStorage, kVertex},
-    {gpu::RENDER_BINDING_ATTRIBUTES, kStorage, kVertex},
+const vk::Binding kHeadBounceBindings[] = {
+    {gpu::RENDER_BINDING_FRAME, vk::kStorage, vk::kVertex | kFragment},
+    {gpu::RENDER_BINDING_POSITIONS, vk::kStorage, vk::kVertex},
+    {gpu::RENDER_BINDING_TANGENTS, vk::kStorage, vk::kVertex},
+    {gpu::RENDER_BINDING_ATTRIBUTES, vk::kStorage, vk::kVertex},
     {gpu::RENDER_BINDING_OPACITY, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kFragment},
     {gpu::RENDER_BINDING_HEAD_SHADOW, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kFragment},
-    {gpu::RENDER_BINDING_LIGHT, kStorage, kFragment},
+    {gpu::RENDER_BINDING_LIGHT, vk::kStorage, kFragment},
 };
 }  // namespace
 
 HeadBouncePass::HeadBouncePass(const vk::Context& ctx, const HeadPass& head, VkBuffer frameBlock,
                                const ShadowInputs& shadows, vk::PipelineLibrary* library)
-    : head_(&head), set_(ctx, kBindings, "head bounce") {
+    : head_(&head), set_(ctx, kHeadBounceBindings, "head bounce") {
   set_.writeStorageBuffer(gpu::RENDER_BINDING_FRAME, frameBlock);
   set_.writeSampledImage(gpu::RENDER_BINDING_OPACITY, shadows.opacityView, shadows.sampler);
   set_.writeSampledImage(gpu::RENDER_BINDING_HEAD_SHADOW, shadows.headShadowView, shadows.headShadowSampler);

@@ -6,13 +6,12 @@
 
 namespace hp::render {
 namespace {
-constexpr VkBufferUsageFlags kUsage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
-constexpr VkShaderStageFlags kVertex = VK_SHADER_STAGE_VERTEX_BIT;
-const vk::Binding kBindings[] = {
+constexpr VkBufferUsageFlags kHeadUsage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
+const vk::Binding kHeadBindings[] = {
     {gpu::RENDER_BINDING_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT},
-    {gpu::RENDER_BINDING_POSITIONS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kVertex},
-    {gpu::RENDER_BINDING_TANGENTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kVertex},
-    {gpu::RENDER_BINDING_ATTRIBUTES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kVertex},
+    {gpu::RENDER_BINDING_POSITIONS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, vk::kVertex},
+    {gpu::RENDER_BINDING_TANGENTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, vk::kVertex},
+    {gpu::RENDER_BINDING_ATTRIBUTES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, vk::kVertex},
     {gpu::RENDER_BINDING_OPACITY, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT},
     {gpu::RENDER_BINDING_HEAD_SHADOW, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT},
     {gpu::RENDER_BINDING_LIGHT, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT},
@@ -35,7 +34,7 @@ HeadPass::HeadPass(const vk::Context& ctx, const HeadMesh& mesh, const vk::Buffe
     throw Error("head mesh: one scalp weight per position is required");
   for (std::uint32_t i : mesh.indices)
     if (i >= mesh.positions.size()) throw Error("head mesh: index " + std::to_string(i) + " is out of range");
-  set_ = vk::DescriptorSet(ctx, kBindings, "head");
+  set_ = vk::DescriptorSet(ctx, kHeadBindings, "head");
   set_.writeBuffer(gpu::RENDER_BINDING_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, frameBlock.handle(), 0,
                    sizeof(gpu::RenderFrame));
   set_.writeSampledImage(gpu::RENDER_BINDING_OPACITY, shadows.opacityView, shadows.sampler);  // hair shadows
@@ -58,9 +57,9 @@ HeadPass::HeadPass(const vk::Context& ctx, const HeadMesh& mesh, const vk::Buffe
   desc.fragmentSpecialization = {0u};
   oneLightPipeline_ = vk::makeGraphicsPipeline(ctx, library, desc);
   if (empty()) return;
-  positions_ = vk::Buffer(ctx, mesh.positions.size() * sizeof(glm::vec4), kUsage, vk::MemoryKind::DeviceLocal, "head positions");
-  normals_ = vk::Buffer(ctx, mesh.normals.size() * sizeof(glm::vec4), kUsage, vk::MemoryKind::DeviceLocal, "head normals");
-  indices_ = vk::Buffer(ctx, mesh.indices.size() * sizeof(std::uint32_t), kUsage, vk::MemoryKind::DeviceLocal, "head indices");
+  positions_ = vk::Buffer(ctx, mesh.positions.size() * sizeof(glm::vec4), kHeadUsage, vk::MemoryKind::DeviceLocal, "head positions");
+  normals_ = vk::Buffer(ctx, mesh.normals.size() * sizeof(glm::vec4), kHeadUsage, vk::MemoryKind::DeviceLocal, "head normals");
+  indices_ = vk::Buffer(ctx, mesh.indices.size() * sizeof(std::uint32_t), kHeadUsage, vk::MemoryKind::DeviceLocal, "head indices");
   vk::upload<glm::vec4>(ctx, positions_, asVec4(mesh.positions), vk::BufferUse::VertexRead);
   // The normal's w carries the scalp weight: hair colour shows through where hair grows.
   std::vector<float> scalp = mesh.scalp.empty() ? std::vector<float>(mesh.positions.size(), 0.0f) : mesh.scalp;

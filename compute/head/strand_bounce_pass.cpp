@@ -6,21 +6,18 @@
 
 namespace hp::render {
 namespace {
-constexpr VkShaderStageFlags kCompute = VK_SHADER_STAGE_COMPUTE_BIT;
-constexpr VkDescriptorType kStorage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-constexpr VkDescriptorType kSampled = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
-const vk::Binding kBindings[] = {
-    {gpu::RENDER_BINDING_FRAME, kStorage, kCompute},
-    {gpu::RENDER_BINDING_OPACITY, kSampled, kCompute},
-    {gpu::RENDER_BINDING_HEAD_SHADOW, kSampled, kCompute},
-    {gpu::RENDER_BINDING_BOUNCE_FLUX, kSampled, kCompute},
-    {gpu::RENDER_BINDING_BOUNCE_POSITION, kSampled, kCompute},
-    {gpu::RENDER_BINDING_LIGHT, kStorage, kCompute},
-    {gpu::RENDER_BINDING_POSITIONS, kStorage, kCompute},
-    {gpu::RENDER_BINDING_BOUNCE_SAMPLES, kStorage, kCompute},
-    {gpu::RENDER_BINDING_BOUNCE_GUIDE_SAMPLES, kStorage, kCompute},
-    {gpu::RENDER_BINDING_STRAND_BINDINGS, kStorage, kCompute},
-    {gpu::RENDER_BINDING_SCALP_TRIANGLES, kStorage, kCompute},
+const vk::Binding kStrandBounceBindings[] = {
+    {gpu::RENDER_BINDING_FRAME, vk::kStorage, vk::kCompute},
+    {gpu::RENDER_BINDING_OPACITY, vk::kSampled, vk::kCompute},
+    {gpu::RENDER_BINDING_HEAD_SHADOW, vk::kSampled, vk::kCompute},
+    {gpu::RENDER_BINDING_BOUNCE_FLUX, vk::kSampled, vk::kCompute},
+    {gpu::RENDER_BINDING_BOUNCE_POSITION, vk::kSampled, vk::kCompute},
+    {gpu::RENDER_BINDING_LIGHT, vk::kStorage, vk::kCompute},
+    {gpu::RENDER_BINDING_POSITIONS, vk::kStorage, vk::kCompute},
+    {gpu::RENDER_BINDING_BOUNCE_SAMPLES, vk::kStorage, vk::kCompute},
+    {gpu::RENDER_BINDING_BOUNCE_GUIDE_SAMPLES, vk::kStorage, vk::kCompute},
+    {gpu::RENDER_BINDING_STRAND_BINDINGS, vk::kStorage, vk::kCompute},
+    {gpu::RENDER_BINDING_SCALP_TRIANGLES, vk::kStorage, vk::kCompute},
 };
 
 std::shared_ptr<const vk::ComputePipeline> makeStep(const vk::Context& ctx, vk::PipelineLibrary* library,
@@ -34,7 +31,7 @@ std::shared_ptr<const vk::ComputePipeline> makeStep(const vk::Context& ctx, vk::
 vk::DescriptorSet StrandBouncePass::makeSet(const vk::Context& ctx, VkBuffer frameBlock, const ShadowInputs& shadows,
                                             VkBuffer positions, VkBuffer samples, VkBuffer guideSamples,
                                             VkBuffer bindings, const std::string& name) const {
-  vk::DescriptorSet s(ctx, kBindings, name);
+  vk::DescriptorSet s(ctx, kStrandBounceBindings, name);
   s.writeStorageBuffer(gpu::RENDER_BINDING_FRAME, frameBlock);
   s.writeSampledImage(gpu::RENDER_BINDING_OPACITY, shadows.opacityView, shadows.sampler);
   s.writeSampledImage(gpu::RENDER_BINDING_HEAD_SHADOW, shadows.headShadowView, shadows.headShadowSampler);

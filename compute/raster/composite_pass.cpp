@@ -5,16 +5,15 @@
 
 namespace hp::render {
 namespace {
-constexpr VkDescriptorType kSampled = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
-const vk::Binding kBindings[] = {{gpu::COMPOSITE_BINDING_HAIR, kSampled, VK_SHADER_STAGE_FRAGMENT_BIT},
-                                 {gpu::COMPOSITE_BINDING_NEAR, kSampled, VK_SHADER_STAGE_FRAGMENT_BIT},
-                                 {gpu::COMPOSITE_BINDING_NEAR_MASK, kSampled, VK_SHADER_STAGE_FRAGMENT_BIT}};
+const vk::Binding kCompositeBindings[] = {{gpu::COMPOSITE_BINDING_HAIR, vk::kSampled, VK_SHADER_STAGE_FRAGMENT_BIT},
+                                 {gpu::COMPOSITE_BINDING_NEAR, vk::kSampled, VK_SHADER_STAGE_FRAGMENT_BIT},
+                                 {gpu::COMPOSITE_BINDING_NEAR_MASK, vk::kSampled, VK_SHADER_STAGE_FRAGMENT_BIT}};
 }
 
 CompositePass::CompositePass(const vk::Context& ctx, const hairpipe::AttachmentFormats& formats,
                              VkPipelineCache cache)
     : sampler_(ctx, "composite sampler", VK_FILTER_NEAREST),
-      set_(ctx, kBindings, "composite"),
+      set_(ctx, kCompositeBindings, "composite"),
       multisampled_(formats.samples != VK_SAMPLE_COUNT_1_BIT) {
   vk::GraphicsPipelineDesc desc;
   desc.vertexShader = "composite.vert";

@@ -5,9 +5,8 @@
 namespace hp::render {
 namespace {
 constexpr VkShaderStageFlags kBoth = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
-constexpr VkShaderStageFlags kVertex = VK_SHADER_STAGE_VERTEX_BIT;
 constexpr VkShaderStageFlags kFragment = VK_SHADER_STAGE_FRAGMENT_BIT;
-const vk::Binding kBindings[] = {
+const vk::Binding kStrandBindings[] = {
     {gpu::RENDER_BINDING_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, kBoth},
     {gpu::RENDER_BINDING_MARSCHNER, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kFragment},
     {gpu::RENDER_BINDING_LUT_M, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kFragment},
@@ -16,10 +15,10 @@ const vk::Binding kBindings[] = {
     {gpu::RENDER_BINDING_OPACITY, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kFragment},
     {gpu::RENDER_BINDING_HEAD_SHADOW, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kFragment},
     {gpu::RENDER_BINDING_LIGHT, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kFragment},
-    {gpu::RENDER_BINDING_POSITIONS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kVertex},
-    {gpu::RENDER_BINDING_TANGENTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kVertex},
-    {gpu::RENDER_BINDING_ATTRIBUTES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kVertex},
-    {gpu::RENDER_BINDING_BOUNCE_SAMPLES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kVertex},
+    {gpu::RENDER_BINDING_POSITIONS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, vk::kVertex},
+    {gpu::RENDER_BINDING_TANGENTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, vk::kVertex},
+    {gpu::RENDER_BINDING_ATTRIBUTES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, vk::kVertex},
+    {gpu::RENDER_BINDING_BOUNCE_SAMPLES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, vk::kVertex},
 };
 
 std::shared_ptr<const vk::GraphicsPipeline> makePipeline(const vk::Context& ctx, vk::PipelineLibrary* library,
@@ -48,7 +47,7 @@ StrandPass::StrandPass(const vk::Context& ctx, const compute::StrandBuffers& str
                        const ShadowInputs& shadows, const hairpipe::AttachmentFormats& formats, vk::PipelineLibrary* library)
     : strands_(&strands), samples_(formats.samples) {
   for (const auto& chunk : strands.chunks()) {
-    vk::DescriptorSet set(ctx, kBindings, "strands chunk " + std::to_string(sets_.size()));
+    vk::DescriptorSet set(ctx, kStrandBindings, "strands chunk " + std::to_string(sets_.size()));
     set.writeBuffer(gpu::RENDER_BINDING_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, frameBlock.handle(), 0,
                     sizeof(gpu::RenderFrame));
     marschner.writeDescriptors(set, gpu::RENDER_BINDING_MARSCHNER, gpu::RENDER_BINDING_LUT_M,

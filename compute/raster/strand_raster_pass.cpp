@@ -17,9 +17,6 @@
 
 namespace hp::compute {
 namespace {
-constexpr VkShaderStageFlags kCompute = VK_SHADER_STAGE_COMPUTE_BIT;
-constexpr VkDescriptorType kStorage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-constexpr VkDescriptorType kSampled = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
 // The raster's own bindings follow the shading bindings of shaders/shared/render.h in one set.
 static_assert(gpu::RASTER_BINDING_SCREEN > gpu::RENDER_BINDING_HEAD_SHADOW, "raster bindings overlap render.h's");
 static_assert(gpu::RASTER_BINDING_SHADE_ARGS < gpu::RENDER_BINDING_BOUNCE_FLUX &&
@@ -28,39 +25,39 @@ static_assert(gpu::RASTER_BINDING_SHADE_ARGS < gpu::RENDER_BINDING_BOUNCE_FLUX &
 // No uniform buffers and no push constants: lavapipe would recompile each step per dispatch
 // (docs/DESIGN.md, driver notes); the frame block, the Marschner block and the per-chunk parameters are
 // read-only storage buffers.
-const vk::Binding kBindings[] = {
-    {gpu::RENDER_BINDING_FRAME, kStorage, kCompute},
-    {gpu::RENDER_BINDING_MARSCHNER, kStorage, kCompute},
-    {gpu::RENDER_BINDING_LUT_M, kSampled, kCompute},
-    {gpu::RENDER_BINDING_LUT_N0, kSampled, kCompute},
-    {gpu::RENDER_BINDING_LUT_N1, kSampled, kCompute},
-    {gpu::RENDER_BINDING_OPACITY, kSampled, kCompute},
-    {gpu::RENDER_BINDING_HEAD_SHADOW, kSampled, kCompute},
-    {gpu::RENDER_BINDING_LIGHT, kStorage, kCompute},
-    {gpu::RENDER_BINDING_POSITIONS, kStorage, kCompute},
-    {gpu::RENDER_BINDING_TANGENTS, kStorage, kCompute},
-    {gpu::RENDER_BINDING_ATTRIBUTES, kStorage, kCompute},
-    {gpu::RASTER_BINDING_SCREEN, kStorage, kCompute},
-    {gpu::RASTER_BINDING_COLORS, kStorage, kCompute},
-    {gpu::RASTER_BINDING_STATE, kStorage, kCompute},
-    {gpu::RASTER_BINDING_COUNTS, kStorage, kCompute},
-    {gpu::RASTER_BINDING_KEYS, kStorage, kCompute},
-    {gpu::RASTER_BINDING_TILES, kStorage, kCompute},
-    {gpu::RASTER_BINDING_BLOCKS, kStorage, kCompute},
-    {gpu::RASTER_BINDING_LIST, kStorage, kCompute},
-    {gpu::RASTER_BINDING_DEPTH, kSampled, kCompute},
-    {gpu::RASTER_BINDING_OUTPUT, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, kCompute},
-    {gpu::RASTER_BINDING_OUTPUT_NEAR, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, kCompute},
-    {gpu::RASTER_BINDING_NEAR_MASK, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, kCompute},
-    {gpu::RASTER_BINDING_PARAMS, kStorage, kCompute},
-    {gpu::RASTER_BINDING_TILE_DEPTH, kStorage, kCompute},
-    {gpu::RASTER_BINDING_SHADE_FLAGS, kStorage, kCompute},
-    {gpu::RASTER_BINDING_SHADE_LIST, kStorage, kCompute},
-    {gpu::RASTER_BINDING_SHADE_ARGS, kStorage, kCompute},
-    {gpu::RENDER_BINDING_BOUNCE_SAMPLES, kStorage, kCompute},
-    {gpu::RASTER_BINDING_PREVIOUS, kStorage, kCompute},
-    {gpu::RASTER_BINDING_MOTION, kStorage, kCompute},
-    {gpu::RASTER_BINDING_MOTION_OUTPUT, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, kCompute},
+const vk::Binding kStrandRasterBindings[] = {
+    {gpu::RENDER_BINDING_FRAME, vk::kStorage, vk::kCompute},
+    {gpu::RENDER_BINDING_MARSCHNER, vk::kStorage, vk::kCompute},
+    {gpu::RENDER_BINDING_LUT_M, vk::kSampled, vk::kCompute},
+    {gpu::RENDER_BINDING_LUT_N0, vk::kSampled, vk::kCompute},
+    {gpu::RENDER_BINDING_LUT_N1, vk::kSampled, vk::kCompute},
+    {gpu::RENDER_BINDING_OPACITY, vk::kSampled, vk::kCompute},
+    {gpu::RENDER_BINDING_HEAD_SHADOW, vk::kSampled, vk::kCompute},
+    {gpu::RENDER_BINDING_LIGHT, vk::kStorage, vk::kCompute},
+    {gpu::RENDER_BINDING_POSITIONS, vk::kStorage, vk::kCompute},
+    {gpu::RENDER_BINDING_TANGENTS, vk::kStorage, vk::kCompute},
+    {gpu::RENDER_BINDING_ATTRIBUTES, vk::kStorage, vk::kCompute},
+    {gpu::RASTER_BINDING_SCREEN, vk::kStorage, vk::kCompute},
+    {gpu::RASTER_BINDING_COLORS, vk::kStorage, vk::kCompute},
+    {gpu::RASTER_BINDING_STATE, vk::kStorage, vk::kCompute},
+    {gpu::RASTER_BINDING_COUNTS, vk::kStorage, vk::kCompute},
+    {gpu::RASTER_BINDING_KEYS, vk::kStorage, vk::kCompute},
+    {gpu::RASTER_BINDING_TILES, vk::kStorage, vk::kCompute},
+    {gpu::RASTER_BINDING_BLOCKS, vk::kStorage, vk::kCompute},
+    {gpu::RASTER_BINDING_LIST, vk::kStorage, vk::kCompute},
+    {gpu::RASTER_BINDING_DEPTH, vk::kSampled, vk::kCompute},
+    {gpu::RASTER_BINDING_OUTPUT, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, vk::kCompute},
+    {gpu::RASTER_BINDING_OUTPUT_NEAR, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, vk::kCompute},
+    {gpu::RASTER_BINDING_NEAR_MASK, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, vk::kCompute},
+    {gpu::RASTER_BINDING_PARAMS, vk::kStorage, vk::kCompute},
+    {gpu::RASTER_BINDING_TILE_DEPTH, vk::kStorage, vk::kCompute},
+    {gpu::RASTER_BINDING_SHADE_FLAGS, vk::kStorage, vk::kCompute},
+    {gpu::RASTER_BINDING_SHADE_LIST, vk::kStorage, vk::kCompute},
+    {gpu::RASTER_BINDING_SHADE_ARGS, vk::kStorage, vk::kCompute},
+    {gpu::RENDER_BINDING_BOUNCE_SAMPLES, vk::kStorage, vk::kCompute},
+    {gpu::RASTER_BINDING_PREVIOUS, vk::kStorage, vk::kCompute},
+    {gpu::RASTER_BINDING_MOTION, vk::kStorage, vk::kCompute},
+    {gpu::RASTER_BINDING_MOTION_OUTPUT, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, vk::kCompute},
 };
 constexpr VkBufferUsageFlags kStorageUsage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
 constexpr VkBufferUsageFlags kArmedUsage =
@@ -239,7 +236,7 @@ void StrandRasterPass::bind(std::span<const RasterSource> sources) {
                   c.range, std::uint32_t(s), q};
       vk::uploadBytes(ctx_, chunk.params, &params, sizeof(params), vk::BufferUse::ComputeRead);
       for (std::uint32_t slot = 0; slot < frameSlots_; ++slot) {
-        chunk.sets.emplace_back(ctx_, kBindings, name + " [slot " + std::to_string(slot) + "]");
+        chunk.sets.emplace_back(ctx_, kStrandRasterBindings, name + " [slot " + std::to_string(slot) + "]");
         writeChunkSet(chunk.sets.back(), sources[s].shading, c, chunk.params);
       }
       chunks.push_back(std::move(chunk));

@@ -6,11 +6,9 @@
 
 namespace hp::compute {
 namespace {
-constexpr VkShaderStageFlags kCompute = VK_SHADER_STAGE_COMPUTE_BIT;
-constexpr VkDescriptorType kStorage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-const vk::Binding kBindings[] = {
-    {gpu::BOUNDS_BINDING_POSITIONS, kStorage, kCompute},
-    {gpu::BOUNDS_BINDING_LIGHT, kStorage, kCompute},
+const vk::Binding kBoundsBindings[] = {
+    {gpu::BOUNDS_BINDING_POSITIONS, vk::kStorage, vk::kCompute},
+    {gpu::BOUNDS_BINDING_LIGHT, vk::kStorage, vk::kCompute},
 };
 constexpr float kBig = 3.0e38f;  // the shader's empty-reduction value
 }  // namespace
@@ -45,7 +43,7 @@ BoundsPass::BoundsPass(const vk::Context& ctx, const StrandBuffers& strands, con
                        vk::PipelineLibrary* library)
     : ctx_(&ctx),
       lightSpace_(&lightSpace),
-      layoutSet_(ctx, kBindings, "bounds layout"),
+      layoutSet_(ctx, kBoundsBindings, "bounds layout"),
       pipeline_(vk::makeComputePipeline(ctx, library, "bounds.comp", gpu::BOUNDS_WORKGROUP_SIZE,
                                         {layoutSet_.layout()}, sizeof(gpu::BoundsPush), "bounds")) {
   bind(strands);
@@ -54,7 +52,7 @@ BoundsPass::BoundsPass(const vk::Context& ctx, const StrandBuffers& strands, con
 void BoundsPass::bind(const StrandBuffers& strands) {
   std::vector<Chunk> chunks;
   for (const StrandChunk& c : strands.chunks()) {
-    Chunk chunk{vk::DescriptorSet(*ctx_, kBindings, "bounds [chunk " + std::to_string(chunks.size()) + "]"),
+    Chunk chunk{vk::DescriptorSet(*ctx_, kBoundsBindings, "bounds [chunk " + std::to_string(chunks.size()) + "]"),
                 c.range.strandCount * strands.layout().verticesPerStrand};
     chunk.set.writeStorageBuffer(gpu::BOUNDS_BINDING_POSITIONS, c.positions.handle());
     chunk.set.writeStorageBuffer(gpu::BOUNDS_BINDING_LIGHT, lightSpace_->handle());

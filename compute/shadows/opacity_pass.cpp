@@ -13,16 +13,14 @@
 
 namespace hp::render {
 namespace {
-constexpr VkShaderStageFlags kVertex = VK_SHADER_STAGE_VERTEX_BIT;
-constexpr VkDescriptorType kStorage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
 const vk::Binding kStrandBindings[] = {
-    {gpu::OPACITY_BINDING_POSITIONS, kStorage, kVertex},
-    {gpu::OPACITY_BINDING_LIGHT, kStorage, kVertex},
+    {gpu::OPACITY_BINDING_POSITIONS, vk::kStorage, vk::kVertex},
+    {gpu::OPACITY_BINDING_LIGHT, vk::kStorage, vk::kVertex},
 };
 const vk::Binding kHeadBindings[] = {
-    {gpu::OPACITY_BINDING_POSITIONS, kStorage, kVertex},
-    {gpu::OPACITY_BINDING_INDICES, kStorage, kVertex},
-    {gpu::OPACITY_BINDING_LIGHT, kStorage, kVertex},
+    {gpu::OPACITY_BINDING_POSITIONS, vk::kStorage, vk::kVertex},
+    {gpu::OPACITY_BINDING_INDICES, vk::kStorage, vk::kVertex},
+    {gpu::OPACITY_BINDING_LIGHT, vk::kStorage, vk::kVertex},
 };
 constexpr VkBufferUsageFlags kMeshUsage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
 

@@ -8,11 +8,10 @@
 
 namespace hp::compute {
 namespace {
-constexpr VkShaderStageFlags kCompute = VK_SHADER_STAGE_COMPUTE_BIT;
-const vk::Binding kBindings[] = {
-    {gpu::OPACITY_RESOLVE_BINDING_BINS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kCompute},
-    {gpu::OPACITY_RESOLVE_BINDING_MAPS, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, kCompute},
-    {gpu::OPACITY_RESOLVE_BINDING_FIRST, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kCompute},
+const vk::Binding kOpacityResolveBindings[] = {
+    {gpu::OPACITY_RESOLVE_BINDING_BINS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, vk::kCompute},
+    {gpu::OPACITY_RESOLVE_BINDING_MAPS, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, vk::kCompute},
+    {gpu::OPACITY_RESOLVE_BINDING_FIRST, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, vk::kCompute},
 };
 
 VkDeviceSize checkedBinBytes(const vk::Context& ctx, std::uint32_t resolution) {
@@ -52,7 +51,7 @@ OpacityResolvePass::OpacityResolvePass(const vk::Context& ctx, std::uint32_t res
              VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT, vk::MemoryKind::DeviceLocal,
              "opacity first hair") {
   for (std::size_t slot = 0; slot < slotMaps.size(); ++slot) {
-    vk::DescriptorSet set(ctx, kBindings, "opacity resolve [slot " + std::to_string(slot) + "]");
+    vk::DescriptorSet set(ctx, kOpacityResolveBindings, "opacity resolve [slot " + std::to_string(slot) + "]");
     set.writeStorageBuffer(gpu::OPACITY_RESOLVE_BINDING_BINS, bins_.handle());
     set.writeStorageImage(gpu::OPACITY_RESOLVE_BINDING_MAPS, slotMaps[slot]);
     set.writeStorageBuffer(gpu::OPACITY_RESOLVE_BINDING_FIRST, first_.handle());

@@ -8,13 +8,11 @@
 
 namespace hp::compute {
 namespace {
-constexpr VkShaderStageFlags kCompute = VK_SHADER_STAGE_COMPUTE_BIT;
-constexpr VkDescriptorType kStorage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-const vk::Binding kBindings[] = {
-    {gpu::OPACITY_SPLAT_BINDING_POSITIONS, kStorage, kCompute},
-    {gpu::OPACITY_SPLAT_BINDING_LIGHT, kStorage, kCompute},
-    {gpu::OPACITY_SPLAT_BINDING_BINS, kStorage, kCompute},
-    {gpu::OPACITY_SPLAT_BINDING_FIRST, kStorage, kCompute},
+const vk::Binding kOpacitySplatBindings[] = {
+    {gpu::OPACITY_SPLAT_BINDING_POSITIONS, vk::kStorage, vk::kCompute},
+    {gpu::OPACITY_SPLAT_BINDING_LIGHT, vk::kStorage, vk::kCompute},
+    {gpu::OPACITY_SPLAT_BINDING_BINS, vk::kStorage, vk::kCompute},
+    {gpu::OPACITY_SPLAT_BINDING_FIRST, vk::kStorage, vk::kCompute},
 };
 }  // namespace
 
@@ -23,7 +21,7 @@ OpacitySplatPass::OpacitySplatPass(const vk::Context& ctx, const StrandBuffers& 
                                    vk::PipelineLibrary* library)
     : ctx_(&ctx), resolution_(resolution), verticesPerStrand_(strands.layout().verticesPerStrand) {
   for (const StrandChunk& c : strands.chunks()) {
-    Chunk chunk{vk::DescriptorSet(ctx, kBindings, "opacity splat [chunk " + std::to_string(chunks_.size()) + "]"),
+    Chunk chunk{vk::DescriptorSet(ctx, kOpacitySplatBindings, "opacity splat [chunk " + std::to_string(chunks_.size()) + "]"),
                 c.range};
     chunk.set.writeStorageBuffer(gpu::OPACITY_SPLAT_BINDING_POSITIONS, c.positions.handle());
     chunk.set.writeStorageBuffer(gpu::OPACITY_SPLAT_BINDING_LIGHT, lightSpace.handle());

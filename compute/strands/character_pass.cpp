@@ -12,18 +12,17 @@
 
 namespace hp {
 namespace {
-constexpr VkShaderStageFlags kCompute = VK_SHADER_STAGE_COMPUTE_BIT;
-const vk::Binding kBindings[] = {
-    {gpu::CHARACTER_BINDING_REST, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kCompute},
-    {gpu::CHARACTER_BINDING_SKIN, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kCompute},
-    {gpu::CHARACTER_BINDING_BONES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kCompute},
-    {gpu::CHARACTER_BINDING_POSED, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kCompute},
-    {gpu::CHARACTER_BINDING_POSED_NORMALS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kCompute},
-    {gpu::CHARACTER_BINDING_TRIANGLES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kCompute},
-    {gpu::CHARACTER_BINDING_KEYS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kCompute},
-    {gpu::CHARACTER_BINDING_SDF, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kCompute},
+const vk::Binding kCharacterBindings[] = {
+    {gpu::CHARACTER_BINDING_REST, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, vk::kCompute},
+    {gpu::CHARACTER_BINDING_SKIN, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, vk::kCompute},
+    {gpu::CHARACTER_BINDING_BONES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, vk::kCompute},
+    {gpu::CHARACTER_BINDING_POSED, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, vk::kCompute},
+    {gpu::CHARACTER_BINDING_POSED_NORMALS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, vk::kCompute},
+    {gpu::CHARACTER_BINDING_TRIANGLES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, vk::kCompute},
+    {gpu::CHARACTER_BINDING_KEYS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, vk::kCompute},
+    {gpu::CHARACTER_BINDING_SDF, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, vk::kCompute},
 };
-constexpr VkBufferUsageFlags kUsage =
+constexpr VkBufferUsageFlags kCharacterUsage =
     VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
 
 template <typename T>
@@ -32,7 +31,7 @@ vk::Buffer uploaded(const vk::Context& ctx, const std::vector<T>& data, const ch
   if (bytes > ctx.properties().limits.maxStorageBufferRange)
     throw Error(std::string("character mesh: its ") + name + " take " + std::to_string(bytes) +
                 " bytes, past this device's maxStorageBufferRange");
-  vk::Buffer b(ctx, bytes, kUsage, vk::MemoryKind::DeviceLocal, std::string("character ") + name);
+  vk::Buffer b(ctx, bytes, kCharacterUsage, vk::MemoryKind::DeviceLocal, std::string("character ") + name);
   vk::upload<T>(ctx, b, data, vk::BufferUse::ComputeRead);
   return b;
 }
@@ -99,7 +98,7 @@ CharacterPass::CharacterPass(const vk::Context& ctx, const CharacterMesh& mesh, 
   posed_ = uploaded(ctx, positions, "posed positions");
   posedNormals_ = uploaded(ctx, normals, "posed normals");
   keys_ = uploaded(ctx, std::vector<std::uint32_t>(grid.values.size(), ~0u), "grid keys");
-  set_ = vk::DescriptorSet(ctx, kBindings, "character");
+  set_ = vk::DescriptorSet(ctx, kCharacterBindings, "character");
   set_.writeStorageBuffer(gpu::CHARACTER_BINDING_REST, rest_.handle());
   set_.writeStorageBuffer(gpu::CHARACTER_BINDING_SKIN, skin_.handle());
   set_.writeStorageBuffer(gpu::CHARACTER_BINDING_BONES, bonesBuffer_.handle());

@@ -9,14 +9,14 @@
 
 namespace hp {
 namespace {
-const vk::Binding kBindings[] = {
+const vk::Binding kHairGridBindings[] = {
     {gpu::GRID_BINDING_POSITIONS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
     {gpu::GRID_BINDING_PREVIOUS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
     {gpu::GRID_BINDING_ACCUM, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
     {gpu::GRID_BINDING_CELLS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
     {gpu::GRID_BINDING_PEAK, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
 };
-constexpr VkBufferUsageFlags kUsage =
+constexpr VkBufferUsageFlags kHairGridUsage =
     VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
 
 VkDeviceSize checkedBytes(const vk::Context& ctx, std::uint64_t bytes) {
@@ -41,12 +41,12 @@ HairGridPass::HairGridPass(const vk::Context& ctx, std::span<const glm::vec4> re
       restMean_(restMean(rest, particlesPerGuide, layout_)),
       fixedPoint_(hairGridFixedPoint(rest.size())) {
   const std::uint64_t cells = layout_.cellCount();
-  accum_ = vk::Buffer(ctx, checkedBytes(ctx, cells * gpu::GRID_ACCUM_INTS * 4), kUsage, vk::MemoryKind::DeviceLocal,
+  accum_ = vk::Buffer(ctx, checkedBytes(ctx, cells * gpu::GRID_ACCUM_INTS * 4), kHairGridUsage, vk::MemoryKind::DeviceLocal,
                       "hair grid accumulation");
-  cells_ = vk::Buffer(ctx, checkedBytes(ctx, cells * gpu::GRID_CELL_VEC4S * 16), kUsage, vk::MemoryKind::DeviceLocal,
+  cells_ = vk::Buffer(ctx, checkedBytes(ctx, cells * gpu::GRID_CELL_VEC4S * 16), kHairGridUsage, vk::MemoryKind::DeviceLocal,
                       "hair grid cells");
-  peak_ = vk::Buffer(ctx, 4, kUsage, vk::MemoryKind::DeviceLocal, "hair grid peak density");
-  set_ = vk::DescriptorSet(ctx, kBindings, "hair grid");
+  peak_ = vk::Buffer(ctx, 4, kHairGridUsage, vk::MemoryKind::DeviceLocal, "hair grid peak density");
+  set_ = vk::DescriptorSet(ctx, kHairGridBindings, "hair grid");
   set_.writeStorageBuffer(gpu::GRID_BINDING_POSITIONS, positions.handle());
   set_.writeStorageBuffer(gpu::GRID_BINDING_PREVIOUS, previous.handle());
   set_.writeStorageBuffer(gpu::GRID_BINDING_ACCUM, accum_.handle());

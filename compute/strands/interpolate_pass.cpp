@@ -6,16 +6,14 @@
 
 namespace hp::compute {
 namespace {
-constexpr VkShaderStageFlags kCompute = VK_SHADER_STAGE_COMPUTE_BIT;
-constexpr VkDescriptorType kStorage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-const vk::Binding kBindings[] = {
-    {gpu::INTERPOLATE_BINDING_GUIDE_POSITIONS, kStorage, kCompute},
-    {gpu::INTERPOLATE_BINDING_GUIDE_TANGENTS, kStorage, kCompute},
-    {gpu::INTERPOLATE_BINDING_TRIANGLES, kStorage, kCompute},
-    {gpu::INTERPOLATE_BINDING_BINDINGS, kStorage, kCompute},
-    {gpu::INTERPOLATE_BINDING_POSITIONS, kStorage, kCompute},
-    {gpu::INTERPOLATE_BINDING_TANGENTS, kStorage, kCompute},
-    {gpu::INTERPOLATE_BINDING_ATTRIBUTES, kStorage, kCompute},
+const vk::Binding kInterpolateBindings[] = {
+    {gpu::INTERPOLATE_BINDING_GUIDE_POSITIONS, vk::kStorage, vk::kCompute},
+    {gpu::INTERPOLATE_BINDING_GUIDE_TANGENTS, vk::kStorage, vk::kCompute},
+    {gpu::INTERPOLATE_BINDING_TRIANGLES, vk::kStorage, vk::kCompute},
+    {gpu::INTERPOLATE_BINDING_BINDINGS, vk::kStorage, vk::kCompute},
+    {gpu::INTERPOLATE_BINDING_POSITIONS, vk::kStorage, vk::kCompute},
+    {gpu::INTERPOLATE_BINDING_TANGENTS, vk::kStorage, vk::kCompute},
+    {gpu::INTERPOLATE_BINDING_ATTRIBUTES, vk::kStorage, vk::kCompute},
 };
 
 bool perVertexOn(const vk::Context& ctx, InterpolateWalk walk) {
@@ -44,7 +42,7 @@ std::optional<InterpolateWalk> parseInterpolateWalk(const std::string& name) {
 InterpolatePass::InterpolatePass(const vk::Context& ctx, const StrandBuffers& buffers, vk::PipelineLibrary* library,
                                  const GroomSettings& groom, InterpolateWalk walk)
     : ctx_(&ctx),
-      layoutSet_(ctx, kBindings, "interpolate layout"),
+      layoutSet_(ctx, kInterpolateBindings, "interpolate layout"),
       perStrand_(makeWalk(ctx, library, layoutSet_.layout(), false)),
       perVertex_(perVertexOn(ctx, walk) ? makeWalk(ctx, library, layoutSet_.layout(), true) : nullptr) {
   setGroom(groom);
@@ -66,7 +64,7 @@ void InterpolatePass::bind(const StrandBuffers& buffers) {
   const std::uint32_t mode = l.guidesOnly ? gpu::INTERPOLATE_MODE_GUIDES : gpu::INTERPOLATE_MODE_STRANDS;
   std::vector<Chunk> chunks;
   for (const StrandChunk& c : buffers.chunks()) {
-    Chunk chunk{vk::DescriptorSet(*ctx_, kBindings, "interpolate [chunk " + std::to_string(chunks.size()) + "]"),
+    Chunk chunk{vk::DescriptorSet(*ctx_, kInterpolateBindings, "interpolate [chunk " + std::to_string(chunks.size()) + "]"),
                 {c.range.firstStrand, c.range.strandCount, l.verticesPerStrand, mode, groom_}};
     const vk::DescriptorSet& s = chunk.set;
     s.writeStorageBuffer(gpu::INTERPOLATE_BINDING_GUIDE_POSITIONS, buffers.guidePositions().handle());

@@ -13,7 +13,7 @@
 
 namespace hp {
 namespace {
-constexpr VkBufferUsageFlags kStorage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
+constexpr VkBufferUsageFlags kScalpUsage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
 }  // namespace
 
 void ScalpInput::validate(std::uint32_t guideCount) const {
@@ -45,7 +45,7 @@ ScalpState::ScalpState(const vk::Context& ctx, const ScalpInput& input, std::spa
     : ctx_(&ctx), input_(input) {
   const std::uint32_t guides = static_cast<std::uint32_t>(rest.size() / particlesPerGuide);
   input_.validate(guides);
-  dummy_ = vk::Buffer(ctx, 64, kStorage, vk::MemoryKind::DeviceLocal, "scalp unused");
+  dummy_ = vk::Buffer(ctx, 64, kScalpUsage, vk::MemoryKind::DeviceLocal, "scalp unused");
   if (input_.kind == ScalpInput::Kind::RootFrames) {
     // The frame before the first: the rest roots placed by the initial head.
     const glm::quat q = glm::quat_cast(glm::mat3(initialHead));
@@ -54,15 +54,15 @@ ScalpState::ScalpState(const vk::Context& ctx, const ScalpInput& input, std::spa
       frames.push_back(initialHead * glm::vec4(glm::vec3(rest[std::size_t(g) * particlesPerGuide]), 1.0f));
       frames.emplace_back(q.x, q.y, q.z, q.w);
     }
-    rootsPrev_ = vk::Buffer(ctx, frames.size() * sizeof(glm::vec4), kStorage, vk::MemoryKind::DeviceLocal,
+    rootsPrev_ = vk::Buffer(ctx, frames.size() * sizeof(glm::vec4), kScalpUsage, vk::MemoryKind::DeviceLocal,
                             "previous root frames");
     vk::upload<glm::vec4>(ctx, rootsPrev_, frames, vk::BufferUse::ComputeWrite);
   }
   if (input_.kind == ScalpInput::Kind::Bones) {
     previous_.assign(input_.boneCount, initialHead);
     current_ = previous_;
-    bones_ = vk::Buffer(ctx, 2 * input_.boneCount * sizeof(glm::mat4), kStorage, vk::MemoryKind::DeviceLocal, "bones");
-    skin_ = vk::Buffer(ctx, input_.skin.size() * sizeof(gpu::SkinWeights), kStorage, vk::MemoryKind::DeviceLocal,
+    bones_ = vk::Buffer(ctx, 2 * input_.boneCount * sizeof(glm::mat4), kScalpUsage, vk::MemoryKind::DeviceLocal, "bones");
+    skin_ = vk::Buffer(ctx, input_.skin.size() * sizeof(gpu::SkinWeights), kScalpUsage, vk::MemoryKind::DeviceLocal,
                        "skin weights");
     vk::upload<gpu::SkinWeights>(ctx, skin_, input_.skin, vk::BufferUse::ComputeRead);
   }

@@ -12,7 +12,7 @@ namespace {
 constexpr VkBufferUsageFlags kParticleUsage =
     VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
 
-const vk::Binding kBindings[] = {
+const vk::Binding kSimulateBindings[] = {
     {gpu::SIM_BINDING_FRAME, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
     {gpu::SIM_BINDING_POSITIONS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
     {gpu::SIM_BINDING_PREVIOUS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_COMPUTE_BIT},
@@ -70,7 +70,7 @@ SimulatePass::SimulatePass(const vk::Context& ctx, const HairAsset& asset, const
                       vk::MemoryKind::DeviceLocal, "simulation frame");
   grid_.emplace(ctx, rest_, particlesPerGuide_, params_.gridResolution, float(params_.pearlRadius), positions_, previous_,
                 library);
-  set_ = vk::DescriptorSet(ctx, kBindings, "simulate");
+  set_ = vk::DescriptorSet(ctx, kSimulateBindings, "simulate");
   set_.writeStorageBuffer(gpu::SIM_BINDING_FRAME, frame_.handle());
   set_.writeStorageBuffer(gpu::SIM_BINDING_POSITIONS, positions_.handle());
   set_.writeStorageBuffer(gpu::SIM_BINDING_PREVIOUS, previous_.handle());

@@ -11,7 +11,7 @@
 
 namespace hp::compute {
 namespace {
-constexpr VkBufferUsageFlags kUsage =
+constexpr VkBufferUsageFlags kStrandBuffersUsage =
     VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
 constexpr VkDeviceSize kVec4 = 16;
 constexpr VkDeviceSize kBounceSample = 8;  // uvec2: rgb as half floats
@@ -30,7 +30,7 @@ std::vector<ChunkRange> splitIntoChunks(std::uint32_t strands, std::uint32_t per
 }
 
 vk::Buffer deviceBuffer(const vk::Context& ctx, VkDeviceSize bytes, const std::string& name) {
-  return vk::Buffer(ctx, std::max<VkDeviceSize>(bytes, kVec4), kUsage, vk::MemoryKind::DeviceLocal, name);
+  return vk::Buffer(ctx, std::max<VkDeviceSize>(bytes, kVec4), kStrandBuffersUsage, vk::MemoryKind::DeviceLocal, name);
 }
 
 std::vector<gpu::StrandBindingGpu> packBindings(const InterpolationTopology& topology, ChunkRange range) {

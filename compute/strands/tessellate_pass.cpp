@@ -6,18 +6,16 @@
 
 namespace hp::compute {
 namespace {
-constexpr VkShaderStageFlags kCompute = VK_SHADER_STAGE_COMPUTE_BIT;
-constexpr VkDescriptorType kStorage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-const vk::Binding kBindings[] = {
-    {gpu::TESSELLATE_BINDING_PARTICLES, kStorage, kCompute},
-    {gpu::TESSELLATE_BINDING_POSITIONS, kStorage, kCompute},
-    {gpu::TESSELLATE_BINDING_TANGENTS, kStorage, kCompute},
+const vk::Binding kTessellateBindings[] = {
+    {gpu::TESSELLATE_BINDING_PARTICLES, vk::kStorage, vk::kCompute},
+    {gpu::TESSELLATE_BINDING_POSITIONS, vk::kStorage, vk::kCompute},
+    {gpu::TESSELLATE_BINDING_TANGENTS, vk::kStorage, vk::kCompute},
 };
 }  // namespace
 
 TessellatePass::TessellatePass(const vk::Context& ctx, const vk::Buffer& particles, const StrandBuffers& buffers,
                                vk::PipelineLibrary* library)
-    : set_(ctx, kBindings, "tessellate"),
+    : set_(ctx, kTessellateBindings, "tessellate"),
       pipeline_(vk::makeComputePipeline(ctx, library, "tessellate.comp", gpu::TESSELLATE_WORKGROUP_SIZE, {set_.layout()},
                 sizeof(gpu::TessellatePush), "tessellate")) {
   bind(particles, buffers);

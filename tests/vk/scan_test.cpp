@@ -15,7 +15,7 @@ using namespace hp::vk;
 using hp::test::VulkanTest;
 
 namespace {
-constexpr VkBufferUsageFlags kStorage =
+constexpr VkBufferUsageFlags kScanBufferUsage =
     VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
 const std::uint32_t kBlock = hp::gpu::SCAN_WORKGROUP_SIZE;
 
@@ -38,14 +38,14 @@ TEST_F(VulkanTest, InclusivePrefixSumOfOneMillionWordsMatchesCpu) {
   std::mt19937 rng(42);
   for (auto& v : input) v = rng() & 0xFFFF;
 
-  Buffer data(*ctx, n * 4ull, kStorage, MemoryKind::DeviceLocal, "scan data");
+  Buffer data(*ctx, n * 4ull, kScanBufferUsage, MemoryKind::DeviceLocal, "scan data");
   upload<std::uint32_t>(*ctx, data, input, BufferUse::ComputeWrite);
 
   std::vector<Level> levels;
   VkBuffer levelData = data.handle();
   for (std::uint32_t count = n; count > 1; count = (count + kBlock - 1) / kBlock) {
     std::uint32_t blocks = (count + kBlock - 1) / kBlock;
-    Level level{count, Buffer(*ctx, blocks * 4ull, kStorage, MemoryKind::DeviceLocal, "scan sums"),
+    Level level{count, Buffer(*ctx, blocks * 4ull, kScanBufferUsage, MemoryKind::DeviceLocal, "scan sums"),
                 DescriptorSet(*ctx, kBindings, "scan level")};
     level.set.writeStorageBuffer(hp::gpu::SCAN_BINDING_DATA, levelData);
     level.set.writeStorageBuffer(hp::gpu::SCAN_BINDING_SUMS, level.sums.handle());
