@@ -21,6 +21,6 @@ void main() {
   if (i >= push.control.x) return;
   BrdfEvalInput row = rows[i];
   vec3 s = marschnerEvaluate(push.control.y, row.L.xyz, row.V.xyz, row.T.xyz, mTex, n0Tex, n1Tex,
-                             marschner, row.T.w);
+                             marschner, row.T.w, row.V.w);
   results[i] = vec4(s, 0.0);
 }

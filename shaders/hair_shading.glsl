@@ -19,16 +19,18 @@ bool hairDualScattering() {
   return frame.options.z == RENDER_SCATTERING_DUAL && marschner.control.x == MARSCHNER_MODE_LUT_PHYSICAL;
 }
 
-// One light's direct term at a fibre point; `shadow` is what stands between them; tilt: the strand's cuticle
-// tilt offset (shared/strands.h strandTilt).
-vec3 hairLightRadiance(FrameLight light, LightSample ls, LightShadow shadow, vec3 V, vec3 T, float tilt) {
+// One light's direct term at a fibre point; `shadow` is what stands between them; tilt and roughness: the
+// strand's cuticle tilt offset and beta_R scale (shared/strands.h strandTilt, strandRoughness).
+vec3 hairLightRadiance(FrameLight light, LightSample ls, LightShadow shadow, vec3 V, vec3 T, float tilt,
+                       float roughness) {
   vec3 L = ls.L;
   bool dual = hairDualScattering();
   // With dual scattering the single and multiple scattering share the angles and the longitudinal terms' lookups.
   vec4 ang = dual ? marschnerAngles(L, V, T) : vec4(0.0);
-  vec4 m = dual ? marschnerPhysicalM(ang, tilt, lutM) : vec4(0.0);
+  vec4 m = dual ? marschnerPhysicalM(ang, tilt, roughness, lutM) : vec4(0.0);
   vec3 S = dual ? marschnerPhysicalS(ang, m, lutN0, lutN1)
-                : marschnerEvaluate(marschner.control.x, L, V, T, lutM, lutN0, lutN1, marschner, tilt);
+                : marschnerEvaluate(marschner.control.x, L, V, T, lutM, lutN0, lutN1, marschner, tilt,
+                                    roughness);
   float sinThetaI = clamp(dot(L, T), -1.0, 1.0);
   float cosThetaI = sqrt(1.0 - sinThetaI * sinThetaI);
   float tau = frame.strand.z * shadow.alpha;  // optical depth toward the light: the mean number of fibres crossed
@@ -53,24 +55,25 @@ vec3 hairLightRadiance(FrameLight light, LightSample ls, LightShadow shadow, vec
 layout(constant_id = 0) const uint HAIR_LIGHT_LOOP = 1u;
 
 // Light i's direct term.
-vec3 hairLight(uint i, vec3 world, vec3 V, vec3 T, float tilt) {
+vec3 hairLight(uint i, vec3 world, vec3 V, vec3 T, float tilt, float roughness) {
   FrameLight light = frame.lights[i];
   LightSample ls = sampleLight(light, world);
-  return hairLightRadiance(light, ls, frameLightShadow(light, world, ls.L, false), V, T, tilt);
+  return hairLightRadiance(light, ls, frameLightShadow(light, world, ls.L, false), V, T, tilt, roughness);
 }
 
 // bounce: the mean radiance the skin sends to this point (head_bounce.glsl; 0 without the skin's bounce);
-// colorScale and tilt: the strand's lightness scale and cuticle tilt offset (shared/strands.h); headBehind: the
+// colorScale, tilt, roughness: the strand's lightness scale, cuticle tilt offset and beta_R scale (shared/strands.h); headBehind: the
 // share of the point's pixel where the head lies behind it along the view ray (the compute raster's shade pass
 // reads it from the head's depth; 0 where unknown).
-vec3 hairRadiance(vec3 world, vec3 tangent, float colorScale, float tilt, float headBehind, vec3 bounce) {
+vec3 hairRadiance(vec3 world, vec3 tangent, float colorScale, float tilt, float roughness, float headBehind,
+                  vec3 bounce) {
   vec3 T = normalize(tangent);
   vec3 V = normalize(frame.cameraPosition.xyz - world);
   vec3 direct = vec3(0.0);
   if (HAIR_LIGHT_LOOP != 0u) {
-    for (uint i = 0u; i < frame.lightCount.x; ++i) direct += hairLight(i, world, V, T, tilt);
+    for (uint i = 0u; i < frame.lightCount.x; ++i) direct += hairLight(i, world, V, T, tilt, roughness);
   } else if (frame.lightCount.x > 0u) {
-    direct = hairLight(0u, world, V, T, tilt);
+    direct = hairLight(0u, world, V, T, tilt, roughness);
   }
   // The environment (docs/SHADING.md "Environment"): an unoccluded fibre under a uniform sky returns the
   // model's sky albedo times its radiance, a fibre of a head of hair the mean fraction of it that reaches

@@ -3,9 +3,10 @@
 //   vec3 marschnerDirect  (L, V, T, MarschnerParams p)                          analytic S, no textures
 //   vec3 marschnerLutPaper(L, V, T, sampler2D mTex, sampler2D nTex, p)            paper, RGBA8 128x128
 //   vec3 marschnerLutFloat(L, V, T, sampler2D mTex, sampler2D n0Tex, sampler2D n1Tex, p)  RGBA16F
-//   vec3 marschnerLutPhysical(L, V, T, mTex, n0Tex, n1Tex, p, tilt)  the physical model (docs/THEORY.md §4), RGBA16F
-//   vec3 marschnerEvaluate(mode, L, V, T, mTex, n0Tex, n1Tex, p, tilt)           switch on MARSCHNER_MODE_*
-// tilt: the fibre's cuticle tilt offset from alpha_R (radians), a strand's own (shared/strands.h strandTilt).
+//   vec3 marschnerLutPhysical(L, V, T, mTex, n0Tex, n1Tex, p, tilt, roughness)  the physical model (docs/THEORY.md §4), RGBA16F
+//   vec3 marschnerEvaluate(mode, L, V, T, mTex, n0Tex, n1Tex, p, tilt, roughness)  switch on MARSCHNER_MODE_*
+// tilt: the fibre's cuticle tilt offset from alpha_R (radians), a strand's own (shared/strands.h strandTilt);
+// roughness: the scale of its beta_R (strandRoughness; 1 for none).
 // Samplers: linear min/mag filter, CLAMP_TO_EDGE, normalised coordinates, one mip level. Sampled with
 // textureLod(.., 0) so the same code is valid in compute shaders.
 // The includer declares its MarschnerParams block as `marschner` before including this file: the
@@ -236,18 +237,32 @@ vec3 marschnerLutFloat(vec3 L, vec3 V, vec3 T, sampler2D mTex, sampler2D n0Tex, 
   return (m.x * n0.w + m.y * n0.xyz + m.z * n1.xyz) * c.w;
 }
 
-// The physical model's longitudinal terms (M_R, M_TT, M_TRT, M_back) at marschnerAngles() `ang` for a fibre
-// whose cuticle tilt is alpha_R + tilt (radians; a strand's variation, shared/strands.h strandTilt): with a
-// tilt, each lobe is read at its own shifted theta_r (marschnerPhysicalTiltedMV), M_back where it lies.
-vec4 marschnerPhysicalM(vec4 ang, float tilt, sampler2D mTex) {
-  vec2 c = vec2(marschnerPhysicalMCoord(ang.x), marschnerPhysicalMCoord(ang.y));
-  vec4 m = textureLod(mTex, c, 0.0);
-  if (tilt != 0.0) {
-    vec3 v = marschnerPhysicalTiltedMV(ang.y, tilt);
-    m.x = textureLod(mTex, vec2(c.x, v.x), 0.0).x;
-    m.y = textureLod(mTex, vec2(c.x, v.y), 0.0).y;
-    m.z = textureLod(mTex, vec2(c.x, v.z), 0.0).z;
+// One layer of the physical M texture (shared/marschner.h marschnerPhysicalMLayers) at in-layer coordinates c,
+// each lobe at its own tilted v (xyz) where the strand is tilted.
+vec4 marschnerPhysicalMLayerTexel(sampler2D mTex, vec2 c, vec3 v, bool tilted, float layer, float layers) {
+  vec4 m = textureLod(mTex, vec2(c.x, marschnerPhysicalMLayerV(c.y, layer, layers)), 0.0);
+  if (tilted) {
+    m.x = textureLod(mTex, vec2(c.x, marschnerPhysicalMLayerV(v.x, layer, layers)), 0.0).x;
+    m.y = textureLod(mTex, vec2(c.x, marschnerPhysicalMLayerV(v.y, layer, layers)), 0.0).y;
+    m.z = textureLod(mTex, vec2(c.x, marschnerPhysicalMLayerV(v.z, layer, layers)), 0.0).z;
   }
+  return m;
+}
+
+// The physical model's longitudinal terms (M_R, M_TT, M_TRT, M_back) at marschnerAngles() `ang` for a fibre
+// whose cuticle tilt is alpha_R + tilt (radians; a strand's variation, shared/strands.h strandTilt) and whose
+// beta_R is scaled by `roughness` (strandRoughness): with a tilt, each lobe is read at its own shifted theta_r
+// (marschnerPhysicalTiltedMV), M_back where it lies; with a roughness variation, from the two layers around
+// the strand's scale, mixed.
+vec4 marschnerPhysicalM(vec4 ang, float tilt, float roughness, sampler2D mTex) {
+  vec2 c = vec2(marschnerPhysicalMCoord(ang.x), marschnerPhysicalMCoord(ang.y));
+  bool tilted = tilt != 0.0;
+  vec3 v = tilted ? marschnerPhysicalTiltedMV(ang.y, tilt) : vec3(c.y);
+  float variation = marschner.caustic.w;
+  float layers = float(marschnerPhysicalMLayers(variation));
+  vec2 layer = marschnerPhysicalMLayer(roughness, variation);
+  vec4 m = marschnerPhysicalMLayerTexel(mTex, c, v, tilted, layer.x, layers);
+  if (layer.y > 0.0) m = mix(m, marschnerPhysicalMLayerTexel(mTex, c, v, tilted, layer.x + 1.0, layers), layer.y);
   return m * marschner.mScale;
 }
 
@@ -261,9 +276,9 @@ vec3 marschnerPhysicalS(vec4 ang, vec4 m, sampler2D n0Tex, sampler2D n1Tex) {
 }
 
 vec3 marschnerLutPhysical(vec3 L, vec3 V, vec3 T, sampler2D mTex, sampler2D n0Tex, sampler2D n1Tex,
-                          MarschnerParams prm, float tilt) {
+                          MarschnerParams prm, float tilt, float roughness) {
   vec4 ang = marschnerAngles(L, V, T);
-  return marschnerPhysicalS(ang, marschnerPhysicalM(ang, tilt, mTex), n0Tex, n1Tex);
+  return marschnerPhysicalS(ang, marschnerPhysicalM(ang, tilt, roughness, mTex), n0Tex, n1Tex);
 }
 
 // Multiple scattering (physical mode; docs/SHADING.md "Multiple scattering"). The spread tables hold
@@ -310,11 +325,13 @@ vec3 marschnerPhysicalMultipleResponse(vec4 ang, vec4 m, float lit, vec3 spread)
 // paper mode reads mTex and n0Tex only, direct none. tilt: the fibre's cuticle tilt offset (radians), taken by
 // the physical and direct modes; the paper and float tables are of one tilt and ignore it.
 vec3 marschnerEvaluate(uint mode, vec3 L, vec3 V, vec3 T, sampler2D mTex, sampler2D n0Tex,
-                       sampler2D n1Tex, MarschnerParams prm, float tilt) {
-  if (mode == MARSCHNER_MODE_LUT_PHYSICAL) return marschnerLutPhysical(L, V, T, mTex, n0Tex, n1Tex, prm, tilt);
+                       sampler2D n1Tex, MarschnerParams prm, float tilt, float roughness) {
+  if (mode == MARSCHNER_MODE_LUT_PHYSICAL)
+    return marschnerLutPhysical(L, V, T, mTex, n0Tex, n1Tex, prm, tilt, roughness);
   if (mode == MARSCHNER_MODE_LUT_FLOAT) return marschnerLutFloat(L, V, T, mTex, n0Tex, n1Tex, prm);
   if (mode == MARSCHNER_MODE_LUT_PAPER) return marschnerLutPaper(L, V, T, mTex, n0Tex, prm);
   prm.longitudinal.x += tilt;
+  prm.longitudinal.y *= roughness;
   return marschnerDirect(L, V, T, prm);
 }
 #endif  // MARSCHNER_GLSL_AS_CPP

@@ -57,7 +57,8 @@ void main() {
   vec3 bounce = bounceAlongStrand(strand, i - strand * q, q);
   StrandAttributes a = attributes[strand];
   float tilt = strandTilt(a.random, marschner.caustic.z);
+  float roughness = strandRoughness(a.random, marschner.caustic.w);
   float headBehind = frame.headBounce.w != 0.0 ? headBehindAt(screen[global]) : 0.0;
-  vec3 radiance = hairRadiance(pos.xyz, tangents[i].xyz, a.colorScale, tilt, headBehind, bounce);
+  vec3 radiance = hairRadiance(pos.xyz, tangents[i].xyz, a.colorScale, tilt, roughness, headBehind, bounce);
   colors[global] = packHalfRgb(radiance);
 }

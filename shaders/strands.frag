@@ -49,7 +49,8 @@ void main() {
   // A shader that writes the sample mask on one path must write it on all: left unwritten it is undefined.
   gl_SampleMask[0] = int(mask);
   float tilt = strandTilt(inRandom, marschner.caustic.z);
+  float roughness = strandRoughness(inRandom, marschner.caustic.w);
   // The graphics raster draws the head in the same pass and cannot read its depth: the far side stays open.
-  vec3 radiance = hairRadiance(inWorld, inTangent, inColorScale, tilt, 0.0, inBounce);
+  vec3 radiance = hairRadiance(inWorld, inTangent, inColorScale, tilt, roughness, 0.0, inBounce);
   outColor = vec4(radiance, push.samples > 1u ? 1.0 : inCoverage);
 }

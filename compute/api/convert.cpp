@@ -76,6 +76,7 @@ hp::HairMaterial material(const Material& m) {
   h.dhM = m.dhM;
   h.betaN = m.betaN;
   h.tiltVariation = m.tiltVariation;
+  h.roughnessVariation = m.roughnessVariation;
   return h;
 }
 

@@ -62,6 +62,10 @@ void addMaterialOptions(CLI::App& app, HairMaterial& m) {
             "per-strand cuticle tilt variation in degrees: each strand's alpha R is offset by up to this much, [0, 10] "
             "(default 2; physical and direct lookup modes)",
             [](HairMaterial& x, double v) { x.tiltVariation = glm::radians(v); });
+  addScalar(app, m, "--roughness-variation",
+            "per-strand roughness variation: each strand's beta R is scaled by 1 +- up to this, [0, 0.25] "
+            "(default 0.15; physical and direct lookup modes)",
+            [](HairMaterial& x, double v) { x.roughnessVariation = v; });
   auto* absorption = app.add_option_function<std::vector<double>>(
       "--absorption",
       [&m](const std::vector<double>& v) {

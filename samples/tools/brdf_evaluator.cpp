@@ -63,7 +63,7 @@ std::vector<glm::vec3> BrdfEvaluator::evaluate(const MarschnerTextures& textures
     rows.clear();
     for (std::uint32_t i = 0; i < count; ++i) {
       const BrdfQuery& q = queries[first + i];
-      rows.push_back({glm::vec4(q.L, 0.0f), glm::vec4(q.V, 0.0f), glm::vec4(q.T, q.tilt)});
+      rows.push_back({glm::vec4(q.L, 0.0f), glm::vec4(q.V, q.roughness), glm::vec4(q.T, q.tilt)});
     }
     // Each step below is fence-waited, so reusing the two buffers across chunks is race-free.
     vk::upload<gpu::BrdfEvalInput>(ctx_, input, rows, vk::BufferUse::ComputeRead);

@@ -28,6 +28,7 @@ struct BrdfQuery {
   glm::vec3 V;  // toward the eye
   glm::vec3 T;  // fibre tangent, root to tip
   float tilt = 0.0f;  // the fibre's cuticle tilt offset from the material's alpha_R (radians; physical, direct)
+  float roughness = 1.0f;  // the scale of its beta_R (physical, direct)
 };
 
 class BrdfEvaluator {

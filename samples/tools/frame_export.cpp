@@ -19,9 +19,10 @@
 namespace hp {
 namespace {
 constexpr const char* kFormat = "hairpipe-frame";
-// 4: "fibre"/"strand_tilts_rad" and the material's "tilt_variation_rad"; 3: an optional "environment_map";
-// 2: "lights", a list (point lights, shadows); 1: one "light". All are read.
-constexpr std::uint32_t kVersion = 4;
+// 5: "fibre"/"strand_roughness_scales" and the material's "roughness_variation"; 4: "fibre"/"strand_tilts_rad"
+// and the material's "tilt_variation_rad"; 3: an optional "environment_map"; 2: "lights", a list (point lights,
+// shadows); 1: one "light". All are read.
+constexpr std::uint32_t kVersion = 5;
 
 nlohmann::json vec(const glm::vec3& v) { return {v.x, v.y, v.z}; }
 nlohmann::json dvec(const glm::dvec3& v) { return {v.x, v.y, v.z}; }
@@ -76,7 +77,7 @@ nlohmann::json lightsJson(const std::vector<LightSpec>& lights) {
 nlohmann::json materialJson(const HairMaterial& m) {
   return {{"eta", m.eta}, {"absorption", dvec(m.absorption)}, {"alpha_r_rad", m.alphaR}, {"beta_r_rad", m.betaR},
           {"kg", m.kG}, {"wc_rad", m.wc}, {"deta", m.dEta}, {"dhm", m.dhM}, {"beta_n_rad", m.betaN},
-          {"tilt_variation_rad", m.tiltVariation}};
+          {"tilt_variation_rad", m.tiltVariation}, {"roughness_variation", m.roughnessVariation}};
 }
 
 nlohmann::json frameJson(const ExportedFrame& f) {
@@ -87,7 +88,8 @@ nlohmann::json frameJson(const ExportedFrame& f) {
                       {"fov_y_deg", c.fovYDeg}, {"width", c.width}, {"height", c.height}}},
           {"lights", lightsJson(f.lights)},
           {"fibre", {{"model", f.fibreModel}, {"lut_mode", f.lutMode}, {"material", materialJson(f.material)},
-                     {"albedo", vec(f.hairAlbedo)}, {"strand_tilts_rad", f.strandTilts}}},
+                     {"albedo", vec(f.hairAlbedo)}, {"strand_tilts_rad", f.strandTilts},
+                     {"strand_roughness_scales", f.strandRoughness}}},
           {"skin", {{"color", vec(f.skinColor)}, {"wrap", f.wrap}}},
           {"environment_radiance", f.environment}, {"background_radiance", vec(f.background)},
           {"exposure", f.exposure}, {"tonemap", "filmic (shaders/shared/tonemap.h) then sRGB"}};
@@ -155,10 +157,11 @@ bool inUnitRange(const glm::vec3& v) {
   return v.x >= 0.0f && v.y >= 0.0f && v.z >= 0.0f && v.x <= 1.0f && v.y <= 1.0f && v.z <= 1.0f;
 }
 
-// Before version 4 the strands shared one alpha_R: no tilt variation unless the file says one.
+// Before version 4 the strands shared one alpha_R, before 5 one beta_R: no variation unless the file says one.
 HairMaterial readMaterial(JsonObject o) {
   HairMaterial m;
   m.tiltVariation = 0.0;
+  m.roughnessVariation = 0.0;
   o.read("eta", m.eta);
   o.read("absorption", m.absorption);
   o.read("alpha_r_rad", m.alphaR);
@@ -169,6 +172,7 @@ HairMaterial readMaterial(JsonObject o) {
   o.read("dhm", m.dhM);
   o.read("beta_n_rad", m.betaN);
   o.read("tilt_variation_rad", m.tiltVariation);
+  o.read("roughness_variation", m.roughnessVariation);
   o.finish();
   m.validate();
   return m;
@@ -188,6 +192,23 @@ std::vector<float> readStrandTilts(JsonObject& fibre, const HairMaterial& m, std
     tilts.push_back(t.get<float>());
   }
   return tilts;
+}
+
+// "strand_roughness_scales" (version 5; none before): each a number within [1 - V, 1 + V], V the material's
+// roughness variation.
+std::vector<float> readStrandRoughness(JsonObject& fibre, const HairMaterial& m, std::uint32_t version) {
+  std::vector<float> scales;
+  const nlohmann::json* list = fibre.array("strand_roughness_scales");
+  if (!list) return scales;
+  if (version < 5 && !list->empty()) fibre.fail("strand_roughness_scales", "per-strand roughness needs version 5");
+  const double bound = m.roughnessVariation * (1.0 + 1e-6) + 1e-6;
+  for (const nlohmann::json& s : *list) {
+    if (!s.is_number() || !(std::abs(s.get<double>() - 1.0) <= bound))
+      fibre.fail("strand_roughness_scales", "each must be a number within 1 +- the material's roughness_variation, " +
+                                                std::to_string(m.roughnessVariation));
+    scales.push_back(s.get<float>());
+  }
+  return scales;
 }
 
 JsonObject required(JsonObject& parent, const char* key) {
@@ -239,7 +260,7 @@ void readFrameJson(ExportedFrame& f, const std::filesystem::path& path) {
   o.read("format", format);
   o.read("version", version);
   if (format != kFormat || version < 1 || version > kVersion)
-    o.fail("format", "expected format \"hairpipe-frame\", version 1 to 4");
+    o.fail("format", "expected format \"hairpipe-frame\", version 1 to 5");
   o.read("units", units);
   o.read("up", up);
   if (units != "metres" || up != "+y") o.fail("units", "expected units \"metres\" and up \"+y\"");
@@ -258,6 +279,7 @@ void readFrameJson(ExportedFrame& f, const std::filesystem::path& path) {
   }
   f.material = readMaterial(required(fibre, "material"));
   f.strandTilts = readStrandTilts(fibre, f.material, version);
+  f.strandRoughness = readStrandRoughness(fibre, f.material, version);
   fibre.read("albedo", f.hairAlbedo);
   if (!inUnitRange(f.hairAlbedo)) fibre.fail("albedo", "each channel must be in [0, 1]");
   fibre.finish();
@@ -306,6 +328,7 @@ std::vector<float> ExportedFrame::strandColorScales() const {
 HairMaterial ExportedFrame::strandMaterial(std::uint32_t s) const {
   HairMaterial m = material;
   if (s < strandTilts.size()) m.alphaR += strandTilts[s];
+  if (s < strandRoughness.size()) m.betaR *= strandRoughness[s];
   return m;
 }
 
@@ -316,6 +339,16 @@ std::vector<float> strandTiltsOf(const FrameCapture& frame, const HairMaterial& 
   if (m.tiltVariation == 0.0 || mode == LutMode::Paper || mode == LutMode::Float) return tilts;
   for (const auto& a : frame.strands.attributes) tilts.push_back(gpu::strandTilt(a.random, float(m.tiltVariation)));
   return tilts;
+}
+
+// Each strand's beta_R scale as the real-time shading took it (the physical and direct modes; the shader reads the
+// variation as a float, MarschnerParams.caustic.w).
+std::vector<float> strandRoughnessOf(const FrameCapture& frame, const HairMaterial& m, LutMode mode) {
+  std::vector<float> scales;
+  if (float(m.roughnessVariation) == 0.0f || mode == LutMode::Paper || mode == LutMode::Float) return scales;
+  for (const auto& a : frame.strands.attributes)
+    scales.push_back(gpu::strandRoughness(a.random, float(m.roughnessVariation)));
+  return scales;
 }
 }  // namespace
 
@@ -339,6 +372,7 @@ ExportedFrame makeExportedFrame(const RenderRequest& request, const HairAsset& a
               scene.render.width, scene.render.height};
   f.strands = exportStrands(frame, request.look, f.hairAlbedo);
   f.strandTilts = strandTiltsOf(frame, f.material, request.lutMode);
+  f.strandRoughness = strandRoughnessOf(frame, f.material, request.lutMode);
   exportHead(f, request.drawHead ? asset.head : HeadMesh{}, frame.headToWorld);  // hair only: no head
   return f;
 }
@@ -360,6 +394,10 @@ ExportedFrame readFrameExport(const std::filesystem::path& dir) {
   if (!f.strandTilts.empty() && f.strandTilts.size() != f.strands.strandCount)
     throw Error((dir / FrameExportFiles::json).string() + ": /fibre/strand_tilts_rad: " +
                 std::to_string(f.strandTilts.size()) + " tilts for " + std::to_string(f.strands.strandCount) +
+                " strands");
+  if (!f.strandRoughness.empty() && f.strandRoughness.size() != f.strands.strandCount)
+    throw Error((dir / FrameExportFiles::json).string() + ": /fibre/strand_roughness_scales: " +
+                std::to_string(f.strandRoughness.size()) + " scales for " + std::to_string(f.strands.strandCount) +
                 " strands");
   AlbedoMesh head = readAlbedoObj(dir / FrameExportFiles::head);
   f.headPositions = std::move(head.positions);

@@ -5,7 +5,7 @@
 //   DIR/strands.hair  the render strands as drawn: points, per-point thickness (fibre diameter) and
 //                     per-point colour (the strand's colour, the same on each of its points)
 //   DIR/head.obj      the opaque head: positions with per-vertex albedo ("v x y z r g b"), normals, triangles
-//   DIR/frame.json    camera, lights, fibre material and model (with each strand's tilt offset), skin, ambient,
+//   DIR/frame.json    camera, lights, fibre material and model (with each strand's tilt offset and roughness scale), skin, ambient,
 //                     background, exposure
 // Every file is written atomically; readFrameExport validates everything and throws hp::Error naming
 // the file and the problem. write then read reproduces every number exactly (floats printed round-trip).
@@ -54,10 +54,14 @@ struct ExportedFrame {
   // Per strand: the cuticle tilt offset (radians) the real-time shading added to material.alphaR
   // (shaders/shared/strands.h strandTilt; zero in the LUT modes that ignore it); empty: none.
   std::vector<float> strandTilts;
+  // Per strand: the scale the real-time shading applied to material.betaR (strands.h strandRoughness; none in
+  // the LUT modes that ignore it); empty: none.
+  std::vector<float> strandRoughness;
 
   // Per strand: the lightness scale the real-time shading multiplies the strand's radiance by.
   std::vector<float> strandColorScales() const;
-  // The material strand s is shaded with: material, its alphaR plus the strand's tilt offset.
+  // The material strand s is shaded with: material, its alphaR plus the strand's tilt offset, its betaR times the
+  // strand's roughness scale.
   HairMaterial strandMaterial(std::uint32_t s) const;
 };
 

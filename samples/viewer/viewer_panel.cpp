@@ -70,6 +70,7 @@ void materialSection(Tunables& t, PanelChanges& c) {
   editDegrees("alpha R (shift)", t.material.alphaR, -12.0f, 0.0f);
   editDegrees("beta R (width)", t.material.betaR, 2.0f, 20.0f);
   editDegrees("tilt variation", t.material.tiltVariation, 0.0f, 10.0f);
+  editDouble("roughness variation", t.material.roughnessVariation, 0.0f, 0.25f);
   editDouble("glint kG", t.material.kG, 0.0f, 2.0f);
   editDegrees("glint width wc", t.material.wc, 5.0f, 30.0f);
   const char* modes[] = {lutModeName(LutMode::Direct), lutModeName(LutMode::Paper), lutModeName(LutMode::Float),

@@ -14,6 +14,7 @@
 #include <cmath>
 #define HP_FN inline
 namespace hp::gpu {
+using vec2 = glm::vec2;
 using vec3 = glm::vec3;
 using uvec4 = glm::uvec4;
 using glm::clamp;
@@ -22,7 +23,9 @@ using glm::sin;
 using std::abs;
 using glm::dot;
 using glm::inversesqrt;
+using glm::floor;
 using glm::max;
+using glm::min;
 using glm::normalize;
 using std::sqrt;
 }  // namespace hp::gpu
@@ -54,6 +57,8 @@ HP_CONST(uint, MARSCHNER_FLOAT_N_HEIGHT, 128u)
 // `physical` mode (RGBA16F; docs/SHADING.md "physical"):
 //   M  : M_SIZE x M_SIZE, (M_R, M_TT, M_TRT, M_back) over (signed pseudo-angle of theta_i, of theta_r);
 //        M_back: the local back-scattering's lobe (engine/core/shading/multiple_scattering.h), dual scattering;
+//        where the strands' roughness varies, M_LAYERS such squares stacked along v, one per roughness scale
+//        (marschnerPhysicalMLayers below);
 //   N0 : N_WIDTH x N_HEIGHT, (N_TT.rgb, N_R); N1: same size, (N_TRT + N_res).rgb;
 //        u = pseudo-angle of phi/2, v = pseudo-angle of |theta_r| (the attenuations depend on theta_r).
 // S = (M_R N_R + M_TT N_TT + M_TRT (N_TRT + N_res)) / cos theta_i, cos theta_i = sqrt(1 - sin^2).
@@ -61,6 +66,10 @@ HP_CONST(uint, MARSCHNER_PHYSICAL_M_SIZE, 512u)
 HP_CONST(uint, MARSCHNER_PHYSICAL_N_WIDTH, 256u)
 HP_CONST(uint, MARSCHNER_PHYSICAL_N_HEIGHT, 128u)
 HP_CONST(float, MARSCHNER_PHYSICAL_MIN_COS_I, 1e-4f)
+// Layers of M where the roughness varies: 7 keep a strand halfway between two layers within the one-layer
+// accuracy limits at the largest variation, 0.25 (p99 1.6% against 2%, tests/shading/lut_accuracy_test.cpp), and
+// 7 x 512 rows within the 4,096 every Vulkan device must sample.
+HP_CONST(uint, MARSCHNER_PHYSICAL_M_LAYERS, 7u)
 
 HP_CONST(float, MARSCHNER_INV_SQRT2, 0.70710678f)
 
@@ -78,7 +87,8 @@ HP_CONST(float, MARSCHNER_BACK_DENSITY, 0.7f)
 struct MarschnerParams {
   vec4 absorption;    // xyz = sigma_a per unit fibre radius (RGB), w = eta
   vec4 longitudinal;  // x = alpha_R, y = beta_R, z = k_G, w = w_c (radians)
-  vec4 caustic;       // x = d_eta', y = dh_M, z = the strands' tilt variation (radians; strands.h strandTilt), w = 0
+  vec4 caustic;       // x = d_eta', y = dh_M, z = the strands' tilt variation (radians; strands.h strandTilt),
+                      // w = their roughness variation (strands.h strandRoughness)
   vec4 mScale;        // sampled M texel * mScale = physical value (paper: per channel; float: 1)
   vec4 n0Scale;       // same for the first N texture
   vec4 n1Scale;       // same for the second N texture (float mode only)
@@ -212,6 +222,27 @@ HP_FN vec3 marschnerPhysicalTiltedMV(float sinThetaR, float tilt) {
               marschnerPhysicalMCoord(marschnerShiftedSin(sinThetaR, cosShift.y, sinShift.y)),
               marschnerPhysicalMCoord(marschnerShiftedSin(sinThetaR, cosShift.z, sinShift.z)));
 }
+
+// Per-strand roughness (physical mode): with a roughness variation V > 0 the M texture stacks
+// MARSCHNER_PHYSICAL_M_LAYERS squares along v, layer k built with beta_R x marschnerPhysicalMLayerScale(k, V), evenly
+// spaced over [1 - V, 1 + V]; a strand of scale s reads the two layers around s and mixes them linearly (a
+// strand at a layer's own scale reads it exactly). With V = 0: one layer.
+HP_FN uint marschnerPhysicalMLayers(float variation) { return variation > 0.0f ? MARSCHNER_PHYSICAL_M_LAYERS : 1u; }
+
+HP_FN float marschnerPhysicalMLayerScale(uint layer, float variation) {
+  return 1.0f + variation * (2.0f * float(layer) / float(MARSCHNER_PHYSICAL_M_LAYERS - 1u) - 1.0f);
+}
+
+// (x, y): the layer below roughness scale s, and the weight of the layer above it.
+HP_FN vec2 marschnerPhysicalMLayer(float scale, float variation) {
+  if (!(variation > 0.0f)) return vec2(0.0f, 0.0f);
+  float x = clamp((scale - 1.0f + variation) / (2.0f * variation), 0.0f, 1.0f) * float(MARSCHNER_PHYSICAL_M_LAYERS - 1u);
+  float k = min(floor(x), float(MARSCHNER_PHYSICAL_M_LAYERS - 2u));
+  return vec2(k, x - k);
+}
+
+// The stacked texture's v of in-layer coordinate v (marschnerPhysicalMCoord) in layer `layer` of `layers`.
+HP_FN float marschnerPhysicalMLayerV(float v, float layer, float layers) { return (layer + v) / layers; }
 
 // 1 / cos theta_i of the physical S, floored like the exact form.
 HP_FN float marschnerPhysicalInvCosI(vec4 angles) {

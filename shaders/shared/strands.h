@@ -138,6 +138,14 @@ HP_STRANDS_FN float strandTilt(float random, float variation) {
   return variation * (2.0f * strandHash01(strandKey(random), STRAND_STREAM_TILT) - 1.0f);
 }
 
+// A strand's longitudinal roughness scale, multiplying the material's beta_R in its shading (every lobe's
+// width: v_TT and v_TRT follow v_R): uniform in [1 - variation, 1 + variation) (MarschnerParams.caustic.w,
+// hp::HairMaterial::roughnessVariation), on its own hash stream; the frame export writes each strand's value.
+HP_CONST(uint, STRAND_STREAM_ROUGHNESS, 4u)
+HP_STRANDS_FN float strandRoughness(float random, float variation) {
+  return 1.0f + variation * (2.0f * strandHash01(strandKey(random), STRAND_STREAM_ROUGHNESS) - 1.0f);
+}
+
 // Sample distribution along a strand (Q vertices over the P - 1 Bezier segments). Particle i sits
 // exactly at vertex particleVertex(i) = round(i (Q-1) / (P-1)), so every particle is hit and the
 // Q - 1 intervals are spread as evenly as integers allow (P=7, Q=36: particles at vertices

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <filesystem>
 #include <optional>
+#include <string>
 
 #include "hairpipe/hairpipe.h"
 #include "tests/hair/gltf_test_file.h"
@@ -18,8 +19,11 @@ using ::testing::HasSubstr;
 // 120 guides standing 6 cm out of the crown of a 9 cm sphere (.hair), and the sphere as a .glb skinned to a
 // "neck" joint and a "head" joint 5 cm up that every vertex above 3 cm follows, with a clip "nod" turning
 // the head 90 degrees about x in one second.
+// A folder per test: ctest runs this file's tests in parallel processes, and each removes its folder at its end.
 struct Files {
-  std::filesystem::path dir = std::filesystem::path(::testing::TempDir()) / "hairpipe_character_api";
+  std::filesystem::path dir = std::filesystem::path(::testing::TempDir()) /
+                              (std::string("hairpipe_character_api_") +
+                               ::testing::UnitTest::GetInstance()->current_test_info()->name());
   std::filesystem::path hair = dir / "crown.hair", mesh = dir / "head.glb";
 };
 

@@ -233,6 +233,9 @@ TEST_F(PublicApi, InstanceSettingsAndSettersAreRefusedByField) {
   m = {};
   m.tiltVariation = 0.5;  // 29 degrees: beyond the 10 allowed
   EXPECT_THAT(failureOf(head.setMaterial(m, hairpipe::FibreModel::Physical)), HasSubstr("tiltVariation"));
+  m = {};
+  m.roughnessVariation = 0.3;  // beyond the 0.25 allowed
+  EXPECT_THAT(failureOf(head.setMaterial(m, hairpipe::FibreModel::Physical)), HasSubstr("roughnessVariation"));
   hairpipe::LookSettings look;
   look.strandWidth = kNaN;
   EXPECT_THAT(failureOf(head.setLook(look)), HasSubstr("strand width"));

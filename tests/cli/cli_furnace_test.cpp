@@ -52,5 +52,6 @@ TEST(CliFurnace, BadOptionsExitOne) {
                                         {{"--theta-r", "95"}, "--theta-r"},
                                         {{"--panels", "2"}, "--panels"},
                                         {{"--beta-n", "1"}, "betaN"},
-                                        {{"--tilt-variation", "12"}, "tiltVariation"}});
+                                        {{"--tilt-variation", "12"}, "tiltVariation"},
+                                        {{"--roughness-variation", "-0.1"}, "roughnessVariation"}});
 }

@@ -39,7 +39,7 @@ TEST(Scene, ReadsEverySection) {
     "density": {"strandsPerTriangle": 12, "seed": 3},
     "colliders": [{"center": [0, 0.1, 0], "radius": 0.09}],
     "material": {"eta": 1.6, "absorption": [0.2, 0.3, 0.4], "alphaRDeg": -5, "betaRDeg": 6, "kG": 0.4,
-                 "wcDeg": 10, "dEta": 0.25, "dhM": 0.4, "tiltVariationDeg": 3},
+                 "wcDeg": 10, "dEta": 0.25, "dhM": 0.4, "tiltVariationDeg": 3, "roughnessVariation": 0.25},
     "light": {"direction": [0, 2, 0], "color": [1, 0.9, 0.8], "intensity": 2.5},
     "camera": {"orbitDeg": 45, "elevationDeg": 20, "distance": 1.2, "fovDeg": 40, "target": [0, 0.1, 0]},
     "render": {"width": 640, "height": 480, "msaa": 8, "raster": "graphics"},
@@ -61,6 +61,7 @@ TEST(Scene, ReadsEverySection) {
   EXPECT_EQ(s.colliders->at(0).radius, 0.09f);
   EXPECT_NEAR(s.material.alphaR, glm::radians(-5.0), 1e-12);
   EXPECT_NEAR(s.material.tiltVariation, glm::radians(3.0), 1e-12);
+  EXPECT_EQ(s.material.roughnessVariation, 0.25);
   EXPECT_NEAR(s.material.wc, glm::radians(10.0), 1e-12);
   EXPECT_EQ(s.material.absorption, glm::dvec3(0.2, 0.3, 0.4));
   ASSERT_EQ(s.lights.size(), 1u);  // "light": the one light

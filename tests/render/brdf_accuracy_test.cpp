@@ -113,25 +113,32 @@ TEST_F(VulkanTest, BrdfDirectModeOnDeviceMatchesExactSForOtherMaterials) {
   }
 }
 
-// Each row's cuticle tilt offset (BrdfQuery::tilt, a strand's strandTilt in the frame) against the exact S of
-// the material with alpha_R plus that offset, row by row (the reference's per-strand material): the physical
-// and direct modes within their untilted bounds; the same rows without their tilts miss by far more.
-TEST_F(VulkanTest, BrdfPhysicalAndDirectModesOnDeviceTakeEachRowsTilt) {
+// Each row's cuticle tilt offset and roughness scale (BrdfQuery::tilt, roughness: a strand's strandTilt and
+// strandRoughness in the frame, the default material's variation of the latter) against the exact S of the
+// material with alpha_R plus that offset and beta_R times that scale, row by row (the reference's per-strand
+// material): the physical and direct modes within their plain bounds; the same rows without either miss by far
+// more.
+TEST_F(VulkanTest, BrdfPhysicalAndDirectModesOnDeviceTakeEachRowsTiltAndRoughness) {
   std::vector<hp::render::BrdfQuery> queries = hp::test::randomQueries(4'000, kSeed + 1);
   std::vector<hp::render::BrdfQuery> untilted = queries;
-  for (std::size_t i = 0; i < queries.size(); ++i)
+  const double variation = hp::HairMaterial{}.roughnessVariation;
+  ASSERT_GT(variation, 0.0);
+  for (std::size_t i = 0; i < queries.size(); ++i) {
     queries[i].tilt = float(glm::radians(-5.0 + 10.0 * double(i % 101) / 100.0));
+    queries[i].roughness = float(1.0 + variation * (2.0 * double(i % 97) / 96.0 - 1.0));
+  }
   for (LutMode mode : {LutMode::Physical, LutMode::Direct}) {
     std::vector<glm::dvec3> exact;
     for (const auto& q : queries) {
       hp::HairMaterial m;
       m.alphaR += double(q.tilt);
+      m.betaR *= double(q.roughness);
       exact.push_back(hp::exactS(hp::fibreModelOf(mode), glm::dvec3(q.L), glm::dvec3(q.V), glm::dvec3(q.T), m));
     }
     hp::render::MarschnerTextures textures(*ctx, hp::HairMaterial{}, mode);
     const auto a = hp::test::compareWithExact(hp::render::evaluateBrdfOnDevice(*ctx, textures, queries), exact);
     const auto without = hp::test::compareWithExact(hp::render::evaluateBrdfOnDevice(*ctx, textures, untilted), exact);
-    std::cout << hp::lutModeName(mode) << " with each row's tilt: " << a.str() << "\n  without: " << without.str()
+    std::cout << hp::lutModeName(mode) << " with each row's tilt and roughness: " << a.str() << "\n  without: " << without.str()
               << "\n";
     EXPECT_LE(a.median, 0.003) << a.str();
     EXPECT_LE(a.p99, 0.02) << a.str();

@@ -65,7 +65,7 @@ TEST(FrameExportLights, AListOfLightsRoundTripsBitForBit) {
   f.lights = threeLights();
   writeFrameExport(dir, f);
   const nlohmann::json j = readJson(dir / FrameExportFiles::json);
-  EXPECT_EQ(j["version"], 4);
+  EXPECT_EQ(j["version"], 5);
   ASSERT_EQ(j["lights"].size(), 3u);
   EXPECT_EQ(j["lights"][2]["type"], "point");
   EXPECT_EQ(j["lights"][2]["shadows"], false);
@@ -140,9 +140,9 @@ TEST(FrameExportLights, AVersionOneExportsSingleLightReadsAsOneLight) {
   j["version"] = 2;  // version 2 has "lights", not "light"
   writeJson(dir / FrameExportFiles::json, j);
   EXPECT_NE(readError(dir).find("/lights: missing"), std::string::npos) << readError(dir);
-  j["version"] = 5;
+  j["version"] = 6;
   writeJson(dir / FrameExportFiles::json, j);
-  EXPECT_NE(readError(dir).find("version 1 to 4"), std::string::npos) << readError(dir);
+  EXPECT_NE(readError(dir).find("version 1 to 5"), std::string::npos) << readError(dir);
   std::filesystem::remove_all(dir);
 }
 

@@ -2,12 +2,14 @@
 // `float` mode has hard limits; `paper` mode is held to the figures docs/SHADING.md records for it.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <iostream>
 #include <utility>
 #include <vector>
 
 #include "engine/core/shading/lut.h"
 #include "engine/core/shading/lut_sampler.h"
+#include "shaders/shared/marschner.h"
 #include "tests/shading/accuracy.h"
 
 using namespace hp;
@@ -158,4 +160,47 @@ TEST(LutAccuracy, PhysicalModeTakesAStrandsTiltLikeTheExactModel) {
     EXPECT_LE(s.relativeSum, 0.02) << tiltDeg;
     EXPECT_GT(untilted.relativeSum, 5.0 * s.relativeSum) << tiltDeg;
   }
+}
+
+// A strand's roughness scale (MarschnerParams.caustic.w, shaders/shared/strands.h strandRoughness): the physical
+// texture's layers, built at beta_R x the layers' scales, read at the two layers around the strand's scale and
+// mixed, against the exact S of the material with beta_R x scale (the reference's per-strand material), within
+// the limits of one layer; the scales include the variation's ends (a layer each) and points halfway between
+// layers, where the mix is furthest from any layer. Negative control: the same lookups at scale 1 miss that exact
+// S by far more at the variation's ends.
+TEST(LutAccuracy, PhysicalModeTakesAStrandsRoughnessLikeTheExactModel) {
+  HairMaterial m;
+  m.roughnessVariation = 0.25;
+  const MarschnerLut lut = buildLut(LutMode::Physical, m);
+  ASSERT_EQ(lut.textures.at(0).height, gpu::MARSCHNER_PHYSICAL_M_SIZE * gpu::MARSCHNER_PHYSICAL_M_LAYERS);
+  const double step = 2.0 * m.roughnessVariation / double(gpu::MARSCHNER_PHYSICAL_M_LAYERS - 1u);
+  for (double scale : {0.75, 0.75 + 0.5 * step, 1.0 + 0.5 * step, 1.25 - 0.5 * step, 1.25}) {
+    HairMaterial rough = m;
+    rough.betaR *= double(float(scale));
+    const auto lookup = [&](float s) {
+      return [&lut, s](glm::dvec3 L, glm::dvec3 V, glm::dvec3 T) { return evaluateLut(lut, L, V, T, {}, 0.0f, s); };
+    };
+    const test::AccuracyStats s = test::measureAccuracy(lookup(float(scale)), rough, 10000, kSeed, FibreModel::Physical);
+    const test::AccuracyStats unscaled = test::measureAccuracy(lookup(1.0f), rough, 10000, kSeed, FibreModel::Physical);
+    std::cout << "[physical, roughness x" << scale << "] " << s.str() << "; read at x1 " << unscaled.str() << "\n";
+    EXPECT_LE(s.median, 0.003) << scale;
+    EXPECT_LE(s.p99, 0.02) << scale;
+    EXPECT_LE(s.relativeSum, 0.02) << scale;
+    if (scale == 0.75 || scale == 1.25) EXPECT_GT(unscaled.relativeSum, 5.0 * s.relativeSum) << scale;
+  }
+}
+
+// Without a roughness variation the M texture is one layer; with one, a strand of scale 1 reads the middle layer,
+// the same lobes (to the rounding of its v coordinate in the taller texture).
+TEST(LutAccuracy, PhysicalModeWithoutRoughnessVariationBuildsOneLayer) {
+  HairMaterial m;
+  m.roughnessVariation = 0.0;
+  const MarschnerLut lut = buildLut(LutMode::Physical, m);
+  EXPECT_EQ(lut.textures.at(0).height, gpu::MARSCHNER_PHYSICAL_M_SIZE);
+  const glm::dvec3 L(0.3, 0.5, 0.8), V(-0.4, 0.2, 0.9), T(0.0, 1.0, 0.1);
+  HairMaterial varied = m;
+  varied.roughnessVariation = 0.2;
+  const MarschnerLut layered = buildLut(LutMode::Physical, varied);
+  const glm::dvec3 one = evaluateLut(lut, L, V, T), middle = evaluateLut(layered, L, V, T);
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(one[c], middle[c], 1e-4 * std::max(1.0, one[c])) << c;
 }

@@ -52,6 +52,9 @@ TEST(Material, BadFieldsAreNamed) {
       {[](HairMaterial& m, double v) { m.tiltVariation = v; }, -0.01, "tiltVariation"},
       {[](HairMaterial& m, double v) { m.tiltVariation = v; }, glm::radians(11.0), "tiltVariation"},
       {[](HairMaterial& m, double v) { m.tiltVariation = v; }, nan, "tiltVariation"},
+      {[](HairMaterial& m, double v) { m.roughnessVariation = v; }, -0.01, "roughnessVariation"},
+      {[](HairMaterial& m, double v) { m.roughnessVariation = v; }, 0.26, "roughnessVariation"},
+      {[](HairMaterial& m, double v) { m.roughnessVariation = v; }, nan, "roughnessVariation"},
   };
   for (const Case& c : cases) {
     HairMaterial m;

@@ -22,8 +22,10 @@ double signedAxisSine(std::uint32_t i, std::uint32_t n) {
 
 // The local back-scattering's longitudinal lobe (multiple_scattering.h) in column i (theta_i): a Gaussian
 // in theta_i + theta_r, normalised so that its sum over the column's texels against cos theta_r d theta_r is
-// 1 (the lobe may reach past a pole; a lobe narrower than a texel lands on the nearest one).
-void fillBackLobe(LutTexture& t, const MultipleScatteringTables& tables, const std::vector<double>& theta) {
+// 1 (the lobe may reach past a pole; a lobe narrower than a texel lands on the nearest one). Rows from `row0`
+// (a layer's first row); every layer holds the same lobe (the tables are the material's, not a strand's).
+void fillBackLobe(LutTexture& t, const MultipleScatteringTables& tables, const std::vector<double>& theta,
+                  std::uint32_t row0) {
   const std::uint32_t n = t.width;
   std::vector<double> weight(n), g(n);  // cos theta_r d theta_r per texel, the lobe
   for (std::uint32_t j = 0; j < n; ++j) {
@@ -45,27 +47,41 @@ void fillBackLobe(LutTexture& t, const MultipleScatteringTables& tables, const s
       g[std::min<std::size_t>(k, n - 1)] = 1.0;
       sum = weight[std::min<std::size_t>(k, n - 1)];
     }
-    for (std::uint32_t j = 0; j < n; ++j) t.texel(i, j)[3] = shading::quantiseTexel(g[j] / sum, t.format);
+    for (std::uint32_t j = 0; j < n; ++j) t.texel(i, row0 + j)[3] = shading::quantiseTexel(g[j] / sum, t.format);
   }
+}
+
+// One n x n layer of M from row `row0`: the lobes of material m (a strand's beta_R already scaled).
+void fillMLayer(LutTexture& t, const HairMaterial& m, std::uint32_t row0) {
+  const std::uint32_t n = gpu::MARSCHNER_PHYSICAL_M_SIZE;
+  std::vector<double> sines(n), row(n);
+  for (std::uint32_t i = 0; i < n; ++i) sines[i] = signedAxisSine(i, n);
+  for (std::uint32_t j = 0; j < n; ++j)
+    for (int p = 0; p < 3; ++p) {
+      shading::physicalMRow(p, sines[j], m, sines.data(), int(n), row.data());
+      for (std::uint32_t i = 0; i < n; ++i) t.texel(i, row0 + j)[p] = shading::quantiseTexel(row[i], t.format);
+    }
 }
 
 LutTexture buildM(const HairMaterial& m, const MultipleScatteringTables& tables, LutFormat f) {
   const std::uint32_t n = gpu::MARSCHNER_PHYSICAL_M_SIZE;
-  LutTexture t = shading::makeLutTexture("M", n, n, f);
+  const float variation = float(m.roughnessVariation);  // as the shader reads it (MarschnerParams.caustic.w)
+  const std::uint32_t layers = gpu::marschnerPhysicalMLayers(variation);
+  LutTexture t = shading::makeLutTexture("M", n, n * layers, f);
   t.channelNames = {"M_R", "M_TT", "M_TRT", "M_back (local back-scattering)"};
   t.uAxis = "signed pseudo-angle of theta_i: 0.5 + 0.5 sign P(|theta_i|), texel-centre mapped";
-  t.vAxis = "signed pseudo-angle of theta_r, same map";
-  for (std::uint32_t j = 0; j < n; ++j) {
-    double sr = signedAxisSine(j, n);
-    for (std::uint32_t i = 0; i < n; ++i) {
-      double si = signedAxisSine(i, n);
-      float* px = t.texel(i, j);
-      for (int p = 0; p < 3; ++p) px[p] = shading::quantiseTexel(shading::physicalM(p, si, sr, m), f);
-    }
-  }
+  t.vAxis = layers == 1 ? "signed pseudo-angle of theta_r, same map"
+                        : "layer k of " + std::to_string(layers) + " (beta_R x 1 + V (2k / " + std::to_string(layers - 1) +
+                              " - 1), V the roughness variation) + the signed pseudo-angle of theta_r, same map, over " +
+                              std::to_string(layers);
   std::vector<double> theta(n);
   for (std::uint32_t j = 0; j < n; ++j) theta[j] = std::asin(signedAxisSine(j, n));
-  fillBackLobe(t, tables, theta);
+  for (std::uint32_t k = 0; k < layers; ++k) {
+    HairMaterial layer = m;
+    if (layers > 1) layer.betaR = m.betaR * double(gpu::marschnerPhysicalMLayerScale(k, variation));
+    fillMLayer(t, layer, k * n);
+    fillBackLobe(t, tables, theta, k * n);
+  }
   return t;
 }
 

@@ -39,20 +39,34 @@ glm::vec3 evaluateFloat(const MarschnerLut& lut, glm::vec4 ang, const LutSampler
   return (m.x * n0.w + m.y * glm::vec3(n0) + m.z * glm::vec3(n1)) * c.w;
 }
 
-// marschnerPhysicalM of shaders/marschner.glsl, unscaled.
-glm::vec4 physicalM(const LutTexture& t, glm::vec4 ang, float tilt, const LutSamplerOptions& o) {
-  const float u = gpu::marschnerPhysicalMCoord(ang.x);
-  glm::vec4 m = sampleBilinear(t, u, gpu::marschnerPhysicalMCoord(ang.y), o);
-  if (tilt != 0.0f) {
-    const glm::vec3 v = gpu::marschnerPhysicalTiltedMV(ang.y, tilt);
-    for (int p = 0; p < 3; ++p) m[p] = sampleBilinear(t, u, v[p], o)[p];
-  }
+// marschnerPhysicalMLayerTexel of shaders/marschner.glsl.
+glm::vec4 physicalMLayer(const LutTexture& t, float u, float v, glm::vec3 tiltedV, bool tilted, float layer,
+                         float layers, const LutSamplerOptions& o) {
+  glm::vec4 m = sampleBilinear(t, u, gpu::marschnerPhysicalMLayerV(v, layer, layers), o);
+  if (tilted)
+    for (int p = 0; p < 3; ++p) m[p] = sampleBilinear(t, u, gpu::marschnerPhysicalMLayerV(tiltedV[p], layer, layers), o)[p];
   return m;
 }
 
-glm::vec3 evaluatePhysical(const MarschnerLut& lut, glm::vec4 ang, const LutSamplerOptions& o, float tilt) {
+// marschnerPhysicalM of shaders/marschner.glsl, unscaled; `variation`: the material's roughness variation as
+// the shader reads it (MarschnerParams.caustic.w).
+glm::vec4 physicalM(const LutTexture& t, glm::vec4 ang, float tilt, float roughness, float variation,
+                    const LutSamplerOptions& o) {
+  const float u = gpu::marschnerPhysicalMCoord(ang.x), v = gpu::marschnerPhysicalMCoord(ang.y);
+  const bool tilted = tilt != 0.0f;
+  const glm::vec3 tiltedV = tilted ? gpu::marschnerPhysicalTiltedMV(ang.y, tilt) : glm::vec3(v);
+  const float layers = float(gpu::marschnerPhysicalMLayers(variation));
+  const glm::vec2 layer = gpu::marschnerPhysicalMLayer(roughness, variation);
+  glm::vec4 m = physicalMLayer(t, u, v, tiltedV, tilted, layer.x, layers, o);
+  if (layer.y > 0.0f) m = glm::mix(m, physicalMLayer(t, u, v, tiltedV, tilted, layer.x + 1.0f, layers, o), layer.y);
+  return m;
+}
+
+glm::vec3 evaluatePhysical(const MarschnerLut& lut, glm::vec4 ang, const LutSamplerOptions& o, float tilt,
+                           float roughness) {
   glm::vec4 c = gpu::marschnerPhysicalCoords(ang);
-  glm::vec4 m = physicalM(lut.textures.at(0), ang, tilt, o) * scaleOf(lut.textures[0]);
+  const float variation = float(lut.material.roughnessVariation);
+  glm::vec4 m = physicalM(lut.textures.at(0), ang, tilt, roughness, variation, o) * scaleOf(lut.textures[0]);
   glm::vec4 n0 = sampleBilinear(lut.textures.at(1), c.z, c.w, o) * scaleOf(lut.textures[1]);
   glm::vec4 n1 = sampleBilinear(lut.textures.at(2), c.z, c.w, o) * scaleOf(lut.textures[2]);
   return (m.x * n0.w + m.y * glm::vec3(n0) + m.z * glm::vec3(n1)) * gpu::marschnerPhysicalInvCosI(ang);
@@ -71,12 +85,12 @@ glm::vec4 sampleBilinear(const LutTexture& t, float u, float v, const LutSampler
 }
 
 glm::dvec3 evaluateLut(const MarschnerLut& lut, glm::dvec3 L, glm::dvec3 V, glm::dvec3 T,
-                       const LutSamplerOptions& options, float tilt) {
+                       const LutSamplerOptions& options, float tilt, float roughness) {
   glm::vec4 ang = gpu::marschnerAngles(glm::vec3(L), glm::vec3(V), glm::vec3(T));
   switch (lut.mode) {
     case LutMode::Paper: return glm::dvec3(evaluatePaper(lut, ang, options));
     case LutMode::Float: return glm::dvec3(evaluateFloat(lut, ang, options));
-    case LutMode::Physical: return glm::dvec3(evaluatePhysical(lut, ang, options, tilt));
+    case LutMode::Physical: return glm::dvec3(evaluatePhysical(lut, ang, options, tilt, roughness));
     case LutMode::Direct: break;
   }
   throw Error("evaluateLut: the direct mode has no lookup textures");

@@ -26,7 +26,7 @@ gpu::MarschnerParams marschnerGpuParams(const MarschnerLut& lut) {
   gpu::MarschnerParams p{};
   p.absorption = glm::vec4(glm::vec3(m.absorption), float(m.eta));
   p.longitudinal = glm::vec4(float(m.alphaR), float(m.betaR), float(m.kG), float(m.wc));
-  p.caustic = glm::vec4(float(m.dEta), float(m.dhM), float(m.tiltVariation), 0.0f);
+  p.caustic = glm::vec4(float(m.dEta), float(m.dhM), float(m.tiltVariation), float(m.roughnessVariation));
   glm::vec4* scales[3] = {&p.mScale, &p.n0Scale, &p.n1Scale};
   for (int t = 0; t < 3; ++t) {
     *scales[t] = glm::vec4(1.0f);

@@ -49,6 +49,7 @@ void HairMaterial::validate() const {
   requireRange("dhM", dhM, 0.0, true, 1.0, "must be in (0, 1]");
   requireRange("betaN", betaN, 2 * kDeg, false, 45 * kDeg, "must be in [2, 45] deg");
   requireRange("tiltVariation", tiltVariation, 0.0, false, 10 * kDeg, "must be in [0, 10] deg");
+  requireRange("roughnessVariation", roughnessVariation, 0.0, false, 0.25, "must be in [0, 0.25]");
 }
 
 glm::dvec3 absorptionFromColor(glm::dvec3 rgb) {

@@ -16,17 +16,43 @@ double safeCos(double s) { return std::max(std::sqrt(std::max(0.0, 1.0 - s * s))
 
 double logBesselI0(double x) {
   x = std::abs(x);
-  if (x < 500.0) return std::log(std::cyl_bessel_i(0.0, x));
-  // Asymptotic series: I0(x) ~ e^x / sqrt(2 pi x) (1 + 1/(8x) + 9/(128x^2) + 225/(3072x^3)).
-  double r = 1.0 / x;
-  return x - 0.5 * std::log(2.0 * kPi * x) + std::log1p(r * (0.125 + r * (9.0 / 128.0 + r * 225.0 / 3072.0)));
+  // Both series below have positive terms only (no cancellation: ~1e-15 relative), and they are 10x faster
+  // than std::cyl_bessel_i, which took a third of a physical LUT's build.
+  if (x < 25.0) {  // I0(x) = sum_k (x^2 / 4)^k / (k!)^2
+    const double q = 0.25 * x * x;
+    double term = 1.0, sum = 1.0;
+    for (int k = 1; term > 1e-17 * sum; ++k) {
+      term *= q / (double(k) * double(k));
+      sum += term;
+    }
+    return std::log(sum);
+  }
+  // Asymptotic: I0(x) = e^x / sqrt(2 pi x) sum_k ((2k - 1)!!)^2 / (k! (8x)^k). Its terms shrink until
+  // k ~ 2x, the smallest below e^-2x (2e-22 at x = 25): summed until they fall under 1e-17 of the sum.
+  const double r = 1.0 / (8.0 * x);
+  double term = 1.0, sum = 1.0;
+  for (int k = 1; k < 200; ++k) {
+    const double next = term * double(2 * k - 1) * double(2 * k - 1) * r / double(k);
+    if (next < 1e-17 * sum || next > term) break;
+    term = next;
+    sum += term;
+  }
+  return x - 0.5 * std::log(2.0 * kPi * x) + std::log(sum);
 }
 
-double deonM(double v, double sinI, double cosI, double sinR, double cosR) {
+namespace {
+// log of d'Eon's normalisation csch(1/v) / (2v) = e^{-1/v} / (v (1 - e^{-2/v})), in logs so that small v cannot
+// overflow.
+double deonLogNorm(double v) { return -1.0 / v - std::log(v) - std::log1p(-std::exp(-2.0 / v)); }
+
+double deonMWithNorm(double v, double logNorm, double sinI, double cosI, double sinR, double cosR) {
   double a = cosI * cosR / v, b = sinI * sinR / v;
-  // csch(1/v) / (2v) = e^{-1/v} / (v (1 - e^{-2/v})), in logs so that small v cannot overflow.
-  double logNorm = -1.0 / v - std::log(v) - std::log1p(-std::exp(-2.0 / v));
   return std::exp(logBesselI0(a) - b + logNorm);
+}
+}  // namespace
+
+double deonM(double v, double sinI, double cosI, double sinR, double cosR) {
+  return deonMWithNorm(v, deonLogNorm(v), sinI, cosI, sinR, cosR);
 }
 
 double physicalVariance(int p, const HairMaterial& m) {
@@ -38,13 +64,27 @@ double physicalShift(int p, const HairMaterial& m) {
   return p == 0 ? 2.0 * m.alphaR : p == 1 ? -m.alphaR : -4.0 * m.alphaR;
 }
 
-double physicalM(int p, double sinThetaI, double sinThetaR, const HairMaterial& m) {
+namespace {
+// sin and |cos| of theta_r - s_p, lobe p's shifted outgoing angle.
+glm::dvec2 shiftedOutgoing(int p, double sinThetaR, const HairMaterial& m) {
   double s = physicalShift(p, m);
-  double cosI = std::sqrt(std::max(0.0, 1.0 - sinThetaI * sinThetaI));
   double cosR = std::sqrt(std::max(0.0, 1.0 - sinThetaR * sinThetaR));
-  double sinRp = sinThetaR * std::cos(s) - cosR * std::sin(s);
-  double cosRp = std::abs(cosR * std::cos(s) + sinThetaR * std::sin(s));
-  return deonM(physicalVariance(p, m), sinThetaI, cosI, sinRp, cosRp);
+  return {sinThetaR * std::cos(s) - cosR * std::sin(s), std::abs(cosR * std::cos(s) + sinThetaR * std::sin(s))};
+}
+
+double cosOfSin(double s) { return std::sqrt(std::max(0.0, 1.0 - s * s)); }
+}  // namespace
+
+double physicalM(int p, double sinThetaI, double sinThetaR, const HairMaterial& m) {
+  const glm::dvec2 r = shiftedOutgoing(p, sinThetaR, m);
+  return deonM(physicalVariance(p, m), sinThetaI, cosOfSin(sinThetaI), r.x, r.y);
+}
+
+void physicalMRow(int p, double sinThetaR, const HairMaterial& m, const double* sinThetaI, int count, double* out) {
+  const glm::dvec2 r = shiftedOutgoing(p, sinThetaR, m);
+  const double v = physicalVariance(p, m), logNorm = deonLogNorm(v);
+  for (int i = 0; i < count; ++i)
+    out[i] = deonMWithNorm(v, logNorm, sinThetaI[i], cosOfSin(sinThetaI[i]), r.x, r.y);
 }
 
 PhysicalFibre physicalFibre(double sinThetaR, const HairMaterial& m) {
@@ -79,7 +119,7 @@ double physicalPhi(int p, double gammaO, double gammaT) {
 }
 
 double wrappedGaussian(double sigma, double x) {
-  x = std::remainder(x, 2.0 * kPi);  // [-pi, pi]
+  x -= 2.0 * kPi * std::nearbyint(x / (2.0 * kPi));  // [-pi, pi] (std::remainder: 5x slower, a third of N's build)
   double sum = 0.0, cut = 12.0 * sigma;
   for (int k = -2; k <= 2; ++k) {
     double y = x + 2.0 * kPi * k;

@@ -35,6 +35,9 @@ double deonM(double v, double sinI, double cosI, double sinR, double cosR);
 double physicalVariance(int p, const HairMaterial& m);
 double physicalShift(int p, const HairMaterial& m);
 double physicalM(int p, double sinThetaI, double sinThetaR, const HairMaterial& m);
+// physicalM of one lobe at one theta_r for many theta_i (what depends on theta_r alone computed once): out[k] at
+// sinThetaI[k], the same values.
+void physicalMRow(int p, double sinThetaR, const HairMaterial& m, const double* sinThetaI, int count, double* out);
 
 // Everything A_p(h) needs that depends on the outgoing angle only.
 struct PhysicalFibre {

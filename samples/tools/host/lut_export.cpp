@@ -81,7 +81,8 @@ nlohmann::json describeLut(const MarschnerLut& lut) {
                    {"dEta", m.dEta},
                    {"dhM", m.dhM},
                    {"betaN_rad", m.betaN},
-                   {"tiltVariation_rad", m.tiltVariation}};
+                   {"tiltVariation_rad", m.tiltVariation},
+                   {"roughnessVariation", m.roughnessVariation}};
   j["textures"] = nlohmann::json::array();
   for (const LutTexture& t : lut.textures) {
     j["textures"].push_back({{"name", t.name},

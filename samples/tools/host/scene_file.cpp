@@ -143,6 +143,7 @@ void readMaterial(JsonObject& root, HairMaterial& m) {
   o->read("dhM", m.dhM);
   o->readDegrees("betaNDeg", m.betaN);
   o->readDegrees("tiltVariationDeg", m.tiltVariation);
+  o->read("roughnessVariation", m.roughnessVariation);
   o->finish();
   validateSection(m, *o, root.pointer("material"));
 }
