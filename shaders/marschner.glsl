@@ -252,18 +252,16 @@ vec4 marschnerPhysicalMLayerTexel(sampler2D mTex, vec2 c, vec3 v, bool tilted, f
 // The physical model's longitudinal terms (M_R, M_TT, M_TRT, M_back) at marschnerAngles() `ang` for a fibre
 // whose cuticle tilt is alpha_R + tilt (radians; a strand's variation, shared/strands.h strandTilt) and whose
 // beta_R is scaled by `roughness` (strandRoughness): with a tilt, each lobe is read at its own shifted theta_r
-// (marschnerPhysicalTiltedMV), M_back where it lies; with a roughness variation, from the two layers around
-// the strand's scale, mixed.
+// (marschnerPhysicalTiltedMV), M_back where it lies; with a roughness variation, from the layer of the strand's
+// scale.
 vec4 marschnerPhysicalM(vec4 ang, float tilt, float roughness, sampler2D mTex) {
   vec2 c = vec2(marschnerPhysicalMCoord(ang.x), marschnerPhysicalMCoord(ang.y));
   bool tilted = tilt != 0.0;
   vec3 v = tilted ? marschnerPhysicalTiltedMV(ang.y, tilt) : vec3(c.y);
   float variation = marschner.caustic.w;
   float layers = float(marschnerPhysicalMLayers(variation));
-  vec2 layer = marschnerPhysicalMLayer(roughness, variation);
-  vec4 m = marschnerPhysicalMLayerTexel(mTex, c, v, tilted, layer.x, layers);
-  if (layer.y > 0.0) m = mix(m, marschnerPhysicalMLayerTexel(mTex, c, v, tilted, layer.x + 1.0, layers), layer.y);
-  return m * marschner.mScale;
+  float layer = marschnerPhysicalMLayer(roughness, variation);
+  return marschnerPhysicalMLayerTexel(mTex, c, v, tilted, layer, layers) * marschner.mScale;
 }
 
 // The physical model (docs/THEORY.md §4) from its longitudinal terms m (marschnerPhysicalM): N0 = (N_TT, N_R),

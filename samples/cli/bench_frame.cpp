@@ -83,6 +83,7 @@ FrameResult benchFrame(const vk::Context& ctx, const FrameCase& c) {
   settings.rasterSettings.fineWalk = c.fineWalk;
   settings.look.scattering = c.scattering;
   settings.lutMode = c.lutMode;
+  settings.material = c.material;
   settings.groom = c.groom ? scene.groom : GroomSettings{};
   const std::vector<LightSpec> lights = benchLights(c.lights);
   settings.shadowedLights = shadowSlotsFor(lights);

@@ -1,5 +1,5 @@
 // `hairpipe bench [--strands LIST] [--resolution WxH] [--frames N] [--raster LIST] [--msaa LIST]
-// [--skin-bounce off,on] [--scattering single,dual] [--lut-mode LIST] [--groom scene,none] [--json F]
+// [--skin-bounce off,on] [--scattering single,dual] [--lut-mode LIST] [--groom scene,none] [material options] [--json F]
 // [--plot F.svg]`: the whole frame on the default head (bench_frame.h) for each strand count and raster
 // path (once per --msaa value: the head's samples, and the graphics path's hair samples; once per fibre model
 // and scattering), after one warm-up frame: per pass the GPU-timestamp median (min/max) of N frames, the
@@ -22,6 +22,7 @@
 #include "samples/tools/interrupt_flag.h"
 #include "samples/cli/bench_plot.h"
 #include "samples/cli/command.h"
+#include "samples/cli/material_options.h"
 
 namespace hp::cli::cmd_bench {  // per subcommand: file-local names stay apart in a unity build
 
@@ -41,6 +42,7 @@ struct BenchOptions {
   std::vector<std::uint32_t> bounceSamples{hp::gpu::RENDER_BOUNCE_STRAND_SAMPLES};
   std::vector<std::string> fineWalks{"auto"};
   std::vector<std::string> grooms{"scene"};
+  hp::HairMaterial material;  // every case's (the material options)
   std::string json, plot, device;
 };
 
@@ -133,6 +135,7 @@ std::vector<hp::cli::FrameCase> cases(const BenchOptions& o) {
                       "], got " + std::to_string(n));
   hp::cli::FrameCase base;
   base.frames = o.frames;
+  base.material = o.material;
   parseResolution(o.resolution, base.width, base.height);
   base.opacityRaster = hp::render::parseOpacityRaster(o.opacityRaster);
   const auto shadingList = shadings(o);
@@ -183,6 +186,7 @@ nlohmann::json toJson(const hp::cli::FrameResult& r) {
   return {{"strands", r.c.strands},      {"width", r.c.width},          {"lod_fraction", r.c.lodFraction},
           {"shadowed_lights", r.c.lights},            {"bounce_samples", r.c.bounceSamples},
           {"fine_walk", hp::compute::fineWalkName(r.c.fineWalk)}, {"groom", r.c.groom ? "scene" : "none"},
+          {"roughness_variation", r.c.material.roughnessVariation},
           {"height", r.c.height},        {"raster", hp::cli::frameCaseName(r.c)},
           {"lut_mode", hp::lutModeName(r.c.lutMode)},
           {"scattering", hp::render::scatteringName(r.c.scattering)},
@@ -294,6 +298,7 @@ void setup(CLI::App& app) {
                   "The groom at interpolation: scene (the default head's clumps, wave and frizz) and/or none (comma "
                   "separated)")
       ->delimiter(',')->capture_default_str();
+  hp::cli::addMaterialOptions(*cmd, o->material);
   cmd->add_option("--json", o->json, "Write the report as JSON to this file");
   cmd->add_option("--plot", o->plot, "Write an SVG of ms per pass against strand count to this file");
   cmd->add_option("--device", o->device, "Vulkan device: index or name substring (env HAIRPIPE_DEVICE)");

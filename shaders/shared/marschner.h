@@ -14,7 +14,6 @@
 #include <cmath>
 #define HP_FN inline
 namespace hp::gpu {
-using vec2 = glm::vec2;
 using vec3 = glm::vec3;
 using uvec4 = glm::uvec4;
 using glm::clamp;
@@ -25,7 +24,6 @@ using glm::dot;
 using glm::inversesqrt;
 using glm::floor;
 using glm::max;
-using glm::min;
 using glm::normalize;
 using std::sqrt;
 }  // namespace hp::gpu
@@ -66,9 +64,9 @@ HP_CONST(uint, MARSCHNER_PHYSICAL_M_SIZE, 512u)
 HP_CONST(uint, MARSCHNER_PHYSICAL_N_WIDTH, 256u)
 HP_CONST(uint, MARSCHNER_PHYSICAL_N_HEIGHT, 128u)
 HP_CONST(float, MARSCHNER_PHYSICAL_MIN_COS_I, 1e-4f)
-// Layers of M where the roughness varies: 7 keep a strand halfway between two layers within the one-layer
-// accuracy limits at the largest variation, 0.25 (p99 1.6% against 2%, tests/shading/lut_accuracy_test.cpp), and
-// 7 x 512 rows within the 4,096 every Vulkan device must sample.
+// Layers of M where the roughness varies: one per roughness level of the strands (shared/strands.h
+// STRAND_ROUGHNESS_LEVELS, checked equal in engine/core/shading/marschner_gpu.cpp); 7 x 512 rows stay within the
+// 4,096 every Vulkan device must sample.
 HP_CONST(uint, MARSCHNER_PHYSICAL_M_LAYERS, 7u)
 
 HP_CONST(float, MARSCHNER_INV_SQRT2, 0.70710678f)
@@ -225,20 +223,19 @@ HP_FN vec3 marschnerPhysicalTiltedMV(float sinThetaR, float tilt) {
 
 // Per-strand roughness (physical mode): with a roughness variation V > 0 the M texture stacks
 // MARSCHNER_PHYSICAL_M_LAYERS squares along v, layer k built with beta_R x marschnerPhysicalMLayerScale(k, V), evenly
-// spaced over [1 - V, 1 + V]; a strand of scale s reads the two layers around s and mixes them linearly (a
-// strand at a layer's own scale reads it exactly). With V = 0: one layer.
+// spaced over [1 - V, 1 + V] (shared/strands.h strandRoughnessOfLevel: the strands' levels); a strand reads the
+// layer of its scale, exactly (a scale between layers reads the nearest). With V = 0: one layer.
 HP_FN uint marschnerPhysicalMLayers(float variation) { return variation > 0.0f ? MARSCHNER_PHYSICAL_M_LAYERS : 1u; }
 
 HP_FN float marschnerPhysicalMLayerScale(uint layer, float variation) {
   return 1.0f + variation * (2.0f * float(layer) / float(MARSCHNER_PHYSICAL_M_LAYERS - 1u) - 1.0f);
 }
 
-// (x, y): the layer below roughness scale s, and the weight of the layer above it.
-HP_FN vec2 marschnerPhysicalMLayer(float scale, float variation) {
-  if (!(variation > 0.0f)) return vec2(0.0f, 0.0f);
+// The layer of roughness scale s (0 without a variation).
+HP_FN float marschnerPhysicalMLayer(float scale, float variation) {
+  if (!(variation > 0.0f)) return 0.0f;
   float x = clamp((scale - 1.0f + variation) / (2.0f * variation), 0.0f, 1.0f) * float(MARSCHNER_PHYSICAL_M_LAYERS - 1u);
-  float k = min(floor(x), float(MARSCHNER_PHYSICAL_M_LAYERS - 2u));
-  return vec2(k, x - k);
+  return floor(x + 0.5f);
 }
 
 // The stacked texture's v of in-layer coordinate v (marschnerPhysicalMCoord) in layer `layer` of `layers`.

@@ -139,11 +139,21 @@ HP_STRANDS_FN float strandTilt(float random, float variation) {
 }
 
 // A strand's longitudinal roughness scale, multiplying the material's beta_R in its shading (every lobe's
-// width: v_TT and v_TRT follow v_R): uniform in [1 - variation, 1 + variation) (MarschnerParams.caustic.w,
-// hp::HairMaterial::roughnessVariation), on its own hash stream; the frame export writes each strand's value.
+// width: v_TT and v_TRT follow v_R): one of STRAND_ROUGHNESS_LEVELS values evenly spaced over [1 - variation,
+// 1 + variation], each as likely (MarschnerParams.caustic.w, hp::HairMaterial::roughnessVariation), on its own
+// hash stream. A level each because the physical M texture holds a layer per level (shared/marschner.h), which
+// a strand reads exactly; the frame export writes each strand's value.
 HP_CONST(uint, STRAND_STREAM_ROUGHNESS, 4u)
+HP_CONST(uint, STRAND_ROUGHNESS_LEVELS, 7u)
+HP_STRANDS_FN uint strandRoughnessLevel(float random) {
+  uint level = uint(strandHash01(strandKey(random), STRAND_STREAM_ROUGHNESS) * float(STRAND_ROUGHNESS_LEVELS));
+  return level < STRAND_ROUGHNESS_LEVELS ? level : STRAND_ROUGHNESS_LEVELS - 1u;
+}
+HP_STRANDS_FN float strandRoughnessOfLevel(uint level, float variation) {
+  return 1.0f + variation * (2.0f * float(level) / float(STRAND_ROUGHNESS_LEVELS - 1u) - 1.0f);
+}
 HP_STRANDS_FN float strandRoughness(float random, float variation) {
-  return 1.0f + variation * (2.0f * strandHash01(strandKey(random), STRAND_STREAM_ROUGHNESS) - 1.0f);
+  return strandRoughnessOfLevel(strandRoughnessLevel(random), variation);
 }
 
 // Sample distribution along a strand (Q vertices over the P - 1 Bezier segments). Particle i sits

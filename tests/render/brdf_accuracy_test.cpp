@@ -8,6 +8,7 @@
 #include "samples/tools/brdf_evaluator.h"
 #include "compute/raster/marschner_textures.h"
 #include "engine/core/shading/fibre_model.h"
+#include "shaders/shared/strands.h"
 #include "tests/render/brdf_test_util.h"
 #include "tests/support/vk_fixture.h"
 
@@ -125,7 +126,8 @@ TEST_F(VulkanTest, BrdfPhysicalAndDirectModesOnDeviceTakeEachRowsTiltAndRoughnes
   ASSERT_GT(variation, 0.0);
   for (std::size_t i = 0; i < queries.size(); ++i) {
     queries[i].tilt = float(glm::radians(-5.0 + 10.0 * double(i % 101) / 100.0));
-    queries[i].roughness = float(1.0 + variation * (2.0 * double(i % 97) / 96.0 - 1.0));
+    queries[i].roughness = hp::gpu::strandRoughnessOfLevel(std::uint32_t(i % hp::gpu::STRAND_ROUGHNESS_LEVELS),
+                                                           float(variation));
   }
   for (LutMode mode : {LutMode::Physical, LutMode::Direct}) {
     std::vector<glm::dvec3> exact;

@@ -75,21 +75,22 @@ TEST_F(VulkanTest, FrameExportCarriesEachStrandsTiltAndRoughnessAsTheShadingTook
   EXPECT_LT(*lo, -0.95f * variation);
   EXPECT_GT(*hi, 0.95f * variation);
 
-  // Roughness scales: uniform over [1 - V, 1 + V).
+  // Roughness scales: each of the levels evenly spaced over [1 - V, 1 + V], equally often.
   const float roughness = float(request.scene.material.roughnessVariation);
   ASSERT_EQ(frame.strandRoughness.size(), frame.strands.strandCount);
-  double sumOff = 0.0;
+  std::vector<std::uint32_t> perLevel(gpu::STRAND_ROUGHNESS_LEVELS, 0);
   for (std::uint32_t s = 0; s < frame.strands.strandCount; ++s) {
     const float r = frame.strandRoughness[s];
+    const std::uint32_t level = gpu::strandRoughnessLevel(capture.strands.attributes[s].random);
     ASSERT_EQ(r, gpu::strandRoughness(capture.strands.attributes[s].random, roughness)) << "strand " << s;
-    ASSERT_LE(std::abs(r - 1.0f), roughness * 1.000001f);
+    ASSERT_EQ(r, gpu::strandRoughnessOfLevel(level, roughness)) << "strand " << s;
     EXPECT_EQ(frame.strandMaterial(s).betaR, frame.material.betaR * double(r));
-    sumOff += std::abs(r - 1.0f);
+    ++perLevel[level];
   }
-  const auto [rlo, rhi] = std::minmax_element(frame.strandRoughness.begin(), frame.strandRoughness.end());
-  EXPECT_NEAR(sumOff / frame.strands.strandCount, 0.5 * roughness, 0.03 * roughness);
-  EXPECT_LT(*rlo, 1.0f - 0.95f * roughness);
-  EXPECT_GT(*rhi, 1.0f + 0.95f * roughness);
+  EXPECT_EQ(gpu::strandRoughnessOfLevel(0, roughness), 1.0f - roughness);
+  EXPECT_EQ(gpu::strandRoughnessOfLevel(gpu::STRAND_ROUGHNESS_LEVELS - 1, roughness), 1.0f + roughness);
+  const double expected = double(frame.strands.strandCount) / gpu::STRAND_ROUGHNESS_LEVELS;
+  for (std::uint32_t n : perLevel) EXPECT_NEAR(double(n), expected, 0.15 * expected);
 
   const auto dir = std::filesystem::temp_directory_path() / "hairpipe_frame_export_variation_test";
   std::filesystem::remove_all(dir);
@@ -155,6 +156,21 @@ std::vector<bool> changedPixels(const RenderResult& a, const RenderResult& b) {
   return changed;
 }
 
+// The correlation over the pixels `where` says between two frame differences, a - b and c - d (colour channels).
+double differenceCorrelation(const RenderResult& a, const RenderResult& b, const RenderResult& c, const RenderResult& d,
+                             const std::vector<bool>& where) {
+  const std::size_t channels = a.frame->linear.values.size() / where.size();
+  double sx = 0.0, sy = 0.0, sxx = 0.0, syy = 0.0, sxy = 0.0, n = 0.0;
+  for (std::size_t i = 0; i < a.frame->linear.values.size(); ++i) {
+    if (!where[i / channels] || i % channels > 2) continue;
+    const double x = double(a.frame->linear.values[i]) - double(b.frame->linear.values[i]);
+    const double y = double(c.frame->linear.values[i]) - double(d.frame->linear.values[i]);
+    sx += x, sy += y, sxx += x * x, syy += y * y, sxy += x * y, n += 1.0;
+  }
+  const double cov = sxy - sx * sy / n, vx = sxx - sx * sx / n, vy = syy - sy * sy / n;
+  return vx > 0.0 && vy > 0.0 ? cov / std::sqrt(vx * vy) : 0.0;
+}
+
 RenderRequest rasterFrame(RasterMode raster) {
   RenderRequest r = variedFrame(LutMode::Physical);
   r.scene.render.width = 128;
@@ -174,16 +190,19 @@ RenderRequest rasterFrame(RasterMode raster) {
 // strandRoughness from the strand's random value: the graphics raster's vertex-to-fragment varying, the compute
 // raster's shade pass): the same frame with and without the variation differs. The graphics raster is
 // deterministic: its two renders of one setting are identical, so any change is the variation's. The compute
-// raster's compositing order within a depth bin follows its atomics, so two of its renders differ (up to 1e-4
-// of the frame's radiance on lavapipe); both are therefore compared over the pixels the variation changed by
-// more than 2% in the graphics raster, where the compute raster's change must be of the graphics raster's size
-// and stand out of its two renders' difference there. Measured on lavapipe over those pixels (158 for the tilt, 59
-// for the roughness): tilt 4 deg, graphics 0.042, compute 0.048 (two renders 0.0007-0.0027); roughness 25%, graphics
-// 0.033, compute 0.031 (two renders 0.007-0.008); with the shade pass's roughness cut, compute read 0.0002-0.007
-// and failed.
+// raster's compositing order within a depth bin follows its atomics, so two of its renders differ (up to 1.3e-4
+// of the frame's radiance on lavapipe, 2% over the highlights the roughness moves); both are therefore compared
+// over the pixels the variation changed by more than 2% in the graphics raster, where the compute raster's
+// change must be of the graphics raster's size and follow it pixel by pixel (a correlation above 0.3: the
+// renders' own difference does not correlate with the variation's). Measured on lavapipe over those pixels (~156
+// for the tilt, 59-74 for the roughness): tilt 4 deg, graphics 0.042, compute 0.048 (two renders 0.0007-0.0027),
+// correlation 0.60-0.64; roughness 25%, graphics 0.033-0.035, compute 0.031-0.033 (two renders 0.007-0.022),
+// correlation 0.64; with the shade pass's roughness cut, compute read 0.0002-0.007, correlation -0.08 to 0.
+// (The tilt's cut read a change of 4.2e-5 of the whole frame, before this masked form.)
 void expectBothRastersShadeTheVariation(const vk::Context& ctx, const char* what, void (*leaveOut)(HairMaterial&)) {
   std::vector<bool> where;
   double graphicsChange = 0.0;
+  RenderResult graphicsA, graphicsC;
   for (RasterMode raster : {RasterMode::Graphics, RasterMode::Compute}) {
     const RenderRequest varied = rasterFrame(raster);
     RenderRequest plain = varied;
@@ -192,7 +211,7 @@ void expectBothRastersShadeTheVariation(const vk::Context& ctx, const char* what
     const RenderResult a = renderStill(ctx, asset, varied), b = renderStill(ctx, asset, varied),
                        c = renderStill(ctx, asset, plain);
     ASSERT_TRUE(a.frame && b.frame && c.frame);
-    if (raster == RasterMode::Graphics) where = changedPixels(a, c);
+    if (raster == RasterMode::Graphics) where = changedPixels(a, c), graphicsA = a, graphicsC = c;
     const std::size_t pixels = std::size_t(std::count(where.begin(), where.end(), true));
     const double same = relativeChange(a, b, where), change = relativeChange(a, c, where);
     std::cout << rasterModeName(raster) << ": " << what << " against none: mean change " << change << " over the "
@@ -203,8 +222,10 @@ void expectBothRastersShadeTheVariation(const vk::Context& ctx, const char* what
       EXPECT_EQ(same, 0.0);
       graphicsChange = change;
     } else {
+      const double correlation = differenceCorrelation(a, c, graphicsA, graphicsC, where);
+      std::cout << "  correlation with the graphics raster's change: " << correlation << "\n";
       EXPECT_GT(change, 0.5 * graphicsChange);
-      EXPECT_GT(change, 3.0 * same) << "the change should stand out of two renders' difference";
+      EXPECT_GT(correlation, 0.3) << "the change should follow the graphics raster's, pixel by pixel";
     }
   }
 }

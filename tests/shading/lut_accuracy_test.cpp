@@ -10,6 +10,7 @@
 #include "engine/core/shading/lut.h"
 #include "engine/core/shading/lut_sampler.h"
 #include "shaders/shared/marschner.h"
+#include "shaders/shared/strands.h"
 #include "tests/shading/accuracy.h"
 
 using namespace hp;
@@ -162,31 +163,33 @@ TEST(LutAccuracy, PhysicalModeTakesAStrandsTiltLikeTheExactModel) {
   }
 }
 
-// A strand's roughness scale (MarschnerParams.caustic.w, shaders/shared/strands.h strandRoughness): the physical
-// texture's layers, built at beta_R x the layers' scales, read at the two layers around the strand's scale and
-// mixed, against the exact S of the material with beta_R x scale (the reference's per-strand material), within
-// the limits of one layer; the scales include the variation's ends (a layer each) and points halfway between
-// layers, where the mix is furthest from any layer. Negative control: the same lookups at scale 1 miss that exact
-// S by far more at the variation's ends.
+// A strand's roughness scale (MarschnerParams.caustic.w, shaders/shared/strands.h strandRoughness, one of its
+// levels): the physical texture's layer of that level, built at beta_R x the level's scale, against the exact S
+// of the material with beta_R x scale (the reference's per-strand material), within the one-layer limits, at
+// every level of the largest variation. Negative control: the same lookups at scale 1 miss that exact S by far
+// more at the variation's ends.
 TEST(LutAccuracy, PhysicalModeTakesAStrandsRoughnessLikeTheExactModel) {
   HairMaterial m;
   m.roughnessVariation = 0.25;
   const MarschnerLut lut = buildLut(LutMode::Physical, m);
   ASSERT_EQ(lut.textures.at(0).height, gpu::MARSCHNER_PHYSICAL_M_SIZE * gpu::MARSCHNER_PHYSICAL_M_LAYERS);
-  const double step = 2.0 * m.roughnessVariation / double(gpu::MARSCHNER_PHYSICAL_M_LAYERS - 1u);
-  for (double scale : {0.75, 0.75 + 0.5 * step, 1.0 + 0.5 * step, 1.25 - 0.5 * step, 1.25}) {
+  for (std::uint32_t level = 0; level < gpu::STRAND_ROUGHNESS_LEVELS; ++level) {
+    const float scale = gpu::strandRoughnessOfLevel(level, float(m.roughnessVariation));
     HairMaterial rough = m;
-    rough.betaR *= double(float(scale));
+    rough.betaR *= double(scale);
     const auto lookup = [&](float s) {
       return [&lut, s](glm::dvec3 L, glm::dvec3 V, glm::dvec3 T) { return evaluateLut(lut, L, V, T, {}, 0.0f, s); };
     };
-    const test::AccuracyStats s = test::measureAccuracy(lookup(float(scale)), rough, 10000, kSeed, FibreModel::Physical);
-    const test::AccuracyStats unscaled = test::measureAccuracy(lookup(1.0f), rough, 10000, kSeed, FibreModel::Physical);
-    std::cout << "[physical, roughness x" << scale << "] " << s.str() << "; read at x1 " << unscaled.str() << "\n";
+    const test::AccuracyStats s = test::measureAccuracy(lookup(scale), rough, 4000, kSeed, FibreModel::Physical);
+    std::cout << "[physical, roughness x" << scale << "] " << s.str() << "\n";
     EXPECT_LE(s.median, 0.003) << scale;
     EXPECT_LE(s.p99, 0.02) << scale;
     EXPECT_LE(s.relativeSum, 0.02) << scale;
-    if (scale == 0.75 || scale == 1.25) EXPECT_GT(unscaled.relativeSum, 5.0 * s.relativeSum) << scale;
+    if (level == 0 || level + 1 == gpu::STRAND_ROUGHNESS_LEVELS) {
+      const test::AccuracyStats unscaled = test::measureAccuracy(lookup(1.0f), rough, 4000, kSeed, FibreModel::Physical);
+      std::cout << "  read at x1: " << unscaled.str() << "\n";
+      EXPECT_GT(unscaled.relativeSum, 5.0 * s.relativeSum) << scale;
+    }
   }
 }
 

@@ -56,10 +56,7 @@ glm::vec4 physicalM(const LutTexture& t, glm::vec4 ang, float tilt, float roughn
   const bool tilted = tilt != 0.0f;
   const glm::vec3 tiltedV = tilted ? gpu::marschnerPhysicalTiltedMV(ang.y, tilt) : glm::vec3(v);
   const float layers = float(gpu::marschnerPhysicalMLayers(variation));
-  const glm::vec2 layer = gpu::marschnerPhysicalMLayer(roughness, variation);
-  glm::vec4 m = physicalMLayer(t, u, v, tiltedV, tilted, layer.x, layers, o);
-  if (layer.y > 0.0f) m = glm::mix(m, physicalMLayer(t, u, v, tiltedV, tilted, layer.x + 1.0f, layers, o), layer.y);
-  return m;
+  return physicalMLayer(t, u, v, tiltedV, tilted, gpu::marschnerPhysicalMLayer(roughness, variation), layers, o);
 }
 
 glm::vec3 evaluatePhysical(const MarschnerLut& lut, glm::vec4 ang, const LutSamplerOptions& o, float tilt,

@@ -18,7 +18,7 @@ glm::vec4 sampleBilinear(const LutTexture& texture, float u, float v, const LutS
 
 // S from the LUT for non-zero L, V, T. Throws hp::Error for LutMode::Direct (nothing to sample). tilt: the
 // fibre's cuticle tilt offset from the material's alpha_R (radians), roughness: the scale of its beta_R (read
-// from the M texture's layers around it); the physical mode takes both as the shader does (marschnerPhysicalM),
+// from the M texture's layer of it); the physical mode takes both as the shader does (marschnerPhysicalM),
 // the paper and float modes ignore them.
 glm::dvec3 evaluateLut(const MarschnerLut& lut, glm::dvec3 L, glm::dvec3 V, glm::dvec3 T,
                        const LutSamplerOptions& options = {}, float tilt = 0.0f, float roughness = 1.0f);
