@@ -239,12 +239,12 @@ vec3 marschnerLutFloat(vec3 L, vec3 V, vec3 T, sampler2D mTex, sampler2D n0Tex, 
 
 // One layer of the physical M texture (shared/marschner.h marschnerPhysicalMLayers) at in-layer coordinates c,
 // each lobe at its own tilted v (xyz) where the strand is tilted.
-vec4 marschnerPhysicalMLayerTexel(sampler2D mTex, vec2 c, vec3 v, bool tilted, float layer, float layers) {
-  vec4 m = textureLod(mTex, vec2(c.x, marschnerPhysicalMLayerV(c.y, layer, layers)), 0.0);
+vec4 marschnerPhysicalMLayerTexel(sampler2D mTex, vec2 c, vec3 v, bool tilted, float layer, float invLayers) {
+  vec4 m = textureLod(mTex, vec2(c.x, marschnerPhysicalMLayerV(c.y, layer, invLayers)), 0.0);
   if (tilted) {
-    m.x = textureLod(mTex, vec2(c.x, marschnerPhysicalMLayerV(v.x, layer, layers)), 0.0).x;
-    m.y = textureLod(mTex, vec2(c.x, marschnerPhysicalMLayerV(v.y, layer, layers)), 0.0).y;
-    m.z = textureLod(mTex, vec2(c.x, marschnerPhysicalMLayerV(v.z, layer, layers)), 0.0).z;
+    m.x = textureLod(mTex, vec2(c.x, marschnerPhysicalMLayerV(v.x, layer, invLayers)), 0.0).x;
+    m.y = textureLod(mTex, vec2(c.x, marschnerPhysicalMLayerV(v.y, layer, invLayers)), 0.0).y;
+    m.z = textureLod(mTex, vec2(c.x, marschnerPhysicalMLayerV(v.z, layer, invLayers)), 0.0).z;
   }
   return m;
 }
@@ -259,9 +259,9 @@ vec4 marschnerPhysicalM(vec4 ang, float tilt, float roughness, sampler2D mTex) {
   bool tilted = tilt != 0.0;
   vec3 v = tilted ? marschnerPhysicalTiltedMV(ang.y, tilt) : vec3(c.y);
   float variation = marschner.caustic.w;
-  float layers = float(marschnerPhysicalMLayers(variation));
+  float invLayers = 1.0 / float(marschnerPhysicalMLayers(variation));
   float layer = marschnerPhysicalMLayer(roughness, variation);
-  return marschnerPhysicalMLayerTexel(mTex, c, v, tilted, layer, layers) * marschner.mScale;
+  return marschnerPhysicalMLayerTexel(mTex, c, v, tilted, layer, invLayers) * marschner.mScale;
 }
 
 // The physical model (docs/THEORY.md §4) from its longitudinal terms m (marschnerPhysicalM): N0 = (N_TT, N_R),

@@ -238,8 +238,9 @@ HP_FN float marschnerPhysicalMLayer(float scale, float variation) {
   return floor(x + 0.5f);
 }
 
-// The stacked texture's v of in-layer coordinate v (marschnerPhysicalMCoord) in layer `layer` of `layers`.
-HP_FN float marschnerPhysicalMLayerV(float v, float layer, float layers) { return (layer + v) / layers; }
+// The stacked texture's v of in-layer coordinate v (marschnerPhysicalMCoord) in layer `layer`, 1 / the layer
+// count given (one division for a shading point's four lookups; with one layer, v itself).
+HP_FN float marschnerPhysicalMLayerV(float v, float layer, float invLayers) { return (layer + v) * invLayers; }
 
 // 1 / cos theta_i of the physical S, floored like the exact form.
 HP_FN float marschnerPhysicalInvCosI(vec4 angles) {

@@ -176,14 +176,14 @@ TEST(MultipleScattering, BackLobeTextureIntegratesToOneAgainstCosThetaR) {
     const MarschnerLut lut = buildPhysicalLut(*m, LutFormat::RGBA16F);
     // The layer a strand of roughness scale 1 reads (every layer holds the same back lobe).
     const float variation = float(m->roughnessVariation);
-    const float layers = float(gpu::marschnerPhysicalMLayers(variation));
+    const float invLayers = 1.0f / float(gpu::marschnerPhysicalMLayers(variation));
     const float layer = gpu::marschnerPhysicalMLayer(1.0f, variation);
     for (double degrees : {-85.0, -60.0, -20.0, 0.0, 35.0, 70.0, 88.0}) {
       const float si = float(std::sin(glm::radians(degrees)));
       double integral = 0.0;
       shading::gaussLegendre(-0.5 * shading::kPi, 0.5 * shading::kPi, 64, [&](double tr, double w) {
         const glm::vec4 c = gpu::marschnerPhysicalCoords(glm::vec4(si, float(std::sin(tr)), 0.0f, 0.0f));
-        const float v = gpu::marschnerPhysicalMLayerV(c.y, layer, layers);
+        const float v = gpu::marschnerPhysicalMLayerV(c.y, layer, invLayers);
         integral += w * std::cos(tr) * sampleBilinear(lut.textures[0], c.x, v).w;
       });
       EXPECT_NEAR(integral, 1.0, 0.03) << "theta_i " << degrees;

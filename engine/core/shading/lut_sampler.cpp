@@ -41,10 +41,10 @@ glm::vec3 evaluateFloat(const MarschnerLut& lut, glm::vec4 ang, const LutSampler
 
 // marschnerPhysicalMLayerTexel of shaders/marschner.glsl.
 glm::vec4 physicalMLayer(const LutTexture& t, float u, float v, glm::vec3 tiltedV, bool tilted, float layer,
-                         float layers, const LutSamplerOptions& o) {
-  glm::vec4 m = sampleBilinear(t, u, gpu::marschnerPhysicalMLayerV(v, layer, layers), o);
+                         float invLayers, const LutSamplerOptions& o) {
+  glm::vec4 m = sampleBilinear(t, u, gpu::marschnerPhysicalMLayerV(v, layer, invLayers), o);
   if (tilted)
-    for (int p = 0; p < 3; ++p) m[p] = sampleBilinear(t, u, gpu::marschnerPhysicalMLayerV(tiltedV[p], layer, layers), o)[p];
+    for (int p = 0; p < 3; ++p) m[p] = sampleBilinear(t, u, gpu::marschnerPhysicalMLayerV(tiltedV[p], layer, invLayers), o)[p];
   return m;
 }
 
@@ -55,8 +55,8 @@ glm::vec4 physicalM(const LutTexture& t, glm::vec4 ang, float tilt, float roughn
   const float u = gpu::marschnerPhysicalMCoord(ang.x), v = gpu::marschnerPhysicalMCoord(ang.y);
   const bool tilted = tilt != 0.0f;
   const glm::vec3 tiltedV = tilted ? gpu::marschnerPhysicalTiltedMV(ang.y, tilt) : glm::vec3(v);
-  const float layers = float(gpu::marschnerPhysicalMLayers(variation));
-  return physicalMLayer(t, u, v, tiltedV, tilted, gpu::marschnerPhysicalMLayer(roughness, variation), layers, o);
+  const float invLayers = 1.0f / float(gpu::marschnerPhysicalMLayers(variation));
+  return physicalMLayer(t, u, v, tiltedV, tilted, gpu::marschnerPhysicalMLayer(roughness, variation), invLayers, o);
 }
 
 glm::vec3 evaluatePhysical(const MarschnerLut& lut, glm::vec4 ang, const LutSamplerOptions& o, float tilt,
