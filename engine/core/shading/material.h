@@ -23,10 +23,10 @@ struct HairMaterial {
   // direct modes and the reference take it; the paper and float LUT modes ignore it.
   double tiltVariation = glm::radians(2.0);
   // Per-strand variation of the longitudinal roughness ([0, 0.25]): each render strand shades with betaR x s,
-  // s uniform in [1 - roughnessVariation, 1 + roughnessVariation) from the strand's key (shaders/shared/strands.h
-  // strandRoughness), so neighbouring strands' highlights differ in width and peak. The physical mode reads
-  // it from layers of its M texture (docs/SHADING.md "Per-strand variation"), the direct mode scales beta_R;
-  // the reference takes it; the paper and float LUT modes ignore it.
+  // s one of 7 levels evenly spaced over [1 - roughnessVariation, 1 + roughnessVariation], picked by the strand's
+  // key (shaders/shared/strands.h strandRoughness), so neighbouring strands' highlights differ in width and peak.
+  // The physical mode reads a layer of its M texture per level (docs/SHADING.md "Per-strand roughness"), the
+  // direct mode scales beta_R; the reference takes it; the paper and float LUT modes ignore it.
   double roughnessVariation = 0.15;
 
   void validate() const;

@@ -86,8 +86,9 @@ struct Material {
   // Each strand's alphaR is offset by a value uniform in [-tiltVariation, tiltVariation) from its own hash,
   // [0, 10 degrees] (physical and direct shading; the paper and float lookup modes ignore it).
   double tiltVariation = 0.034906585039886591;         // 2 degrees
-  // Each strand's betaR is scaled by a value uniform in [1 - roughnessVariation, 1 + roughnessVariation) from its
-  // own hash, [0, 0.25] (physical and direct shading; the paper and float lookup modes ignore it).
+  // Each strand's betaR is scaled by one of 7 levels evenly spaced over [1 - roughnessVariation,
+  // 1 + roughnessVariation], picked by its own hash; [0, 0.25] (physical and direct shading; the paper and float
+  // lookup modes ignore it).
   double roughnessVariation = 0.15;
 };
 // The absorption that gives a fibre this colour of its forward-scattering highlight: each linear RGB
