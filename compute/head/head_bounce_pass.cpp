@@ -6,15 +6,14 @@
 
 namespace hp::render {
 namespace {
-constexpr VkShaderStageFlags kFragment = VK_SHADER_STAGE_FRAGMENT_BIT;
 const vk::Binding kHeadBounceBindings[] = {
-    {gpu::RENDER_BINDING_FRAME, vk::kStorage, vk::kVertex | kFragment},
+    {gpu::RENDER_BINDING_FRAME, vk::kStorage, vk::kVertex | vk::kFragment},
     {gpu::RENDER_BINDING_POSITIONS, vk::kStorage, vk::kVertex},
     {gpu::RENDER_BINDING_TANGENTS, vk::kStorage, vk::kVertex},
     {gpu::RENDER_BINDING_ATTRIBUTES, vk::kStorage, vk::kVertex},
-    {gpu::RENDER_BINDING_OPACITY, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kFragment},
-    {gpu::RENDER_BINDING_HEAD_SHADOW, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kFragment},
-    {gpu::RENDER_BINDING_LIGHT, vk::kStorage, kFragment},
+    {gpu::RENDER_BINDING_OPACITY, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, vk::kFragment},
+    {gpu::RENDER_BINDING_HEAD_SHADOW, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, vk::kFragment},
+    {gpu::RENDER_BINDING_LIGHT, vk::kStorage, vk::kFragment},
 };
 }  // namespace
 

@@ -16,9 +16,9 @@
 // returns false and touches nothing otherwise). It blocks on the context's queue (uploads through
 // submitAndWait) and rewrites images and UBO in place, so THE CALLER must make sure the GPU no longer
 // uses them (e.g. its frame fences, or Context::waitIdle in an owner that owns the queue); hairpipe never
-// waits idle on its own. Image views survive a rebuild when the mode (hence every size and format) is
-// unchanged; a mode change recreates them, so descriptors must be written again after any rebuild()
-// that returned true. An invalid material, or a LUT format the device cannot filter linearly (RGBA32F
+// waits idle on its own. Image views survive a rebuild when every texture's size and format is unchanged;
+// a mode change, or a physical material's roughness variation turning on or off (the M texture gains or loses
+// its layers), recreates them, so descriptors must be written again after any rebuild() that returned true. An invalid material, or a LUT format the device cannot filter linearly (RGBA32F
 // on request), throws hp::Error and leaves the old state; a Vulkan failure during the upload itself
 // throws too and leaves the textures unusable.
 #include "hairpipe_volk.h"

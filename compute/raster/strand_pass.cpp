@@ -5,23 +5,22 @@
 namespace hp::render {
 namespace {
 constexpr VkShaderStageFlags kBoth = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
-constexpr VkShaderStageFlags kFragment = VK_SHADER_STAGE_FRAGMENT_BIT;
 const vk::Binding kStrandBindings[] = {
     {gpu::RENDER_BINDING_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, kBoth},
-    {gpu::RENDER_BINDING_MARSCHNER, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kFragment},
-    {gpu::RENDER_BINDING_LUT_M, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kFragment},
-    {gpu::RENDER_BINDING_LUT_N0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kFragment},
-    {gpu::RENDER_BINDING_LUT_N1, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kFragment},
-    {gpu::RENDER_BINDING_OPACITY, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kFragment},
-    {gpu::RENDER_BINDING_HEAD_SHADOW, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kFragment},
-    {gpu::RENDER_BINDING_LIGHT, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kFragment},
+    {gpu::RENDER_BINDING_MARSCHNER, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, vk::kFragment},
+    {gpu::RENDER_BINDING_LUT_M, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, vk::kFragment},
+    {gpu::RENDER_BINDING_LUT_N0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, vk::kFragment},
+    {gpu::RENDER_BINDING_LUT_N1, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, vk::kFragment},
+    {gpu::RENDER_BINDING_OPACITY, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, vk::kFragment},
+    {gpu::RENDER_BINDING_HEAD_SHADOW, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, vk::kFragment},
+    {gpu::RENDER_BINDING_LIGHT, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, vk::kFragment},
     {gpu::RENDER_BINDING_POSITIONS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, vk::kVertex},
     {gpu::RENDER_BINDING_TANGENTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, vk::kVertex},
     {gpu::RENDER_BINDING_ATTRIBUTES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, vk::kVertex},
     {gpu::RENDER_BINDING_BOUNCE_SAMPLES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, vk::kVertex},
 };
 
-std::shared_ptr<const vk::GraphicsPipeline> makePipeline(const vk::Context& ctx, vk::PipelineLibrary* library,
+std::shared_ptr<const vk::GraphicsPipeline> makeStrandPipeline(const vk::Context& ctx, vk::PipelineLibrary* library,
                                                          VkDescriptorSetLayout layout,
                                                          const hairpipe::AttachmentFormats& formats, bool lines) {
   vk::GraphicsPipelineDesc desc;
@@ -61,8 +60,8 @@ StrandPass::StrandPass(const vk::Context& ctx, const compute::StrandBuffers& str
     set.writeStorageBuffer(gpu::RENDER_BINDING_BOUNCE_SAMPLES, chunk.bounce.handle());
     sets_.push_back(std::move(set));
   }
-  ribbons_ = makePipeline(ctx, library, sets_.front().layout(), formats, false);
-  lines_ = makePipeline(ctx, library, sets_.front().layout(), formats, true);
+  ribbons_ = makeStrandPipeline(ctx, library, sets_.front().layout(), formats, false);
+  lines_ = makeStrandPipeline(ctx, library, sets_.front().layout(), formats, true);
 }
 
 void StrandPass::draw(VkCommandBuffer cmd, VkExtent2D extent, bool lines, std::uint32_t frameOffset,

@@ -71,7 +71,7 @@ gpu::RasterState armedState() {
   return s;
 }
 
-vk::Buffer deviceBuffer(const vk::Context& ctx, VkDeviceSize bytes, VkBufferUsageFlags usage, const std::string& name,
+vk::Buffer rasterBuffer(const vk::Context& ctx, VkDeviceSize bytes, VkBufferUsageFlags usage, const std::string& name,
                         VkDeviceSize limit) {
   if (bytes > limit)
     throw Error("compute raster: the " + name + " buffer needs " + std::to_string(bytes) +
@@ -157,19 +157,19 @@ StrandRasterPass::StrandRasterPass(const vk::Context& ctx, std::span<const Raste
   const std::uint64_t tiles = std::uint64_t(tilesX_) * tilesY_;
   const std::size_t chunks = chunkCount(sources);
   capacity_ = rasterListCapacity(segments, tiles, limit);
-  screen_ = deviceBuffer(ctx, vertices * 16, kStorageUsage, "screen vertices", limit);
-  colors_ = deviceBuffer(ctx, vertices * 8, kStorageUsage, "vertex colours", limit);
-  shadeFlags_ = deviceBuffer(ctx, vertices * 4, kArmedUsage, "shade flags", limit);
-  shadeList_ = deviceBuffer(ctx, vertices * 4, kStorageUsage, "shade list", limit);
-  shadeArgs_ = deviceBuffer(ctx, chunks * 16, kArmedUsage | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, "shade dispatch", limit);
-  motion_ = deviceBuffer(ctx, settings.motion ? vertices * 4 : 16, kStorageUsage, "vertex motion", limit);
-  state_ = deviceBuffer(ctx, sizeof(gpu::RasterState), kArmedUsage, "state", limit);
-  counts_ = deviceBuffer(ctx, tiles * gpu::RASTER_DEPTH_BINS * 4, kArmedUsage, "key counts", limit);
-  keys_ = deviceBuffer(ctx, tiles * gpu::RASTER_DEPTH_BINS * 8, kStorageUsage, "keys", limit);
-  tiles_ = deviceBuffer(ctx, tiles * 8, kStorageUsage, "tiles", limit);
-  tileDepth_ = deviceBuffer(ctx, tiles * 4, kStorageUsage, "tile head depth", limit);
-  blocks_ = deviceBuffer(ctx, divUp(std::uint32_t(tiles), gpu::RASTER_SCAN_SIZE) * 4, kStorageUsage, "blocks", limit);
-  list_ = deviceBuffer(ctx, VkDeviceSize(capacity_) * 8, kStorageUsage, "tile lists", limit);
+  screen_ = rasterBuffer(ctx, vertices * 16, kStorageUsage, "screen vertices", limit);
+  colors_ = rasterBuffer(ctx, vertices * 8, kStorageUsage, "vertex colours", limit);
+  shadeFlags_ = rasterBuffer(ctx, vertices * 4, kArmedUsage, "shade flags", limit);
+  shadeList_ = rasterBuffer(ctx, vertices * 4, kStorageUsage, "shade list", limit);
+  shadeArgs_ = rasterBuffer(ctx, chunks * 16, kArmedUsage | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, "shade dispatch", limit);
+  motion_ = rasterBuffer(ctx, settings.motion ? vertices * 4 : 16, kStorageUsage, "vertex motion", limit);
+  state_ = rasterBuffer(ctx, sizeof(gpu::RasterState), kArmedUsage, "state", limit);
+  counts_ = rasterBuffer(ctx, tiles * gpu::RASTER_DEPTH_BINS * 4, kArmedUsage, "key counts", limit);
+  keys_ = rasterBuffer(ctx, tiles * gpu::RASTER_DEPTH_BINS * 8, kStorageUsage, "keys", limit);
+  tiles_ = rasterBuffer(ctx, tiles * 8, kStorageUsage, "tiles", limit);
+  tileDepth_ = rasterBuffer(ctx, tiles * 4, kStorageUsage, "tile head depth", limit);
+  blocks_ = rasterBuffer(ctx, divUp(std::uint32_t(tiles), gpu::RASTER_SCAN_SIZE) * 4, kStorageUsage, "blocks", limit);
+  list_ = rasterBuffer(ctx, VkDeviceSize(capacity_) * 8, kStorageUsage, "tile lists", limit);
   output_ = outputImage(ctx, extent, true, VK_FORMAT_R16G16B16A16_SFLOAT, "raster hair image");
   nearOutput_ = outputImage(ctx, extent, multisampled(), VK_FORMAT_R16G16B16A16_SFLOAT, "raster hair image (near layer)");
   nearMask_ = outputImage(ctx, extent, multisampled(), VK_FORMAT_R32_UINT, "raster near-layer sample mask");

@@ -31,7 +31,7 @@ vk::Buffer makeBounceFrame(const vk::Context& ctx) {
                     vk::MemoryKind::DeviceLocal, "head bounce frame");
 }
 
-std::uint32_t alignUp(std::size_t size, VkDeviceSize alignment) {
+std::uint32_t alignedSize(std::size_t size, VkDeviceSize alignment) {
   return static_cast<std::uint32_t>((size + alignment - 1) / alignment * alignment);
 }
 }  // namespace
@@ -63,7 +63,7 @@ HairInstance::HairInstance(Renderer& renderer, const HairAsset& asset, const Ins
       marschner_(renderer.marschner(settings.material, settings.lutMode)) {
   const vk::Context& ctx = renderer.context();
   const RendererSettings& rs = renderer.settings();
-  frameStride_ = alignUp(sizeof(gpu::RenderFrame), ctx.properties().limits.minUniformBufferOffsetAlignment);
+  frameStride_ = alignedSize(sizeof(gpu::RenderFrame), ctx.properties().limits.minUniformBufferOffsetAlignment);
   frames_ = vk::Buffer(ctx, VkDeviceSize(frameStride_) * rs.framesInFlight * rs.maxViewsPerFrame,
                        VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, vk::MemoryKind::Upload, "render frame ring");
   // Valid blocks from the start, so a draw before any prepared view reads sane values.

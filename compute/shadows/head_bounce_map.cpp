@@ -8,7 +8,7 @@
 
 namespace hp::render {
 namespace {
-vk::Image makeImage(const vk::Context& ctx, VkFormat format, VkImageUsageFlags usage, const char* name) {
+vk::Image makeBounceMapImage(const vk::Context& ctx, VkFormat format, VkImageUsageFlags usage, const char* name) {
   vk::ImageDesc desc;
   desc.width = desc.height = gpu::RENDER_BOUNCE_RESOLUTION;
   desc.format = format;
@@ -22,9 +22,9 @@ constexpr VkImageUsageFlags kColorUsage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | 
 
 HeadBounceMap::HeadBounceMap(const vk::Context& ctx)
     : ctx_(&ctx),
-      flux_(makeImage(ctx, kFormat, kColorUsage, "head bounce flux")),
-      position_(makeImage(ctx, kFormat, kColorUsage, "head bounce position")),
-      depth_(makeImage(ctx, kDepthFormat, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT, "head bounce depth")),
+      flux_(makeBounceMapImage(ctx, kFormat, kColorUsage, "head bounce flux")),
+      position_(makeBounceMapImage(ctx, kFormat, kColorUsage, "head bounce position")),
+      depth_(makeBounceMapImage(ctx, kDepthFormat, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT, "head bounce depth")),
       sampler_(ctx, "head bounce sampler", VK_FILTER_NEAREST) {
   vk::submitAndWait(ctx, [&](VkCommandBuffer cmd) {
     transition(cmd, vk::ImageUse::Undefined, vk::ImageUse::FragmentSampled);

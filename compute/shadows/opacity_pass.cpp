@@ -13,18 +13,18 @@
 
 namespace hp::render {
 namespace {
-const vk::Binding kStrandBindings[] = {
+const vk::Binding kOpacityStrandBindings[] = {
     {gpu::OPACITY_BINDING_POSITIONS, vk::kStorage, vk::kVertex},
     {gpu::OPACITY_BINDING_LIGHT, vk::kStorage, vk::kVertex},
 };
-const vk::Binding kHeadBindings[] = {
+const vk::Binding kOpacityHeadBindings[] = {
     {gpu::OPACITY_BINDING_POSITIONS, vk::kStorage, vk::kVertex},
     {gpu::OPACITY_BINDING_INDICES, vk::kStorage, vk::kVertex},
     {gpu::OPACITY_BINDING_LIGHT, vk::kStorage, vk::kVertex},
 };
 constexpr VkBufferUsageFlags kMeshUsage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
 
-std::shared_ptr<const vk::GraphicsPipeline> makePipeline(const vk::Context& ctx, vk::PipelineLibrary* library,
+std::shared_ptr<const vk::GraphicsPipeline> makeOpacityPipeline(const vk::Context& ctx, vk::PipelineLibrary* library,
                                                          VkDescriptorSetLayout layout, VkFormat format, bool head) {
   vk::GraphicsPipelineDesc desc;
   desc.vertexShader = head ? "opacity_head.vert" : "opacity.vert";
@@ -44,8 +44,8 @@ OpacityPass::OpacityPass(const vk::Context& ctx, const compute::StrandBuffers& s
     : ctx_(ctx), maps_(maps) {
   uploadHead(head);
   bind(strands);
-  strandPipeline_ = makePipeline(ctx, library, strandSets_.front().layout(), maps.settings().format, false);
-  headPipeline_ = makePipeline(ctx, library, headSet_.layout(), maps.settings().format, true);
+  strandPipeline_ = makeOpacityPipeline(ctx, library, strandSets_.front().layout(), maps.settings().format, false);
+  headPipeline_ = makeOpacityPipeline(ctx, library, headSet_.layout(), maps.settings().format, true);
   vk::GraphicsPipelineDesc depth;
   depth.vertexShader = "head_shadow.vert";
   depth.depthFormat = ShadowMaps::kHeadDepthFormat;
@@ -96,7 +96,7 @@ void OpacityPass::uploadHead(const HeadMesh& head) {
                             "opacity head indices");
   vk::upload<glm::vec4>(ctx_, headPositions_, positions, vk::BufferUse::VertexRead);
   vk::upload<std::uint32_t>(ctx_, headIndices_, indices, vk::BufferUse::VertexRead);
-  headSet_ = vk::DescriptorSet(ctx_, kHeadBindings, "opacity head");
+  headSet_ = vk::DescriptorSet(ctx_, kOpacityHeadBindings, "opacity head");
   headSet_.writeStorageBuffer(gpu::OPACITY_BINDING_POSITIONS, headPositions_.handle());
   headSet_.writeStorageBuffer(gpu::OPACITY_BINDING_INDICES, headIndices_.handle());
   headSet_.writeStorageBuffer(gpu::OPACITY_BINDING_LIGHT, maps_.lightSpace().handle());
@@ -106,7 +106,7 @@ void OpacityPass::bind(const compute::StrandBuffers& strands) {
   strands_ = &strands;
   std::vector<vk::DescriptorSet> sets;
   for (const auto& chunk : strands.chunks()) {
-    vk::DescriptorSet set(ctx_, kStrandBindings, "opacity strands [chunk " + std::to_string(sets.size()) + "]");
+    vk::DescriptorSet set(ctx_, kOpacityStrandBindings, "opacity strands [chunk " + std::to_string(sets.size()) + "]");
     set.writeStorageBuffer(gpu::OPACITY_BINDING_POSITIONS, chunk.positions.handle());
     set.writeStorageBuffer(gpu::OPACITY_BINDING_LIGHT, maps_.lightSpace().handle());
     sets.push_back(std::move(set));

@@ -30,7 +30,7 @@ std::uint32_t validatedSlots(std::uint32_t slots) {
   return slots;
 }
 
-vk::Image makeImage(const vk::Context& ctx, const OpacitySettings& settings, std::uint32_t slots) {
+vk::Image makeShadowMapImage(const vk::Context& ctx, const OpacitySettings& settings, std::uint32_t slots) {
   vk::ImageDesc desc;
   desc.width = desc.height = settings.resolution;
   desc.layers = gpu::OPACITY_LAYERS * slots;
@@ -64,7 +64,7 @@ ShadowMaps::ShadowMaps(const vk::Context& ctx, const OpacitySettings& settings, 
       lightSpace_(ctx, sizeof(gpu::LightSpace) * slots,
                   VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
                   vk::MemoryKind::DeviceLocal, "light space"),
-      image_(makeImage(ctx, settings_, slots)),
+      image_(makeShadowMapImage(ctx, settings_, slots)),
       sampler_(ctx, "opacity sampler"),
       headImage_(makeHeadImage(ctx, settings_, slots)),
       headSampler_(ctx, "head shadow sampler", VK_COMPARE_OP_LESS_OR_EQUAL),

@@ -29,7 +29,7 @@ std::vector<ChunkRange> splitIntoChunks(std::uint32_t strands, std::uint32_t per
   return chunks;
 }
 
-vk::Buffer deviceBuffer(const vk::Context& ctx, VkDeviceSize bytes, const std::string& name) {
+vk::Buffer strandBuffer(const vk::Context& ctx, VkDeviceSize bytes, const std::string& name) {
   return vk::Buffer(ctx, std::max<VkDeviceSize>(bytes, kVec4), kStrandBuffersUsage, vk::MemoryKind::DeviceLocal, name);
 }
 
@@ -125,24 +125,24 @@ StrandBuffers::StrandBuffers(const vk::Context& ctx, std::uint32_t guideCount, s
                                ctx.properties().limits.maxStorageBufferRange)) {
   checkStrandMemory(layout_, ctx.deviceLocalHeapBytes());
   const VkDeviceSize guideBytes = VkDeviceSize(guideCount) * layout_.verticesPerStrand * kVec4;
-  guidePositions_ = deviceBuffer(ctx, guideBytes, "smoothed guide positions");
-  guideTangents_ = deviceBuffer(ctx, guideBytes, "smoothed guide tangents");
-  triangles_ = deviceBuffer(ctx, VkDeviceSize(layout_.triangleCount) * kVec4, "strand triangles");
+  guidePositions_ = strandBuffer(ctx, guideBytes, "smoothed guide positions");
+  guideTangents_ = strandBuffer(ctx, guideBytes, "smoothed guide tangents");
+  triangles_ = strandBuffer(ctx, VkDeviceSize(layout_.triangleCount) * kVec4, "strand triangles");
   // A placeholder where the bounce is gathered along the render strands themselves.
-  guideBounce_ = deviceBuffer(ctx, layout_.bounceAtGuides ? VkDeviceSize(guideCount) * layout_.bounceSamples * kBounceSample : 0,
+  guideBounce_ = strandBuffer(ctx, layout_.bounceAtGuides ? VkDeviceSize(guideCount) * layout_.bounceSamples * kBounceSample : 0,
                               "guide bounce samples");
   for (std::size_t c = 0; c < layout_.chunks.size(); ++c) {
     const ChunkRange range = layout_.chunks[c];
     const std::string tag = " [chunk " + std::to_string(c) + "]";
     const VkDeviceSize vertexBytes = VkDeviceSize(range.strandCount) * layout_.verticesPerStrand * kVec4;
     const VkDeviceSize strandBytes = layout_.guidesOnly ? 0 : VkDeviceSize(range.strandCount) * kVec4;
-    chunks_.push_back({range, deviceBuffer(ctx, strandBytes, "strand bindings" + tag),
-                       deviceBuffer(ctx, vertexBytes, "strand positions" + tag),
-                       deviceBuffer(ctx, vertexBytes, "strand tangents" + tag),
-                       deviceBuffer(ctx, VkDeviceSize(range.strandCount) * kVec4, "strand attributes" + tag),
-                       options.previousPositions ? deviceBuffer(ctx, vertexBytes, "strand previous positions" + tag)
+    chunks_.push_back({range, strandBuffer(ctx, strandBytes, "strand bindings" + tag),
+                       strandBuffer(ctx, vertexBytes, "strand positions" + tag),
+                       strandBuffer(ctx, vertexBytes, "strand tangents" + tag),
+                       strandBuffer(ctx, VkDeviceSize(range.strandCount) * kVec4, "strand attributes" + tag),
+                       options.previousPositions ? strandBuffer(ctx, vertexBytes, "strand previous positions" + tag)
                                                  : vk::Buffer(),
-                       deviceBuffer(ctx, VkDeviceSize(range.strandCount) * layout_.bounceSamples * kBounceSample,
+                       strandBuffer(ctx, VkDeviceSize(range.strandCount) * layout_.bounceSamples * kBounceSample,
                                     "strand bounce samples" + tag)});
   }
   keepsPrevious_ = options.previousPositions;

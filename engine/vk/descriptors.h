@@ -26,6 +26,7 @@ struct Binding {
 // batches, where a file-local copy in each pass would collide).
 inline constexpr VkShaderStageFlags kCompute = VK_SHADER_STAGE_COMPUTE_BIT;
 inline constexpr VkShaderStageFlags kVertex = VK_SHADER_STAGE_VERTEX_BIT;
+inline constexpr VkShaderStageFlags kFragment = VK_SHADER_STAGE_FRAGMENT_BIT;
 inline constexpr VkDescriptorType kStorage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
 inline constexpr VkDescriptorType kSampled = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
 

@@ -63,7 +63,7 @@ void addMaterialOptions(CLI::App& app, HairMaterial& m) {
             "(default 2; physical and direct lookup modes)",
             [](HairMaterial& x, double v) { x.tiltVariation = glm::radians(v); });
   addScalar(app, m, "--roughness-variation",
-            "per-strand roughness variation: each strand's beta R is scaled by one of 7 levels over 1 +- this, [0, 0.25] "
+            "per-strand roughness variation: each strand's beta R is scaled by one of 7 levels over 1 +- this, 0 or [0.01, 0.25] "
             "(default 0.15; physical and direct lookup modes)",
             [](HairMaterial& x, double v) { x.roughnessVariation = v; });
   auto* absorption = app.add_option_function<std::vector<double>>(

@@ -16,6 +16,7 @@
 #include "samples/tools/frame_export.h"
 #include "samples/tools/render_job.h"
 #include "shaders/shared/strands.h"
+#include "tests/support/cli_runner.h"
 #include "tests/support/vk_fixture.h"
 
 using namespace hp;
@@ -92,8 +93,7 @@ TEST_F(VulkanTest, FrameExportCarriesEachStrandsTiltAndRoughnessAsTheShadingTook
   const double expected = double(frame.strands.strandCount) / gpu::STRAND_ROUGHNESS_LEVELS;
   for (std::uint32_t n : perLevel) EXPECT_NEAR(double(n), expected, 0.15 * expected);
 
-  const auto dir = std::filesystem::temp_directory_path() / "hairpipe_frame_export_variation_test";
-  std::filesystem::remove_all(dir);
+  const auto dir = test::freshTempPath("hairpipe_frame_export_variation_test");
   std::filesystem::create_directories(dir);
   writeFrameExport(dir, frame);
   const ExportedFrame back = readFrameExport(dir);
@@ -217,7 +217,7 @@ void expectBothRastersShadeTheVariation(const vk::Context& ctx, const char* what
     std::cout << rasterModeName(raster) << ": " << what << " against none: mean change " << change << " over the "
               << pixels << " pixels it changed by 2% in the graphics raster (two renders: " << same
               << "); whole frame " << relativeChange(a, c) << " (two renders: " << relativeChange(a, b) << ")\n";
-    ASSERT_GT(pixels, 50u);
+    ASSERT_GT(pixels, 20u);  // 59-158 on lavapipe
     if (raster == RasterMode::Graphics) {
       EXPECT_EQ(same, 0.0);
       graphicsChange = change;

@@ -54,6 +54,7 @@ TEST(Material, BadFieldsAreNamed) {
       {[](HairMaterial& m, double v) { m.tiltVariation = v; }, nan, "tiltVariation"},
       {[](HairMaterial& m, double v) { m.roughnessVariation = v; }, -0.01, "roughnessVariation"},
       {[](HairMaterial& m, double v) { m.roughnessVariation = v; }, 0.26, "roughnessVariation"},
+      {[](HairMaterial& m, double v) { m.roughnessVariation = v; }, 1e-40, "roughnessVariation"},
       {[](HairMaterial& m, double v) { m.roughnessVariation = v; }, nan, "roughnessVariation"},
   };
   for (const Case& c : cases) {

@@ -23,7 +23,8 @@ double signedAxisSine(std::uint32_t i, std::uint32_t n) {
 // The local back-scattering's longitudinal lobe (multiple_scattering.h) in column i (theta_i): a Gaussian
 // in theta_i + theta_r, normalised so that its sum over the column's texels against cos theta_r d theta_r is
 // 1 (the lobe may reach past a pole; a lobe narrower than a texel lands on the nearest one). Rows from `row0`
-// (a layer's first row); every layer holds the same lobe (the tables are the material's, not a strand's).
+// (a layer's first row); every layer holds the same lobe (the tables are the material's, not a strand's),
+// copied from the first.
 void fillBackLobe(LutTexture& t, const MultipleScatteringTables& tables, const std::vector<double>& theta,
                   std::uint32_t row0) {
   const std::uint32_t n = t.width;
@@ -71,16 +72,18 @@ LutTexture buildM(const HairMaterial& m, const MultipleScatteringTables& tables,
   t.channelNames = {"M_R", "M_TT", "M_TRT", "M_back (local back-scattering)"};
   t.uAxis = "signed pseudo-angle of theta_i: 0.5 + 0.5 sign P(|theta_i|), texel-centre mapped";
   t.vAxis = layers == 1 ? "signed pseudo-angle of theta_r, same map"
-                        : "layer k of " + std::to_string(layers) + " (beta_R x 1 + V (2k / " + std::to_string(layers - 1) +
-                              " - 1), V the roughness variation) + the signed pseudo-angle of theta_r, same map, over " +
+                        : "layer k of " + std::to_string(layers) + " (beta_R x (1 + V (2k / " + std::to_string(layers - 1) +
+                              " - 1)), V the roughness variation) + the signed pseudo-angle of theta_r, same map, over " +
                               std::to_string(layers);
   std::vector<double> theta(n);
   for (std::uint32_t j = 0; j < n; ++j) theta[j] = std::asin(signedAxisSine(j, n));
+  fillBackLobe(t, tables, theta, 0);
   for (std::uint32_t k = 0; k < layers; ++k) {
     HairMaterial layer = m;
     if (layers > 1) layer.betaR = m.betaR * double(gpu::marschnerPhysicalMLayerScale(k, variation));
     fillMLayer(t, layer, k * n);
-    fillBackLobe(t, tables, theta, k * n);
+    for (std::uint32_t j = 0; k > 0 && j < n; ++j)  // the same back lobe in every layer
+      for (std::uint32_t i = 0; i < n; ++i) t.texel(i, k * n + j)[3] = t.texel(i, j)[3];
   }
   return t;
 }

@@ -49,7 +49,10 @@ void HairMaterial::validate() const {
   requireRange("dhM", dhM, 0.0, true, 1.0, "must be in (0, 1]");
   requireRange("betaN", betaN, 2 * kDeg, false, 45 * kDeg, "must be in [2, 45] deg");
   requireRange("tiltVariation", tiltVariation, 0.0, false, 10 * kDeg, "must be in [0, 10] deg");
-  requireRange("roughnessVariation", roughnessVariation, 0.0, false, 0.25, "must be in [0, 0.25]");
+  // 0 or at least 0.01: a smaller variation reaches the shader as a float denormal, which a device may flush to 0
+  // and then read the M texture's 7 layers as one.
+  if (roughnessVariation != 0.0)
+    requireRange("roughnessVariation", roughnessVariation, 0.01, false, 0.25, "must be 0 or in [0.01, 0.25]");
 }
 
 glm::dvec3 absorptionFromColor(glm::dvec3 rgb) {

@@ -22,7 +22,7 @@ struct HairMaterial {
   // so neighbouring strands' highlights sit at slightly different places along the hair. The physical and
   // direct modes and the reference take it; the paper and float LUT modes ignore it.
   double tiltVariation = glm::radians(2.0);
-  // Per-strand variation of the longitudinal roughness ([0, 0.25]): each render strand shades with betaR x s,
+  // Per-strand variation of the longitudinal roughness (0 or [0.01, 0.25]): each render strand shades with betaR x s,
   // s one of 7 levels evenly spaced over [1 - roughnessVariation, 1 + roughnessVariation], picked by the strand's
   // key (shaders/shared/strands.h strandRoughness), so neighbouring strands' highlights differ in width and peak.
   // The physical mode reads a layer of its M texture per level (docs/SHADING.md "Per-strand roughness"), the

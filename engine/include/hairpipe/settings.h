@@ -87,7 +87,7 @@ struct Material {
   // [0, 10 degrees] (physical and direct shading; the paper and float lookup modes ignore it).
   double tiltVariation = 0.034906585039886591;         // 2 degrees
   // Each strand's betaR is scaled by one of 7 levels evenly spaced over [1 - roughnessVariation,
-  // 1 + roughnessVariation], picked by its own hash; [0, 0.25] (physical and direct shading; the paper and float
+  // 1 + roughnessVariation], picked by its own hash; 0 or [0.01, 0.25] (physical and direct shading; the paper and float
   // lookup modes ignore it).
   double roughnessVariation = 0.15;
 };
