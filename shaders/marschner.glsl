@@ -237,31 +237,24 @@ vec3 marschnerLutFloat(vec3 L, vec3 V, vec3 T, sampler2D mTex, sampler2D n0Tex, 
   return (m.x * n0.w + m.y * n0.xyz + m.z * n1.xyz) * c.w;
 }
 
-// One layer of the physical M texture (shared/marschner.h marschnerPhysicalMLayers) at in-layer coordinates c,
-// each lobe at its own tilted v (xyz) where the strand is tilted.
-vec4 marschnerPhysicalMLayerTexel(sampler2D mTex, vec2 c, vec3 v, bool tilted, float layer, float invLayers) {
-  vec4 m = textureLod(mTex, vec2(c.x, marschnerPhysicalMLayerV(c.y, layer, invLayers)), 0.0);
-  if (tilted) {
-    m.x = textureLod(mTex, vec2(c.x, marschnerPhysicalMLayerV(v.x, layer, invLayers)), 0.0).x;
-    m.y = textureLod(mTex, vec2(c.x, marschnerPhysicalMLayerV(v.y, layer, invLayers)), 0.0).y;
-    m.z = textureLod(mTex, vec2(c.x, marschnerPhysicalMLayerV(v.z, layer, invLayers)), 0.0).z;
-  }
-  return m;
-}
-
 // The physical model's longitudinal terms (M_R, M_TT, M_TRT, M_back) at marschnerAngles() `ang` for a fibre
 // whose cuticle tilt is alpha_R + tilt (radians; a strand's variation, shared/strands.h strandTilt) and whose
 // beta_R is scaled by `roughness` (strandRoughness): with a tilt, each lobe is read at its own shifted theta_r
-// (marschnerPhysicalTiltedMV), M_back where it lies; with a roughness variation, from the layer of the strand's
-// scale.
+// (marschnerPhysicalTiltedMV), M_back where it lies; with a roughness variation, all from the layer of the
+// strand's scale (shared/marschner.h marschnerPhysicalMLayers).
 vec4 marschnerPhysicalM(vec4 ang, float tilt, float roughness, sampler2D mTex) {
-  vec2 c = vec2(marschnerPhysicalMCoord(ang.x), marschnerPhysicalMCoord(ang.y));
-  bool tilted = tilt != 0.0;
-  vec3 v = tilted ? marschnerPhysicalTiltedMV(ang.y, tilt) : vec3(c.y);
   float variation = marschner.caustic.w;
   float invLayers = 1.0 / float(marschnerPhysicalMLayers(variation));
   float layer = marschnerPhysicalMLayer(roughness, variation);
-  return marschnerPhysicalMLayerTexel(mTex, c, v, tilted, layer, invLayers) * marschner.mScale;
+  float u = marschnerPhysicalMCoord(ang.x);
+  vec4 m = textureLod(mTex, vec2(u, marschnerPhysicalMLayerV(marschnerPhysicalMCoord(ang.y), layer, invLayers)), 0.0);
+  if (tilt != 0.0) {
+    vec3 v = marschnerPhysicalTiltedMV(ang.y, tilt);
+    m.x = textureLod(mTex, vec2(u, marschnerPhysicalMLayerV(v.x, layer, invLayers)), 0.0).x;
+    m.y = textureLod(mTex, vec2(u, marschnerPhysicalMLayerV(v.y, layer, invLayers)), 0.0).y;
+    m.z = textureLod(mTex, vec2(u, marschnerPhysicalMLayerV(v.z, layer, invLayers)), 0.0).z;
+  }
+  return m * marschner.mScale;
 }
 
 // The physical model (docs/THEORY.md §4) from its longitudinal terms m (marschnerPhysicalM): N0 = (N_TT, N_R),

@@ -178,37 +178,42 @@ HairMaterial readMaterial(JsonObject o) {
   return m;
 }
 
-// "strand_tilts_rad" (version 4; none before): each a number within the material's tilt variation.
-std::vector<float> readStrandTilts(JsonObject& fibre, const HairMaterial& m, std::uint32_t version) {
-  std::vector<float> tilts;
-  const nlohmann::json* list = fibre.array("strand_tilts_rad");
-  if (!list) return tilts;
-  if (version < 4 && !list->empty()) fibre.fail("strand_tilts_rad", "per-strand tilts need version 4");
-  const double bound = m.tiltVariation * (1.0 + 1e-6);
-  for (const nlohmann::json& t : *list) {
-    if (!t.is_number() || !(std::abs(t.get<double>()) <= bound))
-      fibre.fail("strand_tilts_rad", "each must be a number within the material's tilt_variation_rad, " +
-                                         std::to_string(m.tiltVariation));
-    tilts.push_back(t.get<float>());
+// A per-strand list of /fibre (none in files older than `since`): each a number within `bound` of `centre`.
+struct PerStrandList {
+  const char* key;
+  std::uint32_t since;
+  double centre, bound;
+  const char* versionRule;  // the refusal when an older file holds values
+  std::string rule;         // the refusal when a value is out of bounds or not a number
+};
+
+std::vector<float> readPerStrand(JsonObject& fibre, const PerStrandList& l, std::uint32_t version) {
+  std::vector<float> values;
+  const nlohmann::json* list = fibre.array(l.key);
+  if (!list) return values;
+  if (version < l.since && !list->empty()) fibre.fail(l.key, l.versionRule);
+  for (const nlohmann::json& v : *list) {
+    if (!v.is_number() || !(std::abs(v.get<double>() - l.centre) <= l.bound)) fibre.fail(l.key, l.rule);
+    values.push_back(v.get<float>());
   }
-  return tilts;
+  return values;
 }
 
-// "strand_roughness_scales" (version 5; none before): each a number within [1 - V, 1 + V], V the material's
-// roughness variation.
+// "strand_tilts_rad" (version 4): within the material's tilt variation of 0.
+std::vector<float> readStrandTilts(JsonObject& fibre, const HairMaterial& m, std::uint32_t version) {
+  return readPerStrand(fibre, {"strand_tilts_rad", 4, 0.0, m.tiltVariation * (1.0 + 1e-6), "per-strand tilts need version 4",
+                               "each must be a number within the material's tilt_variation_rad, " +
+                                   std::to_string(m.tiltVariation)},
+                       version);
+}
+
+// "strand_roughness_scales" (version 5): within [1 - V, 1 + V], V the material's roughness variation.
 std::vector<float> readStrandRoughness(JsonObject& fibre, const HairMaterial& m, std::uint32_t version) {
-  std::vector<float> scales;
-  const nlohmann::json* list = fibre.array("strand_roughness_scales");
-  if (!list) return scales;
-  if (version < 5 && !list->empty()) fibre.fail("strand_roughness_scales", "per-strand roughness needs version 5");
-  const double bound = m.roughnessVariation * (1.0 + 1e-6) + 1e-6;
-  for (const nlohmann::json& s : *list) {
-    if (!s.is_number() || !(std::abs(s.get<double>() - 1.0) <= bound))
-      fibre.fail("strand_roughness_scales", "each must be a number within 1 +- the material's roughness_variation, " +
-                                                std::to_string(m.roughnessVariation));
-    scales.push_back(s.get<float>());
-  }
-  return scales;
+  return readPerStrand(fibre, {"strand_roughness_scales", 5, 1.0, m.roughnessVariation * (1.0 + 1e-6) + 1e-6,
+                               "per-strand roughness needs version 5",
+                               "each must be a number within 1 +- the material's roughness_variation, " +
+                                   std::to_string(m.roughnessVariation)},
+                       version);
 }
 
 JsonObject required(JsonObject& parent, const char* key) {
@@ -333,22 +338,22 @@ HairMaterial ExportedFrame::strandMaterial(std::uint32_t s) const {
 }
 
 namespace {
-// Each strand's tilt offset as the real-time shading took it (the LUT modes of one tilt take none).
-std::vector<float> strandTiltsOf(const FrameCapture& frame, const HairMaterial& m, LutMode mode) {
-  std::vector<float> tilts;
-  if (m.tiltVariation == 0.0 || mode == LutMode::Paper || mode == LutMode::Float) return tilts;
-  for (const auto& a : frame.strands.attributes) tilts.push_back(gpu::strandTilt(a.random, float(m.tiltVariation)));
-  return tilts;
+// Each strand's value of `perStrand` (strandTilt, strandRoughness) at `variation` as the real-time shading took
+// it (the shader reads it as a float); none where that is 0 or the LUT mode is one of a single fibre (paper, float).
+std::vector<float> strandValuesOf(const FrameCapture& frame, double variation, LutMode mode,
+                                  float (*perStrand)(float random, float variation)) {
+  std::vector<float> values;
+  if (float(variation) == 0.0f || mode == LutMode::Paper || mode == LutMode::Float) return values;
+  for (const auto& a : frame.strands.attributes) values.push_back(perStrand(a.random, float(variation)));
+  return values;
 }
 
-// Each strand's beta_R scale as the real-time shading took it (the physical and direct modes; the shader reads the
-// variation as a float, MarschnerParams.caustic.w).
-std::vector<float> strandRoughnessOf(const FrameCapture& frame, const HairMaterial& m, LutMode mode) {
-  std::vector<float> scales;
-  if (float(m.roughnessVariation) == 0.0f || mode == LutMode::Paper || mode == LutMode::Float) return scales;
-  for (const auto& a : frame.strands.attributes)
-    scales.push_back(gpu::strandRoughness(a.random, float(m.roughnessVariation)));
-  return scales;
+// A per-strand list read from `json` holds one value per strand of the frame, or none.
+void requireOnePerStrand(const std::vector<float>& values, const ExportedFrame& f, const std::filesystem::path& json,
+                         const char* key, const char* what) {
+  if (!values.empty() && values.size() != f.strands.strandCount)
+    throw Error(json.string() + ": /fibre/" + key + ": " + std::to_string(values.size()) + " " + what + " for " +
+                std::to_string(f.strands.strandCount) + " strands");
 }
 }  // namespace
 
@@ -371,8 +376,8 @@ ExportedFrame makeExportedFrame(const RenderRequest& request, const HairAsset& a
   f.camera = {frame.camera.position, scene.camera.target, {0.0f, 1.0f, 0.0f}, scene.camera.fovDeg,
               scene.render.width, scene.render.height};
   f.strands = exportStrands(frame, request.look, f.hairAlbedo);
-  f.strandTilts = strandTiltsOf(frame, f.material, request.lutMode);
-  f.strandRoughness = strandRoughnessOf(frame, f.material, request.lutMode);
+  f.strandTilts = strandValuesOf(frame, f.material.tiltVariation, request.lutMode, gpu::strandTilt);
+  f.strandRoughness = strandValuesOf(frame, f.material.roughnessVariation, request.lutMode, gpu::strandRoughness);
   exportHead(f, request.drawHead ? asset.head : HeadMesh{}, frame.headToWorld);  // hair only: no head
   return f;
 }
@@ -391,14 +396,8 @@ ExportedFrame readFrameExport(const std::filesystem::path& dir) {
   readFrameJson(f, dir / FrameExportFiles::json);
   f.strands = readHairFile(dir / FrameExportFiles::strands);
   checkStrands(f.strands, (dir / FrameExportFiles::strands).string());
-  if (!f.strandTilts.empty() && f.strandTilts.size() != f.strands.strandCount)
-    throw Error((dir / FrameExportFiles::json).string() + ": /fibre/strand_tilts_rad: " +
-                std::to_string(f.strandTilts.size()) + " tilts for " + std::to_string(f.strands.strandCount) +
-                " strands");
-  if (!f.strandRoughness.empty() && f.strandRoughness.size() != f.strands.strandCount)
-    throw Error((dir / FrameExportFiles::json).string() + ": /fibre/strand_roughness_scales: " +
-                std::to_string(f.strandRoughness.size()) + " scales for " + std::to_string(f.strands.strandCount) +
-                " strands");
+  requireOnePerStrand(f.strandTilts, f, dir / FrameExportFiles::json, "strand_tilts_rad", "tilts");
+  requireOnePerStrand(f.strandRoughness, f, dir / FrameExportFiles::json, "strand_roughness_scales", "scales");
   AlbedoMesh head = readAlbedoObj(dir / FrameExportFiles::head);
   f.headPositions = std::move(head.positions);
   f.headNormals = std::move(head.normals);

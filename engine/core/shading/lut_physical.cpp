@@ -22,11 +22,9 @@ double signedAxisSine(std::uint32_t i, std::uint32_t n) {
 
 // The local back-scattering's longitudinal lobe (multiple_scattering.h) in column i (theta_i): a Gaussian
 // in theta_i + theta_r, normalised so that its sum over the column's texels against cos theta_r d theta_r is
-// 1 (the lobe may reach past a pole; a lobe narrower than a texel lands on the nearest one). Rows from `row0`
-// (a layer's first row); every layer holds the same lobe (the tables are the material's, not a strand's),
-// copied from the first.
-void fillBackLobe(LutTexture& t, const MultipleScatteringTables& tables, const std::vector<double>& theta,
-                  std::uint32_t row0) {
+// 1 (the lobe may reach past a pole; a lobe narrower than a texel lands on the nearest one). In the first layer's
+// rows: buildM copies it to the others (the tables are the material's, not a strand's).
+void fillBackLobe(LutTexture& t, const MultipleScatteringTables& tables, const std::vector<double>& theta) {
   const std::uint32_t n = t.width;
   std::vector<double> weight(n), g(n);  // cos theta_r d theta_r per texel, the lobe
   for (std::uint32_t j = 0; j < n; ++j) {
@@ -48,7 +46,7 @@ void fillBackLobe(LutTexture& t, const MultipleScatteringTables& tables, const s
       g[std::min<std::size_t>(k, n - 1)] = 1.0;
       sum = weight[std::min<std::size_t>(k, n - 1)];
     }
-    for (std::uint32_t j = 0; j < n; ++j) t.texel(i, row0 + j)[3] = shading::quantiseTexel(g[j] / sum, t.format);
+    for (std::uint32_t j = 0; j < n; ++j) t.texel(i, j)[3] = shading::quantiseTexel(g[j] / sum, t.format);
   }
 }
 
@@ -77,12 +75,13 @@ LutTexture buildM(const HairMaterial& m, const MultipleScatteringTables& tables,
                               std::to_string(layers);
   std::vector<double> theta(n);
   for (std::uint32_t j = 0; j < n; ++j) theta[j] = std::asin(signedAxisSine(j, n));
-  fillBackLobe(t, tables, theta, 0);
+  fillBackLobe(t, tables, theta);
   for (std::uint32_t k = 0; k < layers; ++k) {
     HairMaterial layer = m;
     if (layers > 1) layer.betaR = m.betaR * double(gpu::marschnerPhysicalMLayerScale(k, variation));
     fillMLayer(t, layer, k * n);
-    for (std::uint32_t j = 0; k > 0 && j < n; ++j)  // the same back lobe in every layer
+    if (k == 0) continue;
+    for (std::uint32_t j = 0; j < n; ++j)  // the same back lobe in every layer
       for (std::uint32_t i = 0; i < n; ++i) t.texel(i, k * n + j)[3] = t.texel(i, j)[3];
   }
   return t;

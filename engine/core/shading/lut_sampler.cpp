@@ -39,24 +39,19 @@ glm::vec3 evaluateFloat(const MarschnerLut& lut, glm::vec4 ang, const LutSampler
   return (m.x * n0.w + m.y * glm::vec3(n0) + m.z * glm::vec3(n1)) * c.w;
 }
 
-// marschnerPhysicalMLayerTexel of shaders/marschner.glsl.
-glm::vec4 physicalMLayer(const LutTexture& t, float u, float v, glm::vec3 tiltedV, bool tilted, float layer,
-                         float invLayers, const LutSamplerOptions& o) {
-  glm::vec4 m = sampleBilinear(t, u, gpu::marschnerPhysicalMLayerV(v, layer, invLayers), o);
-  if (tilted)
-    for (int p = 0; p < 3; ++p) m[p] = sampleBilinear(t, u, gpu::marschnerPhysicalMLayerV(tiltedV[p], layer, invLayers), o)[p];
-  return m;
-}
-
 // marschnerPhysicalM of shaders/marschner.glsl, unscaled; `variation`: the material's roughness variation as
 // the shader reads it (MarschnerParams.caustic.w).
 glm::vec4 physicalM(const LutTexture& t, glm::vec4 ang, float tilt, float roughness, float variation,
                     const LutSamplerOptions& o) {
-  const float u = gpu::marschnerPhysicalMCoord(ang.x), v = gpu::marschnerPhysicalMCoord(ang.y);
-  const bool tilted = tilt != 0.0f;
-  const glm::vec3 tiltedV = tilted ? gpu::marschnerPhysicalTiltedMV(ang.y, tilt) : glm::vec3(v);
   const float invLayers = 1.0f / float(gpu::marschnerPhysicalMLayers(variation));
-  return physicalMLayer(t, u, v, tiltedV, tilted, gpu::marschnerPhysicalMLayer(roughness, variation), invLayers, o);
+  const float layer = gpu::marschnerPhysicalMLayer(roughness, variation);
+  const float u = gpu::marschnerPhysicalMCoord(ang.x);
+  glm::vec4 m = sampleBilinear(t, u, gpu::marschnerPhysicalMLayerV(gpu::marschnerPhysicalMCoord(ang.y), layer, invLayers), o);
+  if (tilt != 0.0f) {
+    const glm::vec3 v = gpu::marschnerPhysicalTiltedMV(ang.y, tilt);
+    for (int p = 0; p < 3; ++p) m[p] = sampleBilinear(t, u, gpu::marschnerPhysicalMLayerV(v[p], layer, invLayers), o)[p];
+  }
+  return m;
 }
 
 glm::vec3 evaluatePhysical(const MarschnerLut& lut, glm::vec4 ang, const LutSamplerOptions& o, float tilt,

@@ -65,14 +65,14 @@ double physicalShift(int p, const HairMaterial& m) {
 }
 
 namespace {
+double cosOfSin(double s) { return std::sqrt(std::max(0.0, 1.0 - s * s)); }  // unfloored, unlike safeCos
+
 // sin and |cos| of theta_r - s_p, lobe p's shifted outgoing angle.
 glm::dvec2 shiftedOutgoing(int p, double sinThetaR, const HairMaterial& m) {
   double s = physicalShift(p, m);
-  double cosR = std::sqrt(std::max(0.0, 1.0 - sinThetaR * sinThetaR));
+  double cosR = cosOfSin(sinThetaR);
   return {sinThetaR * std::cos(s) - cosR * std::sin(s), std::abs(cosR * std::cos(s) + sinThetaR * std::sin(s))};
 }
-
-double cosOfSin(double s) { return std::sqrt(std::max(0.0, 1.0 - s * s)); }
 }  // namespace
 
 double physicalM(int p, double sinThetaI, double sinThetaR, const HairMaterial& m) {
