@@ -9,6 +9,7 @@
 #define HP_SHARED_MARSCHNER_H
 
 #include "common.h"
+#include "strands.h"
 
 #ifdef __cplusplus
 #include <cmath>
@@ -64,10 +65,9 @@ HP_CONST(uint, MARSCHNER_PHYSICAL_M_SIZE, 512u)
 HP_CONST(uint, MARSCHNER_PHYSICAL_N_WIDTH, 256u)
 HP_CONST(uint, MARSCHNER_PHYSICAL_N_HEIGHT, 128u)
 HP_CONST(float, MARSCHNER_PHYSICAL_MIN_COS_I, 1e-4f)
-// Layers of M where the roughness varies: one per roughness level of the strands (shared/strands.h
-// STRAND_ROUGHNESS_LEVELS, checked equal in engine/core/shading/marschner_gpu.cpp); 7 x 512 rows stay within the
-// 4,096 every Vulkan device must sample.
-HP_CONST(uint, MARSCHNER_PHYSICAL_M_LAYERS, 7u)
+// Layers of M where the roughness varies: one per roughness level of the strands (shared/strands.h); 7 x 512 rows
+// stay within the 4,096 every Vulkan device must sample.
+HP_CONST(uint, MARSCHNER_PHYSICAL_M_LAYERS, STRAND_ROUGHNESS_LEVELS)
 
 HP_CONST(float, MARSCHNER_INV_SQRT2, 0.70710678f)
 
@@ -222,14 +222,10 @@ HP_FN vec3 marschnerPhysicalTiltedMV(float sinThetaR, float tilt) {
 }
 
 // Per-strand roughness (physical mode): with a roughness variation V > 0 the M texture stacks
-// MARSCHNER_PHYSICAL_M_LAYERS squares along v, layer k built with beta_R x marschnerPhysicalMLayerScale(k, V), evenly
-// spaced over [1 - V, 1 + V] (shared/strands.h strandRoughnessOfLevel: the strands' levels); a strand reads the
-// layer of its scale, exactly (a scale between layers reads the nearest). With V = 0: one layer.
+// MARSCHNER_PHYSICAL_M_LAYERS squares along v, layer k built with beta_R x strandRoughnessOfLevel(k, V) (shared/
+// strands.h: the strands' levels, evenly spaced over [1 - V, 1 + V]); a strand reads the layer of its scale,
+// exactly (a scale between layers reads the nearest). With V = 0: one layer.
 HP_FN uint marschnerPhysicalMLayers(float variation) { return variation > 0.0f ? MARSCHNER_PHYSICAL_M_LAYERS : 1u; }
-
-HP_FN float marschnerPhysicalMLayerScale(uint layer, float variation) {
-  return 1.0f + variation * (2.0f * float(layer) / float(MARSCHNER_PHYSICAL_M_LAYERS - 1u) - 1.0f);
-}
 
 // The layer of roughness scale s (0 without a variation).
 HP_FN float marschnerPhysicalMLayer(float scale, float variation) {

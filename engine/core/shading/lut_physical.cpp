@@ -11,6 +11,7 @@
 #include "engine/core/shading/multiple_scattering.h"
 #include "engine/core/shading/physical_terms.h"
 #include "shaders/shared/marschner.h"
+#include "shaders/shared/strands.h"
 
 namespace hp {
 namespace {
@@ -78,7 +79,7 @@ LutTexture buildM(const HairMaterial& m, const MultipleScatteringTables& tables,
   fillBackLobe(t, tables, theta);
   for (std::uint32_t k = 0; k < layers; ++k) {
     HairMaterial layer = m;
-    if (layers > 1) layer.betaR = m.betaR * double(gpu::marschnerPhysicalMLayerScale(k, variation));
+    if (layers > 1) layer.betaR = m.betaR * double(gpu::strandRoughnessOfLevel(k, variation));
     fillMLayer(t, layer, k * n);
     if (k == 0) continue;
     for (std::uint32_t j = 0; j < n; ++j)  // the same back lobe in every layer

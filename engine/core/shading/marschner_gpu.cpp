@@ -6,13 +6,10 @@
 #include "engine/core/shading/math_constants.h"
 #include "engine/core/shading/multiple_scattering.h"
 #include "shaders/shared/brdf_eval.h"
-#include "shaders/shared/strands.h"
 
 namespace hp {
 static_assert(sizeof(gpu::BrdfEvalInput) == 48);
 static_assert(sizeof(gpu::BrdfEvalPush) == 16);
-// A layer of the physical M texture per roughness level of the strands.
-static_assert(gpu::MARSCHNER_PHYSICAL_M_LAYERS == gpu::STRAND_ROUGHNESS_LEVELS);
 
 std::uint32_t gpuModeOf(LutMode mode) {
   switch (mode) {
