@@ -67,9 +67,11 @@ void recordGraphicsOpacity(const vk::Context& ctx, VkCommandBuffer cmd, const re
 
 // Clear the bins, every caster's splats (atomics: ordered like any two writers), the resolve into the
 // maps, then the heads that go into the slices, drawn over the resolved maps. The bins serve one slot
-// after another.
+// after another. The splats and the resolve are scopes of their own within the profiler's "opacity".
 void recordComputeOpacity(const vk::Context& ctx, VkCommandBuffer cmd, const render::ShadowMaps& maps,
-                          std::span<const ShadowCaster> casters, std::uint32_t slot) {
+                          std::span<const ShadowCaster> casters, std::uint32_t slot, vk::GpuProfiler* profiler) {
+  auto begin = [&](const char* scope) { if (profiler) profiler->begin(cmd, scope); };
+  auto end = [&] { if (profiler) profiler->end(cmd); };
   const compute::OpacityResolvePass& resolve = *maps.resolvePass();
   const VkBuffer bins = resolve.bins().handle(), first = resolve.first().handle();
   // What recordClear fills: the bins, and the first-hair buffer for deep maps only.
@@ -86,13 +88,19 @@ void recordComputeOpacity(const vk::Context& ctx, VkCommandBuffer cmd, const ren
     }
   };
   if (resolve.deep()) {  // every instance's first hair per texel before any deep slice is measured from it
+    begin("opacity first");
     splatAll(gpu::OPACITY_SPLAT_MODE_FIRST, first);
+    end();
     vk::bufferBarrier(ctx, cmd, first, vk::BufferUse::ComputeWrite, vk::BufferUse::ComputeRead);
   }
+  begin("opacity splat");
   splatAll(resolve.deep() ? gpu::OPACITY_SPLAT_MODE_DEEP : gpu::OPACITY_SPLAT_MODE_PLAIN, bins);
+  end();
   vk::bufferBarrier(ctx, cmd, bins, vk::BufferUse::ComputeWrite, vk::BufferUse::ComputeRead);
   slotBarrier(ctx, cmd, maps, slot, vk::ImageUse::FragmentSampledDiscard, vk::ImageUse::ComputeStorageWrite);
+  begin("opacity resolve");
   resolve.recordResolve(cmd, slot);
+  end();
   // Heads in the slices (headOpacity > 0) are drawn at global slice coordinates: not into deep maps.
   const bool heads = !resolve.deep() && std::any_of(casters.begin(), casters.end(),
                                                     [](const ShadowCaster& c) { return c.opacity->drawsHead(); });
@@ -132,7 +140,7 @@ void recordShadowPasses(const vk::Context& ctx, VkCommandBuffer cmd, const rende
 
   if (profiler) profiler->begin(cmd, "opacity");
   if (maps.resolvePass())
-    recordComputeOpacity(ctx, cmd, maps, casters, shadowLight.slot);
+    recordComputeOpacity(ctx, cmd, maps, casters, shadowLight.slot, profiler);
   else
     recordGraphicsOpacity(ctx, cmd, maps, casters, shadowLight.slot);
   if (profiler) profiler->end(cmd);

@@ -133,6 +133,16 @@ void memoryBarrier(const Context& ctx, VkCommandBuffer cmd, BufferUse from, Buff
   record(ctx, cmd, dep);
 }
 
+void executionBarrier(const Context& ctx, VkCommandBuffer cmd) {
+  VkMemoryBarrier2 b{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
+  b.srcStageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;
+  b.dstStageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;
+  VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
+  dep.memoryBarrierCount = 1;
+  dep.pMemoryBarriers = &b;
+  record(ctx, cmd, dep);
+}
+
 void imageBarrier(const Context& ctx, VkCommandBuffer cmd, VkImage image, VkImageAspectFlags aspect, ImageUse from,
                   ImageUse to, std::uint32_t layers, std::uint32_t firstLayer) {
   ImageScope src = imageScope(from), dst = imageScope(to);

@@ -3,12 +3,17 @@
 #include <algorithm>
 
 #include "engine/core/error.h"
+#include "engine/vk/barriers.h"
 #include "engine/vk/check.h"
 #include "engine/vk/context.h"
 
 namespace hp::vk {
 GpuProfiler::GpuProfiler(const Context& ctx, std::uint32_t maxScopes, const std::string& name)
-    : device_(ctx.device()), fn_(&ctx.fn()), capacity_(maxScopes * 2) {
+    : ctx_(&ctx),
+      device_(ctx.device()),
+      fn_(&ctx.fn()),
+      barrierAfterStamp_(ctx.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU),
+      capacity_(maxScopes * 2) {
   if (!ctx.timestampsSupported()) return;
   std::uint32_t count = 0;
   vkGetPhysicalDeviceQueueFamilyProperties(ctx.physicalDevice(), &count, nullptr);
@@ -41,8 +46,13 @@ void GpuProfiler::begin(VkCommandBuffer cmd, const std::string& scope) {
   scopes_.push_back({scope, used_, used_ + 1, static_cast<int>(open_.size())});
   open_.push_back(scopes_.size() - 1);
   used_ += 2;
-  // ALL_COMMANDS: the stamp is taken once all earlier work has finished, so a scope measures its own work.
-  fn_->vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, pool_, scopes_.back().beginQuery);
+  stamp(cmd, scopes_.back().beginQuery);
+}
+
+// ALL_COMMANDS: the stamp is taken once all earlier work has finished, so a scope measures its own work.
+void GpuProfiler::stamp(VkCommandBuffer cmd, std::uint32_t query) {
+  fn_->vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, pool_, query);
+  if (barrierAfterStamp_) executionBarrier(*ctx_, cmd);
 }
 
 void GpuProfiler::end(VkCommandBuffer cmd) {
@@ -50,7 +60,7 @@ void GpuProfiler::end(VkCommandBuffer cmd) {
   if (open_.empty()) throw Error("GpuProfiler::end without a matching begin");
   const Scope& s = scopes_[open_.back()];
   open_.pop_back();
-  fn_->vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, pool_, s.endQuery);
+  stamp(cmd, s.endQuery);
 }
 
 std::vector<ScopeTime> GpuProfiler::results() const {

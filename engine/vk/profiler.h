@@ -2,7 +2,9 @@
 // Contract: GPU timestamps around named scopes of a command buffer. reset() at the start of recording,
 // begin()/end() around each scope (they may nest), results() after the submission has completed.
 // Times come from timestampPeriod and the queue's valid bits; on a device without timestamps every
-// call is a no-op and results() is empty (supported() says which).
+// call is a no-op and results() is empty (supported() says which). On a CPU device each stamp is followed
+// by an execution barrier (vk::executionBarrier: lavapipe takes a stamp at its next flush), so scopes there
+// time their own work at the cost of a flush per stamp; GPUs record the stamps alone.
 #include "hairpipe_volk.h"
 
 #include <cstdint>
@@ -40,8 +42,11 @@ class GpuProfiler {
     std::uint32_t endQuery;
     int depth;
   };
+  void stamp(VkCommandBuffer cmd, std::uint32_t query);
+  const Context* ctx_ = nullptr;
   VkDevice device_ = VK_NULL_HANDLE;
   const VolkDeviceTable* fn_ = nullptr;  // the Context's device functions
+  bool barrierAfterStamp_ = false;       // a CPU device: see the contract
   VkQueryPool pool_ = VK_NULL_HANDLE;
   std::uint32_t capacity_ = 0;
   std::uint32_t used_ = 0;

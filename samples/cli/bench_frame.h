@@ -7,8 +7,8 @@
 // median/min/max and, for compute passes, the compulsory bytes moved; per frame the host wall time and the
 // growth of the resident set (a driver that compiles per frame shows in both). The timestamps resolve the
 // frame's passes when they time the copy alone (at least half of what its submission takes beyond an empty
-// submission's wall time) and the copy inside the frame within 2x of alone; otherwise (lavapipe: a 64 MiB
-// copy reads ~0.02 ms) no bandwidth is derived and `unresolvedBecause` says why.
+// submission's wall time) and the copy inside the frame within 2x of alone; otherwise no bandwidth is
+// derived and `unresolvedBecause` says why.
 #include <map>
 #include <string>
 #include <vector>

@@ -5,8 +5,7 @@
 // (shaders/copy_reference.comp). A copy moves 2 x bytes (read + write). measureAlone() times each in
 // submissions of its own, repeated until stable; the yardstick is the faster of the two (on an H100 the
 // transfer copy reaches about a third of what the shader copy does: docs/PERFORMANCE.md). The transfer copy
-// recorded inside a frame tells whether the device's timestamps resolve that frame's passes (lavapipe's do
-// not).
+// recorded inside a frame tells whether the device's timestamps resolve that frame's passes.
 #include <memory>
 #include <string>
 
