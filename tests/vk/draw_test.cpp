@@ -7,6 +7,7 @@
 #include "engine/vk/submit.h"
 #include "engine/vk/transfer.h"
 #include "shaders/shared/selftest.h"
+#include "tests/support/color_pass.h"
 #include "tests/support/vk_fixture.h"
 
 using namespace hp::vk;
@@ -39,18 +40,7 @@ TEST_F(VulkanTest, DynamicRenderingDrawIsPixelExact) {
 
   submitAndWait(*ctx, [&](VkCommandBuffer cmd) {
     imageBarrier(*ctx, cmd, target.handle(), target.aspect(), ImageUse::Undefined, ImageUse::ColorAttachment);
-    VkRenderingAttachmentInfo color{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
-    color.imageView = target.view();
-    color.imageLayout = imageLayout(ImageUse::ColorAttachment);
-    color.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
-    color.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-    color.clearValue.color = {{0.0f, 0.0f, 1.0f, 1.0f}};
-    VkRenderingInfo info{VK_STRUCTURE_TYPE_RENDERING_INFO};
-    info.renderArea = {{0, 0}, {w, h}};
-    info.layerCount = 1;
-    info.colorAttachmentCount = 1;
-    info.pColorAttachments = &color;
-    ctx->fn().vkCmdBeginRendering(cmd, &info);
+    hp::test::beginClearedColorPass(*ctx, cmd, target.view(), {w, h}, {{0.0f, 0.0f, 1.0f, 1.0f}});
     pipeline.bind(cmd, set.set(), {w, h});
     pipeline.push(cmd, hp::gpu::FlatDrawPush{{1.0f, 0.5f, 0.0f, 1.0f}, {float(w), float(h)}, {}});
     ctx->fn().vkCmdDraw(cmd, 6, 1, 0, 0);

@@ -15,6 +15,7 @@
 #include "engine/vk/submit.h"
 #include "engine/vk/transfer.h"
 #include "tests/support/cli_runner.h"
+#include "tests/support/color_pass.h"
 #include "tests/support/vk_fixture.h"
 
 using namespace hp::vk;
@@ -70,17 +71,7 @@ TEST_F(VulkanTest, ProfilerScopeTimesTheWorkInsideIt) {
       profiler.reset(cmd);
       // A render pass first, as a frame's head draw comes before its compute passes.
       imageBarrier(*ctx, cmd, target.handle(), target.aspect(), ImageUse::Undefined, ImageUse::ColorAttachment);
-      VkRenderingAttachmentInfo color{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
-      color.imageView = target.view();
-      color.imageLayout = imageLayout(ImageUse::ColorAttachment);
-      color.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
-      color.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-      VkRenderingInfo info{VK_STRUCTURE_TYPE_RENDERING_INFO};
-      info.renderArea = {{0, 0}, {16, 16}};
-      info.layerCount = 1;
-      info.colorAttachmentCount = 1;
-      info.pColorAttachments = &color;
-      ctx->fn().vkCmdBeginRendering(cmd, &info);
+      hp::test::beginClearedColorPass(*ctx, cmd, target.view(), {16, 16}, {});
       ctx->fn().vkCmdEndRendering(cmd);
       bufferBarrier(*ctx, cmd, b.handle(), BufferUse::TransferDst, BufferUse::TransferDst);  // the last run's copy
       profiler.begin(cmd, "copy");
