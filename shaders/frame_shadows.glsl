@@ -20,12 +20,11 @@ vec3 hairTransmittance(float tau) {
 // The opacity-map value at p for shadow slot `slot`, with the frame's kind of slices and bias. `soft`: over
 // a few texels (opaque receivers: opacityAlphaSoft).
 float frameOpacityAlpha(uint slot, vec3 p, bool soft) {
-  OpacityVertex o = opacityVertex(lightSpaces[slot], p, frame.strand.w, frame.options.y != 0u);
-  if (frame.options.w != 0u)
-    return soft ? opacityAlphaDeepSoft(opacityMaps, slot, o.uvw, o.s, frame.strand.w)
-                : opacityAlphaDeep(opacityMaps, slot, o.uvw, o.s, frame.strand.w);
-  return soft ? opacityAlphaSoft(opacityMaps, slot, o.uvw, o.w0, o.w1, o.w2, o.w3)
-              : opacityAlpha(opacityMaps, slot, o.uvw, o.w0, o.w1, o.w2, o.w3);
+  if (frame.options.y == 0u) return 0.0;  // the hair casts no shadow
+  OpacityPoint o = opacityPoint(lightSpaces[slot], p);
+  bool deep = frame.options.w != 0u;
+  return soft ? opacityAlphaSoft(opacityMaps, slot, o.uvw, o.s, deep, frame.strand.w)
+              : opacityAlpha(opacityMaps, slot, o.uvw, o.s, deep, frame.strand.w);
 }
 
 // What stands between p and a light: alpha, the hair's opacity-map value (0 for an unshadowed light), and

@@ -121,7 +121,7 @@ void ComputeRaster::record(VkCommandBuffer cmd, std::uint64_t frame, const View&
 }
 
 void ComputeRaster::recordComposite(VkCommandBuffer cmd, VkExtent2D extent, vk::GpuProfiler* profiler) const {
-  if (profiler) profiler->begin(cmd, "composite");
+  if (profiler) profiler->beginInRendering(cmd, "composite");
   composite_.draw(cmd, extent);
   if (profiler) profiler->end(cmd);
 }

@@ -301,11 +301,11 @@ void Renderer::recordDraw(VkCommandBuffer cmd, std::uint64_t frame, const View& 
     *block = i->frameBlock(view.camera, view.extent, lights, lodLook(i->settings_.look, fraction));
     render::setViewMotion(*block, view.extent, view.jitter, view.previousViewProj);
     const std::uint32_t offset = i->frameOffset(frame, view.index);
-    if (profiler) profiler->begin(cmd, "head");
+    if (profiler) profiler->beginInRendering(cmd, "head");
     i->head_->draw(cmd, view.extent, i->headToWorld(), offset, lights.lights.size() <= 1);
     if (profiler) profiler->end(cmd);
     if (!view.ribbons || raster_ == RasterMode::Compute) continue;
-    if (profiler) profiler->begin(cmd, "shade");
+    if (profiler) profiler->beginInRendering(cmd, "shade");
     i->strandPass_->draw(cmd, view.extent, view.lines, offset, i->lodStrands(fraction));
     if (profiler) profiler->end(cmd);
   }

@@ -40,19 +40,23 @@ void GpuProfiler::reset(VkCommandBuffer cmd) {
   if (pool_) fn_->vkCmdResetQueryPool(cmd, pool_, 0, capacity_);
 }
 
-void GpuProfiler::begin(VkCommandBuffer cmd, const std::string& scope) {
+void GpuProfiler::begin(VkCommandBuffer cmd, const std::string& scope) { open(cmd, scope, false); }
+
+void GpuProfiler::beginInRendering(VkCommandBuffer cmd, const std::string& scope) { open(cmd, scope, true); }
+
+void GpuProfiler::open(VkCommandBuffer cmd, const std::string& scope, bool inRendering) {
   if (!pool_) return;
   if (used_ + 2 > capacity_) throw Error("GpuProfiler: more than " + std::to_string(capacity_ / 2) + " scopes");
-  scopes_.push_back({scope, used_, used_ + 1, static_cast<int>(open_.size())});
+  scopes_.push_back({scope, used_, used_ + 1, static_cast<int>(open_.size()), inRendering});
   open_.push_back(scopes_.size() - 1);
   used_ += 2;
-  stamp(cmd, scopes_.back().beginQuery);
+  stamp(cmd, scopes_.back().beginQuery, inRendering);
 }
 
 // ALL_COMMANDS: the stamp is taken once all earlier work has finished, so a scope measures its own work.
-void GpuProfiler::stamp(VkCommandBuffer cmd, std::uint32_t query) {
+void GpuProfiler::stamp(VkCommandBuffer cmd, std::uint32_t query, bool inRendering) {
   fn_->vkCmdWriteTimestamp2(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, pool_, query);
-  if (barrierAfterStamp_) executionBarrier(*ctx_, cmd);
+  if (barrierAfterStamp_ && !inRendering) executionBarrier(*ctx_, cmd);
 }
 
 void GpuProfiler::end(VkCommandBuffer cmd) {
@@ -60,7 +64,7 @@ void GpuProfiler::end(VkCommandBuffer cmd) {
   if (open_.empty()) throw Error("GpuProfiler::end without a matching begin");
   const Scope& s = scopes_[open_.back()];
   open_.pop_back();
-  stamp(cmd, s.endQuery);
+  stamp(cmd, s.endQuery, s.inRendering);
 }
 
 std::vector<ScopeTime> GpuProfiler::results() const {

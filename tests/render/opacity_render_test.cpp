@@ -189,7 +189,7 @@ TEST_F(VulkanTest, TwoShadowedFramesInOneCommandBufferAreSyncClean) {
     hp::DrawView view;
     view.extent = renderer.extent();
     view.camera = hp::orbitCamera(hp::CameraSpec{}, 64.0f / 48.0f);
-    hp::vk::GpuProfiler profiler(*ctx, 32, "two frames");
+    hp::vk::GpuProfiler profiler(*ctx, 64, "two frames");  // each frame's passes, the opacity pass's nested ones
     hp::vk::submitAndWait(*ctx, [&](VkCommandBuffer cmd) {
       profiler.reset(cmd);
       for (int frame = 0; frame < 2; ++frame) {
