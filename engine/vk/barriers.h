@@ -56,8 +56,9 @@ void memoryBarrier(const Context& ctx, VkCommandBuffer cmd, BufferUse from, Buff
 void imageBarrier(const Context& ctx, VkCommandBuffer cmd, VkImage image, VkImageAspectFlags aspect, ImageUse from,
                   ImageUse to, std::uint32_t layers = 1, std::uint32_t firstLayer = 0);
 // An execution dependency alone, every stage before it to every stage after it, no memory access. lavapipe
-// takes a timestamp only when its queue next flushes (at a barrier), so GpuProfiler records one after each
-// stamp on CPU devices: otherwise a scope's stamps land after the work that follows them.
+// takes a timestamp only when its queue next flushes (at a barrier), so a benchmark's GpuProfiler
+// (StampBarriers::OnCpuDevices) records one after each stamp on CPU devices: otherwise a scope's stamps land
+// after the work that follows them.
 void executionBarrier(const Context& ctx, VkCommandBuffer cmd);
 VkImageLayout imageLayout(ImageUse use);
 // How many barriers the helpers above have recorded in this process (all contexts): the soak test's unit

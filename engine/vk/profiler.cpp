@@ -8,11 +8,13 @@
 #include "engine/vk/context.h"
 
 namespace hp::vk {
-GpuProfiler::GpuProfiler(const Context& ctx, std::uint32_t maxScopes, const std::string& name)
+GpuProfiler::GpuProfiler(const Context& ctx, std::uint32_t maxScopes, const std::string& name,
+                         StampBarriers barriers)
     : ctx_(&ctx),
       device_(ctx.device()),
       fn_(&ctx.fn()),
-      barrierAfterStamp_(ctx.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU),
+      barrierAfterStamp_(barriers == StampBarriers::OnCpuDevices &&
+                         ctx.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU),
       capacity_(maxScopes * 2) {
   if (!ctx.timestampsSupported()) return;
   std::uint32_t count = 0;

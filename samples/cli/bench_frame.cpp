@@ -99,7 +99,8 @@ FrameResult benchFrame(const vk::Context& ctx, const FrameCase& c) {
   std::vector<double> hostMs;
   std::vector<double> residentAfter;  // after each frame, warm-up included
   for (std::uint32_t f = 0; f <= c.frames; ++f) {  // frame 0 warms up
-    vk::GpuProfiler profiler(ctx, 64, "bench frame");  // scopes: the passes, six per shadowed light
+    vk::GpuProfiler profiler(ctx, 64, "bench frame",  // scopes: the passes, six per shadowed light
+                              vk::StampBarriers::OnCpuDevices);
     const auto start = std::chrono::steady_clock::now();
     vk::submitAndWait(ctx, [&](VkCommandBuffer cmd) {
       profiler.reset(cmd);

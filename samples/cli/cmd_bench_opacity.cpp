@@ -42,7 +42,8 @@ nlohmann::json benchOne(const hp::vk::Context& ctx, const hp::HairAsset& asset, 
   if (o.half) settings.opacity.format = VK_FORMAT_R16G16B16A16_SFLOAT;
   hp::HairSystem hair(ctx, asset, settings);
   hp::DrawView view;
-  hp::vk::GpuProfiler profiler(ctx, 8, "bench opacity");
+  // simulate, tessellate, interpolate, bounds, opacity (+ first, splat, resolve), head shadow, the bounces
+  hp::vk::GpuProfiler profiler(ctx, 16, "bench opacity", hp::vk::StampBarriers::OnCpuDevices);
   std::map<std::string, std::vector<double>> times;
   for (std::uint32_t f = 0; f <= o.frames; ++f) {
     hp::vk::submitAndWait(ctx, [&](VkCommandBuffer cmd) {

@@ -55,7 +55,7 @@ hp::SimulationParams benchParams(bool grid) { return grid ? hp::withHairGrid({})
 nlohmann::json benchOne(const hp::vk::Context& ctx, const hp::HairAsset& asset, std::uint32_t frames,
                         const hp::vk::CopyReference& copy, bool grid) {
   hp::SimulatePass pass(ctx, asset, benchParams(grid));
-  hp::vk::GpuProfiler profiler(ctx, 3 * frames + 3, "bench sim");
+  hp::vk::GpuProfiler profiler(ctx, 3 * frames + 3, "bench sim", hp::vk::StampBarriers::OnCpuDevices);
   std::vector<double> sim, gridMs, copyMs;
   for (std::uint32_t f = 0; f < frames; ++f) {
     hp::vk::submitAndWait(ctx, [&](VkCommandBuffer cmd) {

@@ -88,7 +88,7 @@ Result benchOne(const hp::vk::Context& ctx, std::uint32_t strands, hp::compute::
   hp::compute::TessellatePass tessellate(ctx, particles, buffers);
   hp::compute::InterpolatePass interpolate(ctx, buffers, nullptr, o.groom, walk);
   hp::vk::CopyReference copy(ctx, kCopyBytes);
-  hp::vk::GpuProfiler profiler(ctx, 8, "bench strands");
+  hp::vk::GpuProfiler profiler(ctx, 8, "bench strands", hp::vk::StampBarriers::OnCpuDevices);
   std::map<std::string, std::vector<double>> times;
   for (std::uint32_t f = 0; f <= o.frames; ++f) {  // frame 0 warms up (first touch of the memory)
     const auto start = std::chrono::steady_clock::now();

@@ -41,7 +41,7 @@ struct Settled {
 template <class Record>
 Settled timeUntilSettled(const Context& ctx, std::uint32_t maxRuns, std::uint32_t settled, const char* name,
                          Record record) {
-  GpuProfiler profiler(ctx, 2, name);
+  GpuProfiler profiler(ctx, 2, name, StampBarriers::OnCpuDevices);
   std::vector<double> ms, wall;
   Settled t;
   while (t.runs < std::max(maxRuns, settled)) {

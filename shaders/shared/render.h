@@ -89,7 +89,8 @@ struct FrameLight {
 struct FrameShadow {
   mat4 headViewProj;  // world -> clip of the slot's head depth map
   vec4 head;          // x = 1: the heads occlude this light (0: no map), y = receiver offset toward the
-                      // light (scene units), z = 1 / map resolution, w = 0
+                      // light (scene units), z = 1 / map resolution (the shaders read the size from the
+                      // map itself), w = 0
 };
 
 struct RenderFrame {

@@ -58,7 +58,7 @@ TEST_F(VulkanTest, TimestampProfilerReturnsPositiveOrderedNestedTimes) {
 // pass has run, takes a stamp only at its next flush: without the profiler's barrier after each stamp this
 // scope read 0.014 ms of a 7 ms copy.
 TEST_F(VulkanTest, ProfilerScopeTimesTheWorkInsideIt) {
-  GpuProfiler profiler(*ctx, 2, "test profiler");
+  GpuProfiler profiler(*ctx, 2, "test profiler", StampBarriers::OnCpuDevices);
   ASSERT_TRUE(profiler.supported());
   const VkDeviceSize size = 64ull << 20;
   Buffer a(*ctx, size, VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryKind::DeviceLocal, "a");
@@ -91,6 +91,24 @@ TEST_F(VulkanTest, ProfilerScopeTimesTheWorkInsideIt) {
   const double scopeMs = times[1].milliseconds;
   EXPECT_GE(scopeMs, 0.5 * (copied - empty) - 1.0) << "wall: " << copied << " ms copied, " << empty << " ms empty";
   EXPECT_GT(scopeMs, 0.0);
+}
+
+// A profiler adds barriers only when asked (the benchmarks) and only on a CPU device: one after each stamp.
+// By default a profiled frame keeps its own barriers alone, for synchronization validation to check.
+TEST_F(VulkanTest, AProfilerAddsBarriersOnlyWhenAsked) {
+  const bool cpu = ctx->properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
+  for (StampBarriers barriers : {StampBarriers::None, StampBarriers::OnCpuDevices}) {
+    GpuProfiler profiler(*ctx, 1, "test profiler", barriers);
+    std::uint64_t recorded = 0;
+    submitAndWait(*ctx, [&](VkCommandBuffer cmd) {
+      profiler.reset(cmd);
+      const std::uint64_t before = barriersRecorded();
+      profiler.begin(cmd, "empty");
+      profiler.end(cmd);
+      recorded = barriersRecorded() - before;
+    }, "profiled nothing");
+    EXPECT_EQ(recorded, barriers == StampBarriers::OnCpuDevices && cpu ? 2u : 0u);
+  }
 }
 
 namespace {
