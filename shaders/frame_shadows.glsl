@@ -34,12 +34,13 @@ struct LightShadow {
   float head;
 };
 
-LightShadow frameLightShadow(FrameLight light, vec3 p, vec3 L, bool soft) {
+// slopeTan: headVisibility's, 0 for hair.
+LightShadow frameLightShadow(FrameLight light, vec3 p, vec3 L, bool soft, float slopeTan) {
   LightShadow s = LightShadow(0.0, 1.0);
   int slot = lightSlot(light);
   if (slot < 0) return s;
   s.alpha = frameOpacityAlpha(uint(slot), p, soft);
-  s.head = headVisibility(headShadowMap, uint(slot), frame.shadows[slot], p, L);
+  s.head = headVisibility(headShadowMap, uint(slot), frame.shadows[slot], p, L, slopeTan);
   return s;
 }
 #endif

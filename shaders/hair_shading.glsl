@@ -58,7 +58,7 @@ layout(constant_id = 0) const uint HAIR_LIGHT_LOOP = 1u;
 vec3 hairLight(uint i, vec3 world, vec3 V, vec3 T, float tilt, float roughness) {
   FrameLight light = frame.lights[i];
   LightSample ls = sampleLight(light, world);
-  return hairLightRadiance(light, ls, frameLightShadow(light, world, ls.L, false), V, T, tilt, roughness);
+  return hairLightRadiance(light, ls, frameLightShadow(light, world, ls.L, false, 0.0), V, T, tilt, roughness);
 }
 
 // bounce: the mean radiance the skin sends to this point (head_bounce.glsl; 0 without the skin's bounce);

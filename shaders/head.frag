@@ -25,7 +25,8 @@ layout(constant_id = 0) const uint HEAD_LIGHT_LOOP = 1u;
 vec3 headLight(FrameLight light, vec3 N, float wrap) {
   LightSample ls = sampleLight(light, inWorld);
   float diffuse = ls.scale * max((wrap + dot(N, ls.L)) / (1.0 + wrap), 0.0);
-  LightShadow shadow = frameLightShadow(light, inWorld, ls.L, true);
+  float c = abs(dot(N, ls.L));
+  LightShadow shadow = frameLightShadow(light, inWorld, ls.L, true, sqrt(max(1.0 - c * c, 0.0)) / max(c, 1e-3));
   return light.radiance.rgb * hairTransmittance(frame.strand.z * shadow.alpha) * (diffuse * shadow.head);
 }
 

@@ -8,7 +8,8 @@
 namespace hp::render {
 namespace {
 // Receiver offset toward the light, in texels: covers the 3 x 3 bilinear taps' reach on back faces
-// seen at a slant, where the wrap-lit side meets its own back-face depth.
+// seen at a slant, where the wrap-lit side meets its own back-face depth (a surface receiver adds 2 texels x
+// the tangent of its slope to the light: shaders/head_shadow.glsl).
 constexpr float kOffsetTexels = 3.0f;
 
 glm::vec3 perpendicular(const glm::vec3& axis) {

@@ -33,6 +33,21 @@ bool rayKeepsClear(const SdfGrid& sdf, glm::vec3 p, glm::vec3 dir, float cosine,
   }
   return true;
 }
+
+// Where the ray from surface point p along dir (into the body: p faces away from dir) leaves the body again:
+// the first point past the inside (distance < 0) where the distance is positive again; nullopt if it never is
+// within tMax.
+std::optional<glm::vec3> exitPoint(const SdfGrid& sdf, glm::vec3 p, glm::vec3 dir, float tMax) {
+  bool inside = false;
+  float t = 0.1f * sdf.cell;
+  for (int i = 0; i < 4 * kMaxSteps && t < tMax; ++i) {
+    const float d = sdf.sample(p + t * dir);
+    inside |= d < 0.0f;
+    if (inside && d > 0.05f * sdf.cell) return p + t * dir;
+    t += std::max(std::abs(d), 0.1f * sdf.cell);
+  }
+  return std::nullopt;
+}
 }  // namespace
 
 HeadLightMap traceHeadLight(const SdfGrid& head, const CameraSpec& camera, const LightSpec& light,
@@ -60,6 +75,12 @@ HeadLightMap traceHeadLight(const SdfGrid& head, const CameraSpec& camera, const
       const glm::vec3 n = glm::normalize(head.gradient(p));
       if (glm::dot(n, toLight) < options.minCosine) continue;
       const float cosine = glm::dot(n, toLight);
+      if (cosine < 0.0f && options.pastOwnBody) {
+        const std::optional<glm::vec3> exit = exitPoint(head, p, toLight, extent);
+        // From where it leaves the body the ray must keep the full margin (no flat-surface allowance).
+        out.clearLit[pixel] = exit && rayKeepsClear(head, *exit, toLight, 1.0f, options.margin, extent);
+        continue;
+      }
       out.clearLit[pixel] = rayKeepsClear(head, p, toLight, cosine, options.margin, extent);
     }
   return out;

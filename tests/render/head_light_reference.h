@@ -19,6 +19,10 @@ namespace hp::test {
 struct HeadLightOptions {
   float margin = 0.01f;     // scene units (m)
   float minCosine = 0.2f;   // N.L
+  // For a point facing away from the light (N.L < 0, the wrap-lit side): its shadow ray starts where it
+  // leaves the head's own body, so "clear" means no other part of the head stands between it and the light.
+  // (The renderer's depth map of back faces does not let a body shadow its own far side.)
+  bool pastOwnBody = false;
 };
 
 struct HeadLightMap {

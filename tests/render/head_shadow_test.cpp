@@ -18,10 +18,10 @@ using namespace hp;
 using hp::test::VulkanTest;
 
 namespace {
-RenderRequest frontRequest(bool shadows) {
+RenderRequest frontRequest(bool shadows, float orbitDeg = 0.0f) {
   RenderRequest r;
   r.scene.render = {240, 180, 4};
-  r.scene.camera.orbitDeg = 0.0f;
+  r.scene.camera.orbitDeg = orbitDeg;
   r.scene.density.totalStrands = 3000;
   r.settleFrames = 0;  // the rest pose: this is about the head, not the hair's shape
   r.opacity.enabled = shadows;
@@ -103,4 +103,44 @@ TEST_F(VulkanTest, HeadSkinShowsNoShadowBanding) {
   EXPECT_LE(stepOn, 1.3 * stepOff);
   // The old path fails the same bound: the test can fail.
   EXPECT_GT(stepSlices, 1.3 * stepOff);
+}
+
+// The skin's far side from the light (seen from behind: the shoulders), where the wrap term still lights it:
+// the depth map of back faces holds that skin itself, and the 3 x 3 taps beside a point seen at a slant read
+// its own surface nearer the light, which drew concentric rings there until the receiver offset grew with
+// the slope (head_shadow.glsl). Measured on the skin a CPU ray cast finds facing away from the light
+// (N.L in [-0.2, 0.2)) with nothing but its own body between it and the light: the head's shadows may add
+// at most 1.3x the unshadowed vertical step there (the rings read 1.49x before the slope-scaled offset).
+TEST_F(VulkanTest, TheSkinsFarSideShowsNoSelfShadowRings) {
+  auto request = [](bool shadows) {
+    RenderRequest r = frontRequest(shadows, 180.0f);
+    r.scene.render = {480, 360, 4};  // the far side is a thin band
+    return r;
+  };
+  const RenderRequest on = request(true);
+  const HairAsset asset = buildSceneAsset(on.scene);
+  ASSERT_TRUE(asset.sdf);
+  RenderRequest blonde = request(false);
+  blonde.scene.material.absorption = {0.08, 0.15, 0.35};
+  const RenderResult off = renderStill(*ctx, asset, request(false));
+  std::vector<bool> measured = skinMask(off, renderStill(*ctx, asset, blonde));
+  test::HeadLightOptions wrapSide;
+  wrapSide.minCosine = -0.2f;
+  wrapSide.pastOwnBody = true;
+  const LightSpec& light = on.scene.lights.front();
+  const test::HeadLightMap far = test::traceHeadLight(*asset.sdf, on.scene.camera, light, off.width, off.height, wrapSide);
+  const test::HeadLightMap near = test::traceHeadLight(*asset.sdf, on.scene.camera, light, off.width, off.height);
+  std::size_t count = 0;
+  for (std::size_t p = 0; p < measured.size(); ++p) {
+    measured[p] = measured[p] && far.clearLit[p] && !near.clearLit[p];
+    count += measured[p];
+  }
+  ASSERT_GT(count, 300u) << "too little skin on the far side to measure";
+  RenderRequest headOnly = request(true);
+  headOnly.opacity.k = 0.0f;  // hair shadows off (T = exp(0)), the head's depth map on
+  const double stepOff = verticalStep(off, measured);
+  const double stepHead = verticalStep(renderStill(*ctx, asset, headOnly), measured);
+  std::cout << "mean vertical luminance step on the skin's far side (" << count << " px): no shadows " << stepOff
+            << ", head depth map " << stepHead << " (" << stepHead / stepOff << "x)\n";
+  EXPECT_LE(stepHead, 1.3 * stepOff);
 }
