@@ -11,13 +11,14 @@
 #ifndef HP_HEAD_SHADOW_GLSL
 #define HP_HEAD_SHADOW_GLSL
 
-// slopeTan: for a surface receiver, tan of the angle between its normal and the light (0 for hair): the
-// taps up to 2 texels beside it see its own back faces that much deeper or shallower per texel, so the
-// offset grows by 2 texels x slopeTan (at most 10) past the base 3 texels.
+// slopeTan: for a surface receiver facing away from the light (its own back face is in the map), tan of
+// the angle between its normal and the light; 0 for hair and lit skin. The taps up to 2 texels beside it
+// read its own surface that much nearer the light per texel, so the offset grows by 2 texels (head.w) x
+// slopeTan, at most 10, past the base (head.y).
 float headVisibility(sampler2DArrayShadow map, uint slot, FrameShadow shadow, vec3 world, vec3 towardLight,
                      float slopeTan) {
   if (shadow.head.x == 0.0) return 1.0;
-  float offset = shadow.head.y * (1.0 + (2.0 / 3.0) * min(slopeTan, 10.0));
+  float offset = shadow.head.y + 2.0 * shadow.head.w * min(slopeTan, 10.0);
   vec4 clip = shadow.headViewProj * vec4(world + towardLight * offset, 1.0);
   if (!(clip.w > 0.0)) return 1.0;
   vec3 ndc = clip.xyz / clip.w;

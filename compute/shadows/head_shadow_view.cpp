@@ -8,8 +8,8 @@
 namespace hp::render {
 namespace {
 // Receiver offset toward the light, in texels: covers the 3 x 3 bilinear taps' reach on back faces
-// seen at a slant, where the wrap-lit side meets its own back-face depth (a surface receiver adds 2 texels x
-// the tangent of its slope to the light: shaders/head_shadow.glsl).
+// seen at a slant, where the wrap-lit side meets its own back-face depth (skin facing away from the light adds
+// 2 texels x the tangent of its slope to the light: shaders/head_shadow.glsl).
 constexpr float kOffsetTexels = 3.0f;
 
 glm::vec3 perpendicular(const glm::vec3& axis) {
@@ -46,7 +46,7 @@ HeadShadowView headShadowView(const LightSpec& light, const HeadSphere& heads, s
                  glm::lookAtRH(eye, eye + axis, perpendicular(axis));
     texelWorld = 2.0f * std::tan(half) * dist / float(resolution);
   }
-  v.params = glm::vec4(1.0f, kOffsetTexels * texelWorld, 1.0f / float(resolution), 0.0f);
+  v.params = glm::vec4(1.0f, kOffsetTexels * texelWorld, 1.0f / float(resolution), texelWorld);
   v.extentWorld = texelWorld * float(resolution);
   return v;
 }

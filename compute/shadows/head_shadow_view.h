@@ -3,7 +3,9 @@
 // for one light, computed on the host around a bounding sphere of every head (world space):
 // orthographic along a directional light, perspective from a spot (the cone bounds it when the spot is
 // inside the sphere). params is RenderFrame::headShadow: (1, receiver offset toward the light = 3
-// texels in scene units, 1 / resolution, 0). A sphere of radius <= 0 (no head) gives the off view.
+// texels in scene units, 1 / resolution, one texel in scene units: skin facing away from the light adds
+// 2 of them per unit of its slope's tangent, shaders/head_shadow.glsl). A sphere of radius <= 0 (no head)
+// gives the off view.
 #include <glm/glm.hpp>
 
 #include <cstdint>

@@ -90,7 +90,8 @@ struct FrameShadow {
   mat4 headViewProj;  // world -> clip of the slot's head depth map
   vec4 head;          // x = 1: the heads occlude this light (0: no map), y = receiver offset toward the
                       // light (scene units), z = 1 / map resolution (the shaders read the size from the
-                      // map itself), w = 0
+                      // map itself), w = one texel in scene units (at the heads' centre for a spot; the
+                      // slope term of skin facing away from the light, head_shadow.glsl)
 };
 
 struct RenderFrame {

@@ -35,16 +35,18 @@ bool rayKeepsClear(const SdfGrid& sdf, glm::vec3 p, glm::vec3 dir, float cosine,
 }
 
 // Where the ray from surface point p along dir (into the body: p faces away from dir) leaves the body again:
-// the first point past the inside (distance < 0) where the distance is positive again; nullopt if it never is
-// within tMax.
+// the first point past the inside (distance < 0) where the distance is positive again. nullopt where it does
+// not enter the body within 3 cells (a grazing ray: its own body is not what it crosses first) or never leaves
+// within tMax. Half steps inside, as rayKeepsClear takes outside.
 std::optional<glm::vec3> exitPoint(const SdfGrid& sdf, glm::vec3 p, glm::vec3 dir, float tMax) {
   bool inside = false;
   float t = 0.1f * sdf.cell;
-  for (int i = 0; i < 4 * kMaxSteps && t < tMax; ++i) {
+  for (int i = 0; i < 8 * kMaxSteps && t < tMax; ++i) {
     const float d = sdf.sample(p + t * dir);
     inside |= d < 0.0f;
+    if (!inside && t > 3.0f * sdf.cell) return std::nullopt;
     if (inside && d > 0.05f * sdf.cell) return p + t * dir;
-    t += std::max(std::abs(d), 0.1f * sdf.cell);
+    t += std::max(0.5f * std::abs(d), 0.1f * sdf.cell);
   }
   return std::nullopt;
 }
@@ -77,7 +79,7 @@ HeadLightMap traceHeadLight(const SdfGrid& head, const CameraSpec& camera, const
       const float cosine = glm::dot(n, toLight);
       if (cosine < 0.0f && options.pastOwnBody) {
         const std::optional<glm::vec3> exit = exitPoint(head, p, toLight, extent);
-        // From where it leaves the body the ray must keep the full margin (no flat-surface allowance).
+        // From where it leaves the body the ray keeps clear as from a surface facing the light head-on.
         out.clearLit[pixel] = exit && rayKeepsClear(head, *exit, toLight, 1.0f, options.margin, extent);
         continue;
       }

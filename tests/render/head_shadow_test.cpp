@@ -108,9 +108,10 @@ TEST_F(VulkanTest, HeadSkinShowsNoShadowBanding) {
 // The skin's far side from the light (seen from behind: the shoulders), where the wrap term still lights it:
 // the depth map of back faces holds that skin itself, and the 3 x 3 taps beside a point seen at a slant read
 // its own surface nearer the light, which drew concentric rings there until the receiver offset grew with
-// the slope (head_shadow.glsl). Measured on the skin a CPU ray cast finds facing away from the light
-// (N.L in [-0.2, 0.2)) with nothing but its own body between it and the light: the head's shadows may add
-// at most 1.3x the unshadowed vertical step there (the rings read 1.49x before the slope-scaled offset).
+// the slope (head_shadow.glsl). Measured where a CPU ray cast finds the skin near the terminator and clear:
+// N.L in [-0.2, 0) with nothing but its own body toward the light, or N.L in [0, 0.2) with the light
+// reaching it (head_light_reference.h). The head's shadows may add at most 1.3x the unshadowed vertical step
+// there.
 TEST_F(VulkanTest, TheSkinsFarSideShowsNoSelfShadowRings) {
   auto request = [](bool shadows) {
     RenderRequest r = frontRequest(shadows, 180.0f);
