@@ -18,7 +18,8 @@ using namespace hp;
 using hp::test::VulkanTest;
 
 namespace {
-RenderRequest frontRequest(bool shadows, float orbitDeg = 0.0f) {
+// A still of the rest pose from orbit angle orbitDeg (0: the front).
+RenderRequest stillRequest(bool shadows, float orbitDeg = 0.0f) {
   RenderRequest r;
   r.scene.render = {240, 180, 4};
   r.scene.camera.orbitDeg = orbitDeg;
@@ -47,6 +48,19 @@ std::vector<bool> skinMask(const RenderResult& a, const RenderResult& otherHair)
   return skin;
 }
 
+// The frame without shadows and its skin pixels (skinMask against the same frame with blonde hair).
+struct UnshadowedSkin {
+  RenderResult frame;
+  std::vector<bool> skin;
+};
+UnshadowedSkin unshadowedSkin(const vk::Context& ctx, const HairAsset& asset, const RenderRequest& unshadowed) {
+  RenderRequest blonde = unshadowed;
+  blonde.scene.material.absorption = {0.08, 0.15, 0.35};
+  UnshadowedSkin s{renderStill(ctx, asset, unshadowed), {}};
+  s.skin = skinMask(s.frame, renderStill(ctx, asset, blonde));
+  return s;
+}
+
 // Mean |Y(x, y+1) - Y(x, y)| over vertically adjacent measured pixels.
 double verticalStep(const RenderResult& img, const std::vector<bool>& skin) {
   double sum = 0.0;
@@ -63,13 +77,12 @@ double verticalStep(const RenderResult& img, const std::vector<bool>& skin) {
 }  // namespace
 
 TEST_F(VulkanTest, HeadSkinShowsNoShadowBanding) {
-  const RenderRequest on = frontRequest(true);
+  const RenderRequest on = stillRequest(true);
   const HairAsset asset = buildSceneAsset(on.scene);
   ASSERT_TRUE(asset.sdf);
-  RenderRequest blonde = frontRequest(false);
-  blonde.scene.material.absorption = {0.08, 0.15, 0.35};
-  const RenderResult off = renderStill(*ctx, asset, frontRequest(false));
-  std::vector<bool> measured = skinMask(off, renderStill(*ctx, asset, blonde));
+  UnshadowedSkin unshadowed = unshadowedSkin(*ctx, asset, stillRequest(false));
+  const RenderResult& off = unshadowed.frame;
+  std::vector<bool>& measured = unshadowed.skin;
   const test::HeadLightMap cpu =
       test::traceHeadLight(*asset.sdf, on.scene.camera, on.scene.lights.front(), off.width, off.height);
   std::size_t skinPixels = 0, seenByCpu = 0, clearLit = 0;
@@ -86,10 +99,10 @@ TEST_F(VulkanTest, HeadSkinShowsNoShadowBanding) {
   ASSERT_GT(clearLit, 1000u);
   const double stepOff = verticalStep(off, measured);
   const double stepOn = verticalStep(renderStill(*ctx, asset, on), measured);
-  RenderRequest headOnly = frontRequest(true);
+  RenderRequest headOnly = stillRequest(true);
   headOnly.opacity.k = 0.0f;  // hair shadows off (T = exp(0)), the head's depth map on
   const double stepHead = verticalStep(renderStill(*ctx, asset, headOnly), measured);
-  RenderRequest slices = frontRequest(true);
+  RenderRequest slices = stillRequest(true);
   slices.opacity.headOpacity = 50.0f;  // the old path: the head in the opacity slices
   slices.opacity.deep = false;         // (global slices only: deep maps leave the head out of the slices)
   const double stepSlices = verticalStep(renderStill(*ctx, asset, slices), measured);
@@ -114,17 +127,16 @@ TEST_F(VulkanTest, HeadSkinShowsNoShadowBanding) {
 // there.
 TEST_F(VulkanTest, TheSkinsFarSideShowsNoSelfShadowRings) {
   auto request = [](bool shadows) {
-    RenderRequest r = frontRequest(shadows, 180.0f);
+    RenderRequest r = stillRequest(shadows, 180.0f);
     r.scene.render = {480, 360, 4};  // the far side is a thin band
     return r;
   };
   const RenderRequest on = request(true);
   const HairAsset asset = buildSceneAsset(on.scene);
   ASSERT_TRUE(asset.sdf);
-  RenderRequest blonde = request(false);
-  blonde.scene.material.absorption = {0.08, 0.15, 0.35};
-  const RenderResult off = renderStill(*ctx, asset, request(false));
-  std::vector<bool> measured = skinMask(off, renderStill(*ctx, asset, blonde));
+  UnshadowedSkin unshadowed = unshadowedSkin(*ctx, asset, request(false));
+  const RenderResult& off = unshadowed.frame;
+  std::vector<bool>& measured = unshadowed.skin;
   test::HeadLightOptions wrapSide;
   wrapSide.minCosine = -0.2f;
   wrapSide.pastOwnBody = true;
