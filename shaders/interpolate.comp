@@ -4,18 +4,20 @@
 // Tangents: the guides' unit tangents blended with the same weights and renormalised (A's tangent if
 // the blend vanishes). Also writes the strand's attributes (makeStrandAttributes, shared/strands.h).
 // Debug mode INTERPOLATE_MODE_GUIDES: strand s is smoothed guide firstStrand + s, copied as is.
-// Two walks (specialization constant PER_VERTEX, compute/strands/interpolate_pass.h InterpolateWalk):
-// - per strand (CPU devices, and the groom detail, which carries a frame along the strand): one invocation
-//   per strand of one chunk, looping over its Q vertices; the binding and triangle are read once per
-//   strand (1.65x faster on lavapipe than one invocation per vertex, docs/PERFORMANCE.md), but a warp's
-//   lanes write Q*16 bytes apart.
+// Three walks (specialization constant WALK, compute/strands/interpolate_pass.h InterpolateWalk):
+// - per strand (CPU devices): one invocation per strand of one chunk, looping over its Q vertices; the
+//   binding and triangle are read once per strand (1.65x faster on lavapipe than one invocation per vertex,
+//   docs/PERFORMANCE.md), but a warp's lanes write Q*16 bytes apart.
 // - per vertex (GPUs, plain blend): one invocation per vertex, so a warp's stores are contiguous; the
 //   strand's binding and triangle are re-read by its Q lanes from cache.
+// - staged (GPUs, groom detail, whose frame is carried along the strand): the per-strand walk in blocks of
+//   INTERPOLATE_STAGE_VERTICES vertices kept in shared memory, which the workgroup then writes out strand
+//   after strand, so a warp's stores are contiguous runs. The same arithmetic as per strand: the same bits.
 #include "shared/strands.h"
 #include "common.glsl"
 
 layout(local_size_x = INTERPOLATE_WORKGROUP_SIZE) in;
-layout(constant_id = 0) const uint PER_VERTEX = 0u;
+layout(constant_id = 0) const uint WALK = INTERPOLATE_WALK_STRAND;
 layout(std430, binding = INTERPOLATE_BINDING_GUIDE_POSITIONS) readonly buffer GuidePositions { vec4 guidePositions[]; };
 layout(std430, binding = INTERPOLATE_BINDING_GUIDE_TANGENTS) readonly buffer GuideTangents { vec4 guideTangents[]; };
 layout(std430, binding = INTERPOLATE_BINDING_TRIANGLES) readonly buffer Triangles { uvec4 triangles[]; };
@@ -24,6 +26,24 @@ layout(std430, binding = INTERPOLATE_BINDING_POSITIONS) writeonly buffer Positio
 layout(std430, binding = INTERPOLATE_BINDING_TANGENTS) writeonly buffer Tangents { vec4 tangents[]; };
 layout(std430, binding = INTERPOLATE_BINDING_ATTRIBUTES) writeonly buffer Attributes { StrandAttributes attributes[]; };
 layout(push_constant) uniform Push { InterpolatePush push; };
+
+// The staged walk's block: row l (the workgroup's strand l) holds its vertices stageStart + k at slot k and
+// its tangents stageStart - 1 + k at slot k (they run one vertex behind).
+const uint STAGE_ROW = INTERPOLATE_STAGE_VERTICES + 1u;
+shared vec4 stagedPositions[INTERPOLATE_WORKGROUP_SIZE * STAGE_ROW];
+shared vec4 stagedTangents[INTERPOLATE_WORKGROUP_SIZE * STAGE_ROW];
+uint stageStart = 0u;
+
+// The groomed walk's stores: to the chunk (per strand) or to the workgroup's block (staged).
+void putPosition(uint dst, uint j, vec4 p) {
+  if (WALK == INTERPOLATE_WALK_STAGED) stagedPositions[gl_LocalInvocationID.x * STAGE_ROW + j - stageStart] = p;
+  else positions[dst + j] = p;
+}
+
+void putTangent(uint dst, uint j, vec4 t) {
+  if (WALK == INTERPOLATE_WALK_STAGED) stagedTangents[gl_LocalInvocationID.x * STAGE_ROW + j + 1u - stageStart] = t;
+  else tangents[dst + j] = t;
+}
 
 void copyGuide(uint s) {
   uint guide = push.firstStrand + s;
@@ -86,53 +106,77 @@ vec4 centreline(uvec3 src, vec3 w, vec3 centre, uint j) {
   return vec4(p, v);
 }
 
-void interpolateGroomed(uint s, StrandBindingGpu b, uvec3 src, vec3 w) {
-  uint key = strandKey(b.random);
-  vec3 centre = push.groom.clump.x >= 1.0 ? clumpCentre(w, b.triangle) : w;
+// One groomed strand's walk: its fixed values and the state carried from vertex to vertex.
+struct GroomWalk {
+  uvec3 src;
+  vec3 w, centre;
+  uint key, dst;
+  float radius, turns, phase, amplitude;
+  vec4 c;             // the centreline at the last vertex, v in w
+  vec3 t, n;          // its tangent and the normal carried along
+  float along;        // arc length so far
+  vec3 before, here;  // the last two vertices written
+};
+
+GroomWalk groomStart(uint s, StrandBindingGpu b, uvec3 src, vec3 w) {
+  GroomWalk g;
+  g.src = src;
+  g.w = w;
+  g.dst = s * push.vertices;
+  g.key = strandKey(b.random);
+  g.centre = push.groom.clump.x >= 1.0 ? clumpCentre(w, b.triangle) : w;
   float vary = push.groom.curl.z;
-  float radius = push.groom.curl.x * (1.0 + vary * (strandHash01(key, GROOM_STREAM_CURL) - 0.5));
-  float turns = push.groom.curl.y * (1.0 + vary * (strandHash01(key, GROOM_STREAM_CURL + 1u) - 0.5));
-  float phase = 6.2831853 * strandHash01(key, GROOM_STREAM_CURL + 2u);
+  g.radius = push.groom.curl.x * (1.0 + vary * (strandHash01(g.key, GROOM_STREAM_CURL) - 0.5));
+  g.turns = push.groom.curl.y * (1.0 + vary * (strandHash01(g.key, GROOM_STREAM_CURL + 1u) - 0.5));
+  g.phase = 6.2831853 * strandHash01(g.key, GROOM_STREAM_CURL + 2u);
   // Frizz by region: more toward the hairline (the triangle's distance from it in triangles[].w).
   float hairline = uintBitsToFloat(triangles[b.triangle].w);
-  float amplitude = push.groom.frizz.x * (1.0 + push.groom.frizz.z * exp(-hairline / push.groom.frizz.w));
-  vec4 c = centreline(src, w, centre, 0u);
-  vec3 t = normalize(guideTangents[src.x].xyz);
+  g.amplitude = push.groom.frizz.x * (1.0 + push.groom.frizz.z * exp(-hairline / push.groom.frizz.w));
+  g.c = centreline(src, w, g.centre, 0u);
+  g.t = normalize(guideTangents[src.x].xyz);
   // A normal to the root tangent, then carried along: projected onto each new tangent's normal plane.
-  vec3 n = abs(t.y) < 0.9 ? normalize(cross(t, vec3(0.0, 1.0, 0.0))) : normalize(cross(t, vec3(1.0, 0.0, 0.0)));
-  float along = 0.0;
-  uint dst = s * push.vertices;
-  vec3 before = vec3(0.0), here = vec3(0.0);
-  for (uint j = 0u; j < push.vertices; ++j) {
-    if (j > 0u) {
-      vec4 next = centreline(src, w, centre, j);
-      vec3 step = next.xyz - c.xyz;
-      float len = length(step);
-      if (len > 1e-12) t = step / len;
-      along += len;
-      c = next;
-      vec3 projected = n - dot(n, t) * t;
-      if (dot(projected, projected) > 1e-12) n = normalize(projected);
-    }
-    vec3 m = cross(t, n);
-    float ramp = smoothstep(0.0, GROOM_ROOT_RAMP, c.w);
-    float angle = phase + 6.2831853 * turns * along;
-    vec3 p = c.xyz + ramp * radius * (cos(angle) * n + sin(angle) * m);
-    float frizz = amplitude * c.w * c.w;
-    if (frizz > 0.0) {
-      float x = push.groom.frizz.y * along;
-      p += ramp * frizz * (groomNoise(key, 0u, x) * n + groomNoise(key, 1u, x) * m);
-    }
-    positions[dst + j] = vec4(p, c.w);
-    // Tangents by central differences, one vertex behind (one-sided at the ends).
-    if (j >= 1u) {
-      vec3 d = j >= 2u ? p - before : p - here;
-      tangents[dst + j - 1u] = vec4(unitOr(d, t), 0.0);
-    }
-    if (j + 1u == push.vertices) tangents[dst + j] = vec4(unitOr(p - here, t), 0.0);
-    before = here;
-    here = p;
+  g.n = abs(g.t.y) < 0.9 ? normalize(cross(g.t, vec3(0.0, 1.0, 0.0))) : normalize(cross(g.t, vec3(1.0, 0.0, 0.0)));
+  g.along = 0.0;
+  g.before = vec3(0.0);
+  g.here = vec3(0.0);
+  return g;
+}
+
+// Vertex j (in order from 0) of the walk: its position, and the tangent of vertex j - 1 (and of j at the tip).
+void groomStep(inout GroomWalk g, uint j) {
+  if (j > 0u) {
+    vec4 next = centreline(g.src, g.w, g.centre, j);
+    vec3 step = next.xyz - g.c.xyz;
+    float len = length(step);
+    if (len > 1e-12) g.t = step / len;
+    g.along += len;
+    g.c = next;
+    vec3 projected = g.n - dot(g.n, g.t) * g.t;
+    if (dot(projected, projected) > 1e-12) g.n = normalize(projected);
   }
+  vec3 m = cross(g.t, g.n);
+  float ramp = smoothstep(0.0, GROOM_ROOT_RAMP, g.c.w);
+  float angle = g.phase + 6.2831853 * g.turns * g.along;
+  vec3 p = g.c.xyz + ramp * g.radius * (cos(angle) * g.n + sin(angle) * m);
+  float frizz = g.amplitude * g.c.w * g.c.w;
+  if (frizz > 0.0) {
+    float x = push.groom.frizz.y * g.along;
+    p += ramp * frizz * (groomNoise(g.key, 0u, x) * g.n + groomNoise(g.key, 1u, x) * m);
+  }
+  putPosition(g.dst, j, vec4(p, g.c.w));
+  // Tangents by central differences, one vertex behind (one-sided at the ends).
+  if (j >= 1u) {
+    vec3 d = j >= 2u ? p - g.before : p - g.here;
+    putTangent(g.dst, j - 1u, vec4(unitOr(d, g.t), 0.0));
+  }
+  if (j + 1u == push.vertices) putTangent(g.dst, j, vec4(unitOr(p - g.here, g.t), 0.0));
+  g.before = g.here;
+  g.here = p;
+}
+
+void interpolateGroomed(uint s, StrandBindingGpu b, uvec3 src, vec3 w) {
+  GroomWalk g = groomStart(s, b, src, w);
+  for (uint j = 0u; j < push.vertices; ++j) groomStep(g, j);
   attributes[s] = makeStrandAttributes(b.random, b.triangle);
 }
 
@@ -158,8 +202,8 @@ void interpolate(uint s) {
   attributes[s] = makeStrandAttributes(b.random, b.triangle);
 }
 
-// The per-vertex walk: vertex i of the chunk (plain blend only; the pass keeps groomed and guides-only
-// chunks on the per-strand walk).
+// The per-vertex walk: vertex i of the chunk (plain blend only: the pass stages groomed chunks and keeps
+// guides-only chunks on the per-strand walk).
 void interpolateVertex(uint i) {
   uint s = i / push.vertices, j = i % push.vertices;
   StrandBindingGpu b = bindings[s];
@@ -167,10 +211,55 @@ void interpolateVertex(uint i) {
   if (j == 0u) attributes[s] = makeStrandAttributes(b.random, b.triangle);
 }
 
+// Writes the block of vertices j0 .. j0 + n - 1 of the workgroup's `count` strands from `first` on, and
+// their tangents from vertex j0 - 1 (none before the root) through j0 + n - 2 (through the tip in the last
+// block), strand after strand: consecutive lanes, consecutive addresses.
+void writeStage(uint first, uint count, uint j0, uint n) {
+  uint q = push.vertices;
+  for (uint e = gl_LocalInvocationID.x; e < count * n; e += INTERPOLATE_WORKGROUP_SIZE) {
+    uint row = e / n, k = e % n;
+    positions[(first + row) * q + j0 + k] = stagedPositions[row * STAGE_ROW + k];
+  }
+  uint from = max(j0, 1u) - 1u, to = j0 + n == q ? q - 1u : j0 + n - 2u;
+  uint m = to + 1u - from, slot = from + 1u - j0;
+  for (uint e = gl_LocalInvocationID.x; e < count * m; e += INTERPOLATE_WORKGROUP_SIZE) {
+    uint row = e / m, k = e % m;
+    tangents[(first + row) * q + from + k] = stagedTangents[row * STAGE_ROW + slot + k];
+  }
+}
+
+// The staged walk (groomed strands): each lane walks its strand a block at a time; the barriers are in
+// uniform control flow (a workgroup past the chunk leaves as a whole).
+void interpolateStaged(uint id) {
+  uint first = id - gl_LocalInvocationID.x;
+  if (first >= push.strandCount) return;
+  uint count = min(INTERPOLATE_WORKGROUP_SIZE, push.strandCount - first);
+  bool mine = gl_LocalInvocationID.x < count;
+  GroomWalk g;
+  if (mine) {
+    StrandBindingGpu b = bindings[id];
+    g = groomStart(id, b, triangles[b.triangle].xyz * push.vertices, bindingWeights(b));
+    attributes[id] = makeStrandAttributes(b.random, b.triangle);
+  }
+  for (uint j0 = 0u; j0 < push.vertices; j0 += INTERPOLATE_STAGE_VERTICES) {
+    stageStart = j0;
+    uint n = min(INTERPOLATE_STAGE_VERTICES, push.vertices - j0);
+    if (mine)
+      for (uint j = j0; j < j0 + n; ++j) groomStep(g, j);
+    barrier();
+    writeStage(first, count, j0, n);
+    barrier();  // the block is read before the next one overwrites it
+  }
+}
+
 void main() {
   uint id = hpThreadId(INTERPOLATE_WORKGROUP_SIZE);
-  if (PER_VERTEX != 0u) {
+  if (WALK == INTERPOLATE_WALK_VERTEX) {
     if (id < push.strandCount * push.vertices) interpolateVertex(id);
+    return;
+  }
+  if (WALK == INTERPOLATE_WALK_STAGED) {
+    interpolateStaged(id);
     return;
   }
   if (id >= push.strandCount) return;

@@ -21,11 +21,19 @@ bool perVertexOn(const vk::Context& ctx, InterpolateWalk walk) {
   return walk == InterpolateWalk::PerVertex;
 }
 
+// The staged walk's two blocks of shared memory (interpolate.comp): 26 KiB, over Vulkan's guaranteed 16.
+bool stagingFits(const vk::Context& ctx) {
+  const std::uint32_t bytes = 2 * gpu::INTERPOLATE_WORKGROUP_SIZE * (gpu::INTERPOLATE_STAGE_VERTICES + 1) * 16;
+  return ctx.properties().limits.maxComputeSharedMemorySize >= bytes;
+}
+
 std::shared_ptr<const vk::ComputePipeline> makeWalk(const vk::Context& ctx, vk::PipelineLibrary* library,
-                                                    VkDescriptorSetLayout layout, bool perVertex) {
+                                                    VkDescriptorSetLayout layout, std::uint32_t walk) {
+  const char* name = walk == gpu::INTERPOLATE_WALK_VERTEX   ? "interpolate per vertex"
+                     : walk == gpu::INTERPOLATE_WALK_STAGED ? "interpolate staged"
+                                                            : "interpolate";
   return vk::makeComputePipeline(ctx, library, "interpolate.comp", gpu::INTERPOLATE_WORKGROUP_SIZE, {layout},
-                                 sizeof(gpu::InterpolatePush), perVertex ? "interpolate per vertex" : "interpolate",
-                                 {perVertex ? 1u : 0u});
+                                 sizeof(gpu::InterpolatePush), name, {walk});
 }
 }  // namespace
 
@@ -43,8 +51,11 @@ InterpolatePass::InterpolatePass(const vk::Context& ctx, const StrandBuffers& bu
                                  const GroomSettings& groom, InterpolateWalk walk)
     : ctx_(&ctx),
       layoutSet_(ctx, kInterpolateBindings, "interpolate layout"),
-      perStrand_(makeWalk(ctx, library, layoutSet_.layout(), false)),
-      perVertex_(perVertexOn(ctx, walk) ? makeWalk(ctx, library, layoutSet_.layout(), true) : nullptr) {
+      perStrand_(makeWalk(ctx, library, layoutSet_.layout(), gpu::INTERPOLATE_WALK_STRAND)) {
+  if (perVertexOn(ctx, walk)) {
+    perVertex_ = makeWalk(ctx, library, layoutSet_.layout(), gpu::INTERPOLATE_WALK_VERTEX);
+    if (stagingFits(ctx)) staged_ = makeWalk(ctx, library, layoutSet_.layout(), gpu::INTERPOLATE_WALK_STAGED);
+  }
   setGroom(groom);
   bind(buffers);
 }
@@ -56,7 +67,13 @@ void InterpolatePass::setGroom(const GroomSettings& groom) {
   for (Chunk& c : chunks_) c.push.groom = groom_;
 }
 
-bool InterpolatePass::walksPerVertex() const { return perVertex_ && !groomOn_ && !guidesOnly_; }
+const vk::ComputePipeline& InterpolatePass::walkPipeline() const {
+  if (guidesOnly_) return *perStrand_;
+  if (groomOn_) return staged_ ? *staged_ : *perStrand_;
+  return perVertex_ ? *perVertex_ : *perStrand_;
+}
+
+bool InterpolatePass::walksPerVertex() const { return &walkPipeline() != perStrand_.get(); }
 
 void InterpolatePass::bind(const StrandBuffers& buffers) {
   const StrandLayout& l = buffers.layout();
@@ -81,8 +98,8 @@ void InterpolatePass::bind(const StrandBuffers& buffers) {
 
 void InterpolatePass::record(VkCommandBuffer cmd, vk::GpuProfiler* profiler) const {
   if (profiler) profiler->begin(cmd, "interpolate");
-  const bool perVertex = walksPerVertex();
-  const vk::ComputePipeline& pipeline = perVertex ? *perVertex_ : *perStrand_;
+  const vk::ComputePipeline& pipeline = walkPipeline();
+  const bool perVertex = &pipeline == perVertex_.get();  // the staged walk has one invocation per strand
   for (const Chunk& c : chunks_) {
     pipeline.bind(cmd, c.set.set());
     pipeline.push(cmd, c.push);

@@ -27,8 +27,11 @@
 
 namespace hp::compute {
 // How the invocations cover a chunk (shaders/interpolate.comp). Per vertex makes a warp's stores
-// contiguous (GPUs); per strand reads each strand's binding once (CPU devices). Auto: per strand on CPU
-// devices, per vertex elsewhere. The groom detail and guides-only layouts always walk per strand.
+// contiguous (GPUs): one invocation per vertex for the plain blend, and for the groom detail (whose frame is
+// carried along the strand) one per strand whose vertices are staged in shared memory and written out by
+// the workgroup (where the device has the 26 KiB of shared memory it takes; per strand otherwise). Per
+// strand reads each strand's binding once (CPU devices). Auto: per strand on CPU devices, per vertex
+// elsewhere. Guides-only layouts always walk per strand. All walks write the same bits.
 enum class InterpolateWalk { Auto, PerStrand, PerVertex };
 const char* interpolateWalkName(InterpolateWalk walk);                        // "auto", "strand", "vertex"
 std::optional<InterpolateWalk> parseInterpolateWalk(const std::string& name);  // one of those names, or none
@@ -43,7 +46,8 @@ class InterpolatePass {
   void record(VkCommandBuffer cmd, vk::GpuProfiler* profiler = nullptr) const;
   // The groom detail of the next record() (push constants: no GPU object changes). Validates it.
   void setGroom(const GroomSettings& groom);
-  // Whether the next record() walks per vertex (the walk asked for, the device, the groom and layout).
+  // Whether the next record() writes per vertex, plain or staged (the walk asked for, the device, the
+  // groom and layout).
   bool walksPerVertex() const;
 
  private:
@@ -57,6 +61,9 @@ class InterpolatePass {
   vk::DescriptorSet layoutSet_;
   std::shared_ptr<const vk::ComputePipeline> perStrand_;
   std::shared_ptr<const vk::ComputePipeline> perVertex_;  // none where the walk never goes per vertex
+  std::shared_ptr<const vk::ComputePipeline> staged_;     // likewise, or where its shared memory does not fit
+  const vk::ComputePipeline& walkPipeline() const;  // the one the next record() binds
+
   std::vector<Chunk> chunks_;
   gpu::GroomParams groom_{};
   bool groomOn_ = false;

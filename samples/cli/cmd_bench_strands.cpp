@@ -2,7 +2,7 @@
 // [--no-groom] [--clump ..] [--curl ..] [--frizz ..] [--json]`: GPU time per frame of the tessellate and
 // interpolate passes (GpuProfiler timestamps, median of F frames after one warm-up frame) on the default head, with
 // the scenes' groom and the groom options, at each render-strand count and interpolate walk
-// (compute::InterpolateWalk; groomed strands walk per strand), and the achieved bandwidth as a fraction of the copy yardstick's (the faster
+// (compute::InterpolateWalk; "vertex" stages groomed strands), and the achieved bandwidth as a fraction of the copy yardstick's (the faster
 // of a vkCmdCopyBuffer of 128 MiB and a shader's copy, each timed alone: samples/tools/copy_reference.h).
 // Bytes counted per pass are the compulsory traffic: every input read once, every output written once
 //   tessellate:  G*P*16 read + G*Q*32 written

@@ -43,6 +43,15 @@ HP_CONST(uint, INTERPOLATE_BINDING_POSITIONS, 4)        // out: vec4[chunk stran
 HP_CONST(uint, INTERPOLATE_BINDING_TANGENTS, 5)         // out: vec4[chunk strands * Q]
 HP_CONST(uint, INTERPOLATE_BINDING_ATTRIBUTES, 6)       // out: StrandAttributes[chunk strands]
 
+// The walks (interpolate.comp's specialization constant 0, compute/strands/interpolate_pass.h InterpolateWalk).
+HP_CONST(uint, INTERPOLATE_WALK_STRAND, 0)  // one invocation per strand, its stores Q x 16 bytes apart
+HP_CONST(uint, INTERPOLATE_WALK_VERTEX, 1)  // plain blend: one invocation per vertex
+HP_CONST(uint, INTERPOLATE_WALK_STAGED, 2)  // groom: per strand, stores staged in blocks for the workgroup
+// The staged walk's block: each strand's next INTERPOLATE_STAGE_VERTICES vertices go to shared memory (a row
+// of INTERPOLATE_STAGE_VERTICES + 1 slots per strand: the tangents run one vertex behind), then the workgroup
+// writes them out strand after strand.
+HP_CONST(uint, INTERPOLATE_STAGE_VERTICES, 12)
+
 HP_CONST(uint, INTERPOLATE_MODE_STRANDS, 0)  // K_j = X1 A_j + X2 B_j + X3 C_j per binding
 HP_CONST(uint, INTERPOLATE_MODE_GUIDES, 1)   // debug: render strand s is smoothed guide s
 

@@ -42,6 +42,17 @@ Bary barycentric(const glm::dvec3& x, const glm::dvec3& a, const glm::dvec3& b, 
   glm::dvec3 n = glm::normalize(glm::cross(e1, e2));
   return {{1.0 - v - w, v, w}, std::abs(glm::dot(d, n))};
 }
+
+// The largest component difference of two equally long vec4 arrays (infinite if their sizes differ).
+float largestDifference(const std::vector<glm::vec4>& a, const std::vector<glm::vec4>& b) {
+  if (a.size() != b.size()) return INFINITY;
+  float largest = 0.0f;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    const glm::vec4 d = glm::abs(a[i] - b[i]);
+    largest = std::max({largest, d.x, d.y, d.z, d.w});
+  }
+  return largest;
+}
 }  // namespace
 
 TEST_F(InterpolateTest, MatchesDoublePrecisionReferenceOnDefaultHead) {
@@ -154,7 +165,7 @@ TEST_F(InterpolateTest, ChunkedOutputEqualsOneChunk) {
 }
 
 // The per-vertex walk (GPUs' default) and the per-strand walk (CPU devices') run the same arithmetic, so
-// they write the same bits, chunked or not; the groom detail and guides-only layouts stay per strand.
+// they write the same bits, chunked or not.
 TEST_F(InterpolateTest, PerVertexWalkWritesWhatThePerStrandWalkWrites) {
   HairAsset asset = headWithStrands(10000);
   compute::StrandOptions chunked;
@@ -171,7 +182,40 @@ TEST_F(InterpolateTest, PerVertexWalkWritesWhatThePerStrandWalkWrites) {
   }
 }
 
-TEST_F(InterpolateTest, GroomAndGuidesOnlyKeepThePerStrandWalk) {
+// The groom detail walks each strand in order (its frame is carried along it); on GPUs the walk stages
+// each block of vertices in shared memory and the workgroup writes them out. The same arithmetic, though
+// the compiler may contract it differently in the two shaders (lavapipe: positions 3e-8 apart in ~8% of
+// the components, the unit tangents, differences of near points, 2e-6); a vertex or tangent put in the
+// wrong place would be millimetres or degrees off. With a strand count that leaves the last workgroup part full, chunks that split workgroups, and
+// Q = 37 (three full blocks of 12 and one of a single vertex, whose tangents straddle the blocks).
+TEST_F(InterpolateTest, StagedGroomWalkWritesWhatThePerStrandWalkWrites) {
+  HairAsset asset = headWithStrands(3001);
+  compute::StrandOptions chunked;
+  chunked.maxChunkBytes = 36 * 16 * 1000 + 100;
+  compute::StrandOptions q37;
+  q37.verticesPerStrand = 37;
+  const GroomSettings groom = recommendedGroom();
+  ASSERT_TRUE(groom.any());
+  for (const compute::StrandOptions& options : {compute::StrandOptions{}, chunked, q37}) {
+    test::GpuStrands strand =
+        test::runStrandPasses(*ctx, asset, options, compute::InterpolateWalk::PerStrand, groom);
+    test::GpuStrands staged = test::runStrandPasses(*ctx, asset, options, compute::InterpolateWalk::PerVertex, groom);
+    ASSERT_EQ(staged.strands.positions.size(), 3001u * options.verticesPerStrand);
+    EXPECT_LE(largestDifference(strand.strands.positions, staged.strands.positions), 1e-6f)
+        << staged.layout.chunks.size() << " chunks";
+    EXPECT_LE(largestDifference(strand.strands.tangents, staged.strands.tangents), 1e-5f)
+        << staged.layout.chunks.size() << " chunks";
+    EXPECT_EQ(std::memcmp(strand.strands.attributes.data(), staged.strands.attributes.data(),
+                          strand.strands.attributes.size() * sizeof(gpu::StrandAttributes)),
+              0);
+  }
+  // The groom moved the strands off the plain blend (the walks were not both plain).
+  test::GpuStrands plain = test::runStrandPasses(*ctx, asset, {}, compute::InterpolateWalk::PerStrand);
+  EXPECT_FALSE(plain.strands.positions ==
+               test::runStrandPasses(*ctx, asset, {}, compute::InterpolateWalk::PerVertex, groom).strands.positions);
+}
+
+TEST_F(InterpolateTest, GuidesOnlyKeepsThePerStrandWalk) {
   HairAsset asset = headWithStrands(2000);
   const GuideSet& guides = asset.guides;
   vk::Buffer particles = compute::uploadGuideParticles(*ctx, guides);
@@ -182,7 +226,7 @@ TEST_F(InterpolateTest, GroomAndGuidesOnlyKeepThePerStrandWalk) {
   curl.curlRadius = 0.002f;
   curl.curlTurns = 100.0f;
   perVertex.setGroom(curl);
-  EXPECT_FALSE(perVertex.walksPerVertex());  // the curl's frame is carried along the strand
+  EXPECT_TRUE(perVertex.walksPerVertex());  // staged: lavapipe's 32 KiB of shared memory hold its blocks
   perVertex.setGroom({});
   EXPECT_TRUE(perVertex.walksPerVertex());
   compute::StrandOptions guidesOnly;
@@ -190,7 +234,7 @@ TEST_F(InterpolateTest, GroomAndGuidesOnlyKeepThePerStrandWalk) {
   compute::StrandBuffers guideStrands(*ctx, guides.guideCount(), guides.particlesPerGuide, asset.topology, guidesOnly);
   perVertex.bind(guideStrands);
   EXPECT_FALSE(perVertex.walksPerVertex());
-  compute::InterpolatePass perStrand(*ctx, buffers, nullptr, {}, compute::InterpolateWalk::PerStrand);
+  compute::InterpolatePass perStrand(*ctx, buffers, nullptr, curl, compute::InterpolateWalk::PerStrand);
   EXPECT_FALSE(perStrand.walksPerVertex());
   // Auto follows the device: per strand on a CPU device (lavapipe), per vertex on others.
   compute::InterpolatePass automatic(*ctx, buffers);

@@ -101,12 +101,12 @@ std::string sci(double value) {
 }
 
 GpuStrands runStrandPasses(const vk::Context& ctx, const HairAsset& asset, const compute::StrandOptions& options,
-                           compute::InterpolateWalk walk) {
+                           compute::InterpolateWalk walk, const GroomSettings& groom) {
   const GuideSet& guides = asset.guides;
   compute::StrandBuffers buffers(ctx, guides.guideCount(), guides.particlesPerGuide, asset.topology, options);
   vk::Buffer particles = compute::uploadGuideParticles(ctx, guides);
   compute::TessellatePass tessellate(ctx, particles, buffers);
-  compute::InterpolatePass interpolate(ctx, buffers, nullptr, {}, walk);
+  compute::InterpolatePass interpolate(ctx, buffers, nullptr, groom, walk);
   vk::submitAndWait(ctx, [&](VkCommandBuffer cmd) { compute::recordStrandPasses(ctx, cmd, tessellate, interpolate); },
                     "strand passes test");
   // The smoothed guides' last use was the interpolate pass's read.

@@ -39,7 +39,8 @@ struct GpuStrands {
   compute::StrandData strands;  // render strands
 };
 GpuStrands runStrandPasses(const vk::Context& ctx, const HairAsset& asset, const compute::StrandOptions& options,
-                           compute::InterpolateWalk walk = compute::InterpolateWalk::Auto);
+                           compute::InterpolateWalk walk = compute::InterpolateWalk::Auto,
+                           const GroomSettings& groom = {});
 
 // "1.23e-07": for RecordProperty.
 std::string sci(double value);
