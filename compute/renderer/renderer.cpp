@@ -242,7 +242,9 @@ void Renderer::recordLightShadows(VkCommandBuffer cmd, render::FrameLights& ligh
   float widest = 0.0f;
   for (HairInstance* i : instances) {
     const render::LookSettings& look = i->settings_.look;
-    const float fraction = i->shadowLodFraction();  // thinned strands are widened by 1 / fraction
+    // Thinned strands (a far view's level of detail, or the maps' strand budget) are widened by 1 / fraction.
+    const float fraction =
+        std::min(i->shadowLodFraction(), shadowStrandFraction(opacity.shadowStrands, i->strands().layout().strandCount));
     const float width = look.strandWidth / fraction;
     casters.push_back({&i->geometry_->bounds, &i->geometry_->opacity, i->headToWorld(),
                        glm::vec2(width, look.tipWidthFraction), i->lodStrands(fraction)});

@@ -59,6 +59,10 @@ render::LookSettings lodLook(render::LookSettings look, float fraction) {
   return look;
 }
 
+float shadowStrandFraction(std::uint32_t budget, std::uint32_t strands) {
+  return budget == 0 || strands <= budget ? 1.0f : float(double(budget) / double(strands));
+}
+
 std::uint32_t lodStrandCount(float fraction, std::uint32_t strands) {
   const double n = std::ceil(double(fraction) * double(strands));
   return std::uint32_t(std::clamp(n, 1.0, double(strands)));

@@ -78,6 +78,7 @@ FrameResult benchFrame(const vk::Context& ctx, const FrameCase& c) {
   settings.formats = renderer.formats();
   settings.raster = c.raster;
   settings.opacity.raster = c.opacityRaster;
+  settings.opacity.shadowStrands = c.shadowStrands;
   settings.look.skinBounce = c.skinBounce;
   settings.strands.bounceSamples = c.bounceSamples;
   settings.rasterSettings.fineWalk = c.fineWalk;

@@ -37,6 +37,7 @@ struct FrameCase {
   std::uint32_t bounceSamples = gpu::RENDER_BOUNCE_STRAND_SAMPLES;  // StrandOptions::bounceSamples
   compute::FineWalk fineWalk = compute::FineWalk::Auto;  // compute only: RasterSettings::fineWalk
   bool groom = true;  // the scene's groom at interpolation (recommendedGroom), or none (the plain blend)
+  std::uint32_t shadowStrands = render::OpacitySettings{}.shadowStrands;  // OpacitySettings::shadowStrands
   HairMaterial material;  // the fibres (the scenes' by default; bench's material options)
 };
 

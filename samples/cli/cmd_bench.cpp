@@ -42,6 +42,7 @@ struct BenchOptions {
   std::vector<std::uint32_t> bounceSamples{hp::gpu::RENDER_BOUNCE_STRAND_SAMPLES};
   std::vector<std::string> fineWalks{"auto"};
   std::vector<std::string> grooms{"scene"};
+  std::vector<std::uint32_t> shadowStrands{hp::render::OpacitySettings{}.shadowStrands};
   hp::HairMaterial material;  // every case's (the material options)
   std::string json, plot, device;
 };
@@ -70,21 +71,24 @@ std::vector<bool> twoWordList(const char* option, const std::vector<std::string>
   return out;
 }
 
-// c once for each --msaa, --lod-fraction, --lights, --bounce-samples and groom (true: the scene's).
+// c once for each --msaa, --lod-fraction, --lights, --bounce-samples, groom (true: the scene's) and
+// --shadow-strands.
 void addSampleCounts(hp::cli::FrameCase c, const BenchOptions& o, const std::vector<bool>& grooms,
                      std::vector<hp::cli::FrameCase>& out) {
   for (std::uint32_t m : o.msaa)
     for (float f : o.lodFractions)
       for (std::uint32_t lights : o.lights)
         for (std::uint32_t bounce : o.bounceSamples)
-          for (const bool groom : grooms) {
-            c.msaa = m;
-            c.lodFraction = f;
-            c.lights = lights;
-            c.bounceSamples = bounce;
-            c.groom = groom;
-            out.push_back(c);
-          }
+          for (const bool groom : grooms)
+            for (std::uint32_t shadowStrands : o.shadowStrands) {
+              c.msaa = m;
+              c.lodFraction = f;
+              c.lights = lights;
+              c.bounceSamples = bounce;
+              c.groom = groom;
+              c.shadowStrands = shadowStrands;
+              out.push_back(c);
+            }
 }
 
 // A parser's error, prefixed with the option it came from.
@@ -186,6 +190,7 @@ nlohmann::json toJson(const hp::cli::FrameResult& r) {
   return {{"strands", r.c.strands},      {"width", r.c.width},          {"lod_fraction", r.c.lodFraction},
           {"shadowed_lights", r.c.lights},            {"bounce_samples", r.c.bounceSamples},
           {"fine_walk", hp::compute::fineWalkName(r.c.fineWalk)}, {"groom", r.c.groom ? "scene" : "none"},
+          {"shadow_strands", r.c.shadowStrands},
           {"roughness_variation", r.c.material.roughnessVariation},
           {"height", r.c.height},        {"raster", hp::cli::frameCaseName(r.c)},
           {"lut_mode", hp::lutModeName(r.c.lutMode)},
@@ -297,6 +302,10 @@ void setup(CLI::App& app) {
   cmd->add_option("--groom", o->grooms,
                   "The groom at interpolation: scene (the default head's clumps, wave and frizz) and/or none (comma "
                   "separated)")
+      ->delimiter(',')->capture_default_str();
+  cmd->add_option("--shadow-strands", o->shadowStrands,
+                  "Render strands drawn into the opacity maps at most, an even sample widened to keep the hair's "
+                  "opacity; 0: all (comma separated)")
       ->delimiter(',')->capture_default_str();
   hp::cli::addMaterialOptions(*cmd, o->material);
   cmd->add_option("--json", o->json, "Write the report as JSON to this file");

@@ -29,6 +29,7 @@ hp::render::OpacitySettings opacitySettings(const FrameOptions& o) {
   hp::render::OpacitySettings s;
   s.enabled = !o.noShadows;
   if (o.opacityResolution) s.resolution = *o.opacityResolution;
+  if (o.shadowStrands) s.shadowStrands = *o.shadowStrands;
   if (o.opacityRaster) s.raster = hp::render::parseOpacityRaster(*o.opacityRaster);
   s.deep = o.deepOpacity;
   if (o.strandOpacity) {
@@ -308,6 +309,9 @@ void addFrameOptions(CLI::App& cmd, FrameOptions& o) {
                "collisions unchanged)");
   cmd.add_flag("--no-shadows", o.noShadows, "Turn the opacity shadow maps off");
   cmd.add_option("--opacity-resolution", o.opacityResolution, "Opacity map texels per side, 16-4096 (default 512)");
+  cmd.add_option("--shadow-strands", o.shadowStrands,
+                 "Render strands drawn into the opacity maps at most, an even sample widened to keep the hair's "
+                 "opacity; 0: all (default " + std::to_string(hp::render::OpacitySettings{}.shadowStrands) + ")");
   cmd.add_flag("--deep-opacity,!--global-opacity", o.deepOpacity,
                "Deep opacity maps (default; compute opacity path): slices start at each texel's first hair, 4x finer; "
                "--global-opacity: 16 slices over the whole hair");

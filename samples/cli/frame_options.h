@@ -49,6 +49,7 @@ struct FrameOptions {
   bool noShadows = false;
   bool deepOpacity = true;
   std::optional<std::uint32_t> opacityResolution;
+  std::optional<std::uint32_t> shadowStrands;
   std::optional<float> strandOpacity, shadowK, shadowBias;
   std::optional<std::string> raster, opacityRaster;
   std::optional<std::uint32_t> tileBudget;

@@ -105,6 +105,15 @@ TEST(Lod, FractionFollowsDistanceAndCountsAtLeastOneStrand) {
   EXPECT_EQ(hp::lodStrandCount(1.0f, 3), 3u);
 }
 
+// OpacitySettings::shadowStrands as a fraction of the strands: none past 1 (0 is no budget).
+TEST(Lod, ShadowStrandBudgetIsAFractionOfTheStrandsAtMostOne) {
+  EXPECT_EQ(hp::shadowStrandFraction(0, 1000000), 1.0f);
+  EXPECT_EQ(hp::shadowStrandFraction(65536, 20000), 1.0f);
+  EXPECT_EQ(hp::shadowStrandFraction(65536, 65536), 1.0f);
+  EXPECT_FLOAT_EQ(hp::shadowStrandFraction(65536, 131072), 0.5f);
+  EXPECT_EQ(hp::lodStrandCount(hp::shadowStrandFraction(65536, 1000000), 1000000), 65536u);
+}
+
 TEST_F(VulkanTest, HalfTheStrandsWidenedKeepTheHairsCoverageOnTheComputeRaster) {
   const hp::HairAsset full = hp::test::defaultHeadWithStrands(3000), halfAsset = hp::test::defaultHeadWithStrands(1500);
   const Coverage all = computeFrame(*ctx, full, {});

@@ -612,6 +612,41 @@ TEST_F(VulkanTest, ComputeAndGraphicsOpacityMapsAgreeOnTheDefaultHead) {
   }
 }
 
+// OpacitySettings::shadowStrands: past the budget the maps draw the first shadowStrands strands (an even
+// sample), widened by strands / shadowStrands, so the hair's total opacity stays; the same number of strands at
+// their own width leave about half of it out. A budget at or above the strand count draws every strand: the
+// same maps bit for bit (fixed-point sums do not depend on order).
+TEST_F(VulkanTest, AShadowStrandBudgetKeepsTheMapsTotalOpacity) {
+  hp::DensityOptions density;
+  density.totalStrands = 4000;
+  const hp::HairAsset asset = hp::buildDefaultHeadAsset(hp::defaultHeadGrowth(), density);
+  density.totalStrands = 2000;
+  const hp::HairAsset halfAsset = hp::buildDefaultHeadAsset(hp::defaultHeadGrowth(), density);
+  hp::LightSpec sun;
+  sun.direction = glm::normalize(glm::vec3(0.4f, 0.7f, -0.6f));
+  OpacitySettings s;
+  s.resolution = 256;
+  const auto total = [](const OpacityCapture& c) {  // the last slice: every texel's whole opacity
+    double sum = 0.0;
+    for (std::uint32_t y = 0; y < c.resolution; ++y)
+      for (std::uint32_t x = 0; x < c.resolution; ++x) sum += c.at(15, x, y);
+    return sum;
+  };
+  const OpacityCapture all = headSceneMaps(*ctx, asset, s, sun);
+  const OpacityCapture thin = headSceneMaps(*ctx, halfAsset, s, sun);
+  s.shadowStrands = 2000;
+  const OpacityCapture sample = headSceneMaps(*ctx, asset, s, sun);
+  s.shadowStrands = 4000;
+  const OpacityCapture within = headSceneMaps(*ctx, asset, s, sun);
+  std::printf("total opacity: all %.0f, budget of half %.0f, half the strands at their width %.0f\n", total(all),
+              total(sample), total(thin));
+  EXPECT_NEAR(total(sample) / total(all), 1.0, 0.05);
+  EXPECT_LT(total(thin) / total(all), 0.6);
+  EXPECT_NE(sample.alpha, all.alpha);  // the budget took effect
+  EXPECT_EQ(within.alpha, all.alpha);
+  EXPECT_EQ(within.firstHair, all.firstHair);
+}
+
 // 700 coincident strands of opacity 100 pile 70,000 into each texel's first bin: past the 32-bit fixed
 // point (65,536), where a plain sum would wrap to ~4,464. The bins saturate instead: every slice at and
 // behind the pile reads OPACITY_SATURATED_ALPHA (T = 0), the graphics path's sum is the true 70,000.

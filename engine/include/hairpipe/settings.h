@@ -47,6 +47,13 @@ struct OpacitySettings {
   VkFormat format = VK_FORMAT_R32G32B32A32_SFLOAT;  // or VK_FORMAT_R16G16B16A16_SFLOAT
   OpacityRaster raster = OpacityRaster::Auto;
   bool deep = true;                 // deep opacity maps (compute opacity path)
+  // Render strands per head drawn into the opacity maps at most; 0 (the default): all. Past it the maps take
+  // an even sample, the first shadowStrands strands (an order whose every prefix thins each scalp triangle
+  // alike), each widened by strands / shadowStrands so the maps keep the hair's opacity, as the level of
+  // detail does. The maps' cost follows the strands drawn; the sample's shadow is lighter where few strands
+  // cast it (at 136,320 strands with 65,536 drawn, the skin along the hair's edge on the face shows a lit
+  // sliver: docs/PERFORMANCE.md "Opacity maps").
+  std::uint32_t shadowStrands = 0;
 };
 
 struct RendererSettings {
