@@ -61,7 +61,10 @@ float opacityAlpha(sampler2DArray maps, uint slot, vec3 uvw, float s, bool deep,
     float s0 = texelFetch(maps, ivec3(texel, int(slot * OPACITY_LAYERS + OPACITY_TARGETS)), 0).x;
     d = (s - s0) * OPACITY_DEEP_FACTOR - bias;
   }
-  return opacityAlphaAtSlice(maps, slot, uv, clamp(d, 0.0, float(OPACITY_SLICES)));
+  // At or in front of the first slice (a deep map's texel without hair: s0 = OPACITY_NO_HAIR) every hat
+  // weight is 0: skip the layers' fetches (the lit side of the hair, skin the hair does not shade).
+  if (!(d > 0.0)) return 0.0;
+  return opacityAlphaAtSlice(maps, slot, uv, min(d, float(OPACITY_SLICES)));
 }
 
 // One of the soft lookups' 4 taps: 1.5 texels from the receiver diagonally.
