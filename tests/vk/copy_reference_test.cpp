@@ -32,3 +32,21 @@ TEST_F(VulkanTest, CopyYardstickTimesBothCopiesWithoutAHazard) {
   const double transfer = gigabytesPerSecond(t.bytes, t.medianMs), shader = gigabytesPerSecond(t.computeBytes, t.computeMs);
   EXPECT_DOUBLE_EQ(copyGigabytesPerSecond(t), std::max(transfer, shader));
 }
+
+// When the timestamps resolve the passes, from the copy's timings alone (no device): lavapipe before its
+// stamps were fenced read 0.014 ms of a 7 ms copy; an H100 reads 0.16 ms of a copy whose submission takes
+// 0.48 ms more than an empty one (a fixed cost, not missed work); an honest CPU device reads what it took.
+TEST(CopyYardstick, TimestampsResolveUnlessTheyMissMostOfTheCopy) {
+  const auto timing = [](double stamped, double wall, double emptyWall) {
+    CopyTiming t;
+    t.medianMs = stamped;
+    t.wallMs = wall;
+    t.emptyWallMs = emptyWall;
+    return t;
+  };
+  EXPECT_NE(timestampsUnresolvedBecause(timing(0.014, 7.2, 0.2), 0.014), "");       // lavapipe, unfenced stamps
+  EXPECT_EQ(timestampsUnresolvedBecause(timing(0.164, 0.52, 0.044), 0.163), "");    // H100
+  EXPECT_EQ(timestampsUnresolvedBecause(timing(6.9, 7.4, 0.2), 7.1), "");           // lavapipe, fenced stamps
+  EXPECT_NE(timestampsUnresolvedBecause(timing(0.5, 3.2, 0.2), 0.5), "");           // 2.5 ms unstamped
+  EXPECT_NE(timestampsUnresolvedBecause(timing(0.164, 0.52, 0.044), 0.02), "");     // beside the passes: 8x less
+}
