@@ -25,6 +25,9 @@ layout(constant_id = 0) const uint HEAD_LIGHT_LOOP = 1u;
 vec3 headLight(FrameLight light, vec3 N, float wrap) {
   LightSample ls = sampleLight(light, inWorld);
   float diffuse = ls.scale * max((wrap + dot(N, ls.L)) / (1.0 + wrap), 0.0);
+  // Past the wrap term's reach (or outside a spot's cone) the light adds nothing, whatever stands in its way:
+  // skip the shadow lookups (the skin facing away from the light; GPUs branch by the warp, so a region of it).
+  if (!(diffuse > 0.0)) return vec3(0.0);
   // Only skin facing away from the light is in the map of back faces (with a fade across the terminator for
   // the interpolated normal): lit skin keeps the base offset and its contact shadows.
   float nl = dot(N, ls.L), c = abs(nl);
