@@ -243,11 +243,11 @@ void Renderer::recordLightShadows(VkCommandBuffer cmd, render::FrameLights& ligh
   for (HairInstance* i : instances) {
     const render::LookSettings& look = i->settings_.look;
     // Thinned strands (a far view's level of detail, or the maps' strand budget) are widened by 1 / fraction.
-    const float fraction =
-        std::min(i->shadowLodFraction(), shadowStrandFraction(opacity.shadowStrands, i->strands().layout().strandCount));
-    const float width = look.strandWidth / fraction;
+    const ShadowSample sample =
+        shadowSample(i->shadowLodFraction(), i->strands().layout().strandCount, opacity.shadowStrands);
+    const float width = look.strandWidth / sample.fraction;
     casters.push_back({&i->geometry_->bounds, &i->geometry_->opacity, i->headToWorld(),
-                       glm::vec2(width, look.tipWidthFraction), i->lodStrands(fraction)});
+                       glm::vec2(width, look.tipWidthFraction), sample.drawn});
     widest = std::max(widest, width);
   }
   compute::BoundsFraming framing;

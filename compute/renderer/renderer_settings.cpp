@@ -59,8 +59,13 @@ render::LookSettings lodLook(render::LookSettings look, float fraction) {
   return look;
 }
 
-float shadowStrandFraction(std::uint32_t budget, std::uint32_t strands) {
-  return budget == 0 || strands <= budget ? 1.0f : float(double(budget) / double(strands));
+ShadowSample shadowSample(float lodFraction, std::uint32_t strands, std::uint32_t budget) {
+  ShadowSample s{lodStrandCount(lodFraction, strands), lodFraction};
+  if (budget != 0 && s.drawn > budget) {
+    s.drawn = budget;
+    s.fraction = float(double(budget) / double(strands));
+  }
+  return s;
 }
 
 std::uint32_t lodStrandCount(float fraction, std::uint32_t strands) {

@@ -62,8 +62,14 @@ struct InstanceSettings {
 void validate(const hairpipe::LodSettings& lod);
 // The fraction of the strands drawn at `distance` (1 when LOD is off; see hairpipe::LodSettings).
 float lodFraction(const hairpipe::LodSettings& lod, float distance);
-// The fraction of `strands` the opacity maps draw under OpacitySettings::shadowStrands (0: no budget).
-float shadowStrandFraction(std::uint32_t budget, std::uint32_t strands);
+// The strands of an instance the opacity maps draw: the first `drawn` of them, the view's level of detail
+// (lodFraction) capped at OpacitySettings::shadowStrands (0: no cap), and the fraction of all strands they
+// stand for (each is widened by 1 / fraction).
+struct ShadowSample {
+  std::uint32_t drawn = 0;
+  float fraction = 1.0f;
+};
+ShadowSample shadowSample(float lodFraction, std::uint32_t strands, std::uint32_t budget);
 // The strands a fraction of `strands` draws: at least one.
 std::uint32_t lodStrandCount(float fraction, std::uint32_t strands);
 // The look a view at `fraction` draws with: the strands widened by 1 / fraction, so the hair keeps its

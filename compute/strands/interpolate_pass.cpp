@@ -21,19 +21,21 @@ bool perVertexOn(const vk::Context& ctx, InterpolateWalk walk) {
   return walk == InterpolateWalk::PerVertex;
 }
 
-// The staged walk's two blocks of shared memory (interpolate.comp): 26 KiB, over Vulkan's guaranteed 16.
+// The staged walk's two blocks of shared memory (interpolate.glsl): 26 KiB, over Vulkan's guaranteed 16.
 bool stagingFits(const vk::Context& ctx) {
   const std::uint32_t bytes = 2 * gpu::INTERPOLATE_WORKGROUP_SIZE * (gpu::INTERPOLATE_STAGE_VERTICES + 1) * 16;
   return ctx.properties().limits.maxComputeSharedMemorySize >= bytes;
 }
 
+// The staged walk is a shader of its own (interpolate_staged.comp), so the other two declare no shared memory.
 std::shared_ptr<const vk::ComputePipeline> makeWalk(const vk::Context& ctx, vk::PipelineLibrary* library,
                                                     VkDescriptorSetLayout layout, std::uint32_t walk) {
-  const char* name = walk == gpu::INTERPOLATE_WALK_VERTEX   ? "interpolate per vertex"
-                     : walk == gpu::INTERPOLATE_WALK_STAGED ? "interpolate staged"
-                                                            : "interpolate";
+  if (walk == gpu::INTERPOLATE_WALK_STAGED)
+    return vk::makeComputePipeline(ctx, library, "interpolate_staged.comp", gpu::INTERPOLATE_WORKGROUP_SIZE, {layout},
+                                   sizeof(gpu::InterpolatePush), "interpolate staged", {});
   return vk::makeComputePipeline(ctx, library, "interpolate.comp", gpu::INTERPOLATE_WORKGROUP_SIZE, {layout},
-                                 sizeof(gpu::InterpolatePush), name, {walk});
+                                 sizeof(gpu::InterpolatePush),
+                                 walk == gpu::INTERPOLATE_WALK_VERTEX ? "interpolate per vertex" : "interpolate", {walk});
 }
 }  // namespace
 
@@ -74,6 +76,11 @@ const vk::ComputePipeline& InterpolatePass::walkPipeline() const {
 }
 
 bool InterpolatePass::walksPerVertex() const { return &walkPipeline() != perStrand_.get(); }
+
+const char* InterpolatePass::walkTaken() const {
+  const vk::ComputePipeline* p = &walkPipeline();
+  return p == perVertex_.get() ? "vertex" : p == staged_.get() ? "staged" : "strand";
+}
 
 void InterpolatePass::bind(const StrandBuffers& buffers) {
   const StrandLayout& l = buffers.layout();

@@ -1,5 +1,5 @@
 #pragma once
-// Contract: the interpolation pass (docs/THEORY.md §1.4, shaders/interpolate.comp). Fills every scalp
+// Contract: the interpolation pass (docs/THEORY.md §1.4, shaders/interpolate.glsl). Fills every scalp
 // triangle with render strands K_j = X1 A_j + X2 B_j + X3 C_j from its three smoothed guides, with
 // renormalised blended tangents and per-strand attributes (random, width and colour scales; see
 // makeStrandAttributes in shaders/shared/strands.h), and the groom detail of GroomSettings (clumps, curl,
@@ -26,12 +26,14 @@
 #include "shaders/shared/strands.h"
 
 namespace hp::compute {
-// How the invocations cover a chunk (shaders/interpolate.comp). Per vertex makes a warp's stores
+// How the invocations cover a chunk (shaders/interpolate.glsl). Per vertex makes a warp's stores
 // contiguous (GPUs): one invocation per vertex for the plain blend, and for the groom detail (whose frame is
 // carried along the strand) one per strand whose vertices are staged in shared memory and written out by
 // the workgroup (where the device has the 26 KiB of shared memory it takes; per strand otherwise). Per
 // strand reads each strand's binding once (CPU devices). Auto: per strand on CPU devices, per vertex
-// elsewhere. Guides-only layouts always walk per strand. All walks write the same bits.
+// elsewhere. Guides-only layouts always walk per strand. The walks run the same arithmetic: the per-vertex
+// walk writes the per-strand walk's bits; the staged one, a shader of its own, may differ in the last bit
+// where its compiler contracts the arithmetic differently.
 enum class InterpolateWalk { Auto, PerStrand, PerVertex };
 const char* interpolateWalkName(InterpolateWalk walk);                        // "auto", "strand", "vertex"
 std::optional<InterpolateWalk> parseInterpolateWalk(const std::string& name);  // one of those names, or none
@@ -49,6 +51,8 @@ class InterpolatePass {
   // Whether the next record() writes per vertex, plain or staged (the walk asked for, the device, the
   // groom and layout).
   bool walksPerVertex() const;
+  // The walk the next record() takes: "strand", "vertex" (plain blend) or "staged" (groomed, per vertex).
+  const char* walkTaken() const;
 
  private:
   struct Chunk {

@@ -28,9 +28,7 @@ std::string frameCaseName(const FrameCase& c) {
   const std::string bounce = c.bounceSamples == gpu::RENDER_BOUNCE_STRAND_SAMPLES
                                  ? ""
                                  : ", bounce x" + std::to_string(c.bounceSamples);
-  const std::string shadows = c.shadowStrands == render::OpacitySettings{}.shadowStrands ? ""
-                              : c.shadowStrands == 0 ? ", every strand shadows"
-                                                     : ", " + std::to_string(c.shadowStrands) + " shadow strands";
+  const std::string shadows = c.shadowStrands == 0 ? "" : ", " + std::to_string(c.shadowStrands) + " shadow strands";
   const std::string shading = model + scattering + bounce + (c.groom ? "" : ", no groom") + shadows;
   if (c.raster == RasterMode::Compute) {
     const std::string head = c.msaa == 4 ? "" : " head msaa" + std::to_string(c.msaa);

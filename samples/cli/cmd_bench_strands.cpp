@@ -50,7 +50,8 @@ struct BenchOptions {
 struct Result {
   hp::compute::StrandLayout layout;
   hp::compute::InterpolateWalk walk = hp::compute::InterpolateWalk::Auto;
-  bool perVertex = false;  // the walk the pass took
+  bool perVertex = false;           // whether the pass's stores went per vertex (plain or staged)
+  std::string walkTaken = "strand";  // the walk the pass took (InterpolatePass::walkTaken)
   double tessellateMs = 0, interpolateMs = 0, copyMs = 0;
   double frameWallMs = 0;  // host wall clock of a whole frame submission (sanity check of the timestamps)
   hp::vk::CopyTiming copyAlone;  // the yardstick: the copy in submissions of its own
@@ -103,6 +104,7 @@ Result benchOne(const hp::vk::Context& ctx, std::uint32_t strands, hp::compute::
   r.layout = buffers.layout();
   r.walk = walk;
   r.perVertex = interpolate.walksPerVertex();
+  r.walkTaken = interpolate.walkTaken();
   r.tessellateMs = hp::vk::median(times["tessellate"]);
   r.interpolateMs = hp::vk::median(times["interpolate"]);
   r.copyMs = hp::vk::median(times["copy"]);
@@ -130,6 +132,7 @@ nlohmann::json toJson(const Result& r) {
           {"chunks", r.layout.chunks.size()},
           {"walk", hp::compute::interpolateWalkName(r.walk)},
           {"per_vertex", r.perVertex},
+          {"walk_taken", r.walkTaken},
           {"tessellate", pass(r.tessellateMs, r.tessellateBytes)},
           {"interpolate", pass(r.interpolateMs, r.interpolateBytes)},
           {"copy", {{"ms", r.copyMs}, {"bytes", 2.0 * kCopyBytes}, {"alone_ms", r.copyAlone.medianMs},
@@ -149,7 +152,7 @@ void printText(const nlohmann::json& report) {
     char line[200];
     const bool resolved = r["timestamps_resolve_passes"].get<bool>();
     const nlohmann::json& interp = r["interpolate"];
-    const std::string walk = r["walk"].get<std::string>() + (r["per_vertex"].get<bool>() ? " (vertex)" : " (strand)");
+    const std::string walk = r["walk"].get<std::string>() + " (" + r["walk_taken"].get<std::string>() + ")";
     std::snprintf(line, sizeof line, "%7u  %6zu  %-12s  %13.3f  %14.3f  %11.2f  %6.0f%%  %9.2f  %13.1f\n", r["strands"].get<unsigned>(),
                   r["chunks"].get<std::size_t>(), walk.c_str(), r["tessellate"]["ms"].get<double>(), interp["ms"].get<double>(),
                   resolved ? interp["gb_per_s"].get<double>() : 0.0,

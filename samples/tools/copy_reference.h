@@ -53,8 +53,8 @@ double copyGigabytesPerSecond(const CopyTiming& alone);
 
 // Why this device's timestamps do not resolve the passes recorded beside a copy that read inSubmissionMs
 // (empty: they do). They do when they time the copy alone (at least half of what its submission takes
-// beyond an empty submission's wall time, or all but at most 1 ms of it: a submission's fixed cost) and the
-// copy among the passes reads within 2x of alone.
+// beyond an empty submission's wall time, or all but at most 1 ms of it and at least a tenth: a
+// submission's fixed cost) and the copy among the passes reads within 2x of alone.
 std::string timestampsUnresolvedBecause(const CopyTiming& alone, double inSubmissionMs);
 
 double gigabytesPerSecond(double bytes, double milliseconds);

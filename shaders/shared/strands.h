@@ -14,8 +14,9 @@
 //   attributes       StrandAttributes[S]
 // Vertex j of strand s is element s*Q + j. Per-strand arrays are split into chunks when they would
 // exceed maxStorageBufferRange; within a chunk, s is the chunk-local strand index.
-// Dispatch: tessellate has one invocation per smoothed vertex (G*Q); interpolate one per strand of
-// a chunk, looping over its Q vertices. Both use hpThreadId(WORKGROUP_SIZE) and bounds-check.
+// Dispatch: tessellate has one invocation per smoothed vertex (G*Q); interpolate one per strand of a
+// chunk looping over its Q vertices (per strand and staged walks), or one per vertex of a chunk (per
+// vertex walk). All use hpThreadId(WORKGROUP_SIZE) and bounds-check.
 #ifndef HP_SHARED_STRANDS_H
 #define HP_SHARED_STRANDS_H
 #include "common.h"
@@ -43,7 +44,8 @@ HP_CONST(uint, INTERPOLATE_BINDING_POSITIONS, 4)        // out: vec4[chunk stran
 HP_CONST(uint, INTERPOLATE_BINDING_TANGENTS, 5)         // out: vec4[chunk strands * Q]
 HP_CONST(uint, INTERPOLATE_BINDING_ATTRIBUTES, 6)       // out: StrandAttributes[chunk strands]
 
-// The walks (interpolate.comp's specialization constant 0, compute/strands/interpolate_pass.h InterpolateWalk).
+// The walks (interpolate.comp's specialization constant 0, and interpolate_staged.comp;
+// compute/strands/interpolate_pass.h InterpolateWalk).
 HP_CONST(uint, INTERPOLATE_WALK_STRAND, 0)  // one invocation per strand, its stores Q x 16 bytes apart
 HP_CONST(uint, INTERPOLATE_WALK_VERTEX, 1)  // plain blend: one invocation per vertex
 HP_CONST(uint, INTERPOLATE_WALK_STAGED, 2)  // groom: per strand, stores staged in blocks for the workgroup
@@ -76,7 +78,7 @@ struct TessellatePush {
   uint pad;
 };
 
-// Groom detail of the interpolated strands (hp::GroomSettings, engine/core/hair/groom.h; interpolate.comp):
+// Groom detail of the interpolated strands (hp::GroomSettings, engine/core/hair/groom.h; interpolate.glsl):
 // all zero leaves every strand the plain blend of its guides.
 struct GroomParams {
   vec4 clump;  // x = clump centres per scalp triangle (0: none), y = pull toward the centre at the tip,

@@ -110,7 +110,10 @@ TEST(CliBench, StrandAndSimSuitesDeriveBandwidthOnlyWhereTimestampsResolve) {
   const auto groomedRows = nlohmann::json::parse(groomed.out)["results"];
   ASSERT_EQ(groomedRows.size(), 2u);
   EXPECT_TRUE(groomedRows[0]["per_vertex"].get<bool>());
+  EXPECT_EQ(groomedRows[0]["walk_taken"].get<std::string>(), "staged");
   EXPECT_FALSE(groomedRows[1]["per_vertex"].get<bool>());
+  EXPECT_EQ(groomedRows[1]["walk_taken"].get<std::string>(), "strand");
+  EXPECT_EQ(strandRows[1]["walk_taken"].get<std::string>(), "vertex");
   for (const auto& row : strandRows) {
     EXPECT_GE(row["copy"]["alone_runs"].get<unsigned>(), 5u);
     // The yardstick is the faster of the transfer copy and the shader's copy, both timed alone.

@@ -1,4 +1,4 @@
-// Groom detail at interpolation (engine/core/hair/groom.h, shaders/interpolate.comp), measured on the
+// Groom detail at interpolation (engine/core/hair/groom.h, shaders/interpolate.glsl), measured on the
 // dumped render strands of the default head's rest pose: clumping draws a scalp triangle's tips together
 // and leaves the roots, curl winds each strand at its radius around the plain blend, and both are the
 // same in every run.

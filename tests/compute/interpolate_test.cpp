@@ -196,6 +196,11 @@ TEST_F(InterpolateTest, StagedGroomWalkWritesWhatThePerStrandWalkWrites) {
   q37.verticesPerStrand = 37;
   const GroomSettings groom = recommendedGroom();
   ASSERT_TRUE(groom.any());
+  {  // the staged walk is what a groomed chunk asked per vertex takes here (lavapipe holds its 26 KiB)
+    compute::StrandBuffers buffers(*ctx, asset.guides.guideCount(), asset.guides.particlesPerGuide, asset.topology);
+    compute::InterpolatePass pass(*ctx, buffers, nullptr, groom, compute::InterpolateWalk::PerVertex);
+    ASSERT_STREQ(pass.walkTaken(), "staged");
+  }
   for (const compute::StrandOptions& options : {compute::StrandOptions{}, chunked, q37}) {
     test::GpuStrands strand =
         test::runStrandPasses(*ctx, asset, options, compute::InterpolateWalk::PerStrand, groom);

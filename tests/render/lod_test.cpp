@@ -105,13 +105,20 @@ TEST(Lod, FractionFollowsDistanceAndCountsAtLeastOneStrand) {
   EXPECT_EQ(hp::lodStrandCount(1.0f, 3), 3u);
 }
 
-// OpacitySettings::shadowStrands as a fraction of the strands: none past 1 (0 is no budget).
-TEST(Lod, ShadowStrandBudgetIsAFractionOfTheStrandsAtMostOne) {
-  EXPECT_EQ(hp::shadowStrandFraction(0, 1000000), 1.0f);
-  EXPECT_EQ(hp::shadowStrandFraction(65536, 20000), 1.0f);
-  EXPECT_EQ(hp::shadowStrandFraction(65536, 65536), 1.0f);
-  EXPECT_FLOAT_EQ(hp::shadowStrandFraction(65536, 131072), 0.5f);
-  EXPECT_EQ(hp::lodStrandCount(hp::shadowStrandFraction(65536, 1000000), 1000000), 65536u);
+// The opacity maps' strands: the view's level of detail, capped at OpacitySettings::shadowStrands (0: no
+// cap), never past it, widened by the fraction of all strands they stand for.
+TEST(Lod, TheMapsDrawTheLevelOfDetailCappedAtTheirStrandBudget) {
+  const auto same = [](hp::ShadowSample s, std::uint32_t drawn, float fraction) {
+    EXPECT_EQ(s.drawn, drawn);
+    EXPECT_FLOAT_EQ(s.fraction, fraction);
+  };
+  same(hp::shadowSample(1.0f, 1000000, 0), 1000000, 1.0f);
+  same(hp::shadowSample(1.0f, 20000, 65536), 20000, 1.0f);
+  same(hp::shadowSample(1.0f, 65536, 65536), 65536, 1.0f);
+  same(hp::shadowSample(1.0f, 131072, 65536), 65536, 0.5f);
+  same(hp::shadowSample(0.25f, 131072, 65536), 32768, 0.25f);  // the level of detail draws fewer
+  for (std::uint32_t strands : {136320u, 136321u, 1000000u, 999999u, 70001u})
+    EXPECT_EQ(hp::shadowSample(1.0f, strands, 65536).drawn, 65536u) << strands;  // the budget, not one past it
 }
 
 TEST_F(VulkanTest, HalfTheStrandsWidenedKeepTheHairsCoverageOnTheComputeRaster) {

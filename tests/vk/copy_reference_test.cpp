@@ -49,4 +49,6 @@ TEST(CopyYardstick, TimestampsResolveUnlessTheyMissMostOfTheCopy) {
   EXPECT_EQ(timestampsUnresolvedBecause(timing(6.9, 7.4, 0.2), 7.1), "");           // lavapipe, fenced stamps
   EXPECT_NE(timestampsUnresolvedBecause(timing(0.5, 3.2, 0.2), 0.5), "");           // 2.5 ms unstamped
   EXPECT_NE(timestampsUnresolvedBecause(timing(0.164, 0.52, 0.044), 0.02), "");     // beside the passes: 8x less
+  EXPECT_NE(timestampsUnresolvedBecause(timing(0.02, 0.52, 0.044), 0.02), "");      // a fast device, unfenced
+  EXPECT_NE(timestampsUnresolvedBecause(timing(0.0, 0.52, 0.044), 0.0), "");        // stamps that read nothing
 }

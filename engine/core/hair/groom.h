@@ -1,5 +1,5 @@
 #pragma once
-// Contract: the groom detail the interpolation adds to each render strand (shaders/interpolate.comp,
+// Contract: the groom detail the interpolation adds to each render strand (shaders/interpolate.glsl,
 // docs/THEORY.md "Groom detail"): clumping toward clump centres in each scalp triangle, curl around the
 // clumped centreline and frizz, all deterministic per strand. A default-constructed GroomSettings adds
 // nothing (every strand the plain blend of its three guides); recommendedGroom() is what scenes and the

@@ -52,7 +52,7 @@ struct OpacitySettings {
   // alike), each widened by strands / shadowStrands so the maps keep the hair's opacity, as the level of
   // detail does. The maps' cost follows the strands drawn; the sample's shadow is lighter where few strands
   // cast it (at 136,320 strands with 65,536 drawn, the skin along the hair's edge on the face shows a lit
-  // sliver: docs/PERFORMANCE.md "Opacity maps").
+  // sliver: docs/PERFORMANCE.md "Opacity maps"). With the level of detail, the smaller of the two.
   std::uint32_t shadowStrands = 0;
 };
 
