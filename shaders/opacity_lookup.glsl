@@ -35,16 +35,18 @@ bool opacityUv(vec3 uvw, out vec2 uv) {
   return uvw.z > 0.0 && all(greaterThanEqual(uv, vec2(0.0))) && all(lessThanEqual(uv, vec2(1.0)));
 }
 
-// sum_i w_i alpha(z_i) at slice coordinate d in [0, 16]: the hat weights touch at most the two slices around
-// d, which lie in the RGBA layer a = floor((d - 1) / 4) (clamped) and the next, so only those two are
-// fetched; the other layers' weights are all 0 (the same sum as over all four).
+// sum_i w_i alpha(z_i) at slice coordinate d in [0, 16]: the hat weights touch at most the slices floor(d)
+// and floor(d) + 1, which lie in the RGBA layer a = floor((d - 1) / 4) (clamped; slices 4a + 1 .. 4a + 4)
+// and, for d in [4a + 4, 4a + 5), the next one: only those are fetched, the other layers' weights being all
+// 0 (the same sum as over all four).
 float opacityAlphaAtSlice(sampler2DArray maps, uint slot, vec2 uv, float d) {
   const int last = int(OPACITY_TARGETS) - 1;
   int a = clamp(int(floor((d - 1.0) * 0.25)), 0, last), b = min(a + 1, last);
   float l = float(slot * OPACITY_LAYERS);
-  vec4 wb = b != a ? opacitySliceWeights(d, float(4 * b + 1)) : vec4(0.0);
-  return dot(opacitySliceWeights(d, float(4 * a + 1)), textureLod(maps, vec3(uv, l + float(a)), 0.0)) +
-         dot(wb, textureLod(maps, vec3(uv, l + float(b)), 0.0));
+  float alpha = dot(opacitySliceWeights(d, float(4 * a + 1)), textureLod(maps, vec3(uv, l + float(a)), 0.0));
+  if (b != a && d > float(4 * a + 4))
+    alpha += dot(opacitySliceWeights(d, float(4 * b + 1)), textureLod(maps, vec3(uv, l + float(b)), 0.0));
+  return alpha;
 }
 
 // The opacity-map value at a point, its slice coordinate moved `bias` slices toward the light so a strand
