@@ -1,4 +1,5 @@
-// Shared by GLSL and C++: the self-test kernels that prove the Vulkan layer (prefix sum, a flat draw).
+// Shared by GLSL and C++: the self-test kernels that prove the Vulkan layer (prefix sum, a flat draw) and
+// evaluate GLSL-only functions against the CPU (the opacity lookup).
 #ifndef HP_SHARED_SELFTEST_H
 #define HP_SHARED_SELFTEST_H
 #include "common.h"  // relative to this header: works for glslc and C++ alike
@@ -8,6 +9,10 @@ HP_CONST(uint, SCAN_WORKGROUP_SIZE, 256)
 HP_CONST(uint, SCAN_BINDING_DATA, 0)     // uint[]: scanned in place, block by block
 HP_CONST(uint, SCAN_BINDING_SUMS, 1)     // uint[]: one total per block (output of scan, input of add)
 HP_CONST(uint, DRAW_BINDING_VERTICES, 0) // vec4[]: xy in pixels
+HP_CONST(uint, LOOKUP_WORKGROUP_SIZE, 64)
+HP_CONST(uint, LOOKUP_BINDING_MAPS, 0)     // sampler2DArray: one shadow slot's OPACITY_LAYERS layers, 1 x 1
+HP_CONST(uint, LOOKUP_BINDING_QUERIES, 1)  // vec4[]: x = slice coordinate s, y = bias, z = 1 for a deep map
+HP_CONST(uint, LOOKUP_BINDING_RESULTS, 2)  // float[]: opacityAlpha at each query
 
 struct ScanPush {
   uint count;
