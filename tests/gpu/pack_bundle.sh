@@ -12,7 +12,7 @@
 #   lib/fallback/  libstdc++ and libgcc_s: used there only when the machine's own are older
 #   layer/   the Khronos validation layer and its JSON, library_path rewritten to ./ (VK_LAYER_PATH)
 #   data/    tests/data (the tests read it at the source path compiled in; run_on_gpu.sh links it there)
-#   run_on_gpu.sh, compare_binaries.sh (an HP_GPU_EXTRA script), bundle.env (the compiled-in paths, versions), MANIFEST (files, sizes, sources)
+#   run_on_gpu.sh, compare_binaries.sh and frame_checks.sh (HP_GPU_EXTRA scripts), bundle.env (the compiled-in paths, versions), MANIFEST (files, sizes, sources)
 # Files over 256 KiB are stored gzipped (the device tool carries at most 64 MiB; the bundle is ~35 MiB
 # packed, ~95 MiB unpacked); run_on_gpu.sh unpacks a copy before it runs anything.
 # Needs at pack time (Debian 12): libvulkan1, vulkan-validationlayers, libglvnd0, libgl1, libegl1,
@@ -160,6 +160,7 @@ done | sort -t. -k2,2n -u | tail -1)
 
 cp "$HERE/run_on_gpu.sh" "$OUT/run_on_gpu.sh"
 cp "$HERE/compare_binaries.sh" "$OUT/compare_binaries.sh"
+cp "$HERE/frame_checks.sh" "$OUT/frame_checks.sh"
 chmod +x "$OUT/run_on_gpu.sh" "$OUT"/bin/*
 {
   echo "# written by tests/gpu/pack_bundle.sh; read by run_on_gpu.sh"
