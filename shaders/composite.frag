@@ -18,14 +18,13 @@ void main() {
   if (layer.samples == COMPOSITE_EVERY_SAMPLE) {
     gl_SampleMask[0] = ~0;
     outColor = texelFetch(hair, pixel, 0);
-    if (outColor == vec4(0.0)) discard;  // no hair: the blend would leave the attachment as it is
-    return;
+  } else {
+    uint mask = texelFetch(nearMask, pixel, 0).r;
+    bool near = layer.samples == COMPOSITE_NEAR_SAMPLES;
+    if (near && mask == 0u) discard;
+    gl_SampleMask[0] = int(near ? mask : ~mask);
+    outColor = near ? texelFetch(nearHair, pixel, 0) : texelFetch(hair, pixel, 0);
   }
-  uint mask = texelFetch(nearMask, pixel, 0).r;
-  bool near = layer.samples == COMPOSITE_NEAR_SAMPLES;
-  if (near && mask == 0u) discard;
-  gl_SampleMask[0] = int(near ? mask : ~mask);
-  outColor = near ? texelFetch(nearHair, pixel, 0) : texelFetch(hair, pixel, 0);
   // No hair: the blend (ONE, ONE_MINUS_SRC_ALPHA) would leave the attachment as it is, so skip its samples'
   // read-modify-write (most of the screen; GPUs with few raster units pay per blended sample).
   if (outColor == vec4(0.0)) discard;

@@ -24,13 +24,14 @@ layout(constant_id = 0) const uint HEAD_LIGHT_LOOP = 1u;
 // One light's diffuse term, shadowed.
 vec3 headLight(FrameLight light, vec3 N, float wrap) {
   LightSample ls = sampleLight(light, inWorld);
-  float diffuse = ls.scale * max((wrap + dot(N, ls.L)) / (1.0 + wrap), 0.0);
+  float nl = dot(N, ls.L);
+  float diffuse = ls.scale * max((wrap + nl) / (1.0 + wrap), 0.0);
   // Past the wrap term's reach (or outside a spot's cone) the light adds nothing, whatever stands in its way:
   // skip the shadow lookups (the skin facing away from the light; GPUs branch by the warp, so a region of it).
   if (!(diffuse > 0.0)) return vec3(0.0);
   // Only skin facing away from the light is in the map of back faces (with a fade across the terminator for
   // the interpolated normal): lit skin keeps the base offset and its contact shadows.
-  float nl = dot(N, ls.L), c = abs(nl);
+  float c = abs(nl);
   float slopeTan = (1.0 - smoothstep(-0.05, 0.1, nl)) * sqrt(max(1.0 - c * c, 0.0)) / max(c, 1e-3);
   LightShadow shadow = frameLightShadow(light, inWorld, ls.L, true, slopeTan);
   return light.radiance.rgb * hairTransmittance(frame.strand.z * shadow.alpha) * (diffuse * shadow.head);

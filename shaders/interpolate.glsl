@@ -19,9 +19,7 @@
 #include "common.glsl"
 
 layout(local_size_x = INTERPOLATE_WORKGROUP_SIZE) in;
-#ifdef INTERPOLATE_STAGED
-const uint WALK = INTERPOLATE_WALK_STAGED;
-#else
+#ifndef INTERPOLATE_STAGED
 layout(constant_id = 0) const uint WALK = INTERPOLATE_WALK_STRAND;  // INTERPOLATE_WALK_STRAND or _VERTEX
 #endif
 layout(std430, binding = INTERPOLATE_BINDING_GUIDE_POSITIONS) readonly buffer GuidePositions { vec4 guidePositions[]; };
@@ -36,14 +34,17 @@ layout(push_constant) uniform Push { InterpolatePush push; };
 #ifdef INTERPOLATE_STAGED
 // The staged walk's block: row l (the workgroup's strand l) holds its vertices stageStart + k at slot k and
 // its tangents stageStart - 1 + k at slot k (they run one vertex behind).
-const uint STAGE_ROW = INTERPOLATE_STAGE_VERTICES + 1u;
-shared vec4 stagedPositions[INTERPOLATE_WORKGROUP_SIZE * STAGE_ROW];
-shared vec4 stagedTangents[INTERPOLATE_WORKGROUP_SIZE * STAGE_ROW];
+shared vec4 stagedPositions[INTERPOLATE_WORKGROUP_SIZE * INTERPOLATE_STAGE_ROW];
+shared vec4 stagedTangents[INTERPOLATE_WORKGROUP_SIZE * INTERPOLATE_STAGE_ROW];
 uint stageStart = 0u;
 
 // The groomed walk's stores go to the workgroup's block.
-void putPosition(uint dst, uint j, vec4 p) { stagedPositions[gl_LocalInvocationID.x * STAGE_ROW + j - stageStart] = p; }
-void putTangent(uint dst, uint j, vec4 t) { stagedTangents[gl_LocalInvocationID.x * STAGE_ROW + j + 1u - stageStart] = t; }
+void putPosition(uint dst, uint j, vec4 p) {
+  stagedPositions[gl_LocalInvocationID.x * INTERPOLATE_STAGE_ROW + j - stageStart] = p;
+}
+void putTangent(uint dst, uint j, vec4 t) {
+  stagedTangents[gl_LocalInvocationID.x * INTERPOLATE_STAGE_ROW + j + 1u - stageStart] = t;
+}
 #else
 // The groomed walk's stores go to the chunk.
 void putPosition(uint dst, uint j, vec4 p) { positions[dst + j] = p; }
@@ -224,13 +225,13 @@ void writeStage(uint first, uint count, uint j0, uint n) {
   uint q = push.vertices;
   for (uint e = gl_LocalInvocationID.x; e < count * n; e += INTERPOLATE_WORKGROUP_SIZE) {
     uint row = e / n, k = e % n;
-    positions[(first + row) * q + j0 + k] = stagedPositions[row * STAGE_ROW + k];
+    positions[(first + row) * q + j0 + k] = stagedPositions[row * INTERPOLATE_STAGE_ROW + k];
   }
   uint from = max(j0, 1u) - 1u, to = j0 + n == q ? q - 1u : j0 + n - 2u;
   uint m = to + 1u - from, slot = from + 1u - j0;
   for (uint e = gl_LocalInvocationID.x; e < count * m; e += INTERPOLATE_WORKGROUP_SIZE) {
     uint row = e / m, k = e % m;
-    tangents[(first + row) * q + from + k] = stagedTangents[row * STAGE_ROW + slot + k];
+    tangents[(first + row) * q + from + k] = stagedTangents[row * INTERPOLATE_STAGE_ROW + slot + k];
   }
 }
 
@@ -261,17 +262,17 @@ void interpolateStaged(uint id) {
 
 void main() {
   uint id = hpThreadId(INTERPOLATE_WORKGROUP_SIZE);
+#ifdef INTERPOLATE_STAGED
+  interpolateStaged(id);
+#else
   if (WALK == INTERPOLATE_WALK_VERTEX) {
     if (id < push.strandCount * push.vertices) interpolateVertex(id);
     return;
   }
-#ifdef INTERPOLATE_STAGED
-  interpolateStaged(id);
-  return;
-#endif
   if (id >= push.strandCount) return;
   if (push.mode == INTERPOLATE_MODE_GUIDES)
     copyGuide(id);
   else
     interpolate(id);
+#endif
 }

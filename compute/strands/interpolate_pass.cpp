@@ -23,7 +23,7 @@ bool perVertexOn(const vk::Context& ctx, InterpolateWalk walk) {
 
 // The staged walk's two blocks of shared memory (interpolate.glsl): 26 KiB, over Vulkan's guaranteed 16.
 bool stagingFits(const vk::Context& ctx) {
-  const std::uint32_t bytes = 2 * gpu::INTERPOLATE_WORKGROUP_SIZE * (gpu::INTERPOLATE_STAGE_VERTICES + 1) * 16;
+  const std::uint32_t bytes = 2 * gpu::INTERPOLATE_WORKGROUP_SIZE * gpu::INTERPOLATE_STAGE_ROW * 16;
   return ctx.properties().limits.maxComputeSharedMemorySize >= bytes;
 }
 

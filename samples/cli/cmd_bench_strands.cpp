@@ -50,7 +50,6 @@ struct BenchOptions {
 struct Result {
   hp::compute::StrandLayout layout;
   hp::compute::InterpolateWalk walk = hp::compute::InterpolateWalk::Auto;
-  bool perVertex = false;           // whether the pass's stores went per vertex (plain or staged)
   std::string walkTaken = "strand";  // the walk the pass took (InterpolatePass::walkTaken)
   double tessellateMs = 0, interpolateMs = 0, copyMs = 0;
   double frameWallMs = 0;  // host wall clock of a whole frame submission (sanity check of the timestamps)
@@ -103,7 +102,6 @@ Result benchOne(const hp::vk::Context& ctx, std::uint32_t strands, hp::compute::
   Result r;
   r.layout = buffers.layout();
   r.walk = walk;
-  r.perVertex = interpolate.walksPerVertex();
   r.walkTaken = interpolate.walkTaken();
   r.tessellateMs = hp::vk::median(times["tessellate"]);
   r.interpolateMs = hp::vk::median(times["interpolate"]);
@@ -131,7 +129,7 @@ nlohmann::json toJson(const Result& r) {
           {"vertices_per_strand", r.layout.verticesPerStrand},
           {"chunks", r.layout.chunks.size()},
           {"walk", hp::compute::interpolateWalkName(r.walk)},
-          {"per_vertex", r.perVertex},
+          {"per_vertex", r.walkTaken != "strand"},  // the stores went per vertex (plain or staged)
           {"walk_taken", r.walkTaken},
           {"tessellate", pass(r.tessellateMs, r.tessellateBytes)},
           {"interpolate", pass(r.interpolateMs, r.interpolateBytes)},

@@ -53,6 +53,7 @@ HP_CONST(uint, INTERPOLATE_WALK_STAGED, 2)  // groom: per strand, stores staged 
 // of INTERPOLATE_STAGE_VERTICES + 1 slots per strand: the tangents run one vertex behind), then the workgroup
 // writes them out strand after strand.
 HP_CONST(uint, INTERPOLATE_STAGE_VERTICES, 12)
+HP_CONST(uint, INTERPOLATE_STAGE_ROW, INTERPOLATE_STAGE_VERTICES + 1u)  // vec4 slots per strand and block
 
 HP_CONST(uint, INTERPOLATE_MODE_STRANDS, 0)  // K_j = X1 A_j + X2 B_j + X3 C_j per binding
 HP_CONST(uint, INTERPOLATE_MODE_GUIDES, 1)   // debug: render strand s is smoothed guide s

@@ -186,8 +186,9 @@ TEST_F(InterpolateTest, PerVertexWalkWritesWhatThePerStrandWalkWrites) {
 // each block of vertices in shared memory and the workgroup writes them out. The same arithmetic, though
 // the compiler may contract it differently in the two shaders (lavapipe: positions 3e-8 apart in ~8% of
 // the components, the unit tangents, differences of near points, 2e-6); a vertex or tangent put in the
-// wrong place would be millimetres or degrees off. With a strand count that leaves the last workgroup part full, chunks that split workgroups, and
-// Q = 37 (three full blocks of 12 and one of a single vertex, whose tangents straddle the blocks).
+// wrong place would be millimetres or degrees off. With a strand count that leaves the last workgroup part
+// full, chunks that split workgroups, and Q = 37 (three full blocks of 12 and one of a single vertex, whose
+// tangents straddle the blocks).
 TEST_F(InterpolateTest, StagedGroomWalkWritesWhatThePerStrandWalkWrites) {
   HairAsset asset = headWithStrands(3001);
   compute::StrandOptions chunked;
