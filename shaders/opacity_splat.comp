@@ -7,7 +7,8 @@
 // behind s: one atomic per fragment where the graphics pass blends 16 slices; opacity_resolve.glsl makes
 // the sums cumulative. A spot's segments are clipped at its plane (w > 0) like the graphics pass's;
 // texels outside the map are skipped; a segment with a non-finite end adds nothing. Deep opacity maps run it
-// twice: OPACITY_SPLAT_MODE_FIRST, then _DEEP (shared/opacity.h).
+// once (OPACITY_SPLAT_MODE_DEEP_FINE) or, where their fine bins do not fit, twice: OPACITY_SPLAT_MODE_FIRST,
+// then _DEEP (shared/opacity.h).
 #include "shared/opacity.h"
 #include "common.glsl"
 #include "opacity_footprint.glsl"
@@ -40,27 +41,34 @@ End endOf(vec4 clip, float opacity) {
 }
 
 // Adds a fragment like opacity.frag: to every slice i >= s - epsilon, i.e. to the bin of the first one.
-// Deep maps: step 1 only keeps the texel's nearest s (every fragment step 2 will see: s0 always exists);
-// step 2 measures s from it, OPACITY_DEEP_FACTOR finer, and the last slice takes everything farther (its
-// layer reaches to infinity, as Yuksel & Keyser's last layer does).
+// Deep maps in two splats: step 1 only keeps the texel's nearest s (every fragment step 2 will see: s0
+// always exists); step 2 measures s from it, OPACITY_DEEP_FACTOR finer, and the last slice takes everything
+// farther (its layer reaches to infinity, as Yuksel & Keyser's last layer does). In one splat: the nearest s
+// and the fine bin of s, one deep slice wide, over the whole depth range (the resolve places the slices).
 void addFragment(ivec2 texel, float s, float opacity) {
   uint at = uint(texel.y) * push.resolution + uint(texel.x);
-  if (push.mode == OPACITY_SPLAT_MODE_FIRST) {
+  if (push.mode == OPACITY_SPLAT_MODE_FIRST || push.mode == OPACITY_SPLAT_MODE_DEEP_FINE) {
     // The texel's value only falls, so a read (even a stale one) at or below this s means the atomic would
     // change nothing: dense hair's later fragments skip it (fewer atomics on the same texels).
     uint nearest = orderedFromFloat(clamp(s, 0.0, float(OPACITY_SLICES)));
     if (READ_BEFORE_MIN == 0u || first[at] > nearest) atomicMin(first[at], nearest);
-    return;
+    if (push.mode == OPACITY_SPLAT_MODE_FIRST) return;
   }
-  if (push.mode == OPACITY_SPLAT_MODE_DEEP)
-    s = min((s - floatFromOrdered(first[at])) * OPACITY_DEEP_FACTOR, float(OPACITY_SLICES));
-  float behind = s - OPACITY_SLICE_EPSILON;
-  if (!(behind <= float(OPACITY_SLICES)) || !(opacity > 0.0)) return;  // past the last slice, or nothing
-  uint slice = uint(max(ceil(behind), 1.0)) - 1u;
+  uint index;
+  if (push.mode == OPACITY_SPLAT_MODE_DEEP_FINE) {
+    if (!(opacity > 0.0)) return;
+    float fine = s * OPACITY_DEEP_FACTOR;  // the last bin also takes anything farther; NaN: the first
+    index = opacityFineBin(at, fine > 0.0 ? min(uint(fine), OPACITY_DEEP_BINS - 1u) : 0u);
+  } else {
+    if (push.mode == OPACITY_SPLAT_MODE_DEEP)
+      s = min((s - floatFromOrdered(first[at])) * OPACITY_DEEP_FACTOR, float(OPACITY_SLICES));
+    float behind = s - OPACITY_SLICE_EPSILON;
+    if (!(behind <= float(OPACITY_SLICES)) || !(opacity > 0.0)) return;  // past the last slice, or nothing
+    index = at * OPACITY_SLICES + uint(max(ceil(behind), 1.0)) - 1u;
+  }
   // One add is at most OPACITY_MAX_FRAGMENT_FIXED (alpha 256: T = 0 already), so a bin past the saturation
   // bit, which takes each later add back, could only wrap with 128 such adds in flight at once.
   uint value = uint(min(opacity * OPACITY_FIXED_ONE + 0.5, float(OPACITY_MAX_FRAGMENT_FIXED)));
-  uint index = at * OPACITY_SLICES + slice;
   if (value == 0u) return;
   if ((atomicAdd(bins[index], value) & OPACITY_BIN_SATURATED) != 0u) atomicAdd(bins[index], -value);
 }

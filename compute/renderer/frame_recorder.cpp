@@ -75,28 +75,37 @@ void recordComputeOpacity(const vk::Context& ctx, VkCommandBuffer cmd, const ren
   const compute::OpacityResolvePass& resolve = *maps.resolvePass();
   const VkBuffer bins = resolve.bins().handle(), first = resolve.first().handle();
   // What recordClear fills: the bins, and the first-hair buffer for deep maps only.
-  const VkBuffer fills[] = {bins, first};
-  const std::span<const VkBuffer> cleared(fills, resolve.deep() ? 2 : 1);
-  for (VkBuffer b : cleared)  // the last resolve and deep splats (last frame's, or another slot's) read them
-    vk::bufferBarrier(ctx, cmd, b, vk::BufferUse::ComputeRead, vk::BufferUse::TransferDst);
+  const VkBuffer both[] = {bins, first};
+  const std::span<const VkBuffer> cleared(both, resolve.deep() ? 2 : 1);
+  auto barriers = [&](std::span<const VkBuffer> buffers, vk::BufferUse from, vk::BufferUse to) {
+    for (VkBuffer b : buffers) vk::bufferBarrier(ctx, cmd, b, from, to);
+  };
+  // The last resolve and deep splats (last frame's, or another slot's) read them.
+  barriers(cleared, vk::BufferUse::ComputeRead, vk::BufferUse::TransferDst);
   resolve.recordClear(cmd);
-  for (VkBuffer b : cleared) vk::bufferBarrier(ctx, cmd, b, vk::BufferUse::TransferDst, vk::BufferUse::ComputeWrite);
-  auto splatAll = [&](std::uint32_t mode, VkBuffer target) {
+  barriers(cleared, vk::BufferUse::TransferDst, vk::BufferUse::ComputeWrite);
+  auto splatAll = [&](std::uint32_t mode, std::span<const VkBuffer> targets) {
     for (std::size_t i = 0; i < casters.size(); ++i) {
-      if (i > 0) vk::bufferBarrier(ctx, cmd, target, vk::BufferUse::ComputeWrite, vk::BufferUse::ComputeWrite);
+      if (i > 0) barriers(targets, vk::BufferUse::ComputeWrite, vk::BufferUse::ComputeWrite);
       casters[i].opacity->recordSplats(cmd, slot, casters[i].strandWidth, mode, casters[i].strandLimit);
     }
   };
-  if (resolve.deep()) {  // every instance's first hair per texel before any deep slice is measured from it
-    begin("opacity first");
-    splatAll(gpu::OPACITY_SPLAT_MODE_FIRST, first);
+  using compute::OpacityBins;
+  if (resolve.layout() == OpacityBins::DeepTwoSplats) {  // every instance's first hair per texel before any
+    begin("opacity first");                             // deep slice is measured from it
+    splatAll(gpu::OPACITY_SPLAT_MODE_FIRST, std::span<const VkBuffer>(&first, 1));
     end();
     vk::bufferBarrier(ctx, cmd, first, vk::BufferUse::ComputeWrite, vk::BufferUse::ComputeRead);
   }
+  const std::uint32_t mode = resolve.layout() == OpacityBins::Global          ? gpu::OPACITY_SPLAT_MODE_PLAIN
+                             : resolve.layout() == OpacityBins::DeepTwoSplats ? gpu::OPACITY_SPLAT_MODE_DEEP
+                                                                               : gpu::OPACITY_SPLAT_MODE_DEEP_FINE;
+  // The fine splat writes the first hair too; the two-splat one only reads it (made visible above).
+  const std::span<const VkBuffer> written(both, resolve.layout() == OpacityBins::DeepFine ? 2 : 1);
   begin("opacity splat");
-  splatAll(resolve.deep() ? gpu::OPACITY_SPLAT_MODE_DEEP : gpu::OPACITY_SPLAT_MODE_PLAIN, bins);
+  splatAll(mode, written);
   end();
-  vk::bufferBarrier(ctx, cmd, bins, vk::BufferUse::ComputeWrite, vk::BufferUse::ComputeRead);
+  barriers(written, vk::BufferUse::ComputeWrite, vk::BufferUse::ComputeRead);
   slotBarrier(ctx, cmd, maps, slot, vk::ImageUse::FragmentSampledDiscard, vk::ImageUse::ComputeStorageWrite);
   begin("opacity resolve");
   resolve.recordResolve(cmd, slot);

@@ -14,11 +14,11 @@ const vk::Binding kOpacityResolveBindings[] = {
     {gpu::OPACITY_RESOLVE_BINDING_FIRST, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, vk::kCompute},
 };
 
-VkDeviceSize checkedBinBytes(const vk::Context& ctx, std::uint32_t resolution) {
-  const VkDeviceSize bytes = OpacityResolvePass::binBytes(resolution);
+VkDeviceSize checkedBinBytes(const vk::Context& ctx, std::uint32_t resolution, OpacityBins layout) {
+  const VkDeviceSize bytes = OpacityResolvePass::binBytes(resolution, layout);
   const VkDeviceSize limit = ctx.properties().limits.maxStorageBufferRange;
   if (bytes > limit)
-    throw Error("compute opacity maps: " + std::to_string(resolution) + "^2 texels x 16 slices need " +
+    throw Error("compute opacity maps: " + std::to_string(resolution) + "^2 texels' bins need " +
                 std::to_string(bytes) + " bytes of bins, past the device's maxStorageBufferRange (" +
                 std::to_string(limit) + " bytes); use a lower resolution, or the graphics or auto opacity raster");
   return bytes;
@@ -31,21 +31,27 @@ const char* resolveShader(VkFormat format) {
 }
 }  // namespace
 
-VkDeviceSize OpacityResolvePass::binBytes(std::uint32_t resolution) {
-  return VkDeviceSize(resolution) * resolution * gpu::OPACITY_SLICES * sizeof(std::uint32_t);
+VkDeviceSize OpacityResolvePass::binBytes(std::uint32_t resolution, OpacityBins layout) {
+  const std::uint32_t perTexel = layout == OpacityBins::DeepFine ? gpu::OPACITY_DEEP_BINS : gpu::OPACITY_SLICES;
+  return VkDeviceSize(resolution) * resolution * perTexel * sizeof(std::uint32_t);
 }
 
-bool OpacityResolvePass::fits(const vk::Context& ctx, std::uint32_t resolution) {
-  return binBytes(resolution) <= ctx.properties().limits.maxStorageBufferRange;
+bool OpacityResolvePass::fits(const vk::Context& ctx, std::uint32_t resolution, OpacityBins layout) {
+  return binBytes(resolution, layout) <= ctx.properties().limits.maxStorageBufferRange;
+}
+
+OpacityBins OpacityResolvePass::binsFor(const vk::Context& ctx, std::uint32_t resolution, bool deep) {
+  if (!deep) return OpacityBins::Global;
+  return fits(ctx, resolution, OpacityBins::DeepFine) ? OpacityBins::DeepFine : OpacityBins::DeepTwoSplats;
 }
 
 OpacityResolvePass::OpacityResolvePass(const vk::Context& ctx, std::uint32_t resolution, VkFormat format,
-                                       const std::vector<VkImageView>& slotMaps, bool deep,
+                                       const std::vector<VkImageView>& slotMaps, OpacityBins layout,
                                        vk::PipelineLibrary* library)
     : ctx_(&ctx),
       resolution_(resolution),
-      deep_(deep),
-      bins_(ctx, checkedBinBytes(ctx, resolution), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+      layout_(layout),
+      bins_(ctx, checkedBinBytes(ctx, resolution, layout), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
             vk::MemoryKind::DeviceLocal, "opacity bins"),
       first_(ctx, VkDeviceSize(resolution) * resolution * sizeof(std::uint32_t),
              VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT, vk::MemoryKind::DeviceLocal,
@@ -63,11 +69,11 @@ OpacityResolvePass::OpacityResolvePass(const vk::Context& ctx, std::uint32_t res
 
 void OpacityResolvePass::recordClear(VkCommandBuffer cmd) const {
   ctx_->fn().vkCmdFillBuffer(cmd, bins_.handle(), 0, VK_WHOLE_SIZE, 0u);
-  if (deep_) ctx_->fn().vkCmdFillBuffer(cmd, first_.handle(), 0, VK_WHOLE_SIZE, 0xFFFFFFFFu);  // no hair yet
+  if (deep()) ctx_->fn().vkCmdFillBuffer(cmd, first_.handle(), 0, VK_WHOLE_SIZE, 0xFFFFFFFFu);  // no hair yet
 }
 
 void OpacityResolvePass::recordResolve(VkCommandBuffer cmd, std::uint32_t slot) const {
-  const gpu::OpacityResolvePush push{resolution_, deep_ ? 1u : 0u};
+  const gpu::OpacityResolvePush push{resolution_, static_cast<std::uint32_t>(layout_)};
   pipeline_->bind(cmd, sets_.at(slot).set());
   pipeline_->push(cmd, push);
   pipeline_->dispatch(cmd, resolution_ * resolution_);

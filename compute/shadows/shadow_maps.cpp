@@ -57,7 +57,7 @@ vk::Image makeHeadImage(const vk::Context& ctx, const OpacitySettings& settings,
 }  // namespace
 
 ShadowMaps::ShadowMaps(const vk::Context& ctx, const OpacitySettings& settings, vk::PipelineLibrary* library,
-                       std::uint32_t slots)
+                       std::uint32_t slots, DeepSplats deepSplats)
     : ctx_(&ctx),
       settings_(validated(settings)),
       slots_(validatedSlots(slots)),
@@ -72,8 +72,11 @@ ShadowMaps::ShadowMaps(const vk::Context& ctx, const OpacitySettings& settings, 
   if (onCompute(ctx, settings_)) {
     std::vector<VkImageView> slotViews;
     for (std::uint32_t slot = 0; slot < slots_; ++slot) slotViews.push_back(image_.groupView(slot));
+    const compute::OpacityBins bins = deepSplats == DeepSplats::Two && settings_.deep
+                                          ? compute::OpacityBins::DeepTwoSplats
+                                          : compute::OpacityResolvePass::binsFor(ctx, settings_.resolution, settings_.deep);
     resolve_ = std::make_unique<compute::OpacityResolvePass>(ctx, settings_.resolution, settings_.format, slotViews,
-                                                             settings_.deep, library);
+                                                             bins, library);
   }
   settings_.deep = settings_.deep && resolve_ != nullptr;  // the graphics path draws global slices
   const std::vector<gpu::LightSpace> initial(slots_, compute::initialLightSpace());

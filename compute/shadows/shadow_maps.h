@@ -31,10 +31,14 @@ class ShadowMaps {
  public:
   static constexpr VkFormat kHeadDepthFormat = VK_FORMAT_D32_SFLOAT;
 
+  // How compute deep maps splat: Auto, in one splat into fine bins where they fit the device
+  // (compute::OpacityResolvePass::binsFor); Two, the first hair and then the slices (tests compare the two).
+  enum class DeepSplats { Auto, Two };
+
   // `library`: the Renderer's, through which the opacity resolve's pipeline is built (null: its own).
   // slots: [1, OPACITY_MAX_LIGHTS].
   ShadowMaps(const vk::Context& ctx, const OpacitySettings& settings, vk::PipelineLibrary* library = nullptr,
-             std::uint32_t slots = 1);
+             std::uint32_t slots = 1, DeepSplats deepSplats = DeepSplats::Auto);
   ShadowMaps(const ShadowMaps&) = delete;
   ShadowMaps& operator=(const ShadowMaps&) = delete;
 

@@ -62,9 +62,18 @@ HP_CONST(uint, OPACITY_SPLAT_BINDING_FIRST, 3)      // uint[res * res]: each tex
 HP_CONST(uint, OPACITY_SPLAT_MODE_PLAIN, 0)         // bins of the global slices
 HP_CONST(uint, OPACITY_SPLAT_MODE_FIRST, 1)         // deep maps, step 1: only the first hair per texel
 HP_CONST(uint, OPACITY_SPLAT_MODE_DEEP, 2)          // deep maps, step 2: bins of the slices from the first hair
+// Deep maps in one splat (where OPACITY_DEEP_BINS bins per texel fit the device): each fragment lowers its
+// texel's first hair and adds to one of OPACITY_DEEP_BINS fine bins of the global depth range (fine bin j:
+// slice coordinates [j, j + 1) / OPACITY_DEEP_FACTOR, one deep slice wide); the resolve places the deep
+// slices from the first hair over them (opacity_resolve.glsl).
+HP_CONST(uint, OPACITY_SPLAT_MODE_DEEP_FINE, 3)
+HP_CONST(uint, OPACITY_DEEP_BINS, 64)               // OPACITY_SLICES x OPACITY_DEEP_FACTOR
 HP_CONST(uint, OPACITY_RESOLVE_BINDING_BINS, 0)     // uint bins (read)
 HP_CONST(uint, OPACITY_RESOLVE_BINDING_MAPS, 1)     // the maps as a storage image2DArray (written)
 HP_CONST(uint, OPACITY_RESOLVE_BINDING_FIRST, 2)    // the first-hair buffer (read; deep maps)
+HP_CONST(uint, OPACITY_RESOLVE_GLOBAL, 0)           // 16 bins per texel: global slices
+HP_CONST(uint, OPACITY_RESOLVE_DEEP, 1)             // 16 bins per texel from the first hair (two splats)
+HP_CONST(uint, OPACITY_RESOLVE_DEEP_FINE, 2)        // OPACITY_DEEP_BINS fine bins per texel (one splat)
 // Fixed point: a bin holds opacity x 2^16 (a fragment of 0.04 rounds by < 2e-4 of itself). A bin that
 // reaches OPACITY_BIN_SATURATED (alpha 32768: T = 0 for any k >= 0.003) takes no more adds and resolves
 // to OPACITY_SATURATED_ALPHA, so an absurd pile-up saturates instead of wrapping around.
@@ -126,7 +135,7 @@ struct OpacitySplatPush {
 
 struct OpacityResolvePush {
   uint resolution;         // map texels per side
-  uint deep;               // 1: write the first-hair layer from the first-hair buffer
+  uint deep;               // OPACITY_RESOLVE_*: which bins the splats filled
 };
 HP_END
 
@@ -153,9 +162,24 @@ float floatFromOrdered(uint u) {
 }
 #endif
 
+// Where fine bin `bin` of texel `texel` lies in the bins (OpacityBins::DeepFine): in groups of
+// OPACITY_FINE_GROUP texels along a row, bin by bin, so one segment's neighbouring fragments at about the
+// same depth add to the same few cache lines, and one texel's bins lie in one small block.
+HP_BEGIN
+HP_CONST(uint, OPACITY_FINE_GROUP, 16)
+#ifdef __cplusplus
+constexpr
+#endif
+uint opacityFineBin(uint texel, uint bin) {
+  return (texel / OPACITY_FINE_GROUP) * (OPACITY_FINE_GROUP * OPACITY_DEEP_BINS) + bin * OPACITY_FINE_GROUP +
+         texel % OPACITY_FINE_GROUP;
+}
+HP_END
+
 #ifdef __cplusplus
 #include <cstddef>
 static_assert(hp::gpu::OPACITY_SLICES == 4 * hp::gpu::OPACITY_TARGETS);
+static_assert(float(hp::gpu::OPACITY_DEEP_BINS) == float(hp::gpu::OPACITY_SLICES) * hp::gpu::OPACITY_DEEP_FACTOR);
 static_assert(sizeof(hp::gpu::LightSpace) == 128);
 static_assert(offsetof(hp::gpu::LightSpace, depthRange) == 64);
 static_assert(offsetof(hp::gpu::LightSpace, minBits) == 96);

@@ -48,7 +48,8 @@ struct ShadowRig {
   std::unique_ptr<hp::render::OpacityPass> opacity;
 
   ShadowRig(const hp::vk::Context& ctx, const StrandSet& set, const OpacitySettings& settings,
-            VkDeviceSize maxChunkBytes = 0) {
+            VkDeviceSize maxChunkBytes = 0,
+            hp::render::ShadowMaps::DeepSplats deepSplats = hp::render::ShadowMaps::DeepSplats::Auto) {
     hp::compute::StrandOptions options;
     options.verticesPerStrand = set.q;
     options.guidesOnly = true;
@@ -57,7 +58,7 @@ struct ShadowRig {
     for (const auto& chunk : buffers->chunks())
       hp::vk::uploadBytes(ctx, chunk.positions, set.positions.data() + std::size_t(chunk.range.firstStrand) * set.q,
                           VkDeviceSize(chunk.range.strandCount) * set.q * sizeof(glm::vec4), hp::vk::BufferUse::VertexRead);
-    maps = std::make_unique<hp::render::ShadowMaps>(ctx, settings);
+    maps = std::make_unique<hp::render::ShadowMaps>(ctx, settings, nullptr, 1, deepSplats);
     bounds = std::make_unique<hp::compute::BoundsPass>(ctx, *buffers, maps->lightSpace());
     opacity = std::make_unique<hp::render::OpacityPass>(ctx, *buffers, hp::HeadMesh{}, *maps);
   }
@@ -649,20 +650,34 @@ TEST_F(VulkanTest, AShadowStrandBudgetKeepsTheMapsTotalOpacity) {
 
 // 700 coincident strands of opacity 100 pile 70,000 into each texel's first bin: past the 32-bit fixed
 // point (65,536), where a plain sum would wrap to ~4,464. The bins saturate instead: every slice at and
-// behind the pile reads OPACITY_SATURATED_ALPHA (T = 0), the graphics path's sum is the true 70,000.
+// behind the pile reads OPACITY_SATURATED_ALPHA (T = 0), in global and in both kinds of deep bins; the
+// graphics path's sum is the true 70,000.
 TEST_F(VulkanTest, ComputeOpacityBinsSaturateInsteadOfWrappingAround) {
   StrandSet set;
   set.q = 2;
   for (int i = 0; i < 700; ++i) set.addStraight({-0.5f, 0.013f, 0.0f}, {0.5f, 0.013f, 0.0f});
   set.addStraight({-0.5f, 0.4f, -1.0f}, {0.5f, 0.4f, -1.0f});  // a second depth: the framing spans [0, 1]
   OpacitySettings s;
-  s.deep = false;
   s.resolution = 64;
   s.footprint = false;
   s.strandOpacity = 100.0f;
-  for (const auto raster : {hp::render::OpacityRaster::Compute, hp::render::OpacityRaster::Graphics}) {
+  using hp::compute::OpacityBins;
+  using DeepSplats = hp::render::ShadowMaps::DeepSplats;
+  struct Case {
+    hp::render::OpacityRaster raster;
+    bool deep;
+    DeepSplats splats;
+    OpacityBins bins;  // what the compute path must have taken
+  };
+  for (const Case& k : {Case{hp::render::OpacityRaster::Compute, false, DeepSplats::Auto, OpacityBins::Global},
+                        Case{hp::render::OpacityRaster::Compute, true, DeepSplats::Auto, OpacityBins::DeepFine},
+                        Case{hp::render::OpacityRaster::Compute, true, DeepSplats::Two, OpacityBins::DeepTwoSplats},
+                        Case{hp::render::OpacityRaster::Graphics, false, DeepSplats::Auto, OpacityBins::Global}}) {
+    const hp::render::OpacityRaster raster = k.raster;
     s.raster = raster;
-    ShadowRig rig(*ctx, set, s);
+    s.deep = k.deep;
+    ShadowRig rig(*ctx, set, s, 0, k.splats);
+    if (raster == hp::render::OpacityRaster::Compute) EXPECT_EQ(rig.maps->resolvePass()->layout(), k.bins);
     const OpacityCapture c = rig.run(*ctx, glm::vec3(0.0f, 0.0f, 1.0f));
     std::size_t pile = 0;
     for (std::uint32_t y = 0; y < 64; ++y)
@@ -676,7 +691,7 @@ TEST_F(VulkanTest, ComputeOpacityBinsSaturateInsteadOfWrappingAround) {
             EXPECT_NEAR(c.at(i, x, y), 70000.0f, 1.0f) << x << "," << y << " slice " << i + 1;
         }
       }
-    EXPECT_GE(pile, 48u) << hp::render::opacityRasterName(raster);
+    EXPECT_GE(pile, 48u) << hp::render::opacityRasterName(raster) << " deep " << k.deep;
   }
 }
 
@@ -725,7 +740,8 @@ TEST_F(VulkanTest, DeepOpacityMapsStartAtEachTexelsFirstHair) {
   s.raster = hp::render::OpacityRaster::Graphics;
   EXPECT_FALSE(ShadowRig(*ctx, set, s).maps->settings().deep);
   s.raster = hp::render::OpacityRaster::Compute;
-  ShadowRig rig(*ctx, set, s);
+  for (const auto splats : {hp::render::ShadowMaps::DeepSplats::Auto, hp::render::ShadowMaps::DeepSplats::Two}) {
+  ShadowRig rig(*ctx, set, s, 0, splats);
   ASSERT_TRUE(rig.maps->settings().deep);
   const OpacityCapture c = rig.run(*ctx, glm::vec3(0.0f, 0.0f, 1.0f));
   const auto [count, ambiguous] = strandRows(c.light);
@@ -749,4 +765,58 @@ TEST_F(VulkanTest, DeepOpacityMapsStartAtEachTexelsFirstHair) {
   }
   EXPECT_GT(checked, 16u * 54u * 30u);
   EXPECT_EQ(wrong, 0u);
+  }
+}
+
+// Deep maps in one splat (OpacityBins::DeepFine) against two: a texel's first hair between fine bins. A
+// marker strand at light depth 0 fixes the framing's near end (depth range [0, 1], s = 16 d); the 40 rows
+// of four layers along x lie at s = 0.125, 0.3, 0.725 and 16, i.e. at fine coordinates f = 4 s = 0.5, 1.2,
+// 2.9 and 64, so their first hair is f0 = 0.5 (share 0.5 of a fine bin). Two splats measure the deep
+// coordinates exactly, 0, 0.7, 2.4, 63.5: slices 1-2 hold two layers, 3-15 three, 16 all four. One splat
+// places slice i's end at f0 + i over the fine bins, taking half of the bin it ends in: slice 1 holds the
+// first layer and half the second, slice 2 two and a half, 3-15 three, 16 all four. Both keep s0 exact.
+TEST_F(VulkanTest, DeepMapsInOneSplatPlaceTheSlicesOverFineBins) {
+  StrandSet set;
+  set.q = 4;
+  set.addStraight({-0.9f, -0.5f, 0.0f}, {-0.9f, 0.5f, 0.0f});  // the marker, left of the rows
+  for (float s : {0.125f, 0.3f, 0.725f, 16.0f})
+    for (int j = 0; j < 40; ++j)
+      set.addStraight({-0.5f, -0.5f + float(j) / 39.0f, -s / 16.0f}, {0.5f, -0.5f + float(j) / 39.0f, -s / 16.0f});
+  OpacitySettings settings = smallSettings(64, 0.25f);
+  settings.deep = true;
+  settings.raster = hp::render::OpacityRaster::Compute;
+  using DeepSplats = hp::render::ShadowMaps::DeepSplats;
+  for (const auto splats : {DeepSplats::Auto, DeepSplats::Two}) {
+    ShadowRig rig(*ctx, set, settings, 0, splats);
+    const bool fine = rig.maps->resolvePass()->layout() == hp::compute::OpacityBins::DeepFine;
+    EXPECT_EQ(fine, splats == DeepSplats::Auto);
+    const OpacityCapture c = rig.run(*ctx, glm::vec3(0.0f, 0.0f, 1.0f));
+    ASSERT_NEAR(c.light.depthRange.x, 0.0f, 1e-6f);
+    ASSERT_NEAR(c.light.depthRange.y, 1.0f, 1e-6f);
+    const auto [count, ambiguous] = strandRows(c.light);
+    // Texel columns well inside the rows' x extent, away from the marker.
+    const int x0 = int(hp::test::texelAndSlice(c.light, 64, {-0.4, 0.0, 0.0}).x);
+    const int x1 = int(hp::test::texelAndSlice(c.light, 64, {0.4, 0.0, 0.0}).x);
+    ASSERT_GT(x1 - x0, 30);
+    // Layers per slice i (1-based): one splat, two splats.
+    auto layers = [&](std::uint32_t i) {
+      if (i == 16) return 4.0f;
+      if (i >= 3) return 3.0f;
+      return fine ? float(i) + 0.5f : 2.0f;
+    };
+    std::size_t checked = 0, wrong = 0, wrongFirst = 0;
+    for (std::uint32_t y = 0; y < 64; ++y) {
+      if (ambiguous[y] || count[y] == 0) continue;
+      for (int x = x0; x <= x1; ++x) {
+        wrongFirst += std::abs(c.firstHair[std::size_t(y) * 64 + x] - 0.125f) > 1e-4f;
+        for (std::uint32_t i = 1; i <= 16; ++i) {
+          ++checked;
+          if (std::abs(c.at(i - 1, x, y) - 0.25f * count[y] * layers(i)) > 1e-4f) ++wrong;
+        }
+      }
+    }
+    EXPECT_GT(checked, 16u * 30u * 30u) << fine;
+    EXPECT_EQ(wrong, 0u) << "one splat: " << fine;
+    EXPECT_EQ(wrongFirst, 0u) << "one splat: " << fine;
+  }
 }
