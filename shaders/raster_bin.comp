@@ -1,7 +1,7 @@
 #version 460
 // Compute rasterizer, per segment of a chunk: the (tile, depth bin) keys its footprint touches.
 // RASTER_MODE_COUNT counts them and lists the ends of every segment that touches a tile for shading; RASTER_MODE_SCATTER (after the tile scan) writes the segment's global
-// id and the rows of the tile it may cover into each tile's list, keeping the first `keys.y` of each key (the tile budget, nearest bins first).
+// id and the blocks of the tile it may cover into each tile's list, keeping the first `keys.y` of each key (the tile budget, nearest bins first).
 // The mode is a specialization constant (one pipeline each), not a uniform value lavapipe would inline.
 #include "shared/raster.h"
 #include "common.glsl"
@@ -37,15 +37,15 @@ bool binSegment(uint i, uint v, uint k, uint segments) {
   bool listed = false;
   for (uint ty = f.tileMin.y; ty <= f.tileMax.y; ++ty)
     for (uint tx = f.tileMin.x; tx <= f.tileMax.x; ++tx) {
-      uint rows = footprintRows(f, uvec2(tx, ty));
-      if (rows == 0u) continue;
+      vec2 span;
+      if (!tileTouched(f, uvec2(tx, ty), span)) continue;
       listed = true;
       uint tile = ty * params.tilesX + tx;
       uint key = tile * RASTER_DEPTH_BINS + f.bin;
       uint slot = atomicAdd(counts[key], 1u);
       if (MODE != RASTER_MODE_SCATTER || slot >= keys[key].y) continue;
       uint index = tileListStart(tile) + keys[key].x + slot;
-      if (index < params.capacity) list[index] = uvec2(id, rows);
+      if (index < params.capacity) list[index] = uvec2(id, footprintBlocks(f, uvec2(tx, ty), span));
     }
   return listed;
 }

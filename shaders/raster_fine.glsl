@@ -80,7 +80,7 @@ struct Segment {
   vec4 a, b;      // screen[v], screen[v + 1]: x, y, z, width
   vec4 axis;      // xy = b - a, zw = the unit normal (staged walk only)
   float length2;  // |b - a|^2
-  uint rows;      // the tile rows it may cover (bits 0-7), RASTER_LAST_SEGMENT for the strand's tip segment;
+  uint blocks;    // the tile's blocks it may cover (bits 0-7), RASTER_LAST_SEGMENT for the strand's tip segment;
                   // 0 for a degenerate segment (skipped)
   uint v;         // the global index of its first vertex
   vec3 colorA, colorB;  // staged walk only: the direct one reads them for the fragments it composites
@@ -95,7 +95,7 @@ Segment loadSegment(uvec2 item) {
   g.b = screen[v + 1u];
   vec2 ab = g.b.xy - g.a.xy;
   g.length2 = dot(ab, ab);
-  g.rows = g.length2 < 1e-12 ? 0u : (item.y & 0xFFu) | (item.x & RASTER_LAST_SEGMENT);
+  g.blocks = g.length2 < 1e-12 ? 0u : (item.y & 0xFFu) | (item.x & RASTER_LAST_SEGMENT);
   g.axis = vec4(ab, 0.0, 0.0);
   if (STAGED == 0u) return g;  // the direct walk works out the rest for the fragments it composites
   g.axis.zw = vec2(-ab.y, ab.x) * inversesqrt(max(g.length2, 1e-12));
@@ -120,7 +120,7 @@ uint nearMask;
 bool compositeSegment(Segment g) {
   float t = dot(centre - g.a.xy, g.axis.xy) / g.length2;
   // One exit (lavapipe lowers early returns of an inlined function into extra masks per fragment).
-  if (g.rows != 0u && t >= 0.0 && t <= 1.0 && (t != 1.0 || (g.rows & RASTER_LAST_SEGMENT) != 0u)) {
+  if (g.blocks != 0u && t >= 0.0 && t <= 1.0 && (t != 1.0 || (g.blocks & RASTER_LAST_SEGMENT) != 0u)) {
     vec2 n = STAGED != 0u ? g.axis.zw : vec2(-g.axis.y, g.axis.x) * inversesqrt(g.length2);
     float d = dot(centre - g.a.xy, n);
     float w = mix(g.a.w, g.b.w, t);
@@ -152,15 +152,15 @@ bool compositeSegment(Segment g) {
   return far.alpha <= 1.0 - RASTER_OPAQUE_T;
 }
 
-// Entries that touch none of this pixel's row are skipped in a tight loop before the body: a row of the
+// Entries that touch none of this pixel's block are skipped in a tight loop before the body: a block of the
 // tile is one 8-wide SIMD vector on lavapipe (whose branches are predicated: a `continue` would still run
 // the body), and on GPUs the skip is as cheap as the body's first test.
 
 // The direct walk (CPU devices): each pixel walks the tile's list on its own and stops when it is opaque.
-void walkDirect(uint start, uint end, uint rowBit) {
+void walkDirect(uint start, uint end, uint blockBit) {
   bool open = true;
   for (uint e = start; open;) {
-    while (e < end && (list[e].y & rowBit) == 0u) ++e;
+    while (e < end && (list[e].y & blockBit) == 0u) ++e;
     if (e >= end) break;
     open = compositeSegment(loadSegment(list[e++]));
   }
@@ -175,7 +175,7 @@ void walkDirect(uint start, uint end, uint rowBit) {
 shared Segment staged[RASTER_FINE_SIZE];
 shared uint live[2];  // whether some pixel is still open, alternate batches
 
-void walkStaged(uint start, uint end, uint rowBit, uint lane, bool open) {
+void walkStaged(uint start, uint end, uint blockBit, uint lane, bool open) {
   if (lane == 0u) live[0] = 0u;
   for (uint base = start, batch = 0u; base < end; base += RASTER_FINE_SIZE, ++batch) {
     if (base + lane < end) staged[lane] = loadSegment(list[base + lane]);
@@ -184,7 +184,7 @@ void walkStaged(uint start, uint end, uint rowBit, uint lane, bool open) {
     if (lane == 0u) live[(batch + 1u) & 1u] = 0u;
     uint count = min(end - base, RASTER_FINE_SIZE);
     for (uint j = 0u; open;) {
-      while (j < count && (staged[j].rows & rowBit) == 0u) ++j;
+      while (j < count && (staged[j].blocks & blockBit) == 0u) ++j;
       if (j >= count) break;
       open = compositeSegment(staged[j++]);
     }
@@ -200,8 +200,12 @@ void main() {
   uint tile = invocation / RASTER_FINE_SIZE;
   uint lane = invocation % RASTER_FINE_SIZE;
   if (tile >= params.tilesX * params.tilesY) return;  // the whole workgroup: one workgroup is one tile
+  // Lanes 8 b .. 8 b + 7 are block b (shared/raster.h): 4 x 2 pixels.
+  uint block = lane / (RASTER_BLOCK_WIDTH * RASTER_BLOCK_HEIGHT), within = lane % (RASTER_BLOCK_WIDTH * RASTER_BLOCK_HEIGHT);
+  const uint blocksPerRow = RASTER_TILE_SIZE / RASTER_BLOCK_WIDTH;
   pixel = uvec2(tile % params.tilesX, tile / params.tilesX) * RASTER_TILE_SIZE +
-          uvec2(lane % RASTER_TILE_SIZE, lane / RASTER_TILE_SIZE);
+          uvec2((block % blocksPerRow) * RASTER_BLOCK_WIDTH + within % RASTER_BLOCK_WIDTH,
+                (block / blocksPerRow) * RASTER_BLOCK_HEIGHT + within / RASTER_BLOCK_WIDTH);
   // In the staged walk, pixels past the image's edge load entries and vote but composite nothing.
   bool inside = pixel.x < params.width && pixel.y < params.height;
   if (!inside && STAGED == 0u) return;
@@ -221,11 +225,11 @@ void main() {
 #endif
   uint start = tiles[tile].x + blocks[tile / RASTER_SCAN_SIZE];
   uint end = min(start + tiles[tile].y, params.capacity);
-  uint rowBit = 1u << (lane / RASTER_TILE_SIZE);
+  uint blockBit = 1u << block;
 #ifdef RASTER_FINE_STAGED
-  walkStaged(start, end, rowBit, lane, inside);
+  walkStaged(start, end, blockBit, lane, inside);
 #else
-  walkDirect(start, end, rowBit);
+  walkDirect(start, end, blockBit);
 #endif
   if (!inside) return;
   imageStore(outImage, ivec2(pixel), vec4(far.color, far.alpha));

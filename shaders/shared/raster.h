@@ -18,8 +18,8 @@
 //   shadeArgs  uvec4[chunks]  the indirect shade dispatch of each chunk (x, y, z groups) and w = its listed count
 //   list       uvec2[capacity] per tile, depth bins near to far: x = the global index of the segment's first
 //                              vertex (strand * Q + k), | RASTER_LAST_SEGMENT for the strand's last segment
-//                              (no integer division in the fine loop: CPU SIMD has none); y = the rows of
-//                              the tile it may cover (bit r: row r), which the fine loop skips by
+//                              (no integer division in the fine loop: CPU SIMD has none); y = the blocks of
+//                              the tile it may cover (bit b: block b, RASTER_BLOCK_*), which the fine loop skips by
 // Key of tile t and bin b: t * RASTER_DEPTH_BINS + b. Tile t covers pixels [tx*8, tx*8+8) x [ty*8, ty*8+8).
 #ifndef HP_SHARED_RASTER_H
 #define HP_SHARED_RASTER_H
@@ -45,6 +45,10 @@ using std::floor;
 HP_BEGIN
 HP_CONST(uint, RASTER_TILE_SIZE, 8)             // pixels per tile side; one fine workgroup per tile
 HP_CONST(uint, RASTER_FINE_SIZE, 64)            // = RASTER_TILE_SIZE^2 invocations, one per pixel
+// A tile's 8 blocks of RASTER_BLOCK_WIDTH x RASTER_BLOCK_HEIGHT pixels, each 8 consecutive invocations of the
+// fine pass (one SIMD vector on lavapipe): block b = columns 4 (b % 2) .. + 3, rows 2 (b / 2) .. + 1.
+HP_CONST(uint, RASTER_BLOCK_WIDTH, 4)
+HP_CONST(uint, RASTER_BLOCK_HEIGHT, 2)
 HP_CONST(uint, RASTER_DEPTH_BINS, 32)           // depth bins per tile across the hair's view-depth range
 HP_CONST(uint, RASTER_WORKGROUP_SIZE, 64)       // vertex and segment passes
 HP_CONST(uint, RASTER_SCAN_SIZE, 256)           // tiles per scan block; the block scan is one workgroup
@@ -186,5 +190,10 @@ HP_END
 static_assert(sizeof(hp::gpu::RasterState) == 32);
 static_assert(sizeof(hp::gpu::RasterParams) == 64);
 static_assert(hp::gpu::RASTER_FINE_SIZE == hp::gpu::RASTER_TILE_SIZE * hp::gpu::RASTER_TILE_SIZE);
+#endif
+#ifdef __cplusplus
+// raster.glsl's footprintBlocks works out a tile's blocks as 4 row pairs of 2 sides.
+static_assert(hp::gpu::RASTER_TILE_SIZE / hp::gpu::RASTER_BLOCK_HEIGHT == 4 && hp::gpu::RASTER_TILE_SIZE / hp::gpu::RASTER_BLOCK_WIDTH == 2);
+static_assert(hp::gpu::RASTER_BLOCK_WIDTH * hp::gpu::RASTER_BLOCK_HEIGHT * 8 == hp::gpu::RASTER_FINE_SIZE);
 #endif
 #endif
