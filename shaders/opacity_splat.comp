@@ -93,13 +93,15 @@ void splat(End a, End b) {
   float len = sqrt(len2), invLen2 = 1.0 / len2;
   float halfV = 0.5 * len / abs(dir.x);
   float padU = 0.5 * abs(dir.y) / len;
+  // Per segment, not per column: lavapipe does not turn a division by a loop invariant into a product.
+  float slope = dir.y / dir.x, invDirY = dir.y != 0.0 ? 1.0 / dir.y : 0.0;
   ivec2 columns = centresIn(min(start.x, start.x + dir.x) - padU, max(start.x, start.x + dir.x) + padU);
   for (int i = columns.x; i <= columns.y; ++i) {
     float du = float(i) + 0.5 - start.x;
-    float line = start.y + du * dir.y / dir.x;
+    float line = start.y + du * slope;
     float lo = line - halfV, hi = line + halfV;
     if (dir.y != 0.0) {
-      float v0 = start.y - du * dir.x / dir.y, v1 = start.y + (len2 - du * dir.x) / dir.y;
+      float v0 = start.y - du * dir.x * invDirY, v1 = start.y + (len2 - du * dir.x) * invDirY;
       lo = max(lo, min(v0, v1));
       hi = min(hi, max(v0, v1));
     } else if (!(du * dir.x >= 0.0 && du * dir.x < len2)) {

@@ -127,9 +127,7 @@ bool compositeSegment(Segment g) {
     float z = mix(g.a.z, g.b.z, t);
     float coverage = abs(d) > 0.5 * w + 0.75 || z >= farthest ? 0.0 : rasterBandCoverage(d, w, n.x, n.y);
     if (coverage > 0.0) {
-      uvec2 band = uvec2(0u);
-      for (uint row = 0u; row < RASTER_MASK_SIDE; ++row)
-        band[row >> 2u] |= rasterBandRowBits(d, w, n.x, n.y, row) << ((row & 3u) * 8u);
+      uvec2 band = rasterBandMask(d, w, n.x, n.y);
       if (STAGED == 0u) {
         g.colorA = unpackHalfRgb(colors[g.v]);
         g.colorB = unpackHalfRgb(colors[g.v + 1u]);
