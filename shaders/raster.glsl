@@ -76,37 +76,31 @@ bool tileTouched(Footprint f, uvec2 tile, out vec2 span) {
 }
 
 // The blocks of a touched tile (tileTouched, its `span`) that can hold such a pixel: bit b set when block b
-// may. A tile is 8 blocks of 4 x 2 pixels, block b holding columns 4 (b % 2) .. + 3 of rows 2 (b / 2) .. + 1
+// may. A tile is 8 blocks of 2 x 4 pixels, block b holding columns 2 (b % 4) .. + 1 of rows 4 (b / 4) .. + 3
 // (RASTER_BLOCK_*; the fine pass gives each block one 8-wide SIMD vector on lavapipe, so a thin strand
-// crossing a tile meets fewer vectors than it would rows: ~4 blocks against 8 rows for a vertical one). By
+// crossing a tile meets fewer vectors than it would rows: 2-4 blocks against 8 rows for a vertical one). By
 // the argument above, s lies on the part of the span within `reach` of the block's rows in y, and c within
-// `reach` of that part's x range: one clip per row pair gives a conservative set. Scatter mode only; an
+// `reach` of that part's x range: one clip per band of 4 rows gives a conservative set. Scatter mode only; an
 // entry whose set comes out empty (float rounding at the edge of the decision) is skipped by every pixel.
 uint footprintBlocks(Footprint f, uvec2 tile, vec2 span) {
   float reach = footprintReach(f);
   vec2 ab = f.b.xy - f.a.xy;
   vec2 origin = vec2(tile * RASTER_TILE_SIZE) + 0.5;
-  // The four row pairs at once, then each pair's two sides (shared/raster.h asserts the 2 x 4 blocks; no
-  // loop: lavapipe runs a vec4 as four SIMD vectors without loop control, 10% of the bin pass's time).
-  vec4 y0 = origin.y + vec4(0.0, 1.0, 2.0, 3.0) * float(RASTER_BLOCK_HEIGHT) - reach;
-  vec4 y1 = y0 + float(RASTER_BLOCK_HEIGHT - 1u) + 2.0 * reach;
-  vec4 s0 = vec4(span.x), s1 = vec4(span.y);
-  bvec4 some;
-  if (f.invAxis.y != 0.0) {
-    vec4 ta = (y0 - f.a.y) * f.invAxis.y, tb = (y1 - f.a.y) * f.invAxis.y;
-    s0 = max(s0, min(ta, tb));
-    s1 = min(s1, max(ta, tb));
-    some = lessThanEqual(s0, s1);
-  } else {
-    some = bvec4(uvec4(greaterThanEqual(vec4(f.a.y), y0)) & uvec4(lessThanEqual(vec4(f.a.y), y1)));
-  }
-  vec4 xa = f.a.x + ab.x * s0, xb = f.a.x + ab.x * s1;
-  vec4 lo = min(xa, xb) - reach, hi = max(xa, xb) + reach;
+  // Per band of rows, the part of the span within reach of it, then its four blocks at once (shared/raster.h
+  // asserts the 2 bands x 4 blocks; a vec4, no inner loop: lavapipe runs it as four SIMD vectors).
   const float w = float(RASTER_BLOCK_WIDTH);
-  uvec4 left = uvec4(some) & uvec4(lessThanEqual(lo, vec4(origin.x + w - 1.0))) & uvec4(greaterThanEqual(hi, vec4(origin.x)));
-  uvec4 right = uvec4(some) & uvec4(lessThanEqual(lo, vec4(origin.x + 2.0 * w - 1.0))) & uvec4(greaterThanEqual(hi, vec4(origin.x + w)));
-  uvec4 pairs = left | (right << 1u);
-  return pairs.x | (pairs.y << 2u) | (pairs.z << 4u) | (pairs.w << 6u);
+  vec4 x0 = origin.x + vec4(0.0, 1.0, 2.0, 3.0) * w;  // the blocks' first pixel centres
+  uint blocks = 0u;
+  for (uint band = 0u; band < RASTER_TILE_SIZE / RASTER_BLOCK_HEIGHT; ++band) {
+    float y0 = origin.y + float(band * RASTER_BLOCK_HEIGHT) - reach;
+    float s0 = span.x, s1 = span.y;
+    if (!clipToSlab(f.a.y, f.invAxis.y, y0, y0 + float(RASTER_BLOCK_HEIGHT - 1u) + 2.0 * reach, s0, s1)) continue;
+    float xa = f.a.x + ab.x * s0, xb = f.a.x + ab.x * s1;
+    vec4 lo = vec4(min(xa, xb) - reach), hi = vec4(max(xa, xb) + reach);
+    uvec4 in4 = uvec4(lessThanEqual(lo, x0 + (w - 1.0))) & uvec4(greaterThanEqual(hi, x0));
+    blocks |= (in4.x | (in4.y << 1u) | (in4.z << 2u) | (in4.w << 3u)) << (4u * band);
+  }
+  return blocks;
 }
 
 uint tileListStart(uint tile) { return tiles[tile].x + blocks[tile / RASTER_SCAN_SIZE]; }
