@@ -32,8 +32,11 @@ const char* resolveShader(VkFormat format) {
 }  // namespace
 
 VkDeviceSize OpacityResolvePass::binBytes(std::uint32_t resolution, OpacityBins layout) {
-  const std::uint32_t perTexel = layout == OpacityBins::DeepFine ? gpu::OPACITY_DEEP_BINS : gpu::OPACITY_SLICES;
-  return VkDeviceSize(resolution) * resolution * perTexel * sizeof(std::uint32_t);
+  const VkDeviceSize texels = VkDeviceSize(resolution) * resolution;
+  if (layout != OpacityBins::DeepFine) return texels * gpu::OPACITY_SLICES * sizeof(std::uint32_t);
+  // Whole groups of OPACITY_FINE_GROUP texels (gpu::opacityFineBin): the last may be partly past the map.
+  const VkDeviceSize groups = (texels + gpu::OPACITY_FINE_GROUP - 1) / gpu::OPACITY_FINE_GROUP;
+  return groups * gpu::OPACITY_FINE_GROUP * gpu::OPACITY_DEEP_BINS * sizeof(std::uint32_t);
 }
 
 bool OpacityResolvePass::fits(const vk::Context& ctx, std::uint32_t resolution, OpacityBins layout) {

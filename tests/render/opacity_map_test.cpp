@@ -768,6 +768,44 @@ TEST_F(VulkanTest, DeepOpacityMapsStartAtEachTexelsFirstHair) {
   }
 }
 
+// The fine bins come in whole groups of OPACITY_FINE_GROUP texels (opacityFineBin), so a map whose texel
+// count is no multiple of the group still holds every texel's bins; and at such a resolution (61^2) the
+// one-splat deep maps of a random volume equal the two-splat ones where both are exact: each texel's first
+// hair, and its last slice (every fragment behind it).
+TEST(OpacityBins, FineBinsCoverEveryTexelOfAnyResolution) {
+  using hp::compute::OpacityBins;
+  using hp::compute::OpacityResolvePass;
+  for (std::uint32_t resolution : {16u, 61u, 63u, 64u, 101u, 512u}) {
+    const std::uint32_t texels = resolution * resolution;
+    std::uint32_t last = 0;
+    for (std::uint32_t t = texels - std::min(texels, 64u); t < texels; ++t)
+      last = std::max(last, hp::gpu::opacityFineBin(t, hp::gpu::OPACITY_DEEP_BINS - 1u));
+    EXPECT_LT(VkDeviceSize(last) * 4u, OpacityResolvePass::binBytes(resolution, OpacityBins::DeepFine)) << resolution;
+  }
+}
+
+TEST_F(VulkanTest, DeepMapsInOneAndTwoSplatsAgreeOnTheFirstHairAndTheLastSlice) {
+  const StrandSet set = tiltedVolume();
+  OpacitySettings s = smallSettings(61, 0.1f);
+  s.deep = true;
+  s.raster = hp::render::OpacityRaster::Compute;
+  const glm::vec3 light = glm::normalize(glm::vec3(0.3f, 0.8f, 0.5f));
+  using DeepSplats = hp::render::ShadowMaps::DeepSplats;
+  ShadowRig one(*ctx, set, s, 0, DeepSplats::Auto), two(*ctx, set, s, 0, DeepSplats::Two);
+  ASSERT_EQ(one.maps->resolvePass()->layout(), hp::compute::OpacityBins::DeepFine);
+  const OpacityCapture a = one.run(*ctx, light), b = two.run(*ctx, light);
+  std::size_t hair = 0, wrong = 0;
+  for (std::uint32_t y = 0; y < 61; ++y)
+    for (std::uint32_t x = 0; x < 61; ++x) {
+      const std::size_t t = std::size_t(y) * 61 + x;
+      hair += b.firstHair[t] < hp::gpu::OPACITY_NO_HAIR;
+      wrong += a.firstHair[t] != b.firstHair[t];
+      wrong += std::abs(a.at(15, x, y) - b.at(15, x, y)) > 1e-4f * (1.0f + b.at(15, x, y));
+    }
+  EXPECT_GT(hair, 500u);
+  EXPECT_EQ(wrong, 0u);
+}
+
 // Deep maps in one splat (OpacityBins::DeepFine) against two: a texel's first hair between fine bins. A
 // marker strand at light depth 0 fixes the framing's near end (depth range [0, 1], s = 16 d); the 40 rows
 // of four layers along x lie at s = 0.125, 0.3, 0.725 and 16, i.e. at fine coordinates f = 4 s = 0.5, 1.2,
