@@ -43,7 +43,7 @@ Footprint segmentFootprint(uint v) {
 // within 1e-6 of 0: constant) within [lo, hi]; false when none.
 bool clipToSlab(float a, float inv, float lo, float hi, inout float t0, inout float t1) {
   if (inv != 0.0) {
-    float ta = (lo - a) * inv, tb = (hi - a) * inv;
+    precise float ta = (lo - a) * inv, tb = (hi - a) * inv;
     t0 = max(t0, min(ta, tb));
     t1 = min(t1, max(ta, tb));
   } else if (a < lo || a > hi) {
@@ -59,20 +59,24 @@ bool clipToSlab(float a, float inv, float lo, float hi, inout float t0, inout fl
 // range of t), and c within `reach` of that part's y range. A segment whose nearer end is at or behind the
 // farthest head depth in the tile (raster_tile_depth.glsl) is out: every fragment it could give there fails
 // raster_fine's depth test.
-float footprintReach(Footprint f) { return 0.5 * max(f.a.w, f.b.w) + 0.75 + 1e-3; }
+float footprintReach(Footprint f) {
+  precise float reach = 0.5 * max(f.a.w, f.b.w) + 0.75 + 1e-3;
+  return reach;
+}
 
+// Its arithmetic is `precise`: the count and scatter modes are two pipelines, and a compiler must not
+// contract their expressions differently (an entry counted but not scattered would leave a stale one).
 bool tileTouched(Footprint f, uvec2 tile, out vec2 span) {
   span = vec2(0.0, 1.0);
   if (min(f.a.z, f.b.z) >= tileDepth[tile.y * params.tilesX + tile.x]) return false;
   float reach = footprintReach(f);
   vec2 origin = vec2(tile * RASTER_TILE_SIZE) + 0.5;  // the tile's first pixel centre
-  if (!clipToSlab(f.a.x, f.invAxis.x, origin.x - reach, origin.x + float(RASTER_TILE_SIZE - 1u) + reach, span.x, span.y))
-    return false;
-  float dy = f.b.y - f.a.y;
-  float ya = f.a.y + dy * span.x, yb = f.a.y + dy * span.y;
-  int first = max(int(ceil(min(ya, yb) - reach - origin.y)), 0);
-  int last = min(int(floor(max(ya, yb) + reach - origin.y)), int(RASTER_TILE_SIZE) - 1);
-  return first <= last;
+  precise float x0 = origin.x - reach, x1 = origin.x + float(RASTER_TILE_SIZE - 1u) + reach;
+  if (!clipToSlab(f.a.x, f.invAxis.x, x0, x1, span.x, span.y)) return false;
+  precise float dy = f.b.y - f.a.y;
+  precise float ya = f.a.y + dy * span.x, yb = f.a.y + dy * span.y;
+  precise float lo = min(ya, yb) - reach - origin.y, hi = max(ya, yb) + reach - origin.y;
+  return max(int(ceil(lo)), 0) <= min(int(floor(hi)), int(RASTER_TILE_SIZE) - 1);
 }
 
 // The blocks of a touched tile (tileTouched, its `span`) that can hold such a pixel: bit b set when block b
@@ -90,7 +94,7 @@ uint footprintBlocks(Footprint f, uvec2 tile, vec2 span) {
   // asserts the 2 bands x 4 blocks; a vec4, no inner loop: lavapipe runs it as four SIMD vectors).
   const float w = float(RASTER_BLOCK_WIDTH);
   vec4 x0 = origin.x + vec4(0.0, 1.0, 2.0, 3.0) * w;  // the blocks' first pixel centres
-  uint blocks = 0u;
+  uint mask = 0u;  // (not `blocks`: raster_bin.comp's scan-block buffer)
   for (uint band = 0u; band < RASTER_TILE_SIZE / RASTER_BLOCK_HEIGHT; ++band) {
     float y0 = origin.y + float(band * RASTER_BLOCK_HEIGHT) - reach;
     float s0 = span.x, s1 = span.y;
@@ -98,9 +102,9 @@ uint footprintBlocks(Footprint f, uvec2 tile, vec2 span) {
     float xa = f.a.x + ab.x * s0, xb = f.a.x + ab.x * s1;
     vec4 lo = vec4(min(xa, xb) - reach), hi = vec4(max(xa, xb) + reach);
     uvec4 in4 = uvec4(lessThanEqual(lo, x0 + (w - 1.0))) & uvec4(greaterThanEqual(hi, x0));
-    blocks |= (in4.x | (in4.y << 1u) | (in4.z << 2u) | (in4.w << 3u)) << (4u * band);
+    mask |= (in4.x | (in4.y << 1u) | (in4.z << 2u) | (in4.w << 3u)) << (4u * band);
   }
-  return blocks;
+  return mask;
 }
 
 uint tileListStart(uint tile) { return tiles[tile].x + blocks[tile / RASTER_SCAN_SIZE]; }

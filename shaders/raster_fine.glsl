@@ -198,7 +198,7 @@ void main() {
   uint tile = invocation / RASTER_FINE_SIZE;
   uint lane = invocation % RASTER_FINE_SIZE;
   if (tile >= params.tilesX * params.tilesY) return;  // the whole workgroup: one workgroup is one tile
-  // Lanes 8 b .. 8 b + 7 are block b (shared/raster.h): 4 x 2 pixels.
+  // Lanes 8 b .. 8 b + 7 are block b (shared/raster.h): 2 x 4 pixels.
   uint block = lane / (RASTER_BLOCK_WIDTH * RASTER_BLOCK_HEIGHT), within = lane % (RASTER_BLOCK_WIDTH * RASTER_BLOCK_HEIGHT);
   const uint blocksPerRow = RASTER_TILE_SIZE / RASTER_BLOCK_WIDTH;
   pixel = uvec2(tile % params.tilesX, tile / params.tilesX) * RASTER_TILE_SIZE +

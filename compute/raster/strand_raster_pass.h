@@ -4,7 +4,7 @@
 // per hair instance: its strands and its shading resources; all share one set of tile lists, so hair of
 // different heads interleaves correctly by depth) it
 //   bin      per vertex: the projection to pixels, NDC depth and width; per tile: the farthest head depth;
-//            per segment: count its (8x8 tile, depth bin) keys with the rows of the tile it may cover,
+//            per segment: count its (8x8 tile, depth bin) keys (a block mask of the tile it may cover),
 //            leaving out tiles where the head hides it, and list the ends of kept segments for shading;
 //            scan the tiles (tile budget: nearest bins kept first), scatter the segment ids into per-tile
 //            lists ordered near to far by depth bin;

@@ -32,15 +32,16 @@ struct SplatFootprint {
 
 class OpacitySplatPass {
  public:
-  // lightSpace: gpu::LightSpace per slot; bins: uint[resolution^2 x 16]; first: uint[resolution^2] (deep maps); all
-  // with storage usage, all outliving the pass.
+  // lightSpace: gpu::LightSpace per slot; bins: OpacityResolvePass::binBytes of the form in effect; first:
+  // uint[resolution^2] (deep maps); all with storage usage, all outliving the pass.
   OpacitySplatPass(const vk::Context& ctx, const StrandBuffers& strands, const vk::Buffer& lightSpace,
                    const vk::Buffer& bins, const vk::Buffer& first, std::uint32_t resolution,
                    vk::PipelineLibrary* library = nullptr);
   OpacitySplatPass(const OpacitySplatPass&) = delete;
   OpacitySplatPass& operator=(const OpacitySplatPass&) = delete;
 
-  // mode: gpu::OPACITY_SPLAT_MODE_* (deep maps: _FIRST for every instance, a barrier, then _DEEP).
+  // mode: gpu::OPACITY_SPLAT_MODE_* (deep maps: _DEEP_FINE; where the fine bins do not fit, _FIRST for
+  // every instance, a barrier, then _DEEP).
   // strandLimit: the level of detail's prefix of the strands splatted (strandsWithin).
   void record(VkCommandBuffer cmd, const SplatFootprint& footprint, std::uint32_t mode,
               std::uint32_t strandLimit = kAllStrands) const;

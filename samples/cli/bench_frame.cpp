@@ -10,6 +10,7 @@
 #include "samples/tools/offscreen_renderer.h"
 #include "samples/tools/copy_reference.h"
 #include "engine/vk/submit.h"
+#include "shaders/shared/opacity.h"
 #include "shaders/shared/raster.h"
 
 namespace hp::cli {
@@ -29,8 +30,9 @@ double residentMiB() { return double(residentBytes()) / (1024.0 * 1024.0); }
 
 // Compulsory bytes per frame of the compute passes: every input read once, every output written once
 // (formulas as bench strands / bench sim; raster: vertex records 16 + 8 bytes, list entries 8 bytes; the
-// shade step is counted as if every vertex were listed; compute opacity: positions, then the bins cleared,
-// read by the resolve and the maps written, 64 bytes a texel each, the atomics not counted). Interpolate
+// shade step is counted as if every vertex were listed; compute opacity: positions, the bins in effect
+// cleared and read by the resolve, the maps written (16 bytes a slice layer and the first-hair layer), deep
+// maps' first-hair buffer cleared and read, the atomics not counted). Interpolate
 // and bounds work on every strand; the raster and opacity passes on the level of detail's drawn ones.
 void countBytes(FrameResult& r, const compute::StrandLayout& l) {
   const double g = l.guideCount, p = l.particlesPerGuide, q = l.verticesPerStrand, all = l.strandCount;
@@ -49,7 +51,8 @@ void countBytes(FrameResult& r, const compute::StrandLayout& l) {
       {"raster bin", 2 * v * 16 + tiles * gpu::RASTER_DEPTH_BINS * 16 + e * 8},
       {"raster fine", e * 8 + e * 2 * 16 + pixels * (4 + 8)},
   };
-  if (r.opacityRaster == render::OpacityRaster::Compute) bytes["opacity"] = v * 16 + 3 * mapTexels * 64;
+  if (r.opacityRaster == render::OpacityRaster::Compute)
+    bytes["opacity"] = v * 16 + 2 * r.opacityBufferBytes + mapTexels * gpu::OPACITY_LAYERS * 16;
   for (auto& [name, t] : r.passes)
     if (auto it = bytes.find(name); it != bytes.end()) t.bytes = it->second;
 }
@@ -141,6 +144,8 @@ FrameResult benchFrame(const vk::Context& ctx, const FrameCase& c) {
     r.rasterOverflow = stats.overflow();
   }
   r.opacityRaster = hair.shadows().raster();
+  if (const compute::OpacityResolvePass* resolve = hair.shadows().resolvePass())
+    r.opacityBufferBytes = double(resolve->bins().size() + (resolve->deep() ? resolve->first().size() : 0));
   r.copyBytes = copy.bytesMoved();
   r.copyAlone = copy.measureAlone();
   r.unresolvedBecause = vk::timestampsUnresolvedBecause(r.copyAlone, r.passes.at("copy").medianMs);

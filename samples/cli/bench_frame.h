@@ -51,6 +51,7 @@ struct FrameResult {
   std::map<std::string, PassTiming> passes;  // "frame" is the whole frame; "copy" the reference
   std::uint64_t rasterEntries = 0, rasterOverflow = 0;
   render::OpacityRaster opacityRaster = render::OpacityRaster::Graphics;  // the path taken (Auto resolved)
+  double opacityBufferBytes = 0;  // compute path: the bins in their form in effect, and deep maps' first hair
   double copyBytes = 0;
   vk::CopyTiming copyAlone;             // the yardstick: the copy in submissions of its own
   bool timestampsResolvePasses = false;

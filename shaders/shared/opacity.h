@@ -52,7 +52,8 @@ HP_CONST(uint, OPACITY_BINDING_LIGHT, 2)      // LightSpace[slots] (read: the pu
 // 1-texel-wide rectangle along it: the strict-line rule of the graphics pass) add their opacity in fixed
 // point to ONE bin per texel, the first slice at or behind them; the resolve turns the 16 bins of a texel
 // into the cumulative alpha(z_i) of the graphics pass and writes the maps. Bins: uint[res * res * 16],
-// texel-major (texel (x, y) row y from the top, then slice).
+// texel-major (texel (x, y) row y from the top, then slice); deep maps in one splat: OPACITY_DEEP_BINS per
+// texel, laid out by opacityFineBin (below).
 HP_CONST(uint, OPACITY_SPLAT_WORKGROUP_SIZE, 64)
 HP_CONST(uint, OPACITY_RESOLVE_WORKGROUP_SIZE, 64)
 HP_CONST(uint, OPACITY_SPLAT_BINDING_POSITIONS, 0)  // vec4[chunk strands * Q] render strand positions

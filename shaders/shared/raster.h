@@ -47,8 +47,7 @@ HP_CONST(uint, RASTER_TILE_SIZE, 8)             // pixels per tile side; one fin
 HP_CONST(uint, RASTER_FINE_SIZE, 64)            // = RASTER_TILE_SIZE^2 invocations, one per pixel
 // A tile's 8 blocks of RASTER_BLOCK_WIDTH x RASTER_BLOCK_HEIGHT pixels, each 8 consecutive invocations of the
 // fine pass (one SIMD vector on lavapipe): block b = columns 2 (b % 4) .. + 1, rows 4 (b / 4) .. + 3. Tall
-// blocks suit hair that falls: on the default frame (lavapipe) the fine pass took 89-91 ms with 2 x 4,
-// 101-105 with 4 x 2, 103-109 with 1 x 8 and 158-168 with rows (8 x 1).
+// blocks suit hair that falls (docs/DESIGN.md "Block masks in the lists": the shapes measured).
 HP_CONST(uint, RASTER_BLOCK_WIDTH, 2)
 HP_CONST(uint, RASTER_BLOCK_HEIGHT, 4)
 HP_CONST(uint, RASTER_DEPTH_BINS, 32)           // depth bins per tile across the hair's view-depth range

@@ -695,6 +695,39 @@ TEST_F(VulkanTest, ComputeOpacityBinsSaturateInsteadOfWrappingAround) {
   }
 }
 
+// A saturated bin that a deep slice takes only a share of saturates the slice: one fibre at s = 0.125 is
+// each texel's first hair (fine coordinate 0.5), 700 coincident strands of opacity 100 pile up behind it at
+// s = 0.3 (fine bin 1, deep coordinate 0.7): slice 1 holds half that bin in one splat, all of it in two, and
+// every slice reads OPACITY_SATURATED_ALPHA in both forms.
+TEST_F(VulkanTest, ADeepSliceWithAShareOfASaturatedBinSaturates) {
+  StrandSet set;
+  set.q = 2;
+  set.addStraight({-0.9f, -0.5f, 0.0f}, {-0.9f, 0.5f, 0.0f});  // light depth 0 and
+  set.addStraight({-0.5f, 0.4f, -1.0f}, {0.5f, 0.4f, -1.0f});   // 1: the framing spans [0, 1]
+  set.addStraight({-0.5f, 0.013f, -0.125f / 16.0f}, {0.5f, 0.013f, -0.125f / 16.0f});
+  for (int i = 0; i < 700; ++i) set.addStraight({-0.5f, 0.013f, -0.3f / 16.0f}, {0.5f, 0.013f, -0.3f / 16.0f});
+  OpacitySettings s;
+  s.resolution = 64;
+  s.footprint = false;
+  s.strandOpacity = 100.0f;
+  s.deep = true;
+  s.raster = hp::render::OpacityRaster::Compute;
+  using DeepSplats = hp::render::ShadowMaps::DeepSplats;
+  for (const auto splats : {DeepSplats::Auto, DeepSplats::Two}) {
+    ShadowRig rig(*ctx, set, s, 0, splats);
+    const OpacityCapture c = rig.run(*ctx, glm::vec3(0.0f, 0.0f, 1.0f));
+    std::size_t pile = 0, wrong = 0;
+    for (std::uint32_t y = 0; y < 64; ++y)
+      for (std::uint32_t x = 20; x < 56; ++x) {
+        if (c.at(15, x, y) < 1000.0f) continue;
+        ++pile;
+        for (std::uint32_t i = 0; i < 16; ++i) wrong += c.at(i, x, y) != hp::gpu::OPACITY_SATURATED_ALPHA;
+      }
+    EXPECT_GE(pile, 30u) << "one splat: " << (splats == DeepSplats::Auto);
+    EXPECT_EQ(wrong, 0u) << "one splat: " << (splats == DeepSplats::Auto);
+  }
+}
+
 // Auto takes the compute path where its bins fit the device's maxStorageBufferRange and the graphics path
 // where they do not (lavapipe: 128 MiB, so 2048^2's 256 MiB of bins do not); Compute asked for by name
 // past the limit is refused up front, naming the limit.
@@ -741,30 +774,33 @@ TEST_F(VulkanTest, DeepOpacityMapsStartAtEachTexelsFirstHair) {
   EXPECT_FALSE(ShadowRig(*ctx, set, s).maps->settings().deep);
   s.raster = hp::render::OpacityRaster::Compute;
   for (const auto splats : {hp::render::ShadowMaps::DeepSplats::Auto, hp::render::ShadowMaps::DeepSplats::Two}) {
-  ShadowRig rig(*ctx, set, s, 0, splats);
-  ASSERT_TRUE(rig.maps->settings().deep);
-  const OpacityCapture c = rig.run(*ctx, glm::vec3(0.0f, 0.0f, 1.0f));
-  const auto [count, ambiguous] = strandRows(c.light);
-  std::size_t checked = 0, wrong = 0;
-  for (std::uint32_t y = 0; y < 64; ++y) {
-    if (ambiguous[y]) continue;
-    for (std::uint32_t x = 5; x < 59; ++x) {
-      const float s0 = c.firstHair[std::size_t(y) * 64 + x];
-      if (count[y] == 0) {
-        EXPECT_GE(s0, hp::gpu::OPACITY_NO_HAIR) << x << "," << y;
-        continue;
-      }
-      EXPECT_NEAR(s0, 0.0f, 1e-4f) << x << "," << y;
-      for (std::uint32_t i = 1; i <= 16; ++i) {
-        const float expected =
-            0.25f * count[y] * (1.0f + (i >= 4 ? 1.0f : 0.0f) + (i >= 7 ? 1.0f : 0.0f) + (i == 16 ? 1.0f : 0.0f));
-        ++checked;
-        if (std::abs(c.at(i - 1, x, y) - expected) > 1e-4f) ++wrong;
+    ShadowRig rig(*ctx, set, s, 0, splats);
+    ASSERT_TRUE(rig.maps->settings().deep);
+    const bool one = splats == hp::render::ShadowMaps::DeepSplats::Auto;
+    EXPECT_EQ(rig.maps->resolvePass()->layout(),
+              one ? hp::compute::OpacityBins::DeepFine : hp::compute::OpacityBins::DeepTwoSplats);
+    const OpacityCapture c = rig.run(*ctx, glm::vec3(0.0f, 0.0f, 1.0f));
+    const auto [count, ambiguous] = strandRows(c.light);
+    std::size_t checked = 0, wrong = 0;
+    for (std::uint32_t y = 0; y < 64; ++y) {
+      if (ambiguous[y]) continue;
+      for (std::uint32_t x = 5; x < 59; ++x) {
+        const float s0 = c.firstHair[std::size_t(y) * 64 + x];
+        if (count[y] == 0) {
+          EXPECT_GE(s0, hp::gpu::OPACITY_NO_HAIR) << x << "," << y;
+          continue;
+        }
+        EXPECT_NEAR(s0, 0.0f, 1e-4f) << x << "," << y;
+        for (std::uint32_t i = 1; i <= 16; ++i) {
+          const float expected =
+              0.25f * count[y] * (1.0f + (i >= 4 ? 1.0f : 0.0f) + (i >= 7 ? 1.0f : 0.0f) + (i == 16 ? 1.0f : 0.0f));
+          ++checked;
+          if (std::abs(c.at(i - 1, x, y) - expected) > 1e-4f) ++wrong;
+        }
       }
     }
-  }
-  EXPECT_GT(checked, 16u * 54u * 30u);
-  EXPECT_EQ(wrong, 0u);
+    EXPECT_GT(checked, 16u * 54u * 30u) << "one splat: " << one;
+    EXPECT_EQ(wrong, 0u) << "one splat: " << one;
   }
 }
 
