@@ -35,8 +35,8 @@ void resolveSlices(uint texel, ivec2 xy) {
     slices[i] = saturated ? OPACITY_SATURATED_ALPHA : alpha;
   }
   // Deep maps: the first hair's s (the buffer starts at the largest uint: none there).
-  bool deep = push.deep == OPACITY_RESOLVE_DEEP && first[texel] != 0xFFFFFFFFu;
-  store(xy, slices, deep ? floatFromOrdered(first[texel]) : OPACITY_NO_HAIR);
+  uint firstBits = push.deep == OPACITY_RESOLVE_DEEP ? first[texel] : 0xFFFFFFFFu;
+  store(xy, slices, firstBits != 0xFFFFFFFFu ? floatFromOrdered(firstBits) : OPACITY_NO_HAIR);
 }
 
 // Deep maps from one splat's fine bins (shared/opacity.h): deep slice i (1..16) ends at the fine coordinate

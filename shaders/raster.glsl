@@ -52,20 +52,22 @@ bool clipToSlab(float a, float inv, float lo, float hi, inout float t0, inout fl
   return t0 <= t1;
 }
 
+// How far from a pixel centre the segment's foot point may lie for raster_fine.glsl to composite it: half
+// the width + 0.75 px (the pixel's half-diagonal, rounded up), + 1e-3.
+float footprintReach(Footprint f) {
+  precise float reach = 0.5 * max(f.a.w, f.b.w) + 0.75 + 1e-3;
+  return reach;
+}
+
 // Whether the segment may cover a pixel of the tile that the head does not hide: the count and scatter
 // modes' one decision, so both list the same entries. raster_fine.glsl composites a pixel centre c only when
 // its foot point s on the segment (t in [0, 1]) is within half the width + 0.75 px (`reach`) of c; with c in
 // the tile's columns, s lies on the part of the segment within `reach` of those columns in x (`span`, the
 // range of t), and c within `reach` of that part's y range. A segment whose nearer end is at or behind the
 // farthest head depth in the tile (raster_tile_depth.glsl) is out: every fragment it could give there fails
-// raster_fine's depth test.
-float footprintReach(Footprint f) {
-  precise float reach = 0.5 * max(f.a.w, f.b.w) + 0.75 + 1e-3;
-  return reach;
-}
-
-// Its arithmetic is `precise`: the count and scatter modes are two pipelines, and a compiler must not
-// contract their expressions differently (an entry counted but not scattered would leave a stale one).
+// raster_fine's depth test. Its arithmetic is `precise`: the count and scatter modes are two pipelines, and
+// a compiler must not contract their expressions differently (an entry counted but not scattered would
+// leave a stale one).
 bool tileTouched(Footprint f, uvec2 tile, out vec2 span) {
   span = vec2(0.0, 1.0);
   if (min(f.a.z, f.b.z) >= tileDepth[tile.y * params.tilesX + tile.x]) return false;

@@ -2,15 +2,16 @@
 // Contract: the end of the compute opacity pass (shaders/opacity_resolve.glsl, shared/opacity.h). Owns
 // the bins every instance's OpacitySplatPass adds into (uint[resolution^2 x 16], fixed point; deep maps
 // in one splat: OPACITY_DEEP_BINS per texel in whole groups of OPACITY_FINE_GROUP texels) and the
-// first-hair buffer, and turns them into the opacity maps: per
-// texel the prefix sum over its 16 slices, written as the 4 RGBA layers the graphics pass would have
-// blended (RGBA32F or RGBA16F; storage usage required).
+// first-hair buffer, and turns them into the opacity maps: per texel the prefix sum over its 16 slices,
+// written as the 4 RGBA layers the graphics pass would have blended (RGBA32F or RGBA16F; storage usage
+// required).
 //
 // Recording, barriers by the caller (the frame recorder): recordClear (transfer fills of the bins and, for
 // deep maps, the first-hair buffer; before it the previous frame's reads are done: ComputeRead ->
 // TransferDst), the splats
 // (TransferDst -> ComputeWrite before them), then recordResolve (bins, and for DeepFine the first-hair
-// buffer too, ComputeWrite -> ComputeRead; the maps in ImageUse::ComputeStorageWrite). Throws hp::Error if the bins exceed maxStorageBufferRange.
+// buffer too, ComputeWrite -> ComputeRead; the maps in ImageUse::ComputeStorageWrite). Throws hp::Error if
+// the bins exceed maxStorageBufferRange.
 #include "hairpipe_volk.h"
 
 #include <memory>

@@ -186,11 +186,6 @@ HP_RASTER_FN uvec2 rasterBandMask(float d, float w, float nx, float ny) {
   return mask;
 }
 
-// Row `row` of rasterBandMask.
-HP_RASTER_FN uint rasterBandRowBits(float d, float w, float nx, float ny, uint row) {
-  return (rasterBandMask(d, w, nx, ny)[row >> 2u] >> ((row & 3u) * 8u)) & 0xFFu;
-}
-
 // The share of a fragment still visible: 1 - U for a strand independent of those in front (U = the
 // pixel's alpha so far), scaled by how much more (or less) its samples overlap the covered ones than
 // independence predicts: rho = (overlap / samples) / (covered / all samples). Coincident strands get

@@ -119,7 +119,7 @@ TEST(RasterCoverage, BandCoverageIsTheExactPixelAreaAtAnyAngle) {
       }
 }
 
-TEST(RasterCoverage, BandRowBitsAreTheSamplesInsideTheBand) {
+TEST(RasterCoverage, BandMaskRowsAreTheSamplesInsideTheBand) {
   // The overlap mask's rows against testing each of the 8 x 8 samples, for bands at many angles,
   // widths and offsets (samples within 1e-4 of the band's edge are not asserted: float rounding).
   int checked = 0;
@@ -128,8 +128,9 @@ TEST(RasterCoverage, BandRowBitsAreTheSamplesInsideTheBand) {
       for (float d = -1.2f; d <= 1.2f; d += 0.0731f) {
         const float rad = glm::radians(float(angle));
         const glm::vec2 n(std::cos(rad), std::sin(rad));
+        const glm::uvec2 mask = hp::gpu::rasterBandMask(d, w, n.x, n.y);
         for (std::uint32_t row = 0; row < hp::gpu::RASTER_MASK_SIDE; ++row) {
-          const std::uint32_t bits = hp::gpu::rasterBandRowBits(d, w, n.x, n.y, row);
+          const std::uint32_t bits = (mask[row >> 2u] >> ((row & 3u) * 8u)) & 0xFFu;  // row r: byte r % 4 of word r / 4
           for (std::uint32_t i = 0; i < hp::gpu::RASTER_MASK_SIDE; ++i) {
             const glm::vec2 s((i + 0.5f) / 8.0f - 0.5f, (row + 0.5f) / 8.0f - 0.5f);
             const float edge = std::abs(d + glm::dot(s, n)) - 0.5f * w;
