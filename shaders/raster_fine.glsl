@@ -33,6 +33,11 @@ layout(std430, binding = RASTER_BINDING_COLORS) readonly buffer Colors { uvec2 c
 layout(std430, binding = RASTER_BINDING_TILES) readonly buffer Tiles { uvec2 tiles[]; };
 layout(std430, binding = RASTER_BINDING_BLOCKS) readonly buffer Blocks { uint blocks[]; };
 layout(std430, binding = RASTER_BINDING_LIST) readonly buffer List { uvec2 list[]; };
+#ifndef RASTER_FINE_STAGED
+layout(binding = RASTER_BINDING_LIST_TEXELS) uniform usamplerBuffer listTexels;
+layout(binding = RASTER_BINDING_SCREEN_TEXELS) uniform samplerBuffer screenTexels;
+layout(binding = RASTER_BINDING_COLOR_TEXELS) uniform usamplerBuffer colorTexels;
+#endif
 #include "raster_head_depth.glsl"
 layout(binding = RASTER_BINDING_OUTPUT, rgba16f) uniform writeonly image2D outImage;
 #ifdef RASTER_HEAD_MULTISAMPLED
@@ -42,6 +47,18 @@ layout(binding = RASTER_BINDING_NEAR_MASK, r32ui) uniform writeonly uimage2D nea
 layout(std430, binding = RASTER_BINDING_PARAMS) readonly buffer Params { RasterParams params; };
 layout(std430, binding = RASTER_BINDING_MOTION) readonly buffer Motion { uint motion[]; };
 layout(binding = RASTER_BINDING_MOTION_OUTPUT, rg16f) uniform writeonly image2D motionImage;
+
+// The list entry, screen vertex and colour at an index: storage buffer loads in the staged walk, texel
+// fetches of the same buffers in the direct one (shared/raster.h RASTER_BINDING_LIST_TEXELS: lavapipe).
+#ifdef RASTER_FINE_STAGED
+uvec2 listEntry(uint e) { return list[e]; }
+vec4 screenVertex(uint v) { return screen[v]; }
+vec3 vertexColor(uint v) { return unpackHalfRgb(colors[v]); }
+#else
+uvec2 listEntry(uint e) { return texelFetch(listTexels, int(e)).xy; }
+vec4 screenVertex(uint v) { return texelFetch(screenTexels, int(v)); }
+vec3 vertexColor(uint v) { return unpackHalfRgb(texelFetch(colorTexels, int(v)).xy); }
+#endif
 
 uint samplesIn(uvec2 mask) { return uint(bitCount(mask.x) + bitCount(mask.y)); }  // of the 8 x 8 overlap mask
 
@@ -91,16 +108,16 @@ Segment loadSegment(uvec2 item) {
   Segment g;
   uint v = item.x & ~RASTER_LAST_SEGMENT;
   g.v = v;
-  g.a = screen[v];
-  g.b = screen[v + 1u];
+  g.a = screenVertex(v);
+  g.b = screenVertex(v + 1u);
   vec2 ab = g.b.xy - g.a.xy;
   g.length2 = dot(ab, ab);
   g.blocks = g.length2 < 1e-12 ? 0u : (item.y & 0xFFu) | (item.x & RASTER_LAST_SEGMENT);
   g.axis = vec4(ab, 0.0, 0.0);
   if (STAGED == 0u) return g;  // the direct walk works out the rest for the fragments it composites
   g.axis.zw = vec2(-ab.y, ab.x) * inversesqrt(max(g.length2, 1e-12));
-  g.colorA = unpackHalfRgb(colors[v]);
-  g.colorB = unpackHalfRgb(colors[v + 1u]);
+  g.colorA = vertexColor(v);
+  g.colorB = vertexColor(v + 1u);
   g.motion = MOTION != 0u ? vec4(unpackHalf2x16(motion[v]), unpackHalf2x16(motion[v + 1u])) : vec4(0.0);
   return g;
 }
@@ -129,8 +146,8 @@ bool compositeSegment(Segment g) {
     if (coverage > 0.0) {
       uvec2 band = rasterBandMask(d, w, n.x, n.y);
       if (STAGED == 0u) {
-        g.colorA = unpackHalfRgb(colors[g.v]);
-        g.colorB = unpackHalfRgb(colors[g.v + 1u]);
+        g.colorA = vertexColor(g.v);
+        g.colorB = vertexColor(g.v + 1u);
       }
       vec3 c = mix(g.colorA, g.colorB, t);
 #ifdef RASTER_HEAD_MULTISAMPLED  // one sample: nearest == farthest, nothing is hidden at some samples only
@@ -158,9 +175,9 @@ bool compositeSegment(Segment g) {
 void walkDirect(uint start, uint end, uint blockBit) {
   bool open = true;
   for (uint e = start; open;) {
-    while (e < end && (list[e].y & blockBit) == 0u) ++e;
+    while (e < end && (listEntry(e).y & blockBit) == 0u) ++e;
     if (e >= end) break;
-    open = compositeSegment(loadSegment(list[e++]));
+    open = compositeSegment(loadSegment(listEntry(e++)));
   }
 }
 
@@ -176,7 +193,7 @@ shared uint live[2];  // whether some pixel is still open, alternate batches
 void walkStaged(uint start, uint end, uint blockBit, uint lane, bool open) {
   if (lane == 0u) live[0] = 0u;
   for (uint base = start, batch = 0u; base < end; base += RASTER_FINE_SIZE, ++batch) {
-    if (base + lane < end) staged[lane] = loadSegment(list[base + lane]);
+    if (base + lane < end) staged[lane] = loadSegment(listEntry(base + lane));
     barrier();
     // Every invocation has read the previous batch's vote: the next batch's may be cleared.
     if (lane == 0u) live[(batch + 1u) & 1u] = 0u;

@@ -19,6 +19,7 @@ namespace hp::compute {
 namespace {
 // The raster's own bindings follow the shading bindings of shaders/shared/render.h in one set.
 static_assert(gpu::RASTER_BINDING_SCREEN > gpu::RENDER_BINDING_HEAD_SHADOW, "raster bindings overlap render.h's");
+static_assert(gpu::RASTER_BINDING_LIST_TEXELS > gpu::RENDER_BINDING_SCALP_TRIANGLES, "raster bindings overlap render.h's");
 static_assert(gpu::RASTER_BINDING_SHADE_ARGS < gpu::RENDER_BINDING_BOUNCE_FLUX &&
                   gpu::RASTER_BINDING_MOTION_OUTPUT < gpu::RENDER_BINDING_BOUNCE_SAMPLES,
               "raster bindings overlap render.h's");
@@ -58,8 +59,14 @@ const vk::Binding kStrandRasterBindings[] = {
     {gpu::RASTER_BINDING_PREVIOUS, vk::kStorage, vk::kCompute},
     {gpu::RASTER_BINDING_MOTION, vk::kStorage, vk::kCompute},
     {gpu::RASTER_BINDING_MOTION_OUTPUT, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, vk::kCompute},
+    // The direct fine walk's texel views (written only where it runs; the staged walk never reads them).
+    {gpu::RASTER_BINDING_LIST_TEXELS, vk::kTexels, vk::kCompute},
+    {gpu::RASTER_BINDING_SCREEN_TEXELS, vk::kTexels, vk::kCompute},
+    {gpu::RASTER_BINDING_COLOR_TEXELS, vk::kTexels, vk::kCompute},
 };
 constexpr VkBufferUsageFlags kStorageUsage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
+// The buffers the direct fine walk also reads as texel buffers.
+constexpr VkBufferUsageFlags kTexelUsage = kStorageUsage | VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT;
 constexpr VkBufferUsageFlags kArmedUsage =
     VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT;
 
@@ -116,6 +123,13 @@ const char* fineWalkName(FineWalk walk) {
   return walk == FineWalk::Auto ? "auto" : walk == FineWalk::Staged ? "staged" : "direct";
 }
 
+bool chooseStagedWalk(FineWalk walk, bool cpuDevice, bool texelsFit) {
+  if (walk == FineWalk::Direct && !texelsFit)
+    throw Error("compute raster: the direct fine walk reads the tile lists and vertices as texel buffers, which "
+                "exceed the device's maxTexelBufferElements here; use --fine-walk staged or fewer strands");
+  return walk == FineWalk::Staged || (walk == FineWalk::Auto && (!cpuDevice || !texelsFit));
+}
+
 std::optional<FineWalk> parseFineWalk(const std::string& name) {
   for (FineWalk w : {FineWalk::Auto, FineWalk::Direct, FineWalk::Staged})
     if (name == fineWalkName(w)) return w;
@@ -157,8 +171,8 @@ StrandRasterPass::StrandRasterPass(const vk::Context& ctx, std::span<const Raste
   const std::uint64_t tiles = std::uint64_t(tilesX_) * tilesY_;
   const std::size_t chunks = chunkCount(sources);
   capacity_ = rasterListCapacity(segments, tiles, limit);
-  screen_ = rasterBuffer(ctx, vertices * 16, kStorageUsage, "screen vertices", limit);
-  colors_ = rasterBuffer(ctx, vertices * 8, kStorageUsage, "vertex colours", limit);
+  screen_ = rasterBuffer(ctx, vertices * 16, kTexelUsage, "screen vertices", limit);
+  colors_ = rasterBuffer(ctx, vertices * 8, kTexelUsage, "vertex colours", limit);
   shadeFlags_ = rasterBuffer(ctx, vertices * 4, kArmedUsage, "shade flags", limit);
   shadeList_ = rasterBuffer(ctx, vertices * 4, kStorageUsage, "shade list", limit);
   shadeArgs_ = rasterBuffer(ctx, chunks * 16, kArmedUsage | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, "shade dispatch", limit);
@@ -169,7 +183,15 @@ StrandRasterPass::StrandRasterPass(const vk::Context& ctx, std::span<const Raste
   tiles_ = rasterBuffer(ctx, tiles * 8, kStorageUsage, "tiles", limit);
   tileDepth_ = rasterBuffer(ctx, tiles * 4, kStorageUsage, "tile head depth", limit);
   blocks_ = rasterBuffer(ctx, divUp(std::uint32_t(tiles), gpu::RASTER_SCAN_SIZE) * 4, kStorageUsage, "blocks", limit);
-  list_ = rasterBuffer(ctx, VkDeviceSize(capacity_) * 8, kStorageUsage, "tile lists", limit);
+  list_ = rasterBuffer(ctx, VkDeviceSize(capacity_) * 8, kTexelUsage, "tile lists", limit);
+  const bool cpu = ctx.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
+  const bool texelsFit = vk::texelBufferFits(ctx, capacity_) && vk::texelBufferFits(ctx, vertices);
+  const bool staged = chooseStagedWalk(settings.fineWalk, cpu, texelsFit);
+  if (!staged) {
+    listTexels_ = vk::BufferView(ctx, list_, VK_FORMAT_R32G32_UINT, "raster tile lists (texels)");
+    screenTexels_ = vk::BufferView(ctx, screen_, VK_FORMAT_R32G32B32A32_SFLOAT, "raster screen vertices (texels)");
+    colorTexels_ = vk::BufferView(ctx, colors_, VK_FORMAT_R32G32_UINT, "raster vertex colours (texels)");
+  }
   output_ = outputImage(ctx, extent, true, VK_FORMAT_R16G16B16A16_SFLOAT, "raster hair image");
   nearOutput_ = outputImage(ctx, extent, multisampled(), VK_FORMAT_R16G16B16A16_SFLOAT, "raster hair image (near layer)");
   nearMask_ = outputImage(ctx, extent, multisampled(), VK_FORMAT_R32_UINT, "raster near-layer sample mask");
@@ -200,8 +222,6 @@ StrandRasterPass::StrandRasterPass(const vk::Context& ctx, std::span<const Raste
                                  {gpu::RASTER_MODE_SCATTER}, cache);
   scanTiles_ = pipeline("raster_scan_tiles.comp", gpu::RASTER_SCAN_SIZE, "raster scan tiles");
   scanBlocks_ = pipeline("raster_scan_blocks.comp", gpu::RASTER_SCAN_SIZE, "raster scan blocks");
-  const bool cpu = ctx.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
-  const bool staged = settings.fineWalk == FineWalk::Staged || (settings.fineWalk == FineWalk::Auto && !cpu);
   const char* fineShader = staged ? (multisampled() ? "raster_fine_staged_ms.comp" : "raster_fine_staged.comp")
                                   : (multisampled() ? "raster_fine_ms.comp" : "raster_fine.comp");
   fine_ = vk::ComputePipeline(ctx, fineShader, gpu::RASTER_FINE_SIZE, {setLayout}, 0,
@@ -279,6 +299,11 @@ void StrandRasterPass::writeChunkSet(const vk::DescriptorSet& set, const Shading
         {gpu::RASTER_BINDING_TILE_DEPTH, &tileDepth_}, {gpu::RASTER_BINDING_SHADE_FLAGS, &shadeFlags_},
         {gpu::RASTER_BINDING_SHADE_LIST, &shadeList_}, {gpu::RASTER_BINDING_SHADE_ARGS, &shadeArgs_}})
     set.writeStorageBuffer(binding, buffer->handle());
+  if (listTexels_) {
+    set.writeTexelBuffer(gpu::RASTER_BINDING_LIST_TEXELS, listTexels_.handle());
+    set.writeTexelBuffer(gpu::RASTER_BINDING_SCREEN_TEXELS, screenTexels_.handle());
+    set.writeTexelBuffer(gpu::RASTER_BINDING_COLOR_TEXELS, colorTexels_.handle());
+  }
   set.writeStorageImage(gpu::RASTER_BINDING_OUTPUT, output_.view());
   set.writeStorageImage(gpu::RASTER_BINDING_OUTPUT_NEAR, nearOutput_.view());
   set.writeStorageImage(gpu::RASTER_BINDING_NEAR_MASK, nearMask_.view());

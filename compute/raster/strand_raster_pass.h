@@ -38,6 +38,7 @@
 
 #include "compute/strands/strand_buffers.h"
 #include "engine/vk/buffer.h"
+#include "engine/vk/buffer_view.h"
 #include "engine/vk/descriptors.h"
 #include "engine/vk/image.h"
 #include "engine/vk/pipeline.h"
@@ -50,6 +51,10 @@ namespace hp::compute {
 enum class FineWalk { Auto, Direct, Staged };
 const char* fineWalkName(FineWalk walk);                        // "auto", "direct", "staged"
 std::optional<FineWalk> parseFineWalk(const std::string& name);  // one of those names, or none
+// Whether the pass takes the staged walk: the direct one reads the lists and vertices as texel buffers, so
+// it needs them within maxTexelBufferElements (texelsFit); Auto falls back to Staged where they are not,
+// an explicit Direct throws an Error.
+bool chooseStagedWalk(FineWalk walk, bool cpuDevice, bool texelsFit);
 
 struct RasterSettings {
   std::uint32_t tileBudget = 16384;  // list entries kept per 8x8 tile, [1, 1<<24]
@@ -160,6 +165,7 @@ class StrandRasterPass {
   std::uint32_t tilesX_, tilesY_, capacity_ = 0;
   std::vector<std::uint32_t> sourceVertices_;  // render vertices of each source (bind() must match)
   vk::Buffer screen_, colors_, state_, counts_, keys_, tiles_, blocks_, list_, tileDepth_;
+  vk::BufferView listTexels_, screenTexels_, colorTexels_;  // the direct fine walk's (none for the staged)
   vk::Buffer shadeFlags_, shadeList_, shadeArgs_, motion_;
   vk::Image output_, nearOutput_, nearMask_, motionOutput_;
   vk::Sampler sampler_;

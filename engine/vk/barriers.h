@@ -14,8 +14,8 @@ enum class BufferUse {
   None,              // nothing before (first use in a submission)
   TransferSrc,
   TransferDst,
-  ComputeRead,       // storage/uniform read in a compute shader
-  ComputeWrite,      // storage write in a compute shader (read-modify-write included)
+  ComputeRead,       // storage, uniform or texel-buffer read in a compute shader
+  ComputeWrite,      // storage write in a compute shader (its reads, texel-buffer ones too, included)
   VertexRead,        // storage read in a vertex shader (vertex pulling)
   FragmentRead,      // storage/uniform read in a fragment shader
   GraphicsRead,      // vertex + fragment shader reads

@@ -12,7 +12,8 @@ namespace {
 // Every descriptor type hairpipe's passes bind.
 constexpr VkDescriptorType kTypes[] = {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER,
                                        VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC,
-                                       VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE};
+                                       VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE,
+                                       VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER};
 }  // namespace
 
 DescriptorPools::DescriptorPools(const Context& ctx) : device_(ctx.device()), fn_(&ctx.fn()), ctx_(&ctx) {}

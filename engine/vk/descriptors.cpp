@@ -64,27 +64,33 @@ void DescriptorSet::writeBuffer(std::uint32_t binding, VkDescriptorType type, Vk
                                 VkDeviceSize range) const {
   VkDescriptorBufferInfo info{buffer, offset, range};
   VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
-  write.dstSet = set_;
-  write.dstBinding = binding;
-  write.descriptorCount = 1;
-  write.descriptorType = type;
   write.pBufferInfo = &info;
-  fn_->vkUpdateDescriptorSets(device_, 1, &write, 0, nullptr);
+  update(binding, type, write);
 }
 
 void DescriptorSet::writeImage(std::uint32_t binding, VkDescriptorType type, const VkDescriptorImageInfo& info) const {
   VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+  write.pImageInfo = &info;
+  update(binding, type, write);
+}
+
+void DescriptorSet::update(std::uint32_t binding, VkDescriptorType type, VkWriteDescriptorSet write) const {
   write.dstSet = set_;
   write.dstBinding = binding;
   write.descriptorCount = 1;
   write.descriptorType = type;
-  write.pImageInfo = &info;
   fn_->vkUpdateDescriptorSets(device_, 1, &write, 0, nullptr);
 }
 
 void DescriptorSet::writeSampledImage(std::uint32_t binding, VkImageView view, VkSampler sampler,
                                       VkImageLayout layout) const {
   writeImage(binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, {sampler, view, layout});
+}
+
+void DescriptorSet::writeTexelBuffer(std::uint32_t binding, VkBufferView view) const {
+  VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+  write.pTexelBufferView = &view;
+  update(binding, VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER, write);
 }
 
 void DescriptorSet::writeStorageImage(std::uint32_t binding, VkImageView view) const {

@@ -29,6 +29,7 @@ inline constexpr VkShaderStageFlags kVertex = VK_SHADER_STAGE_VERTEX_BIT;
 inline constexpr VkShaderStageFlags kFragment = VK_SHADER_STAGE_FRAGMENT_BIT;
 inline constexpr VkDescriptorType kStorage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
 inline constexpr VkDescriptorType kSampled = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+inline constexpr VkDescriptorType kTexels = VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER;
 
 class DescriptorSet {
  public:
@@ -53,11 +54,15 @@ class DescriptorSet {
   }
   void writeSampledImage(std::uint32_t binding, VkImageView view, VkSampler sampler,
                          VkImageLayout layout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL) const;
+  // A uniform texel buffer (engine/vk/buffer_view.h).
+  void writeTexelBuffer(std::uint32_t binding, VkBufferView view) const;
   // A storage image, used in VK_IMAGE_LAYOUT_GENERAL (ImageUse::ComputeStorageWrite).
   void writeStorageImage(std::uint32_t binding, VkImageView view) const;
 
  private:
   void writeImage(std::uint32_t binding, VkDescriptorType type, const VkDescriptorImageInfo& info) const;
+  // Writes one descriptor of `type` at `binding`; `write` carries its buffer, image or texel view.
+  void update(std::uint32_t binding, VkDescriptorType type, VkWriteDescriptorSet write) const;
   void release();
   VkDevice device_ = VK_NULL_HANDLE;
   const VolkDeviceTable* fn_ = nullptr;  // the Context's device functions

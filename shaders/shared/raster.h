@@ -85,6 +85,12 @@ HP_CONST(uint, RASTER_BINDING_NEAR_MASK, 29)    // storage image r32ui: the samp
 HP_CONST(uint, RASTER_BINDING_PREVIOUS, 30)     // vec4[chunk strands * Q]: the render strands' previous positions
 HP_CONST(uint, RASTER_BINDING_MOTION, 31)       // uint[V]: packHalf2x16 of each vertex's screen motion
 HP_CONST(uint, RASTER_BINDING_MOTION_OUTPUT, 32)  // storage image rg16f: the pixel's hair motion
+// The direct fine walk (CPU devices) reads the list, the screen vertices and their colours as uniform texel
+// buffers over the same buffers (R32G32_UINT, R32G32B32A32_SFLOAT, R32G32_UINT): lavapipe fetches a texel
+// for all 8 lanes at once where it loads a storage buffer lane by lane (docs/DESIGN.md, driver notes).
+HP_CONST(uint, RASTER_BINDING_LIST_TEXELS, 37)
+HP_CONST(uint, RASTER_BINDING_SCREEN_TEXELS, 38)
+HP_CONST(uint, RASTER_BINDING_COLOR_TEXELS, 39)
 HP_CONST(uint, RASTER_MAX_HEAD_SAMPLES, 16)     // head depth samples per pixel the raster reads
 
 // The composite pass (composite.frag) samples the output images; its push constant picks the layer.

@@ -84,3 +84,20 @@ TEST_F(VulkanTest, TheStagedAndDirectFineWalksDrawTheSameFrame) {
     check("motion", &FrameCapture::motion, 0.25);
   }
 }
+
+// Auto takes the direct walk on CPU devices only, and only where its texel views fit the device; asked for
+// where they do not, the direct walk is refused by name rather than reading past a view.
+TEST(FineWalkChoice, AutoFallsBackToStagedWhereTheTexelViewsDoNotFit) {
+  using compute::FineWalk;
+  EXPECT_FALSE(compute::chooseStagedWalk(FineWalk::Auto, /*cpuDevice=*/true, /*texelsFit=*/true));
+  EXPECT_TRUE(compute::chooseStagedWalk(FineWalk::Auto, true, false));
+  EXPECT_TRUE(compute::chooseStagedWalk(FineWalk::Auto, false, true));
+  EXPECT_TRUE(compute::chooseStagedWalk(FineWalk::Staged, true, false));
+  EXPECT_FALSE(compute::chooseStagedWalk(FineWalk::Direct, false, true));
+  try {
+    compute::chooseStagedWalk(FineWalk::Direct, true, false);
+    ADD_FAILURE() << "the direct walk was taken without room for its texel views";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("maxTexelBufferElements"), std::string::npos) << e.what();
+  }
+}
