@@ -91,8 +91,9 @@ vec3 hairRadiance(vec3 world, vec3 tangent, float colorScale, float tilt, float 
   vec3 N = dot(across, across) > 1e-8 ? normalize(across) : side;  // seen end-on: any side will do
   vec3 front = marschner.skyAlbedoFront.rgb;
   vec3 farShare = dual ? mix(vec3(1.0), marschner.forwardMean.rgb, headBehind) : vec3(1.0);
-  vec3 environment =
-      front * environmentLight(N) + (marschner.skyAlbedo.rgb - front) * environmentLight(-N) * farShare;
+  vec3 viewerSide, farSide;
+  environmentLightBothSides(N, viewerSide, farSide);
+  vec3 environment = front * viewerSide + (marschner.skyAlbedo.rgb - front) * farSide * farShare;
   vec3 ambient = environment * sky + marschner.skyAlbedo.rgb * bounce;
   return (direct + ambient) * colorScale;
 }
