@@ -47,7 +47,8 @@
 namespace hp::compute {
 // How the fine pass walks a tile's list (shaders/raster_fine.glsl): every pixel on its own (Direct), or in
 // batches the tile's invocations load together into shared memory (Staged). The image is the same; the
-// speed is not: Auto takes Direct on CPU devices (lavapipe) and Staged on GPUs.
+// speed is not: Auto takes Direct on CPU devices (lavapipe) and Staged on GPUs, and Staged wherever the
+// direct walk's texel views would not fit the device (chooseStagedWalk).
 enum class FineWalk { Auto, Direct, Staged };
 const char* fineWalkName(FineWalk walk);                        // "auto", "direct", "staged"
 std::optional<FineWalk> parseFineWalk(const std::string& name);  // one of those names, or none
@@ -165,7 +166,9 @@ class StrandRasterPass {
   std::uint32_t tilesX_, tilesY_, capacity_ = 0;
   std::vector<std::uint32_t> sourceVertices_;  // render vertices of each source (bind() must match)
   vk::Buffer screen_, colors_, state_, counts_, keys_, tiles_, blocks_, list_, tileDepth_;
-  vk::BufferView listTexels_, screenTexels_, colorTexels_;  // the direct fine walk's (none for the staged)
+  // The direct fine walk's views of list_, screen_ and colors_ (none for the staged): declared after the
+  // buffers, so destroyed before them.
+  vk::BufferView listTexels_, screenTexels_, colorTexels_;
   vk::Buffer shadeFlags_, shadeList_, shadeArgs_, motion_;
   vk::Image output_, nearOutput_, nearMask_, motionOutput_;
   vk::Sampler sampler_;
