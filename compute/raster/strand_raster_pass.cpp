@@ -187,6 +187,7 @@ StrandRasterPass::StrandRasterPass(const vk::Context& ctx, std::span<const Raste
   const bool cpu = ctx.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
   const bool texelsFit = vk::texelBufferFits(ctx, capacity_) && vk::texelBufferFits(ctx, vertices);
   const bool staged = chooseStagedWalk(settings.fineWalk, cpu, texelsFit);
+  walk_ = staged ? FineWalk::Staged : FineWalk::Direct;
   if (!staged) {
     listTexels_ = vk::BufferView(ctx, list_, VK_FORMAT_R32G32_UINT, "raster tile lists (texels)");
     screenTexels_ = vk::BufferView(ctx, screen_, VK_FORMAT_R32G32B32A32_SFLOAT, "raster screen vertices (texels)");
@@ -475,6 +476,7 @@ RasterStats StrandRasterPass::readStats() const {
   s.droppedByTileBudget = state[0].entries.y;
   s.droppedByCapacity = state[0].entries.z;
   s.kept = state[0].entries.w;
+  s.walk = walk_;
   return s;
 }
 }  // namespace hp::compute

@@ -69,6 +69,7 @@ struct RasterStats {
   std::uint64_t droppedByTileBudget = 0;
   std::uint64_t droppedByCapacity = 0;
   std::uint64_t kept = 0;
+  FineWalk walk = FineWalk::Auto;  // the walk the fine pass runs: Direct or Staged (Auto resolved)
   std::uint64_t overflow() const { return droppedByTileBudget + droppedByCapacity; }
 };
 
@@ -164,6 +165,7 @@ class StrandRasterPass {
   std::uint32_t headSamples_;
   std::uint32_t frameSlots_;
   std::uint32_t tilesX_, tilesY_, capacity_ = 0;
+  FineWalk walk_ = FineWalk::Direct;  // Auto resolved
   std::vector<std::uint32_t> sourceVertices_;  // render vertices of each source (bind() must match)
   vk::Buffer screen_, colors_, state_, counts_, keys_, tiles_, blocks_, list_, tileDepth_;
   // The direct fine walk's views of list_, screen_ and colors_ (none for the staged): declared after the

@@ -142,6 +142,7 @@ FrameResult benchFrame(const vk::Context& ctx, const FrameCase& c) {
     const compute::RasterStats stats = hair.rasterStats();
     r.rasterEntries = stats.kept;
     r.rasterOverflow = stats.overflow();
+    r.fineWalkRun = stats.walk;
   }
   r.opacityRaster = hair.shadows().raster();
   if (const compute::OpacityResolvePass* resolve = hair.shadows().resolvePass())

@@ -50,6 +50,7 @@ struct FrameResult {
   FrameCase c;
   std::map<std::string, PassTiming> passes;  // "frame" is the whole frame; "copy" the reference
   std::uint64_t rasterEntries = 0, rasterOverflow = 0;
+  compute::FineWalk fineWalkRun = compute::FineWalk::Auto;  // compute path: the fine walk taken (Auto resolved)
   render::OpacityRaster opacityRaster = render::OpacityRaster::Graphics;  // the path taken (Auto resolved)
   double opacityBufferBytes = 0;  // compute path: the bins in their form in effect, and deep maps' first hair
   double copyBytes = 0;

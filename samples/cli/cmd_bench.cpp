@@ -189,7 +189,8 @@ nlohmann::json toJson(const hp::cli::FrameResult& r) {
   }
   return {{"strands", r.c.strands},      {"width", r.c.width},          {"lod_fraction", r.c.lodFraction},
           {"shadowed_lights", r.c.lights},            {"bounce_samples", r.c.bounceSamples},
-          {"fine_walk", hp::compute::fineWalkName(r.c.fineWalk)}, {"groom", r.c.groom ? "scene" : "none"},
+          {"fine_walk", hp::compute::fineWalkName(r.c.fineWalk)},
+          {"fine_walk_run", hp::compute::fineWalkName(r.fineWalkRun)}, {"groom", r.c.groom ? "scene" : "none"},
           {"shadow_strands", r.c.shadowStrands},
           {"roughness_variation", r.c.material.roughnessVariation},
           {"height", r.c.height},        {"raster", hp::cli::frameCaseName(r.c)},

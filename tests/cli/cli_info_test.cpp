@@ -189,16 +189,20 @@ TEST(CliBench, FineWalkListIsCheckedThenBenched) {
   EXPECT_NE(bad.err.find("bench: --fine-walk takes auto, direct and/or staged, got 'sideways'"), std::string::npos)
       << bad.err;
   EXPECT_EQ(bad.out.find("median of"), std::string::npos) << "a frame ran: " << bad.out;
-  const nlohmann::json report = tinyComputeBench({"--fine-walk", "direct,staged"}, "bench_fine_walks.json");
+  const nlohmann::json report =
+      tinyComputeBench({"--fine-walk", "direct,staged,auto"}, "bench_fine_walks.json");
   ASSERT_FALSE(report.is_null());
-  std::vector<std::string> names, walks;
+  std::vector<std::string> names, walks, run;
   for (const auto& row : report["results"]) {
     names.push_back(row["raster"].get<std::string>());
     walks.push_back(row["fine_walk"].get<std::string>());
+    run.push_back(row["fine_walk_run"].get<std::string>());
     EXPECT_TRUE(row["passes"].contains("raster fine")) << row.dump();
   }
-  EXPECT_EQ(names, (std::vector<std::string>{"compute, direct fine walk", "compute, staged fine walk"}));
-  EXPECT_EQ(walks, (std::vector<std::string>{"direct", "staged"}));
+  EXPECT_EQ(names, (std::vector<std::string>{"compute, direct fine walk", "compute, staged fine walk", "compute"}));
+  EXPECT_EQ(walks, (std::vector<std::string>{"direct", "staged", "auto"}));
+  // The walk that ran: the one asked for, and Auto resolved (lavapipe, a CPU device whose texel views fit: direct).
+  EXPECT_EQ(run, (std::vector<std::string>{"direct", "staged", "direct"}));
 }
 
 // `bench --groom` takes scene and/or none (refused by name before a frame runs); each is a case of its own.
