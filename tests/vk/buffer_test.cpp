@@ -3,6 +3,8 @@
 #include <random>
 
 #include "engine/core/error.h"
+#include "engine/vk/buffer_view.h"
+#include "engine/vk/context.h"
 #include "engine/vk/transfer.h"
 #include "tests/support/vk_fixture.h"
 
@@ -35,4 +37,25 @@ TEST_F(VulkanTest, OverrunningTransfersAreRefused) {
   EXPECT_THROW(readbackBytes(*ctx, buffer, BufferUse::None, 16, ~VkDeviceSize(0) - 8), hp::Error);  // would wrap
   EXPECT_THROW(uploadBytes(*ctx, buffer, tooMuch.data(), 8, BufferUse::TransferSrc, ~VkDeviceSize(0) - 4), hp::Error);
   EXPECT_THROW(Buffer(*ctx, 0, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryKind::DeviceLocal, "empty"), hp::Error);
+}
+
+// A texel buffer view covers its buffer's whole texels; formats hairpipe does not read through texel buffers
+// and counts past the device's maxTexelBufferElements are refused by name.
+TEST_F(VulkanTest, TexelBufferViewsTakeTheirFormatsAndRefuseTheRest) {
+  Buffer buffer(*ctx, 72, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_UNIFORM_TEXEL_BUFFER_BIT,
+                MemoryKind::DeviceLocal, "texels");
+  const BufferView pairs(*ctx, buffer, VK_FORMAT_R32G32_UINT, "texels as pairs");  // 9 texels
+  const BufferView quads(*ctx, buffer, VK_FORMAT_R32G32B32A32_SFLOAT, "texels as quads");  // 4, the rest left out
+  EXPECT_TRUE(pairs && quads);
+  EXPECT_EQ(texelBufferTexelBytes(VK_FORMAT_R32G32_UINT), 8u);
+  EXPECT_EQ(texelBufferTexelBytes(VK_FORMAT_R32G32B32A32_SFLOAT), 16u);
+  try {
+    BufferView(*ctx, buffer, VK_FORMAT_R8_UNORM, "bytes");
+    ADD_FAILURE() << "a format hairpipe does not read was taken";
+  } catch (const hp::Error& e) {
+    EXPECT_NE(std::string(e.what()).find("not one hairpipe reads"), std::string::npos) << e.what();
+  }
+  const std::uint64_t limit = ctx->properties().limits.maxTexelBufferElements;
+  EXPECT_TRUE(texelBufferFits(*ctx, limit));
+  EXPECT_FALSE(texelBufferFits(*ctx, limit + 1));
 }
