@@ -184,15 +184,7 @@ StrandRasterPass::StrandRasterPass(const vk::Context& ctx, std::span<const Raste
   tileDepth_ = rasterBuffer(ctx, tiles * 4, kStorageUsage, "tile head depth", limit);
   blocks_ = rasterBuffer(ctx, divUp(std::uint32_t(tiles), gpu::RASTER_SCAN_SIZE) * 4, kStorageUsage, "blocks", limit);
   list_ = rasterBuffer(ctx, VkDeviceSize(capacity_) * 8, kTexelUsage, "tile lists", limit);
-  const bool cpu = ctx.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
-  const bool texelsFit = vk::texelBufferFits(ctx, capacity_) && vk::texelBufferFits(ctx, vertices);
-  const bool staged = chooseStagedWalk(settings.fineWalk, cpu, texelsFit);
-  walk_ = staged ? FineWalk::Staged : FineWalk::Direct;
-  if (!staged) {
-    listTexels_ = vk::BufferView(ctx, list_, VK_FORMAT_R32G32_UINT, "raster tile lists (texels)");
-    screenTexels_ = vk::BufferView(ctx, screen_, VK_FORMAT_R32G32B32A32_SFLOAT, "raster screen vertices (texels)");
-    colorTexels_ = vk::BufferView(ctx, colors_, VK_FORMAT_R32G32_UINT, "raster vertex colours (texels)");
-  }
+  setUpFineWalk(settings.fineWalk, vertices);  // before bind(): the chunk sets take the walk's views
   output_ = outputImage(ctx, extent, true, VK_FORMAT_R16G16B16A16_SFLOAT, "raster hair image");
   nearOutput_ = outputImage(ctx, extent, multisampled(), VK_FORMAT_R16G16B16A16_SFLOAT, "raster hair image (near layer)");
   nearMask_ = outputImage(ctx, extent, multisampled(), VK_FORMAT_R32_UINT, "raster near-layer sample mask");
@@ -223,10 +215,21 @@ StrandRasterPass::StrandRasterPass(const vk::Context& ctx, std::span<const Raste
                                  {gpu::RASTER_MODE_SCATTER}, cache);
   scanTiles_ = pipeline("raster_scan_tiles.comp", gpu::RASTER_SCAN_SIZE, "raster scan tiles");
   scanBlocks_ = pipeline("raster_scan_blocks.comp", gpu::RASTER_SCAN_SIZE, "raster scan blocks");
+  const bool staged = walk_ == FineWalk::Staged;
   const char* fineShader = staged ? (multisampled() ? "raster_fine_staged_ms.comp" : "raster_fine_staged.comp")
                                   : (multisampled() ? "raster_fine_ms.comp" : "raster_fine.comp");
   fine_ = vk::ComputePipeline(ctx, fineShader, gpu::RASTER_FINE_SIZE, {setLayout}, 0,
                               staged ? "raster fine (staged)" : "raster fine", motion, cache);
+}
+
+void StrandRasterPass::setUpFineWalk(FineWalk requested, std::uint64_t vertices) {
+  const bool cpu = ctx_.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
+  const bool texelsFit = vk::texelBufferFits(ctx_, capacity_) && vk::texelBufferFits(ctx_, vertices);
+  walk_ = chooseStagedWalk(requested, cpu, texelsFit) ? FineWalk::Staged : FineWalk::Direct;
+  if (walk_ == FineWalk::Staged) return;
+  listTexels_ = vk::BufferView(ctx_, list_, VK_FORMAT_R32G32_UINT, "raster tile lists (texels)");
+  screenTexels_ = vk::BufferView(ctx_, screen_, VK_FORMAT_R32G32B32A32_SFLOAT, "raster screen vertices (texels)");
+  colorTexels_ = vk::BufferView(ctx_, colors_, VK_FORMAT_R32G32_UINT, "raster vertex colours (texels)");
 }
 
 void StrandRasterPass::bind(std::span<const RasterSource> sources) {

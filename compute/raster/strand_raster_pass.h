@@ -147,6 +147,9 @@ class StrandRasterPass {
   };
   std::array<const vk::Image*, 4> outputs() const { return {&output_, &nearOutput_, &nearMask_, &motionOutput_}; }
   void recordArm(VkCommandBuffer cmd) const;
+  // Resolves the fine walk (chooseStagedWalk) into walk_ and, for the direct one, makes its texel views of
+  // the list, screen and colour buffers (`vertices`: the screen and colour buffers' length).
+  void setUpFineWalk(FineWalk requested, std::uint64_t vertices);
   void writeChunkSet(const vk::DescriptorSet& set, const ShadingWriter& shading, const StrandChunk& c,
                      const vk::Buffer& params) const;
   // One dispatch per chunk of strands * (verticesPerStrand - perStrandLess) invocations, strands those of
