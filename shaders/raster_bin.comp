@@ -28,10 +28,11 @@ layout(std430, binding = RASTER_BINDING_SHADE_ARGS) buffer ShadeArgs { uvec4 sha
 shared uint groupListed;
 shared uint groupBase;
 
-// Bins segment i of the chunk (its key counts, and in scatter mode its list entries); returns whether
-// some tile lists it.
-bool binSegment(uint i, uint v, uint k, uint segments) {
-  Footprint f = segmentFootprint(v);
+// Bins the segment from vertex v (its key counts, and in scatter mode its list entries, flagged with
+// `colorMid`: which end's colour is a mean, shared/raster.h); returns whether some tile lists it, and its
+// footprint in f.
+bool binSegment(uint v, uint k, uint segments, uint colorMid, out Footprint f) {
+  f = segmentFootprint(v);
   if (!f.visible) return false;
   uint id = v | (k + 1u == segments ? RASTER_LAST_SEGMENT : 0u);
   bool listed = false;
@@ -45,9 +46,33 @@ bool binSegment(uint i, uint v, uint k, uint segments) {
       uint slot = atomicAdd(counts[key], 1u);
       if (MODE != RASTER_MODE_SCATTER || slot >= keys[key].y) continue;
       uint index = tileListStart(tile) + keys[key].x + slot;
-      if (index < params.capacity) list[index] = uvec2(id, footprintBlocks(f, uvec2(tx, ty), span));
+      if (index < params.capacity) list[index] = uvec2(id, footprintBlocks(f, uvec2(tx, ty), span) | colorMid);
     }
   return listed;
+}
+
+// Count mode: whether segment k of a strand (first vertex v, `segments` per strand) is one of a pair (2j, 2j + 1)
+// whose middle vertex takes the mean of its neighbours' radiance (shared/raster.h RASTER_COLOR_A_MID): its
+// neighbours lie within the shading spacing on screen. Both segments of the pair compare the same two screen
+// records: one is an end of the segment's footprint f, the other the pair's vertex beyond it. A strand's last
+// segment with an even k has no partner; an end behind the camera keeps every vertex.
+bool pairInterpolated(Footprint f, uint v, uint k, uint segments) {
+  if (params.shadingSpacing <= 0.0 || (k & ~1u) + 2u > segments) return false;
+  bool odd = (k & 1u) != 0u;
+  vec4 beyond = screen[odd ? v - 1u : v + 2u];
+  vec4 a = odd ? beyond : f.a, b = odd ? f.b : beyond;
+  if (a.w < 0.0 || b.w < 0.0) return false;
+  vec2 d = b.xy - a.xy;
+  return dot(d, d) <= params.shadingSpacing * params.shadingSpacing;
+}
+
+// Scatter mode: the end of segment k whose colour is its pair's mean, as a list entry flag (or 0). Not decided
+// again but read back: the count step left the pair's middle vertex unclaimed exactly where it chose the mean
+// (only the pair's two segments can claim it, and one that is listed claims it otherwise), so the fine pass
+// never reads a vertex that was not shaded.
+uint colorMidFlag(uint v, uint k, uint segments) {
+  if ((k & ~1u) + 2u > segments || shadeFlags[v - (k & 1u) + 1u] != 0u) return 0u;
+  return (k & 1u) != 0u ? RASTER_COLOR_A_MID : RASTER_COLOR_B_MID;
 }
 
 // Whether this invocation is the one that lists vertex v for shading (the segments on either side of it
@@ -61,15 +86,20 @@ void main() {
   uint k = i % segments;
   uint v = params.firstVertex + (i / segments) * params.verticesPerStrand + k;
   if (MODE != RASTER_MODE_COUNT) {  // a specialization constant: uniform, no barrier below is skipped unevenly
-    if (inRange) binSegment(i, v, k, segments);
+    Footprint f;
+    if (inRange) binSegment(v, k, segments, colorMidFlag(v, k, segments), f);
     return;
   }
   if (gl_LocalInvocationIndex == 0u) groupListed = 0u;
   barrier();
-  // Count mode: both ends of a segment in some tile's list get shaded; the others never composite.
-  bool listed = inRange && binSegment(i, v, k, segments);
-  bool first = listed && claimForShading(v);
-  bool second = listed && claimForShading(v + 1u);
+  // Count mode: both ends of a segment in some tile's list get shaded, or where one end is a mean, the two
+  // vertices it is the mean of (the pair's ends); the others never composite.
+  Footprint f;
+  bool listed = inRange && binSegment(v, k, segments, 0u, f);
+  bool mean = listed && pairInterpolated(f, v, k, segments);
+  uint lo = mean ? v - (k & 1u) : v, hi = mean ? lo + 2u : v + 1u;
+  bool first = listed && claimForShading(lo);
+  bool second = listed && claimForShading(hi);
   uint mine = uint(first) + uint(second);
   uint local = mine > 0u ? atomicAdd(groupListed, mine) : 0u;
   barrier();
@@ -77,6 +107,6 @@ void main() {
     groupBase = atomicAdd(shadeArgs[params.chunkIndex].w, groupListed);
   barrier();
   uint slot = params.firstVertex + groupBase + local;
-  if (first) shadeList[slot++] = v;
-  if (second) shadeList[slot] = v + 1u;
+  if (first) shadeList[slot++] = lo;
+  if (second) shadeList[slot] = hi;
 }

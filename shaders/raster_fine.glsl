@@ -100,14 +100,26 @@ struct Segment {
   uint blocks;    // the tile's blocks it may cover (bits 0-7), RASTER_LAST_SEGMENT for the strand's tip segment;
                   // 0 for a degenerate segment (skipped)
   uint v;         // the global index of its first vertex
+  uint colorMid;  // RASTER_COLOR_A_MID or _B_MID: which end's colour is its neighbours' mean (or 0)
   vec3 colorA, colorB;  // staged walk only: the direct one reads them for the fragments it composites
   vec4 motion;    // xy = screen motion at a, zw = at b (MOTION; staged walk only)
 };
+
+// The colours of the segment's ends: the two shaded vertices' radiance, or where an end is the middle of a
+// pair (shared/raster.h RASTER_COLOR_A_MID), their neighbours' and its mean. Two fetches either way.
+void loadColors(inout Segment g) {
+  bool aMid = (g.colorMid & RASTER_COLOR_A_MID) != 0u, bMid = (g.colorMid & RASTER_COLOR_B_MID) != 0u;
+  vec3 lo = vertexColor(aMid ? g.v - 1u : g.v), hi = vertexColor(bMid ? g.v + 2u : g.v + 1u);
+  vec3 mean = 0.5 * (lo + hi);
+  g.colorA = aMid ? mean : lo;
+  g.colorB = bMid ? mean : hi;
+}
 
 Segment loadSegment(uvec2 item) {
   Segment g;
   uint v = item.x & ~RASTER_LAST_SEGMENT;
   g.v = v;
+  g.colorMid = item.y & (RASTER_COLOR_A_MID | RASTER_COLOR_B_MID);
   g.a = screenVertex(v);
   g.b = screenVertex(v + 1u);
   vec2 ab = g.b.xy - g.a.xy;
@@ -116,8 +128,7 @@ Segment loadSegment(uvec2 item) {
   g.axis = vec4(ab, 0.0, 0.0);
   if (STAGED == 0u) return g;  // the direct walk works out the rest for the fragments it composites
   g.axis.zw = vec2(-ab.y, ab.x) * inversesqrt(max(g.length2, 1e-12));
-  g.colorA = vertexColor(v);
-  g.colorB = vertexColor(v + 1u);
+  loadColors(g);
   g.motion = MOTION != 0u ? vec4(unpackHalf2x16(motion[v]), unpackHalf2x16(motion[v + 1u])) : vec4(0.0);
   return g;
 }
@@ -145,10 +156,7 @@ bool compositeSegment(Segment g) {
     float coverage = abs(d) > 0.5 * w + 0.75 || z >= farthest ? 0.0 : rasterBandCoverage(d, w, n.x, n.y);
     if (coverage > 0.0) {
       uvec2 band = rasterBandMask(d, w, n.x, n.y);
-      if (STAGED == 0u) {
-        g.colorA = vertexColor(g.v);
-        g.colorB = vertexColor(g.v + 1u);
-      }
+      if (STAGED == 0u) loadColors(g);
       vec3 c = mix(g.colorA, g.colorB, t);
 #ifdef RASTER_HEAD_MULTISAMPLED  // one sample: nearest == farthest, nothing is hidden at some samples only
       if (z >= nearest) {  // hidden at some head samples: those keep only the hair in front of all of them

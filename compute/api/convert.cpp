@@ -60,6 +60,7 @@ hp::RendererSettings renderer(const RendererSettings& s) {
   r.motionVectors = s.motionVectors;
   r.raster = raster(s.raster);
   r.rasterSettings.tileBudget = s.tileBudget;
+  r.rasterSettings.shadingSpacing = s.shadingSpacing;
   r.pipelineCache = s.pipelineCache;
   return r;
 }

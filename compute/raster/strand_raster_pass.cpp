@@ -97,12 +97,13 @@ vk::Image outputImage(const vk::Context& ctx, VkExtent2D extent, bool used, VkFo
                          VK_SAMPLE_COUNT_1_BIT, name});
 }
 
-gpu::RasterParams baseParams(std::uint32_t tilesX, std::uint32_t tilesY, std::uint32_t budget,
+gpu::RasterParams baseParams(std::uint32_t tilesX, std::uint32_t tilesY, const RasterSettings& settings,
                              std::uint32_t capacity, VkExtent2D extent) {
   gpu::RasterParams p{};
   p.tilesX = tilesX;
   p.tilesY = tilesY;
-  p.tileBudget = budget;
+  p.tileBudget = settings.tileBudget;
+  p.shadingSpacing = settings.shadingSpacing;
   p.capacity = capacity;
   p.width = extent.width;
   p.height = extent.height;
@@ -139,6 +140,9 @@ std::optional<FineWalk> parseFineWalk(const std::string& name) {
 void RasterSettings::validate() const {
   if (tileBudget == 0 || tileBudget > (1u << 24))
     throw Error("tileBudget must be in [1, 16777216], got " + std::to_string(tileBudget));
+  if (!(shadingSpacing >= 0.0f && shadingSpacing <= kMaxShadingSpacing))
+    throw Error("shadingSpacing must be in [0, " + std::to_string(int(kMaxShadingSpacing)) + "] pixels, got " +
+                std::to_string(shadingSpacing));
 }
 
 std::uint32_t rasterListCapacity(std::uint64_t segments, std::uint64_t tiles, std::uint64_t maxRangeBytes) {
@@ -245,7 +249,7 @@ void StrandRasterPass::bind(std::span<const RasterSource> sources) {
       throw Error("compute raster: bind() needs strand buffers of the size the pass was built for");
     for (const StrandChunk& c : strands.chunks()) {
       const std::string name = "raster [source " + std::to_string(s) + " chunk " + std::to_string(chunks.size()) + "]";
-      gpu::RasterParams params = baseParams(tilesX_, tilesY_, settings_.tileBudget, capacity_, extent_);
+      gpu::RasterParams params = baseParams(tilesX_, tilesY_, settings_, capacity_, extent_);
       params.firstStrand = c.range.firstStrand;
       params.strandCount = c.range.strandCount;
       params.firstVertex = firstVertex;
@@ -479,6 +483,8 @@ RasterStats StrandRasterPass::readStats() const {
   s.droppedByTileBudget = state[0].entries.y;
   s.droppedByCapacity = state[0].entries.z;
   s.kept = state[0].entries.w;
+  for (const glm::uvec4& chunk : vk::readback<glm::uvec4>(ctx_, shadeArgs_, vk::BufferUse::IndirectRead, chunks_.size()))
+    s.shaded += chunk.w;
   s.walk = walk_;
   return s;
 }

@@ -57,8 +57,14 @@ std::optional<FineWalk> parseFineWalk(const std::string& name);  // one of those
 // an explicit Direct throws an Error.
 bool chooseStagedWalk(FineWalk walk, bool cpuDevice, bool texelsFit);
 
+// Shading spacing: where a strand's vertices 2j and 2j + 2 lie within this many pixels of each other on screen,
+// vertex 2j + 1 is not shaded and takes their mean radiance (shared/raster.h RASTER_COLOR_A_MID; docs/DESIGN.md
+// "Shading spacing"); 0 shades every vertex a tile lists.
+inline constexpr float kMaxShadingSpacing = 4096.0f;
+
 struct RasterSettings {
   std::uint32_t tileBudget = 16384;  // list entries kept per 8x8 tile, [1, 1<<24]
+  float shadingSpacing = 24.0f;      // pixels, [0, kMaxShadingSpacing]; the public default
   bool motion = false;               // write motion vectors (motionOutput)
   FineWalk fineWalk = FineWalk::Auto;
   void validate() const;
@@ -69,6 +75,7 @@ struct RasterStats {
   std::uint64_t droppedByTileBudget = 0;
   std::uint64_t droppedByCapacity = 0;
   std::uint64_t kept = 0;
+  std::uint64_t shaded = 0;              // vertices the shade pass shaded
   FineWalk walk = FineWalk::Auto;  // the walk the fine pass runs: Direct or Staged (Auto resolved)
   std::uint64_t overflow() const { return droppedByTileBudget + droppedByCapacity; }
 };

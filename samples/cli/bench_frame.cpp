@@ -85,6 +85,7 @@ FrameResult benchFrame(const vk::Context& ctx, const FrameCase& c) {
   settings.look.skinBounce = c.skinBounce;
   settings.strands.bounceSamples = c.bounceSamples;
   settings.rasterSettings.fineWalk = c.fineWalk;
+  settings.rasterSettings.shadingSpacing = c.shadingSpacing;
   settings.look.scattering = c.scattering;
   settings.lutMode = c.lutMode;
   settings.material = c.material;
@@ -143,6 +144,7 @@ FrameResult benchFrame(const vk::Context& ctx, const FrameCase& c) {
     r.rasterEntries = stats.kept;
     r.rasterOverflow = stats.overflow();
     r.fineWalkRun = stats.walk;
+    r.shadedVertices = stats.shaded;
   }
   r.opacityRaster = hair.shadows().raster();
   if (const compute::OpacityResolvePass* resolve = hair.shadows().resolvePass())

@@ -38,6 +38,7 @@ struct FrameCase {
   compute::FineWalk fineWalk = compute::FineWalk::Auto;  // compute only: RasterSettings::fineWalk
   bool groom = true;  // the scene's groom at interpolation (recommendedGroom), or none (the plain blend)
   std::uint32_t shadowStrands = render::OpacitySettings{}.shadowStrands;  // OpacitySettings::shadowStrands
+  float shadingSpacing = compute::RasterSettings{}.shadingSpacing;  // compute only: RasterSettings::shadingSpacing
   HairMaterial material;  // the fibres (the scenes' by default; bench's material options)
 };
 
@@ -50,6 +51,7 @@ struct FrameResult {
   FrameCase c;
   std::map<std::string, PassTiming> passes;  // "frame" is the whole frame; "copy" the reference
   std::uint64_t rasterEntries = 0, rasterOverflow = 0;
+  std::uint64_t shadedVertices = 0;  // compute path: the vertices the shade pass shaded in the last frame
   compute::FineWalk fineWalkRun = compute::FineWalk::Auto;  // compute path: the fine walk taken (Auto resolved)
   render::OpacityRaster opacityRaster = render::OpacityRaster::Graphics;  // the path taken (Auto resolved)
   double opacityBufferBytes = 0;  // compute path: the bins in their form in effect, and deep maps' first hair

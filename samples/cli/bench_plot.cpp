@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <map>
 #include <set>
+#include <sstream>
 
 namespace hp::cli {
 namespace {
@@ -34,7 +35,9 @@ std::string frameCaseName(const FrameCase& c) {
     const std::string head = c.msaa == 4 ? "" : " head msaa" + std::to_string(c.msaa);
     const std::string walk =
         c.fineWalk == compute::FineWalk::Auto ? "" : std::string(", ") + compute::fineWalkName(c.fineWalk) + " fine walk";
-    return (c.skinBounce ? "compute" : "compute, no skin bounce") + head + shading + walk;
+    std::ostringstream spacing;
+    if (c.shadingSpacing != compute::RasterSettings{}.shadingSpacing) spacing << ", shading spacing " << c.shadingSpacing;
+    return (c.skinBounce ? "compute" : "compute, no skin bounce") + head + shading + walk + spacing.str();
   }
   return "graphics msaa" + std::to_string(c.msaa) + shading;
 }

@@ -43,6 +43,7 @@ struct BenchOptions {
   std::vector<std::string> fineWalks{"auto"};
   std::vector<std::string> grooms{"scene"};
   std::vector<std::uint32_t> shadowStrands{hp::render::OpacitySettings{}.shadowStrands};
+  std::vector<float> shadingSpacings{hp::compute::RasterSettings{}.shadingSpacing};
   hp::HairMaterial material;  // every case's (the material options)
   std::string json, plot, device;
 };
@@ -148,6 +149,10 @@ std::vector<hp::cli::FrameCase> cases(const BenchOptions& o) {
                           graphicsBounces{base.skinBounce};
   const std::vector<bool> grooms = twoWordList("--groom", o.grooms, "scene", "none", "scene");
   const std::vector<hp::compute::FineWalk> computeWalks = fineWalks(o), graphicsWalks{base.fineWalk};
+  const std::vector<float> graphicsSpacings{base.shadingSpacing};
+  for (float f : o.shadingSpacings)
+    if (!(f >= 0.0f && f <= hp::compute::kMaxShadingSpacing))
+      throw hp::Error("bench: --shading-spacing values must be in [0, 4096] pixels, got " + std::to_string(f));
   std::vector<hp::cli::FrameCase> out;
   for (std::uint32_t s : o.strands) {
     if (s == 0 || s > 4'000'000) throw hp::Error("bench: --strands values must be in [1, 4000000]");
@@ -161,11 +166,13 @@ std::vector<hp::cli::FrameCase> cases(const BenchOptions& o) {
         c.lutMode = lut;
         c.scattering = scattering;
         for (const bool bounce : mode == hp::RasterMode::Compute ? computeBounces : graphicsBounces)
-          for (const hp::compute::FineWalk walk : mode == hp::RasterMode::Compute ? computeWalks : graphicsWalks) {
-            c.skinBounce = bounce;
-            c.fineWalk = walk;
-            addSampleCounts(c, o, grooms, out);  // head (and graphics hair) samples, LOD, lights, bounce, groom
-          }
+          for (const hp::compute::FineWalk walk : mode == hp::RasterMode::Compute ? computeWalks : graphicsWalks)
+            for (const float spacing : mode == hp::RasterMode::Compute ? o.shadingSpacings : graphicsSpacings) {
+              c.skinBounce = bounce;
+              c.fineWalk = walk;
+              c.shadingSpacing = spacing;
+              addSampleCounts(c, o, grooms, out);  // head (and graphics hair) samples, LOD, lights, bounce, groom
+            }
       }
     }
   }
@@ -191,7 +198,8 @@ nlohmann::json toJson(const hp::cli::FrameResult& r) {
           {"shadowed_lights", r.c.lights},            {"bounce_samples", r.c.bounceSamples},
           {"fine_walk", hp::compute::fineWalkName(r.c.fineWalk)},
           {"fine_walk_run", hp::compute::fineWalkName(r.fineWalkRun)}, {"groom", r.c.groom ? "scene" : "none"},
-          {"shadow_strands", r.c.shadowStrands},
+          {"shadow_strands", r.c.shadowStrands},       {"shading_spacing", r.c.shadingSpacing},
+          {"shaded_vertices", r.shadedVertices},
           {"roughness_variation", r.c.material.roughnessVariation},
           {"height", r.c.height},        {"raster", hp::cli::frameCaseName(r.c)},
           {"lut_mode", hp::lutModeName(r.c.lutMode)},
@@ -303,6 +311,10 @@ void setup(CLI::App& app) {
   cmd->add_option("--groom", o->grooms,
                   "The groom at interpolation: scene (the default head's clumps, wave and frizz) and/or none (comma "
                   "separated)")
+      ->delimiter(',')->capture_default_str();
+  cmd->add_option("--shading-spacing", o->shadingSpacings,
+                  "Compute raster: pixels within which a strand's every other vertex takes its neighbours' mean "
+                  "instead of being shaded; 0 shades every vertex (comma separated)")
       ->delimiter(',')->capture_default_str();
   cmd->add_option("--shadow-strands", o->shadowStrands,
                   "Render strands drawn into the opacity maps at most, an even sample widened to keep the hair's "

@@ -22,6 +22,7 @@ void applyRaster(const FrameOptions& o, hp::RenderRequest& r) {
     r.scene.render.raster = hp::RasterMode::Graphics;
   }
   if (o.tileBudget) r.rasterSettings.tileBudget = *o.tileBudget;
+  if (o.shadingSpacing) r.rasterSettings.shadingSpacing = *o.shadingSpacing;
   r.rasterSettings.validate();
 }
 
@@ -259,6 +260,10 @@ void addFrameOptions(CLI::App& cmd, FrameOptions& o) {
                  "Hair drawing: compute (tile rasterizer, analytic coverage), graphics (MSAA ribbons) or auto "
                  "(default: scene, auto = compute)");
   cmd.add_option("--tile-budget", o.tileBudget, "Compute raster: list entries kept per 8x8 tile (default 16384)");
+  cmd.add_option("--shading-spacing", o.shadingSpacing,
+                 "Compute raster: pixels within which a strand's every other vertex takes its neighbours' mean instead "
+                 "of being shaded, 0-4096; 0 shades every vertex (default " +
+                     std::to_string(int(hp::compute::RasterSettings{}.shadingSpacing)) + ")");
   auto* density = cmd.add_option("--density", o.density,
                                  "Render strands in total, interpolated between the guides (default: the scene's; "
                                  "without one, a model of at least 20000 strands draws its own, else 20000)");

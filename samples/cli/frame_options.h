@@ -53,6 +53,7 @@ struct FrameOptions {
   std::optional<float> strandOpacity, shadowK, shadowBias;
   std::optional<std::string> raster, opacityRaster;
   std::optional<std::uint32_t> tileBudget;
+  std::optional<float> shadingSpacing;
 };
 
 void addFrameOptions(CLI::App& cmd, FrameOptions& o);

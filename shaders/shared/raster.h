@@ -19,7 +19,9 @@
 //   list       uvec2[capacity] per tile, depth bins near to far: x = the global index of the segment's first
 //                              vertex (strand * Q + k), | RASTER_LAST_SEGMENT for the strand's last segment
 //                              (no integer division in the fine loop: CPU SIMD has none); y = the blocks of
-//                              the tile it may cover (bit b: block b, RASTER_BLOCK_*), which the fine loop skips by
+//                              the tile it may cover (bits 0-7, bit b: block b, RASTER_BLOCK_*), which the
+//                              fine loop skips by, | RASTER_COLOR_A_MID or RASTER_COLOR_B_MID where an end's
+//                              colour is the mean of its neighbours' (RasterParams::shadingSpacing)
 // Key of tile t and bin b: t * RASTER_DEPTH_BINS + b. Tile t covers pixels [tx*8, tx*8+8) x [ty*8, ty*8+8).
 #ifndef HP_SHARED_RASTER_H
 #define HP_SHARED_RASTER_H
@@ -56,6 +58,13 @@ HP_CONST(uint, RASTER_SCAN_SIZE, 256)           // tiles per scan block; the blo
 HP_CONST(float, RASTER_OPAQUE_T, 1.0f / 255.0f) // a pixel stops compositing below this transmittance
 HP_CONST(uint, RASTER_MASK_SIDE, 8)             // samples per side of a pixel's overlap mask (8 x 8: 2 words)
 HP_CONST(uint, RASTER_LAST_SEGMENT, 0x80000000u) // list entry flag: the segment ends at the strand's tip
+// Shading at half the rate along a strand (RasterParams::shadingSpacing; docs/DESIGN.md "Shading spacing"):
+// segments 2j and 2j + 1 of a strand share vertex 2j + 1; where vertices 2j and 2j + 2 lie within the spacing
+// of each other on screen, only they are shaded and vertex 2j + 1 takes their mean radiance. The list entry
+// (y) says which end of a segment is such a mean: its first (odd k: of vertices v - 1 and v + 1) or its second
+// (even k: of v and v + 2).
+HP_CONST(uint, RASTER_COLOR_A_MID, 0x100u)
+HP_CONST(uint, RASTER_COLOR_B_MID, 0x200u)
 
 // Set 0 of every raster pipeline; 0-10 are the strand shading bindings (shared/render.h), same numbers.
 HP_CONST(uint, RASTER_BINDING_SCREEN, 11)
@@ -128,7 +137,7 @@ struct RasterParams {
   uint chunkIndex;    // this chunk's shadeArgs entry
   uint chunkCount;    // chunks of every source together
   uint maxGroupsX;    // the device's maxComputeWorkGroupCount[0] (the shade dispatch goes 2D past it)
-  uint pad0;
+  float shadingSpacing;  // pixels: a strand's odd vertices take their neighbours' mean within it (0: none)
   uint pad1;
   uint pad2;
 };

@@ -141,6 +141,9 @@ TEST_F(PublicApi, RendererSettingsAreRefusedByField) {
   s.opacity.resolution = 8;
   EXPECT_THAT(failureOf(hairpipe::Renderer::create(*ctx_, s)), HasSubstr("resolution"));
   s = {};
+  s.shadingSpacing = -1.0f;
+  EXPECT_THAT(failureOf(hairpipe::Renderer::create(*ctx_, s)), HasSubstr("shadingSpacing must be in [0, 4096]"));
+  s = {};
   s.pipelineCache.assign(12, 0);
   EXPECT_THAT(failureOf(hairpipe::Renderer::create(*ctx_, s)),
               HasSubstr("pipeline cache data of 12 bytes is shorter than its 32-byte header"));
