@@ -28,12 +28,22 @@ layout(std430, binding = RASTER_BINDING_SHADE_ARGS) buffer ShadeArgs { uvec4 sha
 shared uint groupListed;
 shared uint groupBase;
 
+// Scatter mode: the end of segment k whose colour is its pair's mean, as a list entry flag (or 0). Not decided
+// again but read back: the count step left the pair's middle vertex unclaimed exactly where it chose the mean
+// (only the pair's two segments can claim it, and one that is listed claims it otherwise), so the fine pass
+// never reads a vertex that was not shaded.
+uint colorMidFlag(uint v, uint k, uint segments) {
+  if ((k & ~1u) + 2u > segments || shadeFlags[v - (k & 1u) + 1u] != 0u) return 0u;
+  return (k & 1u) != 0u ? RASTER_COLOR_A_MID : RASTER_COLOR_B_MID;
+}
+
 // Bins the segment from vertex v (its key counts, and in scatter mode its list entries, flagged with
-// `colorMid`: which end's colour is a mean, shared/raster.h); returns whether some tile lists it, and its
+// colorMidFlag: which end's colour is a mean, shared/raster.h); returns whether some tile lists it, and its
 // footprint in f.
-bool binSegment(uint v, uint k, uint segments, uint colorMid, out Footprint f) {
+bool binSegment(uint v, uint k, uint segments, out Footprint f) {
   f = segmentFootprint(v);
   if (!f.visible) return false;
+  uint colorMid = MODE == RASTER_MODE_SCATTER ? colorMidFlag(v, k, segments) : 0u;
   uint id = v | (k + 1u == segments ? RASTER_LAST_SEGMENT : 0u);
   bool listed = false;
   for (uint ty = f.tileMin.y; ty <= f.tileMax.y; ++ty)
@@ -66,15 +76,6 @@ bool pairInterpolated(Footprint f, uint v, uint k, uint segments) {
   return dot(d, d) <= params.shadingSpacing * params.shadingSpacing;
 }
 
-// Scatter mode: the end of segment k whose colour is its pair's mean, as a list entry flag (or 0). Not decided
-// again but read back: the count step left the pair's middle vertex unclaimed exactly where it chose the mean
-// (only the pair's two segments can claim it, and one that is listed claims it otherwise), so the fine pass
-// never reads a vertex that was not shaded.
-uint colorMidFlag(uint v, uint k, uint segments) {
-  if ((k & ~1u) + 2u > segments || shadeFlags[v - (k & 1u) + 1u] != 0u) return 0u;
-  return (k & 1u) != 0u ? RASTER_COLOR_A_MID : RASTER_COLOR_B_MID;
-}
-
 // Whether this invocation is the one that lists vertex v for shading (the segments on either side of it
 // may both ask). A flag only goes from 0 to 1 in a frame: one already read as set needs no atomic.
 bool claimForShading(uint v) { return shadeFlags[v] == 0u && atomicExchange(shadeFlags[v], 1u) == 0u; }
@@ -87,7 +88,7 @@ void main() {
   uint v = params.firstVertex + (i / segments) * params.verticesPerStrand + k;
   if (MODE != RASTER_MODE_COUNT) {  // a specialization constant: uniform, no barrier below is skipped unevenly
     Footprint f;
-    if (inRange) binSegment(v, k, segments, colorMidFlag(v, k, segments), f);
+    if (inRange) binSegment(v, k, segments, f);
     return;
   }
   if (gl_LocalInvocationIndex == 0u) groupListed = 0u;
@@ -95,7 +96,7 @@ void main() {
   // Count mode: both ends of a segment in some tile's list get shaded, or where one end is a mean, the two
   // vertices it is the mean of (the pair's ends); the others never composite.
   Footprint f;
-  bool listed = inRange && binSegment(v, k, segments, 0u, f);
+  bool listed = inRange && binSegment(v, k, segments, f);
   bool mean = listed && pairInterpolated(f, v, k, segments);
   uint lo = mean ? v - (k & 1u) : v, hi = mean ? lo + 2u : v + 1u;
   bool first = listed && claimForShading(lo);
