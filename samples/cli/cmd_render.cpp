@@ -110,7 +110,8 @@ void runRender(const RenderOptions& o, const CLI::App& cmd) {
     const auto& s = *result.rasterStats;
     report["raster_lists"] = {{"requested", s.requested}, {"kept", s.kept},
                               {"dropped_tile_budget", s.droppedByTileBudget},
-                              {"dropped_capacity", s.droppedByCapacity}, {"overflow", s.overflow()}};
+                              {"dropped_capacity", s.droppedByCapacity}, {"overflow", s.overflow()},
+                              {"shaded_vertices", s.shaded}};
   }
   if (result.opacity) report["opacity_dump"] = o.dumpOpacity;
   if (result.strandDump) report["strands_dump"] = o.dumpStrands;
@@ -127,7 +128,7 @@ void runRender(const RenderOptions& o, const CLI::App& cmd) {
     std::cout << "  tile lists: " << result.rasterStats->kept << " entries kept of " << result.rasterStats->requested
               << ", overflow " << result.rasterStats->overflow() << " (tile budget "
               << result.rasterStats->droppedByTileBudget << ", capacity " << result.rasterStats->droppedByCapacity
-              << ")\n";
+              << "), " << result.rasterStats->shaded << " vertices shaded\n";
   for (const auto& t : result.passTimes) std::cout << "  " << t.name << ": " << t.milliseconds << " ms\n";
 }
 

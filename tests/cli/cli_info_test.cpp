@@ -205,6 +205,25 @@ TEST(CliBench, FineWalkListIsCheckedThenBenched) {
   EXPECT_EQ(run, (std::vector<std::string>{"direct", "staged", "direct"}));
 }
 
+// `bench --shading-spacing` takes pixels in [0, 4096] (refused by name before a frame runs); each spacing is a
+// case of its own, and the report says how many vertices its frame shaded: fewer where pairs share them.
+TEST(CliBench, ShadingSpacingListIsCheckedThenBenched) {
+  auto bad = runCli({"bench", "--raster", "compute", "--shading-spacing", "8,-1", "--frames", "1"});
+  EXPECT_EQ(bad.exitCode, 1);
+  EXPECT_NE(bad.err.find("bench: --shading-spacing values must be in [0, 4096] pixels"), std::string::npos) << bad.err;
+  EXPECT_EQ(bad.out.find("median of"), std::string::npos) << "a frame ran: " << bad.out;
+  const nlohmann::json report = tinyComputeBench({"--shading-spacing", "0,24"}, "bench_shading_spacing.json");
+  ASSERT_FALSE(report.is_null());
+  ASSERT_EQ(report["results"].size(), 2u);
+  const nlohmann::json &every = report["results"][0], &spaced = report["results"][1];
+  EXPECT_EQ(every["shading_spacing"].get<double>(), 0.0);
+  EXPECT_EQ(spaced["shading_spacing"].get<double>(), 24.0);
+  EXPECT_EQ(every["raster"], "compute, shading spacing 0");
+  EXPECT_EQ(spaced["raster"], "compute");
+  EXPECT_GT(every["shaded_vertices"].get<double>(), 0.0);
+  EXPECT_LT(spaced["shaded_vertices"].get<double>(), every["shaded_vertices"].get<double>());
+}
+
 // `bench --groom` takes scene and/or none (refused by name before a frame runs); each is a case of its own.
 TEST(CliBench, GroomListIsCheckedThenBenched) {
   auto bad = runCli({"bench", "--raster", "compute", "--groom", "scene,curly", "--frames", "1"});

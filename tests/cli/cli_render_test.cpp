@@ -26,6 +26,9 @@ TEST(CliRender, WritesThePngReportsEveryPassAndDumpsTheStrands) {
   EXPECT_GT(j["raster_lists"]["kept"].get<double>(), 0.0);
   EXPECT_EQ(j["raster_lists"]["overflow"], 0);
   EXPECT_EQ(j["strands"], 2000);
+  // At 128x96 every pair of segments is within the default shading spacing: at most 19 of 36 per strand.
+  EXPECT_GT(j["raster_lists"]["shaded_vertices"].get<double>(), 0.0);
+  EXPECT_LE(j["raster_lists"]["shaded_vertices"].get<double>(), 2000.0 * 19.0);
   hp::RgbaImage image = hp::readPngRgba(png);
   EXPECT_EQ(image.width, 128u);
   EXPECT_EQ(image.height, 96u);
