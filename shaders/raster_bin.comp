@@ -1,4 +1,7 @@
 #version 460
+#extension GL_KHR_shader_subgroup_basic : require
+#extension GL_KHR_shader_subgroup_arithmetic : require
+#extension GL_KHR_shader_subgroup_ballot : require
 // Compute rasterizer, per segment of a chunk: the (tile, depth bin) keys its footprint touches.
 // RASTER_MODE_COUNT counts them and lists the ends of every segment that touches a tile for shading; RASTER_MODE_SCATTER (after the tile scan) writes the segment's global
 // id and the blocks of the tile it may cover into each tile's list, keeping the first `keys.y` of each key (the tile budget, nearest bins first).
@@ -21,12 +24,6 @@ layout(std430, binding = RASTER_BINDING_SHADE_FLAGS) buffer ShadeFlags { uint sh
 layout(std430, binding = RASTER_BINDING_SHADE_LIST) writeonly buffer ShadeList { uint shadeList[]; };
 layout(std430, binding = RASTER_BINDING_SHADE_ARGS) buffer ShadeArgs { uvec4 shadeArgs[]; };
 #include "raster.glsl"
-
-// Count mode: the vertices this workgroup lists for raster_shade.comp, and where they go in the chunk's
-// shade list. One global atomic per workgroup instead of one per listed vertex on a single counter (which
-// serialises on GPUs), and a workgroup's vertices land next to each other, as the shade pass reads them.
-shared uint groupListed;
-shared uint groupBase;
 
 // Scatter mode: the end of segment k whose colour is its pair's mean, as a list entry flag (or 0). Not decided
 // again but read back: the count step left the pair's middle vertex unclaimed exactly where it chose the mean
@@ -86,13 +83,11 @@ void main() {
   bool inRange = i < params.strandCount * segments;
   uint k = i % segments;
   uint v = params.firstVertex + (i / segments) * params.verticesPerStrand + k;
-  if (MODE != RASTER_MODE_COUNT) {  // a specialization constant: uniform, no barrier below is skipped unevenly
+  if (MODE != RASTER_MODE_COUNT) {  // a specialization constant: uniform, no subgroup operation below is skipped unevenly
     Footprint f;
     if (inRange) binSegment(v, k, segments, f);
     return;
   }
-  if (gl_LocalInvocationIndex == 0u) groupListed = 0u;
-  barrier();
   // Count mode: both ends of a segment in some tile's list get shaded, or where one end is a mean, the two
   // vertices it is the mean of (the pair's ends); the others never composite.
   Footprint f;
@@ -101,13 +96,15 @@ void main() {
   uint lo = mean ? v - (k & 1u) : v, hi = mean ? lo + 2u : v + 1u;
   bool first = listed && claimForShading(lo);
   bool second = listed && claimForShading(hi);
+  // Where they go in the chunk's shade list: one global atomic per subgroup instead of one per listed vertex
+  // on a single counter (which serialises on GPUs), and a subgroup's vertices land next to each other, as
+  // the shade pass reads them. No shared memory or barrier.
   uint mine = uint(first) + uint(second);
-  uint local = mine > 0u ? atomicAdd(groupListed, mine) : 0u;
-  barrier();
-  if (gl_LocalInvocationIndex == 0u && groupListed > 0u)
-    groupBase = atomicAdd(shadeArgs[params.chunkIndex].w, groupListed);
-  barrier();
-  uint slot = params.firstVertex + groupBase + local;
+  uint local = subgroupExclusiveAdd(mine), listedHere = subgroupAdd(mine);
+  uint base = 0u;
+  if (subgroupElect() && listedHere > 0u) base = atomicAdd(shadeArgs[params.chunkIndex].w, listedHere);
+  base = subgroupBroadcastFirst(base);
+  uint slot = params.firstVertex + base + local;
   if (first) shadeList[slot++] = lo;
   if (second) shadeList[slot] = hi;
 }

@@ -1,4 +1,6 @@
 #version 460
+#extension GL_KHR_shader_subgroup_basic : require
+#extension GL_KHR_shader_subgroup_arithmetic : require
 // Compute rasterizer, per render vertex of a chunk: project to pixels (x, y, NDC depth, width in pixels)
 // and reduce the NDC depth range of the vertices in front of the camera into RasterState for the depth
 // bins. Shading waits for the binning (raster_shade.comp): only listed vertices are shaded. With motion
@@ -34,17 +36,10 @@ vec2 screenMotion(uint i, vec2 pixelNow, float w) {
   return pixelNow - frame.jitter.xy - pixelOf(before.xy / before.w);
 }
 
-shared uint groupMin;
-shared uint groupMax;
-
 void main() {
-  uint lane = gl_LocalInvocationID.x;
-  if (lane == 0u) {
-    groupMin = 0xFFFFFFFFu;
-    groupMax = 0u;
-  }
-  barrier();
   uint q = params.verticesPerStrand;
+  // NDC depth in [0, 1] is non-negative, so its float bits order like the values; none: the largest uint.
+  uint depthBits = 0xFFFFFFFFu;
   uint i = hpThreadId(RASTER_WORKGROUP_SIZE);
   if (i < params.strandCount * q) {
     uint global = params.firstVertex + i;
@@ -59,14 +54,14 @@ void main() {
       if (MOTION != 0u) motion[global] = packHalf2x16(screenMotion(i, pixel, clip.w));
       float width = frame.strand.x * attributes[i / q].widthScale * mix(1.0, frame.strand.y, pos.w);
       screen[global] = vec4(pixel, ndc.z, width / (frame.cameraPosition.w * clip.w));
-      // NDC depth in [0, 1] is non-negative, so its float bits order like the values.
-      atomicMin(groupMin, floatBitsToUint(ndc.z));
-      atomicMax(groupMax, floatBitsToUint(ndc.z));
+      depthBits = floatBitsToUint(ndc.z);
     }
   }
-  barrier();
-  if (lane == 0u && groupMin <= groupMax) {
-    atomicMin(state.depthBits.x, groupMin);
-    atomicMax(state.depthBits.y, groupMax);
+  // The subgroup's range, then one atomic pair per subgroup on the frame's (no shared memory or barrier).
+  uint nearest = subgroupMin(depthBits);
+  uint farthest = subgroupMax(depthBits == 0xFFFFFFFFu ? 0u : depthBits);
+  if (subgroupElect() && nearest <= farthest) {
+    atomicMin(state.depthBits.x, nearest);
+    atomicMax(state.depthBits.y, farthest);
   }
 }

@@ -56,6 +56,7 @@ Result<std::vector<std::string>> requirements() noexcept {
                                  std::to_string(VK_API_VERSION_MINOR(r.apiVersion))};
     for (const std::string& f : r.features) out.push_back("feature " + f);
     for (const std::string& e : r.extensions) out.push_back("extension " + e);
+    out.push_back(r.subgroups);
     out.push_back(r.queue);
     return out;
   });

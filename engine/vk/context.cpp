@@ -108,6 +108,8 @@ void Context::checkAdopted() const {
   const VkQueueFlags needed = VK_QUEUE_GRAPHICS_BIT | VK_QUEUE_COMPUTE_BIT;
   if (queueFamily_ >= count || (families[queueFamily_].queueFlags & needed) != needed)
     throw Error("Context::adopt: queue family " + std::to_string(queueFamily_) + " does not support graphics and compute");
+  if (!computeSubgroupOperations(physical_))
+    throw Error(std::string("Context::adopt: ") + props.deviceName + " lacks " + requirements().subgroups);
   if (!fn_.vkCmdPipelineBarrier2 || !fn_.vkCmdBeginRendering || !fn_.vkQueueSubmit2)
     throw Error("Context::adopt: Vulkan 1.3 device functions did not load (was the device created with apiVersion 1.3?)");
 }

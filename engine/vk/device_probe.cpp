@@ -52,6 +52,16 @@ std::vector<DeviceReport> probeDevices(VkInstance instance) {
 
 DeviceRequirements requirements() { return {}; }
 
+bool computeSubgroupOperations(VkPhysicalDevice device) {
+  VkPhysicalDeviceSubgroupProperties subgroups{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SUBGROUP_PROPERTIES};
+  VkPhysicalDeviceProperties2 props{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2, &subgroups};
+  vkGetPhysicalDeviceProperties2(device, &props);
+  const VkSubgroupFeatureFlags needed =
+      VK_SUBGROUP_FEATURE_BASIC_BIT | VK_SUBGROUP_FEATURE_BALLOT_BIT | VK_SUBGROUP_FEATURE_ARITHMETIC_BIT;
+  return (subgroups.supportedStages & VK_SHADER_STAGE_COMPUTE_BIT) != 0 &&
+         (subgroups.supportedOperations & needed) == needed;
+}
+
 std::vector<std::string> unfitReasons(VkPhysicalDevice device) { return probeDevice(device, 0).candidate.missing; }
 
 DeviceReport probeDevice(VkPhysicalDevice device, std::uint32_t i) {
@@ -70,6 +80,7 @@ DeviceReport probeDevice(VkPhysicalDevice device, std::uint32_t i) {
     r.candidate.missing.push_back("Vulkan 1.3");
   } else {
     probeFeatures(r);
+    if (!computeSubgroupOperations(device)) r.candidate.missing.push_back(requirements().subgroups);
   }
   probeQueues(r);
   return r;

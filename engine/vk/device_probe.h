@@ -32,12 +32,16 @@ struct DeviceRequirements {
   std::vector<std::string> features{"VkPhysicalDeviceVulkan13Features::dynamicRendering",
                                     "VkPhysicalDeviceVulkan13Features::synchronization2"};
   std::vector<std::string> extensions;  // none required; VK_EXT_debug_utils is used for names when enabled
+  // Properties, not features (nothing to enable): the passes reduce and allot through subgroups.
+  std::string subgroups = "subgroup operations basic, ballot and arithmetic in compute shaders";
   std::string queue = "one queue family with VK_QUEUE_GRAPHICS_BIT and VK_QUEUE_COMPUTE_BIT";
 };
 DeviceRequirements requirements();
 // Why `device` cannot run hairpipe (e.g. "Vulkan 1.3", "feature synchronization2"); empty when it can.
 std::vector<std::string> unfitReasons(VkPhysicalDevice device);
 DeviceKind deviceKind(VkPhysicalDeviceType type);
+// Whether the device's compute shaders have the subgroup operations of DeviceRequirements::subgroups.
+bool computeSubgroupOperations(VkPhysicalDevice device);
 
 class InstanceProbe {
  public:

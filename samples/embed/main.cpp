@@ -363,7 +363,7 @@ hairpipe::ScalpInput jawSkin(const hairpipe::Asset& asset, const glm::vec3& pivo
 glm::mat4 nod(double t) { return glm::rotate(glm::mat4(1.0f), 0.1f * float(std::sin(6.2831853 * t)), {1, 0, 0}); }
 
 void renderFrames(App& app, std::uint32_t frames, hairpipe::RasterMode raster) {
-  // Your device: Vulkan 1.3, dynamicRendering + synchronization2 enabled, a graphics+compute queue.
+  // Your device: Vulkan 1.3, dynamicRendering + synchronization2 enabled, compute subgroups, a graphics+compute queue.
   hairpipe::Context ctx = take(hairpipe::Context::adopt(
       {vkGetInstanceProcAddr, app.instance, app.physical, app.device, app.family, app.queue, true}));
   hairpipe::RendererSettings rs;

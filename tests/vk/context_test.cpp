@@ -99,6 +99,8 @@ TEST_F(VulkanTest, RequirementsNameWhatTheApplicationEnablesAndTheDeviceMeetsThe
   ASSERT_EQ(r.features.size(), 2u);
   EXPECT_NE(r.features[0].find("dynamicRendering"), std::string::npos);
   EXPECT_NE(r.features[1].find("synchronization2"), std::string::npos);
+  EXPECT_NE(r.subgroups.find("arithmetic"), std::string::npos);
+  EXPECT_TRUE(hp::vk::computeSubgroupOperations(ctx->physicalDevice()));
   EXPECT_TRUE(hp::vk::unfitReasons(ctx->physicalDevice()).empty());
 }
 

@@ -5,7 +5,8 @@
 // vkGetInstanceProcAddr it is given (or from libvulkan.so.1 for a headless device): it defines no global
 // vk* symbol and never touches an application's loader or volk pointers.
 //
-// The device must be Vulkan 1.3 with dynamicRendering and synchronization2 enabled and a queue family with
+// The device must be Vulkan 1.3 with dynamicRendering and synchronization2 enabled, the subgroup operations
+// basic, ballot and arithmetic in compute shaders (a property: nothing to enable) and a queue family with
 // graphics and compute; requirements() lists it, unfitReasons() says why a physical device cannot serve.
 // hairpipe never destroys what it adopted and never waits idle on an adopted device. Its one-shot work
 // outside the frame loop (construction uploads, material changes) submits to the given queue and waits on
