@@ -3,7 +3,8 @@
 #extension GL_KHR_shader_subgroup_arithmetic : require
 #extension GL_KHR_shader_subgroup_ballot : require
 // Compute rasterizer, per segment of a chunk: the (tile, depth bin) keys its footprint touches.
-// RASTER_MODE_COUNT counts them and lists the ends of every segment that touches a tile for shading; RASTER_MODE_SCATTER (after the tile scan) writes the segment's global
+// RASTER_MODE_COUNT counts them and lists for shading the ends of every segment that touches a tile (or its pair's
+// ends: the shading spacing); RASTER_MODE_SCATTER (after the tile scan) writes the segment's global
 // id and the blocks of the tile it may cover into each tile's list, keeping the first `keys.y` of each key (the tile budget, nearest bins first).
 // The mode is a specialization constant (one pipeline each), not a uniform value lavapipe would inline.
 #include "shared/raster.h"
@@ -60,17 +61,20 @@ bool binSegment(uint v, uint k, uint segments, out Footprint f) {
 
 // Count mode: whether segment k of a strand (first vertex v, `segments` per strand) is one of a pair (2j, 2j + 1)
 // whose middle vertex takes the mean of its neighbours' radiance (shared/raster.h RASTER_COLOR_A_MID): its
-// neighbours lie within the shading spacing on screen. Both segments of the pair compare the same two screen
-// records: one is an end of the segment's footprint f, the other the pair's vertex beyond it. A strand's last
-// segment with an even k has no partner; an end behind the camera keeps every vertex.
+// neighbours lie within the shading spacing on screen and the pair bends little there (the middle vertex
+// within 1/8 of the chord from the chord's midpoint: a turn of at most ~28 degrees, where a curl or a kink
+// would change the shading most between the ends). Both segments of the pair compare the same three screen
+// records: two are the segment's footprint ends f.a, f.b, the third the pair's vertex beyond them. A
+// strand's last segment with an even k has no partner; an end behind the camera keeps every vertex.
 bool pairInterpolated(Footprint f, uint v, uint k, uint segments) {
   if (params.shadingSpacing <= 0.0 || (k & ~1u) + 2u > segments) return false;
   bool odd = (k & 1u) != 0u;
   vec4 beyond = screen[odd ? v - 1u : v + 2u];
-  vec4 a = odd ? beyond : f.a, b = odd ? f.b : beyond;
+  vec4 a = odd ? beyond : f.a, middle = odd ? f.a : f.b, b = odd ? f.b : beyond;
   if (a.w < 0.0 || b.w < 0.0) return false;
-  vec2 d = b.xy - a.xy;
-  return dot(d, d) <= params.shadingSpacing * params.shadingSpacing;
+  vec2 chord = b.xy - a.xy, off = middle.xy - 0.5 * (a.xy + b.xy);
+  float chord2 = dot(chord, chord);
+  return chord2 <= params.shadingSpacing * params.shadingSpacing && 64.0 * dot(off, off) <= chord2;
 }
 
 // Whether this invocation is the one that lists vertex v for shading (the segments on either side of it

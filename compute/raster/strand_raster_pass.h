@@ -57,8 +57,8 @@ std::optional<FineWalk> parseFineWalk(const std::string& name);  // one of those
 // an explicit Direct throws an Error.
 bool chooseStagedWalk(FineWalk walk, bool cpuDevice, bool texelsFit);
 
-// Shading spacing: where a strand's vertices 2j and 2j + 2 lie within this many pixels of each other on screen,
-// vertex 2j + 1 is not shaded and takes their mean radiance (shared/raster.h RASTER_COLOR_A_MID; docs/DESIGN.md
+// Shading spacing: where a strand's vertices 2j and 2j + 2 lie within this many pixels of each other on screen
+// and the strand turns little there, vertex 2j + 1 is not shaded and takes their mean radiance (shared/raster.h RASTER_COLOR_A_MID; docs/DESIGN.md
 // "Shading spacing"); 0 shades every vertex a tile lists.
 inline constexpr float kMaxShadingSpacing = 4096.0f;
 

@@ -181,6 +181,7 @@ std::vector<hp::cli::FrameCase> cases(const BenchOptions& o) {
 
 // Bytes per second and the fraction of the copy's only where the timestamps resolve the frame's passes.
 nlohmann::json toJson(const hp::cli::FrameResult& r) {
+  const bool compute = r.c.raster == hp::RasterMode::Compute;  // the shading spacing is the compute raster's
   const double copyGbs = hp::vk::copyGigabytesPerSecond(r.copyAlone);
   const double inFrameGbs = hp::vk::gigabytesPerSecond(r.copyBytes, r.passes.at("copy").medianMs);
   nlohmann::json passes = nlohmann::json::object();
@@ -198,8 +199,9 @@ nlohmann::json toJson(const hp::cli::FrameResult& r) {
           {"shadowed_lights", r.c.lights},            {"bounce_samples", r.c.bounceSamples},
           {"fine_walk", hp::compute::fineWalkName(r.c.fineWalk)},
           {"fine_walk_run", hp::compute::fineWalkName(r.fineWalkRun)}, {"groom", r.c.groom ? "scene" : "none"},
-          {"shadow_strands", r.c.shadowStrands},       {"shading_spacing", r.c.shadingSpacing},
-          {"shaded_vertices", r.shadedVertices},
+          {"shadow_strands", r.c.shadowStrands},
+          {"shading_spacing", compute ? nlohmann::json(r.c.shadingSpacing) : nlohmann::json()},
+          {"shaded_vertices", compute ? nlohmann::json(r.shadedVertices) : nlohmann::json()},
           {"roughness_variation", r.c.material.roughnessVariation},
           {"height", r.c.height},        {"raster", hp::cli::frameCaseName(r.c)},
           {"lut_mode", hp::lutModeName(r.c.lutMode)},

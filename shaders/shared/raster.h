@@ -13,8 +13,9 @@
 //   blocks     uint[ceil(T / RASTER_SCAN_SIZE)]  offset of each scan block in the list
 //   tileDepth  float[T]  the farthest head depth (NDC z) over each tile's pixels, 1 where no head
 //   shadeFlags uint[V]   1 once the vertex is in the shade list (cleared every frame)
-//   shadeList  uint[V]   per chunk, from its firstVertex: the global vertices of segments that touch a tile
-//                        (only they are shaded: off-screen and head-hidden segments are not)
+//   shadeList  uint[V]   per chunk, from its firstVertex: the global vertices of segments that touch a tile, or
+//                        of their pairs' ends where a middle vertex takes its neighbours' mean (only they are
+//                        shaded: off-screen and head-hidden segments are not)
 //   shadeArgs  uvec4[chunks]  the indirect shade dispatch of each chunk (x, y, z groups) and w = its listed count
 //   list       uvec2[capacity] per tile, depth bins near to far: x = the global index of the segment's first
 //                              vertex (strand * Q + k), | RASTER_LAST_SEGMENT for the strand's last segment
@@ -60,7 +61,7 @@ HP_CONST(uint, RASTER_MASK_SIDE, 8)             // samples per side of a pixel's
 HP_CONST(uint, RASTER_LAST_SEGMENT, 0x80000000u) // list entry flag: the segment ends at the strand's tip
 // Shading at half the rate along a strand (RasterParams::shadingSpacing; docs/DESIGN.md "Shading spacing"):
 // segments 2j and 2j + 1 of a strand share vertex 2j + 1; where vertices 2j and 2j + 2 lie within the spacing
-// of each other on screen, only they are shaded and vertex 2j + 1 takes their mean radiance. The list entry
+// of each other on screen and the pair turns little (raster_bin.comp pairInterpolated), only they are shaded and vertex 2j + 1 takes their mean radiance. The list entry
 // (y) says which end of a segment is such a mean: its first (odd k: of vertices v - 1 and v + 1) or its second
 // (even k: of v and v + 2).
 HP_CONST(uint, RASTER_COLOR_A_MID, 0x100u)

@@ -77,7 +77,8 @@ class Context {
   std::unique_ptr<hp::vk::Context> impl_;
 };
 
-// The instance version, device version, features and queue capabilities hairpipe needs, one per line.
+// The instance version, device version, features, subgroup operations and queue capabilities hairpipe needs,
+// one per line.
 Result<std::vector<std::string>> requirements() noexcept;
 // Why this physical device cannot run hairpipe (an empty list: it can), through the application's loader.
 Result<std::vector<std::string>> unfitReasons(PFN_vkGetInstanceProcAddr getInstanceProcAddr, VkInstance instance,

@@ -74,7 +74,8 @@ struct RendererSettings {
   RasterMode raster = RasterMode::Graphics;
   std::uint32_t tileBudget = 16384;    // compute raster: list entries kept per 8x8 tile, [1, 2^24]
   // Compute raster: where a render strand's vertices 2j and 2j + 2 lie within this many pixels of each other on
-  // screen, the odd vertex between them is not shaded and takes their mean radiance, [0, 4096]; 0 shades
+  // screen (and the strand turns there by at most ~28 degrees on screen), the odd vertex between them is not
+  // shaded and takes their mean radiance, [0, 4096]; 0 shades
   // every vertex. Shading is most of the hair's cost per vertex, and at the default framing a strand's
   // segments are a few pixels long (docs/PERFORMANCE.md "Shading spacing": the image and the time).
   float shadingSpacing = 24.0f;
