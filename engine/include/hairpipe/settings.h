@@ -75,9 +75,9 @@ struct RendererSettings {
   std::uint32_t tileBudget = 16384;    // compute raster: list entries kept per 8x8 tile, [1, 2^24]
   // Compute raster: where a render strand's vertices 2j and 2j + 2 lie within this many pixels of each other on
   // screen (and the strand turns there by at most ~28 degrees on screen), the odd vertex between them is not
-  // shaded and takes their mean radiance, [0, 4096]; 0 shades
-  // every vertex. Shading is most of the hair's cost per vertex, and at the default framing a strand's
-  // segments are a few pixels long (docs/PERFORMANCE.md "Shading spacing": the image and the time).
+  // shaded and takes their mean radiance, [0, 4096]; 0 shades every vertex. Shading is most of the hair's
+  // cost per vertex, and at the default framing a strand's segments are a few pixels long
+  // (docs/PERFORMANCE.md "Shading spacing": the image and the time).
   float shadingSpacing = 24.0f;
   // The data of an earlier run's Renderer::pipelineCacheData(): every pipeline is built through a
   // VkPipelineCache started from it. Data of another device or driver is ignored (as drivers do); data too
