@@ -26,12 +26,19 @@ layout(std430, binding = RASTER_BINDING_SHADE_LIST) writeonly buffer ShadeList {
 layout(std430, binding = RASTER_BINDING_SHADE_ARGS) buffer ShadeArgs { uvec4 shadeArgs[]; };
 #include "raster.glsl"
 
+// Segments 2j and 2j + 1 of a strand are a pair (shared/raster.h RASTER_COLOR_A_MID) over vertices 2j, 2j + 1,
+// 2j + 2: segment k has a partner unless it is the strand's last with an even k, and its pair starts at
+// vertex v - (k & 1) (v: the segment's first vertex). One definition for the count and scatter steps, which
+// must agree on every pair.
+bool pairExists(uint k, uint segments) { return (k & ~1u) + 2u <= segments; }
+uint pairStart(uint v, uint k) { return v - (k & 1u); }
+
 // Scatter mode: the end of segment k whose colour is its pair's mean, as a list entry flag (or 0). Not decided
 // again but read back: the count step left the pair's middle vertex unclaimed exactly where it chose the mean
 // (only the pair's two segments can claim it, and one that is listed claims it otherwise), so the fine pass
 // never reads a vertex that was not shaded.
 uint colorMidFlag(uint v, uint k, uint segments) {
-  if ((k & ~1u) + 2u > segments || shadeFlags[v - (k & 1u) + 1u] != 0u) return 0u;
+  if (!pairExists(k, segments) || shadeFlags[pairStart(v, k) + 1u] != 0u) return 0u;
   return (k & 1u) != 0u ? RASTER_COLOR_A_MID : RASTER_COLOR_B_MID;
 }
 
@@ -67,9 +74,9 @@ bool binSegment(uint v, uint k, uint segments, out Footprint f) {
 // records: two are the segment's footprint ends f.a, f.b, the third the pair's vertex beyond them. A
 // strand's last segment with an even k has no partner; an end behind the camera keeps every vertex.
 bool pairInterpolated(Footprint f, uint v, uint k, uint segments) {
-  if (params.shadingSpacing <= 0.0 || (k & ~1u) + 2u > segments) return false;
+  if (params.shadingSpacing <= 0.0 || !pairExists(k, segments)) return false;
   bool odd = (k & 1u) != 0u;
-  vec4 beyond = screen[odd ? v - 1u : v + 2u];
+  vec4 beyond = screen[pairStart(v, k) + (odd ? 0u : 2u)];  // the pair's vertex outside this segment
   vec4 a = odd ? beyond : f.a, middle = odd ? f.a : f.b, b = odd ? f.b : beyond;
   if (a.w < 0.0 || b.w < 0.0) return false;
   vec2 chord = b.xy - a.xy, off = middle.xy - 0.5 * (a.xy + b.xy);
@@ -97,7 +104,7 @@ void main() {
   Footprint f;
   bool listed = inRange && binSegment(v, k, segments, f);
   bool mean = listed && pairInterpolated(f, v, k, segments);
-  uint lo = mean ? v - (k & 1u) : v, hi = mean ? lo + 2u : v + 1u;
+  uint lo = mean ? pairStart(v, k) : v, hi = mean ? lo + 2u : v + 1u;
   bool first = listed && claimForShading(lo);
   bool second = listed && claimForShading(hi);
   // Where they go in the chunk's shade list: one global atomic per subgroup instead of one per listed vertex

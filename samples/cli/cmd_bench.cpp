@@ -152,7 +152,8 @@ std::vector<hp::cli::FrameCase> cases(const BenchOptions& o) {
   const std::vector<float> graphicsSpacings{base.shadingSpacing};
   for (float f : o.shadingSpacings)
     if (!(f >= 0.0f && f <= hp::compute::kMaxShadingSpacing))
-      throw hp::Error("bench: --shading-spacing values must be in [0, 4096] pixels, got " + std::to_string(f));
+      throw hp::Error("bench: --shading-spacing values must be in [0, " +
+                      std::to_string(int(hp::compute::kMaxShadingSpacing)) + "] pixels, got " + std::to_string(f));
   std::vector<hp::cli::FrameCase> out;
   for (std::uint32_t s : o.strands) {
     if (s == 0 || s > 4'000'000) throw hp::Error("bench: --strands values must be in [1, 4000000]");
