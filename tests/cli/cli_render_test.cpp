@@ -93,6 +93,7 @@ TEST(CliRender, BadOptionsExitWithAMessageAndWriteNothing) {
       {{"--bounce-samples", "1"}, "--bounce-samples must be in [2, 256]"},
       {{"--volume", "11"}, "simulation parameter volume must be in [0.000000, 10.000000], got 11"},
       {{"--grid-resolution", "3"}, "gridResolution must be in [4, 128], got 3"},
+      {{"--shading-spacing", "-1"}, "shadingSpacing must be in [0, 4096] pixels, got -1"},
   };
   // Render targets past half the device-local heap are refused before anything is allocated. The largest
   // frame the options allow (16384^2 at msaa 8: 108 bytes a pixel, 27.6 GiB) exceeds that on lavapipe

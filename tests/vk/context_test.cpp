@@ -73,6 +73,36 @@ TEST(VulkanCheck, DeviceLossIsTellableApartByType) {
   }
 }
 
+namespace {
+// Forwards volk's global vkGetPhysicalDeviceProperties2 and then reports no subgroup operation in any stage,
+// as a device without them would.
+PFN_vkGetPhysicalDeviceProperties2 realProperties2 = nullptr;
+VKAPI_ATTR void VKAPI_CALL propertiesWithoutSubgroups(VkPhysicalDevice device, VkPhysicalDeviceProperties2* props) {
+  realProperties2(device, props);
+  for (auto* next = static_cast<VkBaseOutStructure*>(props->pNext); next; next = next->pNext)
+    if (next->sType == VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SUBGROUP_PROPERTIES) {
+      auto* subgroups = reinterpret_cast<VkPhysicalDeviceSubgroupProperties*>(next);
+      subgroups->supportedStages = 0;
+      subgroups->supportedOperations = 0;
+    }
+}
+struct RestoreProperties2 {
+  ~RestoreProperties2() { vkGetPhysicalDeviceProperties2 = realProperties2; }
+};
+}  // namespace
+
+// The passes reduce through subgroups: a device whose compute shaders lack those operations is unfit, and
+// says so by name.
+TEST_F(VulkanTest, ADeviceWithoutComputeSubgroupOperationsIsRefusedByName) {
+  realProperties2 = vkGetPhysicalDeviceProperties2;
+  RestoreProperties2 restore;
+  vkGetPhysicalDeviceProperties2 = propertiesWithoutSubgroups;
+  EXPECT_FALSE(hp::vk::computeSubgroupOperations(ctx->physicalDevice()));
+  const std::vector<std::string> reasons = hp::vk::unfitReasons(ctx->physicalDevice());
+  ASSERT_EQ(reasons.size(), 1u);
+  EXPECT_EQ(reasons[0], "subgroup operations basic, ballot and arithmetic in compute shaders");
+}
+
 // An application's device handed to hairpipe: adopt() checks what it can and never waits idle on it.
 TEST_F(VulkanTest, AdoptedDeviceIsCheckedAndNeverWaitedIdle) {
   hp::vk::ExternalDevice ext{vkGetInstanceProcAddr, ctx->instance(), ctx->physicalDevice(), ctx->device(),
