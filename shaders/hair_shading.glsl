@@ -14,8 +14,15 @@
 #include "frame_shadows.glsl"
 #include "environment.glsl"
 
+// The fibre this pipeline shades (shared/marschner.h HAIR_FIBRE_*): read at run time by default, or fixed.
+layout(constant_id = 1) const uint HAIR_FIBRE = HAIR_FIBRE_RUNTIME;
+
+// The fibre model, MARSCHNER_MODE_*.
+uint hairFibreMode() { return HAIR_FIBRE == HAIR_FIBRE_RUNTIME ? marschner.control.x : HAIR_FIBRE & HAIR_FIBRE_MODE_MASK; }
+
 // Dual scattering: the physical fibre model's multiple scattering is on.
 bool hairDualScattering() {
+  if (HAIR_FIBRE != HAIR_FIBRE_RUNTIME) return (HAIR_FIBRE & HAIR_FIBRE_DUAL) != 0u;
   return frame.options.z == RENDER_SCATTERING_DUAL && marschner.control.x == MARSCHNER_MODE_LUT_PHYSICAL;
 }
 
@@ -29,7 +36,7 @@ vec3 hairLightRadiance(FrameLight light, LightSample ls, LightShadow shadow, vec
   vec4 ang = dual ? marschnerAngles(L, V, T) : vec4(0.0);
   vec4 m = dual ? marschnerPhysicalM(ang, tilt, roughness, lutM) : vec4(0.0);
   vec3 S = dual ? marschnerPhysicalS(ang, m, lutN0, lutN1)
-                : marschnerEvaluate(marschner.control.x, L, V, T, lutM, lutN0, lutN1, marschner, tilt,
+                : marschnerEvaluate(hairFibreMode(), L, V, T, lutM, lutN0, lutN1, marschner, tilt,
                                     roughness);
   float sinThetaI = clamp(dot(L, T), -1.0, 1.0);
   float cosThetaI = sqrt(1.0 - sinThetaI * sinThetaI);

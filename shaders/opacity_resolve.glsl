@@ -12,6 +12,8 @@ layout(std430, binding = OPACITY_RESOLVE_BINDING_BINS) readonly buffer Bins { ui
 layout(binding = OPACITY_RESOLVE_BINDING_MAPS, OPACITY_MAPS_FORMAT) uniform writeonly image2DArray maps;
 layout(std430, binding = OPACITY_RESOLVE_BINDING_FIRST) readonly buffer First { uint first[]; };
 layout(push_constant) uniform Push { OpacityResolvePush push; };
+// OPACITY_RESOLVE_*: which bins the splats filled; one pipeline per layout (lavapipe would run both resolves).
+layout(constant_id = 0) const uint BIN_LAYOUT = OPACITY_RESOLVE_GLOBAL;
 
 float alphaOf(uint bin) { return float(bin & ~OPACITY_BIN_SATURATED) / OPACITY_FIXED_ONE; }
 bool saturatedBin(uint bin) { return (bin & OPACITY_BIN_SATURATED) != 0u; }
@@ -35,7 +37,7 @@ void resolveSlices(uint texel, ivec2 xy) {
     slices[i] = saturated ? OPACITY_SATURATED_ALPHA : alpha;
   }
   // Deep maps: the first hair's s (the buffer starts at the largest uint: none there).
-  uint firstBits = push.deep == OPACITY_RESOLVE_DEEP ? first[texel] : 0xFFFFFFFFu;
+  uint firstBits = BIN_LAYOUT == OPACITY_RESOLVE_DEEP ? first[texel] : 0xFFFFFFFFu;
   store(xy, slices, firstBits != 0xFFFFFFFFu ? floatFromOrdered(firstBits) : OPACITY_NO_HAIR);
 }
 
@@ -80,7 +82,7 @@ void main() {
   uint n = push.resolution;
   if (texel >= n * n) return;
   ivec2 xy = ivec2(texel % n, texel / n);
-  if (push.deep == OPACITY_RESOLVE_DEEP_FINE)
+  if (BIN_LAYOUT == OPACITY_RESOLVE_DEEP_FINE)
     resolveFine(texel, xy);
   else
     resolveSlices(texel, xy);

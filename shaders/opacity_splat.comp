@@ -16,6 +16,8 @@
 layout(local_size_x = OPACITY_SPLAT_WORKGROUP_SIZE) in;
 // 1: the first-hair step reads a texel before its atomic minimum (GPUs); 0: the atomic alone (CPU devices).
 layout(constant_id = 0) const uint READ_BEFORE_MIN = 1u;
+// OPACITY_SPLAT_MODE_*: one pipeline per mode, so the others' code is left out (lavapipe would run it under a mask).
+layout(constant_id = 1) const uint MODE = OPACITY_SPLAT_MODE_PLAIN;
 layout(std430, binding = OPACITY_SPLAT_BINDING_POSITIONS) readonly buffer Positions { vec4 positions[]; };
 layout(std430, binding = OPACITY_SPLAT_BINDING_LIGHT) readonly buffer Light { LightSpace lights[]; };
 layout(std430, binding = OPACITY_SPLAT_BINDING_BINS) buffer Bins { uint bins[]; };
@@ -47,20 +49,20 @@ End endOf(vec4 clip, float opacity) {
 // and the fine bin of s, one deep slice wide, over the whole depth range (the resolve places the slices).
 void addFragment(ivec2 texel, float s, float opacity) {
   uint at = uint(texel.y) * push.resolution + uint(texel.x);
-  if (push.mode == OPACITY_SPLAT_MODE_FIRST || push.mode == OPACITY_SPLAT_MODE_DEEP_FINE) {
+  if (MODE == OPACITY_SPLAT_MODE_FIRST || MODE == OPACITY_SPLAT_MODE_DEEP_FINE) {
     // The texel's value only falls, so a read (even a stale one) at or below this s means the atomic would
     // change nothing: dense hair's later fragments skip it (fewer atomics on the same texels).
     uint nearest = orderedFromFloat(clamp(s, 0.0, float(OPACITY_SLICES)));
     if (READ_BEFORE_MIN == 0u || first[at] > nearest) atomicMin(first[at], nearest);
-    if (push.mode == OPACITY_SPLAT_MODE_FIRST) return;
+    if (MODE == OPACITY_SPLAT_MODE_FIRST) return;
   }
   uint index;
-  if (push.mode == OPACITY_SPLAT_MODE_DEEP_FINE) {
+  if (MODE == OPACITY_SPLAT_MODE_DEEP_FINE) {
     if (!(opacity > 0.0)) return;
     float fine = s * OPACITY_DEEP_FACTOR;  // the last bin also takes anything farther; NaN: the first
     index = opacityFineBin(at, fine > 0.0 ? min(uint(fine), OPACITY_DEEP_BINS - 1u) : 0u);
   } else {
-    if (push.mode == OPACITY_SPLAT_MODE_DEEP)
+    if (MODE == OPACITY_SPLAT_MODE_DEEP)
       s = min((s - floatFromOrdered(first[at])) * OPACITY_DEEP_FACTOR, float(OPACITY_SLICES));
     float behind = s - OPACITY_SLICE_EPSILON;
     if (!(behind <= float(OPACITY_SLICES)) || !(opacity > 0.0)) return;  // past the last slice, or nothing

@@ -204,13 +204,9 @@ StrandRasterPass::StrandRasterPass(const vk::Context& ctx, std::span<const Raste
   const std::vector<std::uint32_t> motion = {settings.motion ? 1u : 0u};  // constant_id 0: MOTION
   project_ = vk::ComputePipeline(ctx, "raster_project.comp", gpu::RASTER_WORKGROUP_SIZE, {setLayout}, 0,
                                  "raster project", motion, cache);
-  // constant_id 0 of the shade pass: HAIR_LIGHT_LOOP (every light in a loop, or the first without one). It reads
-  // the head's depth (the sky on the fibres' far side), of the head's sample count.
-  const char* shadeShader = multisampled() ? "raster_shade_ms.comp" : "raster_shade.comp";
-  shade_ = vk::ComputePipeline(ctx, shadeShader, gpu::RASTER_WORKGROUP_SIZE, {setLayout}, 0, "raster shade", {1u},
-                               cache);
-  shadeOneLight_ = vk::ComputePipeline(ctx, shadeShader, gpu::RASTER_WORKGROUP_SIZE, {setLayout}, 0,
-                                       "raster shade (one light)", {0u}, cache);
+  // The shade pass reads the head's depth (the sky on the fibres' far side), of the head's sample count; its
+  // variants are built on first use or by prepareShading().
+  shade_.emplace(ctx, multisampled() ? "raster_shade_ms.comp" : "raster_shade.comp", setLayout, cache);
   tileDepthPipeline_ = pipeline(multisampled() ? "raster_tile_depth_ms.comp" : "raster_tile_depth.comp",
                                 gpu::RASTER_WORKGROUP_SIZE, "raster tile depth");
   count_ = vk::ComputePipeline(ctx, "raster_bin.comp", gpu::RASTER_WORKGROUP_SIZE, {setLayout}, 0, "raster count",
@@ -417,14 +413,16 @@ void StrandRasterPass::recordBinning(VkCommandBuffer cmd, vk::GpuProfiler* profi
   end(cmd, profiler);
 }
 
-void StrandRasterPass::recordFine(VkCommandBuffer cmd, vk::GpuProfiler* profiler, bool oneLight,
-                                  std::uint32_t slot) const {
-  const vk::ComputePipeline& shade = oneLight ? shadeOneLight_ : shade_;
+void StrandRasterPass::recordFine(VkCommandBuffer cmd, vk::GpuProfiler* profiler,
+                                  std::span<const ShadeVariant> shading, std::uint32_t slot) const {
+  if (!shading.empty() && shading.size() != sourceVertices_.size())
+    throw Error("compute raster: one shade variant per source, got " + std::to_string(shading.size()));
   begin(cmd, profiler, "raster shade");
   // The scan wrote the shade dispatches (indirect arguments) and the count step the shade lists.
   vk::bufferBarrier(ctx_, cmd, shadeArgs_.handle(), vk::BufferUse::ComputeWrite, vk::BufferUse::IndirectRead);
   chain(ctx_, cmd);
   for (std::size_t i = 0; i < chunks_.size(); ++i) {
+    const vk::ComputePipeline& shade = shade_->get(shading.empty() ? ShadeVariant{} : shading[chunks_[i].source]);
     shade.bind(cmd, setOf(chunks_[i], slot).set());
     shade.dispatchIndirect(cmd, shadeArgs_.handle(), i * sizeof(glm::uvec4));
   }

@@ -36,6 +36,7 @@
 #include <string>
 #include <vector>
 
+#include "compute/raster/shade_variant.h"
 #include "compute/strands/strand_buffers.h"
 #include "engine/vk/buffer.h"
 #include "engine/vk/buffer_view.h"
@@ -113,19 +114,24 @@ class StrandRasterPass {
   void setDepth(VkImageView depth);
 
   // strandLimits: per source, the level of detail's prefix of its strands drawn (compute::strandsWithin);
-  // empty: all of them. oneLight: the frame blocks hold at most one light, so the shade pass may take its
-  // one-light variant (shaders/hair_shading.glsl HAIR_LIGHT_LOOP: twice as fast on lavapipe). slot: the
-  // frame slot whose descriptor sets the frame binds.
+  // empty: all of them. shading: per source, the shade pass's variant for its frame block and fibre
+  // (shadeVariantOf: the light loop left out for one light, the fibre compiled in; twice and ~1.3x as fast on
+  // lavapipe); empty: the run-time fibre with the light loop for every source. A fibre not prepared takes the
+  // run-time form (ShadePipelines). slot: the frame slot whose descriptor sets the frame binds.
   void record(VkCommandBuffer cmd, vk::GpuProfiler* profiler = nullptr,
-              std::span<const std::uint32_t> strandLimits = {}, bool oneLight = false, std::uint32_t slot = 0) const {
+              std::span<const std::uint32_t> strandLimits = {}, std::span<const ShadeVariant> shading = {},
+              std::uint32_t slot = 0) const {
     recordBinning(cmd, profiler, strandLimits, slot);
-    recordFine(cmd, profiler, oneLight, slot);
+    recordFine(cmd, profiler, shading, slot);
   }
   // record() in two halves: project + bin (readStats() is complete after it), then shade + fine raster.
   void recordBinning(VkCommandBuffer cmd, vk::GpuProfiler* profiler = nullptr,
                      std::span<const std::uint32_t> strandLimits = {}, std::uint32_t slot = 0) const;
-  void recordFine(VkCommandBuffer cmd, vk::GpuProfiler* profiler = nullptr, bool oneLight = false,
+  void recordFine(VkCommandBuffer cmd, vk::GpuProfiler* profiler = nullptr, std::span<const ShadeVariant> shading = {},
                   std::uint32_t slot = 0) const;
+  // Builds a shade pass variant for the frames that will take it (outside the frame loop).
+  void prepareShading(const ShadeVariant& variant) { shade_->prepare(variant); }
+  bool shadingPrepared(const ShadeVariant& variant) const { return shade_->prepared(variant); }
 
   const vk::Image& output() const { return output_; }
   // The near layer and its sample mask (R32_UINT); 1 x 1 and never written for a single-sample head depth.
@@ -186,8 +192,8 @@ class StrandRasterPass {
   vk::Sampler sampler_;
   VkImageView depth_ = VK_NULL_HANDLE;
   std::vector<Chunk> chunks_;
-  vk::ComputePipeline project_, shade_, shadeOneLight_, tileDepthPipeline_, count_, scatter_, scanTiles_, scanBlocks_,
-      fine_;
+  vk::ComputePipeline project_, tileDepthPipeline_, count_, scatter_, scanTiles_, scanBlocks_, fine_;
+  std::optional<ShadePipelines> shade_;
 };
 
 // List entries reserved for a frame: every segment in 8 tiles plus 16 per tile (the default head at

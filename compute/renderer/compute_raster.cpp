@@ -39,6 +39,14 @@ ComputeRaster::ComputeRaster(const vk::Context& ctx, const RendererSettings& set
       stale_(settings.framesInFlight, std::vector<bool>(instances.size(), false)),
       composite_(ctx, settings.formats, cache) {
   pass_.setDepth(depth);
+  // Each instance's fibre compiled into the shade pass, with and without the light loop (a fibre changed later,
+  // in the frame loop, shades with the run-time form: compute/raster/shade_variant.h).
+  for (const HairInstance* instance : instances_) {
+    const bool dual = instance->settings().look.scattering == render::Scattering::Dual;
+    const std::uint32_t fibre = gpu::hairFibre(instance->marschner().params().control.x, dual);
+    pass_.prepareShading({false, fibre});
+    pass_.prepareShading({true, fibre});
+  }
   composite_.setInput(pass_.output().view(), pass_.nearOutput().view(), pass_.nearMask().view());
 }
 
@@ -77,29 +85,30 @@ bool ComputeRaster::holds(const HairInstance* instance) const {
   return std::find(instances_.begin(), instances_.end(), instance) != instances_.end();
 }
 
-std::vector<std::uint32_t> ComputeRaster::recordFrameBlocks(VkCommandBuffer cmd, const View& view,
-                                                            const render::FrameLights& lights) const {
-  std::vector<std::uint32_t> strandLimits;
+ComputeRaster::SourceFrames ComputeRaster::recordFrameBlocks(VkCommandBuffer cmd, const View& view,
+                                                             const render::FrameLights& lights) const {
+  SourceFrames sources;
   for (std::size_t i = 0; i < instances_.size(); ++i) {
     const HairInstance& instance = *instances_[i];
     const float fraction = instance.lodFraction(view.camera.position);
-    strandLimits.push_back(instance.lodStrands(fraction));
+    sources.strandLimits.push_back(instance.lodStrands(fraction));
     gpu::RenderFrame frame =
         instance.frameBlock(view.camera, view.extent, lights, lodLook(instance.settings().look, fraction));
     render::setViewMotion(frame, view.extent, view.jitter, view.previousViewProj);
+    sources.shading.push_back(compute::shadeVariantOf(frame, instance.marschner().params()));
     const VkBuffer block = frames_[i].handle();
     vk::bufferBarrier(ctx_, cmd, block, vk::BufferUse::ComputeRead, vk::BufferUse::TransferDst);
     ctx_.fn().vkCmdUpdateBuffer(cmd, block, 0, sizeof(frame), &frame);
     vk::bufferBarrier(ctx_, cmd, block, vk::BufferUse::TransferDst, vk::BufferUse::ComputeRead);
   }
-  return strandLimits;
+  return sources;
 }
 
 void ComputeRaster::record(VkCommandBuffer cmd, std::uint64_t frame, const View& view,
                            const render::FrameLights& lights, vk::GpuProfiler* profiler) {
   const auto slot = std::uint32_t(frame % stale_.size());  // the frame slot: one per frame in flight
   rebindStale(frame, slot);
-  const std::vector<std::uint32_t> strandLimits = recordFrameBlocks(cmd, view, lights);
+  const SourceFrames sources = recordFrameBlocks(cmd, view, lights);
   // The graphics readers' states (recordShadows) extended to compute for the pass, then back, so the
   // next frame's barriers (which wait on vertex/fragment readers) still cover these reads.
   const VkBuffer lightSpace = shadows_.lightSpace().handle();
@@ -112,7 +121,7 @@ void ComputeRaster::record(VkCommandBuffer cmd, std::uint64_t frame, const View&
   vk::bufferBarrier(ctx_, cmd, lightSpace, vk::BufferUse::GraphicsRead, vk::BufferUse::ComputeRead);
   vk::imageBarrier(ctx_, cmd, maps, VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::FragmentSampled,
                    vk::ImageUse::ComputeSampled, mapLayers);
-  pass_.record(cmd, profiler, strandLimits, lights.lights.size() <= 1, slot);
+  pass_.record(cmd, profiler, sources.strandLimits, sources.shading, slot);
   vk::bufferBarrier(ctx_, cmd, lightSpace, vk::BufferUse::ComputeRead, vk::BufferUse::GraphicsRead);
   vk::imageBarrier(ctx_, cmd, maps, VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::ComputeSampled,
                    vk::ImageUse::FragmentSampled, mapLayers);

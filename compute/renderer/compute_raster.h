@@ -57,10 +57,13 @@ class ComputeRaster {
   compute::ShadingWriter shadingWriter(std::size_t source) const;
   // The first view of `frame`: the stale shading bindings of its slot rewritten.
   void rebindStale(std::uint64_t frame, std::uint32_t slot);
-  // Each instance's frame block for the view (strands widened by its level of detail); returns the strands
-  // each draws.
-  std::vector<std::uint32_t> recordFrameBlocks(VkCommandBuffer cmd, const View& view,
-                                               const render::FrameLights& lights) const;
+  // What each instance draws in a view: its strands (the level of detail's prefix) and its shade variant.
+  struct SourceFrames {
+    std::vector<std::uint32_t> strandLimits;
+    std::vector<compute::ShadeVariant> shading;
+  };
+  // Each instance's frame block for the view (strands widened by its level of detail).
+  SourceFrames recordFrameBlocks(VkCommandBuffer cmd, const View& view, const render::FrameLights& lights) const;
 
   const vk::Context& ctx_;
   const render::ShadowMaps& shadows_;

@@ -91,15 +91,14 @@ void recordComputeOpacity(const vk::Context& ctx, VkCommandBuffer cmd, const ren
     }
   };
   using compute::OpacityBins;
+  const std::vector<std::uint32_t> modes = compute::splatModes(resolve.layout());
   if (resolve.layout() == OpacityBins::DeepTwoSplats) {  // every instance's first hair per texel before any
     begin("opacity first");                             // deep slice is measured from it
-    splatAll(gpu::OPACITY_SPLAT_MODE_FIRST, std::span<const VkBuffer>(&first, 1));
+    splatAll(modes.front(), std::span<const VkBuffer>(&first, 1));
     end();
     vk::bufferBarrier(ctx, cmd, first, vk::BufferUse::ComputeWrite, vk::BufferUse::ComputeRead);
   }
-  const std::uint32_t mode = resolve.layout() == OpacityBins::Global          ? gpu::OPACITY_SPLAT_MODE_PLAIN
-                             : resolve.layout() == OpacityBins::DeepTwoSplats ? gpu::OPACITY_SPLAT_MODE_DEEP
-                                                                               : gpu::OPACITY_SPLAT_MODE_DEEP_FINE;
+  const std::uint32_t mode = modes.back();
   // The fine splat writes the first hair too; the two-splat one only reads it (made visible above).
   const std::span<const VkBuffer> written(both, resolve.layout() == OpacityBins::DeepFine ? 2 : 1);
   begin("opacity splat");

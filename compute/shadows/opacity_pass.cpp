@@ -57,7 +57,8 @@ OpacityPass::OpacityPass(const vk::Context& ctx, const compute::StrandBuffers& s
   headDepthPipeline_ = vk::makeGraphicsPipeline(ctx, library, depth);
   if (const compute::OpacityResolvePass* resolve = maps.resolvePass())
     splat_ = std::make_unique<compute::OpacitySplatPass>(ctx, strands, maps.lightSpace(), resolve->bins(),
-                                                         resolve->first(), maps.settings().resolution, library);
+                                                         resolve->first(), maps.settings().resolution, resolve->layout(),
+                                                         library);
 }
 
 HeadSphere OpacityPass::headSphere(const glm::mat4& headToWorld) const {

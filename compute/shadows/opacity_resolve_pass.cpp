@@ -31,6 +31,15 @@ const char* resolveShader(VkFormat format) {
 }
 }  // namespace
 
+std::vector<std::uint32_t> splatModes(OpacityBins bins) {
+  switch (bins) {
+    case OpacityBins::Global: return {gpu::OPACITY_SPLAT_MODE_PLAIN};
+    case OpacityBins::DeepTwoSplats: return {gpu::OPACITY_SPLAT_MODE_FIRST, gpu::OPACITY_SPLAT_MODE_DEEP};
+    case OpacityBins::DeepFine: break;
+  }
+  return {gpu::OPACITY_SPLAT_MODE_DEEP_FINE};
+}
+
 VkDeviceSize OpacityResolvePass::binBytes(std::uint32_t resolution, OpacityBins layout) {
   const VkDeviceSize texels = VkDeviceSize(resolution) * resolution;
   if (layout != OpacityBins::DeepFine) return texels * gpu::OPACITY_SLICES * sizeof(std::uint32_t);
@@ -67,7 +76,8 @@ OpacityResolvePass::OpacityResolvePass(const vk::Context& ctx, std::uint32_t res
     sets_.push_back(std::move(set));
   }
   pipeline_ = vk::makeComputePipeline(ctx, library, resolveShader(format), gpu::OPACITY_RESOLVE_WORKGROUP_SIZE,
-                                      {sets_.at(0).layout()}, sizeof(gpu::OpacityResolvePush), "opacity resolve");
+                                      {sets_.at(0).layout()}, sizeof(gpu::OpacityResolvePush), "opacity resolve",
+                                      {static_cast<std::uint32_t>(layout)});  // constant_id 0: the bins' layout
 }
 
 void OpacityResolvePass::recordClear(VkCommandBuffer cmd) const {
@@ -76,7 +86,7 @@ void OpacityResolvePass::recordClear(VkCommandBuffer cmd) const {
 }
 
 void OpacityResolvePass::recordResolve(VkCommandBuffer cmd, std::uint32_t slot) const {
-  const gpu::OpacityResolvePush push{resolution_, static_cast<std::uint32_t>(layout_)};
+  const gpu::OpacityResolvePush push{resolution_, 0};
   pipeline_->bind(cmd, sets_.at(slot).set());
   pipeline_->push(cmd, push);
   pipeline_->dispatch(cmd, resolution_ * resolution_);

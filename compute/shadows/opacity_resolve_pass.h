@@ -30,6 +30,10 @@ enum class OpacityBins : std::uint32_t {
   DeepFine = gpu::OPACITY_RESOLVE_DEEP_FINE,  // OPACITY_DEEP_BINS per texel: _DEEP_FINE alone
 };
 
+// The splat modes (gpu::OPACITY_SPLAT_MODE_*) that fill bins of this layout, in the order they run: the mode
+// that adds the fragments last, after _FIRST where the deep slices need every instance's first hair first.
+std::vector<std::uint32_t> splatModes(OpacityBins bins);
+
 class OpacityResolvePass {
  public:
   // The bins' size for a map resolution, and whether the device can bind them (maxStorageBufferRange).

@@ -14,8 +14,10 @@
 #include <glm/glm.hpp>
 
 #include <memory>
+#include <utility>
 #include <vector>
 
+#include "compute/shadows/opacity_resolve_pass.h"
 #include "compute/strands/strand_buffers.h"
 #include "engine/vk/buffer.h"
 #include "engine/vk/descriptors.h"
@@ -32,16 +34,17 @@ struct SplatFootprint {
 
 class OpacitySplatPass {
  public:
-  // lightSpace: gpu::LightSpace per slot; bins: OpacityResolvePass::binBytes of the form in effect; first:
-  // uint[resolution^2] (deep maps); all with storage usage, all outliving the pass.
+  // lightSpace: gpu::LightSpace per slot; bins: OpacityResolvePass::binBytes of `layout`; first:
+  // uint[resolution^2] (deep maps); all with storage usage, all outliving the pass. Builds a pipeline for each
+  // of the layout's splatModes().
   OpacitySplatPass(const vk::Context& ctx, const StrandBuffers& strands, const vk::Buffer& lightSpace,
-                   const vk::Buffer& bins, const vk::Buffer& first, std::uint32_t resolution,
+                   const vk::Buffer& bins, const vk::Buffer& first, std::uint32_t resolution, OpacityBins layout,
                    vk::PipelineLibrary* library = nullptr);
   OpacitySplatPass(const OpacitySplatPass&) = delete;
   OpacitySplatPass& operator=(const OpacitySplatPass&) = delete;
 
-  // mode: gpu::OPACITY_SPLAT_MODE_* (deep maps: _DEEP_FINE; where the fine bins do not fit, _FIRST for
-  // every instance, a barrier, then _DEEP).
+  // mode: one of splatModes(layout), gpu::OPACITY_SPLAT_MODE_* (deep maps: _DEEP_FINE; where the fine bins do
+  // not fit, _FIRST for every instance, a barrier, then _DEEP); another throws hp::Error.
   // strandLimit: the level of detail's prefix of the strands splatted (strandsWithin).
   void record(VkCommandBuffer cmd, const SplatFootprint& footprint, std::uint32_t mode,
               std::uint32_t strandLimit = kAllStrands) const;
@@ -56,6 +59,8 @@ class OpacitySplatPass {
   std::uint32_t resolution_;
   std::uint32_t verticesPerStrand_;
   std::vector<Chunk> chunks_;
-  std::shared_ptr<const vk::ComputePipeline> pipeline_;
+  const vk::ComputePipeline& pipeline(std::uint32_t mode) const;
+
+  std::vector<std::pair<std::uint32_t, std::shared_ptr<const vk::ComputePipeline>>> pipelines_;  // per mode
 };
 }  // namespace hp::compute

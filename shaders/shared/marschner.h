@@ -40,6 +40,18 @@ HP_CONST(uint, MARSCHNER_MODE_LUT_PAPER, 1u)  // the paper's two RGBA8 128x128 t
 HP_CONST(uint, MARSCHNER_MODE_LUT_FLOAT, 2u)  // three RGBA16F textures, separate lobes
 HP_CONST(uint, MARSCHNER_MODE_LUT_PHYSICAL, 3u)  // the energy-conserving model (docs/THEORY.md §4), RGBA16F
 
+// The fibre a hair shading pipeline is built for: constant_id 1 of the shaders that include hair_shading.glsl.
+// HAIR_FIBRE_RUNTIME reads the model from MarschnerParams.control.x and the scattering from RenderFrame.options.z
+// (every model's code in the pipeline); hairFibre() fixes both, so the compiler leaves the other models out.
+// lavapipe runs both sides of a branch under a mask, so there that code costs as if it ran (the compute
+// raster's shade pass: ~20 ms of 75 on the default frame, docs/PERFORMANCE.md).
+HP_CONST(uint, HAIR_FIBRE_RUNTIME, 0xFFFFFFFFu)
+HP_CONST(uint, HAIR_FIBRE_MODE_MASK, 0xFu)   // the MARSCHNER_MODE_* of a fixed fibre
+HP_CONST(uint, HAIR_FIBRE_DUAL, 0x10u)       // with dual scattering (the physical model only)
+HP_FN uint hairFibre(uint mode, bool dualScattering) {
+  return mode | (dualScattering && mode == MARSCHNER_MODE_LUT_PHYSICAL ? HAIR_FIBRE_DUAL : 0u);
+}
+
 // `paper` mode: M (RGBA8) indexed by (sin theta_i, sin theta_r) * 0.5 + 0.5,
 // N (RGBA8) indexed by (cos phi * 0.5 + 0.5, cos theta_d). Both square.
 HP_CONST(uint, MARSCHNER_PAPER_LUT_SIZE, 128u)

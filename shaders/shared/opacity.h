@@ -128,15 +128,15 @@ struct OpacitySplatPush {
   uint verticesPerStrand;  // Q
   uint segmentCount;       // segments in this chunk: strands x (Q - 1)
   uint resolution;         // map texels per side
-  uint mode;               // OPACITY_SPLAT_MODE_*
   uint slot;               // the light's shadow slot: which LightSpace of the buffer
+  uint pad0;
   uint pad1;
   uint pad2;
 };
 
 struct OpacityResolvePush {
   uint resolution;         // map texels per side
-  uint deep;               // OPACITY_RESOLVE_*: which bins the splats filled
+  uint pad0;
 };
 HP_END
 

@@ -23,46 +23,16 @@ constexpr VkExtent2D kExtent{64, 48};
 constexpr float kFov = 0.8f;
 constexpr std::uint32_t kQ = 4;
 
-// A straight strand in pixel space at one view depth, `widthPixels` wide (before the taper).
-struct PixelStrand {
-  glm::vec2 from, to;
-  float depth = 1.0f;
-  float widthPixels = 1.0f;
-  float colorScale = 1.0f;
-};
+using hp::test::PixelStrand;
 
-// Writes the strands into buffers made for that many strands (guides only, Q = 4).
 void uploadStrands(const hp::vk::Context& ctx, const hp::compute::StrandBuffers& buffers,
                    const hp::CameraMatrices& camera, const std::vector<PixelStrand>& strands) {
-  std::vector<glm::vec4> positions, tangents;
-  std::vector<hp::gpu::StrandAttributes> attributes;
-  for (std::size_t s = 0; s < strands.size(); ++s) {
-    const PixelStrand& p = strands[s];
-    const glm::vec3 a = hp::test::worldAtPixel(camera, kExtent, p.from, p.depth);
-    const glm::vec3 b = hp::test::worldAtPixel(camera, kExtent, p.to, p.depth);
-    for (std::uint32_t j = 0; j < kQ; ++j) {
-      const float v = float(j) / float(kQ - 1);
-      positions.emplace_back(glm::mix(a, b, v), v);
-      tangents.emplace_back(a == b ? glm::vec3(1.0f, 0.0f, 0.0f) : glm::normalize(b - a), 0.0f);
-    }
-    // The rig's root width is one pixel at unit depth: the scale makes it widthPixels at this depth.
-    attributes.push_back({0.5f, p.widthPixels * p.depth, p.colorScale, std::uint32_t(s)});
-  }
-  const auto& chunk = buffers.chunks().front();
-  hp::vk::upload<glm::vec4>(ctx, chunk.positions, positions, hp::vk::BufferUse::ComputeRead);
-  hp::vk::upload<glm::vec4>(ctx, chunk.tangents, tangents, hp::vk::BufferUse::ComputeRead);
-  hp::vk::upload<hp::gpu::StrandAttributes>(ctx, chunk.attributes, attributes, hp::vk::BufferUse::ComputeRead);
+  hp::test::uploadPixelStrands(ctx, buffers, camera, kExtent, strands);
 }
 
 std::unique_ptr<hp::compute::StrandBuffers> makeStrands(const hp::vk::Context& ctx, const hp::CameraMatrices& camera,
                                                         const std::vector<PixelStrand>& strands) {
-  hp::compute::StrandOptions options;
-  options.verticesPerStrand = kQ;
-  options.guidesOnly = true;
-  auto buffers = std::make_unique<hp::compute::StrandBuffers>(ctx, std::uint32_t(strands.size()), 2,
-                                                               hp::InterpolationTopology{}, options);
-  uploadStrands(ctx, *buffers, camera, strands);
-  return buffers;
+  return hp::test::makePixelStrands(ctx, camera, kExtent, strands, kQ);
 }
 
 hp::render::LookSettings rigLook(const hp::CameraMatrices& camera, float tipFraction = 1.0f) {

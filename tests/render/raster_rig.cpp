@@ -21,6 +21,41 @@ render::OpacitySettings shadowsOff() {
 }
 }  // namespace
 
+void uploadPixelStrands(const vk::Context& ctx, const compute::StrandBuffers& buffers, const CameraMatrices& camera,
+                        VkExtent2D extent, const std::vector<PixelStrand>& strands) {
+  const std::uint32_t q = buffers.layout().verticesPerStrand;
+  std::vector<glm::vec4> positions, tangents;
+  std::vector<gpu::StrandAttributes> attributes;
+  for (std::size_t s = 0; s < strands.size(); ++s) {
+    const PixelStrand& p = strands[s];
+    const glm::vec3 a = worldAtPixel(camera, extent, p.from, p.depth);
+    const glm::vec3 b = worldAtPixel(camera, extent, p.to, p.depth);
+    for (std::uint32_t j = 0; j < q; ++j) {
+      const float v = float(j) / float(q - 1);
+      positions.emplace_back(glm::mix(a, b, v), v);
+      tangents.emplace_back(a == b ? glm::vec3(1.0f, 0.0f, 0.0f) : glm::normalize(b - a), 0.0f);
+    }
+    // The look's root width is one pixel at unit depth: the scale makes it widthPixels at this depth.
+    attributes.push_back({0.5f, p.widthPixels * p.depth, p.colorScale, std::uint32_t(s)});
+  }
+  const auto& chunk = buffers.chunks().front();
+  vk::upload<glm::vec4>(ctx, chunk.positions, positions, vk::BufferUse::ComputeRead);
+  vk::upload<glm::vec4>(ctx, chunk.tangents, tangents, vk::BufferUse::ComputeRead);
+  vk::upload<gpu::StrandAttributes>(ctx, chunk.attributes, attributes, vk::BufferUse::ComputeRead);
+}
+
+std::unique_ptr<compute::StrandBuffers> makePixelStrands(const vk::Context& ctx, const CameraMatrices& camera,
+                                                         VkExtent2D extent, const std::vector<PixelStrand>& strands,
+                                                         std::uint32_t verticesPerStrand) {
+  compute::StrandOptions options;
+  options.verticesPerStrand = verticesPerStrand;
+  options.guidesOnly = true;
+  auto buffers = std::make_unique<compute::StrandBuffers>(ctx, std::uint32_t(strands.size()), 2,
+                                                          InterpolationTopology{}, options);
+  uploadPixelStrands(ctx, *buffers, camera, extent, strands);
+  return buffers;
+}
+
 CameraMatrices rigCamera(VkExtent2D extent, float fovY) {
   CameraMatrices c;
   c.fovY = fovY;
@@ -43,12 +78,12 @@ float ndcDepth(const CameraMatrices& camera, float depth) {
 
 RasterRig::RasterRig(const vk::Context& c, const compute::StrandBuffers& strands, VkExtent2D e,
                      const CameraMatrices& camera, const render::LookSettings& look, const LightSpec& light,
-                     const compute::RasterSettings& settings)
+                     const compute::RasterSettings& settings, LutMode fibre)
     : ctx(c),
       extent(e),
       frame(render::makeRenderFrame(camera, e, render::assignShadowSlots(std::span(&light, 1), 1), HairMaterial{}, look, strands.layout(),
                                     shadowsOff())),
-      marschner(c, HairMaterial{}, LutMode::Float),
+      marschner(c, HairMaterial{}, fibre),
       frameBlock(c, sizeof(gpu::RenderFrame), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                  vk::MemoryKind::DeviceLocal, "rig frame"),
       shadows(c, shadowsOff()),
@@ -83,6 +118,19 @@ void RasterRig::run(float headNdcDepth, bool binOnly) {
     vk::imageBarrier(ctx, cmd, shadows.image().handle(), VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::ComputeSampled,
                      vk::ImageUse::FragmentSampled, gpu::OPACITY_LAYERS);
   }, "raster rig");
+}
+
+void RasterRig::rerunFine(std::span<const compute::ShadeVariant> shading) {
+  vk::submitAndWait(ctx, [&](VkCommandBuffer cmd) {
+    vk::imageBarrier(ctx, cmd, shadows.image().handle(), VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::FragmentSampled,
+                     vk::ImageUse::ComputeSampled, gpu::OPACITY_LAYERS);
+    for (const vk::Image* image : {&pass->output(), &pass->nearOutput(), &pass->nearMask(), &pass->motionOutput()})
+      vk::imageBarrier(ctx, cmd, image->handle(), VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::FragmentSampled,
+                       vk::ImageUse::ComputeStorageWrite);
+    pass->recordFine(cmd, nullptr, shading);
+    vk::imageBarrier(ctx, cmd, shadows.image().handle(), VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::ComputeSampled,
+                     vk::ImageUse::FragmentSampled, gpu::OPACITY_LAYERS);
+  }, "raster rig (fine again)");
 }
 
 std::vector<glm::vec4> RasterRig::image() const {
