@@ -83,38 +83,64 @@ ivec2 centresIn(float lo, float hi) {
   return ivec2(clamp(ceil(lo - 0.5), 0.0, n), clamp(ceil(hi - 0.5), 0.0, n) - 1.0);
 }
 
-// Walks the major axis u; at each column centre the rectangle spans |v - line(u)| <= half its width
-// over cos, cut by the ends (0 <= (p - a).d < |d|^2). At most 2 texels per column.
+// A segment's 1-texel-wide rectangle in the frame of its major axis u (x or y of the map): its start, its
+// direction and what each column's test takes.
+struct Rectangle {
+  bool xMajor;
+  vec2 start, dir;
+  float len2, halfV, slope, invDirY;
+};
+
+// The rows (minor-axis texel centres) of column i: within half the width over cos of the line, cut by the ends
+// (0 <= (p - a).d < |d|^2) and the map. At most 2; none past an end.
+ivec2 rowsOf(Rectangle r, int i) {
+  float du = float(i) + 0.5 - r.start.x;
+  float line = r.start.y + du * r.slope;
+  float lo = line - r.halfV, hi = line + r.halfV;
+  if (r.dir.y != 0.0) {
+    float v0 = r.start.y - du * r.dir.x * r.invDirY, v1 = r.start.y + (r.len2 - du * r.dir.x) * r.invDirY;
+    lo = max(lo, min(v0, v1));
+    hi = min(hi, max(v0, v1));
+  } else if (!(du * r.dir.x >= 0.0 && du * r.dir.x < r.len2)) {
+    return ivec2(0, -1);
+  }
+  return centresIn(lo, hi);
+}
+
+// Walks the major axis u, column by column, one fragment per iteration: the lanes of a SIMD vector (8 on
+// lavapipe) each take their own segment's next fragment, so the vector runs as many iterations as its
+// longest segment has fragments rather than, per column, as many as the column with most rows.
 void splat(End a, End b) {
   vec2 d = b.texel - a.texel;
   float len2 = dot(d, d);
   if (!(len2 > 1.0e-12 && len2 < 1.0e30)) return;  // a point, or not finite
-  bool xMajor = abs(d.x) >= abs(d.y);
-  vec2 start = xMajor ? a.texel : a.texel.yx;
-  vec2 dir = xMajor ? d : d.yx;
+  Rectangle r;
+  r.xMajor = abs(d.x) >= abs(d.y);
+  r.start = r.xMajor ? a.texel : a.texel.yx;
+  r.dir = r.xMajor ? d : d.yx;
+  r.len2 = len2;
   float len = sqrt(len2), invLen2 = 1.0 / len2;
-  float halfV = 0.5 * len / abs(dir.x);
-  float padU = 0.5 * abs(dir.y) / len;
+  r.halfV = 0.5 * len / abs(r.dir.x);
+  float padU = 0.5 * abs(r.dir.y) / len;
   // Per segment, not per column: lavapipe does not turn a division by a loop invariant into a product.
-  float slope = dir.y / dir.x, invDirY = dir.y != 0.0 ? 1.0 / dir.y : 0.0;
-  ivec2 columns = centresIn(min(start.x, start.x + dir.x) - padU, max(start.x, start.x + dir.x) + padU);
-  for (int i = columns.x; i <= columns.y; ++i) {
-    float du = float(i) + 0.5 - start.x;
-    float line = start.y + du * slope;
-    float lo = line - halfV, hi = line + halfV;
-    if (dir.y != 0.0) {
-      float v0 = start.y - du * dir.x * invDirY, v1 = start.y + (len2 - du * dir.x) * invDirY;
-      lo = max(lo, min(v0, v1));
-      hi = min(hi, max(v0, v1));
-    } else if (!(du * dir.x >= 0.0 && du * dir.x < len2)) {
-      continue;
-    }
-    ivec2 rows = centresIn(lo, hi);
-    for (int j = rows.x; j <= rows.y; ++j) {
-      ivec2 texel = xMajor ? ivec2(i, j) : ivec2(j, i);
+  r.slope = r.dir.y / r.dir.x;
+  r.invDirY = r.dir.y != 0.0 ? 1.0 / r.dir.y : 0.0;
+  ivec2 columns = centresIn(min(r.start.x, r.start.x + r.dir.x) - padU, max(r.start.x, r.start.x + r.dir.x) + padU);
+  int i = columns.x;
+  ivec2 rows = rowsOf(r, i);
+  int j = rows.x;
+  while (i <= columns.y) {
+    if (j <= rows.y) {  // an empty column (past an end, off the map) only moves on
+      ivec2 texel = r.xMajor ? ivec2(i, j) : ivec2(j, i);
       float t = clamp(dot(vec2(texel) + 0.5 - a.texel, d) * invLen2, 0.0, 1.0);
       float w = 1.0 / mix(a.invW, b.invW, t);
       addFragment(texel, mix(a.sOverW, b.sOverW, t) * w, mix(a.opacityOverW, b.opacityOverW, t) * w);
+    }
+    if (j < rows.y) {
+      ++j;
+    } else {
+      rows = rowsOf(r, ++i);
+      j = rows.x;
     }
   }
 }
