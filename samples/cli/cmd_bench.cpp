@@ -208,7 +208,8 @@ nlohmann::json toJson(const hp::cli::FrameResult& r) {
           {"lut_mode", hp::lutModeName(r.c.lutMode)},
           {"scattering", hp::render::scatteringName(r.c.scattering)},
           {"opacity_raster", hp::render::opacityRasterName(r.opacityRaster)},
-          {"frame_ms", r.passes.at("frame").medianMs}, {"copy_gb_per_s", copyGbs},
+          {"frame_ms", r.passes.at("frame").medianMs}, {"frame_min_ms", r.passes.at("frame").minMs},
+          {"frame_max_ms", r.passes.at("frame").maxMs}, {"copy_gb_per_s", copyGbs},
           {"copy_transfer_gb_per_s", hp::vk::gigabytesPerSecond(r.copyAlone.bytes, r.copyAlone.medianMs)},
           {"copy_compute_gb_per_s", hp::vk::gigabytesPerSecond(r.copyAlone.computeBytes, r.copyAlone.computeMs)},
           {"copy_runs", r.copyAlone.runs},             {"copy_stable", r.copyAlone.stable},
@@ -221,11 +222,12 @@ nlohmann::json toJson(const hp::cli::FrameResult& r) {
 }
 
 void printText(const nlohmann::json& row) {
-  std::printf("%u strands (LOD %.2f, %u shadowed lights, groom %s), %ux%u, %s: frame %.1f ms, host %.1f ms per frame, resident "
-              "%.1f MiB (%+.2f MiB per frame)\n",
+  std::printf("%u strands (LOD %.2f, %u shadowed lights, groom %s), %ux%u, %s: frame %.1f ms (%.1f - %.1f), host %.1f ms per "
+              "frame, resident %.1f MiB (%+.2f MiB per frame)\n",
               row["strands"].get<unsigned>(), row["lod_fraction"].get<double>(), row["shadowed_lights"].get<unsigned>(),
               row["groom"].get<std::string>().c_str(), row["width"].get<unsigned>(), row["height"].get<unsigned>(), row["raster"].get<std::string>().c_str(),
-              row["frame_ms"].get<double>(), row["host_frame_ms"].get<double>(), row["resident_mib"].get<double>(),
+              row["frame_ms"].get<double>(), row["frame_min_ms"].get<double>(), row["frame_max_ms"].get<double>(),
+              row["host_frame_ms"].get<double>(), row["resident_mib"].get<double>(),
               row["resident_growth_mib_per_frame"].get<double>());
   std::printf("  copy yardstick %.2f GB/s alone (transfer %.2f, compute %.2f; transfer: %u submissions, %s), %.2f GB/s inside the frame%s\n",
               row["copy_gb_per_s"].get<double>(), row["copy_transfer_gb_per_s"].get<double>(),
