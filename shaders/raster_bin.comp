@@ -51,18 +51,26 @@ bool binSegment(uint v, uint k, uint segments, out Footprint f) {
   uint colorMid = MODE == RASTER_MODE_SCATTER ? colorMidFlag(v, k, segments) : 0u;
   uint id = v | (k + 1u == segments ? RASTER_LAST_SEGMENT : 0u);
   bool listed = false;
-  for (uint ty = f.tileMin.y; ty <= f.tileMax.y; ++ty)
-    for (uint tx = f.tileMin.x; tx <= f.tileMax.x; ++tx) {
-      vec2 span;
-      if (!tileTouched(f, uvec2(tx, ty), span)) continue;
-      listed = true;
-      uint tile = ty * params.tilesX + tx;
-      uint key = tile * RASTER_DEPTH_BINS + f.bin;
-      uint slot = atomicAdd(counts[key], 1u);
-      if (MODE != RASTER_MODE_SCATTER || slot >= keys[key].y) continue;
-      uint index = tileListStart(tile) + keys[key].x + slot;
-      if (index < params.capacity) list[index] = uvec2(id, footprintBlocks(f, uvec2(tx, ty), span) | colorMid);
+  // The footprint's tiles row by row in one loop: the lanes of a SIMD vector (lavapipe) each take their own
+  // segment's next tile, so a vector runs as many iterations as its largest footprint has tiles rather than its
+  // tallest one's rows times its widest one's columns. (No integer division: lavapipe runs it lane by lane.)
+  uvec2 size = f.tileMax - f.tileMin + 1u;
+  uint tx = f.tileMin.x - 1u, ty = f.tileMin.y;  // one before the first tile (wraps at 0: the step below undoes it)
+  for (uint n = 0u; n < size.x * size.y; ++n) {
+    if (++tx > f.tileMax.x) {
+      tx = f.tileMin.x;
+      ++ty;
     }
+    vec2 span;
+    if (!tileTouched(f, uvec2(tx, ty), span)) continue;
+    listed = true;
+    uint tile = ty * params.tilesX + tx;
+    uint key = tile * RASTER_DEPTH_BINS + f.bin;
+    uint slot = atomicAdd(counts[key], 1u);
+    if (MODE != RASTER_MODE_SCATTER || slot >= keys[key].y) continue;
+    uint index = tileListStart(tile) + keys[key].x + slot;
+    if (index < params.capacity) list[index] = uvec2(id, footprintBlocks(f, uvec2(tx, ty), span) | colorMid);
+  }
   return listed;
 }
 
