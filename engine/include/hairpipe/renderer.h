@@ -110,7 +110,8 @@ class Instance {
   // CPU) while the instance keeps drawing its current material; the first recordUpdate or recordShadows
   // after they are done applies it (materialPending() is false from then). Before the first frame it
   // applies at once. A later setMaterial replaces a pending one. A raster target holding the instance is
-  // kept (it takes the new tables frame slot by frame slot).
+  // kept (it takes the new tables frame slot by frame slot; a new fibre model shades with its run-time form,
+  // the same image, slower on CPU devices, until setRasterTarget: docs/API.md "Frames in flight, lifetimes").
   Status setMaterial(const Material& material, FibreModel fibre) noexcept;
   bool materialPending() const noexcept;
   Status setLook(const LookSettings& look) noexcept;
