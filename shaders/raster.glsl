@@ -25,7 +25,7 @@ Footprint segmentFootprint(uint v) {
   float reach = 0.5 * max(f.a.w, f.b.w) + 0.75;
   vec2 lo = max(min(f.a.xy, f.b.xy) - reach, vec2(0.0));
   vec2 hi = min(max(f.a.xy, f.b.xy) + reach, vec2(params.width, params.height) - 1e-3);
-  if (any(greaterThan(lo, hi))) return f;
+  if (!all(lessThanEqual(lo, hi))) return f;  // off-screen, or not a number (the tile loops stay bounded)
   f.visible = true;
   vec2 ab = f.b.xy - f.a.xy;
   f.invAxis = vec2(abs(ab.x) > 1e-6 ? 1.0 / ab.x : 0.0, abs(ab.y) > 1e-6 ? 1.0 / ab.y : 0.0);

@@ -204,8 +204,8 @@ StrandRasterPass::StrandRasterPass(const vk::Context& ctx, std::span<const Raste
   const std::vector<std::uint32_t> motion = {settings.motion ? 1u : 0u};  // constant_id 0: MOTION
   project_ = vk::ComputePipeline(ctx, "raster_project.comp", gpu::RASTER_WORKGROUP_SIZE, {setLayout}, 0,
                                  "raster project", motion, cache);
-  // The shade pass reads the head's depth (the sky on the fibres' far side), of the head's sample count; its
-  // variants are built on first use or by prepareShading().
+  // The shade pass reads the head's depth (the sky on the fibres' far side), of the head's sample count; the
+  // run-time fibre's builds are made here, a fixed fibre's by prepareShading() (ShadePipelines).
   shade_.emplace(ctx, multisampled() ? "raster_shade_ms.comp" : "raster_shade.comp", setLayout, cache);
   tileDepthPipeline_ = pipeline(multisampled() ? "raster_tile_depth_ms.comp" : "raster_tile_depth.comp",
                                 gpu::RASTER_WORKGROUP_SIZE, "raster tile depth");

@@ -115,7 +115,7 @@ class StrandRasterPass {
 
   // strandLimits: per source, the level of detail's prefix of its strands drawn (compute::strandsWithin);
   // empty: all of them. shading: per source, the shade pass's variant for its frame block and fibre
-  // (shadeVariantOf: the light loop left out for one light, the fibre compiled in; twice and ~1.3x as fast on
+  // (shadeVariantOf: the light loop left out for one light, the fibre compiled in; twice and ~1.4x as fast on
   // lavapipe); empty: the run-time fibre with the light loop for every source. A fibre not prepared takes the
   // run-time form (ShadePipelines). slot: the frame slot whose descriptor sets the frame binds.
   void record(VkCommandBuffer cmd, vk::GpuProfiler* profiler = nullptr,

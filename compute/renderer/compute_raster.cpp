@@ -86,7 +86,8 @@ bool ComputeRaster::holds(const HairInstance* instance) const {
 }
 
 ComputeRaster::SourceFrames ComputeRaster::recordFrameBlocks(VkCommandBuffer cmd, const View& view,
-                                                             const render::FrameLights& lights) const {
+                                                             const render::FrameLights& lights,
+                                                             std::uint32_t slot) const {
   SourceFrames sources;
   for (std::size_t i = 0; i < instances_.size(); ++i) {
     const HairInstance& instance = *instances_[i];
@@ -95,7 +96,11 @@ ComputeRaster::SourceFrames ComputeRaster::recordFrameBlocks(VkCommandBuffer cmd
     gpu::RenderFrame frame =
         instance.frameBlock(view.camera, view.extent, lights, lodLook(instance.settings().look, fraction));
     render::setViewMotion(frame, view.extent, view.jitter, view.previousViewProj);
-    sources.shading.push_back(compute::shadeVariantOf(frame, instance.marschner().params()));
+    // A slot whose sets still bind the instance's previous material (changed after this frame's first view)
+    // shades with the run-time fibre, which reads the model from the bound parameter block.
+    compute::ShadeVariant variant = compute::shadeVariantOf(frame, instance.marschner().params());
+    if (stale_[slot][i]) variant.fibre = gpu::HAIR_FIBRE_RUNTIME;
+    sources.shading.push_back(variant);
     const VkBuffer block = frames_[i].handle();
     vk::bufferBarrier(ctx_, cmd, block, vk::BufferUse::ComputeRead, vk::BufferUse::TransferDst);
     ctx_.fn().vkCmdUpdateBuffer(cmd, block, 0, sizeof(frame), &frame);
@@ -108,7 +113,7 @@ void ComputeRaster::record(VkCommandBuffer cmd, std::uint64_t frame, const View&
                            const render::FrameLights& lights, vk::GpuProfiler* profiler) {
   const auto slot = std::uint32_t(frame % stale_.size());  // the frame slot: one per frame in flight
   rebindStale(frame, slot);
-  const SourceFrames sources = recordFrameBlocks(cmd, view, lights);
+  const SourceFrames sources = recordFrameBlocks(cmd, view, lights, slot);
   // The graphics readers' states (recordShadows) extended to compute for the pass, then back, so the
   // next frame's barriers (which wait on vertex/fragment readers) still cover these reads.
   const VkBuffer lightSpace = shadows_.lightSpace().handle();

@@ -62,8 +62,10 @@ class ComputeRaster {
     std::vector<std::uint32_t> strandLimits;
     std::vector<compute::ShadeVariant> shading;
   };
-  // Each instance's frame block for the view (strands widened by its level of detail).
-  SourceFrames recordFrameBlocks(VkCommandBuffer cmd, const View& view, const render::FrameLights& lights) const;
+  // Each instance's frame block for the view (strands widened by its level of detail); `slot`: the frame slot
+  // whose descriptor sets the view binds.
+  SourceFrames recordFrameBlocks(VkCommandBuffer cmd, const View& view, const render::FrameLights& lights,
+                                 std::uint32_t slot) const;
 
   const vk::Context& ctx_;
   const render::ShadowMaps& shadows_;

@@ -1,8 +1,9 @@
 // The compute raster's shade variants (compute/raster/shade_variant.h): a fibre compiled into the shade pass
 // must shade exactly as the run-time form that reads it from the parameter blocks. On the device: over the
 // same tile lists (one binning, the shade and fine steps run twice), each fibre model, and the physical one
-// with both scatterings, lit by the sun, the fixed fibre's image against the run-time one's; and the models'
-// images differ from each other, so the comparison would see a variant that shaded another fibre.
+// with both scatterings, lit by the sun, the fixed fibre's image against the run-time one's, and a fibre not
+// prepared shading with the run-time form; the models' images differ from each other, so the comparison
+// would see a variant that shaded another fibre.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -78,10 +79,8 @@ TEST(ShadeVariant, TakesTheLightLoopAndTheFibreTheFrameAndParametersGive) {
   // Dual scattering belongs to the physical model: the others ignore the frame's choice, as at run time.
   for (std::uint32_t mode : {MARSCHNER_MODE_DIRECT, MARSCHNER_MODE_LUT_PAPER, MARSCHNER_MODE_LUT_FLOAT})
     EXPECT_EQ(variant(1, RENDER_SCATTERING_DUAL, mode).fibre, mode) << "mode " << mode;
-  for (std::uint32_t fibre : {0u, 1u, 2u, 3u, 3u | HAIR_FIBRE_DUAL}) {
-    EXPECT_NE(fibre, HAIR_FIBRE_RUNTIME);
-    EXPECT_EQ(fibre & HAIR_FIBRE_MODE_MASK, fibre & ~HAIR_FIBRE_DUAL);
-  }
+  EXPECT_EQ(hairFibre(MARSCHNER_MODE_LUT_PHYSICAL, false), MARSCHNER_MODE_LUT_PHYSICAL);
+  EXPECT_EQ(hairFibre(MARSCHNER_MODE_LUT_PHYSICAL, true) & HAIR_FIBRE_MODE_MASK, MARSCHNER_MODE_LUT_PHYSICAL);
 }
 
 TEST_F(VulkanTest, AFibreCompiledIntoTheShadePassShadesAsTheRunTimeForm) {
@@ -107,6 +106,11 @@ TEST_F(VulkanTest, AFibreCompiledIntoTheShadePassShadesAsTheRunTimeForm) {
     const auto runTime = rig.image();
     const hp::compute::ShadeVariant variant = hp::compute::shadeVariantOf(rig.frame, rig.marschner.params());
     ASSERT_NE(variant.fibre, hp::gpu::HAIR_FIBRE_RUNTIME);
+    // Not prepared yet: the pass falls back to the run-time fibre (and builds nothing).
+    ASSERT_FALSE(rig.pass->shadingPrepared(variant)) << c.name;
+    rig.rerunFine(std::span(&variant, 1));
+    EXPECT_LE(compare(runTime, rig.image()).largest, kSame) << c.name << ": the fallback";
+    EXPECT_FALSE(rig.pass->shadingPrepared(variant)) << c.name;
     rig.pass->prepareShading(variant);
     ASSERT_TRUE(rig.pass->shadingPrepared(variant)) << c.name;
     rig.rerunFine(std::span(&variant, 1));
