@@ -91,7 +91,7 @@ void recordComputeOpacity(const vk::Context& ctx, VkCommandBuffer cmd, const ren
     }
   };
   using compute::OpacityBins;
-  const std::vector<std::uint32_t> modes = compute::splatModes(resolve.layout());
+  const std::span<const std::uint32_t> modes = compute::splatModes(resolve.layout());
   if (resolve.layout() == OpacityBins::DeepTwoSplats) {  // every instance's first hair per texel before any
     begin("opacity first");                             // deep slice is measured from it
     splatAll(modes.front(), std::span<const VkBuffer>(&first, 1));

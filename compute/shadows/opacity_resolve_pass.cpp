@@ -31,13 +31,16 @@ const char* resolveShader(VkFormat format) {
 }
 }  // namespace
 
-std::vector<std::uint32_t> splatModes(OpacityBins bins) {
+std::span<const std::uint32_t> splatModes(OpacityBins bins) {
+  static constexpr std::uint32_t kGlobal[] = {gpu::OPACITY_SPLAT_MODE_PLAIN};
+  static constexpr std::uint32_t kTwoSplats[] = {gpu::OPACITY_SPLAT_MODE_FIRST, gpu::OPACITY_SPLAT_MODE_DEEP};
+  static constexpr std::uint32_t kFine[] = {gpu::OPACITY_SPLAT_MODE_DEEP_FINE};
   switch (bins) {
-    case OpacityBins::Global: return {gpu::OPACITY_SPLAT_MODE_PLAIN};
-    case OpacityBins::DeepTwoSplats: return {gpu::OPACITY_SPLAT_MODE_FIRST, gpu::OPACITY_SPLAT_MODE_DEEP};
+    case OpacityBins::Global: return kGlobal;
+    case OpacityBins::DeepTwoSplats: return kTwoSplats;
     case OpacityBins::DeepFine: break;
   }
-  return {gpu::OPACITY_SPLAT_MODE_DEEP_FINE};
+  return kFine;
 }
 
 VkDeviceSize OpacityResolvePass::binBytes(std::uint32_t resolution, OpacityBins layout) {

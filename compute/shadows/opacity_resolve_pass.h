@@ -15,6 +15,7 @@
 #include "hairpipe_volk.h"
 
 #include <memory>
+#include <span>
 #include <vector>
 
 #include "engine/vk/buffer.h"
@@ -32,7 +33,7 @@ enum class OpacityBins : std::uint32_t {
 
 // The splat modes (gpu::OPACITY_SPLAT_MODE_*) that fill bins of this layout, in the order they run: the mode
 // that adds the fragments last, after _FIRST where the deep slices need every instance's first hair first.
-std::vector<std::uint32_t> splatModes(OpacityBins bins);
+std::span<const std::uint32_t> splatModes(OpacityBins bins);
 
 class OpacityResolvePass {
  public:
