@@ -4,7 +4,7 @@
 #include <chrono>
 #include <cstdio>
 
-#include "engine/core/hair/default_head.h"
+#include "samples/cli/frame_options.h"
 #include "samples/tools/hair_system.h"
 #include "samples/tools/host/process_use.h"
 #include "samples/tools/offscreen_renderer.h"
@@ -72,10 +72,13 @@ std::vector<LightSpec> benchLights(std::uint32_t count) {
 }  // namespace
 
 FrameResult benchFrame(const vk::Context& ctx, const FrameCase& c) {
-  DensityOptions density;
-  density.totalStrands = c.strands;
-  const HairAsset asset = buildDefaultHeadAsset(defaultHeadGrowth(), density);
-  const Scene scene;
+  Scene scene = c.scene ? *c.scene : Scene{};
+  scene.render.width = c.width;
+  scene.render.height = c.height;
+  scene.density.mode = c.ownStrands ? DensityOptions::Mode::Guides : DensityOptions::Mode::Total;
+  if (!c.ownStrands) scene.density.totalStrands = c.strands;
+  const HairAsset asset = buildSceneAsset(scene);
+  frameCamera(scene, asset);  // a model without a scene: the camera framed on its hair
   render::OffscreenRenderer renderer(ctx, c.width, c.height, c.msaa, c.raster);
   HairSystemSettings settings;
   settings.formats = renderer.formats();
@@ -90,6 +93,7 @@ FrameResult benchFrame(const vk::Context& ctx, const FrameCase& c) {
   settings.lutMode = c.lutMode;
   settings.material = c.material;
   settings.groom = c.groom ? scene.groom : GroomSettings{};
+  settings.simulation = scene.simulation;
   const std::vector<LightSpec> lights = benchLights(c.lights);
   settings.shadowedLights = shadowSlotsFor(lights);
   if (c.lodFraction < 1.0f) settings.lod = {true, 0.0f, 1e-3f, c.lodFraction};  // that fraction at any distance
@@ -131,6 +135,7 @@ FrameResult benchFrame(const vk::Context& ctx, const FrameCase& c) {
   }
   FrameResult r;
   r.c = c;
+  r.c.strands = hair.strands().layout().strandCount;  // the model's own count with ownStrands
   r.hostMs = vk::median(hostMs);
   r.residentMiB = residentAfter.back();
   // Over the second half of the timed frames: on lavapipe resident memory still grows for the first two

@@ -1,5 +1,5 @@
 #pragma once
-// Contract: the whole-frame benchmark behind `hairpipe bench`: the default head at one strand count,
+// Contract: the whole-frame benchmark behind `hairpipe bench`: the default head (or a scene or model) at one strand count,
 // resolution and raster path, every frame recorded as `hairpipe render` records it (simulate,
 // tessellate, interpolate, bounds, opacity, head, hair raster/shade, composite, tonemap) plus a
 // vkCmdCopyBuffer reference in the same submission; one warm-up frame, then `frames` timed frames; then
@@ -10,6 +10,7 @@
 // submission's wall time) and the copy inside the frame within 2x of alone; otherwise no bandwidth is
 // derived and `unresolvedBecause` says why.
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -23,7 +24,9 @@
 
 namespace hp::cli {
 struct FrameCase {
-  std::uint32_t strands = 20000;
+  std::shared_ptr<const Scene> scene;  // what is drawn: a scene file or model (loadScene); null: the default head
+  bool ownStrands = false;  // one render strand on every guide (a model's own strands) instead of `strands`
+  std::uint32_t strands = 20000;  // render strands in total (DensityOptions::Total)
   std::uint32_t width = 640, height = 480;
   RasterMode raster = RasterMode::Compute;
   std::uint32_t msaa = 4;  // the head's samples (both paths) and the graphics path's hair samples

@@ -1,6 +1,7 @@
 // `hairpipe bench [--strands LIST] [--resolution WxH] [--frames N] [--raster LIST] [--msaa LIST]
 // [--skin-bounce off,on] [--scattering single,dual] [--lut-mode LIST] [--groom scene,none] [material options] [--json F]
-// [--plot F.svg]`: the whole frame on the default head (bench_frame.h) for each strand count and raster
+// [--plot F.svg] [--scene F | --model F [--units U] [--up A] [--mesh F]] [--own-strands]`: the whole frame on the
+// default head, or the scene or model (bench_frame.h), for each strand count and raster
 // path (once per --msaa value: the head's samples, and the graphics path's hair samples; once per fibre model
 // and scattering), after one warm-up frame: per pass the GPU-timestamp median (min/max) of N frames, the
 // frame total, each compute pass's achieved bytes/s as a fraction of a vkCmdCopyBuffer timed in the same frames, the host time and resident-memory growth per frame, the
@@ -23,6 +24,7 @@
 #include "samples/cli/bench_plot.h"
 #include "samples/cli/command.h"
 #include "samples/cli/material_options.h"
+#include "samples/cli/scene_options.h"
 
 namespace hp::cli::cmd_bench {  // per subcommand: file-local names stay apart in a unity build
 
@@ -44,7 +46,10 @@ struct BenchOptions {
   std::vector<std::string> grooms{"scene"};
   std::vector<std::uint32_t> shadowStrands{hp::render::OpacitySettings{}.shadowStrands};
   std::vector<float> shadingSpacings{hp::compute::RasterSettings{}.shadingSpacing};
-  hp::HairMaterial material;  // every case's (the material options)
+  hp::HairMaterial material;  // every case's (the material options; else the scene's)
+  bool materialGiven = false;
+  hp::cli::SceneOptions scene;  // --scene / --model (its --device and --validation unused: bench's own)
+  bool ownStrands = false;
   std::string json, plot, device;
 };
 
@@ -128,7 +133,7 @@ std::vector<hp::compute::FineWalk> fineWalks(const BenchOptions& o) {
   return out;
 }
 
-std::vector<hp::cli::FrameCase> cases(const BenchOptions& o) {
+std::vector<hp::cli::FrameCase> cases(const BenchOptions& o, const std::shared_ptr<const hp::Scene>& scene) {
   if (o.frames == 0 || o.frames > 1000) throw hp::Error("bench: --frames must be in [1, 1000]");
   for (float f : o.lodFractions)
     if (!(f > 0.0f && f <= 1.0f)) throw hp::Error("bench: --lod-fraction values must be in (0, 1], got " + std::to_string(f));
@@ -139,8 +144,10 @@ std::vector<hp::cli::FrameCase> cases(const BenchOptions& o) {
       throw hp::Error("bench: --bounce-samples values must be in [2, " + std::to_string(hp::gpu::MAX_VERTICES_PER_STRAND) +
                       "], got " + std::to_string(n));
   hp::cli::FrameCase base;
+  base.scene = scene;
+  base.ownStrands = o.ownStrands;
   base.frames = o.frames;
-  base.material = o.material;
+  base.material = o.materialGiven ? o.material : scene->material;
   parseResolution(o.resolution, base.width, base.height);
   base.opacityRaster = hp::render::parseOpacityRaster(o.opacityRaster);
   const auto shadingList = shadings(o);
@@ -155,8 +162,9 @@ std::vector<hp::cli::FrameCase> cases(const BenchOptions& o) {
       throw hp::Error("bench: --shading-spacing values must be in [0, " +
                       std::to_string(int(hp::compute::kMaxShadingSpacing)) + "] pixels, got " + std::to_string(f));
   std::vector<hp::cli::FrameCase> out;
-  for (std::uint32_t s : o.strands) {
-    if (s == 0 || s > 4'000'000) throw hp::Error("bench: --strands values must be in [1, 4000000]");
+  // --own-strands: one case per the rest, its strand count the model's (0 here).
+  for (std::uint32_t s : o.ownStrands ? std::vector<std::uint32_t>{0} : o.strands) {
+    if (!o.ownStrands && (s == 0 || s > 4'000'000)) throw hp::Error("bench: --strands values must be in [1, 4000000]");
     for (const std::string& r : o.raster) {
       const hp::RasterMode mode = hp::parseRasterMode(r);
       if (mode == hp::RasterMode::Auto) throw hp::Error("bench: --raster takes compute and/or graphics");
@@ -196,7 +204,9 @@ nlohmann::json toJson(const hp::cli::FrameResult& r) {
     }
     passes[name] = p;
   }
-  return {{"strands", r.c.strands},      {"width", r.c.width},          {"lod_fraction", r.c.lodFraction},
+  const std::string model = r.c.scene->source == hp::Scene{}.source ? "default" : r.c.scene->source;
+  return {{"model", model}, {"own_strands", r.c.ownStrands},
+          {"strands", r.c.strands},      {"width", r.c.width},          {"lod_fraction", r.c.lodFraction},
           {"shadowed_lights", r.c.lights},            {"bounce_samples", r.c.bounceSamples},
           {"fine_walk", hp::compute::fineWalkName(r.c.fineWalk)},
           {"fine_walk_run", hp::compute::fineWalkName(r.fineWalkRun)}, {"groom", r.c.groom ? "scene" : "none"},
@@ -222,9 +232,10 @@ nlohmann::json toJson(const hp::cli::FrameResult& r) {
 }
 
 void printText(const nlohmann::json& row) {
-  std::printf("%u strands (LOD %.2f, %u shadowed lights, groom %s), %ux%u, %s: frame %.1f ms (%.1f - %.1f), host %.1f ms per "
+  std::printf("%s: %u strands%s (LOD %.2f, %u shadowed lights, groom %s), %ux%u, %s: frame %.1f ms (%.1f - %.1f), host %.1f ms per "
               "frame, resident %.1f MiB (%+.2f MiB per frame)\n",
-              row["strands"].get<unsigned>(), row["lod_fraction"].get<double>(), row["shadowed_lights"].get<unsigned>(),
+              row["model"].get<std::string>().c_str(), row["strands"].get<unsigned>(),
+              row["own_strands"].get<bool>() ? " (its own)" : "", row["lod_fraction"].get<double>(), row["shadowed_lights"].get<unsigned>(),
               row["groom"].get<std::string>().c_str(), row["width"].get<unsigned>(), row["height"].get<unsigned>(), row["raster"].get<std::string>().c_str(),
               row["frame_ms"].get<double>(), row["frame_min_ms"].get<double>(), row["frame_max_ms"].get<double>(),
               row["host_frame_ms"].get<double>(), row["resident_mib"].get<double>(),
@@ -253,7 +264,8 @@ void writeText(const std::string& path, const std::string& text) {
 }
 
 void run(const BenchOptions& o) {
-  const auto list = cases(o);  // validate everything before touching the device
+  // Validate everything (the scene or model loads) before touching the device.
+  const auto list = cases(o, std::make_shared<const hp::Scene>(hp::cli::loadScene(o.scene)));
   auto ctx = hp::cli::createBenchContext(o.device, "bench");
   const auto& props = ctx->properties();
   nlohmann::json report = {{"device", props.deviceName},
@@ -280,7 +292,12 @@ void run(const BenchOptions& o) {
 void setup(CLI::App& app) {
   auto o = std::make_shared<BenchOptions>();
   CLI::App* cmd = hp::cli::benchCommand(app);  // the suites (bench sim, bench strands, ...) are its subcommands
-  cmd->add_option("--strands", o->strands, "Render strand counts, comma separated")->delimiter(',')->capture_default_str();
+  CLI::Option* strands =
+      cmd->add_option("--strands", o->strands, "Render strand counts, comma separated")->delimiter(',')->capture_default_str();
+  hp::cli::addModelOptions(*cmd, o->scene);
+  cmd->add_flag("--own-strands", o->ownStrands,
+                "Draw the model's own strands (one render strand on every guide) instead of --strands")
+      ->excludes(strands);
   cmd->add_option("--resolution", o->resolution, "Frame size WxH")->capture_default_str();
   cmd->add_option("--frames", o->frames, "Timed frames per case (median), after one warm-up")->capture_default_str();
   cmd->add_option("--raster", o->raster, "Raster paths: compute, graphics (comma separated)")->delimiter(',')
@@ -330,6 +347,7 @@ void setup(CLI::App& app) {
   cmd->add_option("--plot", o->plot, "Write an SVG of ms per pass against strand count to this file");
   cmd->add_option("--device", o->device, "Vulkan device: index or name substring (env HAIRPIPE_DEVICE)");
   cmd->callback([o, cmd] {
+    o->materialGiven = hp::cli::materialGiven(*cmd);
     if (cmd->get_subcommands().empty()) run(*o);  // otherwise a suite ran
   });
 }

@@ -203,7 +203,6 @@ hp::RenderRequest makeRenderRequest(const FrameOptions& o, const CLI::App& cmd) 
   return r;
 }
 
-// A model loaded without a scene: frame the camera on its hair (the orbit and elevation stay). Any
 // The character mesh and how the roots bound to it, on stderr and as JSON.
 nlohmann::json characterReport(const hp::HairAsset& asset) {
   const hp::CharacterMesh& m = *asset.character;
@@ -217,6 +216,7 @@ nlohmann::json characterReport(const hp::HairAsset& asset) {
           {"far_distance", b.farDistance}, {"root_distance_mean", b.meanDistance}, {"root_distance_max", b.maxDistance}};
 }
 
+// A model loaded without a scene: frame the camera on its hair (the orbit and elevation stay). Any
 // frame: refuse one in which no guide particle falls inside the view, naming why.
 nlohmann::json frameCamera(Scene& scene, const hp::HairAsset& asset) {
   nlohmann::json guessed = nlohmann::json::object();

@@ -9,6 +9,12 @@
 
 namespace hp::cli {
 void addSceneOptions(CLI::App& cmd, SceneOptions& options) {
+  addModelOptions(cmd, options);
+  cmd.add_option("--device", options.device, "Vulkan device: index or name substring (env HAIRPIPE_DEVICE)");
+  cmd.add_flag("--validation", options.validation, "Run with the Khronos validation layer; fail on any message");
+}
+
+void addModelOptions(CLI::App& cmd, SceneOptions& options) {
   auto* scene = cmd.add_option("--scene", options.scenePath, "Scene file (JSON; schema in engine/core/hair/README.md)");
   cmd.add_option("--model", options.model, "Model when no scene is given: default, FILE.hair, FILE.tfx or FILE.obj")
       ->excludes(scene);
@@ -17,8 +23,6 @@ void addSceneOptions(CLI::App& cmd, SceneOptions& options) {
   cmd.add_option("--mesh", options.mesh,
                  "Character mesh for the model (.obj, .ply, .gltf, .glb or .tfxmesh, in the model's units): drawn, "
                  "collided with, roots bound to it");
-  cmd.add_option("--device", options.device, "Vulkan device: index or name substring (env HAIRPIPE_DEVICE)");
-  cmd.add_flag("--validation", options.validation, "Run with the Khronos validation layer; fail on any message");
 }
 
 namespace {

@@ -25,6 +25,8 @@ struct SceneOptions {
 };
 
 void addSceneOptions(CLI::App& cmd, SceneOptions& options);
+// What to load alone (--scene, --model, --units, --up, --mesh): for a command with a device option of its own.
+void addModelOptions(CLI::App& cmd, SceneOptions& options);
 Scene loadScene(const SceneOptions& options);
 // `extensions` adds instance and device extensions (a windowed tool's surface and swapchain).
 std::unique_ptr<vk::Context> createContext(const SceneOptions& options, const vk::ContextOptions& extensions = {});

@@ -1,5 +1,5 @@
-// `hairpipe render --model FILE` without a scene: the guesses (units, up axis, camera) are said on
-// stderr and in --json, --units/--up override them, and a view with no hair in it is an error.
+// `hairpipe render --model FILE` (and `bench --model`) without a scene: the guesses (units, up axis, camera)
+// are said on stderr and in --json, --units/--up override them, and a view with no hair in it is an error.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -107,5 +107,42 @@ TEST(CliRenderModel, AModelWithManyStrandsDrawsItsOwnStrands) {
       }
       EXPECT_LT(worst, 1e-5) << strands;
     }
+  }
+}
+
+// `hairpipe bench --model FILE` times the frame of that model with its camera framed as render frames it:
+// --strands interpolated on it, or with --own-strands the file's own strands (the report names the model and
+// the count drawn); --own-strands with --strands, and a file of another kind, are refused before a frame runs.
+TEST(CliBenchModel, BenchesAModelWithItsOwnOrInterpolatedStrands) {
+  const auto model = centimetreZUpModel();
+  const auto json = freshTempPath("hairpipe_cli_bench_model.json");
+  for (const bool own : {true, false}) {
+    std::vector<std::string> args{"bench", "--raster", "compute", "--model", model.string(), "--resolution", "48x36",
+                                  "--frames", "1", "--groom", "none", "--json", json.string()};
+    const std::vector<std::string> strands = own ? std::vector<std::string>{"--own-strands"}
+                                                 : std::vector<std::string>{"--strands", "300"};
+    args.insert(args.end(), strands.begin(), strands.end());
+    const auto r = runCli(args);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.err.find("guessed units cm"), std::string::npos) << r.err;
+    std::ifstream in(json);
+    const nlohmann::json report = nlohmann::json::parse(in);
+    ASSERT_EQ(report["results"].size(), 1u) << report.dump();
+    const nlohmann::json& row = report["results"][0];
+    EXPECT_EQ(row["model"], model.string());
+    EXPECT_EQ(row["own_strands"], own);
+    EXPECT_EQ(row["strands"], own ? 200u : 300u);
+    EXPECT_GT(row["raster_entries"].get<double>(), 0.0) << "no hair in view";
+    EXPECT_TRUE(row["passes"].contains("raster fine")) << row.dump();
+  }
+  for (const auto& [args, why] : std::vector<std::pair<std::vector<std::string>, std::string>>{
+           {{"--model", model.string(), "--own-strands", "--strands", "100"}, "excludes"},
+           {{"--model", json.string()}, "expected 'default', a .hair, .tfx or .obj file"}}) {
+    std::vector<std::string> full{"bench", "--raster", "compute", "--frames", "1"};
+    full.insert(full.end(), args.begin(), args.end());
+    const auto r = runCli(full);
+    EXPECT_NE(r.exitCode, 0);
+    EXPECT_NE(r.err.find(why), std::string::npos) << r.err;
+    EXPECT_EQ(r.out.find("median of"), std::string::npos) << "a frame ran: " << r.out;
   }
 }
