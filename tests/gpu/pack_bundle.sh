@@ -161,7 +161,8 @@ done | sort -t. -k2,2n -u | tail -1)
 cp "$HERE/run_on_gpu.sh" "$OUT/run_on_gpu.sh"
 cp "$HERE/compare_binaries.sh" "$OUT/compare_binaries.sh"
 cp "$HERE/frame_checks.sh" "$OUT/frame_checks.sh"
-chmod +x "$OUT/run_on_gpu.sh" "$OUT"/bin/*
+cp "$SRC/samples/peer/vkhr_setting.sh" "$OUT/vkhr_setting.sh"
+chmod +x "$OUT/run_on_gpu.sh" "$OUT/vkhr_setting.sh" "$OUT"/bin/*
 {
   echo "# written by tests/gpu/pack_bundle.sh; read by run_on_gpu.sh"
   echo "HP_COMPILED_DATA_DIR='$data_dir'"

@@ -5,7 +5,8 @@
 #   env.txt            machine, driver (nvidia-smi), environment, library checks (preflight)
 #   info.log/.json     `hairpipe info`; loader_debug.log: the loader's driver and layer search
 #   bench/*.json       `hairpipe bench` (compute path, 20k/136k/1M strands at 1920x1080, 136k at 1280x720)
-#                      and the suites sim, strands, opacity, instances; bench/*.log their stderr/stdout
+#                      and the suites sim, strands, opacity, instances; bench/*.log their stderr/stdout;
+#                      bench/peer/: vkhr's setting on straight models of 10k and 136k strands (vkhr_setting.sh)
 #   tests/results.tsv  suite, test, PASS|FAIL|TIMEOUT|SKIP|NOTRUN, exit code, seconds; tests/logs/SUITE/TEST.log
 #   steps.tsv          each step: name, status, exit code, seconds
 #   summary.txt/.json  passed/failed counts, the failed tests, the steps; ends with "N passed, N failed"
@@ -208,13 +209,13 @@ if [ "${HP_GPU_SKIP_BENCH:-0}" != 1 ]; then
     FRAME_STRANDS=500,2000; FRAME_RES=64x48; FRAME_N=2; SMALL_STRANDS=1000; SMALL_RES=96x54
     SIM=(--guides 100 300 --frames 2); STRANDS=(--strands 1000,4000 --frames 2 --walk strand,vertex)
     OPACITY=(--strands 1000 --resolutions 64 --frames 1); INSTANCES=(--instances 1,2 --strands 200 --frames 1)
-    CAP_FRAME=200; CAP_SMALL=90; CAP_SUITE=90
+    CAP_FRAME=200; CAP_SMALL=90; CAP_SUITE=90; PEER_STRANDS=1000
   else
     FRAME_STRANDS=20000,136320,1000000; FRAME_RES=1920x1080; FRAME_N=20; SMALL_STRANDS=136320; SMALL_RES=1280x720
     SIM=(--guides 1000 10000 100000 --frames 20); STRANDS=(--strands 10000,136320,1000000 --frames 10 --walk strand,vertex)
     OPACITY=(--strands 10000,100000,1000000 --resolutions 512,1024 --frames 5)
     INSTANCES=(--instances 1,4,16 --frames 10)
-    CAP_FRAME=120; CAP_SMALL=45; CAP_SUITE=45
+    CAP_FRAME=120; CAP_SMALL=45; CAP_SUITE=45; PEER_STRANDS=10000,136320
   fi
   step bench/frame_${FRAME_RES} "$CAP_FRAME" "$BENCH_DEADLINE" - "$H" bench --raster compute --strands "$FRAME_STRANDS" \
     --resolution "$FRAME_RES" --frames "$FRAME_N" --json "$OUT/bench/frame_${FRAME_RES}.json" --plot "$OUT/bench/frame_${FRAME_RES}.svg"
@@ -222,6 +223,10 @@ if [ "${HP_GPU_SKIP_BENCH:-0}" != 1 ]; then
   step bench/frame_${SMALL_RES} "$CAP_SMALL" "$BENCH_DEADLINE" - "$H" bench --raster compute --strands "$SMALL_STRANDS" \
     --resolution "$SMALL_RES" --frames "$FRAME_N" --json "$OUT/bench/frame_${SMALL_RES}.json"
   sed 's/^/    /' "$OUT/bench/frame_${SMALL_RES}.log" 2>/dev/null | grep -E 'strands, [0-9]+x' | head
+  # vkhr's published setting (straight hair, 1280x720) on hairpipe's own straight models (samples/peer/).
+  step bench/peer_vkhr "$CAP_SUITE" "$BENCH_DEADLINE" - "$W/vkhr_setting.sh" "$H" "$OUT/bench/peer" "$PEER_STRANDS" \
+    "$FRAME_N" "$SMALL_RES"
+  grep -h 'strands (its own)' "$OUT"/bench/peer/bench_*.log 2>/dev/null | sed 's/^/    /'
   step bench/sim "$CAP_SUITE" "$BENCH_DEADLINE" "$OUT/bench/sim.json" "$H" bench sim "${SIM[@]}" --json
   step bench/strands "$CAP_SUITE" "$BENCH_DEADLINE" "$OUT/bench/strands.json" "$H" bench strands "${STRANDS[@]}" --json
   step bench/opacity "$CAP_SUITE" "$BENCH_DEADLINE" "$OUT/bench/opacity.json" "$H" bench opacity "${OPACITY[@]}" --json
@@ -313,7 +318,9 @@ rows() {  # JSON...: one row per result
       ind = match($0, /[^ ]/) - 1
       if (ind == 2 && $0 ~ /"device":/) { kv($0); device = val }
       else if (ind == 4 && $0 ~ /^ *}/) {
-        printf "| %s | %s | %sx%s | %s | **%s** |", device, date, r["width"], r["height"], thousands(r["strands"]), ms(p["frame"])
+        what = thousands(r["strands"])
+        if (r["model"] != "" && r["model"] != "default") { m = r["model"]; sub(/.*\//, "", m); what = what " (" m ")" }
+        printf "| %s | %s | %sx%s | %s | **%s** |", device, date, r["width"], r["height"], what, ms(p["frame"])
         n = split("simulate,tessellate,interpolate,opacity,head,head shadow,head bounce,raster project,raster bin,raster shade,strand bounce,raster fine,composite,tonemap", names, ",")
         for (i = 1; i <= n; ++i) printf " %s |", ms(p[names[i]])
         printf " %s | %s | %s |\n", thousands(r["raster_overflow"]), ms(r["host_frame_ms"]), commit
@@ -328,7 +335,7 @@ rows() {  # JSON...: one row per result
   echo "<!-- hairpipe bench --raster compute, median of $([ "$QUICK" = 1 ] && echo 2 || echo 20) frames after one warm-up; GPU ms per pass (GpuProfiler timestamps); written by tests/gpu/run_on_gpu.sh -->"
   echo "| device | date | resolution | strands | frame ms | simulate | tessellate | interpolate | opacity | head | head shadow | head bounce | raster project | raster bin | raster shade | strand bounce | raster fine | composite | tonemap | tile entries dropped | host ms | commit |"
   echo "|---|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|"
-  for j in "$OUT"/bench/frame_*.json; do [ -s "$j" ] && rows "$j"; done
+  for j in "$OUT"/bench/frame_*.json "$OUT"/bench/peer/bench_*.json; do [ -s "$j" ] && rows "$j"; done
 } >"$OUT/performance_rows.md"
 
 {
