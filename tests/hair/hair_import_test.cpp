@@ -74,6 +74,34 @@ TEST(HairImport, BuildsTopologyAndFitsAHeadCollider) {
   EXPECT_TRUE(a.head.positions.empty());
 }
 
+// On a scalp that is not a sphere (here a lumpy cap of an ellipsoid, 10 cm across and 8 cm high) the least-squares
+// sphere runs through the roots; the fitted collider keeps its centre and shrinks to the nearest root, so no
+// root starts inside it (the pearls next to such roots were pushed out on the first frames, flinging strands).
+TEST(HairImport, TheFittedColliderLiesUnderEveryRoot) {
+  HairFileData d;
+  d.strandCount = 400;
+  d.defaultSegments = 3;
+  for (std::uint32_t s = 0; s < d.strandCount; ++s) {
+    const float a = 2.39996f * float(s), y = 1.0f - 0.7f * float(s) / float(d.strandCount), r = std::sqrt(1.0f - y * y);
+    const float bump = 1.0f + 0.08f * std::sin(5.0f * a) * r;  // a lumpy scalp, +-8% at the sides
+    const glm::vec3 root(0.1f * bump * r * std::cos(a), 0.08f * y, 0.1f * bump * r * std::sin(a));
+    for (int k = 0; k < 4; ++k) d.points.push_back(root + glm::vec3(0.0f, -0.05f * float(k), 0.0f));
+  }
+  HairImportOptions o;
+  o.density.totalStrands = 1000;
+  const HairAsset a = importHairAsset(d, o, "oblate.hair");
+  ASSERT_EQ(a.colliders.size(), 1u);
+  const SphereCollider& c = a.colliders[0];
+  float nearest = INFINITY, farthest = 0.0f;
+  for (const glm::vec3& root : a.guides.roots()) {
+    nearest = std::min(nearest, glm::distance(root, c.center));
+    farthest = std::max(farthest, glm::distance(root, c.center));
+  }
+  EXPECT_EQ(c.radius, nearest);  // the nearest root lies on it, none inside
+  EXPECT_GT(farthest - nearest, 0.01f) << "the roots are not all on one sphere: the fit alone would cut through them";
+  EXPECT_GT(c.radius, 0.05f);
+}
+
 TEST(HairImport, SceneCollidersReplaceTheFittedOne) {
   HairImportOptions o;
   o.colliders = std::vector<SphereCollider>{{{0, 0, 0}, 0.05f}, {{0, -0.2f, 0}, 0.04f}};

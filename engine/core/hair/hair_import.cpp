@@ -25,9 +25,14 @@ GuideSet keepAsIs(const HairFileData& data, const HairImportOptions& options, co
   return guides;
 }
 
+// The least-squares sphere runs through the middle of the roots: on a scalp that is not a sphere about half
+// of them lie inside it, and the pearls next to those roots, pushed out of it, flung their strands up on the
+// first frames. So the fit keeps its centre and shrinks to the nearest root: every root on or outside it.
 std::vector<SphereCollider> fittedColliders(const GuideSet& guides) {
   std::vector<glm::vec3> roots = guides.roots();
-  return {fitSphere(roots).sphere};
+  SphereCollider sphere = fitSphere(roots).sphere;
+  for (const glm::vec3& root : roots) sphere.radius = std::min(sphere.radius, glm::distance(root, sphere.center));
+  return {sphere};
 }
 
 HeadMesh collidersMesh(const std::vector<SphereCollider>& colliders) {

@@ -25,7 +25,7 @@ struct HairImportOptions {
   float segmentRatio = 1.3f;
   RootTriangulationOptions triangulation;
   DensityOptions density;
-  std::optional<std::vector<SphereCollider>> colliders;  // empty optional: fit one to the roots
+  std::optional<std::vector<SphereCollider>> colliders;  // empty optional: fit one under the roots
   bool collidersFitted = false;  // `colliders` were fitted by the importer, not given (collide, draw no head)
 };
 
@@ -33,7 +33,8 @@ GuideSet guidesFromHair(const HairFileData& data, const HairImportOptions& optio
 
 // Builds topology, colliders and head mesh around existing guides (shared by .hair and .obj imports). Given
 // colliders are drawn as the head; fitted ones only collide (a sphere fitted to a strip of roots is a poor
-// guess that would hide the hair it was fitted to): the asset has no head mesh and fittedCollider set.
+// guess that would hide the hair it was fitted to): the asset has no head mesh and fittedCollider set. The
+// fitted sphere is the roots' least-squares sphere shrunk to the nearest root, so no root starts inside it.
 HairAsset assembleImportedAsset(GuideSet guides, std::vector<glm::uvec3> triangles,
                                 const HairImportOptions& options, std::string name);
 
