@@ -59,7 +59,7 @@ void OffscreenRenderer::record(VkCommandBuffer cmd, HairSystem& hair, const Draw
   recordComputeScene(
       cmd, [&](VkCommandBuffer c) { hair.recordDraw(c, view, profiler); },  // the head only
       [&](VkCommandBuffer c) { hair.recordRaster(c, view, profiler); },
-      [&](VkCommandBuffer c) { hair.recordComposite(c, extent(), profiler); });
+      [&](VkCommandBuffer c) { hair.recordComposite(c, extent(), profiler); }, profiler);
   if (profiler) profiler->begin(cmd, "tonemap");
   recordTonemap(cmd, exposure);
   if (profiler) profiler->end(cmd);
@@ -77,14 +77,14 @@ void OffscreenRenderer::record(VkCommandBuffer cmd, Renderer& renderer, std::uin
         renderer.recordDraw(c, frame, view, instances, profiler);
       },
       [&](VkCommandBuffer c) { renderer.recordRaster(c, frame, view, profiler); },
-      [&](VkCommandBuffer c) { renderer.recordComposite(c, extent(), profiler); });
+      [&](VkCommandBuffer c) { renderer.recordComposite(c, extent(), profiler); }, profiler);
   recordTonemap(cmd, exposure);
 }
 
 // Head (depth stored), the rasterizer reads the depth, then the composite over the colour (and, with
 // MSAA, the resolve: the head's samples antialias its edges over the background and over the hair).
 void OffscreenRenderer::recordComputeScene(VkCommandBuffer cmd, const Record& drawHeads, const Record& raster,
-                                           const Record& composite) const {
+                                           const Record& composite, vk::GpuProfiler* profiler) const {
   const VkImage hdr = targets_.hdr.handle(), depthImage = targets_.depth.handle();
   discardTargets(cmd);
   VkRenderingAttachmentInfo color = vk::colorAttachment(targets_.hdr.view(), VK_ATTACHMENT_LOAD_OP_CLEAR, kBackground);
@@ -104,9 +104,13 @@ void OffscreenRenderer::recordComputeScene(VkCommandBuffer cmd, const Record& dr
   color.loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;
   resolveInto(color);
   depth = vk::depthAttachment(targets_.depth.view(), VK_ATTACHMENT_LOAD_OP_LOAD, VK_ATTACHMENT_STORE_OP_DONT_CARE);
+  // The composite's own scope lies inside the rendering instance, where lavapipe stamps before it runs the
+  // draw (and the MSAA resolve at its end): this one, outside, times them (docs/PERFORMANCE.md).
+  if (profiler) profiler->begin(cmd, "composite pass");
   ctx_.fn().vkCmdBeginRendering(cmd, &info);
   composite(cmd);
   ctx_.fn().vkCmdEndRendering(cmd);
+  if (profiler) profiler->end(cmd);
   vk::imageBarrier(ctx_, cmd, hdrInput().handle(), VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::ColorAttachment,
                    vk::ImageUse::FragmentSampled);
 }

@@ -51,10 +51,11 @@ class OffscreenRenderer {
 
  private:
   void recordScene(VkCommandBuffer cmd, const std::function<void(VkCommandBuffer)>& draws) const;
-  // Compute raster: heads (drawHeads, inside a rendering), raster (outside, depth sampled), composite.
+  // Compute raster: heads (drawHeads, inside a rendering), raster (outside, depth sampled), composite (in a
+  // rendering timed as "composite pass" by the profiler, if any).
   using Record = std::function<void(VkCommandBuffer)>;
   void recordComputeScene(VkCommandBuffer cmd, const Record& drawHeads, const Record& raster,
-                          const Record& composite) const;
+                          const Record& composite, vk::GpuProfiler* profiler) const;
   void recordTonemap(VkCommandBuffer cmd, float exposure) const;
   // A frame's first use of the colour, depth and resolve targets: their old contents discarded.
   void discardTargets(VkCommandBuffer cmd) const;

@@ -21,7 +21,7 @@ TEST(CliRender, WritesThePngReportsEveryPassAndDumpsTheStrands) {
   auto j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j["raster"], "compute");  // auto on lavapipe
   for (const char* pass : {"simulate", "tessellate", "interpolate", "bounds", "opacity", "head", "raster project", "raster shade",
-                           "raster bin", "raster fine", "composite", "tonemap"})
+                           "raster bin", "raster fine", "composite", "composite pass", "tonemap"})
     EXPECT_GT(j["gpu_ms"][pass].get<double>(), 0.0) << pass;
   EXPECT_GT(j["raster_lists"]["kept"].get<double>(), 0.0);
   EXPECT_EQ(j["raster_lists"]["overflow"], 0);
