@@ -72,7 +72,7 @@ std::vector<LightSpec> benchLights(std::uint32_t count) {
 }  // namespace
 
 FrameResult benchFrame(const vk::Context& ctx, const FrameCase& c) {
-  Scene scene = c.scene ? *c.scene : Scene{};
+  Scene scene = *c.scene;
   scene.render.width = c.width;
   scene.render.height = c.height;
   scene.density.mode = c.ownStrands ? DensityOptions::Mode::Guides : DensityOptions::Mode::Total;

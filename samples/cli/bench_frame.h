@@ -1,5 +1,6 @@
 #pragma once
-// Contract: the whole-frame benchmark behind `hairpipe bench`: the default head (or a scene or model) at one strand count,
+// Contract: the whole-frame benchmark behind `hairpipe bench`: a scene (the default head's, or a scene file or
+// model's) at one strand count,
 // resolution and raster path, every frame recorded as `hairpipe render` records it (simulate,
 // tessellate, interpolate, bounds, opacity, head, hair raster/shade, composite, tonemap) plus a
 // vkCmdCopyBuffer reference in the same submission; one warm-up frame, then `frames` timed frames; then
@@ -24,7 +25,7 @@
 
 namespace hp::cli {
 struct FrameCase {
-  std::shared_ptr<const Scene> scene;  // what is drawn: a scene file or model (loadScene); null: the default head
+  std::shared_ptr<const Scene> scene;  // what is drawn (loadScene: the default head's scene by default); not null
   bool ownStrands = false;  // one render strand on every guide (a model's own strands) instead of `strands`
   std::uint32_t strands = 20000;  // render strands in total (DensityOptions::Total)
   std::uint32_t width = 640, height = 480;

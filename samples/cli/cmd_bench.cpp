@@ -162,7 +162,7 @@ std::vector<hp::cli::FrameCase> cases(const BenchOptions& o, const std::shared_p
       throw hp::Error("bench: --shading-spacing values must be in [0, " +
                       std::to_string(int(hp::compute::kMaxShadingSpacing)) + "] pixels, got " + std::to_string(f));
   std::vector<hp::cli::FrameCase> out;
-  // --own-strands: one case per the rest, its strand count the model's (0 here).
+  // --own-strands: no strand count to vary (0 here: the model's own count).
   for (std::uint32_t s : o.ownStrands ? std::vector<std::uint32_t>{0} : o.strands) {
     if (!o.ownStrands && (s == 0 || s > 4'000'000)) throw hp::Error("bench: --strands values must be in [1, 4000000]");
     for (const std::string& r : o.raster) {
@@ -204,8 +204,9 @@ nlohmann::json toJson(const hp::cli::FrameResult& r) {
     }
     passes[name] = p;
   }
-  const std::string model = r.c.scene->source == hp::Scene{}.source ? "default" : r.c.scene->source;
-  return {{"model", model}, {"own_strands", r.c.ownStrands},
+  const hp::Scene& scene = *r.c.scene;
+  const std::string model = scene.model.kind == hp::ModelSpec::Kind::Default ? "default" : scene.model.path.string();
+  return {{"model", model}, {"scene", scene.source}, {"own_strands", r.c.ownStrands},
           {"strands", r.c.strands},      {"width", r.c.width},          {"lod_fraction", r.c.lodFraction},
           {"shadowed_lights", r.c.lights},            {"bounce_samples", r.c.bounceSamples},
           {"fine_walk", hp::compute::fineWalkName(r.c.fineWalk)},

@@ -147,10 +147,7 @@ hp::RenderRequest makeRenderRequest(const FrameOptions& o, const CLI::App& cmd) 
   applyLights(o, r.scene);
   applyGroomOptions(o.groom, r.scene.groom);
   applyHairGridOptions(o.grid, r.scene.simulation);
-  if (cmd.count("--eta") + cmd.count("--absorption") + cmd.count("--color") + cmd.count("--alpha-r") +
-          cmd.count("--beta-r") + cmd.count("--kg") + cmd.count("--wc") + cmd.count("--deta") + cmd.count("--dhm") +
-              cmd.count("--beta-n") > 0)
-    r.scene.material = o.material;
+  if (materialGiven(cmd)) r.scene.material = o.material;
   if (r.scene.render.width == 0 || r.scene.render.height == 0 || r.scene.render.width > 16384 ||
       r.scene.render.height > 16384)
     throw hp::Error("--width/--height must be in [1, 16384]");

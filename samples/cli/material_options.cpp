@@ -83,9 +83,10 @@ void addMaterialOptions(CLI::App& app, HairMaterial& m) {
   for (CLI::Option* o : {absorption, color}) o->delimiter(',')->expected(3)->group(kGroup);
   absorption->excludes(color);
 }
+// Every option of the group, so that none added later is forgotten here.
 bool materialGiven(const CLI::App& app) {
-  for (const char* name : {"--eta", "--absorption", "--color", "--alpha-r", "--beta-r", "--kg", "--wc", "--deta", "--dhm"})
-    if (app.count(name) > 0) return true;
+  for (const CLI::Option* o : app.get_options([](const CLI::Option* o) { return o->get_group() == kGroup; }))
+    if (o->count() > 0) return true;
   return false;
 }
 }  // namespace hp::cli

@@ -269,3 +269,12 @@ TEST(CliBench, ScatteringAndLutModeListsAreCheckedThenCombined) {
   EXPECT_EQ(names, (std::vector<std::string>{"compute, float", "compute, single scattering", "compute"}));
   EXPECT_EQ(scatterings, (std::vector<std::string>{"single", "single", "dual"}));
 }
+
+// Every material option reaches the frame bench's fibres, the per-strand variations included (they once fell
+// back to the scene's material when given alone).
+TEST(CliBench, AVariationGivenAloneReachesTheFibres) {
+  const nlohmann::json report = tinyComputeBench({"--roughness-variation", "0"}, "bench_roughness_variation.json");
+  ASSERT_FALSE(report.is_null());
+  ASSERT_EQ(report["results"].size(), 1u);
+  EXPECT_EQ(report["results"][0]["roughness_variation"].get<double>(), 0.0);
+}

@@ -12,7 +12,8 @@
 #   lib/fallback/  libstdc++ and libgcc_s: used there only when the machine's own are older
 #   layer/   the Khronos validation layer and its JSON, library_path rewritten to ./ (VK_LAYER_PATH)
 #   data/    tests/data (the tests read it at the source path compiled in; run_on_gpu.sh links it there)
-#   run_on_gpu.sh, compare_binaries.sh and frame_checks.sh (HP_GPU_EXTRA scripts), bundle.env (the compiled-in paths, versions), MANIFEST (files, sizes, sources)
+#   run_on_gpu.sh, compare_binaries.sh and frame_checks.sh (HP_GPU_EXTRA scripts), vkhr_setting.sh
+#            (samples/peer/: the peer setting's bench), bundle.env (the compiled-in paths, versions), MANIFEST (files, sizes, sources)
 # Files over 256 KiB are stored gzipped (the device tool carries at most 64 MiB; the bundle is ~35 MiB
 # packed, ~95 MiB unpacked); run_on_gpu.sh unpacks a copy before it runs anything.
 # Needs at pack time (Debian 12): libvulkan1, vulkan-validationlayers, libglvnd0, libgl1, libegl1,

@@ -1,6 +1,10 @@
 // .hair models as assets: resampled guides, kept strands, fitted colliders, root topology.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+
+#include "engine/core/hair/fit_sphere.h"
 #include "engine/core/hair/hair_import.h"
 #include "engine/core/hair/segment_profile.h"
 #include "samples/tools/host/synthetic_hair.h"
@@ -74,9 +78,10 @@ TEST(HairImport, BuildsTopologyAndFitsAHeadCollider) {
   EXPECT_TRUE(a.head.positions.empty());
 }
 
-// On a scalp that is not a sphere (here a lumpy cap of an ellipsoid, 10 cm across and 8 cm high) the least-squares
-// sphere runs through the roots; the fitted collider keeps its centre and shrinks to the nearest root, so no
-// root starts inside it (the pearls next to such roots were pushed out on the first frames, flinging strands).
+// On a scalp that is not a sphere (here a lumpy cap of an ellipsoid of semi-axes 10, 8 and 10 cm) the
+// least-squares sphere runs through the roots; the fitted collider keeps its centre and shrinks to the nearest
+// root, so no root starts inside it (the pearls next to such roots were pushed out on the first frames); one root
+// far inside (at the centre here) shrinks it to half its size, no further.
 TEST(HairImport, TheFittedColliderLiesUnderEveryRoot) {
   HairFileData d;
   d.strandCount = 400;
@@ -97,9 +102,17 @@ TEST(HairImport, TheFittedColliderLiesUnderEveryRoot) {
     nearest = std::min(nearest, glm::distance(root, c.center));
     farthest = std::max(farthest, glm::distance(root, c.center));
   }
-  EXPECT_EQ(c.radius, nearest);  // the nearest root lies on it, none inside
+  EXPECT_FLOAT_EQ(c.radius, nearest);  // the nearest root lies on it, none inside
   EXPECT_GT(farthest - nearest, 0.01f) << "the roots are not all on one sphere: the fit alone would cut through them";
   EXPECT_GT(c.radius, 0.05f);
+  // A root at the fitted centre: the sphere keeps half the fitted radius.
+  HairFileData outlier = d;
+  outlier.strandCount += 1;
+  for (int k = 0; k < 4; ++k) outlier.points.push_back(c.center + glm::vec3(0.0f, -0.05f * float(k), 0.0f));
+  const HairAsset b = importHairAsset(outlier, o, "outlier.hair");
+  ASSERT_EQ(b.colliders.size(), 1u);
+  const std::vector<glm::vec3> roots = b.guides.roots();
+  EXPECT_FLOAT_EQ(b.colliders[0].radius, 0.5f * fitSphere(roots).sphere.radius);
 }
 
 TEST(HairImport, SceneCollidersReplaceTheFittedOne) {

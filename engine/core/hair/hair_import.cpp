@@ -27,11 +27,14 @@ GuideSet keepAsIs(const HairFileData& data, const HairImportOptions& options, co
 
 // The least-squares sphere runs through the middle of the roots: on a scalp that is not a sphere about half
 // of them lie inside it, and the pearls next to those roots, pushed out of it, flung their strands up on the
-// first frames. So the fit keeps its centre and shrinks to the nearest root: every root on or outside it.
+// first frames. So the fit keeps its centre and shrinks to the nearest root: every root on or outside it. It
+// shrinks to half its size at most: a root far inside (a bun's tie, a stray strand) says little of the head.
 std::vector<SphereCollider> fittedColliders(const GuideSet& guides) {
   std::vector<glm::vec3> roots = guides.roots();
   SphereCollider sphere = fitSphere(roots).sphere;
+  const float floor = 0.5f * sphere.radius;
   for (const glm::vec3& root : roots) sphere.radius = std::min(sphere.radius, glm::distance(root, sphere.center));
+  sphere.radius = std::max(sphere.radius, floor);
   return {sphere};
 }
 

@@ -34,7 +34,8 @@ GuideSet guidesFromHair(const HairFileData& data, const HairImportOptions& optio
 // Builds topology, colliders and head mesh around existing guides (shared by .hair and .obj imports). Given
 // colliders are drawn as the head; fitted ones only collide (a sphere fitted to a strip of roots is a poor
 // guess that would hide the hair it was fitted to): the asset has no head mesh and fittedCollider set. The
-// fitted sphere is the roots' least-squares sphere shrunk to the nearest root, so no root starts inside it.
+// fitted sphere is the roots' least-squares sphere shrunk to the nearest root (to half its radius at most), so
+// no root starts inside it.
 HairAsset assembleImportedAsset(GuideSet guides, std::vector<glm::uvec3> triangles,
                                 const HairImportOptions& options, std::string name);
 
