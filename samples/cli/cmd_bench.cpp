@@ -24,6 +24,7 @@
 #include "samples/cli/bench_plot.h"
 #include "samples/cli/command.h"
 #include "samples/cli/material_options.h"
+#include "samples/cli/output_paths.h"
 #include "samples/cli/scene_options.h"
 
 namespace hp::cli::cmd_bench {  // per subcommand: file-local names stay apart in a unity build
@@ -265,8 +266,12 @@ void writeText(const std::string& path, const std::string& text) {
 }
 
 void run(const BenchOptions& o) {
-  // Validate everything (the scene or model loads) before touching the device.
-  const auto list = cases(o, std::make_shared<const hp::Scene>(hp::cli::loadScene(o.scene)));
+  // Validate the options, the scene file and the outputs before touching the device (the model itself is read
+  // per case, by benchFrame).
+  const auto scene = std::make_shared<const hp::Scene>(hp::cli::loadScene(o.scene));
+  const auto list = cases(o, scene);
+  for (const auto& [option, path] : {std::pair{"--json", o.json}, std::pair{"--plot", o.plot}})
+    if (!path.empty()) hp::cli::prepareOutputFile({option, path}, hp::cli::sceneInputs(o.scene, *scene));
   auto ctx = hp::cli::createBenchContext(o.device, "bench");
   const auto& props = ctx->properties();
   nlohmann::json report = {{"device", props.deviceName},

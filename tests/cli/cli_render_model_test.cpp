@@ -112,7 +112,8 @@ TEST(CliRenderModel, AModelWithManyStrandsDrawsItsOwnStrands) {
 
 // `hairpipe bench --model FILE` times the frame of that model with its camera framed as render frames it:
 // --strands interpolated on it, or with --own-strands the file's own strands (the report names the model and
-// the count drawn); --own-strands with --strands, and a file of another kind, are refused before a frame runs.
+// the count drawn); --own-strands with --strands, a file of another kind, and a report onto the model are
+// refused before a frame runs.
 TEST(CliBenchModel, BenchesAModelWithItsOwnOrInterpolatedStrands) {
   const auto model = centimetreZUpModel();
   const auto json = freshTempPath("hairpipe_cli_bench_model.json");
@@ -141,4 +142,9 @@ TEST(CliBenchModel, BenchesAModelWithItsOwnOrInterpolatedStrands) {
                 {{{"--model", model.string(), "--own-strands", "--strands", "100"}, "excludes"},
                  {{"--model", freshTempPath("not_a_model.png").string()}, "expected 'default', a .hair, .tfx or .obj file"}},
                 refusedJson);
+  // The report may not overwrite the model it times.
+  const auto before = std::filesystem::file_size(model);
+  expectRefused({"bench", "--raster", "compute", "--frames", "1", "--model", model.string()},
+                {{{"--json", model.string()}, "--json"}, {{"--plot", model.string()}, "--plot"}});
+  EXPECT_EQ(std::filesystem::file_size(model), before);
 }
