@@ -35,14 +35,17 @@ bool straddlesPart(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c) {
 // Near the head hair lies along it: the downhill tangent of gravity plus, on the cranium, a push away
 // from the parting and backward (strongest at the forehead and the temples) so it falls behind the
 // ears and shoulders, never over the face. A slight pull into the head makes the growth slide along
-// the field. Away from the head: gravity, slightly backward.
-glm::vec3 combDirection(const glm::vec3& p, const glm::vec3& gravity) {
+// the field. Away from the head: gravity, slightly backward. The side of the parting is the root's
+// (`rootX`), not the growing point's: a guide rooted beside the parting whose growth drifts across it
+// would otherwise turn to the far side, and strands interpolated between it and its neighbours would
+// cut through the skull.
+glm::vec3 combDirection(const glm::vec3& p, float rootX, const glm::vec3& gravity) {
   const glm::vec3 down = glm::normalize(gravity);
   const glm::vec3 back(0.0f, 0.0f, -1.0f);
   if (headDistance(p) > 0.025f) return glm::normalize(down + 0.3f * back);
   const glm::vec3 n = glm::normalize(headGradient(p));
   glm::vec3 pull = down + back * (0.5f + 3.0f * std::max(0.0f, n.z));
-  if (p.y > -0.02f) pull += glm::vec3(p.x > kPartX ? 1.0f : -1.0f, 0.0f, 0.0f) * 1.5f * std::max(0.0f, n.y);
+  if (p.y > -0.02f) pull += glm::vec3(rootX > kPartX ? 1.0f : -1.0f, 0.0f, 0.0f) * 1.5f * std::max(0.0f, n.y);
   glm::vec3 tangent = pull - glm::dot(pull, n) * n;
   if (glm::length(tangent) < 1e-4f) tangent = back;
   return glm::normalize(tangent) - 0.2f * n;
@@ -128,7 +131,9 @@ HairAsset buildDefaultHeadAsset(const GrowthOptions& growth, const DensityOption
   HairAsset asset;
   asset.name = "default head";
   asset.sdf = geo.grid;
-  auto comb = [&](const glm::vec3& p, std::uint32_t) { return combDirection(p, growth.bendDirection); };
+  auto comb = [&](const glm::vec3& p, std::uint32_t guide) {
+    return combDirection(p, geo.scalp.positions[guide].x, growth.bendDirection);
+  };
   asset.guides = growGuides(geo.scalp, growth, {}, comb, headDistance);
   asset.topology = buildInterpolationTopology(asset.guides.roots(), geo.scalp.triangles, density);
   asset.head = geo.mesh;
