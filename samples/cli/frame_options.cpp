@@ -231,6 +231,11 @@ nlohmann::json frameCamera(Scene& scene, const hp::HairAsset& asset) {
     std::cerr << "hairpipe: " << asset.name << " has no head mesh: the sphere fitted to its roots (radius " << radius
               << ") keeps the hair out but is not drawn\n";
   }
+  if (asset.partedTriangles > 0) {
+    guessed["parted_triangles_dropped"] = asset.partedTriangles;
+    std::cerr << "hairpipe: " << asset.name << ": " << asset.partedTriangles << " scalp triangles left bare: their guides "
+              << "part around the head, and strands blended from them would run through it\n";
+  }
   if (asset.character) guessed["mesh"] = characterReport(asset);
   const float aspect = float(scene.render.width) / float(scene.render.height);
   if (hp::pointsInView(scene.camera, aspect, asset.guides.positions) == 0) {

@@ -39,6 +39,8 @@ struct HairAsset {
   // The colliders were fitted to the roots by an importer, not given: they collide but are not drawn (head
   // is empty), and tools say so.
   bool fittedCollider = false;
+  // Scalp triangles an importer dropped because their guides part around the head (parted_triangles.h).
+  std::uint32_t partedTriangles = 0;
   // A character mesh given with the model (null: none): drawn as the head, the distance grid the hair
   // collides with (unless the scene gives colliders), and the surface the guides' roots bind to.
   std::shared_ptr<const CharacterMesh> character;

@@ -5,6 +5,7 @@
 #include "engine/core/error.h"
 #include "engine/core/hair/fit_sphere.h"
 #include "engine/core/hair/head_mesh.h"
+#include "engine/core/hair/parted_triangles.h"
 #include "engine/core/hair/segment_profile.h"
 
 namespace hp {
@@ -70,7 +71,9 @@ HairAsset assembleImportedAsset(GuideSet guides, std::vector<glm::uvec3> triangl
   HairAsset asset;
   asset.name = std::move(name);
   asset.colliders = options.colliders ? *options.colliders : fittedColliders(guides);
-  asset.topology = buildInterpolationTopology(guides.roots(), std::move(triangles), options.density);
+  PartedTriangles scalp = dropPartedTriangles(guides, triangles, asset.colliders);
+  asset.partedTriangles = scalp.dropped;
+  asset.topology = buildInterpolationTopology(guides.roots(), std::move(scalp.kept), options.density);
   asset.guides = std::move(guides);
   asset.fittedCollider = !options.colliders || options.collidersFitted;
   if (!asset.fittedCollider) asset.head = collidersMesh(asset.colliders);

@@ -1,0 +1,95 @@
+// Scalp triangles whose guides part around the head: dropped, so no render strand is blended through it.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "engine/core/hair/hair_import.h"
+#include "engine/core/hair/parted_triangles.h"
+#include "engine/core/hair/root_topology.h"
+
+namespace hp {
+namespace {
+constexpr float kRadius = 0.1f;
+const SphereCollider kHead{glm::vec3(0.0f), kRadius};
+
+// Roots on a 9 x 9 patch of the head's crown, 1 cm apart; each guide lies along the head 2 mm out, turning
+// from its root toward +x (x >= partX) or -x (x < partX) over 80 degrees of arc: a parting along z at partX.
+GuideSet partedCrown(float partX) {
+  GuideSet g;
+  g.particlesPerGuide = 7;
+  for (int i = 0; i < 9; ++i)
+    for (int j = 0; j < 9; ++j) {
+      const glm::vec3 r = glm::normalize(glm::vec3(0.01f * float(i - 4) + 0.005f, kRadius, 0.01f * float(j - 4)));
+      const glm::vec3 side(r.x >= partX / kRadius ? 1.0f : -1.0f, 0.0f, 0.0f);
+      const glm::vec3 s = glm::normalize(side - glm::dot(side, r) * r);
+      for (int k = 0; k < 7; ++k) {
+        const float a = glm::radians(80.0f) * float(k) / 6.0f;
+        g.positions.push_back((kRadius + 0.002f * float(k > 0)) * (std::cos(a) * r + std::sin(a) * s));
+      }
+    }
+  return g;
+}
+
+std::vector<glm::uvec3> crownTriangles(const GuideSet& g) {
+  return triangulateRoots(g.roots(), glm::vec3(0.0f)).triangles;
+}
+
+TEST(PartedTriangles, DropsTheTrianglesAcrossAPartingAndNoOther) {
+  const GuideSet g = partedCrown(0.0f);
+  const std::vector<glm::uvec3> triangles = crownTriangles(g);
+  ASSERT_GT(triangles.size(), 100u);
+  const PartedTriangles parted = dropPartedTriangles(g, triangles, std::span(&kHead, 1));
+  std::uint32_t straddling = 0;
+  for (const glm::uvec3& t : triangles) {
+    const int right = int(g.root(t.x).x >= 0.0f) + int(g.root(t.y).x >= 0.0f) + int(g.root(t.z).x >= 0.0f);
+    straddling += right == 1 || right == 2;
+  }
+  EXPECT_GT(straddling, 0u);
+  EXPECT_EQ(parted.dropped, straddling);
+  EXPECT_EQ(parted.kept.size() + parted.dropped, triangles.size());
+  for (const glm::uvec3& t : parted.kept) {  // every kept triangle lies on one side, and its blends stay out
+    const int right = int(g.root(t.x).x >= 0.0f) + int(g.root(t.y).x >= 0.0f) + int(g.root(t.z).x >= 0.0f);
+    EXPECT_TRUE(right == 0 || right == 3);
+    for (std::uint32_t k = 1; k < 7; ++k)
+      EXPECT_GT(glm::length((g.guide(t.x)[k] + g.guide(t.y)[k] + g.guide(t.z)[k]) / 3.0f), 0.9f * kRadius);
+  }
+}
+
+TEST(PartedTriangles, GuidesCombedOneWayKeepEveryTriangle) {
+  const GuideSet g = partedCrown(-1.0f);  // every root right of the "parting": all combed toward +x
+  const std::vector<glm::uvec3> triangles = crownTriangles(g);
+  const PartedTriangles parted = dropPartedTriangles(g, triangles, std::span(&kHead, 1));
+  EXPECT_EQ(parted.dropped, 0u);
+  EXPECT_EQ(parted.kept, triangles);
+}
+
+TEST(PartedTriangles, WithoutCollidersOrWithAnUnknownGuideNothingIsDropped) {
+  const GuideSet g = partedCrown(0.0f);
+  const std::vector<glm::uvec3> triangles = crownTriangles(g);
+  EXPECT_EQ(dropPartedTriangles(g, triangles, {}).dropped, 0u);
+  const std::vector<glm::uvec3> unknown = {glm::uvec3(0, 1, g.guideCount())};
+  EXPECT_EQ(dropPartedTriangles(g, unknown, std::span(&kHead, 1)).kept, unknown);
+}
+
+TEST(PartedTriangles, AnImportedPartedModelInterpolatesNoStrandThroughItsHead) {
+  const GuideSet g = partedCrown(0.0f);
+  HairFileData data;
+  data.strandCount = g.guideCount();
+  data.defaultSegments = 6;
+  data.points = g.positions;
+  HairImportOptions o;
+  o.keepStrands = true;
+  o.colliders = std::vector<SphereCollider>{kHead};
+  const HairAsset asset = importHairAsset(data, o, "parted.hair");
+  EXPECT_GT(asset.partedTriangles, 0u);
+  for (const StrandBinding& s : asset.topology.strands) {
+    const glm::uvec3 t = asset.topology.triangles[s.triangle];
+    for (std::uint32_t k = 1; k < 7; ++k) {
+      const glm::vec3 p = s.barycentric.x * g.guide(t.x)[k] + s.barycentric.y * g.guide(t.y)[k] +
+                          s.barycentric.z * g.guide(t.z)[k];
+      ASSERT_GT(glm::length(p), 0.9f * kRadius) << "strand in triangle " << s.triangle << ", particle " << k;
+    }
+  }
+}
+}  // namespace
+}  // namespace hp
