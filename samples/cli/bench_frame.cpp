@@ -71,14 +71,21 @@ std::vector<LightSpec> benchLights(std::uint32_t count) {
 }
 }  // namespace
 
+void prepareBenchModel(FrameCase& c, const Scene& base) {
+  auto scene = std::make_shared<Scene>(base);
+  scene->render.width = c.width;
+  scene->render.height = c.height;
+  scene->density.mode = c.ownStrands ? DensityOptions::Mode::Guides : DensityOptions::Mode::Total;
+  if (!c.ownStrands) scene->density.totalStrands = c.strands;
+  auto asset = std::make_shared<const HairAsset>(buildSceneAsset(*scene));
+  frameCamera(*scene, *asset);  // a model without a scene: the camera framed on its hair
+  c.scene = std::move(scene);
+  c.asset = std::move(asset);
+}
+
 FrameResult benchFrame(const vk::Context& ctx, const FrameCase& c) {
-  Scene scene = *c.scene;
-  scene.render.width = c.width;
-  scene.render.height = c.height;
-  scene.density.mode = c.ownStrands ? DensityOptions::Mode::Guides : DensityOptions::Mode::Total;
-  if (!c.ownStrands) scene.density.totalStrands = c.strands;
-  const HairAsset asset = buildSceneAsset(scene);
-  frameCamera(scene, asset);  // a model without a scene: the camera framed on its hair
+  const Scene& scene = *c.scene;
+  const HairAsset& asset = *c.asset;
   render::OffscreenRenderer renderer(ctx, c.width, c.height, c.msaa, c.raster);
   HairSystemSettings settings;
   settings.formats = renderer.formats();

@@ -25,7 +25,10 @@
 
 namespace hp::cli {
 struct FrameCase {
-  std::shared_ptr<const Scene> scene;  // what is drawn (loadScene: the default head's scene by default); not null
+  // What is drawn, from benchModel: the scene (its camera framed, its size and density this case's) and the
+  // asset built from it. Both not null; cases of one strand count share them.
+  std::shared_ptr<const Scene> scene;
+  std::shared_ptr<const HairAsset> asset;
   bool ownStrands = false;  // one render strand on every guide (a model's own strands) instead of `strands`
   std::uint32_t strands = 20000;  // render strands in total (DensityOptions::Total)
   std::uint32_t width = 640, height = 480;
@@ -67,6 +70,12 @@ struct FrameResult {
   double residentMiB = 0;     // the process's resident memory after the last frame
   double residentGrowthMiB = 0;  // per timed frame over the second half of the timed frames
 };
+
+// The scene and asset of every case at one strand count (host only, before any device is touched): the
+// scene at width x height with its density set (`ownStrands`: the model's own strands, else `strands` in
+// total), the asset built as `render` builds it and the camera framed as `render` frames it (frameCamera:
+// a model without a scene; refused when no hair is in view). Sets c.scene and c.asset.
+void prepareBenchModel(FrameCase& c, const Scene& base);
 
 FrameResult benchFrame(const vk::Context& ctx, const FrameCase& c);
 }  // namespace hp::cli

@@ -134,7 +134,8 @@ std::vector<hp::compute::FineWalk> fineWalks(const BenchOptions& o) {
   return out;
 }
 
-std::vector<hp::cli::FrameCase> cases(const BenchOptions& o, const std::shared_ptr<const hp::Scene>& scene) {
+// Every numeric option in its range (before any model is read).
+void checkRanges(const BenchOptions& o) {
   if (o.frames == 0 || o.frames > 1000) throw hp::Error("bench: --frames must be in [1, 1000]");
   for (float f : o.lodFractions)
     if (!(f > 0.0f && f <= 1.0f)) throw hp::Error("bench: --lod-fraction values must be in (0, 1], got " + std::to_string(f));
@@ -144,8 +145,17 @@ std::vector<hp::cli::FrameCase> cases(const BenchOptions& o, const std::shared_p
     if (n < 2 || n > hp::gpu::MAX_VERTICES_PER_STRAND)
       throw hp::Error("bench: --bounce-samples values must be in [2, " + std::to_string(hp::gpu::MAX_VERTICES_PER_STRAND) +
                       "], got " + std::to_string(n));
+  for (float f : o.shadingSpacings)
+    if (!(f >= 0.0f && f <= hp::compute::kMaxShadingSpacing))
+      throw hp::Error("bench: --shading-spacing values must be in [0, " +
+                      std::to_string(int(hp::compute::kMaxShadingSpacing)) + "] pixels, got " + std::to_string(f));
+  for (std::uint32_t s : o.strands)
+    if (!o.ownStrands && (s == 0 || s > 4'000'000)) throw hp::Error("bench: --strands values must be in [1, 4000000]");
+}
+
+std::vector<hp::cli::FrameCase> cases(const BenchOptions& o, const std::shared_ptr<const hp::Scene>& scene) {
+  checkRanges(o);
   hp::cli::FrameCase base;
-  base.scene = scene;
   base.ownStrands = o.ownStrands;
   base.frames = o.frames;
   base.material = o.materialGiven ? o.material : scene->material;
@@ -158,19 +168,19 @@ std::vector<hp::cli::FrameCase> cases(const BenchOptions& o, const std::shared_p
   const std::vector<bool> grooms = twoWordList("--groom", o.grooms, "scene", "none", "scene");
   const std::vector<hp::compute::FineWalk> computeWalks = fineWalks(o), graphicsWalks{base.fineWalk};
   const std::vector<float> graphicsSpacings{base.shadingSpacing};
-  for (float f : o.shadingSpacings)
-    if (!(f >= 0.0f && f <= hp::compute::kMaxShadingSpacing))
-      throw hp::Error("bench: --shading-spacing values must be in [0, " +
-                      std::to_string(int(hp::compute::kMaxShadingSpacing)) + "] pixels, got " + std::to_string(f));
+  std::vector<hp::RasterMode> modes;
+  for (const std::string& r : o.raster) {
+    modes.push_back(hp::parseRasterMode(r));
+    if (modes.back() == hp::RasterMode::Auto) throw hp::Error("bench: --raster takes compute and/or graphics");
+  }
   std::vector<hp::cli::FrameCase> out;
   // --own-strands: no strand count to vary (0 here: the model's own count).
   for (std::uint32_t s : o.ownStrands ? std::vector<std::uint32_t>{0} : o.strands) {
-    if (!o.ownStrands && (s == 0 || s > 4'000'000)) throw hp::Error("bench: --strands values must be in [1, 4000000]");
-    for (const std::string& r : o.raster) {
-      const hp::RasterMode mode = hp::parseRasterMode(r);
-      if (mode == hp::RasterMode::Auto) throw hp::Error("bench: --raster takes compute and/or graphics");
-      hp::cli::FrameCase c = base;
-      c.strands = s;
+    hp::cli::FrameCase model = base;  // the scene and asset this strand count's cases share
+    model.strands = s;
+    hp::cli::prepareBenchModel(model, *scene);
+    for (const hp::RasterMode mode : modes) {
+      hp::cli::FrameCase c = model;
       c.raster = mode;
       for (const auto& [lut, scattering] : shadingList) {
         c.lutMode = lut;
@@ -266,8 +276,8 @@ void writeText(const std::string& path, const std::string& text) {
 }
 
 void run(const BenchOptions& o) {
-  // Validate the options, the scene file and the outputs before touching the device (the model itself is read
-  // per case, by benchFrame).
+  // Validate the options, the scene file, the model (read and built once per strand count) and the outputs
+  // before touching the device.
   const auto scene = std::make_shared<const hp::Scene>(hp::cli::loadScene(o.scene));
   const auto list = cases(o, scene);
   for (const auto& [option, path] : {std::pair{"--json", o.json}, std::pair{"--plot", o.plot}})

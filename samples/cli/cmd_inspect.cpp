@@ -15,6 +15,7 @@
 #include "engine/core/error.h"
 #include "engine/core/hair/fit_sphere.h"
 #include "engine/core/hair/hair_file.h"
+#include "engine/core/hair/hair_import.h"
 #include "engine/core/hair/mesh_file.h"
 #include "engine/core/hair/obj_import.h"
 #include "engine/core/hair/tfx_bone_file.h"
@@ -31,13 +32,15 @@ struct InspectOptions {
 
 nlohmann::json vec(const glm::vec3& v) { return {v.x, v.y, v.z}; }
 
-nlohmann::json boundsAndSphere(std::span<const glm::vec3> points, std::span<const glm::vec3> sphereOf) {
+// The sphere fitted to `sphereOf`; for roots (`roots`) also the collider an import makes of it.
+nlohmann::json boundsAndSphere(std::span<const glm::vec3> points, std::span<const glm::vec3> sphereOf, bool roots) {
   glm::vec3 lo(INFINITY), hi(-INFINITY);
   for (const auto& p : points) lo = glm::min(lo, p), hi = glm::max(hi, p);
   hp::SphereFit fit = hp::fitSphere(sphereOf);
-  return {{"bbox", {{"min", vec(lo)}, {"max", vec(hi)}}},
-          {"head_sphere", {{"center", vec(fit.sphere.center)}, {"radius", fit.sphere.radius},
-                           {"fitted", fit.fitted}, {"rms_error", fit.rmsError}}}};
+  nlohmann::json sphere = {{"center", vec(fit.sphere.center)}, {"radius", fit.sphere.radius},
+                           {"fitted", fit.fitted}, {"rms_error", fit.rmsError}};
+  if (roots) sphere["collider_radius"] = hp::colliderUnderRoots(fit.sphere, sphereOf).radius;
+  return {{"bbox", {{"min", vec(lo)}, {"max", vec(hi)}}}, {"head_sphere", sphere}};
 }
 
 nlohmann::json inspectHair(const std::filesystem::path& path) {
@@ -59,7 +62,7 @@ nlohmann::json inspectHair(const std::filesystem::path& path) {
   nlohmann::json j = {{"file", path.string()}, {"format", "hair"}, {"strands", d.strandCount},
                       {"points", d.pointCount()}, {"min_points_per_strand", lo},
                       {"max_points_per_strand", hi}, {"arrays", arrays}, {"info", d.infoText()}};
-  j.update(boundsAndSphere(d.points, roots));
+  j.update(boundsAndSphere(d.points, roots, true));
   return j;
 }
 
@@ -78,7 +81,7 @@ nlohmann::json inspectTfx(const std::filesystem::path& path) {
   nlohmann::json j = {{"file", path.string()}, {"format", "tfx"}, {"version", d.version},
                       {"strands", d.strandCount}, {"vertices_per_strand", d.verticesPerStrand},
                       {"points", points.size()}, {"arrays", arrays}};
-  j.update(boundsAndSphere(points, roots));
+  j.update(boundsAndSphere(points, roots, true));
   return j;
 }
 
@@ -106,7 +109,7 @@ nlohmann::json inspectObj(const std::filesystem::path& path) {
   nlohmann::json j = {{"file", path.string()}, {"format", "obj"}, {"vertices", m.vertexCount()},
                       {"triangles", m.triangles.size()},
                       {"dropped_degenerate_triangles", m.droppedDegenerateTriangles}};
-  j.update(boundsAndSphere(m.positions, m.positions));
+  j.update(boundsAndSphere(m.positions, m.positions, false));
   return j;
 }
 
@@ -177,7 +180,10 @@ void printText(const nlohmann::json& j) {
   const auto& s = j["head_sphere"];
   std::cout << "bbox: min " << text3(j["bbox"]["min"]) << " max " << text3(j["bbox"]["max"]) << "\n"
             << "head sphere" << (s["fitted"].get<bool>() ? "" : " (stand-in: points are nearly flat)")
-            << ": center " << text3(s["center"]) << " radius " << s["radius"].get<double>() << "\n";
+            << ": center " << text3(s["center"]) << " radius " << s["radius"].get<double>();
+  if (s.contains("collider_radius"))
+    std::cout << " (the collider an import fits: radius " << s["collider_radius"].get<double>() << ", under every root)";
+  std::cout << "\n";
 }
 
 void run(const InspectOptions& o) {

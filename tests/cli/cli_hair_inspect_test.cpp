@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "engine/core/hair/hair_file.h"
+#include "engine/core/hair/hair_import.h"
 #include "engine/core/hair/tfx_bone_file.h"
 #include "samples/tools/host/synthetic_hair.h"
 #include "tests/hair/hair_test_util.h"
@@ -51,6 +52,9 @@ TEST(CliHairInspect, ReportsAHairModelAsJson) {
   EXPECT_LT(j["bbox"]["min"][1].get<double>(), j["bbox"]["max"][1].get<double>());
   EXPECT_NEAR(j["head_sphere"]["radius"].get<double>(), 0.1, 1e-4);
   EXPECT_TRUE(j["head_sphere"]["fitted"].get<bool>());
+  // The collider an import makes of that sphere (shrunk under every root), as the import makes it.
+  EXPECT_FLOAT_EQ(j["head_sphere"]["collider_radius"].get<float>(),
+                  hp::importHairAsset(d, hp::HairImportOptions{}, "m.hair").colliders.at(0).radius);
 }
 
 TEST(CliHairInspect, TextOutput) {
@@ -70,6 +74,7 @@ TEST(CliHairInspect, ReportsAnObjScalp) {
   EXPECT_EQ(j["vertices"], 49);
   EXPECT_EQ(j["triangles"], 84);
   EXPECT_NEAR(j["head_sphere"]["radius"].get<double>(), 1.0, 1e-4);
+  EXPECT_FALSE(j["head_sphere"].contains("collider_radius"));  // a scalp's fitted sphere is drawn as it is
 }
 
 struct BadHair {

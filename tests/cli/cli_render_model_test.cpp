@@ -142,6 +142,11 @@ TEST(CliBenchModel, BenchesAModelWithItsOwnOrInterpolatedStrands) {
                 {{{"--model", model.string(), "--own-strands", "--strands", "100"}, "excludes"},
                  {{"--model", freshTempPath("not_a_model.png").string()}, "expected 'default', a .hair, .tfx or .obj file"}},
                 refusedJson);
+  // A corrupt model is refused before any device is chosen (the device asked for does not exist).
+  const auto corrupt = freshTempPath("hairpipe_cli_bench_corrupt.hair");
+  std::ofstream(corrupt, std::ios::binary) << "HAIR";  // a header cut short
+  expectRefused({"bench", "--raster", "compute", "--frames", "1", "--device", "99", "--json", refusedJson.string()},
+                {{{"--model", corrupt.string()}, corrupt.string() + ": short header"}}, refusedJson);
   // The report may not overwrite the model it times.
   const auto before = std::filesystem::file_size(model);
   expectRefused({"bench", "--raster", "compute", "--frames", "1", "--model", model.string()},

@@ -26,25 +26,24 @@ GuideSet keepAsIs(const HairFileData& data, const HairImportOptions& options, co
   return guides;
 }
 
-// The least-squares sphere runs through the middle of the roots: on a scalp that is not a sphere about half
-// of them lie inside it, and the pearls next to those roots, pushed out of it, flung their strands up on the
-// first frames. So the fit keeps its centre and shrinks to the nearest root: every root on or outside it. It
-// shrinks to half its size at most: a root far inside (a bun's tie, a stray strand) says little of the head.
-std::vector<SphereCollider> fittedColliders(const GuideSet& guides) {
-  std::vector<glm::vec3> roots = guides.roots();
-  SphereCollider sphere = fitSphere(roots).sphere;
-  const float floor = 0.5f * sphere.radius;
-  for (const glm::vec3& root : roots) sphere.radius = std::min(sphere.radius, glm::distance(root, sphere.center));
-  sphere.radius = std::max(sphere.radius, floor);
-  return {sphere};
-}
-
 HeadMesh collidersMesh(const std::vector<SphereCollider>& colliders) {
   HeadMesh mesh;
   for (const auto& c : colliders) appendMesh(mesh, makeEllipsoidMesh(c.center, glm::vec3(c.radius * 0.98f)));
   return mesh;
 }
 }  // namespace
+
+// The least-squares sphere runs through the middle of the roots: on a scalp that is not a sphere about half
+// of them lie inside it, and the pearls next to those roots, pushed out of it, flung their strands up on the
+// first frames. So the fit keeps its centre and shrinks to the nearest root: every root on or outside it. It
+// shrinks to half its size at most: a root far inside (a bun's tie, a stray strand) says little of the head.
+SphereCollider colliderUnderRoots(const SphereCollider& fit, std::span<const glm::vec3> roots) {
+  SphereCollider sphere = fit;
+  const float floor = 0.5f * sphere.radius;
+  for (const glm::vec3& root : roots) sphere.radius = std::min(sphere.radius, glm::distance(root, sphere.center));
+  sphere.radius = std::max(sphere.radius, floor);
+  return sphere;
+}
 
 GuideSet guidesFromHair(const HairFileData& data, const HairImportOptions& options, const std::string& source) {
   validateHairData(data, source);
@@ -70,7 +69,11 @@ HairAsset assembleImportedAsset(GuideSet guides, std::vector<glm::uvec3> triangl
                                 const HairImportOptions& options, std::string name) {
   HairAsset asset;
   asset.name = std::move(name);
-  asset.colliders = options.colliders ? *options.colliders : fittedColliders(guides);
+  if (options.colliders) asset.colliders = *options.colliders;
+  else {
+    const std::vector<glm::vec3> roots = guides.roots();
+    asset.colliders = {colliderUnderRoots(fitSphere(roots).sphere, roots)};
+  }
   PartedTriangles scalp = dropPartedTriangles(guides, triangles, asset.colliders);
   asset.partedTriangles = scalp.dropped;
   asset.topology = buildInterpolationTopology(guides.roots(), std::move(scalp.kept), options.density);
@@ -87,6 +90,8 @@ HairAsset importHairAsset(const HairFileData& data, const HairImportOptions& opt
   RootTriangulation tri = triangulateRoots(roots, fit.sphere.center, options.triangulation);
   if (tri.triangles.empty())
     throw Error(source + ": cannot triangulate the strand roots (too few, or all on one line or circle)");
-  return assembleImportedAsset(std::move(guides), std::move(tri.triangles), options, source);
+  HairImportOptions fitted = options;
+  if (!fitted.colliders) fitted.colliders = {{colliderUnderRoots(fit.sphere, roots)}}, fitted.collidersFitted = true;
+  return assembleImportedAsset(std::move(guides), std::move(tri.triangles), fitted, source);
 }
 }  // namespace hp

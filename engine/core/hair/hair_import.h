@@ -6,6 +6,7 @@
 // them; that sphere is also the head collider unless `colliders` gives the colliders explicitly. The
 // head mesh is one sphere slightly inside each collider. Throws hp::Error naming `source`.
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -29,13 +30,16 @@ struct HairImportOptions {
   bool collidersFitted = false;  // `colliders` were fitted by the importer, not given (collide, draw no head)
 };
 
+// The head collider fitted to imported roots: the roots' least-squares sphere `fit`, shrunk to the nearest
+// root (to half its radius at most), so no root starts inside it.
+SphereCollider colliderUnderRoots(const SphereCollider& fit, std::span<const glm::vec3> roots);
+
 GuideSet guidesFromHair(const HairFileData& data, const HairImportOptions& options, const std::string& source);
 
 // Builds topology, colliders and head mesh around existing guides (shared by .hair and .obj imports). Given
 // colliders are drawn as the head; fitted ones only collide (a sphere fitted to a strip of roots is a poor
-// guess that would hide the hair it was fitted to): the asset has no head mesh and fittedCollider set. The
-// fitted sphere is the roots' least-squares sphere shrunk to the nearest root (to half its radius at most), so
-// no root starts inside it.
+// guess that would hide the hair it was fitted to): the asset has no head mesh and fittedCollider set. Without
+// colliders the roots' colliderUnderRoots is fitted.
 HairAsset assembleImportedAsset(GuideSet guides, std::vector<glm::uvec3> triangles,
                                 const HairImportOptions& options, std::string name);
 
