@@ -22,6 +22,7 @@ std::uint32_t Asset::strandCount() const noexcept {
 std::uint32_t Asset::headTriangleCount() const noexcept {
   return impl_ ? static_cast<std::uint32_t>(impl_->head.indices.size() / 3) : 0;
 }
+std::uint32_t Asset::bareScalpTriangleCount() const noexcept { return impl_ ? impl_->partedTriangles : 0; }
 Result<std::vector<Vec3>> Asset::guideRoots() const noexcept {
   return guarded<std::vector<Vec3>>("hairpipe::Asset::guideRoots", [&] {
     std::vector<Vec3> out;

@@ -179,6 +179,54 @@ TEST_F(PublicApi, PipelineCacheDataRoundTrips) {
 }
 
 // A TressFX skinning file as the application gets it: bone names and per-guide weights for ScalpInput::skin.
+// A .hair file of 81 strands on a 10 cm head's crown, 1 cm apart, each laid 2 mm off the head over 80 degrees
+// of arc toward +x or -x by the side of x = 0 its root is on: a parting along z.
+std::string writePartedCrown() {
+  std::vector<float> points;
+  for (int i = 0; i < 9; ++i)
+    for (int j = 0; j < 9; ++j) {
+      const float rx = 0.01f * float(i - 4) + 0.005f, ry = 0.1f, rz = 0.01f * float(j - 4);
+      const float rl = std::sqrt(rx * rx + ry * ry + rz * rz);
+      const float r[3] = {rx / rl, ry / rl, rz / rl}, side = rx >= 0.0f ? 1.0f : -1.0f;
+      float s[3] = {side - side * r[0] * r[0], -side * r[0] * r[1], -side * r[0] * r[2]};  // side's tangent part
+      const float sl = std::sqrt(s[0] * s[0] + s[1] * s[1] + s[2] * s[2]);
+      for (int k = 0; k < 7; ++k) {
+        const float a = 1.3962634f * float(k) / 6.0f, radius = 0.1f + (k > 0 ? 0.002f : 0.0f);
+        for (int c = 0; c < 3; ++c) points.push_back(radius * (std::cos(a) * r[c] + std::sin(a) * s[c] / sl));
+      }
+    }
+  unsigned char header[128] = {};
+  const std::uint32_t fields[5] = {81, 81 * 7, 2, 6, 0};  // strands, points, flags (points), segments
+  std::memcpy(header, "HAIR", 4);
+  std::memcpy(header + 4, fields, sizeof fields);
+  const std::string path = ::testing::TempDir() + "hairpipe_api_parted.hair";
+  std::FILE* f = std::fopen(path.c_str(), "wb");
+  if (!f) return "";
+  std::fwrite(header, 1, sizeof header, f);
+  std::fwrite(points.data(), sizeof(float), points.size(), f);
+  std::fclose(f);
+  return path;
+}
+
+TEST(PublicApiFiles, AnImportedPartingIsLeftBare) {
+  const std::string path = writePartedCrown();
+  ASSERT_FALSE(path.empty());
+  hairpipe::AssetSource source;
+  source.path = path;
+  source.density = {hairpipe::Density::Mode::Total, 8, 2000, 7};
+  const hairpipe::Result<hairpipe::Asset> asset = hairpipe::loadAsset(source);
+  ASSERT_TRUE(asset.ok()) << asset.message();
+  EXPECT_GT(asset.value().bareScalpTriangleCount(), 0u);
+  EXPECT_EQ(asset.value().strandCount(), 2000u);  // the density is spread over the triangles kept
+  const hairpipe::Result<hairpipe::Asset> denser = asset.value().withDensity({hairpipe::Density::Mode::Total, 8, 4000, 7});
+  ASSERT_TRUE(denser.ok()) << denser.message();
+  EXPECT_EQ(denser.value().bareScalpTriangleCount(), asset.value().bareScalpTriangleCount());
+  const hairpipe::Result<hairpipe::Asset> head = hairpipe::defaultHeadAsset({hairpipe::Density::Mode::Total, 8, 500, 7});
+  ASSERT_TRUE(head.ok()) << head.message();
+  EXPECT_EQ(head.value().bareScalpTriangleCount(), 0u);
+  std::remove(path.c_str());
+}
+
 TEST(PublicApiFiles, TressFxSkinningLoadsForEveryGuide) {
   std::vector<unsigned char> bytes;
   auto i32 = [&](std::int32_t v) {

@@ -64,6 +64,10 @@ class Asset {
   std::uint32_t particlesPerGuide() const noexcept;
   std::uint32_t strandCount() const noexcept;  // render strands of the asset's interpolation topology
   std::uint32_t headTriangleCount() const noexcept;
+  // Scalp triangles an imported model's roots form that were left without render strands: their guides part
+  // around the head (a parting, a whorl), so any blend of them would run through it (0 for the default head,
+  // whose parting is left open by construction).
+  std::uint32_t bareScalpTriangleCount() const noexcept;
   Result<std::vector<Vec3>> guideRoots() const noexcept;  // head space, one per guide (for skinning weights)
   const char* name() const noexcept;
   // The character mesh the asset was loaded with; fails when it has none.
