@@ -232,7 +232,7 @@ nlohmann::json frameCamera(Scene& scene, const hp::HairAsset& asset) {
               << ") keeps the hair out but is not drawn\n";
   }
   if (asset.partedTriangles > 0) {
-    guessed["parted_triangles_dropped"] = asset.partedTriangles;
+    guessed["bare_scalp_triangles"] = asset.partedTriangles;
     std::cerr << "hairpipe: " << asset.name << ": " << asset.partedTriangles << " scalp triangles left bare: their guides "
               << "part around the head, and strands blended from them would run through it\n";
   }

@@ -3,6 +3,7 @@
 
 #include <cmath>
 
+#include "engine/core/error.h"
 #include "engine/core/hair/hair_import.h"
 #include "engine/core/hair/parted_triangles.h"
 #include "engine/core/hair/root_topology.h"
@@ -69,6 +70,21 @@ TEST(PartedTriangles, WithoutCollidersOrWithAnUnknownGuideNothingIsDropped) {
   EXPECT_EQ(dropPartedTriangles(g, triangles, {}).dropped, 0u);
   const std::vector<glm::uvec3> unknown = {glm::uvec3(0, 1, g.guideCount())};
   EXPECT_EQ(dropPartedTriangles(g, unknown, std::span(&kHead, 1)).kept, unknown);
+}
+
+TEST(PartedTriangles, AnImportWhoseEveryTriangleIsPartedIsRefusedByName) {
+  // One triangle over three corners of the patch, two left of the parting and one right of it: parted.
+  const GuideSet g = partedCrown(0.0f);
+  const std::vector<glm::uvec3> one = {glm::uvec3(0, 72, 8)};
+  ASSERT_EQ(dropPartedTriangles(g, one, std::span(&kHead, 1)).dropped, 1u);
+  HairImportOptions o;
+  o.colliders = std::vector<SphereCollider>{kHead};
+  try {
+    assembleImportedAsset(g, one, o, "parted.hair");
+    ADD_FAILURE() << "an asset without a triangle to interpolate in was built";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("parted.hair: every one of its 1 root triangles"), std::string::npos) << e.what();
+  }
 }
 
 TEST(PartedTriangles, AnImportedPartedModelInterpolatesNoStrandThroughItsHead) {

@@ -75,6 +75,10 @@ HairAsset assembleImportedAsset(GuideSet guides, std::vector<glm::uvec3> triangl
     asset.colliders = {colliderUnderRoots(fitSphere(roots).sphere, roots)};
   }
   PartedTriangles scalp = dropPartedTriangles(guides, triangles, asset.colliders);
+  if (scalp.kept.empty() && !triangles.empty())
+    throw Error(asset.name + ": every one of its " + std::to_string(triangles.size()) + " root triangles has guides "
+                "parting around the head collider (strands blended from them would run through it): check the "
+                "colliders against the model's units and place");
   asset.partedTriangles = scalp.dropped;
   asset.topology = buildInterpolationTopology(guides.roots(), std::move(scalp.kept), options.density);
   asset.guides = std::move(guides);
