@@ -25,7 +25,7 @@
 
 namespace hp::cli {
 struct FrameCase {
-  // What is drawn, from benchModel: the scene (its camera framed, its size and density this case's) and the
+  // What is drawn, from prepareBenchModel: the scene (its camera framed, its size and density this case's) and the
   // asset built from it. Both not null; cases of one strand count share them.
   std::shared_ptr<const Scene> scene;
   std::shared_ptr<const HairAsset> asset;
