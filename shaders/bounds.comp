@@ -27,7 +27,7 @@ vec3 lightCoords(vec3 p) {
 // What is reduced for vertex p: (x, y, d) for a directional light, (x/d, y/d, d) for a spot; false
 // for a vertex at or behind the spot (it can shadow nothing inside the cone) or not finite.
 bool reducedCoords(vec3 p, out vec3 c) {
-  if (any(isnan(p)) || any(isinf(p))) return false;  // a NaN guide's strands: min/max of a NaN is undefined
+  if (!allFinite(p)) return false;  // a NaN guide's strands: min/max of a NaN is undefined
   if (push.perspective == 0u) {
     c = lightCoords(p);
     return true;

@@ -11,4 +11,10 @@ uint hpThreadId(uint workgroupSize) {
   return gl_GlobalInvocationID.x + gl_WorkGroupID.y * gl_NumWorkGroups.x * workgroupSize;
 }
 
+// Whether every component is finite (neither NaN nor infinite), read from the exponent bits: without a
+// float-controls declaration a driver may assume float values are never NaN or infinite and fold isnan,
+// isinf and NaN-aware comparisons away; an integer test it must keep.
+bool allFinite(vec3 v) { return all(notEqual(floatBitsToUint(v) & 0x7F800000u, uvec3(0x7F800000u))); }
+bool allFinite(vec4 v) { return all(notEqual(floatBitsToUint(v) & 0x7F800000u, uvec4(0x7F800000u))); }
+
 #endif

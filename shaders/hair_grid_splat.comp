@@ -18,7 +18,7 @@ void main() {
   if (particle >= params.dims.w || particle % uint(params.density.z) == 0u) return;  // roots stay out
   vec3 x = positions[particle].xyz;
   vec3 v = (x - previous[particle].xyz) * params.fixedPoint.z / params.fixedPoint.w;
-  if (any(isnan(x)) || any(isinf(x)) || any(isnan(v)) || any(isinf(v))) return;  // one bad particle stays its own
+  if (!allFinite(x) || !allFinite(v)) return;  // one bad particle stays its own
   float speed = length(v);
   if (speed > 1.0) v /= speed;
   ivec3 base;

@@ -47,7 +47,7 @@ void main() {
     vec4 clip = frame.proj * frame.view * vec4(pos.xyz, 1.0);
     // Behind the camera, or not finite (a NaN guide's strands): no footprint, and kept out of the depth range
     // (a NaN's bits would order past every depth and widen the bins for the whole frame).
-    if (!(clip.w > 1e-6) || !(clip.z >= 0.0) || any(isnan(clip)) || any(isinf(clip))) {
+    if (!allFinite(clip) || clip.w <= 1e-6 || clip.z < 0.0) {
       screen[global] = vec4(0.0, 0.0, 1.0, -1.0);
       if (MOTION != 0u) motion[global] = 0u;
     } else {
