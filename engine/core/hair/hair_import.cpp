@@ -69,11 +69,7 @@ HairAsset assembleImportedAsset(GuideSet guides, std::vector<glm::uvec3> triangl
                                 const HairImportOptions& options, std::string name) {
   HairAsset asset;
   asset.name = std::move(name);
-  if (options.colliders) asset.colliders = *options.colliders;
-  else {
-    const std::vector<glm::vec3> roots = guides.roots();
-    asset.colliders = {colliderUnderRoots(fitSphere(roots).sphere, roots)};
-  }
+  asset.colliders = options.colliders.value_or(std::vector<SphereCollider>{});
   PartedTriangles scalp = dropPartedTriangles(guides, triangles, asset.colliders);
   if (scalp.kept.empty() && !triangles.empty())
     throw Error(asset.name + ": every one of its " + std::to_string(triangles.size()) + " root triangles has guides "
@@ -82,7 +78,7 @@ HairAsset assembleImportedAsset(GuideSet guides, std::vector<glm::uvec3> triangl
   asset.partedTriangles = scalp.dropped;
   asset.topology = buildInterpolationTopology(guides.roots(), std::move(scalp.kept), options.density);
   asset.guides = std::move(guides);
-  asset.fittedCollider = !options.colliders || options.collidersFitted;
+  asset.fittedCollider = options.collidersFitted;
   if (!asset.fittedCollider) asset.head = collidersMesh(asset.colliders);
   return asset;
 }

@@ -3,8 +3,9 @@
 // particlesPerGuide points with root-increasing spacing (segmentRatio), or kept as is when
 // keepStrands is set (then every strand must have the same point count, in [2, 64]). Points map into
 // head space through `transform`. Roots are triangulated (triangulateRoots) around a sphere fitted to
-// them; that sphere is also the head collider unless `colliders` gives the colliders explicitly. The
-// head mesh is one sphere slightly inside each collider. Throws hp::Error naming `source`.
+// them; that sphere, shrunk under every root (colliderUnderRoots), is also the head collider unless
+// `colliders` gives the colliders explicitly; a given collider is drawn as the head, one sphere slightly inside
+// each. Throws hp::Error naming `source`.
 #include <optional>
 #include <span>
 #include <string>
@@ -36,10 +37,11 @@ SphereCollider colliderUnderRoots(const SphereCollider& fit, std::span<const glm
 
 GuideSet guidesFromHair(const HairFileData& data, const HairImportOptions& options, const std::string& source);
 
-// Builds topology, colliders and head mesh around existing guides (shared by .hair and .obj imports). Given
-// colliders are drawn as the head; fitted ones only collide (a sphere fitted to a strip of roots is a poor
-// guess that would hide the hair it was fitted to): the asset has no head mesh and fittedCollider set. Without
-// colliders the roots' colliderUnderRoots is fitted.
+// Builds topology, colliders and head mesh around existing guides (shared by .hair and .obj imports; each
+// passes its colliders: given, or fitted by the caller). Given colliders are drawn as the head; fitted ones
+// (`collidersFitted`) only collide (a sphere fitted to a strip of roots is a poor guess that would hide the
+// hair it was fitted to): the asset has no head mesh and fittedCollider set. Root triangles whose guides part
+// around a collider are dropped (parted_triangles.h; refused when every one is).
 HairAsset assembleImportedAsset(GuideSet guides, std::vector<glm::uvec3> triangles,
                                 const HairImportOptions& options, std::string name);
 
