@@ -178,7 +178,6 @@ TEST_F(PublicApi, PipelineCacheDataRoundTrips) {
   }
 }
 
-// A TressFX skinning file as the application gets it: bone names and per-guide weights for ScalpInput::skin.
 // A .hair file of 81 strands on a 10 cm head's crown, 1 cm apart, each laid 2 mm off the head over 80 degrees
 // of arc toward +x or -x by the side of x = 0 its root is on: a parting along z.
 std::string writePartedCrown() {
@@ -227,6 +226,7 @@ TEST(PublicApiFiles, AnImportedPartingIsLeftBare) {
   std::remove(path.c_str());
 }
 
+// A TressFX skinning file as the application gets it: bone names and per-guide weights for ScalpInput::skin.
 TEST(PublicApiFiles, TressFxSkinningLoadsForEveryGuide) {
   std::vector<unsigned char> bytes;
   auto i32 = [&](std::int32_t v) {
