@@ -4,9 +4,13 @@
 #include <cmath>
 
 #include "engine/core/error.h"
+#include "engine/core/hair/hair_file.h"
 #include "engine/core/hair/hair_import.h"
 #include "engine/core/hair/parted_triangles.h"
 #include "engine/core/hair/root_topology.h"
+#include "engine/core/hair/scene.h"
+#include "tests/hair/gltf_test_file.h"
+#include "tests/hair/hair_test_util.h"
 
 namespace hp {
 namespace {
@@ -33,6 +37,28 @@ GuideSet partedCrown(float partX) {
 
 std::vector<glm::uvec3> crownTriangles(const GuideSet& g) {
   return triangulateRoots(g.roots(), glm::vec3(0.0f)).triangles;
+}
+
+HairFileData crownFile(const GuideSet& g) {
+  HairFileData data;
+  data.strandCount = g.guideCount();
+  data.defaultSegments = g.particlesPerGuide - 1;
+  data.points = g.positions;
+  return data;
+}
+
+// The parted crown as a .hair file with a character mesh: the head sphere, faceted, `offset` from it.
+Scene crownOnCharacter(const test::TempDir& dir, const glm::vec3& offset) {
+  writeHairFile(dir / "crown.hair", crownFile(partedCrown(0.0f)));
+  test::GltfTestMesh head = test::uvSphere(kRadius, 64, 32);
+  for (glm::vec3& p : head.positions) p += offset;
+  test::writeBytes(dir / "head.glb", test::glbBytes(head));
+  Scene scene;
+  scene.model.kind = ModelSpec::Kind::Hair;
+  scene.model.path = dir / "crown.hair";
+  scene.model.keepStrands = true;
+  scene.mesh = CharacterMeshSpec{dir / "head.glb", 0.004f};
+  return scene;
 }
 
 TEST(PartedTriangles, DropsTheTrianglesAcrossAPartingAndNoOther) {
@@ -89,10 +115,7 @@ TEST(PartedTriangles, AnImportWhoseEveryTriangleIsPartedIsRefusedByName) {
 
 TEST(PartedTriangles, AnImportedPartedModelInterpolatesNoStrandThroughItsHead) {
   const GuideSet g = partedCrown(0.0f);
-  HairFileData data;
-  data.strandCount = g.guideCount();
-  data.defaultSegments = 6;
-  data.points = g.positions;
+  const HairFileData data = crownFile(g);
   HairImportOptions o;
   o.keepStrands = true;
   o.colliders = std::vector<SphereCollider>{kHead};
@@ -106,6 +129,49 @@ TEST(PartedTriangles, AnImportedPartedModelInterpolatesNoStrandThroughItsHead) {
       ASSERT_GT(glm::length(p), 0.9f * kRadius) << "strand in triangle " << s.triangle << ", particle " << k;
     }
   }
+}
+TEST(PartedTriangles, ADistanceGridPartsTheSameTrianglesAsItsSphere) {
+  const GuideSet g = partedCrown(0.0f);
+  const std::vector<glm::uvec3> triangles = crownTriangles(g);
+  const SdfGrid grid = sampleField([](const glm::vec3& p) { return glm::length(p) - kRadius; }, glm::vec3(-0.15f),
+                                   glm::vec3(0.15f), 0.005f);
+  const PartedTriangles bySphere = dropPartedTriangles(g, triangles, std::span(&kHead, 1));
+  const PartedTriangles byGrid = dropPartedTriangles(g, triangles, CollisionBody{{}, &grid}, kPartedMargin * kRadius);
+  EXPECT_GT(byGrid.dropped, 0u);
+  EXPECT_EQ(byGrid.kept, bySphere.kept);
+}
+
+// Nothing is blended when every guide draws itself: no triangle is dropped, and none refused.
+TEST(PartedTriangles, AModelDrawingItsOwnStrandsKeepsEveryTriangle) {
+  const GuideSet g = partedCrown(0.0f);
+  HairImportOptions o;
+  o.keepStrands = true;
+  o.colliders = std::vector<SphereCollider>{kHead};
+  o.density.mode = DensityOptions::Mode::Guides;
+  const HairAsset asset = importHairAsset(crownFile(g), o, "parted.hair");
+  EXPECT_EQ(asset.partedTriangles, 0u);
+  EXPECT_EQ(asset.topology.strands.size(), g.guideCount());
+  const std::vector<glm::uvec3> one = {glm::uvec3(0, 72, 8)};
+  EXPECT_EQ(assembleImportedAsset(g, one, o, "parted.hair").partedTriangles, 0u);
+}
+
+// A character mesh that collides takes the place of the sphere fitted under the roots, in the parting test too:
+// on the head, the same triangles are parted as by the head's sphere; a metre away from the hair, none is
+// (the hair never meets it), though the sphere under the roots would part them.
+TEST(PartedTriangles, ACharacterMeshIsTheBodyTheGuidesPartAround) {
+  const test::TempDir dir;
+  const GuideSet g = partedCrown(0.0f);
+  const std::uint32_t bySphere = dropPartedTriangles(g, crownTriangles(g), std::span(&kHead, 1)).dropped;
+  const HairAsset onHead = buildSceneAsset(crownOnCharacter(dir, glm::vec3(0.0f)));
+  ASSERT_TRUE(onHead.characterCollides);
+  EXPECT_GT(onHead.partedTriangles, 0u);
+  EXPECT_EQ(onHead.partedTriangles, bySphere);
+  const HairAsset away = buildSceneAsset(crownOnCharacter(dir, glm::vec3(1.0f, 0.0f, 0.0f)));
+  ASSERT_TRUE(away.characterCollides);
+  EXPECT_EQ(away.partedTriangles, 0u);
+  Scene noMesh = crownOnCharacter(dir, glm::vec3(0.0f));
+  noMesh.mesh.reset();
+  EXPECT_GT(buildSceneAsset(noMesh).partedTriangles, 0u);  // the sphere under the roots parts them
 }
 }  // namespace
 }  // namespace hp

@@ -65,18 +65,40 @@ GuideSet guidesFromHair(const HairFileData& data, const HairImportOptions& optio
   return guides;
 }
 
-HairAsset assembleImportedAsset(GuideSet guides, std::vector<glm::uvec3> triangles,
-                                const HairImportOptions& options, std::string name) {
-  HairAsset asset;
-  asset.name = std::move(name);
-  asset.colliders = options.colliders.value_or(std::vector<SphereCollider>{});
-  PartedTriangles scalp = dropPartedTriangles(guides, triangles, asset.colliders);
+namespace {
+// The head's size the parting margin scales with: the largest sphere collider, or without one the sphere
+// under the roots.
+float headRadius(const GuideSet& guides, std::span<const SphereCollider> colliders) {
+  float radius = 0.0f;
+  for (const SphereCollider& s : colliders) radius = std::max(radius, s.radius);
+  if (radius > 0.0f) return radius;
+  const std::vector<glm::vec3> roots = guides.roots();
+  return colliderUnderRoots(fitSphere(roots).sphere, roots).radius;
+}
+
+std::vector<glm::uvec3> leaveParted(const GuideSet& guides, std::vector<glm::uvec3> triangles,
+                                    const HairImportOptions& options, std::span<const SphereCollider> colliders,
+                                    HairAsset& asset) {
+  if (resolvedMode(options.density, guides.guideCount()) == DensityOptions::Mode::Guides) return triangles;
+  const CollisionBody body{colliders, options.collisionGrid.get()};
+  if (body.empty() || triangles.empty()) return triangles;
+  PartedTriangles scalp = dropPartedTriangles(guides, triangles, body, kPartedMargin * headRadius(guides, colliders));
   if (scalp.kept.empty() && !triangles.empty())
     throw Error(asset.name + ": every one of its " + std::to_string(triangles.size()) + " root triangles has guides "
                 "parting around the head collider (strands blended from them would run through it): check the "
                 "colliders against the model's units and place");
   asset.partedTriangles = scalp.dropped;
-  asset.topology = buildInterpolationTopology(guides.roots(), std::move(scalp.kept), options.density);
+  return std::move(scalp.kept);
+}
+}  // namespace
+
+HairAsset assembleImportedAsset(GuideSet guides, std::vector<glm::uvec3> triangles,
+                                const HairImportOptions& options, std::string name) {
+  HairAsset asset;
+  asset.name = std::move(name);
+  asset.colliders = options.colliders.value_or(std::vector<SphereCollider>{});
+  triangles = leaveParted(guides, std::move(triangles), options, asset.colliders, asset);
+  asset.topology = buildInterpolationTopology(guides.roots(), std::move(triangles), options.density);
   asset.guides = std::move(guides);
   asset.fittedCollider = options.collidersFitted;
   if (!asset.fittedCollider) asset.head = collidersMesh(asset.colliders);

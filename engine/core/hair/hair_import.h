@@ -6,6 +6,7 @@
 // them; that sphere, shrunk under every root (colliderUnderRoots), is also the head collider unless
 // `colliders` gives the colliders explicitly; a given collider is drawn as the head, one sphere slightly inside
 // each. Throws hp::Error naming `source`.
+#include <memory>
 #include <optional>
 #include <span>
 #include <string>
@@ -17,6 +18,7 @@
 #include "engine/core/hair/hair_file.h"
 #include "engine/core/hair/model_transform.h"
 #include "engine/core/hair/root_topology.h"
+#include "engine/core/hair/sdf_grid.h"
 #include "engine/core/hair/strand_topology.h"
 
 namespace hp {
@@ -29,6 +31,9 @@ struct HairImportOptions {
   DensityOptions density;
   std::optional<std::vector<SphereCollider>> colliders;  // empty optional: fit one under the roots
   bool collidersFitted = false;  // `colliders` were fitted by the importer, not given (collide, draw no head)
+  // The distance grid the hair will also collide with (scene collider meshes, or a character mesh that takes
+  // the colliders' place): the parting test looks at it with `colliders`. The asset does not keep it.
+  std::shared_ptr<const SdfGrid> collisionGrid;
 };
 
 // The head collider fitted to imported roots: the roots' least-squares sphere `fit`, shrunk to the nearest
@@ -41,7 +46,8 @@ GuideSet guidesFromHair(const HairFileData& data, const HairImportOptions& optio
 // passes its colliders: given, or fitted by the caller). Given colliders are drawn as the head; fitted ones
 // (`collidersFitted`) only collide (a sphere fitted to a strip of roots is a poor guess that would hide the
 // hair it was fitted to): the asset has no head mesh and fittedCollider set. Root triangles whose guides part
-// around a collider are dropped (parted_triangles.h; refused when every one is).
+// around the colliders and `collisionGrid` are dropped (parted_triangles.h; refused when every one is), unless
+// every guide draws itself (the density resolves to Guides: nothing is blended).
 HairAsset assembleImportedAsset(GuideSet guides, std::vector<glm::uvec3> triangles,
                                 const HairImportOptions& options, std::string name);
 

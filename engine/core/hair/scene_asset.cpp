@@ -48,32 +48,36 @@ std::shared_ptr<const SdfGrid> colliderGrid(const Scene& scene) {
   }
 }
 
-// An OBJ scalp grows guides; without scene colliders a sphere fitted to the scalp keeps hair out and is drawn
-// as the head (the scalp is a surface: its fit is well posed, unlike a strip of hair roots').
-// Scene collider meshes also shape the growth (guides slide over their grid).
-HairAsset objAsset(const Scene& scene, const std::shared_ptr<const SdfGrid>& grid) {
+// An OBJ scalp grows guides; without scene colliders a sphere fitted to the scalp keeps hair out of the head as
+// it grows (the scalp is a surface: its fit is well posed, unlike a strip of hair roots'), and then collides and
+// is drawn, unless a character mesh takes its place (`meshCollides`). `growthGrid` shapes the growth too
+// (guides slide over it).
+HairAsset objAsset(const Scene& scene, HairImportOptions o, bool meshCollides,
+                   const std::shared_ptr<const SdfGrid>& growthGrid) {
   ScalpMesh scalp = loadObjScalp(scene.model.path, scene.model.transform);
-  HairImportOptions o = importOptions(scene);
-  if (!o.colliders) {
-    SphereCollider fitted = fitSphere(scalp.positions).sphere;
-    o.colliders = std::vector<SphereCollider>{fitted};  // fitted to a surface, not to roots: drawn
-  }
+  const std::vector<SphereCollider> spheres = o.colliders.value_or(std::vector{fitSphere(scalp.positions).sphere});
   DistanceFunction field;
-  if (grid) field = [&](const glm::vec3& p) { return grid->sample(p); };
-  GuideSet guides = growGuides(scalp, scene.growth, *o.colliders, {}, field);
+  if (growthGrid) field = [&](const glm::vec3& p) { return growthGrid->sample(p); };
+  GuideSet guides = growGuides(scalp, scene.growth, spheres, {}, field);
+  o.colliders = meshCollides ? std::vector<SphereCollider>{} : spheres;
   return assembleImportedAsset(std::move(guides), scalp.triangles, o, scene.model.path.string());
 }
-}  // namespace
 
-namespace {
-HairAsset modelAsset(const Scene& scene, const std::shared_ptr<const SdfGrid>& grid) {
+// The body the model's hair collides with, as far as the import needs it: a character mesh that collides
+// replaces every sphere (`meshCollides`), else the scene's colliders (spheres and `colliderGrid`), else the
+// model's own.
+HairAsset modelAsset(const Scene& scene, bool meshCollides, const std::shared_ptr<const SdfGrid>& collisionGrid,
+                     const std::shared_ptr<const SdfGrid>& growthGrid) {
+  HairImportOptions o = importOptions(scene);
+  o.collisionGrid = collisionGrid;
+  if (meshCollides && scene.model.kind != ModelSpec::Kind::Obj) o.colliders.emplace();  // fit none
   switch (scene.model.kind) {
     case ModelSpec::Kind::Hair:
-      return importHairAsset(readHairFile(scene.model.path), importOptions(scene), scene.model.path.string());
+      return importHairAsset(readHairFile(scene.model.path), o, scene.model.path.string());
     case ModelSpec::Kind::Tfx:
-      return importHairAsset(tfxToHair(readTfxFile(scene.model.path)), importOptions(scene), scene.model.path.string());
+      return importHairAsset(tfxToHair(readTfxFile(scene.model.path)), o, scene.model.path.string());
     case ModelSpec::Kind::Obj:
-      return objAsset(scene, grid);
+      return objAsset(scene, o, meshCollides, growthGrid);
     case ModelSpec::Kind::Default:
       break;
   }
@@ -163,7 +167,8 @@ HairAsset buildSceneAsset(const Scene& scene) {
   const std::shared_ptr<const SdfGrid> grid = colliderGrid(scene);
   CharacterParts character;
   if (scene.mesh) character = loadCharacter(scene);
-  HairAsset asset = modelAsset(scene, grid ? grid : character.grid);
+  const bool meshCollides = scene.mesh && !scene.colliders;
+  HairAsset asset = modelAsset(scene, meshCollides, meshCollides ? character.grid : grid, grid ? grid : character.grid);
   if (scene.colliders) {
     asset.colliders = *scene.colliders;
     asset.sdf = grid;
