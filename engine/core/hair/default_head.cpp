@@ -22,13 +22,15 @@ std::vector<glm::dvec3> fibonacciSphere(std::uint32_t n) {
 }
 
 constexpr float kPartX = 0.012f;  // the side parting runs front to back at this x, on the crown
+// The one test of which side of the parting a root is on (the comb and the dropped triangles agree).
+bool rightOfPart(const glm::vec3& root) { return root.x >= kPartX; }
 
 // Hair on either side of the parting falls to opposite sides, so no render strand may be interpolated
 // across it (it would cut through the head): scalp triangles on the crown that straddle it are dropped.
 bool straddlesPart(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c) {
   const bool top = a.y > 0.0f && b.y > 0.0f && c.y > 0.0f;
-  const bool left = a.x < kPartX || b.x < kPartX || c.x < kPartX;
-  const bool right = a.x >= kPartX || b.x >= kPartX || c.x >= kPartX;
+  const bool left = !rightOfPart(a) || !rightOfPart(b) || !rightOfPart(c);
+  const bool right = rightOfPart(a) || rightOfPart(b) || rightOfPart(c);
   return top && left && right;
 }
 
@@ -36,16 +38,16 @@ bool straddlesPart(const glm::vec3& a, const glm::vec3& b, const glm::vec3& c) {
 // from the parting and backward (strongest at the forehead and the temples) so it falls behind the
 // ears and shoulders, never over the face. A slight pull into the head makes the growth slide along
 // the field. Away from the head: gravity, slightly backward. The side of the parting is the root's
-// (`rootX`), not the growing point's: a guide rooted beside the parting whose growth drifts across it
+// (`root`), not the growing point's: a guide rooted beside the parting whose growth drifts across it
 // would otherwise turn to the far side, and strands interpolated between it and its neighbours would
 // cut through the skull.
-glm::vec3 combDirection(const glm::vec3& p, float rootX, const glm::vec3& gravity) {
+glm::vec3 combDirection(const glm::vec3& p, const glm::vec3& root, const glm::vec3& gravity) {
   const glm::vec3 down = glm::normalize(gravity);
   const glm::vec3 back(0.0f, 0.0f, -1.0f);
   if (headDistance(p) > 0.025f) return glm::normalize(down + 0.3f * back);
   const glm::vec3 n = glm::normalize(headGradient(p));
   glm::vec3 pull = down + back * (0.5f + 3.0f * std::max(0.0f, n.z));
-  if (p.y > -0.02f) pull += glm::vec3(rootX > kPartX ? 1.0f : -1.0f, 0.0f, 0.0f) * 1.5f * std::max(0.0f, n.y);
+  if (p.y > -0.02f) pull += glm::vec3(rightOfPart(root) ? 1.0f : -1.0f, 0.0f, 0.0f) * 1.5f * std::max(0.0f, n.y);
   glm::vec3 tangent = pull - glm::dot(pull, n) * n;
   if (glm::length(tangent) < 1e-4f) tangent = back;
   return glm::normalize(tangent) - 0.2f * n;
@@ -132,7 +134,7 @@ HairAsset buildDefaultHeadAsset(const GrowthOptions& growth, const DensityOption
   asset.name = "default head";
   asset.sdf = geo.grid;
   auto comb = [&](const glm::vec3& p, std::uint32_t guide) {
-    return combDirection(p, geo.scalp.positions[guide].x, growth.bendDirection);
+    return combDirection(p, geo.scalp.positions[guide], growth.bendDirection);
   };
   asset.guides = growGuides(geo.scalp, growth, {}, comb, headDistance);
   asset.topology = buildInterpolationTopology(asset.guides.roots(), geo.scalp.triangles, density);
