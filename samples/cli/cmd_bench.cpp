@@ -137,6 +137,8 @@ std::vector<hp::compute::FineWalk> fineWalks(const BenchOptions& o) {
 // Every numeric option in its range (before any model is read).
 void checkRanges(const BenchOptions& o) {
   if (o.frames == 0 || o.frames > 1000) throw hp::Error("bench: --frames must be in [1, 1000]");
+  for (std::uint32_t m : o.msaa)
+    if (m != 1 && m != 2 && m != 4 && m != 8) throw hp::Error("bench: --msaa values must be 1, 2, 4 or 8, got " + std::to_string(m));
   for (float f : o.lodFractions)
     if (!(f > 0.0f && f <= 1.0f)) throw hp::Error("bench: --lod-fraction values must be in (0, 1], got " + std::to_string(f));
   for (std::uint32_t n : o.lights)

@@ -165,6 +165,14 @@ TEST(CliBench, RefusesBadSkinBounceAndBounceSampleValues) {
   EXPECT_EQ(samples.out.find("median of"), std::string::npos) << "a frame ran: " << samples.out;
 }
 
+// `bench --msaa` values are sample counts a render target takes: refused by name before a model is built.
+TEST(CliBench, RefusesAnMsaaThatIsNotOneTwoFourOrEight) {
+  auto r = runCli({"bench", "--raster", "compute", "--msaa", "4,3", "--frames", "1"});
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_NE(r.err.find("bench: --msaa values must be 1, 2, 4 or 8, got 3"), std::string::npos) << r.err;
+  EXPECT_EQ(r.out.find("median of"), std::string::npos) << "a frame ran: " << r.out;
+}
+
 namespace {
 // `hairpipe bench` of the compute path at 100 strands, 32x24, one frame, with `extra` options: its JSON report
 // (null when the run failed, which is then a test failure).
