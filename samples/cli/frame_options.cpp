@@ -231,7 +231,8 @@ nlohmann::json frameCamera(Scene& scene, const hp::HairAsset& asset) {
     std::cerr << "hairpipe: " << asset.name << " has no head mesh: the sphere fitted to its roots (radius " << radius
               << ") keeps the hair out but is not drawn\n";
   }
-  if (asset.partedTriangles > 0) {
+  // Bare only where strands are blended: a model drawing its own strands leaves no triangle bare.
+  if (asset.partedTriangles > 0 && hp::resolvedMode(scene.density, asset.guides.guideCount()) != hp::DensityOptions::Mode::Guides) {
     guessed["bare_scalp_triangles"] = asset.partedTriangles;
     std::cerr << "hairpipe: " << asset.name << ": " << asset.partedTriangles << " scalp triangles left bare: their guides "
               << "part around the head, and strands blended from them would run through it\n";

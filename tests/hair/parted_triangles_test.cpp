@@ -141,18 +141,32 @@ TEST(PartedTriangles, ADistanceGridPartsTheSameTrianglesAsItsSphere) {
   EXPECT_EQ(byGrid.kept, bySphere.kept);
 }
 
-// Nothing is blended when every guide draws itself: no triangle is dropped, and none refused.
-TEST(PartedTriangles, AModelDrawingItsOwnStrandsKeepsEveryTriangle) {
+// A model drawing its own strands blends nothing, yet its parted triangles are dropped all the same: a density
+// chosen later (Asset::withDensity rebuilds the topology over the asset's triangles) blends over them.
+TEST(PartedTriangles, AModelDrawingItsOwnStrandsKeepsNoPartedTriangleForALaterDensity) {
   const GuideSet g = partedCrown(0.0f);
   HairImportOptions o;
   o.keepStrands = true;
   o.colliders = std::vector<SphereCollider>{kHead};
   o.density.mode = DensityOptions::Mode::Guides;
-  const HairAsset asset = importHairAsset(crownFile(g), o, "parted.hair");
-  EXPECT_EQ(asset.partedTriangles, 0u);
-  EXPECT_EQ(asset.topology.strands.size(), g.guideCount());
-  const std::vector<glm::uvec3> one = {glm::uvec3(0, 72, 8)};
-  EXPECT_EQ(assembleImportedAsset(g, one, o, "parted.hair").partedTriangles, 0u);
+  const HairAsset own = importHairAsset(crownFile(g), o, "parted.hair");
+  EXPECT_EQ(own.partedTriangles, dropPartedTriangles(g, crownTriangles(g), std::span(&kHead, 1)).dropped);
+  ASSERT_EQ(own.topology.strands.size(), g.guideCount());  // every guide drawn, in its own place
+  for (const StrandBinding& s : own.topology.strands) {
+    const glm::uvec3 t = own.topology.triangles[s.triangle];
+    EXPECT_TRUE(s.barycentric.x == 1.0f || s.barycentric.y == 1.0f || s.barycentric.z == 1.0f) << t.x;
+  }
+  DensityOptions later;
+  later.totalStrands = 4000;
+  const InterpolationTopology blended = buildInterpolationTopology(g.roots(), own.topology.triangles, later);
+  for (const StrandBinding& s : blended.strands) {
+    const glm::uvec3 t = blended.triangles[s.triangle];
+    for (std::uint32_t k = 1; k < 7; ++k) {
+      const glm::vec3 p = s.barycentric.x * g.guide(t.x)[k] + s.barycentric.y * g.guide(t.y)[k] +
+                          s.barycentric.z * g.guide(t.z)[k];
+      ASSERT_GT(glm::length(p), 0.9f * kRadius) << "strand in triangle " << s.triangle << ", particle " << k;
+    }
+  }
 }
 
 // A character mesh that collides takes the place of the sphere fitted under the roots, in the parting test too:

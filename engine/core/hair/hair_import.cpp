@@ -76,10 +76,12 @@ float headRadius(const GuideSet& guides, std::span<const SphereCollider> collide
   return colliderUnderRoots(fitSphere(roots).sphere, roots).radius;
 }
 
+// Dropped whatever the density: a model drawing its own strands blends nothing now, but its triangles are the
+// ones any later density blends over (Asset::withDensity). Every triangle parted is refused in any mode: the
+// colliders do not fit the model.
 std::vector<glm::uvec3> leaveParted(const GuideSet& guides, std::vector<glm::uvec3> triangles,
                                     const HairImportOptions& options, std::span<const SphereCollider> colliders,
                                     HairAsset& asset) {
-  if (resolvedMode(options.density, guides.guideCount()) == DensityOptions::Mode::Guides) return triangles;
   const CollisionBody body{colliders, options.collisionGrid.get()};
   if (body.empty() || triangles.empty()) return triangles;
   PartedTriangles scalp = dropPartedTriangles(guides, triangles, body, kPartedMargin * headRadius(guides, colliders));

@@ -46,8 +46,8 @@ GuideSet guidesFromHair(const HairFileData& data, const HairImportOptions& optio
 // passes its colliders: given, or fitted by the caller). Given colliders are drawn as the head; fitted ones
 // (`collidersFitted`) only collide (a sphere fitted to a strip of roots is a poor guess that would hide the
 // hair it was fitted to): the asset has no head mesh and fittedCollider set. Root triangles whose guides part
-// around the colliders and `collisionGrid` are dropped (parted_triangles.h; refused when every one is), unless
-// every guide draws itself (the density resolves to Guides: nothing is blended).
+// around the colliders and `collisionGrid` are dropped (parted_triangles.h; refused when every one is), whatever
+// the density: one that draws the guides themselves blends nothing, but a later one may.
 HairAsset assembleImportedAsset(GuideSet guides, std::vector<glm::uvec3> triangles,
                                 const HairImportOptions& options, std::string name);
 
