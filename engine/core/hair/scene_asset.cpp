@@ -55,7 +55,7 @@ std::shared_ptr<const SdfGrid> colliderGrid(const Scene& scene) {
 HairAsset objAsset(const Scene& scene, HairImportOptions o, bool meshCollides,
                    const std::shared_ptr<const SdfGrid>& growthGrid) {
   ScalpMesh scalp = loadObjScalp(scene.model.path, scene.model.transform);
-  const std::vector<SphereCollider> spheres = o.colliders.value_or(std::vector{fitSphere(scalp.positions).sphere});
+  const std::vector<SphereCollider> spheres = o.colliders ? *o.colliders : std::vector{fitSphere(scalp.positions).sphere};
   DistanceFunction field;
   if (growthGrid) field = [&](const glm::vec3& p) { return growthGrid->sample(p); };
   GuideSet guides = growGuides(scalp, scene.growth, spheres, {}, field);
