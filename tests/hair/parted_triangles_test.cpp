@@ -187,5 +187,25 @@ TEST(PartedTriangles, ACharacterMeshIsTheBodyTheGuidesPartAround) {
   noMesh.mesh.reset();
   EXPECT_GT(buildSceneAsset(noMesh).partedTriangles, 0u);  // the sphere under the roots parts them
 }
+
+// Scene collider meshes join the scene's spheres in the parting test: a sphere a metre away parts nothing, the
+// head's mesh beside it parts what the head's sphere parts.
+TEST(PartedTriangles, SceneColliderMeshesJoinTheirSpheres) {
+  const test::TempDir dir;
+  Scene scene = crownOnCharacter(dir, glm::vec3(0.0f));
+  scene.mesh.reset();
+  scene.colliders = std::vector<SphereCollider>{{glm::vec3(1.0f, 0.0f, 0.0f), kRadius}};
+  EXPECT_EQ(buildSceneAsset(scene).partedTriangles, 0u);
+  const test::GltfTestMesh head = test::uvSphere(kRadius, 64, 32);
+  std::string obj;
+  for (const glm::vec3& p : head.positions) obj += "v " + std::to_string(p.x) + " " + std::to_string(p.y) + " " + std::to_string(p.z) + "\n";
+  for (std::size_t i = 0; i < head.indices.size(); i += 3)
+    obj += "f " + std::to_string(head.indices[i] + 1) + " " + std::to_string(head.indices[i + 1] + 1) + " " +
+           std::to_string(head.indices[i + 2] + 1) + "\n";
+  test::writeText(dir / "head.obj", obj);
+  scene.colliderMeshes = {MeshColliderSpec{dir / "head.obj", 0.004f}};
+  const GuideSet g = partedCrown(0.0f);
+  EXPECT_EQ(buildSceneAsset(scene).partedTriangles, dropPartedTriangles(g, crownTriangles(g), std::span(&kHead, 1)).dropped);
+}
 }  // namespace
 }  // namespace hp
