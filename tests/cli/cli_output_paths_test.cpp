@@ -109,7 +109,7 @@ TEST(CliOutputPaths, MissingFoldersAreCreated) {
 // An output where no file can be created (/proc: even root cannot) is refused before any work: render
 // and reference fail at once, naming the folder, instead of after the frame.
 TEST(CliOutputPaths, AnUnwritableOutputIsRefusedBeforeAnyWork) {
-  for (const std::vector<std::string> args :
+  for (const std::vector<std::string>& args :
        {std::vector<std::string>{"render", "--width", "32", "--height", "32", "--out", "/proc/x.png"},
         std::vector<std::string>{"reference", "--width", "32", "--height", "24", "--spp", "1", "--out", "/proc/x.pfm"},
         std::vector<std::string>{"simulate", "--frames", "2", "--out", "/proc/x.hair"}}) {

@@ -47,7 +47,6 @@ double spreadAt(const std::vector<glm::vec3>& p, const InterpolationTopology& to
   }
   return sum / double(topology.strands.size());
 }
-}  // namespace
 
 // One clump centre per triangle pulling 0.8 of the way at the tip: each triangle's tips draw together to
 // 0.2 of their spread without clumping (the centre is one point of the triangle, so about that), the
@@ -177,3 +176,4 @@ TEST_F(GroomTest, GroomedStrandsAreTheSameInEveryRun) {
   for (std::size_t i = 0; i < a.size(); ++i) differ += a[i] != c[i];
   EXPECT_GT(differ, a.size() / 2);
 }
+}  // namespace (the tests too: their classes derive from the fixtures)

@@ -31,8 +31,6 @@ SimulationParams withGrid(double volume, double target, double friction) {
   return p;
 }
 
-std::vector<glm::vec3> xyz(const std::vector<glm::vec4>& v) { return {v.begin(), v.end()}; }
-
 // The accumulation buffer's channel `c` (0 weight, 1-3 momentum) in units of weight.
 std::vector<double> accumulated(const vk::Context& ctx, const HairGridPass& grid, std::uint32_t c) {
   const auto ints = vk::readback<std::int32_t>(ctx, grid.accumulation(), vk::BufferUse::ComputeRead,

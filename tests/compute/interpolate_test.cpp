@@ -53,7 +53,6 @@ float largestDifference(const std::vector<glm::vec4>& a, const std::vector<glm::
   }
   return largest;
 }
-}  // namespace
 
 TEST_F(InterpolateTest, MatchesDoublePrecisionReferenceOnDefaultHead) {
   HairAsset asset = headWithStrands(20000);
@@ -328,3 +327,4 @@ TEST(StrandLayoutPlan, RefusesUnchunkableBuffersNamingTheLimit) {
   EXPECT_EQ(l.strandCount, 100u);
   EXPECT_EQ(l.triangleCount, 0u);
 }
+}  // namespace (the tests too: their classes derive from the fixtures)

@@ -14,7 +14,6 @@ using namespace hp;
 
 namespace {
 class TessellateSimulatedTest : public hp::test::VulkanTest {};
-}  // namespace
 
 TEST_F(TessellateSimulatedTest, SmoothGuidesFollowTheSimulatedParticles) {
   DensityOptions density;
@@ -51,3 +50,4 @@ TEST_F(TessellateSimulatedTest, SmoothGuidesFollowTheSimulatedParticles) {
     worst = std::max(worst, glm::length(glm::dvec3(glm::vec3(smooth.positions[v])) - ref.positions[v]) / lengths[v / 36]);
   EXPECT_LT(worst, 2e-6);
 }
+}  // namespace (the tests too: their classes derive from the fixtures)

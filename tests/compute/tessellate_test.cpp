@@ -45,7 +45,6 @@ Errors compare(const RefCurves& gpu, const RefCurves& ref, const std::vector<dou
   }
   return e;
 }
-}  // namespace
 
 TEST(StrandSampling, EveryParticleIsHitForEveryParticleAndVertexCount) {
   for (std::uint32_t p = 2; p <= 64; ++p)
@@ -165,3 +164,4 @@ TEST_F(TessellateTest, DegenerateGuidesStayFiniteWithUnitTangents) {
     ASSERT_NEAR(glm::length(glm::vec3(gpu.guides.tangents[v])), 1.0f, 1e-5f) << "vertex " << v;
   }
 }
+}  // namespace (the tests too: their classes derive from the fixtures)

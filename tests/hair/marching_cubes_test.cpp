@@ -58,7 +58,9 @@ TEST(MarchingCubes, EveryCaseUsesExactlyItsCrossedEdges) {
     for (std::uint32_t e = 0; e < 12; ++e) crossed |= std::uint32_t(crossedEdge(c, e)) << e;
     EXPECT_EQ(used, crossed) << "case " << c;
     EXPECT_LE(mc.triangleCount, 12u);
-    if (c == 0 || c == 255) EXPECT_EQ(mc.triangleCount, 0u);
+    if (c == 0 || c == 255) {
+      EXPECT_EQ(mc.triangleCount, 0u);
+    }
   }
 }
 

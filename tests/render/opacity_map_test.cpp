@@ -677,7 +677,9 @@ TEST_F(VulkanTest, ComputeOpacityBinsSaturateInsteadOfWrappingAround) {
     s.raster = raster;
     s.deep = k.deep;
     ShadowRig rig(*ctx, set, s, 0, k.splats);
-    if (raster == hp::render::OpacityRaster::Compute) EXPECT_EQ(rig.maps->resolvePass()->layout(), k.bins);
+    if (raster == hp::render::OpacityRaster::Compute) {
+      EXPECT_EQ(rig.maps->resolvePass()->layout(), k.bins);
+    }
     const OpacityCapture c = rig.run(*ctx, glm::vec3(0.0f, 0.0f, 1.0f));
     std::size_t pile = 0;
     for (std::uint32_t y = 0; y < 64; ++y)
