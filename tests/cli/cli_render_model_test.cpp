@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "engine/core/hair/hair_file.h"
+#include "tests/hair/parted_crown.h"
 #include "tests/support/cli_runner.h"
 
 using hp::test::expectRefused;
@@ -30,6 +31,30 @@ std::filesystem::path centimetreZUpModel() {
   return path;
 }
 }  // namespace
+
+// A parted model's bare scalp triangles are said on stderr and in --json where strands are blended from the
+// guides; drawing the model's own strands leaves none bare, and says nothing.
+TEST(CliRenderModel, BareScalpTrianglesAreReportedWhereStrandsAreBlended) {
+  const auto model = freshTempPath("hairpipe_cli_parted.hair");
+  hp::writeHairFile(model, hp::test::hairFileOf(hp::test::partedCrown(0.0f)));
+  const auto png = freshTempPath("hairpipe_cli_parted.png");
+  for (const char* density : {"--density", "--own-strands"}) {
+    std::vector<std::string> args = {"render", "--model", model.string(), "--width", "32", "--height", "24", "--frames",
+                                     "1", "--no-shadows", "--json", "--out", png.string(), density};
+    if (std::string(density) == "--density") args.push_back("500");
+    const auto r = runCli(args);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const auto guessed = nlohmann::json::parse(r.out)["guessed"];
+    if (std::string(density) == "--density") {
+      ASSERT_TRUE(guessed.contains("bare_scalp_triangles")) << r.out;
+      EXPECT_GT(guessed["bare_scalp_triangles"].get<int>(), 0);
+      EXPECT_NE(r.err.find("scalp triangles left bare"), std::string::npos) << r.err;
+    } else {
+      EXPECT_FALSE(guessed.contains("bare_scalp_triangles")) << r.out;
+      EXPECT_EQ(r.err.find("left bare"), std::string::npos) << r.err;
+    }
+  }
+}
 
 TEST(CliRenderModel, GuessesAreReportedOnStderrAndInJson) {
   const auto model = centimetreZUpModel();

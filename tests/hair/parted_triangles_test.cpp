@@ -11,45 +11,21 @@
 #include "engine/core/hair/scene.h"
 #include "tests/hair/gltf_test_file.h"
 #include "tests/hair/hair_test_util.h"
+#include "tests/hair/parted_crown.h"
 
 namespace hp {
 namespace {
-constexpr float kRadius = 0.1f;
+constexpr float kRadius = test::kPartedCrownRadius;
 const SphereCollider kHead{glm::vec3(0.0f), kRadius};
-
-// Roots on a 9 x 9 patch of the head's crown, 1 cm apart; each guide lies along the head 2 mm out, turning
-// from its root toward +x (x >= partX) or -x (x < partX) over 80 degrees of arc: a parting along z at partX.
-GuideSet partedCrown(float partX) {
-  GuideSet g;
-  g.particlesPerGuide = 7;
-  for (int i = 0; i < 9; ++i)
-    for (int j = 0; j < 9; ++j) {
-      const glm::vec3 r = glm::normalize(glm::vec3(0.01f * float(i - 4) + 0.005f, kRadius, 0.01f * float(j - 4)));
-      const glm::vec3 side(r.x >= partX / kRadius ? 1.0f : -1.0f, 0.0f, 0.0f);
-      const glm::vec3 s = glm::normalize(side - glm::dot(side, r) * r);
-      for (int k = 0; k < 7; ++k) {
-        const float a = glm::radians(80.0f) * float(k) / 6.0f;
-        g.positions.push_back((kRadius + 0.002f * float(k > 0)) * (std::cos(a) * r + std::sin(a) * s));
-      }
-    }
-  return g;
-}
+using test::partedCrown;
 
 std::vector<glm::uvec3> crownTriangles(const GuideSet& g) {
   return triangulateRoots(g.roots(), glm::vec3(0.0f)).triangles;
 }
 
-HairFileData crownFile(const GuideSet& g) {
-  HairFileData data;
-  data.strandCount = g.guideCount();
-  data.defaultSegments = g.particlesPerGuide - 1;
-  data.points = g.positions;
-  return data;
-}
-
 // The parted crown as a .hair file with a character mesh: the head sphere, faceted, `offset` from it.
 Scene crownOnCharacter(const test::TempDir& dir, const glm::vec3& offset) {
-  writeHairFile(dir / "crown.hair", crownFile(partedCrown(0.0f)));
+  writeHairFile(dir / "crown.hair", test::hairFileOf(partedCrown(0.0f)));
   test::GltfTestMesh head = test::uvSphere(kRadius, 64, 32);
   for (glm::vec3& p : head.positions) p += offset;
   test::writeBytes(dir / "head.glb", test::glbBytes(head));
@@ -115,7 +91,7 @@ TEST(PartedTriangles, AnImportWhoseEveryTriangleIsPartedIsRefusedByName) {
 
 TEST(PartedTriangles, AnImportedPartedModelInterpolatesNoStrandThroughItsHead) {
   const GuideSet g = partedCrown(0.0f);
-  const HairFileData data = crownFile(g);
+  const HairFileData data = test::hairFileOf(g);
   HairImportOptions o;
   o.keepStrands = true;
   o.colliders = std::vector<SphereCollider>{kHead};
@@ -149,7 +125,7 @@ TEST(PartedTriangles, AModelDrawingItsOwnStrandsKeepsNoPartedTriangleForALaterDe
   o.keepStrands = true;
   o.colliders = std::vector<SphereCollider>{kHead};
   o.density.mode = DensityOptions::Mode::Guides;
-  const HairAsset own = importHairAsset(crownFile(g), o, "parted.hair");
+  const HairAsset own = importHairAsset(test::hairFileOf(g), o, "parted.hair");
   EXPECT_EQ(own.partedTriangles, dropPartedTriangles(g, crownTriangles(g), std::span(&kHead, 1)).dropped);
   ASSERT_EQ(own.topology.strands.size(), g.guideCount());  // every guide drawn, in its own place
   for (const StrandBinding& s : own.topology.strands) {
