@@ -2,6 +2,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
+#include <string>
 
 #include "engine/core/error.h"
 #include "engine/core/hair/hair_file.h"
@@ -21,6 +23,30 @@ using test::partedCrown;
 
 std::vector<glm::uvec3> crownTriangles(const GuideSet& g) {
   return triangulateRoots(g.roots(), glm::vec3(0.0f)).triangles;
+}
+
+// Every strand's blend stays outside the head (past its root) at every particle.
+void expectNoStrandThroughTheHead(const InterpolationTopology& topology, const GuideSet& g) {
+  for (const StrandBinding& s : topology.strands) {
+    const glm::uvec3 t = topology.triangles[s.triangle];
+    for (std::uint32_t k = 1; k < g.particlesPerGuide; ++k) {
+      const glm::vec3 p = s.barycentric.x * g.guide(t.x)[k] + s.barycentric.y * g.guide(t.y)[k] +
+                          s.barycentric.z * g.guide(t.z)[k];
+      ASSERT_GT(glm::length(p), 0.9f * kRadius) << "strand in triangle " << s.triangle << ", particle " << k;
+    }
+  }
+}
+
+// A UV sphere of `radius` at `centre` as an OBJ file.
+void writeObjSphere(const std::filesystem::path& path, float radius, const glm::vec3& centre) {
+  const test::GltfTestMesh m = test::uvSphere(radius, 64, 32);
+  std::string obj;
+  for (const glm::vec3& p : m.positions)
+    obj += "v " + std::to_string(p.x + centre.x) + " " + std::to_string(p.y + centre.y) + " " + std::to_string(p.z + centre.z) + "\n";
+  for (std::size_t i = 0; i < m.indices.size(); i += 3)
+    obj += "f " + std::to_string(m.indices[i] + 1) + " " + std::to_string(m.indices[i + 1] + 1) + " " +
+           std::to_string(m.indices[i + 2] + 1) + "\n";
+  test::writeText(path, obj);
 }
 
 // The parted crown as a .hair file with a character mesh: the head sphere, faceted, `offset` from it.
@@ -97,15 +123,9 @@ TEST(PartedTriangles, AnImportedPartedModelInterpolatesNoStrandThroughItsHead) {
   o.colliders = std::vector<SphereCollider>{kHead};
   const HairAsset asset = importHairAsset(data, o, "parted.hair");
   EXPECT_GT(asset.partedTriangles, 0u);
-  for (const StrandBinding& s : asset.topology.strands) {
-    const glm::uvec3 t = asset.topology.triangles[s.triangle];
-    for (std::uint32_t k = 1; k < 7; ++k) {
-      const glm::vec3 p = s.barycentric.x * g.guide(t.x)[k] + s.barycentric.y * g.guide(t.y)[k] +
-                          s.barycentric.z * g.guide(t.z)[k];
-      ASSERT_GT(glm::length(p), 0.9f * kRadius) << "strand in triangle " << s.triangle << ", particle " << k;
-    }
-  }
+  expectNoStrandThroughTheHead(asset.topology, g);
 }
+
 TEST(PartedTriangles, ADistanceGridPartsTheSameTrianglesAsItsSphere) {
   const GuideSet g = partedCrown(0.0f);
   const std::vector<glm::uvec3> triangles = crownTriangles(g);
@@ -128,21 +148,11 @@ TEST(PartedTriangles, AModelDrawingItsOwnStrandsKeepsNoPartedTriangleForALaterDe
   const HairAsset own = importHairAsset(test::hairFileOf(g), o, "parted.hair");
   EXPECT_EQ(own.partedTriangles, dropPartedTriangles(g, crownTriangles(g), std::span(&kHead, 1)).dropped);
   ASSERT_EQ(own.topology.strands.size(), g.guideCount());  // every guide drawn, in its own place
-  for (const StrandBinding& s : own.topology.strands) {
-    const glm::uvec3 t = own.topology.triangles[s.triangle];
-    EXPECT_TRUE(s.barycentric.x == 1.0f || s.barycentric.y == 1.0f || s.barycentric.z == 1.0f) << t.x;
-  }
+  for (const StrandBinding& s : own.topology.strands)
+    EXPECT_TRUE(s.barycentric.x == 1.0f || s.barycentric.y == 1.0f || s.barycentric.z == 1.0f) << s.triangle;
   DensityOptions later;
   later.totalStrands = 4000;
-  const InterpolationTopology blended = buildInterpolationTopology(g.roots(), own.topology.triangles, later);
-  for (const StrandBinding& s : blended.strands) {
-    const glm::uvec3 t = blended.triangles[s.triangle];
-    for (std::uint32_t k = 1; k < 7; ++k) {
-      const glm::vec3 p = s.barycentric.x * g.guide(t.x)[k] + s.barycentric.y * g.guide(t.y)[k] +
-                          s.barycentric.z * g.guide(t.z)[k];
-      ASSERT_GT(glm::length(p), 0.9f * kRadius) << "strand in triangle " << s.triangle << ", particle " << k;
-    }
-  }
+  expectNoStrandThroughTheHead(buildInterpolationTopology(g.roots(), own.topology.triangles, later), g);
 }
 
 // A character mesh that collides takes the place of the sphere fitted under the roots, in the parting test too:
@@ -170,18 +180,50 @@ TEST(PartedTriangles, SceneColliderMeshesJoinTheirSpheres) {
   const test::TempDir dir;
   Scene scene = crownOnCharacter(dir, glm::vec3(0.0f));
   scene.mesh.reset();
-  scene.colliders = std::vector<SphereCollider>{{glm::vec3(1.0f, 0.0f, 0.0f), kRadius}};
+  scene.colliders = std::vector<SphereCollider>{{glm::vec3(1.0f, 0.0f, 0.0f), 0.05f}};
   EXPECT_EQ(buildSceneAsset(scene).partedTriangles, 0u);
-  const test::GltfTestMesh head = test::uvSphere(kRadius, 64, 32);
-  std::string obj;
-  for (const glm::vec3& p : head.positions) obj += "v " + std::to_string(p.x) + " " + std::to_string(p.y) + " " + std::to_string(p.z) + "\n";
-  for (std::size_t i = 0; i < head.indices.size(); i += 3)
-    obj += "f " + std::to_string(head.indices[i] + 1) + " " + std::to_string(head.indices[i + 1] + 1) + " " +
-           std::to_string(head.indices[i + 2] + 1) + "\n";
-  test::writeText(dir / "head.obj", obj);
+  writeObjSphere(dir / "head.obj", kRadius, glm::vec3(0.0f));
   scene.colliderMeshes = {MeshColliderSpec{dir / "head.obj", 0.004f}};
   const GuideSet g = partedCrown(0.0f);
   EXPECT_EQ(buildSceneAsset(scene).partedTriangles, dropPartedTriangles(g, crownTriangles(g), std::span(&kHead, 1)).dropped);
+}
+
+// Guides grown on an OBJ scalp part around a character mesh where it collides: the 49-guide cap's pole (9 of its
+// triangles parted around the sphere fitted to the scalp) parts around a ball under the scalp, not around one
+// far from it.
+TEST(PartedTriangles, AnObjScalpOnACharacterMeshPartsAroundTheMesh) {
+  const test::TempDir dir;
+  Scene scene;
+  scene.model.kind = ModelSpec::Kind::Obj;
+  scene.model.path = std::filesystem::path(HAIRPIPE_TEST_DATA_DIR) / "scalp_cap.obj";
+  scene.growth.length = 1.0f;
+  EXPECT_EQ(buildSceneAsset(scene).partedTriangles, 9u);
+  for (const float away : {0.0f, 4.0f}) {
+    test::writeBytes(dir / "ball.glb", test::glbBytes(test::uvSphere(0.99f, 64, 32)));
+    if (away > 0.0f) {
+      test::GltfTestMesh far = test::uvSphere(0.99f, 64, 32);
+      for (glm::vec3& p : far.positions) p.x += away;
+      test::writeBytes(dir / "ball.glb", test::glbBytes(far));
+    }
+    scene.mesh = CharacterMeshSpec{dir / "ball.glb", 0.03f};
+    const HairAsset asset = buildSceneAsset(scene);
+    ASSERT_TRUE(asset.characterCollides);
+    if (away > 0.0f) EXPECT_EQ(asset.partedTriangles, 0u) << "a ball " << away << " away";
+    else EXPECT_GT(asset.partedTriangles, 0u);
+  }
+}
+
+// With spheres only, the margin is a tenth of the sphere the roots lie on: an ear's small sphere or a torso's
+// large one beside the head changes nothing (a torso ten times the head's size made it ten times wider).
+TEST(PartedTriangles, TheMarginIsTheHeadsNotAnEarsOrATorsos) {
+  const GuideSet g = partedCrown(0.0f);
+  const std::uint32_t byHead = dropPartedTriangles(g, crownTriangles(g), std::span(&kHead, 1)).dropped;
+  ASSERT_GT(byHead, 0u);
+  HairImportOptions o;
+  o.keepStrands = true;
+  o.colliders = std::vector<SphereCollider>{
+      kHead, {glm::vec3(0.11f, 0.0f, 0.0f), 0.01f}, {glm::vec3(0.0f, -1.2f, 0.0f), 1.0f}};
+  EXPECT_EQ(importHairAsset(test::hairFileOf(g), o, "parted.hair").partedTriangles, byHead);
 }
 }  // namespace
 }  // namespace hp

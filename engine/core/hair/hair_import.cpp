@@ -1,6 +1,7 @@
 #include "engine/core/hair/hair_import.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "engine/core/error.h"
 #include "engine/core/hair/fit_sphere.h"
@@ -66,31 +67,35 @@ GuideSet guidesFromHair(const HairFileData& data, const HairImportOptions& optio
 }
 
 namespace {
-// The head's size the parting margin scales with: the largest sphere collider, or without one the sphere
-// under the roots.
-float headRadius(const GuideSet& guides, std::span<const SphereCollider> colliders) {
-  float radius = 0.0f;
-  for (const SphereCollider& s : colliders) radius = std::max(radius, s.radius);
-  if (radius > 0.0f) return radius;
-  const std::vector<glm::vec3> roots = guides.roots();
-  return colliderUnderRoots(fitSphere(roots).sphere, roots).radius;
+// The head's size the parting margin scales with. With a distance grid in the body (a mesh, not a sphere) the
+// sphere under the roots; with spheres only, the one whose surface lies nearest the roots on average (the head
+// they grow on: not an ear's small sphere, which would make the margin smaller than the sagitta of
+// neighbouring guides, nor a torso's large one).
+float headRadius(const std::vector<glm::vec3>& roots, const CollisionBody& body) {
+  if (body.grid != nullptr || body.spheres.empty()) return colliderUnderRoots(fitSphere(roots).sphere, roots).radius;
+  const SphereCollider* nearest = nullptr;
+  double nearestGap = INFINITY;
+  for (const SphereCollider& s : body.spheres) {
+    double gap = 0.0;
+    for (const glm::vec3& r : roots) gap += std::abs(glm::distance(r, s.center) - s.radius);
+    if (gap < nearestGap) nearestGap = gap, nearest = &s;
+  }
+  return nearest->radius;
 }
 
 // Dropped whatever the density: a model drawing its own strands blends nothing now, but its triangles are the
 // ones any later density blends over (Asset::withDensity). Every triangle parted is refused in any mode: the
-// colliders do not fit the model.
-std::vector<glm::uvec3> leaveParted(const GuideSet& guides, std::vector<glm::uvec3> triangles,
-                                    const HairImportOptions& options, std::span<const SphereCollider> colliders,
-                                    HairAsset& asset) {
-  const CollisionBody body{colliders, options.collisionGrid.get()};
-  if (body.empty() || triangles.empty()) return triangles;
-  PartedTriangles scalp = dropPartedTriangles(guides, triangles, body, kPartedMargin * headRadius(guides, colliders));
-  if (scalp.kept.empty() && !triangles.empty())
-    throw Error(asset.name + ": every one of its " + std::to_string(triangles.size()) + " root triangles has guides "
-                "parting around the head collider (strands blended from them would run through it): check the "
-                "colliders against the model's units and place");
-  asset.partedTriangles = scalp.dropped;
-  return std::move(scalp.kept);
+// body does not fit the model.
+PartedTriangles dropParted(const GuideSet& guides, std::vector<glm::uvec3> triangles, const CollisionBody& body,
+                           const std::string& name) {
+  if (body.empty() || triangles.empty()) return {std::move(triangles), 0};
+  const float margin = kPartedMargin * headRadius(guides.roots(), body);
+  PartedTriangles scalp = dropPartedTriangles(guides, triangles, body, margin);
+  if (scalp.kept.empty())
+    throw Error(name + ": every one of its " + std::to_string(triangles.size()) + " root triangles has guides "
+                "parting around the body the hair collides with (strands blended from them would run through it): "
+                "check the colliders or the character mesh against the model's units and place");
+  return scalp;
 }
 }  // namespace
 
@@ -99,8 +104,10 @@ HairAsset assembleImportedAsset(GuideSet guides, std::vector<glm::uvec3> triangl
   HairAsset asset;
   asset.name = std::move(name);
   asset.colliders = options.colliders.value_or(std::vector<SphereCollider>{});
-  triangles = leaveParted(guides, std::move(triangles), options, asset.colliders, asset);
-  asset.topology = buildInterpolationTopology(guides.roots(), std::move(triangles), options.density);
+  PartedTriangles scalp =
+      dropParted(guides, std::move(triangles), CollisionBody{asset.colliders, options.collisionGrid.get()}, asset.name);
+  asset.partedTriangles = scalp.dropped;
+  asset.topology = buildInterpolationTopology(guides.roots(), std::move(scalp.kept), options.density);
   asset.guides = std::move(guides);
   asset.fittedCollider = options.collidersFitted;
   if (!asset.fittedCollider) asset.head = collidersMesh(asset.colliders);

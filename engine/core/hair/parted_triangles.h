@@ -26,7 +26,8 @@ struct CollisionBody {
   const SdfGrid* grid = nullptr;  // null: spheres only
 
   bool empty() const { return spheres.empty() && (grid == nullptr || grid->empty()); }
-  float depth(const glm::vec3& p) const;  // how far p lies inside (negative: outside)
+  // How far p lies inside (negative: outside). A NaN p reads as outside (imports refuse non-finite points).
+  float depth(const glm::vec3& p) const;
 };
 
 struct PartedTriangles {

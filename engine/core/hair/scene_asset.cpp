@@ -64,20 +64,20 @@ HairAsset objAsset(const Scene& scene, HairImportOptions o, bool meshCollides,
 }
 
 // The body the model's hair collides with, as far as the import needs it: a character mesh that collides
-// replaces every sphere (`meshCollides`), else the scene's colliders (spheres and `colliderGrid`), else the
+// replaces every sphere (`meshCollides`), else the scene's colliders (spheres and `collisionGrid`, the grid of their meshes), else the
 // model's own.
 HairAsset modelAsset(const Scene& scene, bool meshCollides, const std::shared_ptr<const SdfGrid>& collisionGrid,
                      const std::shared_ptr<const SdfGrid>& growthGrid) {
   HairImportOptions o = importOptions(scene);
   o.collisionGrid = collisionGrid;
-  if (meshCollides && scene.model.kind != ModelSpec::Kind::Obj) o.colliders.emplace();  // fit none
+  if (scene.model.kind == ModelSpec::Kind::Obj) return objAsset(scene, o, meshCollides, growthGrid);
+  if (meshCollides) o.colliders.emplace();  // no sphere fitted under the roots: the mesh takes its place
   switch (scene.model.kind) {
     case ModelSpec::Kind::Hair:
       return importHairAsset(readHairFile(scene.model.path), o, scene.model.path.string());
     case ModelSpec::Kind::Tfx:
       return importHairAsset(tfxToHair(readTfxFile(scene.model.path)), o, scene.model.path.string());
     case ModelSpec::Kind::Obj:
-      return objAsset(scene, o, meshCollides, growthGrid);
     case ModelSpec::Kind::Default:
       break;
   }

@@ -67,7 +67,8 @@ class Asset {
   // Scalp triangles an imported model's roots form that were left without render strands: their guides part
   // around the head (a parting, a whorl), so any blend of them would run through it (0 for the default head,
   // whose parting is left open by construction). Counted for every density: an asset drawing its own strands
-  // blends over no triangle, and one made from it by withDensity() blends over none of these.
+  // shows no scalp bare (it blends over no triangle) but has these dropped all the same, so that one made from
+  // it by withDensity() blends over none of them.
   std::uint32_t bareScalpTriangleCount() const noexcept;
   Result<std::vector<Vec3>> guideRoots() const noexcept;  // head space, one per guide (for skinning weights)
   const char* name() const noexcept;
