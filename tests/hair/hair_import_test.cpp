@@ -131,5 +131,20 @@ TEST(HairImport, RootsThatCannotBeTriangulatedAreAnError) {
   d.points = {{0, 0, 0}, {0, -1, 0}, {1, 0, 0}, {1, -1, 0}, {2, 0, 0}, {2, -1, 0}};
   EXPECT_ERROR_CONTAINS(importHairAsset(d, {}, "line.hair"), "line.hair: cannot triangulate the strand roots");
 }
+
+// A scale or translation that takes the model past 10 km is refused by name before its distances overflow
+// (a scale of 1e24 crashed the import: the fit and the parting margin met infinite distances).
+TEST(HairImport, AModelPlacedBeyondTenKilometresIsRefused) {
+  for (const float scale : {1e21f, 1e24f, 1e7f}) {
+    HairImportOptions o;
+    o.transform.scale = scale;
+    EXPECT_ERROR_CONTAINS(importHairAsset(model(), o, "far.hair"), "far.hair: point 0 lies at");
+  }
+  HairImportOptions moved;
+  moved.transform.translation = glm::vec3(0.0f, 2e4f, 0.0f);
+  EXPECT_ERROR_CONTAINS(importHairAsset(model(), moved, "far.hair"), "check the scale and translation");
+  std::vector<glm::vec3> inside = {glm::vec3(9999.0f), glm::vec3(-9999.0f)};
+  EXPECT_NO_THROW(checkHeadSpaceExtent(inside, "near"));
+}
 }  // namespace
 }  // namespace hp

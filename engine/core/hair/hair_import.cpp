@@ -49,6 +49,10 @@ SphereCollider colliderUnderRoots(const SphereCollider& fit, std::span<const glm
 GuideSet guidesFromHair(const HairFileData& data, const HairImportOptions& options, const std::string& source) {
   validateHairData(data, source);
   options.transform.validate();
+  std::vector<glm::vec3> placed(data.points.size());  // checked before resampling squares their distances
+  std::transform(data.points.begin(), data.points.end(), placed.begin(),
+                 [&](const glm::vec3& p) { return options.transform.applyToPoint(p); });
+  checkHeadSpaceExtent(placed, source);
   if (options.keepStrands) return keepAsIs(data, options, source);
   checkParticlesPerGuide(options.particlesPerGuide, source.c_str());
   const std::uint32_t P = options.particlesPerGuide;
@@ -73,14 +77,14 @@ namespace {
 // neighbouring guides, nor a torso's large one).
 float headRadius(const std::vector<glm::vec3>& roots, const CollisionBody& body) {
   if (body.grid != nullptr || body.spheres.empty()) return colliderUnderRoots(fitSphere(roots).sphere, roots).radius;
-  const SphereCollider* nearest = nullptr;
+  float radius = body.spheres.front().radius;
   double nearestGap = INFINITY;
   for (const SphereCollider& s : body.spheres) {
     double gap = 0.0;
-    for (const glm::vec3& r : roots) gap += std::abs(glm::distance(r, s.center) - s.radius);
-    if (gap < nearestGap) nearestGap = gap, nearest = &s;
+    for (const glm::vec3& r : roots) gap += std::abs(double(glm::distance(r, s.center)) - double(s.radius));
+    if (gap < nearestGap) nearestGap = gap, radius = s.radius;
   }
-  return nearest->radius;
+  return radius;
 }
 
 // Dropped whatever the density: a model drawing its own strands blends nothing now, but its triangles are the

@@ -1,5 +1,6 @@
 #include "engine/core/hair/model_transform.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "engine/core/error.h"
@@ -31,6 +32,17 @@ void ModelTransform::validate() const {
     throw Error("model transform: scale must be positive, got " + std::to_string(scale));
   if (!std::isfinite(translation.x + translation.y + translation.z))
     throw Error("model transform: translation is not finite");
+}
+
+void checkHeadSpaceExtent(std::span<const glm::vec3> points, const std::string& source) {
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const glm::vec3& p = points[i];
+    const float far = std::max(std::abs(p.x), std::max(std::abs(p.y), std::abs(p.z)));
+    if (!(far <= kMaxHeadSpaceCoordinate))
+      throw Error(source + ": point " + std::to_string(i) + " lies at " + std::to_string(far) + " from the origin after the "
+                  "model's scale and translation (at most " + std::to_string(int(kMaxHeadSpaceCoordinate)) +
+                  "): check the scale and translation against the model's units");
+  }
 }
 
 UpAxis parseUpAxis(const std::string& text) {

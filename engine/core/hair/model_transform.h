@@ -5,6 +5,7 @@
 // (x, z, -y), a proper rotation, so handedness and triangle winding are kept). Normals only rotate.
 #include <glm/glm.hpp>
 
+#include <span>
 #include <string>
 
 namespace hp {
@@ -21,6 +22,14 @@ struct ModelTransform {
   void validate() const;  // scale finite and > 0, translation finite
   bool operator==(const ModelTransform&) const = default;
 };
+
+// How far from the origin a point may lie in head space after the transform: 10 km in metres. Past it a
+// model's distances overflow single precision where they are squared (a fit, a triangulation, a collision).
+inline constexpr float kMaxHeadSpaceCoordinate = 1.0e4f;
+
+// Throws hp::Error naming `source` when a point's coordinate is not finite or past kMaxHeadSpaceCoordinate
+// (the model's scale or translation is wrong for its units).
+void checkHeadSpaceExtent(std::span<const glm::vec3> points, const std::string& source);
 
 UpAxis parseUpAxis(const std::string& text);  // "y" / "z" (any case); throws hp::Error otherwise
 const char* upAxisName(UpAxis up);

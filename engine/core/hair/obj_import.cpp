@@ -154,6 +154,7 @@ ScalpMesh parseObjScalp(const std::string& text, const std::string& source, cons
       t[k] = static_cast<std::uint32_t>(remap[t[k]]);
     }
   if (!raw.allCornersHaveNormals) normals.clear();
+  checkHeadSpaceExtent(positions, source);
   ScalpMesh mesh = buildScalpMesh(std::move(positions), std::move(raw.triangles), std::move(normals), source);
   mesh.droppedDegenerateTriangles += dropped;
   return mesh;
