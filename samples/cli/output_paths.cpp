@@ -49,6 +49,8 @@ void prepareOutputFile(const CommandPath& output, const std::vector<CommandPath>
   refuseInputs(output, inputs);
   std::error_code ec;
   if (fs::is_directory(output.path, ec)) throw Error(named(output) + ": is a folder, expected a file name");
+  if (fs::exists(output.path, ec) && !fs::is_regular_file(output.path, ec))
+    throw Error(named(output) + ": exists and is not a regular file (a device, a FIFO); not replaced");
   makeWritableFolder(output, output.path.has_parent_path() ? output.path.parent_path() : fs::path("."));
 }
 

@@ -32,9 +32,26 @@ int finishFile(int fd, std::span<const std::byte> bytes) {
   if (::close(fd) != 0 && !err) err = errno;
   return err;
 }
+
+// The file the bytes replace: `given`, or the file its symbolic link names.
+std::filesystem::path destination(const std::filesystem::path& given) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::file_status link = fs::symlink_status(given, ec);
+  if (ec || link.type() == fs::file_type::not_found) return given;
+  fs::path path = given;
+  if (fs::is_symlink(link)) {
+    path = fs::canonical(given, ec);
+    if (ec) throw Error(given.string() + ": is a link to a missing file; not written");
+  }
+  if (!fs::is_regular_file(fs::status(path, ec)))
+    throw Error(given.string() + ": exists and is not a regular file (a device, a FIFO or a folder); not replaced");
+  return path;
+}
 }  // namespace
 
-void writeFileAtomically(const std::filesystem::path& path, std::span<const std::byte> bytes) {
+void writeFileAtomically(const std::filesystem::path& given, std::span<const std::byte> bytes) {
+  const std::filesystem::path path = destination(given);
   std::filesystem::path dir = path.parent_path().empty() ? "." : path.parent_path();
   std::string name = path.filename().string();
   name.insert(0, 1, '.');  // hidden while incomplete (and avoids a GCC 12 -Wrestrict false positive)

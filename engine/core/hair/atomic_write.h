@@ -1,7 +1,9 @@
 #pragma once
 // Contract: writes a whole file or nothing. The bytes go to a temporary file in the destination's
 // directory, which is flushed and then renamed over the destination, so a reader (or a failure half
-// way) never sees a partial file. Throws hp::Error naming the path on any failure.
+// way) never sees a partial file. A symbolic link is followed: its target is the file written, the link
+// stays. Something there that is not a regular file (a device such as /dev/null, a FIFO, a folder, a link
+// to a missing file) is refused, never replaced. Throws hp::Error naming the path on any failure.
 #include <cstddef>
 #include <filesystem>
 #include <span>
