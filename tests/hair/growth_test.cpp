@@ -97,7 +97,9 @@ TEST(Growth, SupportsTwoToSixtyFourParticles) {
 TEST(Growth, RejectsBadOptions) {
   GrowthOptions o;
   o.length = 0.0f;
-  EXPECT_ERROR_CONTAINS(o.validate(), "length must be positive");
+  EXPECT_ERROR_CONTAINS(o.validate(), "length must be in [0.0001, 10000]");
+  o.length = 1e-30f;  // positive, and every particle NaN a frame later
+  EXPECT_ERROR_CONTAINS(o.validate(), "length must be in [0.0001, 10000]");
   o = {};
   o.lengthVariation = 1.0f;
   EXPECT_ERROR_CONTAINS(o.validate(), "lengthVariation must be in [0, 1)");

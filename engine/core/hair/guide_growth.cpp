@@ -4,6 +4,7 @@
 #include <string>
 
 #include "engine/core/error.h"
+#include "engine/core/hair/model_transform.h"
 #include "engine/core/hair/rng.h"
 #include "engine/core/hair/segment_profile.h"
 
@@ -93,7 +94,9 @@ glm::vec3 slideOutsideField(const glm::vec3& prev, const glm::vec3& p0, float le
 
 void GrowthOptions::validate() const {
   checkParticlesPerGuide(particlesPerGuide, "growth options");
-  require(std::isfinite(length) && length > 0.0f, "length must be positive, got " + std::to_string(length));
+  // Shorter than 0.1 mm (in metres) the segments' lengths vanish in the constraints' single precision.
+  require(std::isfinite(length) && length >= 1e-4f && length <= kMaxHeadSpaceCoordinate,
+          "length must be in [0.0001, " + std::to_string(int(kMaxHeadSpaceCoordinate)) + "], got " + std::to_string(length));
   require(lengthVariation >= 0.0f && lengthVariation < 1.0f,
           "lengthVariation must be in [0, 1), got " + std::to_string(lengthVariation));
   require(segmentRatio >= 1.0f && segmentRatio <= 4.0f,
