@@ -10,8 +10,10 @@
 // to 1M strands), `bench opacity` (map sizes), `bench sim` (guide counts), `bench instances` (heads per
 // Renderer), `bench head` and `bench assets` (host work).
 #include <algorithm>
+#include <charconv>
 #include <cstdio>
 #include <iostream>
+#include <string_view>
 
 #include <nlohmann/json.hpp>
 
@@ -54,14 +56,16 @@ struct BenchOptions {
   std::string json, plot, device;
 };
 
+// WxH, each a plain decimal in [1, 16384] (sscanf's %u wrapped 4294967328 to 32 and read -5 as huge).
 void parseResolution(const std::string& text, std::uint32_t& w, std::uint32_t& h) {
-  unsigned a = 0, b = 0;
-  char x = 0, extra = 0;
-  if (std::sscanf(text.c_str(), "%u%c%u%c", &a, &x, &b, &extra) != 3 || x != 'x' || a == 0 || b == 0 || a > 16384 ||
-      b > 16384)
-    throw hp::Error("bench: --resolution must be WxH with each in [1, 16384], got '" + text + "'");
-  w = a;
-  h = b;
+  const auto side = [&](std::string_view part, std::uint32_t& out) {
+    const auto [end, ec] = std::from_chars(part.data(), part.data() + part.size(), out);
+    return ec == std::errc() && end == part.data() + part.size() && out >= 1 && out <= 16384;
+  };
+  const std::size_t x = text.find('x');
+  if (x == std::string::npos || !side(std::string_view(text).substr(0, x), w) ||
+      !side(std::string_view(text).substr(x + 1), h))
+    throw hp::Error("bench: --resolution must be WxH with each in [1, 16384], got '" + text.substr(0, 40) + "'");
 }
 
 // A list option whose values are one of two words: true where a value is `yes`; anything else refused by name

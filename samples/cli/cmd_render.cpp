@@ -93,10 +93,12 @@ void runRender(const RenderOptions& o, const CLI::App& cmd) {
   hp::RenderResult result = hp::renderStill(*ctx, asset, request, [&](std::uint32_t done) { progress.update(done); });
   progress.finish();
   hp::cli::checkValidation(*ctx);
-  hp::writePng(o.out, result.width, result.height, 4, result.rgba);
-  if (result.opacity) hp::render::writeOpacityDump(o.dumpOpacity, *result.opacity);
-  if (result.strandDump) hp::writeHairFile(o.dumpStrands, *result.strandDump);
+  // The outputs that check what they encode (a non-finite strand is refused) go first, the image last: a run
+  // that fails leaves no image beside a missing export.
   if (result.frame) exportFrame(o.exportFrame, request, asset, *result.frame);
+  if (result.strandDump) hp::writeHairFile(o.dumpStrands, *result.strandDump);
+  if (result.opacity) hp::render::writeOpacityDump(o.dumpOpacity, *result.opacity);
+  hp::writePng(o.out, result.width, result.height, 4, result.rgba);
   nlohmann::json passes = nlohmann::json::object();
   for (const auto& t : result.passTimes) passes[t.name] = t.milliseconds;
   nlohmann::json report = {{"out", o.out},        {"width", result.width},   {"height", result.height},

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <iostream>
+#include <optional>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -31,7 +32,7 @@ constexpr std::int64_t kMaxDensity = 2'000'000;
 struct StrandsOptions {
   hp::cli::SceneOptions scene;
   hp::cli::GroomOptions groom;
-  std::int64_t density = -1;  // -1: the scene's own density
+  std::optional<std::int64_t> density;  // none: the scene's own density (a -1 sentinel let --density -1 through)
   std::int64_t vertices = hp::compute::kDefaultVerticesPerStrand;
   bool guidesOnly = false;
   std::string out;
@@ -40,9 +41,9 @@ struct StrandsOptions {
 
 
 void checkOptions(const StrandsOptions& o) {
-  if (o.density != -1 && (o.density < 1 || o.density > kMaxDensity))
+  if (o.density && (*o.density < 1 || *o.density > kMaxDensity))
     throw hp::Error("--density must be in [1, " + std::to_string(kMaxDensity) + "] render strands, got " +
-                    std::to_string(o.density));
+                    std::to_string(*o.density));
   if (o.vertices < 2 || o.vertices > hp::gpu::MAX_VERTICES_PER_STRAND)
     throw hp::Error("--vertices must be in [particles per guide, " + std::to_string(hp::gpu::MAX_VERTICES_PER_STRAND) +
                     "], got " + std::to_string(o.vertices));
@@ -81,9 +82,9 @@ void report(const StrandsOptions& o, const hp::HairAsset& asset, const hp::compu
 void runStrands(const StrandsOptions& o) {
   checkOptions(o);
   hp::Scene scene = hp::cli::loadScene(o.scene);
-  if (o.density != -1) {
+  if (o.density) {
     scene.density.mode = hp::DensityOptions::Mode::Total;
-    scene.density.totalStrands = static_cast<std::uint32_t>(o.density);
+    scene.density.totalStrands = static_cast<std::uint32_t>(*o.density);
   }
   hp::cli::prepareOutputFile({"--out", o.out}, hp::cli::sceneInputs(o.scene, scene));
   hp::cli::applyGroomOptions(o.groom, scene.groom);

@@ -165,12 +165,19 @@ TEST(CliBench, RefusesBadSkinBounceAndBounceSampleValues) {
   EXPECT_EQ(samples.out.find("median of"), std::string::npos) << "a frame ran: " << samples.out;
 }
 
-// `bench --msaa` values are sample counts a render target takes: refused by name before a model is built.
-TEST(CliBench, RefusesAnMsaaThatIsNotOneTwoFourOrEight) {
+// `bench --msaa` values are sample counts a render target takes, `--resolution` two sides in [1, 16384]: refused
+// by name before a model is built (a side past 2^32 wrapped around to a small one, and a frame ran).
+TEST(CliBench, RefusesBadMsaaAndResolutionValues) {
   auto r = runCli({"bench", "--raster", "compute", "--msaa", "4,3", "--frames", "1"});
   EXPECT_EQ(r.exitCode, 1);
   EXPECT_NE(r.err.find("bench: --msaa values must be 1, 2, 4 or 8, got 3"), std::string::npos) << r.err;
   EXPECT_EQ(r.out.find("median of"), std::string::npos) << "a frame ran: " << r.out;
+  for (const char* size : {"4294967328x4294967320", "-5x24", "32x24x", "32x0", "x24", "32 x24"}) {
+    auto bad = runCli({"bench", "--raster", "compute", "--resolution", size, "--frames", "1", "--strands", "100"});
+    EXPECT_EQ(bad.exitCode, 1) << size;
+    EXPECT_NE(bad.err.find("--resolution must be WxH with each in [1, 16384]"), std::string::npos) << bad.err;
+    EXPECT_EQ(bad.out.find("median of"), std::string::npos) << "a frame ran: " << bad.out;
+  }
 }
 
 namespace {

@@ -69,6 +69,7 @@ TEST(CliStrands, BadOptionsExitOneNamingTheOption) {
   hp::test::expectRefused({"strands", "--out", out.string()}, {
       {{"--density", "0"}, "--density"},
       {{"--density", "50000000"}, "--density"},
+      {{"--density", "-1"}, "--density"},  // was the "scene's own" sentinel, so it ran with the default
       {{"--vertices", "5"}, "--vertices"},    // fewer than the 7 particles per guide
       {{"--vertices", "300"}, "--vertices"},  // more than 256
       {{"--model", "head.txt"}, "--model"},
