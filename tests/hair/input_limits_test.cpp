@@ -94,9 +94,15 @@ TEST(InputLimits, ObjMaterialLibrariesAreNeverOpened) {
   EXPECT_EQ(mesh.triangles.size(), 1u);
 }
 
-TEST(InputLimits, ObjNonFiniteVerticesAreRefused) {
-  EXPECT_ERROR_CONTAINS(parseObjScalp(std::string("v 1e999 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"), "x.obj"),
-                        "x.obj: vertex 1 is not finite");
+// A vertex line that is not 3 finite numbers is refused with its line: the parser read a missing or unreadable
+// coordinate as 0 ("v 0.05", "v abc 0 0", "v nan nan nan" became points at the origin).
+TEST(InputLimits, ObjVerticesThatAreNotThreeFiniteNumbersAreRefused) {
+  for (const char* bad : {"v 1e999 0 0", "v nan nan nan", "v inf 0 0", "v abc 0 0", "v 0.05", "v 1 2 3 4 5 6 7 8"}) {
+    const std::string text = std::string("v 1 0 0\n") + bad + "\nv 0 1 0\nf 1 2 3\n";
+    EXPECT_ERROR_CONTAINS(parseObjScalp(text, "x.obj"), "x.obj: line 2: a vertex needs 3 finite coordinates, got 'v ");
+  }
+  const ScalpMesh signs = parseObjScalp("v +1 0 0 # signed\nv .5 1 -1e-3 1.0\nv\t0 0 1\nf 1 2 3\n", "x.obj");
+  EXPECT_EQ(signs.positions.size(), 3u);
 }
 }  // namespace
 }  // namespace hp

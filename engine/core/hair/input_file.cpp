@@ -1,5 +1,6 @@
 #include "engine/core/hair/input_file.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 
@@ -45,6 +46,17 @@ std::vector<std::byte> readInputBytes(const std::filesystem::path& path, std::ui
 
 std::string readInputText(const std::filesystem::path& path, std::uint64_t maxBytes) {
   return readChecked<std::string>(path, maxBytes);
+}
+
+std::vector<std::string_view> splitWords(std::string_view line) {
+  std::vector<std::string_view> out;
+  std::size_t at = 0;
+  while ((at = line.find_first_not_of(" \t\r", at)) != std::string_view::npos) {
+    const std::size_t end = std::min(line.find_first_of(" \t\r", at), line.size());
+    out.push_back(line.substr(at, end - at));
+    at = end;
+  }
+  return out;
 }
 
 std::string excerpt(std::string_view text, std::size_t maxChars) {

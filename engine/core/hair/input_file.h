@@ -24,4 +24,7 @@ std::string readInputText(const std::filesystem::path& path, std::uint64_t maxBy
 // At most `maxChars` characters of `text` for an error message, with "..." when cut and every
 // non-printable byte escaped, so a message never carries a whole hostile input.
 std::string excerpt(std::string_view text, std::size_t maxChars = 48);
+
+// The words of a text line, split at blanks (spaces, tabs, a carriage return).
+std::vector<std::string_view> splitWords(std::string_view line);
 }  // namespace hp

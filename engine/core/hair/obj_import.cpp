@@ -2,8 +2,10 @@
 
 #include <tiny_obj_loader.h>  // its implementation: tinyobj_implementation.cpp
 
+#include <charconv>
 #include <cmath>
 #include <string>
+#include <string_view>
 #include <unordered_map>
 
 #include "engine/core/error.h"
@@ -75,30 +77,55 @@ void checkFiniteVertices(const std::vector<glm::vec3>& positions, const std::str
 // (its count wrapped, the faces after it shifted). Such faces are refused by count before parsing.
 constexpr std::size_t kMaxFaceVertices = 255;
 
-void refuseLargeFaces(const std::string& text, const std::string& file) {
-  std::size_t face = 0, pos = 0;
+// Calls f(number, keyword, rest) for every line (numbered from 1) that starts with a keyword: `rest` is what
+// follows the keyword, up to a comment.
+template <class F>
+void forEachStatement(const std::string& text, F&& f) {
+  std::size_t pos = 0, number = 0;
   while (pos < text.size()) {
     std::size_t end = text.find('\n', pos);
     if (end == std::string::npos) end = text.size();
-    std::size_t i = text.find_first_not_of(" \t", pos);
-    if (i < end && text[i] == 'f' && i + 1 < end && (text[i + 1] == ' ' || text[i + 1] == '\t')) {
-      ++face;
-      std::size_t corners = 0;
-      for (std::size_t k = i + 1; k < end && text[k] != '#'; ++k)
-        if (text[k] != ' ' && text[k] != '\t' && text[k] != '\r' && (text[k - 1] == ' ' || text[k - 1] == '\t'))
-          ++corners;
-      if (corners > kMaxFaceVertices)
-        throw Error(faceLabel(file, face - 1) + " has " + std::to_string(corners) + " vertices; at most " +
-                    std::to_string(kMaxFaceVertices) + " are supported (split it into smaller polygons)");
+    ++number;
+    const std::string_view line = std::string_view(text).substr(pos, end - pos);
+    const std::size_t k = line.find_first_not_of(" \t");
+    const std::size_t stop = line.find_first_of(" \t\r", k);
+    if (k != std::string_view::npos && line[k] != '#') {
+      const std::string_view keyword = line.substr(k, stop == std::string_view::npos ? std::string_view::npos : stop - k);
+      const std::string_view rest = stop == std::string_view::npos ? std::string_view() : line.substr(stop);
+      f(number, keyword, rest.substr(0, rest.find('#')));
     }
     pos = end + 1;
   }
 }
 
+// Faces past kMaxFaceVertices corners, and vertex lines that are not 3 (to 7: w, or a colour) finite numbers:
+// the parser reads a missing or unreadable coordinate ("v 0.05", "v abc 0 0", "v nan 0 0") as 0.
+void checkStatements(const std::string& text, const std::string& file) {
+  std::size_t face = 0;
+  forEachStatement(text, [&](std::size_t line, std::string_view keyword, std::string_view rest) {
+    const std::vector<std::string_view> w = splitWords(rest);
+    if (keyword == "f" && w.size() > kMaxFaceVertices)
+      throw Error(faceLabel(file, face) + " has " + std::to_string(w.size()) + " vertices; at most " +
+                  std::to_string(kMaxFaceVertices) + " are supported (split it into smaller polygons)");
+    face += keyword == "f";
+    if (keyword != "v") return;
+    bool ok = w.size() >= 3 && w.size() <= 7;
+    for (std::string_view word : w) {
+      if (word.size() > 1 && word[0] == '+') word.remove_prefix(1);  // from_chars takes no sign but '-'
+      float value = 0.0f;
+      const auto [end, ec] = std::from_chars(word.data(), word.data() + word.size(), value);
+      ok = ok && ec == std::errc() && end == word.data() + word.size() && std::isfinite(value);
+    }
+    if (!ok)
+      throw Error(file + ": line " + std::to_string(line) + ": a vertex needs 3 finite coordinates, got 'v" +
+                  excerpt(rest, 60) + "'");
+  });
+}
+
 // Parsed from memory with an empty material text: hairpipe uses no materials, and an `mtllib` line
 // must never make it open a file the input names (such as ../../dev/zero).
 RawMesh parseRaw(const std::string& text, const std::string& file) {
-  refuseLargeFaces(text, file);
+  checkStatements(text, file);
   tinyobj::ObjReaderConfig config;
   config.triangulate = false;  // indices are validated before any triangulation touches them
   config.vertex_color = false;

@@ -49,16 +49,6 @@ bool parseType(std::string_view s, Type& t) {
   return false;
 }
 
-std::vector<std::string_view> words(std::string_view line) {
-  std::vector<std::string_view> out;
-  std::size_t at = 0;
-  while ((at = line.find_first_not_of(" \t\r", at)) != std::string_view::npos) {
-    const std::size_t end = std::min(line.find_first_of(" \t\r", at), line.size());
-    out.push_back(line.substr(at, end - at));
-    at = end;
-  }
-  return out;
-}
 
 struct Header {
   Format format = Format::Ascii;
@@ -103,7 +93,7 @@ Header parseHeader(std::string_view text, const std::string& source) {
     if (end == std::string_view::npos || end > kMaxHeaderBytes)
       throw Error(source + ": no 'end_header' in the first " + std::to_string(kMaxHeaderBytes) + " bytes");
     ++line;
-    const auto w = words(text.substr(at, end - at));
+    const auto w = splitWords(text.substr(at, end - at));
     at = end + 1;
     if (w.empty()) continue;
     if (w[0] == "end_header") break;
