@@ -63,7 +63,11 @@ void appendReadback(const vk::Context& ctx, const vk::Buffer& buffer, vk::Buffer
 void validateVerticesPerStrand(std::uint32_t q, std::uint32_t p) {
   if (q < p || q > gpu::MAX_VERTICES_PER_STRAND)
     throw Error("verticesPerStrand (Q) must be in [particlesPerGuide = " + std::to_string(p) + ", " +
-                std::to_string(gpu::MAX_VERTICES_PER_STRAND) + "], got " + std::to_string(q));
+                std::to_string(gpu::MAX_VERTICES_PER_STRAND) + "], got " + std::to_string(q) +
+                (q < p ? ": a render strand needs a vertex for each of its guide's particles; give the guides at most " +
+                             std::to_string(q) + " particles (a scene's growth.particles, a model kept as is "
+                             "with fewer points per strand) or more vertices (strands --vertices)"
+                       : ""));
 }
 
 void validateBounceSamples(std::uint32_t samples, const char* field) {
