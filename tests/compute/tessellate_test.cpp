@@ -85,7 +85,9 @@ TEST(StrandLayout, RefusesVertexCountsOutsideParticlesTo256) {
       EXPECT_NE(std::string(e.what()).find("verticesPerStrand"), std::string::npos) << e.what();
       // Too few vertices for the guides: the message says which settings to change (a scene's 37 particles
       // met the renderer's 36 vertices with no word of either).
-      if (q == 6u) EXPECT_NE(std::string(e.what()).find("growth.particles"), std::string::npos) << e.what();
+      if (q == 6u) {
+        EXPECT_NE(std::string(e.what()).find("growth.particles"), std::string::npos) << e.what();
+      }
     }
   }
 }
