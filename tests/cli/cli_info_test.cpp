@@ -91,6 +91,10 @@ TEST(CliBench, SuitesAreSubcommandsOfBench) {
   EXPECT_NO_THROW(parsed = nlohmann::json::parse(assets.out)) << assets.out;
   EXPECT_TRUE(parsed.is_object()) << assets.out;
   EXPECT_EQ(assets.out.find("median of"), std::string::npos) << "the frame bench ran too";
+  // A model too large to build is refused by name before any allocation (it was a bare std::bad_alloc).
+  auto huge = runCli({"bench", "assets", "--strands", "1000000", "--points", "2000000000", "--repeat", "1"});
+  EXPECT_EQ(huge.exitCode, 1);
+  EXPECT_NE(huge.err.find("bench assets: --points must be at most"), std::string::npos) << huge.err;
 }
 
 // `bench strands` and `bench sim` time their copy yardstick alone too, and derive bandwidth only where the
