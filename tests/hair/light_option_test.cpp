@@ -70,6 +70,8 @@ TEST(LightOption, BadSpecsAreRefusedNamingTheKeyAndValue) {
       {"directional:intensity=", "intensity=: expected a number"},
       {"directional:color=1,-0.5,1", "color=1,-0.5,1: components must be >= 0"},
       {"directional:dir=0,0,0", "dir=0,0,0: must be a non-zero vector"},
+      {"directional:dir=1e30,1e30,1e30", "dir=1e30,1e30,1e30: components must be within +-10000"},  // was "non-zero"
+      {"spot:pos=1e30,0,0", "pos=1e30,0,0: components must be within +-10000"},  // was "a unit vector"
       {"spot:pos=0,1,0:cone=0", "cone=0: must be in (0, 80] degrees"},
       {"spot:pos=0,1,0:cone=81", "cone=81: must be in (0, 80] degrees"},
       {"spot:pos=0,1,0:target=0,1,0", "target=0,1,0: must differ from pos"},

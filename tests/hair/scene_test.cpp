@@ -118,7 +118,13 @@ TEST(Scene, OutOfRangeValuesNameThePath) {
   EXPECT_THAT_ERROR_CONTAINS_IMPL(sceneParseError(R"({"render": {"raster": "cuda"}})"),
                                   "/render/raster: raster must be auto, compute or graphics, got 'cuda'");
   EXPECT_THAT_ERROR_CONTAINS_IMPL(sceneParseError(R"({"camera": {"fovDeg": 180}})"), "/camera/fovDeg: must be in (0, 180)");
-  EXPECT_THAT_ERROR_CONTAINS_IMPL(sceneParseError(R"({"camera": {"distance": 0}})"), "/camera/distance: must be > 0");
+  EXPECT_THAT_ERROR_CONTAINS_IMPL(sceneParseError(R"({"camera": {"distance": 0}})"), "/camera/distance: must be in (0, 10000]");
+  // Finite but past head space: their lengths overflow (the messages named a zero vector or the view's matrices).
+  EXPECT_THAT_ERROR_CONTAINS_IMPL(sceneParseError(R"({"camera": {"distance": 1e30}})"), "/camera/distance: must be in (0, 10000]");
+  EXPECT_THAT_ERROR_CONTAINS_IMPL(sceneParseError(R"({"light": {"direction": [1e30, 1e30, 1e30]}})"),
+                                  "/light/direction: components must be within +-10000");
+  EXPECT_THAT_ERROR_CONTAINS_IMPL(sceneParseError(R"({"light": {"type": "spot", "position": [1e30, 0, 0]}})"),
+                                  "/light/position: components must be within +-10000");
   EXPECT_THAT_ERROR_CONTAINS_IMPL(sceneParseError(R"({"light": {"direction": [0, 0, 0]}})"),
                                   "/light/direction: must be a non-zero vector");
   EXPECT_THAT_ERROR_CONTAINS_IMPL(sceneParseError(R"({"light": {"intensity": -1}})"), "/light/intensity: must be >= 0");

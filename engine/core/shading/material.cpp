@@ -43,7 +43,7 @@ void HairMaterial::validate() const {
   }
   requireRange("alphaR", alphaR, -30 * kDeg, false, 30 * kDeg, "|alphaR| must be <= 30 deg");
   requireRange("betaR", betaR, 0.0, true, 45 * kDeg, "must be in (0, 45] deg");
-  requireRange("kG", kG, 0.0, false, 1e6, "must be >= 0");
+  requireRange("kG", kG, 0.0, false, 1e6, "must be in [0, 1e6]");
   requireRange("wc", wc, 0.0, true, 90 * kDeg, "must be in (0, 90] deg");
   requireRange("dEta", dEta, 0.0, true, 10.0, "must be in (0, 10]");
   requireRange("dhM", dhM, 0.0, true, 1.0, "must be in (0, 1]");

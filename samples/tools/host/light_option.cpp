@@ -10,6 +10,7 @@
 
 #include "engine/core/error.h"
 #include "engine/core/hair/input_file.h"
+#include "engine/core/hair/model_transform.h"
 
 namespace hp {
 namespace {
@@ -83,7 +84,11 @@ class Pairs {
   glm::vec3 vec3(const char* key) const {
     const std::vector<std::string_view> parts = split(values_.at(key), ',');
     if (parts.size() != 3) fail(key, "expected X,Y,Z");
-    return {numberIn(key, parts[0]), numberIn(key, parts[1]), numberIn(key, parts[2])};
+    const glm::vec3 v(numberIn(key, parts[0]), numberIn(key, parts[1]), numberIn(key, parts[2]));
+    // Past head space's extent a length overflows (a direction of 1e30s read as a zero vector).
+    if (glm::any(glm::greaterThan(glm::abs(v), glm::vec3(kMaxHeadSpaceCoordinate))))
+      fail(key, "components must be within +-" + std::to_string(int(kMaxHeadSpaceCoordinate)));
+    return v;
   }
 
   bool onOff(const char* key) const {

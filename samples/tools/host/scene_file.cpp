@@ -181,6 +181,14 @@ LightSpec readLightObject(JsonObject& o, const std::string& pointer) {
   o.read("direction", l.direction);
   o.read("position", l.position);
   o.read("target", target);
+  // Past head space's extent a length overflows (a direction of 1e30s read as a zero vector).
+  const auto within = [](const glm::vec3& v) {
+    return glm::all(glm::lessThanEqual(glm::abs(v), glm::vec3(kMaxHeadSpaceCoordinate)));
+  };
+  const std::string bound = "components must be within +-" + std::to_string(int(kMaxHeadSpaceCoordinate));
+  requireThat(within(l.direction), o, "direction", bound);
+  requireThat(within(l.position), o, "position", bound);
+  requireThat(within(target), o, "target", bound);
   o.read("coneDeg", l.coneDeg);
   o.read("range", l.range);
   o.read("color", l.color);
@@ -233,7 +241,10 @@ void readCamera(JsonObject& root, CameraSpec& c) {
   o->read("target", c.target);
   o->finish();
   requireThat(std::abs(c.elevationDeg) <= 89.0f, *o, "elevationDeg", "must be in [-89, 89]");
-  requireThat(c.distance > 0.0f && std::isfinite(c.distance), *o, "distance", "must be > 0");
+  requireThat(c.distance > 0.0f && c.distance <= kMaxHeadSpaceCoordinate, *o, "distance",
+              "must be in (0, " + std::to_string(int(kMaxHeadSpaceCoordinate)) + "]");
+  requireThat(glm::all(glm::lessThanEqual(glm::abs(c.target), glm::vec3(kMaxHeadSpaceCoordinate))), *o, "target",
+              "components must be within +-" + std::to_string(int(kMaxHeadSpaceCoordinate)));
   requireThat(c.fovDeg > 0.0f && c.fovDeg < 180.0f, *o, "fovDeg", "must be in (0, 180)");
 }
 
