@@ -101,6 +101,10 @@ TEST(InputLimits, ObjVerticesThatAreNotThreeFiniteNumbersAreRefused) {
     const std::string text = std::string("v 1 0 0\n") + bad + "\nv 0 1 0\nf 1 2 3\n";
     EXPECT_ERROR_CONTAINS(parseObjScalp(text, "x.obj"), "x.obj: line 2: a vertex needs 3 finite coordinates, got 'v ");
   }
+  // A corner index that does not fit 32 bits (it wrapped into some index: "a non-manifold edge").
+  EXPECT_ERROR_CONTAINS(parseObjScalp("v 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 2 99999999999999999999\n", "x.obj"),
+                        "x.obj: face 1: corner '99999999999999999999' is not a vertex index");
+  EXPECT_ERROR_CONTAINS(parseObjScalp("v 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 2 x/1\n", "x.obj"), "is not a vertex index");
   const ScalpMesh signs = parseObjScalp("v +1 0 0 # signed\nv .5 1 -1e-3 1.0\nv\t0 0 1\nf 1 2 3\n", "x.obj");
   EXPECT_EQ(signs.positions.size(), 3u);
 }

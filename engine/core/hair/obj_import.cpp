@@ -4,6 +4,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstdint>
 #include <string>
 #include <string_view>
 #include <unordered_map>
@@ -98,6 +99,18 @@ void forEachStatement(const std::string& text, F&& f) {
   }
 }
 
+// Each corner's vertex index (before any '/') a decimal that fits 32 bits: the parser wrapped
+// 99999999999999999999 into some index, and the message spoke of a non-manifold edge.
+void checkFaceCorners(const std::vector<std::string_view>& corners, const std::string& where) {
+  for (const std::string_view corner : corners) {
+    const std::string_view index = corner.substr(0, corner.find('/'));
+    long long value = 0;
+    const auto [end, ec] = std::from_chars(index.data(), index.data() + index.size(), value);
+    if (ec != std::errc() || end != index.data() + index.size() || value > INT32_MAX || value < -INT32_MAX)
+      throw Error(where + ": corner '" + excerpt(corner, 24) + "' is not a vertex index");
+  }
+}
+
 // Faces past kMaxFaceVertices corners, and vertex lines that are not 3 (to 7: w, or a colour) finite numbers:
 // the parser reads a missing or unreadable coordinate ("v 0.05", "v abc 0 0", "v nan 0 0") as 0.
 void checkStatements(const std::string& text, const std::string& file) {
@@ -107,7 +120,7 @@ void checkStatements(const std::string& text, const std::string& file) {
     if (keyword == "f" && w.size() > kMaxFaceVertices)
       throw Error(faceLabel(file, face) + " has " + std::to_string(w.size()) + " vertices; at most " +
                   std::to_string(kMaxFaceVertices) + " are supported (split it into smaller polygons)");
-    face += keyword == "f";
+    if (keyword == "f") checkFaceCorners(w, faceLabel(file, face++));
     if (keyword != "v") return;
     bool ok = w.size() >= 3 && w.size() <= 7;
     for (std::string_view word : w) {
