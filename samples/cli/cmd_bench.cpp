@@ -19,6 +19,7 @@
 
 #include "engine/core/error.h"
 #include "engine/core/hair/atomic_write.h"
+#include "engine/core/hair/input_file.h"
 #include "samples/tools/copy_reference.h"
 #include "samples/cli/bench_context.h"
 #include "samples/cli/bench_frame.h"
@@ -65,7 +66,7 @@ void parseResolution(const std::string& text, std::uint32_t& w, std::uint32_t& h
   const std::size_t x = text.find('x');
   if (x == std::string::npos || !side(std::string_view(text).substr(0, x), w) ||
       !side(std::string_view(text).substr(x + 1), h))
-    throw hp::Error("bench: --resolution must be WxH with each in [1, 16384], got '" + text.substr(0, 40) + "'");
+    throw hp::Error("bench: --resolution must be WxH with each in [1, 16384], got '" + hp::excerpt(text) + "'");
 }
 
 // A list option whose values are one of two words: true where a value is `yes`; anything else refused by name

@@ -2,6 +2,7 @@
 // the input is left byte-identical; a folder where a file is expected (and the reverse) is refused;
 // missing folders are created.
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include <chrono>
 #include <fstream>
@@ -108,6 +109,17 @@ TEST(CliOutputPaths, MissingFoldersAreCreated) {
 
 // An output where no file can be created (/proc: even root cannot) is refused before any work: render
 // and reference fail at once, naming the folder, instead of after the frame.
+// A device or FIFO is refused as an output before any work, and left as it was (renaming over it made it a
+// regular file: /dev/full did, and as root /dev/null would).
+TEST(CliOutputPaths, ADeviceOrFifoIsNeverAnOutput) {
+  hp::test::TempDir dir;
+  ASSERT_EQ(::mkfifo((dir / "pipe").c_str(), 0600), 0);
+  const auto r = runCli({"strands", "--density", "10", "--out", (dir / "pipe").string()});
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_NE(r.err.find("exists and is not a regular file"), std::string::npos) << r.err;
+  EXPECT_EQ(std::filesystem::status(dir / "pipe").type(), std::filesystem::file_type::fifo);
+}
+
 TEST(CliOutputPaths, AnUnwritableOutputIsRefusedBeforeAnyWork) {
   for (const std::vector<std::string>& args :
        {std::vector<std::string>{"render", "--width", "32", "--height", "32", "--out", "/proc/x.png"},

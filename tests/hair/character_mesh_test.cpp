@@ -282,4 +282,17 @@ TEST(CharacterMesh, HostileGlbFilesAreRefusedByMessage) {
   EXPECT_ERROR_CONTAINS(parseGltf(textBytes(cycle), "c.gltf", {}), "on a cycle of nodes");
   EXPECT_ERROR_CONTAINS(loadCharacterMesh(dir / "body.fbx"), "not a mesh hairpipe reads");
 }
+
+// A character mesh placed past 10 km by its scale is refused as such (it was "vertex N is not finite" or "no
+// non-degenerate triangles" once the degenerate test squared its distances), in every format.
+TEST(CharacterMesh, AMeshScaledPastHeadSpaceIsRefusedAsSuch) {
+  test::TempDir dir;
+  test::writeText(dir / "tri.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                                   "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
+                                   "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
+  ModelTransform far;
+  far.scale = 1e30f;
+  EXPECT_ERROR_CONTAINS(loadCharacterMesh(dir / "tri.ply", far), "tri.ply: point 1 lies at (1e+30, 0, 0)");
+  EXPECT_EQ(loadCharacterMesh(dir / "tri.ply").triangleCount(), 1u);
+}
 }  // namespace hp

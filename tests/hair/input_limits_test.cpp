@@ -108,5 +108,15 @@ TEST(InputLimits, ObjVerticesThatAreNotThreeFiniteNumbersAreRefused) {
   const ScalpMesh signs = parseObjScalp("v +1 0 0 # signed\nv .5 1 -1e-3 1.0\nv\t0 0 1\nf 1 2 3\n", "x.obj");
   EXPECT_EQ(signs.positions.size(), 3u);
 }
+
+// Lines end at LF, CRLF or a lone CR, as the parser reads them: a CR-only file is checked line by line (one
+// long "comment" line let every check pass while the parser read the statements), and a coordinate too small
+// for a float is the parser's 0, not an error.
+TEST(InputLimits, ObjChecksSeeTheLinesTheParserReads) {
+  EXPECT_ERROR_CONTAINS(parseObjScalp("# c\rv 1 0 0\rv 0 1 0\rv 0 0 1\rf 1 2 99999999999999999999\r", "x.obj"),
+                        "x.obj: face 1: corner '99999999999999999999' is not a vertex index");
+  EXPECT_ERROR_CONTAINS(parseObjScalp("v 1 0 0\r\nv 0.05\r\nv 0 0 1\r\nf 1 2 3\r\n", "x.obj"), "x.obj: line 2: a vertex");
+  EXPECT_EQ(parseObjScalp("v 1 0 0\rv 0 1 1e-50\rv 0 0 1\rf +1 2 3\r", "x.obj").positions.size(), 3u);
+}
 }  // namespace
 }  // namespace hp

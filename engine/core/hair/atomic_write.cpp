@@ -42,9 +42,11 @@ std::filesystem::path destination(const std::filesystem::path& given) {
   fs::path path = given;
   if (fs::is_symlink(link)) {
     path = fs::canonical(given, ec);
-    if (ec) throw Error(given.string() + ": is a link to a missing file; not written");
+    if (ec) throw Error(given.string() + ": is a link that cannot be followed (" + ec.message() + "); not written");
   }
-  if (!fs::is_regular_file(fs::status(path, ec)))
+  const fs::file_status status = fs::status(path, ec);
+  if (ec) throw Error(given.string() + ": cannot be examined (" + ec.message() + "); not written");
+  if (!fs::is_regular_file(status))
     throw Error(given.string() + ": exists and is not a regular file (a device, a FIFO or a folder); not replaced");
   return path;
 }

@@ -2,8 +2,8 @@
 // Contract: writes a whole file or nothing. The bytes go to a temporary file in the destination's
 // directory, which is flushed and then renamed over the destination, so a reader (or a failure half
 // way) never sees a partial file. A symbolic link is followed: its target is the file written, the link
-// stays. Something there that is not a regular file (a device such as /dev/null, a FIFO, a folder, a link
-// to a missing file) is refused, never replaced. Throws hp::Error naming the path on any failure.
+// stays. Something there that is not a regular file (a device such as /dev/null, a FIFO, a folder), or a
+// link that cannot be followed (to a missing file, a loop), is refused, never replaced. Throws hp::Error naming the path on any failure.
 #include <cstddef>
 #include <filesystem>
 #include <span>

@@ -5,6 +5,7 @@
 
 #include "engine/core/error.h"
 #include "engine/core/hair/finite.h"
+#include "engine/core/hair/model_transform.h"
 #include "engine/core/hair/scalp_mesh.h"
 
 namespace hp {
@@ -118,6 +119,7 @@ void finishCharacterMesh(CharacterMesh& mesh) {
     throw Error(mesh.source + ": " + std::to_string(mesh.positions.size()) + " vertices and " +
                 std::to_string(mesh.triangles.size()) + " triangles, more than hairpipe reads");
   checkGeometry(mesh);
+  checkHeadSpaceExtent(mesh.positions, mesh.source);  // before the degenerate test squares their distances
   mesh.droppedDegenerateTriangles += dropDegenerateTriangles(mesh.positions, mesh.triangles);
   if (mesh.triangles.empty()) throw Error(mesh.source + ": no non-degenerate triangles");
   finishNormals(mesh);

@@ -44,8 +44,7 @@ CharacterMesh objMesh(const std::filesystem::path& path, const ModelTransform& t
 }
 }  // namespace
 
-namespace {
-CharacterMesh readCharacterMesh(const std::filesystem::path& path, const ModelTransform& transform) {
+CharacterMesh loadCharacterMesh(const std::filesystem::path& path, const ModelTransform& transform) {
   const auto kind = meshKindOf(path);
   if (!kind) throw Error(path.string() + ": not a mesh hairpipe reads (.obj, .ply, .gltf, .glb or .tfxmesh)");
   switch (*kind) {
@@ -55,12 +54,5 @@ CharacterMesh readCharacterMesh(const std::filesystem::path& path, const ModelTr
     case MeshKind::TfxMesh: return readTfxMeshFile(path, transform);
   }
   throw Error(path.string() + ": unknown mesh kind");
-}
-}  // namespace
-
-CharacterMesh loadCharacterMesh(const std::filesystem::path& path, const ModelTransform& transform) {
-  CharacterMesh mesh = readCharacterMesh(path, transform);
-  checkHeadSpaceExtent(mesh.positions, mesh.source);
-  return mesh;
 }
 }  // namespace hp

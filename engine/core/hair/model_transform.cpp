@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "engine/core/error.h"
 
@@ -35,13 +36,15 @@ void ModelTransform::validate() const {
 }
 
 void checkHeadSpaceExtent(std::span<const glm::vec3> points, const std::string& source) {
+  constexpr float k = kMaxHeadSpaceCoordinate;
   for (std::size_t i = 0; i < points.size(); ++i) {
     const glm::vec3& p = points[i];
-    const float far = std::max(std::abs(p.x), std::max(std::abs(p.y), std::abs(p.z)));
-    if (!(far <= kMaxHeadSpaceCoordinate))
-      throw Error(source + ": point " + std::to_string(i) + " lies at " + std::to_string(far) + " from the origin after the "
-                  "model's scale and translation (at most " + std::to_string(int(kMaxHeadSpaceCoordinate)) +
-                  "): check the scale and translation against the model's units");
+    if (std::abs(p.x) <= k && std::abs(p.y) <= k && std::abs(p.z) <= k) continue;  // false for a NaN too
+    char coords[96];
+    std::snprintf(coords, sizeof coords, "(%g, %g, %g)", p.x, p.y, p.z);
+    throw Error(source + ": point " + std::to_string(i) + " lies at " + coords + " after the model's scale and "
+                "translation, past " + std::to_string(int(k)) + " on an axis: check the scale and translation "
+                "against the model's units");
   }
 }
 

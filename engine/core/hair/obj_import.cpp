@@ -79,31 +79,37 @@ void checkFiniteVertices(const std::vector<glm::vec3>& positions, const std::str
 constexpr std::size_t kMaxFaceVertices = 255;
 
 // Calls f(number, keyword, rest) for every line (numbered from 1) that starts with a keyword: `rest` is what
-// follows the keyword, up to a comment.
+// follows the keyword, up to a comment. Lines end at LF, CRLF or a lone CR, as the parser reads them.
 template <class F>
 void forEachStatement(const std::string& text, F&& f) {
   std::size_t pos = 0, number = 0;
   while (pos < text.size()) {
-    std::size_t end = text.find('\n', pos);
+    std::size_t end = text.find_first_of("\r\n", pos);
     if (end == std::string::npos) end = text.size();
     ++number;
     const std::string_view line = std::string_view(text).substr(pos, end - pos);
     const std::size_t k = line.find_first_not_of(" \t");
-    const std::size_t stop = line.find_first_of(" \t\r", k);
+    const std::size_t stop = line.find_first_of(" \t", k);
     if (k != std::string_view::npos && line[k] != '#') {
       const std::string_view keyword = line.substr(k, stop == std::string_view::npos ? std::string_view::npos : stop - k);
       const std::string_view rest = stop == std::string_view::npos ? std::string_view() : line.substr(stop);
       f(number, keyword, rest.substr(0, rest.find('#')));
     }
-    pos = end + 1;
+    pos = end + (text.compare(end, 2, "\r\n") == 0 ? 2 : 1);
   }
+}
+
+// A number's word without a leading '+' (from_chars takes no sign but '-').
+std::string_view withoutPlus(std::string_view word) {
+  if (word.size() > 1 && word[0] == '+') word.remove_prefix(1);
+  return word;
 }
 
 // Each corner's vertex index (before any '/') a decimal that fits 32 bits: the parser wrapped
 // 99999999999999999999 into some index, and the message spoke of a non-manifold edge.
 void checkFaceCorners(const std::vector<std::string_view>& corners, const std::string& where) {
   for (const std::string_view corner : corners) {
-    const std::string_view index = corner.substr(0, corner.find('/'));
+    const std::string_view index = withoutPlus(corner.substr(0, corner.find('/')));
     long long value = 0;
     const auto [end, ec] = std::from_chars(index.data(), index.data() + index.size(), value);
     if (ec != std::errc() || end != index.data() + index.size() || value > INT32_MAX || value < -INT32_MAX)
@@ -111,27 +117,35 @@ void checkFaceCorners(const std::vector<std::string_view>& corners, const std::s
   }
 }
 
-// Faces past kMaxFaceVertices corners, and vertex lines that are not 3 (to 7: w, or a colour) finite numbers:
-// the parser reads a missing or unreadable coordinate ("v 0.05", "v abc 0 0", "v nan 0 0") as 0.
+// 3 to 7 finite numbers (x y z, then w or a colour), read in double precision: a coordinate too small for a
+// float is the parser's 0, not an error; one past a float is refused after parsing (checkFiniteVertices).
+bool isVertex(const std::vector<std::string_view>& words) {
+  bool ok = words.size() >= 3 && words.size() <= 7;
+  for (const std::string_view word : words) {
+    const std::string_view number = withoutPlus(word);
+    double value = 0.0;
+    const auto [end, ec] = std::from_chars(number.data(), number.data() + number.size(), value);
+    ok = ok && ec == std::errc() && end == number.data() + number.size() && std::isfinite(value);
+  }
+  return ok;
+}
+
+// Faces past kMaxFaceVertices corners or with corners that are not indices, and vertex lines that are not
+// numbers: the parser reads a missing or unreadable coordinate ("v 0.05", "v abc 0 0", "v nan 0 0") as 0.
 void checkStatements(const std::string& text, const std::string& file) {
   std::size_t face = 0;
   forEachStatement(text, [&](std::size_t line, std::string_view keyword, std::string_view rest) {
+    if (keyword != "f" && keyword != "v") return;
     const std::vector<std::string_view> w = splitWords(rest);
-    if (keyword == "f" && w.size() > kMaxFaceVertices)
-      throw Error(faceLabel(file, face) + " has " + std::to_string(w.size()) + " vertices; at most " +
-                  std::to_string(kMaxFaceVertices) + " are supported (split it into smaller polygons)");
-    if (keyword == "f") checkFaceCorners(w, faceLabel(file, face++));
-    if (keyword != "v") return;
-    bool ok = w.size() >= 3 && w.size() <= 7;
-    for (std::string_view word : w) {
-      if (word.size() > 1 && word[0] == '+') word.remove_prefix(1);  // from_chars takes no sign but '-'
-      float value = 0.0f;
-      const auto [end, ec] = std::from_chars(word.data(), word.data() + word.size(), value);
-      ok = ok && ec == std::errc() && end == word.data() + word.size() && std::isfinite(value);
-    }
-    if (!ok)
+    if (keyword == "f") {
+      if (w.size() > kMaxFaceVertices)
+        throw Error(faceLabel(file, face) + " has " + std::to_string(w.size()) + " vertices; at most " +
+                    std::to_string(kMaxFaceVertices) + " are supported (split it into smaller polygons)");
+      checkFaceCorners(w, faceLabel(file, face++));
+    } else if (!isVertex(w)) {
       throw Error(file + ": line " + std::to_string(line) + ": a vertex needs 3 finite coordinates, got 'v" +
                   excerpt(rest, 60) + "'");
+    }
   });
 }
 

@@ -49,7 +49,6 @@ bool parseType(std::string_view s, Type& t) {
   return false;
 }
 
-
 struct Header {
   Format format = Format::Ascii;
   std::vector<Element> elements;

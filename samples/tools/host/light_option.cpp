@@ -84,8 +84,13 @@ class Pairs {
   glm::vec3 vec3(const char* key) const {
     const std::vector<std::string_view> parts = split(values_.at(key), ',');
     if (parts.size() != 3) fail(key, "expected X,Y,Z");
-    const glm::vec3 v(numberIn(key, parts[0]), numberIn(key, parts[1]), numberIn(key, parts[2]));
-    // Past head space's extent a length overflows (a direction of 1e30s read as a zero vector).
+    return {numberIn(key, parts[0]), numberIn(key, parts[1]), numberIn(key, parts[2])};
+  }
+
+  // A position, target or direction: within head space, past which a length overflows (a direction of 1e30s
+  // read as a zero vector).
+  glm::vec3 place(const char* key) const {
+    const glm::vec3 v = vec3(key);
     if (glm::any(glm::greaterThan(glm::abs(v), glm::vec3(kMaxHeadSpaceCoordinate))))
       fail(key, "components must be within +-" + std::to_string(int(kMaxHeadSpaceCoordinate)));
     return v;
@@ -116,7 +121,7 @@ class Pairs {
 LightSpec directional(const Pairs& p) {
   LightSpec l;
   if (!p.has("dir")) return l;
-  const glm::vec3 d = p.vec3("dir");
+  const glm::vec3 d = p.place("dir");
   if (!(glm::length(d) > 1e-6f) || !std::isfinite(glm::length(d))) p.fail("dir", "must be a non-zero vector");
   l.direction = glm::normalize(d);
   return l;
@@ -131,12 +136,12 @@ float rangeOf(const Pairs& p) {
 
 glm::vec3 positionOf(const Pairs& p, LightSpec::Type type) {
   if (!p.has("pos")) throw Error(std::string("a ") + lightTypeName(type) + " light needs pos=X,Y,Z");
-  return p.vec3("pos");
+  return p.place("pos");
 }
 
 LightSpec spot(const Pairs& p, const glm::vec3& defaultTarget) {
   const glm::vec3 position = positionOf(p, LightSpec::Type::Spot);
-  const glm::vec3 target = p.has("target") ? p.vec3("target") : defaultTarget;
+  const glm::vec3 target = p.has("target") ? p.place("target") : defaultTarget;
   if (!(glm::length(position - target) > 1e-6f)) {
     if (p.has("target")) p.fail("target", "must differ from pos");
     p.fail("pos", "must differ from the spot's target (default: the camera target)");
