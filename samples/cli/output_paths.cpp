@@ -7,6 +7,7 @@
 #include <cstring>
 
 #include "engine/core/error.h"
+#include "engine/core/hair/atomic_write.h"
 
 namespace hp::cli {
 namespace {
@@ -48,15 +49,15 @@ void prepareOutputFile(const CommandPath& output, const std::vector<CommandPath>
   if (output.path.empty()) throw Error(output.option + ": the output path is empty");
   refuseInputs(output, inputs);
   std::error_code ec;
-  // A link is written through (writeFileAtomically): its target's folder is the one that must be writable.
-  fs::path target = output.path;
-  if (fs::is_symlink(fs::symlink_status(output.path, ec))) {
-    target = fs::canonical(output.path, ec);
-    if (ec) throw Error(named(output) + ": is a link that cannot be followed (" + ec.message() + ")");
+  if (fs::is_directory(output.path, ec)) throw Error(named(output) + ": is a folder, expected a file name");
+  // The file the write will replace (a link's target, whose folder must be writable), refused as the write
+  // would refuse it: a device, a FIFO, a link that cannot be followed.
+  fs::path target;
+  try {
+    target = atomicWriteDestination(output.path);
+  } catch (const Error& e) {
+    throw Error(output.option + " " + e.what());
   }
-  if (fs::is_directory(target, ec)) throw Error(named(output) + ": is a folder, expected a file name");
-  if (fs::exists(target, ec) && !fs::is_regular_file(target, ec))
-    throw Error(named(output) + ": exists and is not a regular file (a device, a FIFO); not replaced");
   makeWritableFolder(output, target.has_parent_path() ? target.parent_path() : fs::path("."));
 }
 

@@ -21,6 +21,11 @@ constexpr float kRadius = test::kPartedCrownRadius;
 const SphereCollider kHead{glm::vec3(0.0f), kRadius};
 using test::partedCrown;
 
+// The triangles parted around the head's sphere, at the margin an import sizes from it.
+PartedTriangles partedByTheHead(const GuideSet& g, std::span<const glm::uvec3> triangles) {
+  return dropPartedTriangles(g, triangles, CollisionBody{std::span(&kHead, 1)}, kPartedMargin * kRadius);
+}
+
 std::vector<glm::uvec3> crownTriangles(const GuideSet& g) {
   return triangulateRoots(g.roots(), glm::vec3(0.0f)).triangles;
 }
@@ -67,7 +72,7 @@ TEST(PartedTriangles, DropsTheTrianglesAcrossAPartingAndNoOther) {
   const GuideSet g = partedCrown(0.0f);
   const std::vector<glm::uvec3> triangles = crownTriangles(g);
   ASSERT_GT(triangles.size(), 100u);
-  const PartedTriangles parted = dropPartedTriangles(g, triangles, std::span(&kHead, 1));
+  const PartedTriangles parted = partedByTheHead(g, triangles);
   std::uint32_t straddling = 0;
   for (const glm::uvec3& t : triangles) {
     const int right = int(g.root(t.x).x >= 0.0f) + int(g.root(t.y).x >= 0.0f) + int(g.root(t.z).x >= 0.0f);
@@ -87,7 +92,7 @@ TEST(PartedTriangles, DropsTheTrianglesAcrossAPartingAndNoOther) {
 TEST(PartedTriangles, GuidesCombedOneWayKeepEveryTriangle) {
   const GuideSet g = partedCrown(-1.0f);  // every root right of the "parting": all combed toward +x
   const std::vector<glm::uvec3> triangles = crownTriangles(g);
-  const PartedTriangles parted = dropPartedTriangles(g, triangles, std::span(&kHead, 1));
+  const PartedTriangles parted = partedByTheHead(g, triangles);
   EXPECT_EQ(parted.dropped, 0u);
   EXPECT_EQ(parted.kept, triangles);
 }
@@ -95,16 +100,16 @@ TEST(PartedTriangles, GuidesCombedOneWayKeepEveryTriangle) {
 TEST(PartedTriangles, WithoutCollidersOrWithAnUnknownGuideNothingIsDropped) {
   const GuideSet g = partedCrown(0.0f);
   const std::vector<glm::uvec3> triangles = crownTriangles(g);
-  EXPECT_EQ(dropPartedTriangles(g, triangles, {}).dropped, 0u);
+  EXPECT_EQ(dropPartedTriangles(g, triangles, CollisionBody{}, kPartedMargin * kRadius).dropped, 0u);
   const std::vector<glm::uvec3> unknown = {glm::uvec3(0, 1, g.guideCount())};
-  EXPECT_EQ(dropPartedTriangles(g, unknown, std::span(&kHead, 1)).kept, unknown);
+  EXPECT_EQ(partedByTheHead(g, unknown).kept, unknown);
 }
 
 TEST(PartedTriangles, AnImportWhoseEveryTriangleIsPartedIsRefusedByName) {
   // One triangle over three corners of the patch, two left of the parting and one right of it: parted.
   const GuideSet g = partedCrown(0.0f);
   const std::vector<glm::uvec3> one = {glm::uvec3(0, 72, 8)};
-  ASSERT_EQ(dropPartedTriangles(g, one, std::span(&kHead, 1)).dropped, 1u);
+  ASSERT_EQ(partedByTheHead(g, one).dropped, 1u);
   HairImportOptions o;
   o.colliders = std::vector<SphereCollider>{kHead};
   try {
@@ -131,7 +136,7 @@ TEST(PartedTriangles, ADistanceGridPartsTheSameTrianglesAsItsSphere) {
   const std::vector<glm::uvec3> triangles = crownTriangles(g);
   const SdfGrid grid = sampleField([](const glm::vec3& p) { return glm::length(p) - kRadius; }, glm::vec3(-0.15f),
                                    glm::vec3(0.15f), 0.005f);
-  const PartedTriangles bySphere = dropPartedTriangles(g, triangles, std::span(&kHead, 1));
+  const PartedTriangles bySphere = partedByTheHead(g, triangles);
   const PartedTriangles byGrid = dropPartedTriangles(g, triangles, CollisionBody{{}, &grid}, kPartedMargin * kRadius);
   EXPECT_GT(byGrid.dropped, 0u);
   EXPECT_EQ(byGrid.kept, bySphere.kept);
@@ -146,7 +151,7 @@ TEST(PartedTriangles, AModelDrawingItsOwnStrandsKeepsNoPartedTriangleForALaterDe
   o.colliders = std::vector<SphereCollider>{kHead};
   o.density.mode = DensityOptions::Mode::Guides;
   const HairAsset own = importHairAsset(test::hairFileOf(g), o, "parted.hair");
-  EXPECT_EQ(own.partedTriangles, dropPartedTriangles(g, crownTriangles(g), std::span(&kHead, 1)).dropped);
+  EXPECT_EQ(own.partedTriangles, partedByTheHead(g, crownTriangles(g)).dropped);
   ASSERT_EQ(own.topology.strands.size(), g.guideCount());  // every guide drawn, in its own place
   for (const StrandBinding& s : own.topology.strands)
     EXPECT_TRUE(s.barycentric.x == 1.0f || s.barycentric.y == 1.0f || s.barycentric.z == 1.0f) << s.triangle;
@@ -161,7 +166,7 @@ TEST(PartedTriangles, AModelDrawingItsOwnStrandsKeepsNoPartedTriangleForALaterDe
 TEST(PartedTriangles, ACharacterMeshIsTheBodyTheGuidesPartAround) {
   const test::TempDir dir;
   const GuideSet g = partedCrown(0.0f);
-  const std::uint32_t bySphere = dropPartedTriangles(g, crownTriangles(g), std::span(&kHead, 1)).dropped;
+  const std::uint32_t bySphere = partedByTheHead(g, crownTriangles(g)).dropped;
   const HairAsset onHead = buildSceneAsset(crownOnCharacter(dir, glm::vec3(0.0f)));
   ASSERT_TRUE(onHead.characterCollides);
   EXPECT_GT(onHead.partedTriangles, 0u);
@@ -185,7 +190,7 @@ TEST(PartedTriangles, SceneColliderMeshesJoinTheirSpheres) {
   writeObjSphere(dir / "head.obj", kRadius, glm::vec3(0.0f));
   scene.colliderMeshes = {MeshColliderSpec{dir / "head.obj", 0.004f}};
   const GuideSet g = partedCrown(0.0f);
-  EXPECT_EQ(buildSceneAsset(scene).partedTriangles, dropPartedTriangles(g, crownTriangles(g), std::span(&kHead, 1)).dropped);
+  EXPECT_EQ(buildSceneAsset(scene).partedTriangles, partedByTheHead(g, crownTriangles(g)).dropped);
 }
 
 // Guides grown on an OBJ scalp part around a character mesh where it collides: the 49-guide cap's pole (9 of its
@@ -217,7 +222,7 @@ TEST(PartedTriangles, AnObjScalpOnACharacterMeshPartsAroundTheMesh) {
 // large one beside the head changes nothing (a torso ten times the head's size made it ten times wider).
 TEST(PartedTriangles, TheMarginIsTheHeadsNotAnEarsOrATorsos) {
   const GuideSet g = partedCrown(0.0f);
-  const std::uint32_t byHead = dropPartedTriangles(g, crownTriangles(g), std::span(&kHead, 1)).dropped;
+  const std::uint32_t byHead = partedByTheHead(g, crownTriangles(g)).dropped;
   ASSERT_GT(byHead, 0u);
   HairImportOptions o;
   o.keepStrands = true;

@@ -32,9 +32,9 @@ int finishFile(int fd, std::span<const std::byte> bytes) {
   if (::close(fd) != 0 && !err) err = errno;
   return err;
 }
+}  // namespace
 
-// The file the bytes replace: `given`, or the file its symbolic link names.
-std::filesystem::path destination(const std::filesystem::path& given) {
+std::filesystem::path atomicWriteDestination(const std::filesystem::path& given) {
   namespace fs = std::filesystem;
   std::error_code ec;
   const fs::file_status link = fs::symlink_status(given, ec);
@@ -50,10 +50,9 @@ std::filesystem::path destination(const std::filesystem::path& given) {
     throw Error(given.string() + ": exists and is not a regular file (a device, a FIFO or a folder); not replaced");
   return path;
 }
-}  // namespace
 
 void writeFileAtomically(const std::filesystem::path& given, std::span<const std::byte> bytes) {
-  const std::filesystem::path path = destination(given);
+  const std::filesystem::path path = atomicWriteDestination(given);
   std::filesystem::path dir = path.parent_path().empty() ? "." : path.parent_path();
   std::string name = path.filename().string();
   name.insert(0, 1, '.');  // hidden while incomplete (and avoids a GCC 12 -Wrestrict false positive)

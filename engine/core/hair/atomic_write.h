@@ -9,5 +9,10 @@
 #include <span>
 
 namespace hp {
+// The file writeFileAtomically(path) replaces: `path`, or the file its link names. Throws hp::Error, as the
+// write would, for something that is not a regular file or a link that cannot be followed: callers check
+// their outputs with it before any work.
+std::filesystem::path atomicWriteDestination(const std::filesystem::path& path);
+
 void writeFileAtomically(const std::filesystem::path& path, std::span<const std::byte> bytes);
 }  // namespace hp

@@ -11,7 +11,8 @@
 
 namespace hp {
 namespace {
-GuideSet keepAsIs(const HairFileData& data, const HairImportOptions& options, const std::string& source) {
+// `placed`: the data's points in head space.
+GuideSet keepAsIs(const HairFileData& data, std::vector<glm::vec3> placed, const std::string& source) {
   const std::uint32_t P = data.strandPointCount(0);
   for (std::uint32_t s = 1; s < data.strandCount; ++s)
     if (data.strandPointCount(s) != P)
@@ -21,9 +22,7 @@ GuideSet keepAsIs(const HairFileData& data, const HairImportOptions& options, co
   checkParticlesPerGuide(P, source.c_str());
   GuideSet guides;
   guides.particlesPerGuide = P;
-  guides.positions.resize(data.points.size());
-  std::transform(data.points.begin(), data.points.end(), guides.positions.begin(),
-                 [&](const glm::vec3& p) { return options.transform.applyToPoint(p); });
+  guides.positions = std::move(placed);
   return guides;
 }
 
@@ -49,11 +48,13 @@ SphereCollider colliderUnderRoots(const SphereCollider& fit, std::span<const glm
 GuideSet guidesFromHair(const HairFileData& data, const HairImportOptions& options, const std::string& source) {
   validateHairData(data, source);
   options.transform.validate();
-  std::vector<glm::vec3> placed(data.points.size());  // checked before resampling squares their distances
+  // Placed first (the transform is a similarity: it commutes with resampling), and checked before resampling
+  // squares their distances.
+  std::vector<glm::vec3> placed(data.points.size());
   std::transform(data.points.begin(), data.points.end(), placed.begin(),
                  [&](const glm::vec3& p) { return options.transform.applyToPoint(p); });
   checkHeadSpaceExtent(placed, source);
-  if (options.keepStrands) return keepAsIs(data, options, source);
+  if (options.keepStrands) return keepAsIs(data, std::move(placed), source);
   checkParticlesPerGuide(options.particlesPerGuide, source.c_str());
   const std::uint32_t P = options.particlesPerGuide;
   GuideSet guides;
@@ -63,8 +64,7 @@ GuideSet guidesFromHair(const HairFileData& data, const HairImportOptions& optio
   for (std::uint32_t s = 0; s < data.strandCount; ++s) {
     std::uint32_t n = data.strandPointCount(s);
     auto out = guides.guide(s);
-    resamplePolyline({data.points.data() + offset, n}, P, options.segmentRatio, out);
-    for (auto& p : out) p = options.transform.applyToPoint(p);  // affine: commutes with resampling
+    resamplePolyline({placed.data() + offset, n}, P, options.segmentRatio, out);
     offset += n;
   }
   return guides;

@@ -1,6 +1,5 @@
 #include "engine/core/hair/model_transform.h"
 
-#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -35,15 +34,18 @@ void ModelTransform::validate() const {
     throw Error("model transform: translation is not finite");
 }
 
+std::string headSpaceRule() {
+  return "components must be within +-" + std::to_string(int(kMaxHeadSpaceCoordinate));
+}
+
 void checkHeadSpaceExtent(std::span<const glm::vec3> points, const std::string& source) {
-  constexpr float k = kMaxHeadSpaceCoordinate;
   for (std::size_t i = 0; i < points.size(); ++i) {
     const glm::vec3& p = points[i];
-    if (std::abs(p.x) <= k && std::abs(p.y) <= k && std::abs(p.z) <= k) continue;  // false for a NaN too
+    if (withinHeadSpace(p)) continue;
     char coords[96];
     std::snprintf(coords, sizeof coords, "(%g, %g, %g)", p.x, p.y, p.z);
     throw Error(source + ": point " + std::to_string(i) + " lies at " + coords + " after the model's scale and "
-                "translation, past " + std::to_string(int(k)) + " on an axis: check the scale and translation "
+                "translation, past " + std::to_string(int(kMaxHeadSpaceCoordinate)) + " on an axis: check the scale and translation "
                 "against the model's units");
   }
 }

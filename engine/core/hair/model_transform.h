@@ -27,6 +27,13 @@ struct ModelTransform {
 // model's distances overflow single precision where they are squared (a fit, a triangulation, a collision).
 inline constexpr float kMaxHeadSpaceCoordinate = 1.0e4f;
 
+// Every coordinate of p within kMaxHeadSpaceCoordinate of 0 (false for a NaN).
+inline bool withinHeadSpace(const glm::vec3& p) {
+  return glm::all(glm::lessThanEqual(glm::abs(p), glm::vec3(kMaxHeadSpaceCoordinate)));
+}
+// What a refusal of a vector that is not says: "components must be within +-10000".
+std::string headSpaceRule();
+
 // Throws hp::Error naming `source` when a point's coordinate is not finite or past kMaxHeadSpaceCoordinate
 // (the model's scale or translation is wrong for its units).
 void checkHeadSpaceExtent(std::span<const glm::vec3> points, const std::string& source);

@@ -41,11 +41,4 @@ PartedTriangles dropPartedTriangles(const GuideSet& guides, std::span<const glm:
   }
   return out;
 }
-
-PartedTriangles dropPartedTriangles(const GuideSet& guides, std::span<const glm::uvec3> triangles,
-                                    std::span<const SphereCollider> colliders, float margin) {
-  float radius = 0.0f;
-  for (const SphereCollider& s : colliders) radius = std::max(radius, s.radius);
-  return dropPartedTriangles(guides, triangles, CollisionBody{colliders}, margin * radius);
-}
 }  // namespace hp

@@ -37,8 +37,4 @@ struct PartedTriangles {
 
 PartedTriangles dropPartedTriangles(const GuideSet& guides, std::span<const glm::uvec3> triangles,
                                     const CollisionBody& body, float marginLength);
-
-// Spheres only, the margin `margin` times the largest sphere's radius.
-PartedTriangles dropPartedTriangles(const GuideSet& guides, std::span<const glm::uvec3> triangles,
-                                    std::span<const SphereCollider> colliders, float margin = kPartedMargin);
 }  // namespace hp

@@ -91,8 +91,7 @@ class Pairs {
   // read as a zero vector).
   glm::vec3 place(const char* key) const {
     const glm::vec3 v = vec3(key);
-    if (glm::any(glm::greaterThan(glm::abs(v), glm::vec3(kMaxHeadSpaceCoordinate))))
-      fail(key, "components must be within +-" + std::to_string(int(kMaxHeadSpaceCoordinate)));
+    if (!withinHeadSpace(v)) fail(key, headSpaceRule());
     return v;
   }
 

@@ -182,13 +182,9 @@ LightSpec readLightObject(JsonObject& o, const std::string& pointer) {
   o.read("position", l.position);
   o.read("target", target);
   // Past head space's extent a length overflows (a direction of 1e30s read as a zero vector).
-  const auto within = [](const glm::vec3& v) {
-    return glm::all(glm::lessThanEqual(glm::abs(v), glm::vec3(kMaxHeadSpaceCoordinate)));
-  };
-  const std::string bound = "components must be within +-" + std::to_string(int(kMaxHeadSpaceCoordinate));
-  requireThat(within(l.direction), o, "direction", bound);
-  requireThat(within(l.position), o, "position", bound);
-  requireThat(within(target), o, "target", bound);
+  requireThat(withinHeadSpace(l.direction), o, "direction", headSpaceRule());
+  requireThat(withinHeadSpace(l.position), o, "position", headSpaceRule());
+  requireThat(withinHeadSpace(target), o, "target", headSpaceRule());
   o.read("coneDeg", l.coneDeg);
   o.read("range", l.range);
   o.read("color", l.color);
@@ -243,8 +239,7 @@ void readCamera(JsonObject& root, CameraSpec& c) {
   requireThat(std::abs(c.elevationDeg) <= 89.0f, *o, "elevationDeg", "must be in [-89, 89]");
   requireThat(c.distance > 0.0f && c.distance <= kMaxHeadSpaceCoordinate, *o, "distance",
               "must be in (0, " + std::to_string(int(kMaxHeadSpaceCoordinate)) + "]");
-  requireThat(glm::all(glm::lessThanEqual(glm::abs(c.target), glm::vec3(kMaxHeadSpaceCoordinate))), *o, "target",
-              "components must be within +-" + std::to_string(int(kMaxHeadSpaceCoordinate)));
+  requireThat(withinHeadSpace(c.target), *o, "target", headSpaceRule());
   requireThat(c.fovDeg > 0.0f && c.fovDeg < 180.0f, *o, "fovDeg", "must be in (0, 180)");
 }
 
