@@ -1,6 +1,7 @@
 #version 460
 // The head: per light of the frame, diffuse with the paper's wrap term (wrap + N.L) / (1 + wrap) (L, cone
-// and distance scale from light.glsl), plus the environment's irradiance / pi (environment.glsl);
+// and distance scale from light.glsl), plus its indirect light (head.vert: the sky past its own shape and
+// its skin's bounce), or without that the environment's open irradiance / pi (environment.glsl);
 // hair-coloured where hair grows. Each light's direct term is shadowed by the hair (its slot's opacity maps,
 // T = hairTransmittance(k alpha): exp(-k alpha) and, with dual scattering, the light the hair passes on
 // forward; looked up over a few texels) and by the heads (their depth map): frame_shadows.glsl.
@@ -13,6 +14,7 @@ layout(std430, binding = RENDER_BINDING_LIGHT) readonly buffer Light { LightSpac
 layout(location = 0) in vec3 inNormal;
 layout(location = 1) in float inScalp;
 layout(location = 2) in vec3 inWorld;
+layout(location = 3) in vec3 inIndirect;
 layout(location = 0) out vec4 outColor;
 #include "frame_shadows.glsl"
 #include "environment.glsl"
@@ -48,5 +50,7 @@ void main() {
   } else if (frame.lightCount.x > 0u) {
     direct = headLight(frame.lights[0], N, wrap);
   }
-  outColor = vec4(albedo * (direct / 3.14159265 + environmentLight(N)), 1.0);
+  // The indirect light from the head's transfer (head.vert), else the open sky around N.
+  vec3 indirect = frame.skinSky[0].w != 0.0 ? inIndirect : environmentLight(N);
+  outColor = vec4(albedo * (direct / 3.14159265 + indirect), 1.0);
 }

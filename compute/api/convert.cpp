@@ -91,6 +91,7 @@ hp::render::LookSettings look(const LookSettings& l) {
   for (std::size_t i = 0; i < h.environment.size(); ++i) h.environment[i] = vec(l.environment[i]);
   h.scattering = l.scattering;
   h.skinBounce = l.skinBounce;
+  h.skinIndirect = l.skinIndirect;
   h.farSideFromDepth = l.farSideFromDepth;
   return h;
 }

@@ -15,6 +15,7 @@ const vk::Binding kHeadBindings[] = {
     {gpu::RENDER_BINDING_OPACITY, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT},
     {gpu::RENDER_BINDING_HEAD_SHADOW, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_SHADER_STAGE_FRAGMENT_BIT},
     {gpu::RENDER_BINDING_LIGHT, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_SHADER_STAGE_FRAGMENT_BIT},
+    {gpu::RENDER_BINDING_SKIN_TRANSFER, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, vk::kVertex},
 };
 
 // xyz from v, w from `w` (or 1 where it is empty).
@@ -24,11 +25,13 @@ std::vector<glm::vec4> asVec4(const std::vector<glm::vec3>& v, const std::vector
   for (std::size_t i = 0; i < v.size(); ++i) out.emplace_back(v[i], w.empty() ? 1.0f : w[i]);
   return out;
 }
+
 }  // namespace
 
-HeadPass::HeadPass(const vk::Context& ctx, const HeadMesh& mesh, const vk::Buffer& frameBlock,
-                   const ShadowInputs& shadows, const hairpipe::AttachmentFormats& formats, vk::PipelineLibrary* library)
-    : indexCount_(static_cast<std::uint32_t>(mesh.indices.size())) {
+HeadPass::HeadPass(const vk::Context& ctx, const HeadMesh& mesh, std::shared_ptr<const SkinTransferBuffer> transfer,
+                   const vk::Buffer& frameBlock, const ShadowInputs& shadows, const hairpipe::AttachmentFormats& formats,
+                   vk::PipelineLibrary* library)
+    : indexCount_(static_cast<std::uint32_t>(mesh.indices.size())), transfer_(std::move(transfer)) {
   if (mesh.normals.size() != mesh.positions.size()) throw Error("head mesh: one normal per position is required");
   if (!mesh.scalp.empty() && mesh.scalp.size() != mesh.positions.size())
     throw Error("head mesh: one scalp weight per position is required");
@@ -65,6 +68,8 @@ HeadPass::HeadPass(const vk::Context& ctx, const HeadMesh& mesh, const vk::Buffe
   std::vector<float> scalp = mesh.scalp.empty() ? std::vector<float>(mesh.positions.size(), 0.0f) : mesh.scalp;
   vk::upload<glm::vec4>(ctx, normals_, asVec4(mesh.normals, scalp), vk::BufferUse::VertexRead);
   vk::upload<std::uint32_t>(ctx, indices_, mesh.indices, vk::BufferUse::VertexRead);
+  if (!transfer_) throw Error("head mesh: a skin transfer is required");
+  set_.writeStorageBuffer(gpu::RENDER_BINDING_SKIN_TRANSFER, transfer_->buffer().handle());
   set_.writeStorageBuffer(gpu::RENDER_BINDING_POSITIONS, positions_.handle());
   set_.writeStorageBuffer(gpu::RENDER_BINDING_TANGENTS, normals_.handle());
   set_.writeStorageBuffer(gpu::RENDER_BINDING_ATTRIBUTES, indices_.handle());

@@ -1,8 +1,8 @@
 #pragma once
-// Contract: draws the opaque head mesh (HairAsset::head) with the paper's wrap lighting, the hair colour
-// where HeadMesh::scalp marks hair roots (so the scalp does not show bare between strands), depth test and
-// write on, into the caller's dynamic rendering. Owns the mesh buffers (uploaded once), pipeline and
-// descriptor set; reads the frame block the caller keeps up to date (RenderFrame, shaders/shared/render.h;
+// Contract: draws the opaque head mesh (HairAsset::head) with the paper's wrap lighting and its indirect light
+// (the mesh's skin transfer, a SkinTransferBuffer the caller computes once per mesh), the hair colour where
+// HeadMesh::scalp marks hair roots (so the scalp does not show bare between strands), depth test and write
+// on, into the caller's dynamic rendering. Owns the mesh buffers (uploaded once), pipeline and descriptor set; reads the frame block the caller keeps up to date (RenderFrame, shaders/shared/render.h;
 // a dynamic uniform buffer, draw() names the slot's offset) and the shadows (ShadowInputs): hair shadows
 // from the opacity maps, the head's own from its depth map.
 // draw() must be called inside vkCmdBeginRendering with attachments matching `formats`.
@@ -10,6 +10,7 @@
 
 #include "engine/core/hair/hair_asset.h"
 #include "hairpipe/settings.h"
+#include "compute/head/skin_transfer_buffer.h"
 #include "compute/shadows/shadow_inputs.h"
 #include "engine/vk/buffer.h"
 #include "engine/vk/descriptors.h"
@@ -20,8 +21,10 @@
 namespace hp::render {
 class HeadPass {
  public:
-  HeadPass(const vk::Context& ctx, const HeadMesh& mesh, const vk::Buffer& frameBlock, const ShadowInputs& shadows,
-           const hairpipe::AttachmentFormats& formats, vk::PipelineLibrary* library = nullptr);
+  // transfer: the mesh's (SkinTransferBuffer), required unless the mesh is empty.
+  HeadPass(const vk::Context& ctx, const HeadMesh& mesh, std::shared_ptr<const SkinTransferBuffer> transfer,
+           const vk::Buffer& frameBlock, const ShadowInputs& shadows, const hairpipe::AttachmentFormats& formats,
+           vk::PipelineLibrary* library = nullptr);
   // oneLight: the frame block holds at most one light (the head.frag variant without the light loop).
   void draw(VkCommandBuffer cmd, VkExtent2D extent, const glm::mat4& headToWorld, std::uint32_t frameOffset,
             bool oneLight = false) const;
@@ -35,6 +38,7 @@ class HeadPass {
  private:
   std::uint32_t indexCount_ = 0;
   vk::Buffer positions_, normals_, indices_;
+  std::shared_ptr<const SkinTransferBuffer> transfer_;  // the mesh's skin transfer, shared with other instances
   vk::DescriptorSet set_;
   std::shared_ptr<const vk::GraphicsPipeline> pipeline_, oneLightPipeline_;
 };

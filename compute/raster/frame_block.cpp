@@ -1,6 +1,8 @@
 #include "compute/raster/frame_block.h"
 
+#include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "engine/core/error.h"
 #include "engine/core/shading/environment_sh.h"
@@ -96,6 +98,53 @@ gpu::RenderFrame makeRenderFrame(const CameraMatrices& camera, VkExtent2D extent
                          look.scattering == Scattering::Dual ? gpu::RENDER_SCATTERING_DUAL : gpu::RENDER_SCATTERING_SINGLE,
                          opacity.deep ? 1u : 0u);
   return f;
+}
+
+namespace {
+// The light's direction from p (unit, toward it) and the share of its radiance that reaches p: shaders/light.glsl's
+// sampleLight on the host.
+std::pair<glm::vec3, float> lightAt(const LightSpec& light, const glm::vec3& p) {
+  const glm::vec3 direction = glm::normalize(light.direction);
+  if (light.type == LightSpec::Type::Directional) return {direction, 1.0f};
+  const glm::vec3 toLight = light.position - p;
+  const float distance = glm::length(toLight);
+  const glm::vec3 l = toLight / std::max(distance, 1e-6f);
+  float scale = 1.0f;
+  if (light.type == LightSpec::Type::Spot) {
+    const float cone = glm::radians(light.coneDeg);
+    scale = glm::smoothstep(std::cos(cone), std::cos(kSpotInnerFraction * cone), glm::dot(l, direction));
+  }
+  if (light.range > 0.0f) {
+    const float r = light.range / std::max(distance, 0.1f * light.range);
+    scale *= r * r;
+  }
+  return {l, scale};
+}
+
+void store(glm::vec4 (&into)[gpu::ENV_SH_COEFFICIENTS], const EnvironmentSH& sh) {
+  for (std::size_t i = 0; i < sh.size(); ++i) into[i] = glm::vec4(glm::vec3(sh[i]), 0.0f);
+}
+}  // namespace
+
+void setSkinLight(gpu::RenderFrame& f, const glm::mat4& headToWorld, const FrameLights& lights, const LookSettings& look) {
+  if (!look.skinIndirect) {
+    f.skinSky[0].w = 0.0f;
+    return;
+  }
+  const glm::dmat3 m(headToWorld);
+  const glm::dmat3 rotation(glm::normalize(m[0]), glm::normalize(m[1]), glm::normalize(m[2]));
+  EnvironmentSH sky = uniformEnvironmentSH(glm::dvec3(look.ambient));
+  for (std::size_t i = 0; i < sky.size(); ++i) sky[i] += glm::dvec3(look.environment[i]);
+  store(f.skinSky, rotateEnvironment(sky, rotation));
+  f.skinSky[0].w = 1.0f;
+  EnvironmentSH light{};
+  const glm::vec3 centre(headToWorld[3]);
+  for (const LightSpec& spec : lights.lights) {
+    const auto [l, scale] = lightAt(spec, centre);
+    if (scale > 0.0f)
+      addToEnvironment(light, glm::transpose(rotation) * glm::dvec3(l), glm::dvec3(spec.color * (spec.intensity * scale)));
+  }
+  store(f.skinLights, light);
 }
 
 void setViewMotion(gpu::RenderFrame& frame, VkExtent2D extent, const glm::vec2& jitter,

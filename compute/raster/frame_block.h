@@ -27,7 +27,8 @@ struct LookSettings {
   float strandWidth = 0.0005f;
   float tipWidthFraction = 0.35f;    // width at the tip relative to the root
   glm::vec3 skinColor{0.62f, 0.45f, 0.36f};
-  float wrap = 0.5f;                 // the paper's wrap term for the head, [0, 1]
+  float wrap = 0.0f;                 // the paper's wrap term for the head, [0, 1]; 0: Lambertian (the indirect light
+                                     // stands for what the wrap imitated: docs/SHADING.md "The skin's indirect light")
   float ambient = 0.06f;             // a uniform sky's radiance, added to `environment`
   // The environment's radiance as 9 RGB spherical-harmonic coefficients (engine/core/shading/environment_sh.h:
   // what splitEnvironment leaves after its lights, or projectEnvironment of a whole map); all zero: none. It lights the hair and the skin, occluded like
@@ -41,6 +42,10 @@ struct LookSettings {
   // needs the shadows on and a head, as the map is drawn with the head's depth shadow map and framed by
   // it). docs/SHADING.md "Skin bounce".
   bool skinBounce = true;
+  // The head's indirect light from its transfer (engine/core/hair/skin_transfer.h): the sky past the head's
+  // own shape and one bounce (with a geometric series for the rest) off its skin; false: the open sky on all
+  // skin. docs/SHADING.md "The skin's indirect light".
+  bool skinIndirect = true;
   // Compute raster: where the depth image it composites over (the head's, or the engine's) lies behind a hair
   // vertex, the sky on the fibre's far side is what the hair beneath passes on, not the open sky (docs/SHADING.md
   // "Ambient"). false: every far side open, as the graphics raster draws it.
@@ -56,6 +61,12 @@ gpu::RenderFrame makeRenderFrame(const CameraMatrices& camera, VkExtent2D extent
                                  const HairMaterial& material, const LookSettings& look,
                                  const compute::StrandLayout& strands, const OpacitySettings& opacity,
                                  const glm::vec3& forwardAlbedo = glm::vec3(0.0f));
+// The head's indirect light (LookSettings::skinIndirect): the sky's radiance SH (the look's environment and
+// ambient) and the lights' (as they arrive at the head's centre, cone and distance included) turned into the
+// head's own axes (headToWorld's rotation; its scale is divided out), what head.vert pairs with the head's
+// transfer. Off: the flag cleared, head.frag takes the open sky.
+void setSkinLight(gpu::RenderFrame& frame, const glm::mat4& headToWorld, const FrameLights& lights,
+                  const LookSettings& look);
 // A view's subpixel jitter (pixels, x right, y down) moved into `frame.proj`, and the previous frame's
 // unjittered proj * view for motion vectors (none: makeRenderFrame's, this frame's own: no camera motion).
 void setViewMotion(gpu::RenderFrame& frame, VkExtent2D extent, const glm::vec2& jitter,

@@ -70,8 +70,8 @@ HairInstance::HairInstance(Renderer& renderer, const HairAsset& asset, const Ins
   for (std::uint32_t slot = 0; slot < rs.framesInFlight * rs.maxViewsPerFrame; ++slot)
     *frameSlot(slot / rs.maxViewsPerFrame, slot % rs.maxViewsPerFrame) =
         frameBlock(CameraMatrices{}, {1, 1}, render::FrameLights{}, settings_.look);
-  head_ = std::make_shared<render::HeadPass>(ctx, headMesh_, frames_, renderer.shadows().inputs(),
-                                             rs.formats, &renderer.pipelines());
+  head_ = std::make_shared<render::HeadPass>(ctx, headMesh_, renderer.skinTransfer(headMesh_), frames_,
+                                             renderer.shadows().inputs(), rs.formats, &renderer.pipelines());
   bounce_ = std::make_unique<render::HeadBouncePass>(ctx, *head_, bounceFrame_.handle(), renderer.shadows().inputs(),
                                                      &renderer.pipelines());
   strandPass_ = makeStrandPass(*geometry_, *marschner_);
@@ -81,8 +81,10 @@ HairInstance::~HairInstance() { renderer_.forgetInstance(*this); }
 
 gpu::RenderFrame HairInstance::frameBlock(const CameraMatrices& camera, VkExtent2D extent,
                                           const render::FrameLights& lights, const render::LookSettings& look) const {
-  return render::makeRenderFrame(camera, extent, lights, settings_.material, look, strands().layout(),
-                                 renderer_.shadows().settings(), glm::vec3(marschner_->params().forwardMean));
+  gpu::RenderFrame f = render::makeRenderFrame(camera, extent, lights, settings_.material, look, strands().layout(),
+                                               renderer_.shadows().settings(), glm::vec3(marschner_->params().forwardMean));
+  render::setSkinLight(f, headToWorld(), lights, look);
+  return f;
 }
 
 std::uint32_t HairInstance::frameOffset(std::uint64_t frame, std::uint32_t view) const {

@@ -164,6 +164,17 @@ std::shared_ptr<render::MarschnerTextures> Renderer::marschnerFrom(const Marschn
   return textures;
 }
 
+std::shared_ptr<const render::SkinTransferBuffer> Renderer::skinTransfer(const HeadMesh& mesh) {
+  if (mesh.positions.empty()) return nullptr;
+  const std::uint64_t key = render::fingerprint(mesh);
+  std::erase_if(transfers_, [](const Transfer& t) { return t.buffer.expired(); });
+  for (const Transfer& t : transfers_)
+    if (t.fingerprint == key) return t.buffer.lock();
+  auto buffer = std::make_shared<const render::SkinTransferBuffer>(ctx_, mesh);
+  transfers_.push_back({key, buffer});
+  return buffer;
+}
+
 void Renderer::applyReadyMaterials(std::span<HairInstance* const> instances) {
   for (HairInstance* i : instances) i->applyReadyMaterial();
 }

@@ -46,6 +46,7 @@
 #include <string>
 #include <vector>
 
+#include "compute/head/skin_transfer_buffer.h"
 #include "compute/renderer/compute_raster.h"
 #include "compute/renderer/hair_instance.h"
 #include "compute/shadows/shadow_maps.h"
@@ -120,6 +121,9 @@ class Renderer {
   // Textures from tables built elsewhere (a worker thread), cached like marschner()'s.
   std::shared_ptr<render::MarschnerTextures> marschnerFrom(const MarschnerLut& lut,
                                                            const gpu::MarschnerParams* params = nullptr);
+  // A head mesh's skin transfer, computed once and shared while any instance draws that mesh (keyed by its
+  // contents); null for an empty mesh.
+  std::shared_ptr<const render::SkinTransferBuffer> skinTransfer(const HeadMesh& mesh);
   // Whether a frame was recorded: changes then defer their uploads, and new LUTs are built off this thread.
   bool inFrameLoop() const { return lastFrame_.has_value(); }
   // Keeps `resource` alive until the frames that may use it now are done.
@@ -164,6 +168,10 @@ class Renderer {
     LutMode mode;
     std::weak_ptr<render::MarschnerTextures> textures;
   };
+  struct Transfer {
+    std::uint64_t fingerprint;
+    std::weak_ptr<const render::SkinTransferBuffer> buffer;
+  };
   struct Retired {
     std::optional<std::uint64_t> after;  // last frame recorded when it was retired
     std::shared_ptr<void> resource;
@@ -175,6 +183,7 @@ class Renderer {
   vk::PipelineLibrary pipelines_;
   std::unique_ptr<render::ShadowMaps> shadows_;
   std::vector<Lut> luts_;
+  std::vector<Transfer> transfers_;  // skinTransfer()'s, by mesh fingerprint
   std::vector<render::FrameLights> frameLights_;  // per ring slot: the lights recordShadows was given
   std::vector<Retired> retired_;
   std::optional<std::uint64_t> lastFrame_;

@@ -93,6 +93,7 @@ FrameResult benchFrame(const vk::Context& ctx, const FrameCase& c) {
   settings.opacity.raster = c.opacityRaster;
   settings.opacity.shadowStrands = c.shadowStrands;
   settings.look.skinBounce = c.skinBounce;
+  settings.look.skinIndirect = c.skinIndirect;
   settings.strands.bounceSamples = c.bounceSamples;
   settings.rasterSettings.fineWalk = c.fineWalk;
   settings.rasterSettings.shadingSpacing = c.shadingSpacing;

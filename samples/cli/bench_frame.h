@@ -44,6 +44,7 @@ struct FrameCase {
   std::uint32_t bounceSamples = gpu::RENDER_BOUNCE_STRAND_SAMPLES;  // StrandOptions::bounceSamples
   compute::FineWalk fineWalk = compute::FineWalk::Auto;  // compute only: RasterSettings::fineWalk
   bool groom = true;  // the scene's groom at interpolation (recommendedGroom), or none (the plain blend)
+  bool skinIndirect = true;  // both paths: LookSettings::skinIndirect (the head's indirect light)
   std::uint32_t shadowStrands = render::OpacitySettings{}.shadowStrands;  // OpacitySettings::shadowStrands
   float shadingSpacing = compute::RasterSettings{}.shadingSpacing;  // compute only: RasterSettings::shadingSpacing
   HairMaterial material;  // the fibres (the scenes' by default; bench's material options)

@@ -30,7 +30,8 @@ std::string frameCaseName(const FrameCase& c) {
                                  ? ""
                                  : ", bounce x" + std::to_string(c.bounceSamples);
   const std::string shadows = c.shadowStrands == 0 ? "" : ", " + std::to_string(c.shadowStrands) + " shadow strands";
-  const std::string shading = model + scattering + bounce + (c.groom ? "" : ", no groom") + shadows;
+  const std::string shading = model + scattering + bounce + (c.groom ? "" : ", no groom") +
+                              (c.skinIndirect ? "" : ", no skin indirect") + shadows;
   if (c.raster == RasterMode::Compute) {
     const std::string head = c.msaa == 4 ? "" : " head msaa" + std::to_string(c.msaa);
     const std::string walk =

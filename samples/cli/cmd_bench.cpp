@@ -1,5 +1,5 @@
 // `hairpipe bench [--strands LIST] [--resolution WxH] [--frames N] [--raster LIST] [--msaa LIST]
-// [--skin-bounce off,on] [--scattering single,dual] [--lut-mode LIST] [--groom scene,none] [material options] [--json F]
+// [--skin-bounce off,on] [--skin-indirect off,on] [--scattering single,dual] [--lut-mode LIST] [--groom scene,none] [material options] [--json F]
 // [--plot F.svg] [--scene F | --model F [--units U] [--up A] [--mesh F]] [--own-strands]`: the whole frame on the
 // default head, or the scene or model (bench_frame.h), for each strand count and raster
 // path (once per --msaa value: the head's samples, and the graphics path's hair samples; once per fibre model
@@ -41,6 +41,7 @@ struct BenchOptions {
   std::vector<std::uint32_t> msaa{4};
   std::string opacityRaster = "auto";
   std::vector<std::string> skinBounce{"on"};
+  std::vector<std::string> skinIndirect{"on"};
   std::vector<std::string> scattering{hp::render::scatteringName(hp::render::LookSettings{}.scattering)};
   std::vector<std::string> lutModes{hp::lutModeName(hp::cli::FrameCase{}.lutMode)};
   std::vector<float> lodFractions{1.0f};
@@ -83,24 +84,26 @@ std::vector<bool> twoWordList(const char* option, const std::vector<std::string>
   return out;
 }
 
-// c once for each --msaa, --lod-fraction, --lights, --bounce-samples, groom (true: the scene's) and
-// --shadow-strands.
+// c once for each --msaa, --lod-fraction, --lights, --bounce-samples, groom (true: the scene's), skin indirect
+// light and --shadow-strands.
 void addSampleCounts(hp::cli::FrameCase c, const BenchOptions& o, const std::vector<bool>& grooms,
-                     std::vector<hp::cli::FrameCase>& out) {
+                     const std::vector<bool>& indirects, std::vector<hp::cli::FrameCase>& out) {
   for (std::uint32_t m : o.msaa)
     for (float f : o.lodFractions)
       for (std::uint32_t lights : o.lights)
         for (std::uint32_t bounce : o.bounceSamples)
           for (const bool groom : grooms)
-            for (std::uint32_t shadowStrands : o.shadowStrands) {
-              c.msaa = m;
-              c.lodFraction = f;
-              c.lights = lights;
-              c.bounceSamples = bounce;
-              c.groom = groom;
-              c.shadowStrands = shadowStrands;
-              out.push_back(c);
-            }
+            for (const bool indirect : indirects)
+              for (std::uint32_t shadowStrands : o.shadowStrands) {
+                c.msaa = m;
+                c.lodFraction = f;
+                c.lights = lights;
+                c.bounceSamples = bounce;
+                c.groom = groom;
+                c.skinIndirect = indirect;
+                c.shadowStrands = shadowStrands;
+                out.push_back(c);
+              }
 }
 
 // A parser's error, prefixed with the option it came from.
@@ -173,6 +176,7 @@ std::vector<hp::cli::FrameCase> cases(const BenchOptions& o, const std::shared_p
   const std::vector<bool> computeBounces = twoWordList("--skin-bounce", o.skinBounce, "off", "on", "on"),
                           graphicsBounces{base.skinBounce};
   const std::vector<bool> grooms = twoWordList("--groom", o.grooms, "scene", "none", "scene");
+  const std::vector<bool> indirects = twoWordList("--skin-indirect", o.skinIndirect, "off", "on", "on");
   const std::vector<hp::compute::FineWalk> computeWalks = fineWalks(o), graphicsWalks{base.fineWalk};
   const std::vector<float> graphicsSpacings{base.shadingSpacing};
   std::vector<hp::RasterMode> modes;
@@ -198,7 +202,7 @@ std::vector<hp::cli::FrameCase> cases(const BenchOptions& o, const std::shared_p
               c.skinBounce = bounce;
               c.fineWalk = walk;
               c.shadingSpacing = spacing;
-              addSampleCounts(c, o, grooms, out);  // head (and graphics hair) samples, LOD, lights, bounce, groom
+              addSampleCounts(c, o, grooms, indirects, out);  // head (and graphics hair) samples, LOD, lights, ...
             }
       }
     }
@@ -229,6 +233,7 @@ nlohmann::json toJson(const hp::cli::FrameResult& r) {
           {"shadowed_lights", r.c.lights},            {"bounce_samples", r.c.bounceSamples},
           {"fine_walk", hp::compute::fineWalkName(r.c.fineWalk)},
           {"fine_walk_run", hp::compute::fineWalkName(r.fineWalkRun)}, {"groom", r.c.groom ? "scene" : "none"},
+          {"skin_indirect", r.c.skinIndirect},
           {"shadow_strands", r.c.shadowStrands},
           {"shading_spacing", compute ? nlohmann::json(r.c.shadingSpacing) : nlohmann::json()},
           {"shaded_vertices", compute ? nlohmann::json(r.shadedVertices) : nlohmann::json()},
@@ -331,6 +336,10 @@ void setup(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--skin-bounce", o->skinBounce,
                   "Compute raster: the skin's bounce off and/or on (comma separated)")
+      ->delimiter(',')
+      ->capture_default_str();
+  cmd->add_option("--skin-indirect", o->skinIndirect,
+                  "The head's indirect light off and/or on (comma separated; both paths)")
       ->delimiter(',')
       ->capture_default_str();
   cmd->add_option("--scattering", o->scattering, "single and/or dual (comma separated; physical fibre model)")

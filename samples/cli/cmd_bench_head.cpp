@@ -16,6 +16,7 @@
 #include "engine/core/hair/default_head.h"
 #include "engine/core/hair/head_mesh.h"
 #include "engine/core/hair/sdf_mesh.h"
+#include "engine/core/hair/skin_transfer.h"
 #include "samples/cli/bench_context.h"
 #include "samples/cli/command.h"
 
@@ -63,6 +64,8 @@ void run(const Options& o) {
   const std::size_t scalpVertices = scalp.vertexCount();
   const Seconds markS = bestSeconds(o.repeat, [&] { hp::markScalp(head, scalp.positions); });
   const Seconds totalS = gridS + meshS + scalpS + markS;
+  // The skin's transfer: what creating an instance adds (once per mesh and Renderer), not part of the build.
+  const Seconds transferS = bestSeconds(o.repeat, [&] { (void)hp::computeSkinTransfer(head); });
   const auto stacks = std::uint32_t(std::sqrt(double(o.triangles) / 4.0));
   const hp::HeadMesh sphere = hp::makeEllipsoidMesh(glm::vec3(0.0f), glm::vec3(0.2f, 0.3f, 0.15f), 2 * stacks, stacks);
   std::vector<glm::uvec3> tris;
@@ -77,6 +80,7 @@ void run(const Options& o) {
       {"scalp", {{"vertices", scalpVertices}, {"time", toJson(scalpS)}}},
       {"scalp_marking", {{"time", toJson(markS)}}},
       {"head_total", {{"time", toJson(totalS)}}},
+      {"skin_transfer", {{"rays_per_vertex", hp::SkinTransferOptions{}.raysPerVertex}, {"time", toJson(transferS)}}},
       {"collider_mesh_grid", {{"triangles", tris.size()}, {"nodes", colliderGrid.values.size()}, {"time", toJson(colliderS)}}}};
   if (o.json) {
     std::cout << j.dump(2) << "\n";
@@ -88,13 +92,15 @@ void run(const Options& o) {
   std::printf("  scalp        %8zu vertices         %.4f (%.4f)\n", scalpVertices, scalpS.wall, scalpS.cpu);
   std::printf("  scalp marking                          %.4f (%.4f)\n", markS.wall, markS.cpu);
   std::printf("  total                                  %.4f (%.4f)\n", totalS.wall, totalS.cpu);
+  std::printf("  skin transfer (%u rays a vertex)        %.4f (%.4f)\n", hp::SkinTransferOptions{}.raysPerVertex,
+              transferS.wall, transferS.cpu);
   std::printf("collider mesh grid: %zu triangles -> %zu nodes %.3f (%.3f)\n", tris.size(), colliderGrid.values.size(),
               colliderS.wall, colliderS.cpu);
 }
 
 void setup(CLI::App& app) {
   auto o = std::make_shared<Options>();
-  auto* cmd = hp::cli::benchSuite(app, "head", "Time the default head's field, mesh and scalp, and a collider mesh's distance grid");
+  auto* cmd = hp::cli::benchSuite(app, "head", "Time the default head's field, mesh, scalp and skin transfer, and a collider mesh's distance grid");
   cmd->add_option("--repeat", o->repeat, "runs; the best is reported")->capture_default_str();
   cmd->add_option("--triangles", o->triangles, "triangles of the collider mesh")->capture_default_str();
   cmd->add_flag("--json", o->json, "print JSON");

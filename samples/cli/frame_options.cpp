@@ -183,6 +183,11 @@ hp::RenderRequest makeRenderRequest(const FrameOptions& o, const CLI::App& cmd) 
       throw hp::Error("--skin-bounce must be on or off, got '" + o.skinBounce->substr(0, 40) + "'");
     r.look.skinBounce = *o.skinBounce == "on";
   }
+  if (o.skinIndirect) {
+    if (*o.skinIndirect != "on" && *o.skinIndirect != "off")
+      throw hp::Error("--skin-indirect must be on or off, got '" + o.skinIndirect->substr(0, 40) + "'");
+    r.look.skinIndirect = *o.skinIndirect == "on";
+  }
   if (o.farSide) {
     if (*o.farSide != "depth" && *o.farSide != "open")
       throw hp::Error("--far-side must be depth or open, got '" + o.farSide->substr(0, 40) + "'");
@@ -292,12 +297,15 @@ void addFrameOptions(CLI::App& cmd, FrameOptions& o) {
                  "back (physical fibre model), or single");
   cmd.add_option("--skin-bounce", o.skinBounce,
                  "on or off: adds the sunlight the skin reflects onto the hair (default on)");
+  cmd.add_option("--skin-indirect", o.skinIndirect,
+                 "on or off: the head's indirect light, the sky it sees past its own shape and the light its skin "
+                 "passes on to itself (default on); off: the open sky on all skin");
   cmd.add_option("--far-side", o.farSide,
                  "Compute raster: the sky on a hair fibre's far side: depth (default; where the depth image lies "
                  "behind the fibre, the light the hair beneath passes on) or open (the open sky everywhere)");
   cmd.add_option("--wrap", o.wrap,
                  "The skin's wrap lighting, [0, 1]: light reaches past the terminator as (wrap + N.L) / (1 + wrap) "
-                 "(default 0.5; 0 is Lambertian, as the reference's skin)");
+                 "(default 0: Lambertian, as the reference's skin; the skin's indirect light, --skin-indirect, stands for what the wrap imitated)");
   cmd.add_option("--skin-color", o.skinColor, "Skin albedo R,G,B, each in [0, 1] (default 0.62,0.45,0.36)")
       ->delimiter(',')->expected(3);
   cmd.add_flag("--lines", o.lines, "Draw strands as lines instead of ribbons");

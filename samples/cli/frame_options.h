@@ -35,6 +35,7 @@ struct FrameOptions {
   std::optional<float> ambient;
   std::optional<std::string> scattering;
   std::optional<std::string> skinBounce;  // on | off
+  std::optional<std::string> skinIndirect;  // on | off
   std::optional<std::string> farSide;     // depth | open
   std::optional<std::vector<float>> skinColor;
   std::optional<float> wrap;  // the skin's wrap lighting

@@ -187,6 +187,7 @@ void lookSection(Tunables& t, PanelChanges& c) {
     c.look = true;
   }
   c.look |= ImGui::Checkbox("skin bounce", &t.look.skinBounce);
+  c.look |= ImGui::Checkbox("skin indirect light", &t.look.skinIndirect);
   c.look |= ImGui::Checkbox("far side from depth", &t.look.farSideFromDepth);
 }
 

@@ -33,6 +33,13 @@ HP_CONST(uint, RENDER_BINDING_BOUNCE_SAMPLES, 33)
 HP_CONST(uint, RENDER_BINDING_BOUNCE_GUIDE_SAMPLES, 34)
 HP_CONST(uint, RENDER_BINDING_STRAND_BINDINGS, 35)
 HP_CONST(uint, RENDER_BINDING_SCALP_TRIANGLES, 36)
+// The head's indirect light (head.vert; engine/core/hair/skin_transfer.h), float[vertices x SKIN_TRANSFER_FLOATS]
+// (head.vert reads it as vec4s): per vertex the direct transfer's 9 SH coefficients, the bounce transfer's 9
+// (per unit albedo), the share of its hemisphere the head covers, and 0.
+HP_CONST(uint, RENDER_BINDING_SKIN_TRANSFER, 37)
+HP_CONST(uint, SKIN_TRANSFER_FLOATS, 20)
+HP_CONST(uint, SKIN_TRANSFER_BOUNCE, 9)
+HP_CONST(uint, SKIN_TRANSFER_BLOCKED, 18)
 // strand_bounce.comp's steps (a specialization constant): gather at the points of the bound positions'
 // strands, or blend each render strand's samples from its three guides' with its barycentrics.
 HP_CONST(uint, BOUNCE_STEP_GATHER, 0)
@@ -120,6 +127,11 @@ struct RenderFrame {
   vec4 environment[ENV_SH_COEFFICIENTS];  // rgb = the environment's radiance SH convolved with the clamped
                                           // cosine over pi (shared/environment.h), the uniform ambient in
                                           // the first; w = 0
+  vec4 skinSky[ENV_SH_COEFFICIENTS];     // the head's indirect light (LookSettings::skinIndirect): rgb = the sky's
+                                         // radiance SH (environment and ambient) in the head's own axes; w of the
+                                         // first = 1 when on (else head.frag takes `environment` on all skin)
+  vec4 skinLights[ENV_SH_COEFFICIENTS];  // rgb = the lights' radiance SH in the head's axes, as they arrive at its
+                                         // centre: what its skin passes on to itself; w = 0
 };
 
 struct StrandDrawPush {
@@ -154,7 +166,9 @@ static_assert(offsetof(hp::gpu::RenderFrame, shadows) == 752);
 static_assert(offsetof(hp::gpu::RenderFrame, previousViewProj) == 1072);
 static_assert(offsetof(hp::gpu::RenderFrame, hairForward) == 1152);
 static_assert(offsetof(hp::gpu::RenderFrame, environment) == 1168);
-static_assert(sizeof(hp::gpu::RenderFrame) == 1312);
+static_assert(offsetof(hp::gpu::RenderFrame, skinSky) == 1312);
+static_assert(offsetof(hp::gpu::RenderFrame, skinLights) == 1456);
+static_assert(sizeof(hp::gpu::RenderFrame) == 1600);
 static_assert(sizeof(hp::gpu::FrameLight) == 64);
 static_assert(sizeof(hp::gpu::FrameShadow) == 80);
 static_assert(sizeof(hp::gpu::StrandBouncePush) == 16);

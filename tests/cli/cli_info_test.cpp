@@ -155,13 +155,18 @@ TEST(CliBench, SimRefusesABadGridChoice) {
   EXPECT_EQ(r.out.find("simulation on"), std::string::npos) << "a benchmark ran: " << r.out;
 }
 
-// `bench --skin-bounce` takes off and/or on, `--bounce-samples` values in [2, 256]; anything else is refused
-// by name before a frame runs.
+// `bench --skin-bounce` and `--skin-indirect` take off and/or on, `--bounce-samples` values in [2, 256];
+// anything else is refused by name before a frame runs.
 TEST(CliBench, RefusesBadSkinBounceAndBounceSampleValues) {
   auto r = runCli({"bench", "--raster", "compute", "--skin-bounce", "off,maybe", "--frames", "1"});
   EXPECT_EQ(r.exitCode, 1);
   EXPECT_NE(r.err.find("bench: --skin-bounce takes off and/or on, got 'maybe'"), std::string::npos) << r.err;
   EXPECT_EQ(r.out.find("median of"), std::string::npos) << "a frame ran: " << r.out;
+  auto indirect = runCli({"bench", "--skin-indirect", "on,sometimes", "--frames", "1"});
+  EXPECT_EQ(indirect.exitCode, 1);
+  EXPECT_NE(indirect.err.find("bench: --skin-indirect takes off and/or on, got 'sometimes'"), std::string::npos)
+      << indirect.err;
+  EXPECT_EQ(indirect.out.find("median of"), std::string::npos) << "a frame ran: " << indirect.out;
   auto samples = runCli({"bench", "--raster", "compute", "--bounce-samples", "8,1", "--frames", "1"});
   EXPECT_EQ(samples.exitCode, 1);
   EXPECT_NE(samples.err.find("bench: --bounce-samples values must be in [2, 256], got 1"), std::string::npos)

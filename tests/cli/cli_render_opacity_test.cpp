@@ -106,6 +106,7 @@ TEST(CliRenderOpacity, RefusesBadShadowOptions) {
       {{"--opacity-raster", "splat"}, "opacity raster must be auto, compute or graphics"},
       {{"--scattering", "triple"}, "scattering must be single or dual"},
       {{"--skin-bounce", "maybe"}, "--skin-bounce must be on or off, got 'maybe'"},
+      {{"--skin-indirect", "yes"}, "--skin-indirect must be on or off, got 'yes'"},
       {{"--far-side", "closed"}, "--far-side must be depth or open, got 'closed'"},
       {{"--skin-color", "2,0,0"}, "--skin-color components must be in [0, 1]"},
       {{"--skin-color", "0.5,nan,0.5"}, "--skin-color must be finite"},
@@ -145,15 +146,17 @@ TEST(CliRenderOpacity, DeepMapsByDefaultGlobalOnRequest) {
 
 // --skin-color reaches the frame: the export's skin colour and head albedo (away from the scalp) are the
 // given colour (the refusals are in the list above), and so do the pixels. Two frames from the front
-// (face, neck and shoulders in view) differ only in the skin's red, 0.2 -> 0.8. The head's radiance is
-// albedo x light per channel (shaders/head.frag), so in the exported linear image (realtime.pfm, before
-// exposure) a pixel that sees only skin has 4x the red and the same green and blue; pixels where hair
-// or background cover part of the skin change less. Skin pixels = red at least doubled.
+// (face, neck and shoulders in view) differ only in the skin's red, 0.2 -> 0.8. Without the skin's indirect
+// light (whose bounces between parts of the skin grow faster than the albedo: albedo / (1 - albedo x blocked))
+// the head's radiance is albedo x light per channel (shaders/head.frag), so in the exported linear image
+// (realtime.pfm, before exposure) a pixel that sees only skin has 4x the red and the same green and blue;
+// pixels where hair or background cover part of the skin change less. Skin pixels = red at least doubled.
 TEST(CliRenderOpacity, SkinColorReachesTheExportedFrame) {
   auto render = [](const std::string& name, const std::string& color) {
     const fs::path dir = tempDir(name);
     auto args = baseArgs(dir);
-    args.insert(args.end(), {"--camera-orbit", "0", "--skin-color", color, "--export-frame", (dir / "frame").string()});
+    args.insert(args.end(), {"--camera-orbit", "0", "--skin-color", color, "--skin-indirect", "off", "--export-frame",
+                             (dir / "frame").string()});
     auto r = runCli(args);
     EXPECT_EQ(r.exitCode, 0) << r.err;
     return dir / "frame";

@@ -18,9 +18,13 @@ using namespace hp;
 using hp::test::VulkanTest;
 
 namespace {
-// A still of the rest pose from orbit angle orbitDeg (0: the front).
+// A still of the rest pose from orbit angle orbitDeg (0: the front), with the wrap term at 0.5: it lights the
+// skin at grazing angles to the light and past the terminator, where the bands and rings showed (at the
+// default wrap 0 that skin is dark: the banding test measured 1.00x and 1.05x, and the old path 1.21x,
+// which no longer fails the bound, so these tests keep the wrap).
 RenderRequest stillRequest(bool shadows, float orbitDeg = 0.0f) {
   RenderRequest r;
+  r.look.wrap = 0.5f;
   r.scene.render = {240, 180, 4};
   r.scene.camera.orbitDeg = orbitDeg;
   r.scene.density.totalStrands = 3000;

@@ -13,6 +13,8 @@
 #include <random>
 #include <vector>
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include "engine/core/error.h"
 #include "engine/core/shading/environment_lights.h"
 #include "engine/core/shading/environment_map.h"
@@ -193,4 +195,24 @@ TEST(EnvironmentSplit, WithoutLightsTheHarmonicsHoldEverythingAndBadSettingsAreR
   EXPECT_THROW(splitEnvironment(studio, {2, 0.0}), Error);
   EXPECT_THROW(splitEnvironment(studio, {2, 4.0, 0.0}), Error);
   EXPECT_THROW(splitEnvironment(studio, {2, 4.0, std::nan("")}), Error);
+}
+
+TEST(EnvironmentSH, RotationCarriesADirectionsProjectionExactly) {
+  // The projection of a direction d (a delta of unit weight) is Y_i(d); seen in axes turned by R it is Y_i(R^T d).
+  const glm::dmat3 rotation = glm::dmat3(glm::rotate(glm::dmat4(1.0), 0.7, glm::normalize(glm::dvec3(0.3, -0.8, 0.5))));
+  for (const glm::dvec3& d : {glm::dvec3(0, 1, 0), glm::normalize(glm::dvec3(0.5, 0.8, 0.6)), glm::normalize(glm::dvec3(-1, -2, 3))}) {
+    EnvironmentSH sh{}, expected{};
+    addToEnvironment(sh, d, glm::dvec3(1.0, 2.0, 3.0));
+    addToEnvironment(expected, glm::transpose(rotation) * d, glm::dvec3(1.0, 2.0, 3.0));
+    const EnvironmentSH turned = rotateEnvironment(sh, rotation);
+    for (std::size_t i = 0; i < turned.size(); ++i)
+      for (int c = 0; c < 3; ++c) EXPECT_NEAR(turned[i][c], expected[i][c], 1e-6) << "coefficient " << i;
+  }
+  // The identity keeps any coefficients; a uniform sky is the same in any axes.
+  EnvironmentSH any{};
+  for (std::size_t i = 0; i < any.size(); ++i) any[i] = glm::dvec3(0.1 * double(i) - 0.3, 0.2, -0.05 * double(i));
+  const EnvironmentSH same = rotateEnvironment(any, glm::dmat3(1.0));
+  for (std::size_t i = 0; i < any.size(); ++i) EXPECT_NEAR(glm::length(same[i] - any[i]), 0.0, 1e-6);
+  const EnvironmentSH sky = uniformEnvironmentSH(glm::dvec3(0.06));
+  EXPECT_NEAR(glm::length(rotateEnvironment(sky, rotation)[0] - sky[0]), 0.0, 1e-6);
 }

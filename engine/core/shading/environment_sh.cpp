@@ -35,6 +35,21 @@ glm::dvec3 evaluateEnvironment(const EnvironmentSH& sh, const glm::dvec3& dir) {
   return sum;
 }
 
+EnvironmentSH rotateEnvironment(const EnvironmentSH& radiance, const glm::dmat3& rotation) {
+  // Gauss-Legendre in cos(theta) (3 nodes: exact to degree 5) times 6 even steps in phi (exact for
+  // trigonometric degree 5): L(R w) Y_i(w) is a polynomial of degree 4 on the sphere.
+  const double nodes[3] = {-std::sqrt(0.6), 0.0, std::sqrt(0.6)}, weights[3] = {5.0 / 9.0, 8.0 / 9.0, 5.0 / 9.0};
+  constexpr int kSteps = 6;
+  EnvironmentSH out{};
+  for (int k = 0; k < 3; ++k)
+    for (int j = 0; j < kSteps; ++j) {
+      const double z = nodes[k], r = std::sqrt(1.0 - z * z), phi = 2.0 * shading::kPi * j / kSteps;
+      const glm::dvec3 w(r * std::cos(phi), r * std::sin(phi), z);
+      addToEnvironment(out, w, evaluateEnvironment(radiance, rotation * w) * (weights[k] * 2.0 * shading::kPi / kSteps));
+    }
+  return out;
+}
+
 EnvironmentSH cosineConvolved(const EnvironmentSH& radiance) {
   EnvironmentSH out = radiance;
   for (std::uint32_t i = 0; i < gpu::ENV_SH_COEFFICIENTS; ++i) {

@@ -19,4 +19,7 @@ void addToEnvironment(EnvironmentSH& sh, const glm::dvec3& dir, const glm::dvec3
 EnvironmentSH uniformEnvironmentSH(const glm::dvec3& radiance);
 glm::dvec3 evaluateEnvironment(const EnvironmentSH& sh, const glm::dvec3& dir);
 EnvironmentSH cosineConvolved(const EnvironmentSH& radiance);
+// The radiance seen in another frame's axes: the SH of w -> L(rotation w), rotation taking that frame's axes to
+// the SH's (orthonormal). Exact for order <= 2 (a product quadrature that integrates degree-4 polynomials).
+EnvironmentSH rotateEnvironment(const EnvironmentSH& radiance, const glm::dmat3& rotation);
 }  // namespace hp

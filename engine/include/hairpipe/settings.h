@@ -112,7 +112,7 @@ struct LookSettings {
   float strandWidth = 0.0005f;       // ribbon width at the root (a render strand stands for a clump)
   float tipWidthFraction = 0.35f;    // width at the tip relative to the root, [0, 1]
   Vec3 skinColor{0.62f, 0.45f, 0.36f};  // the head's albedo, linear RGB in [0, 1]
-  float wrap = 0.5f;                 // the head's wrap lighting, [0, 1]
+  float wrap = 0.0f;                 // the head's wrap lighting, [0, 1]; 0: Lambertian (as the path-traced reference)
   float ambient = 0.06f;             // uniform sky radiance, added to `environment`
   // The environment's radiance (what environmentLighting leaves for the ambient term) as 9 RGB spherical-
   // harmonic coefficients of order <= 2 in world axes (the basis of docs/SHADING.md "Environment"); all zero:
@@ -120,6 +120,10 @@ struct LookSettings {
   std::array<Vec3, 9> environment{};
   Scattering scattering = Scattering::Dual;  // Dual: physical model only
   bool skinBounce = true;            // sunlight the skin reflects onto the hair
+  // The head's indirect light: the sky it sees past its own shape (a jaw over the throat) and the light its skin
+  // passes on to itself, from a transfer computed per vertex when the head is loaded; false: the whole sky on
+  // every point of skin and no light between its parts (docs/SHADING.md "The skin's indirect light").
+  bool skinIndirect = true;
   // Compute raster: where the depth the hair is composited over (the character's, or the engine's) lies behind
   // a hair vertex, the sky on the fibre's far side is the light the hair beneath passes on; false: open sky.
   bool farSideFromDepth = true;

@@ -1,0 +1,53 @@
+#include "compute/head/skin_transfer_buffer.h"
+
+#include <algorithm>
+#include <cstring>
+
+#include "engine/core/error.h"
+#include "engine/core/hair/skin_transfer.h"
+#include "engine/vk/transfer.h"
+#include "shaders/shared/render.h"
+
+namespace hp::render {
+// head.vert reads a vertex's floats as five vec4s in this order.
+static_assert(gpu::SKIN_TRANSFER_FLOATS == 20 && gpu::SKIN_TRANSFER_BOUNCE == 9 && gpu::SKIN_TRANSFER_BLOCKED == 18);
+namespace {
+std::vector<float> packed(const HeadMesh& mesh) {
+  const SkinTransfer t = computeSkinTransfer(mesh);
+  std::vector<float> out(mesh.positions.size() * gpu::SKIN_TRANSFER_FLOATS, 0.0f);
+  for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
+    float* at = &out[v * gpu::SKIN_TRANSFER_FLOATS];
+    std::copy(t.direct[v].begin(), t.direct[v].end(), at);
+    std::copy(t.bounce[v].begin(), t.bounce[v].end(), at + gpu::SKIN_TRANSFER_BOUNCE);
+    at[gpu::SKIN_TRANSFER_BLOCKED] = t.blocked[v];
+  }
+  return out;
+}
+
+// FNV-1a over a span's bytes, then its length (two meshes whose arrays split the same bytes differently differ).
+template <typename T>
+void hashInto(std::uint64_t& h, const std::vector<T>& values) {
+  const auto* bytes = reinterpret_cast<const unsigned char*>(values.data());
+  for (std::size_t i = 0; i < values.size() * sizeof(T); ++i) h = (h ^ bytes[i]) * 1099511628211ull;
+  h = (h ^ values.size()) * 1099511628211ull;
+}
+}  // namespace
+
+SkinTransferBuffer::SkinTransferBuffer(const vk::Context& ctx, const HeadMesh& mesh) {
+  if (mesh.positions.empty()) throw Error("skin transfer: the head mesh is empty");
+  const std::vector<float> values = packed(mesh);
+  buffer_ = vk::Buffer(ctx, values.size() * sizeof(float),
+                       VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                       vk::MemoryKind::DeviceLocal, "head skin transfer");
+  vk::upload<float>(ctx, buffer_, values, vk::BufferUse::VertexRead);
+}
+
+std::uint64_t fingerprint(const HeadMesh& mesh) {
+  std::uint64_t h = 14695981039346656037ull;
+  hashInto(h, mesh.positions);
+  hashInto(h, mesh.normals);
+  hashInto(h, mesh.indices);
+  hashInto(h, mesh.scalp);
+  return h;
+}
+}  // namespace hp::render

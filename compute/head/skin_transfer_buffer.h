@@ -1,0 +1,23 @@
+#pragma once
+// Contract: a head mesh's skin transfer (engine/core/hair/skin_transfer.h) computed and uploaded once, in
+// head.vert's layout (shaders/shared/render.h RENDER_BINDING_SKIN_TRANSFER: SKIN_TRANSFER_FLOATS floats per
+// vertex). Immutable after construction, so instances drawing the same mesh share one (Renderer caches it by
+// the mesh's contents). `fingerprint` is that cache's key.
+#include <cstdint>
+
+#include "engine/core/hair/hair_asset.h"
+#include "engine/vk/buffer.h"
+
+namespace hp::render {
+class SkinTransferBuffer {
+ public:
+  SkinTransferBuffer(const vk::Context& ctx, const HeadMesh& mesh);  // the mesh non-empty
+  const vk::Buffer& buffer() const { return buffer_; }
+
+ private:
+  vk::Buffer buffer_;
+};
+
+// A 64-bit hash of everything the transfer depends on: positions, normals, indices and scalp weights.
+std::uint64_t fingerprint(const HeadMesh& mesh);
+}  // namespace hp::render

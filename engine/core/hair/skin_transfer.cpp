@@ -1,0 +1,180 @@
+#include "engine/core/hair/skin_transfer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <string>
+
+#include "engine/core/error.h"
+#include "engine/core/hair/parallel_for.h"
+#include "engine/core/hair/triangle_bvh.h"
+#include "shaders/shared/environment.h"
+
+namespace hp {
+namespace {
+using Coefficients = std::array<float, 9>;
+constexpr float kPi = 3.14159265358979f;
+
+// A ray's fate: the triangle and barycentrics it met on a front face, else `escaped` or a back face.
+struct RayEnd {
+  static constexpr std::uint32_t kEscaped = ~0u, kBackFace = ~0u - 1u;
+  std::uint32_t triangle = kEscaped;
+  float u = 0.0f, v = 0.0f;
+};
+
+// A well-mixed 32-bit hash (PCG's output step): a vertex's and a ray's jitter in the stratified grid.
+std::uint32_t hashBits(std::uint32_t x) {
+  x = x * 747796405u + 2891336453u;
+  x = ((x >> ((x >> 28u) + 4u)) ^ x) * 277803737u;
+  return (x >> 22u) ^ x;
+}
+float unitFloat(std::uint32_t bits) { return float(bits >> 8) * (1.0f / 16777216.0f); }
+
+// Ray r of n from vertex v: cosine-distributed about n (Malley's method) over an sx x sy grid of strata,
+// jittered within its stratum.
+glm::vec3 rayDirection(const glm::vec3& n, std::uint32_t vertex, std::uint32_t r, std::uint32_t count) {
+  const std::uint32_t sx = std::max(1u, std::uint32_t(std::sqrt(float(count)))), sy = (count + sx - 1) / sx;
+  const std::uint32_t h = hashBits(vertex * 1024u + r);
+  const float u1 = (float(r % sx) + unitFloat(h)) / float(sx);
+  const float u2 = (float(r / sx) + unitFloat(hashBits(h))) / float(sy);
+  const float radius = std::sqrt(u1), phi = 2.0f * kPi * u2;
+  // An orthonormal basis around n (Duff et al. 2017).
+  const float sign = std::copysign(1.0f, n.z), a = -1.0f / (sign + n.z), b = n.x * n.y * a;
+  const glm::vec3 t(1.0f + sign * n.x * n.x * a, sign * b, -sign * n.x), s(b, sign + n.y * n.y * a, -n.y);
+  return glm::normalize(t * (radius * std::cos(phi)) + s * (radius * std::sin(phi)) + n * std::sqrt(std::max(0.0f, 1.0f - u1)));
+}
+
+// The clamped cosine about n in the basis: A_l Y_i(n), A_0 = pi, A_1 = 2 pi / 3, A_2 = pi / 4 (the band
+// factors of shared/environment.h, which are these over pi).
+float cosineLobe(std::uint32_t i, const glm::vec3& n) {
+  const float band = i == 0 ? gpu::ENV_COSINE_BAND0 : i < 4 ? gpu::ENV_COSINE_BAND1 : gpu::ENV_COSINE_BAND2;
+  return kPi * band * gpu::envShBasis(i, n);
+}
+
+// Each vertex's neighbours along the mesh's edges (compressed rows, each neighbour once).
+struct Neighbours {
+  std::vector<std::uint32_t> start, list;
+};
+Neighbours meshNeighbours(std::size_t vertexCount, const std::vector<std::uint32_t>& indices) {
+  std::vector<std::vector<std::uint32_t>> rows(vertexCount);
+  for (std::size_t t = 0; t + 2 < indices.size(); t += 3)
+    for (int k = 0; k < 3; ++k) {
+      rows[indices[t + k]].push_back(indices[t + (k + 1) % 3]);
+      rows[indices[t + (k + 1) % 3]].push_back(indices[t + k]);
+    }
+  Neighbours n;
+  n.start.reserve(vertexCount + 1);
+  for (auto& row : rows) {
+    std::sort(row.begin(), row.end());
+    row.erase(std::unique(row.begin(), row.end()), row.end());
+    n.start.push_back(static_cast<std::uint32_t>(n.list.size()));
+    n.list.insert(n.list.end(), row.begin(), row.end());
+  }
+  n.start.push_back(static_cast<std::uint32_t>(n.list.size()));
+  return n;
+}
+
+// `passes` times, every value becomes the mean of itself and its neighbours.
+template <typename Value>
+void smooth(std::vector<Value>& values, const Neighbours& nb, std::uint32_t passes) {
+  std::vector<Value> next(values.size());
+  for (std::uint32_t pass = 0; pass < passes; ++pass) {
+    parallelFor(values.size(), [&](std::size_t v) {
+      Value sum = values[v];
+      for (std::uint32_t k = nb.start[v]; k < nb.start[v + 1]; ++k)
+        for (std::size_t i = 0; i < sum.size(); ++i) sum[i] += values[nb.list[k]][i];
+      const float scale = 1.0f / float(1 + nb.start[v + 1] - nb.start[v]);
+      for (float& c : sum) c *= scale;
+      next[v] = sum;
+    }, 1024);
+    values.swap(next);
+  }
+}
+
+// Casts every vertex's rays: the direct transfer, the share of rays that met the mesh, and where each ended.
+void castRays(const HeadMesh& mesh, const TriangleBvh& bvh, std::uint32_t rays, float offset,
+              std::vector<Coefficients>& direct, std::vector<std::array<float, 1>>& blocked, std::vector<RayEnd>& ends) {
+  parallelFor(mesh.positions.size(), [&](std::size_t v) {
+    const glm::vec3 n = mesh.normals[v], origin = mesh.positions[v] + offset * n;
+    direct[v] = {};
+    blocked[v][0] = 0.0f;
+    if (!(std::abs(glm::length(n) - 1.0f) < 1e-3f)) return;  // no usable normal: no light (its rays stay escaped)
+    Coefficients open{}, hidden{};  // the basis summed over the escaped and over the blocked rays
+    std::uint32_t hits = 0;
+    for (std::uint32_t r = 0; r < rays; ++r) {
+      const glm::vec3 d = rayDirection(n, std::uint32_t(v), r, rays);
+      const std::optional<TriangleBvh::Hit> hit = bvh.closestHit(origin, d, 0.0f, INFINITY);
+      RayEnd& end = ends[v * rays + r];
+      Coefficients& sum = hit ? hidden : open;
+      for (std::uint32_t i = 0; i < gpu::ENV_SH_COEFFICIENTS; ++i) sum[i] += gpu::envShBasis(i, d);
+      if (!hit) continue;
+      ++hits;
+      end = hit->front ? RayEnd{hit->triangle, hit->u, hit->v} : RayEnd{RayEnd::kBackFace};
+    }
+    // Mostly open: the whole lobe less the blocked rays' share (exact where nothing is in the way); mostly
+    // blocked: the escaped rays' share (exact where everything is). Either way the rays' noise scales with
+    // the smaller part.
+    const bool mostlyOpen = 2 * hits <= rays;
+    for (std::uint32_t i = 0; i < gpu::ENV_SH_COEFFICIENTS; ++i)
+      direct[v][i] = mostlyOpen ? cosineLobe(i, n) - hidden[i] * kPi / float(rays) : open[i] * kPi / float(rays);
+    blocked[v][0] = float(hits) / float(rays);
+  }, 256);
+}
+
+// The bounce transfer: per vertex the mean over its rays of the direct transfer where they met the mesh, but
+// for the scalp under the hair (HeadMesh::scalp), whose light the hair over it takes.
+std::vector<Coefficients> gatherBounce(const HeadMesh& mesh, const std::vector<Coefficients>& direct,
+                                       const std::vector<RayEnd>& ends, std::uint32_t rays) {
+  std::vector<Coefficients> bounce(direct.size());
+  parallelFor(direct.size(), [&](std::size_t v) {
+    Coefficients sum{};
+    for (std::uint32_t r = 0; r < rays; ++r) {
+      const RayEnd& end = ends[v * rays + r];
+      if (end.triangle >= RayEnd::kBackFace) continue;
+      const std::uint32_t* corner = &mesh.indices[3 * std::size_t(end.triangle)];
+      const float w[3] = {1.0f - end.u - end.v, end.u, end.v};
+      for (int k = 0; k < 3; ++k) {
+        const float lit = w[k] * (mesh.scalp.empty() ? 1.0f : 1.0f - mesh.scalp[corner[k]]);
+        for (std::size_t i = 0; i < sum.size(); ++i) sum[i] += lit * direct[corner[k]][i];
+      }
+    }
+    for (float& c : sum) c /= float(rays);
+    bounce[v] = sum;
+  }, 1024);
+  return bounce;
+}
+
+float boxDiagonal(const std::vector<glm::vec3>& points) {
+  glm::vec3 lo(INFINITY), hi(-INFINITY);
+  for (const glm::vec3& p : points) lo = glm::min(lo, p), hi = glm::max(hi, p);
+  return points.empty() ? 0.0f : glm::length(hi - lo);
+}
+}  // namespace
+
+SkinTransfer computeSkinTransfer(const HeadMesh& mesh, const SkinTransferOptions& options) {
+  if (options.raysPerVertex < 1 || options.raysPerVertex > 1024) throw Error("skin transfer: rays per vertex must be in [1, 1024]");
+  if (options.smoothingPasses > 64) throw Error("skin transfer: smoothing passes must be in [0, 64]");
+  if (mesh.normals.size() != mesh.positions.size()) throw Error("skin transfer: one normal per position is required");
+  const TriangleBvh bvh(mesh.positions, mesh.indices);
+  const std::uint32_t rays = options.raysPerVertex;
+  const std::size_t count = mesh.positions.size();
+  // Off the surface by a ten-thousandth of the model: past the float error of a hit on the vertex's own
+  // triangles, far below any feature that shadows.
+  const float offset = 1e-4f * boxDiagonal(mesh.positions);
+  std::vector<Coefficients> direct(count);
+  std::vector<std::array<float, 1>> blocked(count);
+  std::vector<RayEnd> ends(count * rays);
+  castRays(mesh, bvh, rays, offset, direct, blocked, ends);
+  const Neighbours nb = meshNeighbours(count, mesh.indices);
+  smooth(direct, nb, options.smoothingPasses);
+  smooth(blocked, nb, options.smoothingPasses);
+  std::vector<Coefficients> bounce = gatherBounce(mesh, direct, ends, rays);
+  smooth(bounce, nb, options.smoothingPasses);
+  SkinTransfer out;
+  out.direct = std::move(direct);
+  out.bounce = std::move(bounce);
+  out.blocked.reserve(count);
+  for (const auto& b : blocked) out.blocked.push_back(b[0]);
+  return out;
+}
+}  // namespace hp
