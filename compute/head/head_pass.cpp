@@ -68,7 +68,8 @@ HeadPass::HeadPass(const vk::Context& ctx, const HeadMesh& mesh, std::shared_ptr
   std::vector<float> scalp = mesh.scalp.empty() ? std::vector<float>(mesh.positions.size(), 0.0f) : mesh.scalp;
   vk::upload<glm::vec4>(ctx, normals_, asVec4(mesh.normals, scalp), vk::BufferUse::VertexRead);
   vk::upload<std::uint32_t>(ctx, indices_, mesh.indices, vk::BufferUse::VertexRead);
-  if (!transfer_) throw Error("head mesh: a skin transfer is required");
+  if (!transfer_ || transfer_->vertexCount() != mesh.positions.size())
+    throw Error("head mesh: a skin transfer of its " + std::to_string(mesh.positions.size()) + " vertices is required");
   set_.writeStorageBuffer(gpu::RENDER_BINDING_SKIN_TRANSFER, transfer_->buffer().handle());
   set_.writeStorageBuffer(gpu::RENDER_BINDING_POSITIONS, positions_.handle());
   set_.writeStorageBuffer(gpu::RENDER_BINDING_TANGENTS, normals_.handle());

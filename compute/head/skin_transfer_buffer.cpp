@@ -10,16 +10,16 @@
 
 namespace hp::render {
 // head.vert reads a vertex's floats as five vec4s in this order.
-static_assert(gpu::SKIN_TRANSFER_FLOATS == 20 && gpu::SKIN_TRANSFER_BOUNCE == 9 && gpu::SKIN_TRANSFER_BLOCKED == 18);
+static_assert(gpu::SKIN_TRANSFER_FLOATS == 20 && gpu::SKIN_TRANSFER_BOUNCE == 9 && gpu::SKIN_TRANSFER_REFLECTING == 18);
 namespace {
 std::vector<float> packed(const HeadMesh& mesh) {
   const SkinTransfer t = computeSkinTransfer(mesh);
   std::vector<float> out(mesh.positions.size() * gpu::SKIN_TRANSFER_FLOATS, 0.0f);
   for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
     float* at = &out[v * gpu::SKIN_TRANSFER_FLOATS];
-    std::copy(t.direct[v].begin(), t.direct[v].end(), at);
+    std::copy(t.occluded[v].begin(), t.occluded[v].end(), at);
     std::copy(t.bounce[v].begin(), t.bounce[v].end(), at + gpu::SKIN_TRANSFER_BOUNCE);
-    at[gpu::SKIN_TRANSFER_BLOCKED] = t.blocked[v];
+    at[gpu::SKIN_TRANSFER_REFLECTING] = t.reflecting[v];
   }
   return out;
 }
@@ -33,7 +33,8 @@ void hashInto(std::uint64_t& h, const std::vector<T>& values) {
 }
 }  // namespace
 
-SkinTransferBuffer::SkinTransferBuffer(const vk::Context& ctx, const HeadMesh& mesh) {
+SkinTransferBuffer::SkinTransferBuffer(const vk::Context& ctx, const HeadMesh& mesh)
+    : vertexCount_(static_cast<std::uint32_t>(mesh.positions.size())) {
   if (mesh.positions.empty()) throw Error("skin transfer: the head mesh is empty");
   const std::vector<float> values = packed(mesh);
   buffer_ = vk::Buffer(ctx, values.size() * sizeof(float),

@@ -13,8 +13,10 @@ class SkinTransferBuffer {
  public:
   SkinTransferBuffer(const vk::Context& ctx, const HeadMesh& mesh);  // the mesh non-empty
   const vk::Buffer& buffer() const { return buffer_; }
+  std::uint32_t vertexCount() const { return vertexCount_; }
 
  private:
+  std::uint32_t vertexCount_ = 0;
   vk::Buffer buffer_;
 };
 

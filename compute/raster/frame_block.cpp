@@ -126,7 +126,8 @@ void store(glm::vec4 (&into)[gpu::ENV_SH_COEFFICIENTS], const EnvironmentSH& sh)
 }
 }  // namespace
 
-void setSkinLight(gpu::RenderFrame& f, const glm::mat4& headToWorld, const FrameLights& lights, const LookSettings& look) {
+void setSkinLight(gpu::RenderFrame& f, const glm::mat4& headToWorld, const glm::vec3& headCentre,
+                  const FrameLights& lights, const LookSettings& look) {
   if (!look.skinIndirect) {
     f.skinSky[0].w = 0.0f;
     return;
@@ -138,9 +139,8 @@ void setSkinLight(gpu::RenderFrame& f, const glm::mat4& headToWorld, const Frame
   store(f.skinSky, rotateEnvironment(sky, rotation));
   f.skinSky[0].w = 1.0f;
   EnvironmentSH light{};
-  const glm::vec3 centre(headToWorld[3]);
   for (const LightSpec& spec : lights.lights) {
-    const auto [l, scale] = lightAt(spec, centre);
+    const auto [l, scale] = lightAt(spec, headCentre);
     if (scale > 0.0f)
       addToEnvironment(light, glm::transpose(rotation) * glm::dvec3(l), glm::dvec3(spec.color * (spec.intensity * scale)));
   }

@@ -62,11 +62,11 @@ gpu::RenderFrame makeRenderFrame(const CameraMatrices& camera, VkExtent2D extent
                                  const compute::StrandLayout& strands, const OpacitySettings& opacity,
                                  const glm::vec3& forwardAlbedo = glm::vec3(0.0f));
 // The head's indirect light (LookSettings::skinIndirect): the sky's radiance SH (the look's environment and
-// ambient) and the lights' (as they arrive at the head's centre, cone and distance included) turned into the
-// head's own axes (headToWorld's rotation; its scale is divided out), what head.vert pairs with the head's
+// ambient) and the lights' (as they arrive at headCentre, world space: cone and distance included) turned into
+// the head's own axes (headToWorld's rotation; its scale is divided out), what head.vert pairs with the head's
 // transfer. Off: the flag cleared, head.frag takes the open sky.
-void setSkinLight(gpu::RenderFrame& frame, const glm::mat4& headToWorld, const FrameLights& lights,
-                  const LookSettings& look);
+void setSkinLight(gpu::RenderFrame& frame, const glm::mat4& headToWorld, const glm::vec3& headCentre,
+                  const FrameLights& lights, const LookSettings& look);
 // A view's subpixel jitter (pixels, x right, y down) moved into `frame.proj`, and the previous frame's
 // unjittered proj * view for motion vectors (none: makeRenderFrame's, this frame's own: no camera motion).
 void setViewMotion(gpu::RenderFrame& frame, VkExtent2D extent, const glm::vec2& jitter,

@@ -83,7 +83,7 @@ gpu::RenderFrame HairInstance::frameBlock(const CameraMatrices& camera, VkExtent
                                           const render::FrameLights& lights, const render::LookSettings& look) const {
   gpu::RenderFrame f = render::makeRenderFrame(camera, extent, lights, settings_.material, look, strands().layout(),
                                                renderer_.shadows().settings(), glm::vec3(marschner_->params().forwardMean));
-  render::setSkinLight(f, headToWorld(), lights, look);
+  render::setSkinLight(f, headToWorld(), geometry_->opacity.headSphere(headToWorld()).centre, lights, look);
   return f;
 }
 

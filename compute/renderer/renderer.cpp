@@ -168,8 +168,10 @@ std::shared_ptr<const render::SkinTransferBuffer> Renderer::skinTransfer(const H
   if (mesh.positions.empty()) return nullptr;
   const std::uint64_t key = render::fingerprint(mesh);
   std::erase_if(transfers_, [](const Transfer& t) { return t.buffer.expired(); });
-  for (const Transfer& t : transfers_)
-    if (t.fingerprint == key) return t.buffer.lock();
+  for (const Transfer& t : transfers_) {
+    auto buffer = t.buffer.lock();
+    if (buffer && t.fingerprint == key && buffer->vertexCount() == mesh.positions.size()) return buffer;
+  }
   auto buffer = std::make_shared<const render::SkinTransferBuffer>(ctx_, mesh);
   transfers_.push_back({key, buffer});
   return buffer;

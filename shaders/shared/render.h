@@ -34,12 +34,13 @@ HP_CONST(uint, RENDER_BINDING_BOUNCE_GUIDE_SAMPLES, 34)
 HP_CONST(uint, RENDER_BINDING_STRAND_BINDINGS, 35)
 HP_CONST(uint, RENDER_BINDING_SCALP_TRIANGLES, 36)
 // The head's indirect light (head.vert; engine/core/hair/skin_transfer.h), float[vertices x SKIN_TRANSFER_FLOATS]
-// (head.vert reads it as vec4s): per vertex the direct transfer's 9 SH coefficients, the bounce transfer's 9
-// (per unit albedo), the share of its hemisphere the head covers, and 0.
+// (head.vert reads it as vec4s): per vertex the 9 SH coefficients of what the head hides of its lobe
+// (SkinTransfer::occluded), the bounce transfer's 9 (per unit albedo), the share of its hemisphere covered by
+// skin that passes light on (SkinTransfer::reflecting), and 0.
 HP_CONST(uint, RENDER_BINDING_SKIN_TRANSFER, 37)
 HP_CONST(uint, SKIN_TRANSFER_FLOATS, 20)
 HP_CONST(uint, SKIN_TRANSFER_BOUNCE, 9)
-HP_CONST(uint, SKIN_TRANSFER_BLOCKED, 18)
+HP_CONST(uint, SKIN_TRANSFER_REFLECTING, 18)
 // strand_bounce.comp's steps (a specialization constant): gather at the points of the bound positions'
 // strands, or blend each render strand's samples from its three guides' with its barycentrics.
 HP_CONST(uint, BOUNCE_STEP_GATHER, 0)

@@ -34,12 +34,11 @@ LinearImage bareSkin(const FrameCapture& capture) {
 // The side view (orbit 90: the throat under the jaw, the neck and shoulder beside the hair), 64x48 after 2
 // settling frames, against the reference at 32 spp and 4 bounces, the default look (Lambertian skin, the
 // indirect light on) and the same frame with the open sky on all skin instead. Measured on lavapipe over the
-// reference's seeds 1-3 (314 skin pixels): 26.3 / 27.4 / 27.5 dB, luminance 1.005 / 1.005 / 1.005 with the
-// indirect light; 24.7 / 25.7 / 25.8 dB, 0.985 / 0.985 / 0.986 with the open sky (the front view, 645 pixels:
-// 27.6 / 27.4 / 26.7 dB against 26.3 / 26.3 / 25.9). At 32 spp the PSNR is the reference's noise; the
-// difference between the two frames and the luminance are steady. (At 160x120 and 64 spp, 8 bounces, the side
-// view's skin reads 32.3 against 28.6 dB: docs/SHADING.md.) Asserted: above 25 dB, the luminance within
-// [0.99, 1.02], at least 1 dB better than the open sky, whose luminance must fall outside that range.
+// reference's seeds 1-3 (313-314 skin pixels): 26.5 / 27.4 / 27.5 dB, luminance 1.005 / 1.004 / 1.005 with
+// the indirect light; 24.8 / 25.7 / 25.8 dB, 0.985 / 0.985 / 0.986 with the open sky. At 32 spp the PSNR is
+// the reference's noise; the difference between the two frames and the luminance are steady. (At 160x120 and
+// 64 spp, 8 bounces, the side view's skin reads 32 against 28.6 dB: docs/SHADING.md.) Asserted: above 25 dB,
+// the luminance within [0.99, 1.02], at least 1 dB better than the open sky and 0.01 brighter.
 TEST_F(VulkanTest, TheSkinsIndirectLightMatchesTheReferencesSkin) {
   RenderRequest request;
   request.scene.render.width = 64;
@@ -67,5 +66,7 @@ TEST_F(VulkanTest, TheSkinsIndirectLightMatchesTheReferencesSkin) {
   EXPECT_GT(withIndirect.luminanceRatio, 0.99);
   EXPECT_LT(withIndirect.luminanceRatio, 1.02);
   EXPECT_GT(withIndirect.psnrDb, openSky.psnrDb + 1.0);
-  EXPECT_LT(openSky.luminanceRatio, 0.99) << "the negative control should fail the luminance bound";
+  // The open sky lacks the skin's bounce: darker by 2% of the reference (a difference of two frames against one
+  // reference, steadier than either ratio).
+  EXPECT_GT(withIndirect.luminanceRatio - openSky.luminanceRatio, 0.01);
 }

@@ -8,6 +8,7 @@
 #include "engine/core/error.h"
 #include "engine/core/hair/parallel_for.h"
 #include "engine/core/hair/triangle_bvh.h"
+#include "engine/core/shading/environment_sh.h"
 #include "shaders/shared/environment.h"
 
 namespace hp {
@@ -30,18 +31,35 @@ std::uint32_t hashBits(std::uint32_t x) {
 }
 float unitFloat(std::uint32_t bits) { return float(bits >> 8) * (1.0f / 16777216.0f); }
 
-// Ray r of n from vertex v: cosine-distributed about n (Malley's method) over an sx x sy grid of strata,
-// jittered within its stratum.
-glm::vec3 rayDirection(const glm::vec3& n, std::uint32_t vertex, std::uint32_t r, std::uint32_t count) {
-  const std::uint32_t sx = std::max(1u, std::uint32_t(std::sqrt(float(count)))), sy = (count + sx - 1) / sx;
-  const std::uint32_t h = hashBits(vertex * 1024u + r);
-  const float u1 = (float(r % sx) + unitFloat(h)) / float(sx);
-  const float u2 = (float(r / sx) + unitFloat(hashBits(h))) / float(sy);
-  const float radius = std::sqrt(u1), phi = 2.0f * kPi * u2;
-  // An orthonormal basis around n (Duff et al. 2017).
+// An orthonormal frame whose third axis is n (Duff et al. 2017): continuous in n but near -z, so neighbouring
+// vertices' frames nearly agree.
+glm::mat3 tangentFrame(const glm::vec3& n) {
   const float sign = std::copysign(1.0f, n.z), a = -1.0f / (sign + n.z), b = n.x * n.y * a;
-  const glm::vec3 t(1.0f + sign * n.x * n.x * a, sign * b, -sign * n.x), s(b, sign + n.y * n.y * a, -n.y);
-  return glm::normalize(t * (radius * std::cos(phi)) + s * (radius * std::sin(phi)) + n * std::sqrt(std::max(0.0f, 1.0f - u1)));
+  return glm::mat3(glm::vec3(1.0f + sign * n.x * n.x * a, sign * b, -sign * n.x), glm::vec3(b, sign + n.y * n.y * a, -n.y), n);
+}
+
+// Coefficients seen in a frame's axes (frame: the frame's axes to the mesh's; its transpose back).
+Coefficients turned(const Coefficients& c, const glm::mat3& frame) {
+  EnvironmentSH sh{};
+  for (std::size_t i = 0; i < c.size(); ++i) sh[i] = glm::dvec3(c[i], 0.0, 0.0);
+  const EnvironmentSH out = rotateEnvironment(sh, glm::dmat3(frame));
+  Coefficients r{};
+  for (std::size_t i = 0; i < r.size(); ++i) r[i] = float(out[i].x);
+  return r;
+}
+
+// Ray r of n from vertex v: cosine-distributed about n (Malley's method). The first sx x sy rays take one
+// stratum each of an sx x sy grid (sx = floor(sqrt(count)), sy = count / sx), jittered within it; any
+// rays left over are jittered over the whole square, so every direction keeps its share.
+glm::vec3 rayDirection(const glm::vec3& n, std::uint32_t vertex, std::uint32_t r, std::uint32_t count) {
+  const std::uint32_t sx = std::max(1u, std::uint32_t(std::sqrt(float(count)))), sy = count / sx;
+  const std::uint32_t h = hashBits(vertex * 1024u + r);
+  const bool stratified = r < sx * sy;
+  const float u1 = stratified ? (float(r % sx) + unitFloat(h)) / float(sx) : unitFloat(h);
+  const float u2 = stratified ? (float(r / sx) + unitFloat(hashBits(h))) / float(sy) : unitFloat(hashBits(h));
+  const float radius = std::sqrt(u1), phi = 2.0f * kPi * u2;
+  const glm::mat3 frame = tangentFrame(n);
+  return glm::normalize(frame * glm::vec3(radius * std::cos(phi), radius * std::sin(phi), std::sqrt(std::max(0.0f, 1.0f - u1))));
 }
 
 // The clamped cosine about n in the basis: A_l Y_i(n), A_0 = pi, A_1 = 2 pi / 3, A_2 = pi / 4 (the band
@@ -91,14 +109,17 @@ void smooth(std::vector<Value>& values, const Neighbours& nb, std::uint32_t pass
   }
 }
 
-// Casts every vertex's rays: the direct transfer, the share of rays that met the mesh, and where each ended.
+bool usableNormal(const glm::vec3& n) { return std::abs(glm::length(n) - 1.0f) < 1e-3f; }
+
+// Casts every vertex's rays: the occluded part of its lobe, the share of rays that met the mesh, and where
+// each ended.
 void castRays(const HeadMesh& mesh, const TriangleBvh& bvh, std::uint32_t rays, float offset,
-              std::vector<Coefficients>& direct, std::vector<std::array<float, 1>>& blocked, std::vector<RayEnd>& ends) {
+              std::vector<Coefficients>& occluded, std::vector<std::array<float, 1>>& blocked, std::vector<RayEnd>& ends) {
   parallelFor(mesh.positions.size(), [&](std::size_t v) {
     const glm::vec3 n = mesh.normals[v], origin = mesh.positions[v] + offset * n;
-    direct[v] = {};
+    occluded[v] = {};
     blocked[v][0] = 0.0f;
-    if (!(std::abs(glm::length(n) - 1.0f) < 1e-3f)) return;  // no usable normal: no light (its rays stay escaped)
+    if (!usableNormal(n)) return;  // no usable normal: nothing in the way (its rays stay escaped)
     Coefficients open{}, hidden{};  // the basis summed over the escaped and over the blocked rays
     std::uint32_t hits = 0;
     for (std::uint32_t r = 0; r < rays; ++r) {
@@ -111,23 +132,24 @@ void castRays(const HeadMesh& mesh, const TriangleBvh& bvh, std::uint32_t rays, 
       ++hits;
       end = hit->front ? RayEnd{hit->triangle, hit->u, hit->v} : RayEnd{RayEnd::kBackFace};
     }
-    // Mostly open: the whole lobe less the blocked rays' share (exact where nothing is in the way); mostly
-    // blocked: the escaped rays' share (exact where everything is). Either way the rays' noise scales with
-    // the smaller part.
+    // Mostly open: the blocked rays' share (exact, 0, where nothing is in the way); mostly blocked: the lobe
+    // less the escaped rays' share (exact where everything is). Either way the rays' noise scales with the
+    // smaller part.
     const bool mostlyOpen = 2 * hits <= rays;
     for (std::uint32_t i = 0; i < gpu::ENV_SH_COEFFICIENTS; ++i)
-      direct[v][i] = mostlyOpen ? cosineLobe(i, n) - hidden[i] * kPi / float(rays) : open[i] * kPi / float(rays);
+      occluded[v][i] = mostlyOpen ? hidden[i] * kPi / float(rays) : cosineLobe(i, n) - open[i] * kPi / float(rays);
     blocked[v][0] = float(hits) / float(rays);
   }, 256);
 }
 
-// The bounce transfer: per vertex the mean over its rays of the direct transfer where they met the mesh, but
-// for the scalp under the hair (HeadMesh::scalp), whose light the hair over it takes.
-std::vector<Coefficients> gatherBounce(const HeadMesh& mesh, const std::vector<Coefficients>& direct,
-                                       const std::vector<RayEnd>& ends, std::uint32_t rays) {
-  std::vector<Coefficients> bounce(direct.size());
+// The bounce transfer: per vertex the mean over its rays of the direct transfer where they met the mesh's
+// front faces, but for the scalp under the hair (HeadMesh::scalp), whose light the hair over it takes; and
+// the share of rays that met such reflecting skin.
+void gatherBounce(const HeadMesh& mesh, const std::vector<Coefficients>& direct, const std::vector<RayEnd>& ends,
+                  std::uint32_t rays, std::vector<Coefficients>& bounce, std::vector<std::array<float, 1>>& reflecting) {
   parallelFor(direct.size(), [&](std::size_t v) {
     Coefficients sum{};
+    float share = 0.0f;
     for (std::uint32_t r = 0; r < rays; ++r) {
       const RayEnd& end = ends[v * rays + r];
       if (end.triangle >= RayEnd::kBackFace) continue;
@@ -135,13 +157,14 @@ std::vector<Coefficients> gatherBounce(const HeadMesh& mesh, const std::vector<C
       const float w[3] = {1.0f - end.u - end.v, end.u, end.v};
       for (int k = 0; k < 3; ++k) {
         const float lit = w[k] * (mesh.scalp.empty() ? 1.0f : 1.0f - mesh.scalp[corner[k]]);
+        share += lit;
         for (std::size_t i = 0; i < sum.size(); ++i) sum[i] += lit * direct[corner[k]][i];
       }
     }
     for (float& c : sum) c /= float(rays);
     bounce[v] = sum;
+    reflecting[v][0] = share / float(rays);
   }, 1024);
-  return bounce;
 }
 
 float boxDiagonal(const std::vector<glm::vec3>& points) {
@@ -161,20 +184,34 @@ SkinTransfer computeSkinTransfer(const HeadMesh& mesh, const SkinTransferOptions
   // Off the surface by a ten-thousandth of the model: past the float error of a hit on the vertex's own
   // triangles, far below any feature that shadows.
   const float offset = 1e-4f * boxDiagonal(mesh.positions);
-  std::vector<Coefficients> direct(count);
-  std::vector<std::array<float, 1>> blocked(count);
+  std::vector<Coefficients> occluded(count);
+  std::vector<std::array<float, 1>> blocked(count), reflecting(count);
   std::vector<RayEnd> ends(count * rays);
-  castRays(mesh, bvh, rays, offset, direct, blocked, ends);
+  castRays(mesh, bvh, rays, offset, occluded, blocked, ends);
   const Neighbours nb = meshNeighbours(count, mesh.indices);
-  smooth(direct, nb, options.smoothingPasses);
+  // The occluded part is smoothed, not the direct transfer, so each vertex keeps its own normal's lobe; and it
+  // is smoothed in each vertex's tangent frame (n along +z), so that neighbours facing other ways mix what
+  // they hide relative to their normals (a closed shell's vertices all hide their whole lobe).
+  parallelFor(count, [&](std::size_t v) {
+    if (usableNormal(mesh.normals[v])) occluded[v] = turned(occluded[v], tangentFrame(mesh.normals[v]));
+  }, 256);
+  smooth(occluded, nb, options.smoothingPasses);
+  parallelFor(count, [&](std::size_t v) {
+    if (usableNormal(mesh.normals[v])) occluded[v] = turned(occluded[v], glm::transpose(tangentFrame(mesh.normals[v])));
+  }, 256);
   smooth(blocked, nb, options.smoothingPasses);
-  std::vector<Coefficients> bounce = gatherBounce(mesh, direct, ends, rays);
-  smooth(bounce, nb, options.smoothingPasses);
   SkinTransfer out;
-  out.direct = std::move(direct);
-  out.bounce = std::move(bounce);
-  out.blocked.reserve(count);
+  out.direct.resize(count);
+  for (std::size_t v = 0; v < count; ++v)
+    for (std::uint32_t i = 0; i < gpu::ENV_SH_COEFFICIENTS; ++i)
+      out.direct[v][i] = (usableNormal(mesh.normals[v]) ? cosineLobe(i, mesh.normals[v]) : 0.0f) - occluded[v][i];
+  out.bounce.resize(count);
+  gatherBounce(mesh, out.direct, ends, rays, out.bounce, reflecting);
+  smooth(out.bounce, nb, options.smoothingPasses);
+  smooth(reflecting, nb, options.smoothingPasses);
+  out.occluded = std::move(occluded);
   for (const auto& b : blocked) out.blocked.push_back(b[0]);
+  for (const auto& r : reflecting) out.reflecting.push_back(r[0]);
   return out;
 }
 }  // namespace hp
