@@ -53,13 +53,14 @@ TEST(SkinLight, TheSkyAndTheLightsAreTurnedIntoTheHeadsAxes) {
   EXPECT_EQ(f.skinSky[0].w, 0.0f);
 }
 
+// At the given centre (the head's bounding sphere's, not its origin): 1 unit from the light, a quarter of it.
 TEST(SkinLight, APointLightArrivesAtTheHeadsCentreWithItsFalloff) {
-  const LightSpec point = LightSpec::makePoint({0.0f, 0.0f, 2.0f}, 0.5f);  // 1 at 0.5 units, 2 units away
+  const LightSpec point = LightSpec::makePoint({0.0f, 0.0f, 2.0f}, 0.5f);  // 1 at 0.5 units
   render::FrameLights lights;
   lights.lights = {point};
   gpu::RenderFrame f{};
-  render::setSkinLight(f, glm::mat4(1.0f), glm::vec3(0.0f), lights, render::LookSettings{});
-  const float scale = (0.5f / 2.0f) * (0.5f / 2.0f);
+  render::setSkinLight(f, glm::mat4(1.0f), glm::vec3(0.0f, 0.0f, 1.0f), lights, render::LookSettings{});
+  const float scale = (0.5f / 1.0f) * (0.5f / 1.0f);
   for (std::uint32_t i = 0; i < gpu::ENV_SH_COEFFICIENTS; ++i)
     EXPECT_NEAR(f.skinLights[i].x, point.color.x * point.intensity * scale * gpu::envShBasis(i, glm::vec3(0, 0, 1)), 1e-6f);
 }

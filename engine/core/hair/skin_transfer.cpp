@@ -31,8 +31,8 @@ std::uint32_t hashBits(std::uint32_t x) {
 }
 float unitFloat(std::uint32_t bits) { return float(bits >> 8) * (1.0f / 16777216.0f); }
 
-// An orthonormal frame whose third axis is n (Duff et al. 2017): continuous in n but near -z, so neighbouring
-// vertices' frames nearly agree.
+// An orthonormal frame whose third axis is n (Duff et al. 2017). It turns about n by up to half a turn where
+// n.z changes sign, so neighbours' frames are related by smoothTurned's twists, not taken as agreeing.
 glm::mat3 tangentFrame(const glm::vec3& n) {
   const float sign = std::copysign(1.0f, n.z), a = -1.0f / (sign + n.z), b = n.x * n.y * a;
   return glm::mat3(glm::vec3(1.0f + sign * n.x * n.x * a, sign * b, -sign * n.x), glm::vec3(b, sign + n.y * n.y * a, -n.y), n);
@@ -110,6 +110,61 @@ void smooth(std::vector<Value>& values, const Neighbours& nb, std::uint32_t pass
 }
 
 bool usableNormal(const glm::vec3& n) { return std::abs(glm::length(n) - 1.0f) < 1e-3f; }
+
+// Coefficients in a tangent frame turned about its normal (+z) by alpha: c'(w) = c(Rz(alpha) w). The m = +-1
+// pairs (the x-like and y-like coefficients 3 and 1, 7 and 5) turn by alpha, the m = +-2 pair (8 and 4) by 2 alpha.
+Coefficients turnedAboutNormal(const Coefficients& c, float alpha) {
+  Coefficients r = c;
+  const auto pair = [&](int cosine, int sine, float angle) {
+    const float ca = std::cos(angle), sa = std::sin(angle);
+    r[cosine] = c[cosine] * ca + c[sine] * sa;
+    r[sine] = c[sine] * ca - c[cosine] * sa;
+  };
+  pair(3, 1, alpha);
+  pair(7, 5, alpha);
+  pair(8, 4, 2.0f * alpha);
+  return r;
+}
+
+// The twist that carries neighbour u's tangent-frame coefficients into v's: the rotation taking n_v to n_u
+// along the shortest arc carries v's frame to one about n_u, which u's frame turns by alpha about n_u (so
+// that v's coefficients of u's function are turnedAboutNormal(u's, alpha)).
+float twist(const glm::vec3& nv, const glm::vec3& nu) {
+  const glm::mat3 fv = tangentFrame(nv), fu = tangentFrame(nu);
+  const glm::vec3 axis = glm::cross(nv, nu);
+  const float c = glm::dot(nv, nu);
+  if (c < -0.999f) return 0.0f;  // opposite normals: no shortest arc (a fold; such a neighbour is rare)
+  const glm::vec3 t = fv[0] * c + glm::cross(axis, fv[0]) + axis * (glm::dot(axis, fv[0]) / (1.0f + c));
+  return std::atan2(glm::dot(fu[1], t), glm::dot(fu[0], t));
+}
+
+// `passes` times, every vertex's tangent-frame coefficients become the mean of its own and its neighbours',
+// each neighbour's turned into its frame (twist); vertices without a usable normal neither change nor count.
+void smoothTurned(std::vector<Coefficients>& values, const HeadMesh& mesh, const Neighbours& nb, std::uint32_t passes) {
+  std::vector<float> twists(nb.list.size(), 0.0f);
+  parallelFor(values.size(), [&](std::size_t v) {
+    if (!usableNormal(mesh.normals[v])) return;
+    for (std::uint32_t k = nb.start[v]; k < nb.start[v + 1]; ++k)
+      if (usableNormal(mesh.normals[nb.list[k]])) twists[k] = twist(mesh.normals[v], mesh.normals[nb.list[k]]);
+  }, 1024);
+  std::vector<Coefficients> next(values.size());
+  for (std::uint32_t pass = 0; pass < passes; ++pass) {
+    parallelFor(values.size(), [&](std::size_t v) {
+      Coefficients sum = values[v];
+      std::uint32_t count = 1;
+      if (usableNormal(mesh.normals[v]))
+        for (std::uint32_t k = nb.start[v]; k < nb.start[v + 1]; ++k) {
+          if (!usableNormal(mesh.normals[nb.list[k]])) continue;
+          const Coefficients turned = turnedAboutNormal(values[nb.list[k]], twists[k]);
+          for (std::size_t i = 0; i < sum.size(); ++i) sum[i] += turned[i];
+          ++count;
+        }
+      for (float& c : sum) c /= float(count);
+      next[v] = sum;
+    }, 1024);
+    values.swap(next);
+  }
+}
 
 // Casts every vertex's rays: the occluded part of its lobe, the share of rays that met the mesh, and where
 // each ended.
@@ -190,12 +245,13 @@ SkinTransfer computeSkinTransfer(const HeadMesh& mesh, const SkinTransferOptions
   castRays(mesh, bvh, rays, offset, occluded, blocked, ends);
   const Neighbours nb = meshNeighbours(count, mesh.indices);
   // The occluded part is smoothed, not the direct transfer, so each vertex keeps its own normal's lobe; and it
-  // is smoothed in each vertex's tangent frame (n along +z), so that neighbours facing other ways mix what
-  // they hide relative to their normals (a closed shell's vertices all hide their whole lobe).
+  // is smoothed in each vertex's tangent frame (n along +z), each neighbour's carried into it along the edge,
+  // so that neighbours facing other ways mix what they hide relative to their normals (a closed shell's
+  // vertices all hide their whole lobe) and the result turns with the mesh.
   parallelFor(count, [&](std::size_t v) {
     if (usableNormal(mesh.normals[v])) occluded[v] = turned(occluded[v], tangentFrame(mesh.normals[v]));
   }, 256);
-  smooth(occluded, nb, options.smoothingPasses);
+  smoothTurned(occluded, mesh, nb, options.smoothingPasses);
   parallelFor(count, [&](std::size_t v) {
     if (usableNormal(mesh.normals[v])) occluded[v] = turned(occluded[v], glm::transpose(tangentFrame(mesh.normals[v])));
   }, 256);
