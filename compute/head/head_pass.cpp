@@ -25,7 +25,6 @@ std::vector<glm::vec4> asVec4(const std::vector<glm::vec3>& v, const std::vector
   for (std::size_t i = 0; i < v.size(); ++i) out.emplace_back(v[i], w.empty() ? 1.0f : w[i]);
   return out;
 }
-
 }  // namespace
 
 HeadPass::HeadPass(const vk::Context& ctx, const HeadMesh& mesh, std::shared_ptr<const SkinTransferBuffer> transfer,
