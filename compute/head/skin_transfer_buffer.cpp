@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cstring>
+#include <deque>
+#include <memory>
+#include <mutex>
 
 #include "engine/core/error.h"
 #include "engine/core/hair/skin_transfer.h"
@@ -12,7 +15,7 @@ namespace hp::render {
 // head.vert reads a vertex's floats as five vec4s in this order.
 static_assert(gpu::SKIN_TRANSFER_FLOATS == 20 && gpu::SKIN_TRANSFER_BOUNCE == 9 && gpu::SKIN_TRANSFER_REFLECTING == 18);
 namespace {
-std::vector<float> packed(const HeadMesh& mesh) {
+std::vector<float> computePacked(const HeadMesh& mesh) {
   const SkinTransfer t = computeSkinTransfer(mesh);
   std::vector<float> out(mesh.positions.size() * gpu::SKIN_TRANSFER_FLOATS, 0.0f);
   for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
@@ -22,6 +25,33 @@ std::vector<float> packed(const HeadMesh& mesh) {
     at[gpu::SKIN_TRANSFER_REFLECTING] = t.reflecting[v];
   }
   return out;
+}
+
+// The last few meshes' packed transfers, shared by every Renderer of the process: the transfer is a pure
+// function of the mesh, and a process that makes several Renderers (a tool comparing settings, a test, an
+// engine recreating its device) would otherwise cast the same rays again. Keyed by the fingerprint and the
+// vertex count; at most kCachedMeshes kept (2.5 MiB each for the default head).
+constexpr std::size_t kCachedMeshes = 4;
+struct CachedTransfer {
+  std::uint64_t fingerprint;
+  std::size_t vertices;
+  std::shared_ptr<const std::vector<float>> values;
+};
+std::mutex cacheMutex;
+std::deque<CachedTransfer> cache;  // most recent last
+
+std::shared_ptr<const std::vector<float>> packed(const HeadMesh& mesh) {
+  const std::uint64_t key = fingerprint(mesh);
+  {
+    std::lock_guard<std::mutex> lock(cacheMutex);
+    for (const CachedTransfer& c : cache)
+      if (c.fingerprint == key && c.vertices == mesh.positions.size()) return c.values;
+  }
+  auto values = std::make_shared<const std::vector<float>>(computePacked(mesh));  // outside the lock
+  std::lock_guard<std::mutex> lock(cacheMutex);
+  cache.push_back({key, mesh.positions.size(), values});
+  if (cache.size() > kCachedMeshes) cache.pop_front();
+  return values;
 }
 
 // FNV-1a over a span's bytes, then its length (two meshes whose arrays split the same bytes differently differ).
@@ -36,11 +66,11 @@ void hashInto(std::uint64_t& h, const std::vector<T>& values) {
 SkinTransferBuffer::SkinTransferBuffer(const vk::Context& ctx, const HeadMesh& mesh)
     : vertexCount_(static_cast<std::uint32_t>(mesh.positions.size())) {
   if (mesh.positions.empty()) throw Error("skin transfer: the head mesh is empty");
-  const std::vector<float> values = packed(mesh);
-  buffer_ = vk::Buffer(ctx, values.size() * sizeof(float),
+  const std::shared_ptr<const std::vector<float>> values = packed(mesh);
+  buffer_ = vk::Buffer(ctx, values->size() * sizeof(float),
                        VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                        vk::MemoryKind::DeviceLocal, "head skin transfer");
-  vk::upload<float>(ctx, buffer_, values, vk::BufferUse::VertexRead);
+  vk::upload<float>(ctx, buffer_, *values, vk::BufferUse::VertexRead);
 }
 
 std::uint64_t fingerprint(const HeadMesh& mesh) {

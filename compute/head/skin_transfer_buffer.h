@@ -2,7 +2,8 @@
 // Contract: a head mesh's skin transfer (engine/core/hair/skin_transfer.h) computed and uploaded once, in
 // head.vert's layout (shaders/shared/render.h RENDER_BINDING_SKIN_TRANSFER: SKIN_TRANSFER_FLOATS floats per
 // vertex). Immutable after construction, so instances drawing the same mesh share one (Renderer caches it by
-// the mesh's contents). `fingerprint` is that cache's key.
+// the mesh's contents); the computed values of the last 4 meshes are also kept for the process, so another
+// Renderer drawing the same mesh uploads them without casting the rays again. `fingerprint` is both caches' key.
 #include <cstdint>
 
 #include "engine/core/hair/hair_asset.h"
