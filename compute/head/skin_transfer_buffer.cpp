@@ -40,8 +40,7 @@ struct CachedTransfer {
 std::mutex cacheMutex;
 std::deque<CachedTransfer> cache;  // most recent last
 
-std::shared_ptr<const std::vector<float>> packed(const HeadMesh& mesh) {
-  const std::uint64_t key = fingerprint(mesh);
+std::shared_ptr<const std::vector<float>> packed(const HeadMesh& mesh, std::uint64_t key) {
   {
     std::lock_guard<std::mutex> lock(cacheMutex);
     for (const CachedTransfer& c : cache)
@@ -63,10 +62,10 @@ void hashInto(std::uint64_t& h, const std::vector<T>& values) {
 }
 }  // namespace
 
-SkinTransferBuffer::SkinTransferBuffer(const vk::Context& ctx, const HeadMesh& mesh)
+SkinTransferBuffer::SkinTransferBuffer(const vk::Context& ctx, const HeadMesh& mesh, std::uint64_t key)
     : vertexCount_(static_cast<std::uint32_t>(mesh.positions.size())) {
   if (mesh.positions.empty()) throw Error("skin transfer: the head mesh is empty");
-  const std::shared_ptr<const std::vector<float>> values = packed(mesh);
+  const std::shared_ptr<const std::vector<float>> values = packed(mesh, key);
   buffer_ = vk::Buffer(ctx, values->size() * sizeof(float),
                        VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                        vk::MemoryKind::DeviceLocal, "head skin transfer");

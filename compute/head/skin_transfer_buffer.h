@@ -12,7 +12,8 @@
 namespace hp::render {
 class SkinTransferBuffer {
  public:
-  SkinTransferBuffer(const vk::Context& ctx, const HeadMesh& mesh);  // the mesh non-empty
+  // The mesh non-empty; key: fingerprint(mesh), which the caller's own cache has already computed.
+  SkinTransferBuffer(const vk::Context& ctx, const HeadMesh& mesh, std::uint64_t key);
   const vk::Buffer& buffer() const { return buffer_; }
   std::uint32_t vertexCount() const { return vertexCount_; }
 

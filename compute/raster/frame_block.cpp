@@ -64,11 +64,16 @@ void setLights(gpu::RenderFrame& f, const FrameLights& lights, bool skinBounce) 
   f.lightCount.y = bounceLight >= 0 ? std::uint32_t(bounceLight) : gpu::RENDER_MAX_LIGHTS;
   f.headBounce = glm::vec4(on ? 1.0f : 0.0f, view.extentWorld / float(gpu::RENDER_BOUNCE_RESOLUTION), 0.0f, 0.0f);
 }
-// The environment's SH plus the uniform ambient, convolved for the shaders (shared/environment.h).
-void setEnvironment(gpu::RenderFrame& f, const LookSettings& look) {
+// The sky's radiance SH in world axes: the environment's plus the uniform ambient.
+EnvironmentSH skyRadiance(const LookSettings& look) {
   EnvironmentSH radiance = uniformEnvironmentSH(glm::dvec3(look.ambient));
   for (std::size_t i = 0; i < radiance.size(); ++i) radiance[i] += glm::dvec3(look.environment[i]);
-  const EnvironmentSH convolved = cosineConvolved(radiance);
+  return radiance;
+}
+
+// The sky convolved for the shaders (shared/environment.h).
+void setEnvironment(gpu::RenderFrame& f, const LookSettings& look) {
+  const EnvironmentSH convolved = cosineConvolved(skyRadiance(look));
   for (std::size_t i = 0; i < convolved.size(); ++i) f.environment[i] = glm::vec4(glm::vec3(convolved[i]), 0.0f);
 }
 }  // namespace
@@ -134,9 +139,7 @@ void setSkinLight(gpu::RenderFrame& f, const glm::mat4& headToWorld, const glm::
   }
   const glm::dmat3 m(headToWorld);
   const glm::dmat3 rotation(glm::normalize(m[0]), glm::normalize(m[1]), glm::normalize(m[2]));
-  EnvironmentSH sky = uniformEnvironmentSH(glm::dvec3(look.ambient));
-  for (std::size_t i = 0; i < sky.size(); ++i) sky[i] += glm::dvec3(look.environment[i]);
-  store(f.skinSky, rotateEnvironment(sky, rotation));
+  store(f.skinSky, rotateEnvironment(skyRadiance(look), rotation));
   f.skinSky[0].w = 1.0f;
   EnvironmentSH light{};
   for (const LightSpec& spec : lights.lights) {

@@ -172,7 +172,7 @@ std::shared_ptr<const render::SkinTransferBuffer> Renderer::skinTransfer(const H
     auto buffer = t.buffer.lock();
     if (buffer && t.fingerprint == key && buffer->vertexCount() == mesh.positions.size()) return buffer;
   }
-  auto buffer = std::make_shared<const render::SkinTransferBuffer>(ctx_, mesh);
+  auto buffer = std::make_shared<const render::SkinTransferBuffer>(ctx_, mesh, key);
   transfers_.push_back({key, buffer});
   return buffer;
 }

@@ -7,14 +7,16 @@
 
 #include "engine/core/error.h"
 #include "engine/core/hair/parallel_for.h"
+#include "engine/core/hair/rng.h"
 #include "engine/core/hair/triangle_bvh.h"
 #include "engine/core/shading/environment_sh.h"
+#include "engine/core/shading/math_constants.h"
 #include "shaders/shared/environment.h"
 
 namespace hp {
 namespace {
 using Coefficients = std::array<float, 9>;
-constexpr float kPi = 3.14159265358979f;
+constexpr float kPi = float(shading::kPi);
 
 // A ray's fate: the triangle and barycentrics it met on a front face, else `escaped` or a back face.
 struct RayEnd {
@@ -23,12 +25,7 @@ struct RayEnd {
   float u = 0.0f, v = 0.0f;
 };
 
-// A well-mixed 32-bit hash (PCG's output step): a vertex's and a ray's jitter in the stratified grid.
-std::uint32_t hashBits(std::uint32_t x) {
-  x = x * 747796405u + 2891336453u;
-  x = ((x >> ((x >> 28u) + 4u)) ^ x) * 277803737u;
-  return (x >> 22u) ^ x;
-}
+// The top 24 bits of a hash (rng.h's pcgHash: a vertex's and a ray's jitter in the stratified grid) in [0, 1).
 float unitFloat(std::uint32_t bits) { return float(bits >> 8) * (1.0f / 16777216.0f); }
 
 // An orthonormal frame whose third axis is n (Duff et al. 2017). It turns about n by up to half a turn where
@@ -53,10 +50,10 @@ Coefficients turned(const Coefficients& c, const glm::mat3& frame) {
 // rays left over are jittered over the whole square, so every direction keeps its share.
 glm::vec3 rayDirection(const glm::vec3& n, std::uint32_t vertex, std::uint32_t r, std::uint32_t count) {
   const std::uint32_t sx = std::max(1u, std::uint32_t(std::sqrt(float(count)))), sy = count / sx;
-  const std::uint32_t h = hashBits(vertex * 1024u + r);
+  const std::uint32_t h = pcgHash(vertex * 1024u + r);
   const bool stratified = r < sx * sy;
   const float u1 = stratified ? (float(r % sx) + unitFloat(h)) / float(sx) : unitFloat(h);
-  const float u2 = stratified ? (float(r / sx) + unitFloat(hashBits(h))) / float(sy) : unitFloat(hashBits(h));
+  const float u2 = stratified ? (float(r / sx) + unitFloat(pcgHash(h))) / float(sy) : unitFloat(pcgHash(h));
   const float radius = std::sqrt(u1), phi = 2.0f * kPi * u2;
   const glm::mat3 frame = tangentFrame(n);
   return glm::normalize(frame * glm::vec3(radius * std::cos(phi), radius * std::sin(phi), std::sqrt(std::max(0.0f, 1.0f - u1))));
