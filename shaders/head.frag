@@ -1,6 +1,6 @@
 #version 460
 // The head: per light of the frame, diffuse with the paper's wrap term (wrap + N.L) / (1 + wrap) (L, cone
-// and distance scale from light.glsl), plus its indirect light (head.vert: the sky past its own shape and
+// and distance scale from shared/light.h), plus its indirect light (head.vert: the sky past its own shape and
 // its skin's bounce), or without that the environment's open irradiance / pi (environment.glsl);
 // hair-coloured where hair grows. Each light's direct term is shadowed by the hair (its slot's opacity maps,
 // T = hairTransmittance(k alpha): exp(-k alpha) and, with dual scattering, the light the hair passes on

@@ -2,15 +2,15 @@
 
 #include <algorithm>
 #include <cmath>
-#include <utility>
 
 #include "engine/core/error.h"
 #include "engine/core/shading/environment_sh.h"
+#include "shaders/shared/light.h"
 #include "shaders/shared/marschner.h"
 
 namespace hp::render {
 namespace {
-constexpr float kSpotInnerFraction = 0.8f;  // full radiance inside 80% of the half-angle (shaders/light.glsl)
+constexpr float kSpotInnerFraction = 0.8f;  // full radiance inside 80% of the half-angle (shaders/shared/light.h)
 constexpr float kMaxEnvironmentCoefficient = 1e4f;  // a sky of radiance ~2800: far beyond any real light
 }  // namespace
 
@@ -106,26 +106,6 @@ gpu::RenderFrame makeRenderFrame(const CameraMatrices& camera, VkExtent2D extent
 }
 
 namespace {
-// The light's direction from p (unit, toward it) and the share of its radiance that reaches p: shaders/light.glsl's
-// sampleLight on the host.
-std::pair<glm::vec3, float> lightAt(const LightSpec& light, const glm::vec3& p) {
-  const glm::vec3 direction = glm::normalize(light.direction);
-  if (light.type == LightSpec::Type::Directional) return {direction, 1.0f};
-  const glm::vec3 toLight = light.position - p;
-  const float distance = glm::length(toLight);
-  const glm::vec3 l = toLight / std::max(distance, 1e-6f);
-  float scale = 1.0f;
-  if (light.type == LightSpec::Type::Spot) {
-    const float cone = glm::radians(light.coneDeg);
-    scale = glm::smoothstep(std::cos(cone), std::cos(kSpotInnerFraction * cone), glm::dot(l, direction));
-  }
-  if (light.range > 0.0f) {
-    const float r = light.range / std::max(distance, 0.1f * light.range);
-    scale *= r * r;
-  }
-  return {l, scale};
-}
-
 void store(glm::vec4 (&into)[gpu::ENV_SH_COEFFICIENTS], const EnvironmentSH& sh) {
   for (std::size_t i = 0; i < sh.size(); ++i) into[i] = glm::vec4(glm::vec3(sh[i]), 0.0f);
 }
@@ -143,9 +123,10 @@ void setSkinLight(gpu::RenderFrame& f, const glm::mat4& headToWorld, const glm::
   f.skinSky[0].w = 1.0f;
   EnvironmentSH light{};
   for (const LightSpec& spec : lights.lights) {
-    const auto [l, scale] = lightAt(spec, headCentre);
-    if (scale > 0.0f)
-      addToEnvironment(light, glm::transpose(rotation) * glm::dvec3(l), glm::dvec3(spec.color * (spec.intensity * scale)));
+    const gpu::LightSample arriving = gpu::sampleLight(frameLight(spec, -1), headCentre);
+    if (arriving.scale > 0.0f)
+      addToEnvironment(light, glm::transpose(rotation) * glm::dvec3(arriving.L),
+                       glm::dvec3(spec.color * (spec.intensity * arriving.scale)));
   }
   store(f.skinLights, light);
 }

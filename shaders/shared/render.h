@@ -83,7 +83,7 @@ HP_CONST(float, RENDER_LIGHT_POINT, 2.0f)
 HP_CONST(uint, STRAND_VERTICES_PER_QUAD, 6)
 HP_CONST(uint, STRAND_VERTICES_PER_LINE, 2)
 
-// One light of a frame (hp::LightSpec: compute/raster/frame_block.h fills it; shaders/light.glsl reads it).
+// One light of a frame (hp::LightSpec: compute/raster/frame_block.h fills it; shared/light.h reads it).
 struct FrameLight {
   vec4 direction;  // xyz unit, from the hair toward the light (spot: minus its axis; point: unused);
                    // w = the light's shadow slot (shared/opacity.h), -1: it casts no hair shadow
