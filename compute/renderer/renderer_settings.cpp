@@ -5,6 +5,7 @@
 #include <string>
 
 #include "engine/core/error.h"
+#include "engine/core/number_text.h"
 #include "engine/core/hair/finite.h"
 
 namespace hp {
@@ -79,8 +80,8 @@ void View::validate(std::uint32_t maxViews) const {
       !std::isfinite(glm::length(camera.position)))
     throw Error("the view's matrices, eye and fovY must be finite");
   if (!(std::abs(jitter.x) <= 1.0f && std::abs(jitter.y) <= 1.0f))
-    throw Error("View.jitter must be finite, within [-1, 1] pixels, got (" + std::to_string(jitter.x) + ", " +
-                std::to_string(jitter.y) + ")");
+    throw Error("View.jitter must be finite, within [-1, 1] pixels, got (" + numberText(jitter.x) + ", " +
+                numberText(jitter.y) + ")");
   if (previousViewProj && !allFinite(*previousViewProj)) throw Error("View.previousViewProj must be finite");
   if (index >= maxViews)
     throw Error("View.index " + std::to_string(index) + " is past RendererSettings.maxViewsPerFrame (" +

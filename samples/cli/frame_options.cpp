@@ -4,6 +4,7 @@
 #include <iostream>
 
 #include "engine/core/error.h"
+#include "engine/core/number_text.h"
 #include "samples/tools/character_clip.h"
 #include "engine/core/hair/input_file.h"
 #include "samples/tools/host/camera_fit.h"
@@ -248,8 +249,8 @@ nlohmann::json frameCamera(Scene& scene, const hp::HairAsset& asset) {
     const auto& c = scene.camera;
     throw hp::Error("no hair is visible: all " + std::to_string(asset.guides.positions.size()) +
                     " guide particles of " + asset.name + " are outside the camera's view (target " +
-                    std::to_string(c.target.x) + ", " + std::to_string(c.target.y) + ", " + std::to_string(c.target.z) +
-                    ", distance " + std::to_string(c.distance) + ", orbit " + std::to_string(c.orbitDeg) +
+                    hp::numberText(c.target.x) + ", " + hp::numberText(c.target.y) + ", " + hp::numberText(c.target.z) +
+                    ", distance " + hp::numberText(c.distance) + ", orbit " + hp::numberText(c.orbitDeg) +
                     "); check the model's units/up axis or the camera");
   }
   return guessed;

@@ -5,6 +5,7 @@
 
 #include "engine/core/shading/luminance.h"
 #include "engine/core/error.h"
+#include "engine/core/number_text.h"
 #include "shaders/shared/tonemap.h"
 
 namespace hp {
@@ -67,7 +68,7 @@ double finiteMetric(double value, const char* name) {
 ImageComparison compareImages(const LinearImage& image, const LinearImage& reference, const LinearImage& mask,
                               float exposure) {
   if (!(std::isfinite(exposure) && exposure > 0.0f))
-    throw Error("compare: exposure must be finite and > 0, got " + std::to_string(exposure));
+    throw Error("compare: exposure must be finite and > 0, got " + numberText(exposure));
   if (image.channels != 3 || reference.channels != 3) throw Error("compare: both images must be RGB");
   if (image.width != reference.width || image.height != reference.height)
     throw Error("compare: the images differ in size (" + std::to_string(image.width) + "x" + std::to_string(image.height) +

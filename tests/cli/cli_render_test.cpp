@@ -91,7 +91,7 @@ TEST(CliRender, BadOptionsExitWithAMessageAndWriteNothing) {
       {{"--frizz", "-1"}, "GroomSettings.frizzAmplitude"},
       {{"--frizz", "0.002,40,3,0"}, "GroomSettings.frizzHairlineWidth"},
       {{"--bounce-samples", "1"}, "--bounce-samples must be in [2, 256]"},
-      {{"--volume", "11"}, "simulation parameter volume must be in [0.000000, 10.000000], got 11"},
+      {{"--volume", "11"}, "simulation parameter volume must be in [0, 10], got 11"},
       {{"--grid-resolution", "3"}, "gridResolution must be in [4, 128], got 3"},
       {{"--shading-spacing", "-1"}, "shadingSpacing must be in [0, 4096] pixels, got -1"},
   };

@@ -4,13 +4,14 @@
 #include <string>
 
 #include "engine/core/error.h"
+#include "engine/core/number_text.h"
 
 namespace hp {
 namespace {
 void checkRange(const char* field, float value, float lo, float hi) {
   if (!(value >= lo && value <= hi))
-    throw Error(std::string("GroomSettings.") + field + " must be in [" + std::to_string(lo) + ", " + std::to_string(hi) +
-                "], got " + std::to_string(value));
+    throw Error(std::string("GroomSettings.") + field + " must be in [" + numberText(lo) + ", " + numberText(hi) +
+                "], got " + numberText(value));
 }
 }  // namespace
 
@@ -24,10 +25,10 @@ void GroomSettings::validate() const {
   checkRange("curlVariation", curlVariation, 0.0f, 1.0f);
   checkRange("frizzAmplitude", frizzAmplitude, 0.0f, 1.0f);
   if (!(frizzFrequency > 0.0f && frizzFrequency <= 10000.0f))
-    throw Error("GroomSettings.frizzFrequency must be in (0, 10000], got " + std::to_string(frizzFrequency));
+    throw Error("GroomSettings.frizzFrequency must be in (0, 10000], got " + numberText(frizzFrequency));
   checkRange("frizzHairline", frizzHairline, 0.0f, 100.0f);
   if (!(frizzHairlineWidth > 0.0f && frizzHairlineWidth <= 10.0f))
-    throw Error("GroomSettings.frizzHairlineWidth must be in (0, 10], got " + std::to_string(frizzHairlineWidth));
+    throw Error("GroomSettings.frizzHairlineWidth must be in (0, 10], got " + numberText(frizzHairlineWidth));
 }
 
 gpu::GroomParams groomParams(const GroomSettings& g) {

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "engine/core/error.h"
+#include "engine/core/number_text.h"
 #include "engine/core/hair/model_transform.h"
 #include "engine/core/hair/rng.h"
 #include "engine/core/hair/segment_profile.h"
@@ -96,12 +97,12 @@ void GrowthOptions::validate() const {
   checkParticlesPerGuide(particlesPerGuide, "growth options");
   // Shorter than 0.1 mm (in metres) the segments' lengths vanish in the constraints' single precision.
   require(std::isfinite(length) && length >= 1e-4f && length <= kMaxHeadSpaceCoordinate,
-          "length must be in [0.0001, " + std::to_string(int(kMaxHeadSpaceCoordinate)) + "], got " + std::to_string(length));
+          "length must be in [0.0001, " + std::to_string(int(kMaxHeadSpaceCoordinate)) + "], got " + numberText(length));
   require(lengthVariation >= 0.0f && lengthVariation < 1.0f,
-          "lengthVariation must be in [0, 1), got " + std::to_string(lengthVariation));
+          "lengthVariation must be in [0, 1), got " + numberText(lengthVariation));
   require(segmentRatio >= 1.0f && segmentRatio <= 4.0f,
-          "segmentRatio must be in [1, 4], got " + std::to_string(segmentRatio));
-  require(bend >= 0.0f && bend <= 1.0f, "bend must be in [0, 1], got " + std::to_string(bend));
+          "segmentRatio must be in [1, 4], got " + numberText(segmentRatio));
+  require(bend >= 0.0f && bend <= 1.0f, "bend must be in [0, 1], got " + numberText(bend));
   float dirLen = glm::length(bendDirection);
   require(std::isfinite(dirLen) && dirLen > 1e-6f, "bendDirection must be a non-zero vector");
 }

@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "engine/core/error.h"
+#include "engine/core/number_text.h"
 
 namespace hp {
 namespace {
@@ -29,7 +30,7 @@ glm::mat4 ModelTransform::matrix() const {
 
 void ModelTransform::validate() const {
   if (!std::isfinite(scale) || scale <= 0.0f)
-    throw Error("model transform: scale must be positive, got " + std::to_string(scale));
+    throw Error("model transform: scale must be positive, got " + numberText(scale));
   if (!std::isfinite(translation.x + translation.y + translation.z))
     throw Error("model transform: translation is not finite");
 }

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "engine/core/error.h"
+#include "engine/core/number_text.h"
 #include "engine/core/hair/input_file.h"
 
 namespace hp {
@@ -170,12 +171,6 @@ int find(const Element& e, std::string_view name, bool list) {
   for (std::size_t i = 0; i < e.properties.size(); ++i)
     if (e.properties[i].name == name && e.properties[i].list == list) return int(i);
   return -1;
-}
-
-// A number read from the file, for a message: an integer as such, anything else (huge, fractional) as a double.
-std::string numberText(double v) {
-  if (std::abs(v) < 9e15 && v == std::floor(v)) return std::to_string(std::int64_t(v));
-  return std::to_string(v);
 }
 
 struct Layout {

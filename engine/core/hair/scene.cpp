@@ -7,6 +7,7 @@
 #include <string>
 
 #include "engine/core/error.h"
+#include "engine/core/number_text.h"
 #include "shaders/shared/render.h"
 
 namespace hp {
@@ -51,7 +52,7 @@ void LightSpec::validate() const {
     return;
   }
   if (!finiteVec(position)) throw Error("spot position must be finite");
-  if (!(coneDeg > 0.0f && coneDeg <= 80.0f)) throw Error("spot coneDeg must be in (0, 80], got " + std::to_string(coneDeg));
+  if (!(coneDeg > 0.0f && coneDeg <= 80.0f)) throw Error("spot coneDeg must be in (0, 80], got " + numberText(coneDeg));
   if (!(std::isfinite(range) && range >= 0.0f)) throw Error("spot range must be >= 0 (0: no distance falloff)");
 }
 static_assert(kMaxSceneLights == gpu::RENDER_MAX_LIGHTS, "a scene holds what one frame takes");

@@ -4,14 +4,15 @@
 #include <string>
 
 #include "engine/core/error.h"
+#include "engine/core/number_text.h"
 
 namespace hp {
 std::vector<float> geometricSegmentLengths(float total, float ratio, std::uint32_t segments) {
   if (segments == 0) throw Error("segment profile: need at least one segment");
   if (!std::isfinite(total) || total <= 0.0f)
-    throw Error("segment profile: total length must be positive, got " + std::to_string(total));
+    throw Error("segment profile: total length must be positive, got " + numberText(total));
   if (!std::isfinite(ratio) || ratio < 1.0f || ratio > 4.0f)
-    throw Error("segment profile: segment ratio must be in [1, 4], got " + std::to_string(ratio));
+    throw Error("segment profile: segment ratio must be in [1, 4], got " + numberText(ratio));
   // Geometric series in double so the lengths sum to total to float precision.
   double sum = 0.0, w = 1.0;
   for (std::uint32_t k = 0; k < segments; ++k, w *= ratio) sum += w;

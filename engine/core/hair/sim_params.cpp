@@ -4,24 +4,18 @@
 #include <string>
 
 #include "engine/core/error.h"
+#include "engine/core/number_text.h"
 #include "shaders/shared/hair_grid.h"
 
 namespace hp {
 namespace {
-std::string show(double v) {
-  if (std::isnan(v)) return "NaN";
-  if (std::isinf(v)) return v > 0 ? "Inf" : "-Inf";
-  std::string s = std::to_string(v);
-  return s;
-}
-
 void check(bool ok, const char* field, const std::string& rule, double value) {
-  if (!ok) throw Error(std::string("simulation parameter ") + field + " " + rule + ", got " + show(value));
+  if (!ok) throw Error(std::string("simulation parameter ") + field + " " + rule + ", got " + numberText(value));
 }
 
 void checkRange(double v, double lo, double hi, const char* field) {
   check(std::isfinite(v) && v >= lo && v <= hi, field,
-        "must be in [" + show(lo) + ", " + show(hi) + "]", v);
+        "must be in [" + numberText(lo) + ", " + numberText(hi) + "]", v);
 }
 
 void checkVector(const glm::dvec3& v, const char* field) {
@@ -42,7 +36,7 @@ void SimulationParams::validate() const {
   check(substeps >= 1 && substeps <= 64, "substeps", "must be in [1, 64]", substeps);
   check(iterations >= 1 && iterations <= 1000, "iterations", "must be in [1, 1000]", iterations);
   checkVector(gravity, "gravity");
-  check(glm::length(gravity) <= kMaxAcceleration, "gravity", "must be at most " + show(kMaxAcceleration) + " long",
+  check(glm::length(gravity) <= kMaxAcceleration, "gravity", "must be at most " + numberText(kMaxAcceleration) + " long",
         glm::length(gravity));
   checkRange(damping, 0.0, 1.0, "damping");
   checkRange(pearlRadius, 0.0, kMaxPearlRadius, "pearlRadius");
@@ -50,7 +44,7 @@ void SimulationParams::validate() const {
   checkRange(stiffnessFalloff, 0.0, 1.0, "stiffnessFalloff");
   checkRange(localStiffness, 0.0, 0.9, "localStiffness");
   check(std::isfinite(maxSpeed) && maxSpeed > 0.0 && maxSpeed <= kMaxSpeed, "maxSpeed",
-        "must be in (0, " + show(kMaxSpeed) + "]", maxSpeed);
+        "must be in (0, " + numberText(kMaxSpeed) + "]", maxSpeed);
   checkRange(volume, 0.0, 10.0, "volume");
   checkRange(volumeTarget, 0.01, 100.0, "volumeTarget");
   checkRange(friction, 0.0, 1.0, "friction");

@@ -2,6 +2,7 @@
 #include <cmath>
 
 #include "engine/core/error.h"
+#include "engine/core/number_text.h"
 #include "engine/core/hair/default_head.h"
 #include "engine/core/hair/input_file.h"
 #include "engine/core/hair/mesh_file.h"
@@ -200,7 +201,7 @@ LightSpec readLightObject(JsonObject& o, const std::string& pointer) {
   l.direction /= len;
   requireThat(glm::all(glm::greaterThanEqual(l.color, glm::vec3(0.0f))), o, "color", "components must be >= 0");
   requireThat(std::isfinite(l.intensity) && l.intensity >= 0.0f, o, "intensity", "must be >= 0");
-  requireThat(l.coneDeg > 0.0f && l.coneDeg <= 80.0f, o, "coneDeg", "must be in (0, 80], got " + std::to_string(l.coneDeg));
+  requireThat(l.coneDeg > 0.0f && l.coneDeg <= 80.0f, o, "coneDeg", "must be in (0, 80], got " + hp::numberText(l.coneDeg));
   requireThat(std::isfinite(l.range) && l.range >= 0.0f, o, "range", "must be >= 0 (0: no distance falloff)");
   validateSection(l, o, pointer);
   return l;
