@@ -2,11 +2,10 @@
 
 #include <algorithm>
 #include <cstring>
-#include <deque>
 #include <memory>
-#include <mutex>
 
 #include "engine/core/error.h"
+#include "engine/core/recent_cache.h"
 #include "engine/core/hair/skin_transfer.h"
 #include "engine/vk/transfer.h"
 #include "shaders/shared/render.h"
@@ -30,27 +29,11 @@ std::vector<float> computePacked(const HeadMesh& mesh) {
 // The last few meshes' packed transfers, shared by every Renderer of the process: the transfer is a pure
 // function of the mesh, and a process that makes several Renderers (a tool comparing settings, a test, an
 // engine recreating its device) would otherwise cast the same rays again. Keyed by the fingerprint and the
-// vertex count; at most kCachedMeshes kept (2.5 MiB each for the default head).
-constexpr std::size_t kCachedMeshes = 4;
-struct CachedTransfer {
-  std::uint64_t fingerprint;
-  std::size_t vertices;
-  std::shared_ptr<const std::vector<float>> values;
-};
-std::mutex cacheMutex;
-std::deque<CachedTransfer> cache;  // most recent last
+// vertex count; 2.5 MiB each for the default head.
+RecentCache<std::pair<std::uint64_t, std::size_t>, std::vector<float>, 4> transfers;
 
 std::shared_ptr<const std::vector<float>> packed(const HeadMesh& mesh, std::uint64_t key) {
-  {
-    std::lock_guard<std::mutex> lock(cacheMutex);
-    for (const CachedTransfer& c : cache)
-      if (c.fingerprint == key && c.vertices == mesh.positions.size()) return c.values;
-  }
-  auto values = std::make_shared<const std::vector<float>>(computePacked(mesh));  // outside the lock
-  std::lock_guard<std::mutex> lock(cacheMutex);
-  cache.push_back({key, mesh.positions.size(), values});
-  if (cache.size() > kCachedMeshes) cache.pop_front();
-  return values;
+  return transfers.get({key, mesh.positions.size()}, [&] { return computePacked(mesh); });
 }
 
 // FNV-1a over a span's bytes, then its length (two meshes whose arrays split the same bytes differently differ).

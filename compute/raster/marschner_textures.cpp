@@ -7,6 +7,7 @@
 
 #include "engine/core/error.h"
 #include "engine/core/shading/half_float.h"
+#include "engine/core/shading/lut_cache.h"
 #include "engine/core/shading/marschner_gpu.h"
 #include "engine/vk/barriers.h"
 #include "engine/vk/context.h"
@@ -95,7 +96,7 @@ MarschnerTextures::MarschnerTextures(const vk::Context& ctx, const MarschnerLut&
 
 bool MarschnerTextures::rebuild(const HairMaterial& material, LutMode mode) {
   if (mode == lut_.mode && material == lut_.material) return false;
-  upload(buildLut(mode, material, options_));
+  upload(*sharedLut(mode, material, options_));
   return true;
 }
 

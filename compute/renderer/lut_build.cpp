@@ -6,6 +6,7 @@
 #include <exception>
 
 #include "engine/core/error.h"
+#include "engine/core/shading/lut_cache.h"
 
 namespace hp {
 namespace {
@@ -36,7 +37,7 @@ std::shared_ptr<LutBuild> LutBuild::start(const HairMaterial& material, LutMode 
 
 void LutBuild::run() noexcept {
   try {
-    lut_ = buildLut(mode_, material_);
+    lut_ = *sharedLut(mode_, material_);
     params_ = marschnerGpuParams(lut_);
   } catch (const std::exception& e) {
     error_ = e.what();

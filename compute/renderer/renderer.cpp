@@ -6,6 +6,7 @@
 #include "engine/vk/submit.h"
 
 #include "engine/core/error.h"
+#include "engine/core/shading/lut_cache.h"
 #include "compute/renderer/frame_recorder.h"
 #include "engine/vk/context.h"
 
@@ -153,7 +154,7 @@ std::shared_ptr<render::MarschnerTextures> Renderer::cachedMarschner(const HairM
 
 std::shared_ptr<render::MarschnerTextures> Renderer::marschner(const HairMaterial& material, LutMode mode) {
   if (auto cached = cachedMarschner(material, mode)) return cached;
-  return marschnerFrom(buildLut(mode, material));
+  return marschnerFrom(*sharedLut(mode, material));
 }
 
 std::shared_ptr<render::MarschnerTextures> Renderer::marschnerFrom(const MarschnerLut& lut,

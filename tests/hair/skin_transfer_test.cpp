@@ -8,6 +8,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "engine/core/error.h"
 #include "engine/core/hair/default_head.h"
 #include "engine/core/hair/head_mesh.h"
 #include "engine/core/hair/skin_transfer.h"

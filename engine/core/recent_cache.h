@@ -1,0 +1,34 @@
+#pragma once
+// Contract: a process's last few results of a pure, costly function, shared read-only: get(key, make) returns
+// the value kept for an equal key, or calls make() (outside the lock, so a slow build blocks no other key's
+// lookups; two threads asking for the same new key at once may both make it, and both values are equal) and
+// keeps it, dropping the least recently made past `Capacity`. Thread-safe. make() may throw; nothing is kept then.
+#include <cstddef>
+#include <deque>
+#include <memory>
+#include <mutex>
+#include <utility>
+
+namespace hp {
+template <typename Key, typename Value, std::size_t Capacity>
+class RecentCache {
+ public:
+  template <typename Make>
+  std::shared_ptr<const Value> get(const Key& key, Make&& make) {
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      for (const auto& [k, v] : entries_)
+        if (k == key) return v;
+    }
+    auto value = std::make_shared<const Value>(make());
+    std::lock_guard<std::mutex> lock(mutex_);
+    entries_.emplace_back(key, value);
+    if (entries_.size() > Capacity) entries_.pop_front();
+    return value;
+  }
+
+ private:
+  std::mutex mutex_;
+  std::deque<std::pair<Key, std::shared_ptr<const Value>>> entries_;  // most recently made last
+};
+}  // namespace hp
