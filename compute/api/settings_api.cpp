@@ -11,6 +11,7 @@
 #include "engine/core/hair/tfx_bone_file.h"
 #include "engine/core/shading/environment_lights.h"
 #include "engine/core/shading/material_color.h"
+#include "engine/core/number_text.h"
 
 namespace hairpipe {
 Result<std::array<double, 3>> absorptionFromColor(float r, float g, float b) noexcept {
@@ -75,9 +76,9 @@ Result<View> makeView(const Camera& c, VkExtent2D extent, std::uint32_t index) n
     const float side = glm::length(glm::cross(forward, up));
     if (!std::isfinite(side) || glm::length(forward) <= 0.0f || side <= 1e-6f * glm::length(forward) * glm::length(up))
       throw hp::Error("the eye is at the target, or up is parallel to the view direction (or not finite)");
-    if (!(c.fovY > 0.0f && c.fovY < 3.14159f)) throw hp::Error("fovY must be in (0, pi) radians, got " + std::to_string(c.fovY));
+    if (!(c.fovY > 0.0f && c.fovY < 3.14159f)) throw hp::Error("fovY must be in (0, pi) radians, got " + hp::numberText(c.fovY));
     if (!(c.nearZ > 0.0f && c.farZ > c.nearZ && std::isfinite(c.farZ)))
-      throw hp::Error("the clip planes need 0 < nearZ < farZ, got " + std::to_string(c.nearZ) + ", " + std::to_string(c.farZ));
+      throw hp::Error("the clip planes need 0 < nearZ < farZ, got " + hp::numberText(c.nearZ) + ", " + hp::numberText(c.farZ));
     if (extent.width == 0 || extent.height == 0) throw hp::Error("the extent must not be empty");
     View v;
     v.view = convert::mat(glm::lookAtRH(eye, target, up));

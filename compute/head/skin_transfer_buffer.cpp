@@ -29,10 +29,11 @@ std::vector<float> computePacked(const HeadMesh& mesh) {
 // The last few meshes' packed transfers, shared by every Renderer of the process: the transfer is a pure
 // function of the mesh, and a process that makes several Renderers (a tool comparing settings, a test, an
 // engine recreating its device) would otherwise cast the same rays again. Keyed by the fingerprint and the
-// vertex count; 2.5 MiB each for the default head.
-RecentCache<std::pair<std::uint64_t, std::size_t>, std::vector<float>, 4> transfers;
+// vertex count; 2.5 MiB each for the default head. Never destroyed, like the tables' cache.
+using TransferCache = RecentCache<std::pair<std::uint64_t, std::size_t>, std::vector<float>, 4>;
 
 std::shared_ptr<const std::vector<float>> packed(const HeadMesh& mesh, std::uint64_t key) {
+  static auto& transfers = *new TransferCache;
   return transfers.get({key, mesh.positions.size()}, [&] { return computePacked(mesh); });
 }
 

@@ -142,7 +142,7 @@ hp::RenderRequest makeRenderRequest(const FrameOptions& o, const CLI::App& cmd) 
   }
   if (o.ownStrands) r.scene.density.mode = hp::DensityOptions::Mode::Guides;
   if (o.orbit) {
-    if (!std::isfinite(*o.orbit)) throw hp::Error("--camera-orbit must be a finite angle in degrees, got " + std::to_string(*o.orbit));
+    if (!std::isfinite(*o.orbit)) throw hp::Error("--camera-orbit must be a finite angle in degrees, got " + hp::numberText(*o.orbit));
     r.scene.camera.orbitDeg = *o.orbit;
   }
   applyLights(o, r.scene);

@@ -1,9 +1,9 @@
 #pragma once
 // Contract: a material's Marschner tables (buildLut), built once per process for the last few (mode, material,
-// options) asked for and shared read-only after. buildLut is a pure function of the three and costs ~0.5 s
+// options) built and shared read-only after. buildLut is a pure function of the three and costs ~0.5 s
 // of CPU for the physical model; a process that makes several Renderers, changes a material back and forth
 // or recreates its device would otherwise build the same tables again. Thread-safe: a build runs outside the
-// lock (two threads asking for the same new tables at once may both build them; both get equal tables).
+// lock (two threads asking for the same new tables at once may both build them; both get the first kept).
 // Errors are buildLut's (an invalid material throws and nothing is kept).
 #include <memory>
 
