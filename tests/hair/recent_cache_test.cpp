@@ -2,6 +2,7 @@
 // recently made dropped past the capacity, nothing kept when making throws.
 #include <gtest/gtest.h>
 
+#include <memory>
 #include <stdexcept>
 
 #include "engine/core/recent_cache.h"
@@ -22,6 +23,21 @@ TEST(RecentCache, MakesOncePerKeyAndDropsTheOldestPastItsCapacity) {
   EXPECT_EQ(*square(3), 9);
   EXPECT_EQ(made, 4);
   EXPECT_EQ(*nine, 9);  // a value handed out outlives its entry
+}
+
+// A value made while another make() of the same key ran (here nested in it; across threads, the same race)
+// is the one kept, and the later finisher returns it rather than keeping a second entry.
+TEST(RecentCache, TheFirstValueKeptForAKeyWinsOverALaterFinisher) {
+  hp::RecentCache<int, int, 2> cache;
+  std::shared_ptr<const int> inner;
+  const auto outer = cache.get(1, [&] {
+    inner = cache.get(1, [] { return 2; });
+    return 3;
+  });
+  EXPECT_EQ(outer, inner);
+  EXPECT_EQ(*outer, 2);
+  cache.get(2, [] { return 4; });  // with a duplicate entry for 1 this would drop the first of them only
+  EXPECT_EQ(*cache.get(1, [] { return 5; }), 2) << "the key's entry was pushed out by its own duplicate";
 }
 
 TEST(RecentCache, AMakeThatThrowsKeepsNothing) {

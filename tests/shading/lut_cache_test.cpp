@@ -1,5 +1,5 @@
 // The process's shared Marschner tables (engine/core/shading/lut_cache.h): built once for the same mode,
-// material and options, equal to a fresh build, apart for anything else; a bad material keeps nothing.
+// material and options, equal to a fresh build, apart for anything else; a bad material refused each time.
 #include <gtest/gtest.h>
 
 #include "engine/core/error.h"
@@ -25,7 +25,7 @@ TEST(LutCache, TheSameTablesAreBuiltOnceAndEqualAFreshBuild) {
   EXPECT_NE(sharedLut(LutMode::Float, material, options), first);
 }
 
-TEST(LutCache, ABadMaterialThrowsAndKeepsNothing) {
+TEST(LutCache, ABadMaterialIsRefusedEveryTimeItIsAskedFor) {
   HairMaterial bad;
   bad.betaR = -1.0;
   EXPECT_THROW(sharedLut(LutMode::Physical, bad), Error);
