@@ -1,31 +1,14 @@
 #include "compute/head/skin_transfer_buffer.h"
 
-#include <algorithm>
-#include <cstring>
 #include <memory>
 
 #include "engine/core/error.h"
+#include "engine/core/hair/skin_transfer_cache.h"
 #include "engine/core/recent_cache.h"
-#include "engine/core/hair/skin_transfer.h"
 #include "engine/vk/transfer.h"
-#include "shaders/shared/render.h"
 
 namespace hp::render {
-// head.vert reads a vertex's floats as five vec4s in this order.
-static_assert(gpu::SKIN_TRANSFER_FLOATS == 20 && gpu::SKIN_TRANSFER_BOUNCE == 9 && gpu::SKIN_TRANSFER_REFLECTING == 18);
 namespace {
-std::vector<float> computePacked(const HeadMesh& mesh) {
-  const SkinTransfer t = computeSkinTransfer(mesh);
-  std::vector<float> out(mesh.positions.size() * gpu::SKIN_TRANSFER_FLOATS, 0.0f);
-  for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
-    float* at = &out[v * gpu::SKIN_TRANSFER_FLOATS];
-    std::copy(t.occluded[v].begin(), t.occluded[v].end(), at);
-    std::copy(t.bounce[v].begin(), t.bounce[v].end(), at + gpu::SKIN_TRANSFER_BOUNCE);
-    at[gpu::SKIN_TRANSFER_REFLECTING] = t.reflecting[v];
-  }
-  return out;
-}
-
 // The last few meshes' packed transfers, shared by every Renderer of the process: the transfer is a pure
 // function of the mesh, and a process that makes several Renderers (a tool comparing settings, a test, an
 // engine recreating its device) would otherwise cast the same rays again. Keyed by the fingerprint and the
@@ -34,7 +17,7 @@ using TransferCache = RecentCache<std::pair<std::uint64_t, std::size_t>, std::ve
 
 std::shared_ptr<const std::vector<float>> packed(const HeadMesh& mesh, std::uint64_t key) {
   static auto& transfers = *new TransferCache;
-  return transfers.get({key, mesh.positions.size()}, [&] { return computePacked(mesh); });
+  return transfers.get({key, mesh.positions.size()}, [&] { return packedSkinTransfer(mesh); });
 }
 
 // FNV-1a over a span's bytes, then its length (two meshes whose arrays split the same bytes differently differ).

@@ -1,10 +1,12 @@
 // `hairpipe info [--json] [--device D]`: every Vulkan device, the one hairpipe would select, and
-// whether the validation layer is available.
+// whether the validation layer is available; the library's build identity and its disk cache (HAIRPIPE_CACHE_DIR).
 #include <cstdlib>
 #include <iostream>
 
 #include <nlohmann/json.hpp>
 
+#include "engine/core/build_identity.h"
+#include "engine/core/disk_cache.h"
 #include "engine/core/error.h"
 #include "engine/vk/context.h"
 #include "engine/vk/device_probe.h"
@@ -47,7 +49,10 @@ nlohmann::json deviceJson(const hp::vk::DeviceReport& d) {
 
 void printText(const nlohmann::json& report) {
   std::cout << "Vulkan loader " << report["loader_version"].get<std::string>() << ", validation layer "
-            << (report["validation_layer"].get<bool>() ? "available" : "NOT available") << "\n";
+            << (report["validation_layer"].get<bool>() ? "available" : "NOT available") << "\n"
+            << "hairpipe build " << report["build_identity"].get<std::string>() << ", disk cache "
+            << (report["disk_cache"].is_null() ? "off (HAIRPIPE_CACHE_DIR unset)" : report["disk_cache"].get<std::string>())
+            << "\n";
   for (const auto& d : report["devices"]) {
     std::cout << "[" << d["index"] << "] " << d["name"].get<std::string>() << " (" << d["type"].get<std::string>()
               << ")" << (d["index"] == report["selected"] ? "  <- selected" : "") << "\n"
@@ -79,8 +84,11 @@ void runInfo(const InfoOptions& opt) {
   if (request.empty() && std::getenv("HAIRPIPE_DEVICE")) request = std::getenv("HAIRPIPE_DEVICE");
   hp::vk::DeviceChoice choice = hp::vk::chooseDevice(candidates, request);
   if (!choice.chosen) throw hp::Error(choice.error);
+  const hp::DiskCache& cache = hp::DiskCache::process();
   nlohmann::json report = {{"loader_version", versionString(probe.loaderVersion())},
                            {"validation_layer", hp::vk::instanceLayerAvailable("VK_LAYER_KHRONOS_validation")},
+                           {"build_identity", hp::buildIdentity()},
+                           {"disk_cache", cache.enabled() ? nlohmann::json(cache.folder().string()) : nlohmann::json()},
                            {"selected", *choice.chosen},
                            {"devices", devices}};
   if (opt.json)

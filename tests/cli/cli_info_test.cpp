@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdlib>
 #include <fstream>
 #include <vector>
 
@@ -23,6 +24,11 @@ TEST(CliInfo, ListsDevicesSelectionAndValidationLayerAsJson) {
   EXPECT_GT(d["max_compute_workgroup_invocations"].get<std::uint32_t>(), 0u);
   EXPECT_GT(d["timestamp_period_ns"].get<double>(), 0.0);
   EXPECT_TRUE(d["suitable"].get<bool>());
+  // The tool's build and the disk cache it uses: HAIRPIPE_CACHE_DIR, which CTest sets for every test.
+  EXPECT_EQ(j["build_identity"].get<std::string>().size(), 32u);
+  const char* folder = std::getenv("HAIRPIPE_CACHE_DIR");
+  if (folder && *folder) EXPECT_EQ(j["disk_cache"], folder);
+  else EXPECT_TRUE(j["disk_cache"].is_null());
 }
 
 TEST(CliInfo, TextOutputMarksTheSelectedDevice) {

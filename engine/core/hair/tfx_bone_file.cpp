@@ -3,8 +3,8 @@
 
 #include <bit>
 #include <cmath>
-#include <cstring>
 
+#include "engine/core/byte_stream.h"
 #include "engine/core/error.h"
 #include "engine/core/hair/input_file.h"
 
@@ -14,51 +14,27 @@ static_assert(std::endian::native == std::endian::little, ".tfxbone is little-en
 namespace {
 constexpr std::uint64_t kStrandRecordBytes = 4 + 4 * 8;  // index, then 4 x (bone, weight)
 
-// Reads the file front to back; every read is checked against what is left.
-class ByteReader {
- public:
-  ByteReader(std::span<const std::byte> bytes, const std::string& source) : bytes_(bytes), source_(source) {}
-  std::uint64_t left() const { return bytes_.size() - at_; }
-  void need(std::uint64_t n, const std::string& what) const {
-    if (n > left())
-      throw Error(source_ + ": " + what + " needs " + std::to_string(n) + " bytes at byte " + std::to_string(at_) +
-                  ", the file has " + std::to_string(left()) + " left");
-  }
-  template <typename T>
-  T take(const std::string& what) {
-    need(sizeof(T), what);
-    T v;
-    std::memcpy(&v, bytes_.data() + at_, sizeof(T));
-    at_ += sizeof(T);
-    return v;
-  }
-  std::string takeName(std::uint64_t length, const std::string& what) {
-    need(length, what);
-    const char* p = reinterpret_cast<const char*>(bytes_.data() + at_);
-    at_ += length;
-    if (length == 0 || p[length - 1] != '\0') throw Error(source_ + ": " + what + " does not end with its NUL");
-    return std::string(p);  // up to the first NUL
-  }
-
- private:
-  std::span<const std::byte> bytes_;
-  const std::string& source_;
-  std::uint64_t at_ = 0;
-};
+// A bone's name: `length` bytes ending with a NUL, the name up to the first NUL.
+std::string takeName(ByteReader& r, std::uint64_t length, const std::string& what, const std::string& source) {
+  const std::span<const std::byte> bytes = r.take(length, what);
+  const char* p = reinterpret_cast<const char*>(bytes.data());
+  if (length == 0 || p[length - 1] != '\0') throw Error(source + ": " + what + " does not end with its NUL");
+  return std::string(p);
+}
 
 void readBones(ByteReader& r, TfxBoneData& d, const std::string& source) {
-  const std::int32_t count = r.take<std::int32_t>("the bone count");
+  const std::int32_t count = r.get<std::int32_t>("the bone count");
   // Each bone takes at least 9 bytes (index, length, one NUL).
   if (count <= 0 || std::uint64_t(count) * 9 > r.left())
     throw Error(source + ": bone count " + std::to_string(count) + " is not positive or more than the file holds");
   for (std::int32_t b = 0; b < count; ++b) {
     const std::string what = "bone " + std::to_string(b);
-    d.boneIndices.push_back(r.take<std::int32_t>(what + "'s index"));
-    const std::int32_t length = r.take<std::int32_t>(what + "'s name length");
+    d.boneIndices.push_back(r.get<std::int32_t>(what + "'s index"));
+    const std::int32_t length = r.get<std::int32_t>(what + "'s name length");
     if (length <= 0 || std::uint64_t(length) > kTfxBoneMaxNameBytes)
       throw Error(source + ": " + what + "'s name length " + std::to_string(length) + " is outside 1.." +
                   std::to_string(kTfxBoneMaxNameBytes));
-    d.boneNames.push_back(r.takeName(std::uint64_t(length), what + "'s name"));
+    d.boneNames.push_back(takeName(r, std::uint64_t(length), what + "'s name", source));
   }
 }
 
@@ -79,7 +55,7 @@ void checkStrand(const TfxStrandSkin& s, std::size_t boneCount, const std::strin
 }
 
 void readStrands(ByteReader& r, TfxBoneData& d, const std::string& source) {
-  const std::int32_t count = r.take<std::int32_t>("the strand count");
+  const std::int32_t count = r.get<std::int32_t>("the strand count");
   if (count < 0 || std::uint64_t(count) * kStrandRecordBytes != r.left())
     throw Error(source + ": strand count " + std::to_string(count) + " needs " +
                 std::to_string(std::int64_t(count) * std::int64_t(kStrandRecordBytes)) + " bytes, the file has " +
@@ -88,20 +64,15 @@ void readStrands(ByteReader& r, TfxBoneData& d, const std::string& source) {
   for (std::int32_t i = 0; i < count; ++i) {
     TfxStrandSkin& s = d.strands[std::size_t(i)];
     const std::string what = "strand " + std::to_string(i);
-    s.strand = r.take<std::int32_t>(what + "'s index");
+    s.strand = r.get<std::int32_t>(what + "'s index");
     for (int k = 0; k < 4; ++k) {
-      s.bones[k] = r.take<std::int32_t>(what + "'s bone");
-      s.weights[k] = r.take<float>(what + "'s weight");
+      s.bones[k] = r.get<std::int32_t>(what + "'s bone");
+      s.weights[k] = r.get<float>(what + "'s weight");
     }
     checkStrand(s, d.boneNames.size(), what, source);
   }
 }
 
-template <typename T>
-void put(std::vector<std::byte>& out, const T& v) {
-  const auto* p = reinterpret_cast<const std::byte*>(&v);
-  out.insert(out.end(), p, p + sizeof(T));
-}
 }  // namespace
 
 TfxBoneData decodeTfxBone(std::span<const std::byte> bytes, const std::string& source) {
@@ -117,23 +88,23 @@ TfxBoneData readTfxBoneFile(const std::filesystem::path& path) {
 }
 
 std::vector<std::byte> encodeTfxBone(const TfxBoneData& d) {
-  std::vector<std::byte> out;
-  put(out, std::int32_t(d.boneNames.size()));
+  ByteWriter out;
+  out.put(std::int32_t(d.boneNames.size()));
   for (std::size_t b = 0; b < d.boneNames.size(); ++b) {
-    put(out, b < d.boneIndices.size() ? d.boneIndices[b] : std::int32_t(b));
-    put(out, std::int32_t(d.boneNames[b].size() + 1));
-    for (char c : d.boneNames[b]) put(out, c);
-    put(out, '\0');
+    out.put(b < d.boneIndices.size() ? d.boneIndices[b] : std::int32_t(b));
+    out.put(std::int32_t(d.boneNames[b].size() + 1));
+    for (char c : d.boneNames[b]) out.put(c);
+    out.put('\0');
   }
-  put(out, std::int32_t(d.strands.size()));
+  out.put(std::int32_t(d.strands.size()));
   for (const TfxStrandSkin& s : d.strands) {
-    put(out, s.strand);
+    out.put(s.strand);
     for (int k = 0; k < 4; ++k) {
-      put(out, s.bones[k]);
-      put(out, s.weights[k]);
+      out.put(s.bones[k]);
+      out.put(s.weights[k]);
     }
   }
-  return out;
+  return out.take();
 }
 
 std::vector<gpu::SkinWeights> tfxBoneSkinWeights(const TfxBoneData& d, std::uint32_t guideCount,

@@ -1,6 +1,10 @@
 #include "engine/core/shading/lut_cache.h"
 
+#include <optional>
+
+#include "engine/core/byte_stream.h"
 #include "engine/core/recent_cache.h"
+#include "engine/core/shading/lut_encoding.h"
 
 namespace hp {
 namespace {
@@ -11,6 +15,30 @@ struct LutKey {
   bool operator==(const LutKey&) const = default;
 };
 
+// Every byte of a HairMaterial is a value (no padding), so equal bytes are equal materials.
+static_assert(sizeof(HairMaterial) == 13 * sizeof(double));
+
+std::vector<std::byte> keyBytes(const LutKey& key) {
+  ByteWriter out;
+  out.put(key.mode);
+  out.put(key.material);
+  out.put(key.floatFormat);
+  out.put(key.paperFormat);
+  return out.take();
+}
+
+constexpr const char* kDiskKind = "marschner-tables";
+
+std::optional<MarschnerLut> loadFromDisk(const DiskCache& disk, std::span<const std::byte> key) {
+  const std::optional<std::vector<std::byte>> value = disk.load(kDiskKind, key);
+  if (!value) return std::nullopt;
+  try {
+    return decodeLut(*value);
+  } catch (const Error&) {  // cannot happen for an entry this build wrote; built again then
+    return std::nullopt;
+  }
+}
+
 // A physical model's tables are ~2 MiB; four materials cover a tool comparing looks or a viewer's edits. Never
 // destroyed: a material's build on a detached worker (compute/renderer/lut_build.h) may outlive main.
 RecentCache<LutKey, MarschnerLut, 4>& luts() {
@@ -19,9 +47,19 @@ RecentCache<LutKey, MarschnerLut, 4>& luts() {
 }
 }  // namespace
 
+MarschnerLut loadOrBuildLut(const DiskCache& disk, LutMode mode, const HairMaterial& material,
+                            const LutBuildOptions& options) {
+  if (!disk.enabled()) return buildLut(mode, material, options);
+  const std::vector<std::byte> key = keyBytes({mode, material, options.floatFormat, options.paperFormat});
+  if (std::optional<MarschnerLut> kept = loadFromDisk(disk, key)) return std::move(*kept);
+  MarschnerLut lut = buildLut(mode, material, options);
+  disk.store(kDiskKind, key, encodeLut(lut));
+  return lut;
+}
+
 std::shared_ptr<const MarschnerLut> sharedLut(LutMode mode, const HairMaterial& material,
                                               const LutBuildOptions& options) {
-  return luts().get(LutKey{mode, material, options.floatFormat, options.paperFormat},
-                  [&] { return buildLut(mode, material, options); });
+  const LutKey key{mode, material, options.floatFormat, options.paperFormat};
+  return luts().get(key, [&] { return loadOrBuildLut(DiskCache::process(), mode, material, options); });
 }
 }  // namespace hp

@@ -4,12 +4,17 @@
 // of CPU for the physical model; a process that makes several Renderers, changes a material back and forth
 // or recreates its device would otherwise build the same tables again. Thread-safe: a build runs outside the
 // lock (two threads asking for the same new tables at once may both build them; both get the first kept).
-// Errors are buildLut's (an invalid material throws and nothing is kept).
+// Errors are buildLut's (an invalid material throws and nothing is kept). With a disk cache (engine/core/disk_cache.h,
+// HAIRPIPE_CACHE_DIR) a process reads tables another process of the same build made instead of building them.
 #include <memory>
 
+#include "engine/core/disk_cache.h"
 #include "engine/core/shading/lut.h"
 
 namespace hp {
+// The tables from `disk` when it holds them (bit for bit what buildLut gives), else built and kept there.
+MarschnerLut loadOrBuildLut(const DiskCache& disk, LutMode mode, const HairMaterial& material,
+                            const LutBuildOptions& options = {});
 std::shared_ptr<const MarschnerLut> sharedLut(LutMode mode, const HairMaterial& material,
                                               const LutBuildOptions& options = {});
 }  // namespace hp

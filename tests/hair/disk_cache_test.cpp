@@ -1,0 +1,153 @@
+// The disk cache (engine/core/disk_cache.h): a value comes back only for its own kind and key from this build;
+// damaged, truncated, foreign and colliding entries are misses; a folder that cannot be written is no cache at all;
+// a store removes other builds' entries of its kind and nothing else.
+#include <gtest/gtest.h>
+#include <sys/stat.h>
+
+#include "engine/core/build_identity.h"
+#include "engine/core/byte_stream.h"
+#include "engine/core/disk_cache.h"
+#include "tests/hair/hair_test_util.h"
+
+namespace hp {
+namespace {
+std::vector<std::byte> bytesOf(const std::string& s) {
+  const auto b = std::as_bytes(std::span(s.data(), s.size()));
+  return {b.begin(), b.end()};
+}
+
+std::size_t entries(const std::filesystem::path& folder) {
+  return std::size_t(std::distance(std::filesystem::directory_iterator(folder), {}));
+}
+
+TEST(DiskCache, GivesBackWhatWasStoredForTheSameKindAndKeyOnly) {
+  test::TempDir dir;
+  const DiskCache cache(dir.path());
+  const auto key = bytesOf("material 1"), value = bytesOf("tables");
+  EXPECT_FALSE(cache.load("tables", key));
+  cache.store("tables", key, value);
+  EXPECT_EQ(cache.load("tables", key), value);
+  EXPECT_FALSE(cache.load("tables", bytesOf("material 2")));
+  EXPECT_FALSE(cache.load("transfer", key));
+  EXPECT_EQ(entries(dir.path()), 1u);
+  cache.store("tables", key, bytesOf("newer"));  // replaced whole
+  EXPECT_EQ(cache.load("tables", key), bytesOf("newer"));
+  cache.store("tables", bytesOf("empty"), {});
+  EXPECT_EQ(cache.load("tables", bytesOf("empty")), std::vector<std::byte>{});
+}
+
+TEST(DiskCache, IsOffWithoutAFolder) {
+  const DiskCache off{std::filesystem::path()};
+  EXPECT_FALSE(off.enabled());
+  off.store("tables", bytesOf("k"), bytesOf("v"));
+  EXPECT_FALSE(off.load("tables", bytesOf("k")));
+}
+
+// Every byte of an entry matters: a flipped byte anywhere, a cut anywhere, an empty file are misses.
+TEST(DiskCache, ADamagedOrTruncatedEntryIsAMiss) {
+  test::TempDir dir;
+  const DiskCache cache(dir.path());
+  const auto key = bytesOf("key"), value = bytesOf("a value of a few bytes");
+  cache.store("tables", key, value);
+  const std::filesystem::path path = cache.entryPath("tables", key);
+  const std::vector<std::byte> whole = test::readBytes(path);
+  for (std::size_t i = 0; i < whole.size(); ++i) {
+    std::vector<std::byte> damaged = whole;
+    damaged[i] ^= std::byte{0x20};
+    test::writeBytes(path, damaged);
+    EXPECT_FALSE(cache.load("tables", key)) << "byte " << i << " flipped";
+    test::writeBytes(path, std::vector<std::byte>(whole.begin(), whole.begin() + std::ptrdiff_t(i)));
+    EXPECT_FALSE(cache.load("tables", key)) << "cut at byte " << i;
+  }
+  test::writeBytes(path, whole);
+  EXPECT_EQ(cache.load("tables", key), value);
+}
+
+// Two keys whose entries share a file name (a hash collision, simulated by moving one entry onto the other's
+// name): the stored key is compared whole.
+TEST(DiskCache, AnEntryForAnotherKeyUnderTheSameNameIsAMiss) {
+  test::TempDir dir;
+  const DiskCache cache(dir.path());
+  cache.store("tables", bytesOf("a"), bytesOf("value of a"));
+  std::filesystem::rename(cache.entryPath("tables", bytesOf("a")), cache.entryPath("tables", bytesOf("b")));
+  EXPECT_FALSE(cache.load("tables", bytesOf("b")));
+}
+
+TEST(DiskCache, AFolderThatCannotBeWrittenIsNoCacheAndNoError) {
+  test::TempDir dir;
+  test::writeText(dir / "file", "a file, not a folder");
+  const DiskCache underFile(dir / "file" / "cache");
+  EXPECT_NO_THROW(underFile.store("tables", bytesOf("k"), bytesOf("v")));
+  EXPECT_FALSE(underFile.load("tables", bytesOf("k")));
+  if (::geteuid() != 0) {  // root writes anywhere
+    std::filesystem::create_directory(dir / "locked");
+    std::filesystem::permissions(dir / "locked", std::filesystem::perms::owner_read | std::filesystem::perms::owner_exec);
+    const DiskCache locked(dir / "locked");
+    EXPECT_NO_THROW(locked.store("tables", bytesOf("k"), bytesOf("v")));
+    EXPECT_FALSE(locked.load("tables", bytesOf("k")));
+  }
+}
+
+// Something at an entry's path that is not a regular file (a FIFO would block a read forever) is a miss.
+TEST(DiskCache, AFifoOrFolderAtAnEntrysPathIsAMiss) {
+  test::TempDir dir;
+  const DiskCache cache(dir.path());
+  ASSERT_EQ(::mkfifo(cache.entryPath("tables", bytesOf("fifo")).c_str(), 0600), 0);
+  EXPECT_FALSE(cache.load("tables", bytesOf("fifo")));
+  std::filesystem::create_directory(cache.entryPath("tables", bytesOf("folder")));
+  EXPECT_FALSE(cache.load("tables", bytesOf("folder")));
+}
+
+TEST(DiskCache, AStoreRemovesOtherBuildsEntriesOfItsKindOnly) {
+  test::TempDir dir;
+  const DiskCache cache(dir.path());
+  const std::string otherBuild(32, 'f'), otherHash(16, '0');
+  ASSERT_NE(otherBuild, buildIdentity());
+  test::writeText(dir / ("tables-" + otherBuild + "-" + otherHash + ".bin"), "an older build's");
+  test::writeText(dir / ("transfer-" + otherBuild + "-" + otherHash + ".bin"), "another kind's");
+  test::writeText(dir / "notes.txt", "the user's");
+  cache.store("tables", bytesOf("kept"), bytesOf("v"));
+  cache.store("tables", bytesOf("kept too"), bytesOf("w"));
+  EXPECT_FALSE(std::filesystem::exists(dir / ("tables-" + otherBuild + "-" + otherHash + ".bin")));
+  EXPECT_TRUE(std::filesystem::exists(dir / ("transfer-" + otherBuild + "-" + otherHash + ".bin")));
+  EXPECT_TRUE(std::filesystem::exists(dir / "notes.txt"));
+  EXPECT_EQ(cache.load("tables", bytesOf("kept")), bytesOf("v"));
+  EXPECT_EQ(cache.load("tables", bytesOf("kept too")), bytesOf("w"));
+}
+
+TEST(DiskCache, KindsAreNamesForFiles) {
+  test::TempDir dir;
+  const DiskCache cache(dir.path());
+  EXPECT_ERROR_CONTAINS(cache.entryPath("../escape", bytesOf("k")), "kind '../escape'");
+  EXPECT_ERROR_CONTAINS(cache.entryPath("", bytesOf("k")), "kind ''");
+  cache.store("Tables/x", bytesOf("k"), bytesOf("v"));  // refused quietly: nothing written
+  EXPECT_EQ(entries(dir.path()), 0u);
+}
+
+TEST(ByteStream, ReadsBackWhatWasWritten) {
+  ByteWriter out;
+  out.put(std::uint32_t(7));
+  out.putString("name");
+  out.putVector(std::vector<float>{1.5f, -2.0f});
+  out.put(3.25);
+  const std::vector<std::byte> bytes = out.take();
+  ByteReader in(bytes);
+  EXPECT_EQ(in.get<std::uint32_t>(), 7u);
+  EXPECT_EQ(in.getString(), "name");
+  EXPECT_EQ(in.getVector<float>(), (std::vector<float>{1.5f, -2.0f}));
+  EXPECT_EQ(in.get<double>(), 3.25);
+  EXPECT_TRUE(in.atEnd());
+}
+
+// A length that claims more than the stream holds is refused before anything is allocated.
+TEST(ByteStream, ALengthBeyondTheDataIsRefusedNamingTheValue) {
+  ByteWriter out;
+  out.put(std::uint64_t(1) << 60);
+  const std::vector<std::byte> bytes = out.take();
+  ByteReader in(bytes, "entry.bin");
+  EXPECT_ERROR_CONTAINS(in.getVector<double>("the texels"), "entry.bin: the texels needs");
+  ByteReader empty(std::span<const std::byte>{}, "empty.bin");
+  EXPECT_ERROR_CONTAINS(empty.get<std::uint32_t>("the count"), "empty.bin: the count needs 4 bytes at byte 0, the file has 0 left");
+}
+}  // namespace
+}  // namespace hp
