@@ -1,8 +1,11 @@
 // The disk cache (engine/core/disk_cache.h): a value comes back only for its own kind and key from this build;
 // damaged, truncated, foreign and colliding entries are misses; a folder that cannot be written is no cache at all;
-// a store removes other builds' entries of its kind and nothing else.
+// a store replaces links rather than writing through them and removes other builds' entries of its kind, old
+// temporaries and its least recently used entries past a budget, and nothing else.
 #include <gtest/gtest.h>
-#include <sys/stat.h>
+
+#include <array>
+#include <chrono>
 
 #include "engine/core/build_identity.h"
 #include "engine/core/byte_stream.h"
@@ -16,6 +19,12 @@ std::vector<std::byte> bytesOf(const std::string& s) {
   return {b.begin(), b.end()};
 }
 
+std::uint64_t fnv1a(std::span<const std::byte> bytes) {
+  std::uint64_t h = 14695981039346656037ull;
+  for (std::byte b : bytes) h = (h ^ std::to_integer<std::uint64_t>(b)) * 1099511628211ull;
+  return h;
+}
+
 std::size_t entries(const std::filesystem::path& folder) {
   return std::size_t(std::distance(std::filesystem::directory_iterator(folder), {}));
 }
@@ -26,7 +35,9 @@ TEST(DiskCache, GivesBackWhatWasStoredForTheSameKindAndKeyOnly) {
   const auto key = bytesOf("material 1"), value = bytesOf("tables");
   EXPECT_FALSE(cache.load("tables", key));
   cache.store("tables", key, value);
+  const ino_t stored = test::inodeOf(cache.entryPath("tables", key));
   EXPECT_EQ(cache.load("tables", key), value);
+  EXPECT_EQ(test::inodeOf(cache.entryPath("tables", key)), stored) << "a load rewrote the entry";
   EXPECT_FALSE(cache.load("tables", bytesOf("material 2")));
   EXPECT_FALSE(cache.load("transfer", key));
   EXPECT_EQ(entries(dir.path()), 1u);
@@ -71,6 +82,87 @@ TEST(DiskCache, AnEntryForAnotherKeyUnderTheSameNameIsAMiss) {
   cache.store("tables", bytesOf("a"), bytesOf("value of a"));
   std::filesystem::rename(cache.entryPath("tables", bytesOf("a")), cache.entryPath("tables", bytesOf("b")));
   EXPECT_FALSE(cache.load("tables", bytesOf("b")));
+}
+
+// A whole, well-formed entry with a valid checksum, but made by another build or C library (the identity inside),
+// or for another kind: a miss. The layout is the one disk_cache.cpp writes.
+TEST(DiskCache, AWholeEntryMadeByAnotherBuildOrForAnotherKindIsAMiss) {
+  test::TempDir dir;
+  const DiskCache cache(dir.path());
+  const auto key = bytesOf("key"), value = bytesOf("value");
+  cache.store("tables", key, value);
+  const std::filesystem::path path = cache.entryPath("tables", key);
+  const std::vector<std::byte> ours = test::readBytes(path);
+  ByteReader in{std::span(ours).first(ours.size() - 8)};
+  in.get<std::array<char, 8>>();
+  const std::string identity = in.getString();
+  EXPECT_EQ(identity.rfind(buildIdentity(), 0), 0u) << identity;
+  auto forged = [&](const std::string& madeBy, const std::string& kind) {
+    ByteWriter out;
+    out.put(std::array<char, 8>{'h', 'p', 'c', 'a', 'c', 'h', 'e', '2'});
+    out.putString(madeBy);
+    out.putString(kind);
+    out.putVector(std::span<const std::byte>(key));
+    out.putVector(std::span<const std::byte>(value));
+    out.put(fnv1a(out.bytes()));
+    return out.take();
+  };
+  ASSERT_EQ(forged(identity, "tables"), ours) << "the layout written is not the one this test forges";
+  test::writeBytes(path, forged(identity + " (another machine's glibc)", "tables"));
+  EXPECT_FALSE(cache.load("tables", key));
+  test::writeBytes(path, forged(identity, "transfer"));
+  EXPECT_FALSE(cache.load("tables", key));
+  test::writeBytes(path, forged(identity, "tables"));
+  EXPECT_EQ(cache.load("tables", key), value);
+}
+
+// A link at an entry's path is replaced by the entry, never written through: the file it names stays as it was.
+TEST(DiskCache, ALinkAtAnEntrysPathIsReplacedNotWrittenThrough) {
+  test::TempDir dir;
+  std::filesystem::create_directory(dir / "cache");
+  const DiskCache cache(dir / "cache");
+  test::writeText(dir / "victim", "the user's file");
+  std::filesystem::create_symlink(dir / "victim", cache.entryPath("tables", bytesOf("k")));
+  EXPECT_FALSE(cache.load("tables", bytesOf("k")));
+  cache.store("tables", bytesOf("k"), bytesOf("v"));
+  EXPECT_EQ(test::readBytes(dir / "victim"), bytesOf("the user's file"));
+  EXPECT_FALSE(std::filesystem::is_symlink(cache.entryPath("tables", bytesOf("k"))));
+  EXPECT_EQ(cache.load("tables", bytesOf("k")), bytesOf("v"));
+}
+
+// Past its byte budget a kind loses its least recently used entries; a load counts as a use.
+TEST(DiskCache, AKindKeepsItsMostRecentlyUsedEntriesWithinItsBudget) {
+  test::TempDir dir;
+  const std::vector<std::byte> value(1000, std::byte{7});
+  const DiskCache cache(dir.path(), 2500);  // two entries of ~1.1 KB fit, three do not
+  const auto hourAgo = std::filesystem::file_time_type::clock::now() - std::chrono::hours(1);
+  cache.store("tables", bytesOf("a"), value);
+  cache.store("tables", bytesOf("b"), value);
+  std::filesystem::last_write_time(cache.entryPath("tables", bytesOf("a")), hourAgo - std::chrono::minutes(1));
+  std::filesystem::last_write_time(cache.entryPath("tables", bytesOf("b")), hourAgo);
+  EXPECT_TRUE(cache.load("tables", bytesOf("a")));  // a used now: b is the least recent
+  cache.store("tables", bytesOf("c"), value);
+  EXPECT_TRUE(cache.load("tables", bytesOf("a")));
+  EXPECT_FALSE(cache.load("tables", bytesOf("b")));
+  EXPECT_TRUE(cache.load("tables", bytesOf("c")));
+  cache.store("transfer", bytesOf("a"), value);  // another kind has its own budget
+  EXPECT_TRUE(cache.load("tables", bytesOf("a")));
+  EXPECT_TRUE(cache.load("tables", bytesOf("c")));
+}
+
+// A temporary a process left when it died while writing goes once it is old; a recent one may be another
+// process's write in progress and stays.
+TEST(DiskCache, AStoreRemovesTemporariesLeftByDeadWriters) {
+  test::TempDir dir;
+  const DiskCache cache(dir.path());
+  const std::string entry = cache.entryPath("tables", bytesOf("k")).filename().string();
+  const std::filesystem::path old = dir / ("." + entry + ".tmp-abc123"), recent = dir / ("." + entry + ".tmp-def456");
+  test::writeText(old, "half an entry");
+  test::writeText(recent, "half an entry");
+  std::filesystem::last_write_time(old, std::filesystem::file_time_type::clock::now() - std::chrono::minutes(11));
+  cache.store("tables", bytesOf("other"), bytesOf("v"));
+  EXPECT_FALSE(std::filesystem::exists(old));
+  EXPECT_TRUE(std::filesystem::exists(recent));
 }
 
 TEST(DiskCache, AFolderThatCannotBeWrittenIsNoCacheAndNoError) {

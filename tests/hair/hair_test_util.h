@@ -2,6 +2,7 @@
 // Helpers for the host-only asset tests: a per-test temporary directory, file writing, and
 // expectations on hp::Error messages.
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <filesystem>
@@ -36,6 +37,12 @@ class TempDir {
 
 inline void writeText(const std::filesystem::path& path, const std::string& text) {
   std::ofstream(path, std::ios::binary) << text;
+}
+
+// The file's inode number (0 when it is missing): a file replaced by a rename has a new one.
+inline ino_t inodeOf(const std::filesystem::path& path) {
+  struct stat st {};
+  return ::stat(path.c_str(), &st) == 0 ? st.st_ino : 0;
 }
 
 inline std::vector<std::byte> readBytes(const std::filesystem::path& path) {

@@ -51,7 +51,10 @@ TEST(SkinTransferCache, ReadsBackWhatComputingGivesKeyedByTheWholeMesh) {
   ASSERT_EQ(computed.size(), mesh.positions.size() * gpu::SKIN_TRANSFER_FLOATS);
   EXPECT_TRUE(sameBits(packedSkinTransfer(mesh, disk), computed));  // computed and stored
   ASSERT_EQ(entries(dir.path()), 1u);
-  EXPECT_TRUE(sameBits(packedSkinTransfer(mesh, disk), computed));  // read back
+  const std::filesystem::path entry = std::filesystem::directory_iterator(dir.path())->path();
+  const ino_t stored = test::inodeOf(entry);
+  EXPECT_TRUE(sameBits(packedSkinTransfer(mesh, disk), computed));  // read back: the entry not written again
+  EXPECT_EQ(test::inodeOf(entry), stored) << "computed again instead of read";
   // One scalp weight changed: another mesh, another entry (the scalp changes what the skin reflects).
   HeadMesh scalped = mesh;
   scalped.scalp[5] = 1.0f;
@@ -64,5 +67,6 @@ TEST(SkinTransferCache, ReadsBackWhatComputingGivesKeyedByTheWholeMesh) {
     test::writeBytes(entry.path(), bytes);
   }
   EXPECT_TRUE(sameBits(packedSkinTransfer(mesh, disk), computed));
+  EXPECT_NE(test::inodeOf(entry), stored) << "the damaged entry was not replaced";
   EXPECT_TRUE(sameBits(packedSkinTransfer(mesh, DiskCache(std::filesystem::path())), computed));  // no cache
 }

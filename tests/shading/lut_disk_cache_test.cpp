@@ -78,14 +78,17 @@ TEST(LutDiskCache, TablesReadBackEqualTheBuiltOnesAndADamagedEntryIsBuiltAgain) 
   const auto files = std::distance(std::filesystem::directory_iterator(dir.path()), {});
   ASSERT_EQ(files, 1);
   const std::filesystem::path entry = std::filesystem::directory_iterator(dir.path())->path();
+  const ino_t stored = test::inodeOf(entry);
   expectSameTables(loadOrBuildLut(disk, LutMode::Float, unusualMaterial()), built);  // read back
+  EXPECT_EQ(test::inodeOf(entry), stored) << "built again instead of read";
   // Damaged: a byte in the middle (a texel's) flipped in place. Built again, and the entry replaced by a whole one.
   const std::vector<std::byte> whole = test::readBytes(entry);
   std::vector<std::byte> damaged = whole;
   damaged[damaged.size() / 2] ^= std::byte{0xff};
   test::writeBytes(entry, damaged);
   expectSameTables(loadOrBuildLut(disk, LutMode::Float, unusualMaterial()), built);
-  EXPECT_TRUE(test::readBytes(entry) == whole) << "the damaged entry was not replaced";
+  EXPECT_NE(test::inodeOf(entry), stored) << "the damaged entry was not replaced";
+  EXPECT_TRUE(test::readBytes(entry) == whole) << "the entry written again differs";
   // Other options are other tables.
   LutBuildOptions wide;
   wide.floatFormat = LutFormat::RGBA32F;

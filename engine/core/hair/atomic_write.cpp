@@ -24,13 +24,31 @@ int writeAll(int fd, std::span<const std::byte> bytes) {
   return 0;
 }
 
-// Writes, flushes and closes fd; 0 on success, else the first errno.
-int finishFile(int fd, std::span<const std::byte> bytes) {
+// Writes, optionally flushes, and closes fd; 0 on success, else the first errno.
+int finishFile(int fd, std::span<const std::byte> bytes, bool flush) {
   int err = writeAll(fd, bytes);
   if (!err) ::fchmod(fd, 0644);  // mkstemp creates 0600; an asset should be readable like any file
-  if (!err && ::fsync(fd) != 0) err = errno;
+  if (!err && flush && ::fsync(fd) != 0) err = errno;
   if (::close(fd) != 0 && !err) err = errno;
   return err;
+}
+
+// Writes bytes to a temporary beside `path` and renames it over `path` (which rename replaces as it is, a link
+// included).
+void writeAndRename(const std::filesystem::path& path, std::span<const std::byte> bytes, bool flush) {
+  std::filesystem::path dir = path.parent_path().empty() ? "." : path.parent_path();
+  std::string name = path.filename().string();
+  name.insert(0, 1, '.');  // hidden while incomplete (and avoids a GCC 12 -Wrestrict false positive)
+  name += ".tmp-XXXXXX";
+  std::string tmpl = (dir / name).string();
+  int fd = ::mkstemp(tmpl.data());
+  if (fd < 0) throw Error(path.string() + ": cannot create a temporary file: " + std::strerror(errno));
+  int err = finishFile(fd, bytes, flush);
+  if (!err && std::rename(tmpl.c_str(), path.c_str()) != 0) err = errno;
+  if (err) {
+    std::remove(tmpl.c_str());
+    throw Error(path.string() + ": cannot write: " + std::strerror(err));
+  }
 }
 }  // namespace
 
@@ -52,19 +70,10 @@ std::filesystem::path atomicWriteDestination(const std::filesystem::path& given)
 }
 
 void writeFileAtomically(const std::filesystem::path& given, std::span<const std::byte> bytes) {
-  const std::filesystem::path path = atomicWriteDestination(given);
-  std::filesystem::path dir = path.parent_path().empty() ? "." : path.parent_path();
-  std::string name = path.filename().string();
-  name.insert(0, 1, '.');  // hidden while incomplete (and avoids a GCC 12 -Wrestrict false positive)
-  name += ".tmp-XXXXXX";
-  std::string tmpl = (dir / name).string();
-  int fd = ::mkstemp(tmpl.data());
-  if (fd < 0) throw Error(path.string() + ": cannot create a temporary file: " + std::strerror(errno));
-  int err = finishFile(fd, bytes);
-  if (!err && std::rename(tmpl.c_str(), path.c_str()) != 0) err = errno;
-  if (err) {
-    std::remove(tmpl.c_str());
-    throw Error(path.string() + ": cannot write: " + std::strerror(err));
-  }
+  writeAndRename(atomicWriteDestination(given), bytes, true);
+}
+
+void replaceCacheFile(const std::filesystem::path& path, std::span<const std::byte> bytes) {
+  writeAndRename(path, bytes, false);
 }
 }  // namespace hp

@@ -15,4 +15,10 @@ namespace hp {
 std::filesystem::path atomicWriteDestination(const std::filesystem::path& path);
 
 void writeFileAtomically(const std::filesystem::path& path, std::span<const std::byte> bytes);
+
+// The same for files that are only a cache of values that can be made again (engine/core/disk_cache.h): whatever
+// is at `path` but a folder is replaced, a link itself and not the file it names (a link planted in a cache folder
+// cannot redirect the write), and the file is not flushed to the disk before the rename (a torn file after a crash
+// fails its checksum and is made again). Throws hp::Error naming the path on any failure; no temporary is left.
+void replaceCacheFile(const std::filesystem::path& path, std::span<const std::byte> bytes);
 }  // namespace hp

@@ -13,7 +13,7 @@ namespace hp {
 static_assert(gpu::SKIN_TRANSFER_FLOATS == 20 && gpu::SKIN_TRANSFER_BOUNCE == 9 && gpu::SKIN_TRANSFER_REFLECTING == 18);
 
 namespace {
-constexpr const char* kDiskKind = "skin-transfer";
+constexpr const char* kTransferKind = "skin-transfer";
 
 // The whole mesh (a 64-bit fingerprint could collide) and the options the transfer is computed with.
 std::vector<std::byte> diskKey(const HeadMesh& mesh) {
@@ -45,13 +45,13 @@ std::vector<float> packedSkinTransfer(const HeadMesh& mesh, const DiskCache& dis
   if (!disk.enabled()) return packSkinTransfer(mesh);
   const std::vector<std::byte> key = diskKey(mesh);
   const std::size_t floats = mesh.positions.size() * gpu::SKIN_TRANSFER_FLOATS;
-  if (const auto value = disk.load(kDiskKind, key); value && value->size() == floats * sizeof(float)) {
+  if (const auto value = disk.load(kTransferKind, key); value && value->size() == floats * sizeof(float)) {
     std::vector<float> packed(floats);
     if (floats > 0) std::memcpy(packed.data(), value->data(), value->size());
     return packed;
   }
   std::vector<float> packed = packSkinTransfer(mesh);
-  disk.store(kDiskKind, key, std::as_bytes(std::span(packed)));
+  disk.store(kTransferKind, key, std::as_bytes(std::span(packed)));
   return packed;
 }
 }  // namespace hp

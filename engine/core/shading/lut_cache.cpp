@@ -27,16 +27,19 @@ std::vector<std::byte> keyBytes(const LutKey& key) {
   return out.take();
 }
 
-constexpr const char* kDiskKind = "marschner-tables";
+constexpr const char* kTablesKind = "marschner-tables";
 
-std::optional<MarschnerLut> loadFromDisk(const DiskCache& disk, std::span<const std::byte> key) {
-  const std::optional<std::vector<std::byte>> value = disk.load(kDiskKind, key);
+// The tables kept for `key`, when they decode and are of the mode and material asked for.
+std::optional<MarschnerLut> loadFromDisk(const DiskCache& disk, std::span<const std::byte> key, LutMode mode,
+                                         const HairMaterial& material) {
+  const std::optional<std::vector<std::byte>> value = disk.load(kTablesKind, key);
   if (!value) return std::nullopt;
   try {
-    return decodeLut(*value);
-  } catch (const Error&) {  // cannot happen for an entry this build wrote; built again then
-    return std::nullopt;
+    MarschnerLut lut = decodeLut(*value);
+    if (lut.mode == mode && lut.material == material) return lut;
+  } catch (const Error&) {  // not an encoding: not an entry this build wrote
   }
+  return std::nullopt;
 }
 
 // A physical model's tables are ~2 MiB; four materials cover a tool comparing looks or a viewer's edits. Never
@@ -51,9 +54,9 @@ MarschnerLut loadOrBuildLut(const DiskCache& disk, LutMode mode, const HairMater
                             const LutBuildOptions& options) {
   if (!disk.enabled()) return buildLut(mode, material, options);
   const std::vector<std::byte> key = keyBytes({mode, material, options.floatFormat, options.paperFormat});
-  if (std::optional<MarschnerLut> kept = loadFromDisk(disk, key)) return std::move(*kept);
+  if (std::optional<MarschnerLut> kept = loadFromDisk(disk, key, mode, material)) return std::move(*kept);
   MarschnerLut lut = buildLut(mode, material, options);
-  disk.store(kDiskKind, key, encodeLut(lut));
+  disk.store(kTablesKind, key, encodeLut(lut));
   return lut;
 }
 

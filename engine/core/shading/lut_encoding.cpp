@@ -33,6 +33,8 @@ LutTexture getTexture(ByteReader& in) {
   t.height = in.get<std::uint32_t>();
   t.channels = in.get<std::uint32_t>();
   t.format = in.get<LutFormat>();
+  if (t.format != LutFormat::RGBA8Unorm && t.format != LutFormat::RGBA16F && t.format != LutFormat::RGBA32F)
+    throw Error("marschner tables: texture " + t.name + " has an unknown format");
   t.scale = in.get<std::array<float, 4>>();
   for (std::string& name : t.channelNames) name = in.getString();
   t.uAxis = in.getString();
