@@ -1,8 +1,8 @@
 // Keeps pearls outside a signed distance grid (shaders/shared/sdf.h) that moves with the head: the
 // particle goes to head space, is pushed along the grid's gradient until the trilinear distance is at
 // least the clearance (at most SDF_COLLISION_STEPS pushes), and comes back. The trilinear sample is
-// engine/core/hair/sdf_grid.cpp's SdfGrid::sample, step for step. Include after declaring nothing else
-// on SDF_BINDING; the includer picks the binding number.
+// engine/core/hair/sdf_grid.cpp's SdfGrid::sample, step for step; tests/compute/sim_reference.cpp does the same in
+// double precision. Include after declaring nothing else on SDF_BINDING; the includer picks the binding number.
 #include "shared/sdf.h"
 
 layout(std430, binding = SDF_BINDING) readonly buffer SdfField {
@@ -15,27 +15,31 @@ float sdfNode(uvec3 i) {
   return sdfValues[(i.z * d.y + i.y) * d.x + i.x];
 }
 
-float sdfSample(vec3 p) {
+// The trilinear distance at p (plus the distance to the box outside it) in .w, and its gradient in .xyz: the
+// interpolant's own derivative from the same 8 nodes (one read of each per push, where central differences
+// took 48), zero along an axis on which p lies outside the box, plus the outside distance's.
+vec4 sdfSampleGradient(vec3 p) {
   vec3 lo = sdfHeader.originCell.xyz;
   float cell = sdfHeader.originCell.w;
   vec3 hi = lo + cell * vec3(sdfHeader.dims.xyz - 1u);
   vec3 clamped = clamp(p, lo, hi);
-  float outside = length(p - clamped);
+  vec3 away = p - clamped;
+  float outside = length(away);
   vec3 g = (clamped - lo) / cell;
   uvec3 i0 = min(uvec3(g), sdfHeader.dims.xyz - 2u);
   vec3 t = g - vec3(i0);
-  float x00 = mix(sdfNode(i0), sdfNode(i0 + uvec3(1, 0, 0)), t.x);
-  float x10 = mix(sdfNode(i0 + uvec3(0, 1, 0)), sdfNode(i0 + uvec3(1, 1, 0)), t.x);
-  float x01 = mix(sdfNode(i0 + uvec3(0, 0, 1)), sdfNode(i0 + uvec3(1, 0, 1)), t.x);
-  float x11 = mix(sdfNode(i0 + uvec3(0, 1, 1)), sdfNode(i0 + uvec3(1, 1, 1)), t.x);
-  return mix(mix(x00, x10, t.y), mix(x01, x11, t.y), t.z) + outside;
-}
-
-vec3 sdfGradient(vec3 p) {
-  float h = 0.5 * sdfHeader.originCell.w;
-  return vec3(sdfSample(p + vec3(h, 0, 0)) - sdfSample(p - vec3(h, 0, 0)),
-              sdfSample(p + vec3(0, h, 0)) - sdfSample(p - vec3(0, h, 0)),
-              sdfSample(p + vec3(0, 0, h)) - sdfSample(p - vec3(0, 0, h))) / (2.0 * h);
+  float c000 = sdfNode(i0), c100 = sdfNode(i0 + uvec3(1, 0, 0));
+  float c010 = sdfNode(i0 + uvec3(0, 1, 0)), c110 = sdfNode(i0 + uvec3(1, 1, 0));
+  float c001 = sdfNode(i0 + uvec3(0, 0, 1)), c101 = sdfNode(i0 + uvec3(1, 0, 1));
+  float c011 = sdfNode(i0 + uvec3(0, 1, 1)), c111 = sdfNode(i0 + uvec3(1, 1, 1));
+  float x00 = mix(c000, c100, t.x), x10 = mix(c010, c110, t.x), x01 = mix(c001, c101, t.x), x11 = mix(c011, c111, t.x);
+  float value = mix(mix(x00, x10, t.y), mix(x01, x11, t.y), t.z) + outside;
+  vec3 d = vec3(mix(mix(c100 - c000, c110 - c010, t.y), mix(c101 - c001, c111 - c011, t.y), t.z),
+                mix(mix(c010 - c000, c110 - c100, t.x), mix(c011 - c001, c111 - c101, t.x), t.z),
+                mix(mix(c001 - c000, c101 - c100, t.x), mix(c011 - c010, c111 - c110, t.x), t.y)) / cell;
+  d = vec3(away.x != 0.0 ? 0.0 : d.x, away.y != 0.0 ? 0.0 : d.y, away.z != 0.0 ? 0.0 : d.z);
+  if (outside > 0.0) d += away / outside;
+  return vec4(d, value);
 }
 
 // p in world space; head / headInverse map head space to world and back.
@@ -44,12 +48,12 @@ vec3 sdfKeepOutside(vec3 p, mat4 head, mat4 headInverse, float clearance) {
   vec3 q = (headInverse * vec4(p, 1.0)).xyz;
   bool moved = false;
   for (uint step = 0u; step < SDF_COLLISION_STEPS; ++step) {
-    float depth = clearance - sdfSample(q);
+    vec4 s = sdfSampleGradient(q);
+    float depth = clearance - s.w;
     if (depth <= 0.0) break;
-    vec3 g = sdfGradient(q);
-    float len = length(g);
+    float len = length(s.xyz);
     if (len < 1e-6) break;
-    q += g * (depth / len);
+    q += s.xyz * (depth / len);
     moved = true;
   }
   return moved ? (head * vec4(q, 1.0)).xyz : p;

@@ -60,34 +60,43 @@ glm::dvec3 resolvePearl(const glm::dvec3& p, const glm::dvec3& parent, double re
   if (inPlaneLength < 1e-12) return radial;
   return center + along * axis + (ringRadius / inPlaneLength) * inPlane;
 }
-// sdf_collide.glsl in double: trilinear sample (plus the distance to the box outside it), central
-// differences at half a cell, up to SDF_COLLISION_STEPS pushes to the clearance.
-double sampleGrid(const SdfGrid& g, const glm::dvec3& p) {
+// sdf_collide.glsl in double: the trilinear sample (plus the distance to the box outside it) and the interpolant's
+// own gradient from the same 8 nodes, up to SDF_COLLISION_STEPS pushes to the clearance. Returns (gradient, value).
+glm::dvec4 sampleGridGradient(const SdfGrid& g, const glm::dvec3& p) {
   const glm::dvec3 lo(g.origin), hi(g.upper());
-  const glm::dvec3 clamped = glm::clamp(p, lo, hi);
-  const double outside = glm::length(p - clamped);
+  const glm::dvec3 clamped = glm::clamp(p, lo, hi), away = p - clamped;
+  const double outside = glm::length(away);
   const glm::dvec3 f = (clamped - lo) / double(g.cell);
   const glm::uvec3 i0 = glm::min(glm::uvec3(f), g.dims - 2u);
   const glm::dvec3 t = f - glm::dvec3(i0);
-  auto v = [&](std::uint32_t dx, std::uint32_t dy, std::uint32_t dz) { return double(g.at(i0.x + dx, i0.y + dy, i0.z + dz)); };
-  const double x00 = glm::mix(v(0, 0, 0), v(1, 0, 0), t.x), x10 = glm::mix(v(0, 1, 0), v(1, 1, 0), t.x);
-  const double x01 = glm::mix(v(0, 0, 1), v(1, 0, 1), t.x), x11 = glm::mix(v(0, 1, 1), v(1, 1, 1), t.x);
-  return glm::mix(glm::mix(x00, x10, t.y), glm::mix(x01, x11, t.y), t.z) + outside;
+  auto c = [&](std::uint32_t dx, std::uint32_t dy, std::uint32_t dz) { return double(g.at(i0.x + dx, i0.y + dy, i0.z + dz)); };
+  const double x00 = glm::mix(c(0, 0, 0), c(1, 0, 0), t.x), x10 = glm::mix(c(0, 1, 0), c(1, 1, 0), t.x);
+  const double x01 = glm::mix(c(0, 0, 1), c(1, 0, 1), t.x), x11 = glm::mix(c(0, 1, 1), c(1, 1, 1), t.x);
+  const double value = glm::mix(glm::mix(x00, x10, t.y), glm::mix(x01, x11, t.y), t.z) + outside;
+  glm::dvec3 d(
+      glm::mix(glm::mix(c(1, 0, 0) - c(0, 0, 0), c(1, 1, 0) - c(0, 1, 0), t.y),
+               glm::mix(c(1, 0, 1) - c(0, 0, 1), c(1, 1, 1) - c(0, 1, 1), t.y), t.z),
+      glm::mix(glm::mix(c(0, 1, 0) - c(0, 0, 0), c(1, 1, 0) - c(1, 0, 0), t.x),
+               glm::mix(c(0, 1, 1) - c(0, 0, 1), c(1, 1, 1) - c(1, 0, 1), t.x), t.z),
+      glm::mix(glm::mix(c(0, 0, 1) - c(0, 0, 0), c(1, 0, 1) - c(1, 0, 0), t.x),
+               glm::mix(c(0, 1, 1) - c(0, 1, 0), c(1, 1, 1) - c(1, 1, 0), t.x), t.y));
+  d /= double(g.cell);
+  for (int k = 0; k < 3; ++k)
+    if (away[k] != 0.0) d[k] = 0.0;
+  if (outside > 0.0) d += away / outside;
+  return {d, value};
 }
 
 glm::dvec3 keepOutsideGrid(const SdfGrid& g, const glm::dvec3& p, const glm::dmat4& head, double clearance) {
   glm::dvec3 q = apply(glm::inverse(head), p);
   bool moved = false;
-  const double h = 0.5 * g.cell;
   for (std::uint32_t step = 0; step < gpu::SDF_COLLISION_STEPS; ++step) {
-    const double depth = clearance - sampleGrid(g, q);
+    const glm::dvec4 s = sampleGridGradient(g, q);
+    const double depth = clearance - s.w;
     if (depth <= 0.0) break;
-    const glm::dvec3 grad(sampleGrid(g, q + glm::dvec3(h, 0, 0)) - sampleGrid(g, q - glm::dvec3(h, 0, 0)),
-                          sampleGrid(g, q + glm::dvec3(0, h, 0)) - sampleGrid(g, q - glm::dvec3(0, h, 0)),
-                          sampleGrid(g, q + glm::dvec3(0, 0, h)) - sampleGrid(g, q - glm::dvec3(0, 0, h)));
-    const double len = glm::length(grad) / (2.0 * h);
+    const double len = glm::length(glm::dvec3(s));
     if (len < 1e-6) break;
-    q += grad / (2.0 * h) * (depth / len);
+    q += glm::dvec3(s) * (depth / len);
     moved = true;
   }
   return moved ? apply(head, q) : p;

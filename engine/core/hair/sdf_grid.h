@@ -3,7 +3,8 @@
 // head space. Values sit on the grid nodes (x fastest, then y, then z); sample() interpolates them
 // trilinearly, exactly as the simulation shader does, and outside the box adds the distance to the
 // box so the field stays positive and grows away from it. gradient() is the central difference of
-// sample() at half a cell. Built by sampleField (any distance function) or meshSdf (sdf_mesh.h).
+// sample() at half a cell: a smooth normal for tools and tests (the simulation pushes along the interpolant's own
+// gradient, shaders/sdf_collide.glsl). Built by sampleField (any distance function) or meshSdf (sdf_mesh.h).
 #include <glm/glm.hpp>
 
 #include <cstddef>
