@@ -36,8 +36,9 @@ std::uint64_t fnv1a(std::span<const std::byte> bytes, std::uint64_t h = 14695981
 
 std::span<const std::byte> bytesOf(std::string_view text) { return std::as_bytes(std::span(text.data(), text.size())); }
 
-// What an entry's values depend on beyond the build: the C library's maths (its version, and the CPU features by
-// which it picks its sin, exp and log at run time), so a folder shared between machines never mixes their bits.
+// What an entry's values depend on beyond the build: the C library's maths (its version, the CPU features by which
+// it picks its sin, exp and log at run time, and the tunables that can override that pick), so a folder shared
+// between machines never mixes their bits.
 const std::string& entryIdentity() {
   static const std::string identity = [] {
     std::string id = buildIdentity();
@@ -45,9 +46,13 @@ const std::string& entryIdentity() {
     id += std::string(" glibc ") + gnu_get_libc_version();
 #endif
 #if defined(__x86_64__) || defined(__i386__)
+    // glibc's x86 maths: the FMA forms where FMA and AVX2 both are, else FMA4's where it is, else SSE2's.
     __builtin_cpu_init();
-    id += std::string(__builtin_cpu_supports("fma") ? " fma" : "") + (__builtin_cpu_supports("avx2") ? " avx2" : "");
+    id += __builtin_cpu_supports("fma") && __builtin_cpu_supports("avx2") ? " fma+avx2"
+          : __builtin_cpu_supports("fma4")                                ? " fma4"
+                                                                          : " sse2";
 #endif
+    if (const char* tunables = std::getenv("GLIBC_TUNABLES")) id += std::string(" tunables ") + tunables;
     return id;
   }();
   return identity;
@@ -109,18 +114,26 @@ std::vector<std::byte> entryBytes(std::string_view kind, std::span<const std::by
   return out.take();
 }
 
-// The parts of a file name in a cache folder: kind-<32 hex build>-<16 hex key>.bin, or a temporary of one
-// (.kind-...bin.tmp-XXXXXX).
+// The parts of a file name in a cache folder: kind-<32 hex build>-<8 hex machine>-<16 hex key>.bin (machine: the
+// C library's part of the identity, so machines sharing a folder keep apart entries), or a temporary of one
+// (.kind-...bin.tmp-XXXXXX, as writeFileAtomically's sibling replaceCacheFile names it).
 struct EntryName {
   bool entry = false, temporary = false;
   std::string build;
 };
 
+bool hexAt(const std::string& text, std::size_t at, std::size_t count) {
+  return std::all_of(text.begin() + std::ptrdiff_t(at), text.begin() + std::ptrdiff_t(at + count),
+                     [](char c) { return (c >= '0' && c <= '9') || (c >= 'a' && c <= 'f'); });
+}
+
 EntryName parseName(const std::string& name, std::string_view kind) {
   const std::string prefix = std::string(kind) + "-";
-  const std::size_t length = prefix.size() + 32 + 1 + 16 + 4;
+  const std::size_t length = prefix.size() + 32 + 1 + 8 + 1 + 16 + 4;
   EntryName parsed;
-  if (name.size() == length && name.starts_with(prefix) && name.ends_with(".bin") && name[prefix.size() + 32] == '-') {
+  const std::size_t build = prefix.size(), machine = build + 33, key = machine + 9;
+  if (name.size() == length && name.starts_with(prefix) && name.ends_with(".bin") && name[machine - 1] == '-' &&
+      name[key - 1] == '-' && hexAt(name, build, 32) && hexAt(name, machine, 8) && hexAt(name, key, 16)) {
     parsed.entry = true;
     parsed.build = name.substr(prefix.size(), 32);
   } else if (name.size() == 1 + length + 11 && name[0] == '.' && name.compare(1, prefix.size(), prefix) == 0 &&
@@ -142,9 +155,11 @@ const DiskCache& DiskCache::process() {
 
 fs::path DiskCache::entryPath(std::string_view kind, std::span<const std::byte> key) const {
   checkKind(kind);
-  char hash[24];
-  std::snprintf(hash, sizeof hash, "-%016llx.bin", static_cast<unsigned long long>(fnv1a(key, fnv1a(bytesOf(kind)))));
-  return folder_ / (std::string(kind) + "-" + buildIdentity() + hash);
+  char hashes[40];
+  std::snprintf(hashes, sizeof hashes, "-%08llx-%016llx.bin",
+                static_cast<unsigned long long>(fnv1a(bytesOf(entryIdentity())) >> 32),
+                static_cast<unsigned long long>(fnv1a(key, fnv1a(bytesOf(kind)))));
+  return folder_ / (std::string(kind) + "-" + buildIdentity() + hashes);
 }
 
 std::optional<std::vector<std::byte>> DiskCache::load(std::string_view kind, std::span<const std::byte> key) const {
@@ -153,8 +168,8 @@ std::optional<std::vector<std::byte>> DiskCache::load(std::string_view kind, std
     const fs::path path = entryPath(kind, key);
     const std::optional<std::vector<std::byte>> file = readEntry(path);
     std::optional<std::vector<std::byte>> value = file ? entryValue(*file, kind, key) : std::nullopt;
-    std::error_code ec;
-    if (value) fs::last_write_time(path, fs::file_time_type::clock::now(), ec);  // used: evicted last
+    // Used: evicted last. The name's own times (a link swapped in since the read is touched, not what it names).
+    if (value) ::utimensat(AT_FDCWD, path.c_str(), nullptr, AT_SYMLINK_NOFOLLOW);
     return value;
   } catch (const std::exception&) {  // a malformed entry (ByteReader), memory: a miss
     return std::nullopt;
@@ -190,8 +205,8 @@ void DiskCache::prune(std::string_view kind) const {
     if (ec) continue;
     if ((name.entry && name.build != buildIdentity()) || (name.temporary && now - used > kStaleTemporary))
       fs::remove(file.path(), ec);
-    else if (name.entry)
-      kept.push_back({file.path(), used, file.file_size(ec)});
+    else if (const std::uintmax_t bytes = file.file_size(ec); name.entry && !ec)
+      kept.push_back({file.path(), used, bytes});
   }
   std::ranges::sort(kept, [](const Kept& a, const Kept& b) { return a.used > b.used; });  // most recent first
   std::uintmax_t total = 0;

@@ -7,7 +7,8 @@
 // another key with the same hash) is a miss. The checksum finds accidents, not forgeries: whoever may write the
 // folder can feed the process values, as with any file it reads. store writes the file whole (a temporary renamed
 // over whatever is at the entry's path, a link included: never through it) and never throws: a folder that cannot
-// be made or written means no cache, nothing more. Any number of processes may share a folder. After a store the
+// be made or written means no cache, nothing more. Any number of processes may share a folder, machines too (the
+// file name holds the C library's part of the identity, so each keeps its own entries). After a store the
 // folder holds, of that kind, only this build's entries, at most maxKindBytes of them (1 GiB unless told; the
 // least recently stored or read go first), and no temporary a dead process left for more than 10 minutes; nothing
 // else in it is touched.

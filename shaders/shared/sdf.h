@@ -7,6 +7,10 @@
 
 HP_BEGIN
 HP_CONST(uint, SDF_COLLISION_STEPS, 3)  // pushes along the gradient per particle per constraint iteration
+// A distance field's gradient has length ~1. Where the trilinear interpolant's own is shorter than this, the cell
+// spans the middle of a feature thinner than two cells (the nodes on its two sides are equal, so the interpolant is
+// flat across it), and the push takes central differences over the neighbouring cells instead.
+HP_CONST(float, SDF_FLAT_GRADIENT, 0.5f)
 
 struct SdfHeader {
   vec4 originCell;  // xyz position of node (0, 0, 0) in head space, w node spacing

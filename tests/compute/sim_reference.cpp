@@ -61,7 +61,8 @@ glm::dvec3 resolvePearl(const glm::dvec3& p, const glm::dvec3& parent, double re
   return center + along * axis + (ringRadius / inPlaneLength) * inPlane;
 }
 // sdf_collide.glsl in double: the trilinear sample (plus the distance to the box outside it) and the interpolant's
-// own gradient from the same 8 nodes, up to SDF_COLLISION_STEPS pushes to the clearance. Returns (gradient, value).
+// own gradient from the same 8 nodes (central differences where it is flat: SDF_FLAT_GRADIENT), up to
+// SDF_COLLISION_STEPS pushes to the clearance. Returns (gradient, value).
 glm::dvec4 sampleGridGradient(const SdfGrid& g, const glm::dvec3& p) {
   const glm::dvec3 lo(g.origin), hi(g.upper());
   const glm::dvec3 clamped = glm::clamp(p, lo, hi), away = p - clamped;
@@ -87,6 +88,13 @@ glm::dvec4 sampleGridGradient(const SdfGrid& g, const glm::dvec3& p) {
   return {d, value};
 }
 
+// Central differences of the value at half a cell, where the interpolant is flat across its cell.
+glm::dvec3 centralGradient(const SdfGrid& g, const glm::dvec3& p) {
+  const double h = 0.5 * g.cell;
+  auto value = [&](const glm::dvec3& d) { return sampleGridGradient(g, p + d).w - sampleGridGradient(g, p - d).w; };
+  return glm::dvec3(value({h, 0, 0}), value({0, h, 0}), value({0, 0, h})) / (2.0 * h);
+}
+
 glm::dvec3 keepOutsideGrid(const SdfGrid& g, const glm::dvec3& p, const glm::dmat4& head, double clearance) {
   glm::dvec3 q = apply(glm::inverse(head), p);
   bool moved = false;
@@ -94,9 +102,11 @@ glm::dvec3 keepOutsideGrid(const SdfGrid& g, const glm::dvec3& p, const glm::dma
     const glm::dvec4 s = sampleGridGradient(g, q);
     const double depth = clearance - s.w;
     if (depth <= 0.0) break;
-    const double len = glm::length(glm::dvec3(s));
+    const double flat = double(gpu::SDF_FLAT_GRADIENT);
+    const glm::dvec3 grad = glm::dot(glm::dvec3(s), glm::dvec3(s)) < flat * flat ? centralGradient(g, q) : glm::dvec3(s);
+    const double len = glm::length(grad);
     if (len < 1e-6) break;
-    q += glm::dvec3(s) * (depth / len);
+    q += grad * (depth / len);
     moved = true;
   }
   return moved ? apply(head, q) : p;

@@ -3,10 +3,14 @@
 // violent motion, teleport, energy decay).
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+
 #include "samples/tools/simulation_driver.h"
 #include "engine/core/error.h"
 #include "engine/core/hair/default_head.h"
 #include "engine/core/hair/head_sdf.h"
+#include "engine/core/hair/sdf_grid.h"
 #include "tests/compute/sim_reference.h"
 #include "tests/support/thinned_head.h"
 #include "tests/support/vk_fixture.h"
@@ -96,6 +100,50 @@ TEST_F(VulkanTest, PearlsStayOutsideTheHeadFieldThroughSixHundredFramesOfShakeNo
     }
     EXPECT_GE(worst, -1e-4) << headAnimationName(animation) << ": deepest particle inside the head (m)";
   }
+}
+
+// A horizontal slab 1.5 cells thick across the hanging hair, its middle halfway between two node planes: the
+// nodes on both faces of the middle cell are equal, so the interpolant is flat across that cell and its own
+// gradient shows no way out. After one frame every free particle has left it anyway, on the device and in the CPU
+// reference (the push takes central differences where the gradient is flat: shaders/shared/sdf.h SDF_FLAT_GRADIENT).
+TEST_F(VulkanTest, PearlsLeaveASlabThinnerThanTwoCellsWhoseMiddleIsMidCell) {
+  HairAsset asset = thinnedDefaultHead(16);
+  asset.colliders.clear();
+  const std::uint32_t n = asset.guides.particlesPerGuide;
+  std::vector<float> middles;
+  glm::vec3 lo(1e9f), hi(-1e9f);
+  for (std::uint32_t g = 0; g < asset.guides.guideCount(); ++g) {
+    middles.push_back(asset.guides.guide(g)[n / 2].y);
+    for (const glm::vec3& p : asset.guides.guide(g)) lo = glm::min(lo, p), hi = glm::max(hi, p);
+  }
+  std::nth_element(middles.begin(), middles.begin() + std::ptrdiff_t(middles.size() / 2), middles.end());
+  lo -= glm::vec3(0.1f);
+  hi += glm::vec3(0.1f);
+  const float cell = 0.01f;
+  const float originY = gridCovering(lo, hi, cell).origin.y;
+  const float y0 = originY + (std::floor((middles[middles.size() / 2] - originY) / cell) + 0.5f) * cell;
+  auto slab = [&](const glm::vec3& p) { return std::abs(p.y - y0) - 0.75f * cell; };
+  asset.sdf = std::make_shared<const SdfGrid>(sampleField(slab, lo, hi, cell));
+  std::size_t inMiddleCell = 0;
+  for (std::size_t i = 0; i < asset.guides.positions.size(); ++i)
+    inMiddleCell += i % n != 0 && std::abs(asset.guides.positions[i].y - y0) < 0.5f * cell;
+  ASSERT_GE(inMiddleCell, 3u) << "the slab must hold particles where the interpolant is flat, or this proves nothing";
+
+  const SimulationParams params;
+  SimulatePass pass(*ctx, asset, params);
+  SimulationDriver driver(*ctx, pass, HeadAnimation::None, assetHeadRadius(asset));
+  hp::test::SimReference reference(pass, params, glm::mat4(1.0f));
+  reference.step(driver.nextMotion());
+  driver.runFrames(1);
+  const std::vector<glm::vec4> gpu = driver.readPositions();
+  double deepestGpu = 1e9, deepestCpu = 1e9;
+  for (std::size_t i = 0; i < gpu.size(); ++i)
+    if (i % n != 0) {
+      deepestGpu = std::min(deepestGpu, double(slab(glm::vec3(gpu[i]))));
+      deepestCpu = std::min(deepestCpu, double(slab(glm::vec3(reference.positions()[i]))));
+    }
+  EXPECT_GE(deepestGpu, -1e-4) << "device: deepest particle inside the slab (m)";
+  EXPECT_GE(deepestCpu, -1e-4) << "reference: deepest particle inside the slab (m)";
 }
 
 TEST_F(VulkanTest, TeleportingTheHeadTenRadiiAwayRecovers) {

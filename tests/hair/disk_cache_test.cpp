@@ -130,6 +130,18 @@ TEST(DiskCache, ALinkAtAnEntrysPathIsReplacedNotWrittenThrough) {
   EXPECT_EQ(cache.load("tables", bytesOf("k")), bytesOf("v"));
 }
 
+// A link at an entry's path is not followed on reading, even to a whole entry of the same key elsewhere.
+TEST(DiskCache, ALinkToAValidEntryIsNotRead) {
+  test::TempDir dir;
+  std::filesystem::create_directory(dir / "elsewhere");
+  std::filesystem::create_directory(dir / "cache");
+  const DiskCache elsewhere(dir / "elsewhere"), cache(dir / "cache");
+  elsewhere.store("tables", bytesOf("k"), bytesOf("v"));
+  ASSERT_EQ(elsewhere.load("tables", bytesOf("k")), bytesOf("v"));
+  std::filesystem::create_symlink(elsewhere.entryPath("tables", bytesOf("k")), cache.entryPath("tables", bytesOf("k")));
+  EXPECT_FALSE(cache.load("tables", bytesOf("k")));
+}
+
 // Past its byte budget a kind loses its least recently used entries; a load counts as a use.
 TEST(DiskCache, AKindKeepsItsMostRecentlyUsedEntriesWithinItsBudget) {
   test::TempDir dir;
@@ -190,19 +202,25 @@ TEST(DiskCache, AFifoOrFolderAtAnEntrysPathIsAMiss) {
   EXPECT_FALSE(cache.load("tables", bytesOf("folder")));
 }
 
+// Another build's entry of the kind goes; this build's entry made on another machine (its C library's part of the
+// identity: the name's 8-digit field) stays, as do other kinds' entries, names that only look like entries, and the
+// user's files.
 TEST(DiskCache, AStoreRemovesOtherBuildsEntriesOfItsKindOnly) {
   test::TempDir dir;
   const DiskCache cache(dir.path());
-  const std::string otherBuild(32, 'f'), otherHash(16, '0');
+  const std::string otherBuild(32, 'f'), otherMachine(8, '0'), hash(16, '0');
   ASSERT_NE(otherBuild, buildIdentity());
-  test::writeText(dir / ("tables-" + otherBuild + "-" + otherHash + ".bin"), "an older build's");
-  test::writeText(dir / ("transfer-" + otherBuild + "-" + otherHash + ".bin"), "another kind's");
-  test::writeText(dir / "notes.txt", "the user's");
+  const std::string older = "tables-" + otherBuild + "-" + otherMachine + "-" + hash + ".bin";
+  const std::string otherKind = "transfer-" + otherBuild + "-" + otherMachine + "-" + hash + ".bin";
+  const std::string otherMachines = "tables-" + std::string(buildIdentity()) + "-" + otherMachine + "-" + hash + ".bin";
+  const std::string notHex = "tables-" + std::string(32, 'g') + "-" + otherMachine + "-" + hash + ".bin";
+  for (const std::string& name : {older, otherKind, otherMachines, notHex, std::string("notes.txt")})
+    test::writeText(dir / name, "some bytes");
   cache.store("tables", bytesOf("kept"), bytesOf("v"));
   cache.store("tables", bytesOf("kept too"), bytesOf("w"));
-  EXPECT_FALSE(std::filesystem::exists(dir / ("tables-" + otherBuild + "-" + otherHash + ".bin")));
-  EXPECT_TRUE(std::filesystem::exists(dir / ("transfer-" + otherBuild + "-" + otherHash + ".bin")));
-  EXPECT_TRUE(std::filesystem::exists(dir / "notes.txt"));
+  EXPECT_FALSE(std::filesystem::exists(dir / older));
+  for (const std::string& name : {otherKind, otherMachines, notHex, std::string("notes.txt")})
+    EXPECT_TRUE(std::filesystem::exists(dir / name)) << name;
   EXPECT_EQ(cache.load("tables", bytesOf("kept")), bytesOf("v"));
   EXPECT_EQ(cache.load("tables", bytesOf("kept too")), bytesOf("w"));
 }
