@@ -1,8 +1,10 @@
 #include "compute/head/skin_transfer_buffer.h"
 
 #include <memory>
+#include <span>
 
 #include "engine/core/error.h"
+#include "engine/core/fnv1a.h"
 #include "engine/core/hair/skin_transfer_cache.h"
 #include "engine/core/recent_cache.h"
 #include "engine/vk/transfer.h"
@@ -23,9 +25,8 @@ std::shared_ptr<const std::vector<float>> packed(const HeadMesh& mesh, std::uint
 // FNV-1a over a span's bytes, then its length (two meshes whose arrays split the same bytes differently differ).
 template <typename T>
 void hashInto(std::uint64_t& h, const std::vector<T>& values) {
-  const auto* bytes = reinterpret_cast<const unsigned char*>(values.data());
-  for (std::size_t i = 0; i < values.size() * sizeof(T); ++i) h = (h ^ bytes[i]) * 1099511628211ull;
-  h = (h ^ values.size()) * 1099511628211ull;
+  h = fnv1a(std::as_bytes(std::span(values)), h);
+  h = (h ^ values.size()) * kFnvPrime;
 }
 }  // namespace
 
@@ -40,7 +41,7 @@ SkinTransferBuffer::SkinTransferBuffer(const vk::Context& ctx, const HeadMesh& m
 }
 
 std::uint64_t fingerprint(const HeadMesh& mesh) {
-  std::uint64_t h = 14695981039346656037ull;
+  std::uint64_t h = kFnvOffsetBasis;
   hashInto(h, mesh.positions);
   hashInto(h, mesh.normals);
   hashInto(h, mesh.indices);

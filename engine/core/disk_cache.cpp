@@ -17,6 +17,7 @@
 #include "engine/core/build_identity.h"
 #include "engine/core/byte_stream.h"
 #include "engine/core/error.h"
+#include "engine/core/fnv1a.h"
 #include "engine/core/hair/atomic_write.h"
 
 namespace hp {
@@ -28,11 +29,6 @@ constexpr Magic kMagic = {'h', 'p', 'c', 'a', 'c', 'h', 'e', '2'};  // the last 
 constexpr std::uintmax_t kMaxEntryBytes = std::uintmax_t(1) << 30;
 // A temporary older than this was left by a process that died while writing it.
 constexpr auto kStaleTemporary = std::chrono::minutes(10);
-
-std::uint64_t fnv1a(std::span<const std::byte> bytes, std::uint64_t h = 14695981039346656037ull) {
-  for (std::byte b : bytes) h = (h ^ std::to_integer<std::uint64_t>(b)) * 1099511628211ull;
-  return h;
-}
 
 std::span<const std::byte> bytesOf(std::string_view text) { return std::as_bytes(std::span(text.data(), text.size())); }
 
@@ -95,8 +91,8 @@ std::optional<std::vector<std::byte>> entryValue(std::span<const std::byte> file
   if (ByteReader(file.last(sizeof(std::uint64_t))).get<std::uint64_t>() != fnv1a(body)) return std::nullopt;
   ByteReader in(body);
   if (in.get<Magic>() != kMagic || in.getString() != entryIdentity() || in.getString() != kind) return std::nullopt;
-  const std::vector<std::byte> storedKey = in.getVector<std::byte>();
-  if (!std::ranges::equal(storedKey, key)) return std::nullopt;
+  if (in.get<std::uint64_t>() != key.size() || !std::ranges::equal(in.take(key.size(), "the key"), key))
+    return std::nullopt;  // compared where it lies: a mesh's key is megabytes
   std::vector<std::byte> value = in.getVector<std::byte>();
   if (!in.atEnd()) return std::nullopt;
   return value;

@@ -10,6 +10,7 @@
 #include "engine/core/build_identity.h"
 #include "engine/core/byte_stream.h"
 #include "engine/core/disk_cache.h"
+#include "engine/core/fnv1a.h"
 #include "tests/hair/hair_test_util.h"
 
 namespace hp {
@@ -17,12 +18,6 @@ namespace {
 std::vector<std::byte> bytesOf(const std::string& s) {
   const auto b = std::as_bytes(std::span(s.data(), s.size()));
   return {b.begin(), b.end()};
-}
-
-std::uint64_t fnv1a(std::span<const std::byte> bytes) {
-  std::uint64_t h = 14695981039346656037ull;
-  for (std::byte b : bytes) h = (h ^ std::to_integer<std::uint64_t>(b)) * 1099511628211ull;
-  return h;
 }
 
 std::size_t entries(const std::filesystem::path& folder) {
