@@ -159,14 +159,19 @@ void runSimulate(const SimulateOptions& opt) {
   progress.finish();
   const std::vector<glm::vec4> positions = driver.readPositions();  // the final state, read back once
   const std::vector<glm::vec4> previous = driver.readPrevious();
-  if (!opt.out.empty())
-    hp::writeHairFile(opt.out, hp::guidesToHair(finalGuides(positions, pass.particlesPerGuide()),
-                                                "hairpipe simulate: final guides"));
   hp::cli::checkValidation(*ctx);
   nlohmann::json report = simulateReport(*ctx, pass, driver, asset, positions, previous, opt.frames, animation);
   if (clip.clip) report["animation"] = opt.animate;
   if (opt.json) std::cout << report.dump(2) << "\n";
   else printReport(report);
+  // A diverged run is a failure, and its guides are not written: the report above says where it stood.
+  const std::size_t nonFinite = report["nan_count"].get<std::size_t>();
+  if (nonFinite > 0)
+    throw hp::Error("the simulation diverged: " + std::to_string(nonFinite) + " of " + std::to_string(positions.size()) +
+                    " particles are not finite" + (opt.out.empty() ? "" : "; " + opt.out + " was not written"));
+  if (!opt.out.empty())
+    hp::writeHairFile(opt.out, hp::guidesToHair(finalGuides(positions, pass.particlesPerGuide()),
+                                                "hairpipe simulate: final guides"));
 }
 
 void setupSimulate(CLI::App& app) {
