@@ -1,6 +1,7 @@
 #include "compute/head/head_pass.h"
 
 #include "engine/core/error.h"
+#include "engine/vk/application_attachments.h"
 #include "engine/vk/transfer.h"
 #include "shaders/shared/render.h"
 
@@ -45,9 +46,7 @@ HeadPass::HeadPass(const vk::Context& ctx, const HeadMesh& mesh, std::shared_ptr
   vk::GraphicsPipelineDesc desc;
   desc.vertexShader = "head.vert";
   desc.fragmentShader = "head.frag";
-  desc.colorFormats = {formats.color};
-  desc.depthFormat = formats.depth;
-  desc.samples = formats.samples;
+  vk::setApplicationAttachments(desc, formats);
   desc.depthTest = desc.depthWrite = true;
   desc.cullMode = VK_CULL_MODE_BACK_BIT;
   desc.sets = {set_.layout()};

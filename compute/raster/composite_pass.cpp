@@ -1,5 +1,6 @@
 #include "compute/raster/composite_pass.h"
 
+#include "engine/vk/application_attachments.h"
 #include "engine/vk/context.h"
 #include "shaders/shared/raster.h"
 
@@ -18,9 +19,7 @@ CompositePass::CompositePass(const vk::Context& ctx, const hairpipe::AttachmentF
   vk::GraphicsPipelineDesc desc;
   desc.vertexShader = "composite.vert";
   desc.fragmentShader = "composite.frag";
-  desc.colorFormats = {formats.color};
-  desc.depthFormat = formats.depth;
-  desc.samples = formats.samples;
+  vk::setApplicationAttachments(desc, formats);
   desc.blend = vk::BlendMode::Premultiplied;
   desc.sets = {set_.layout()};
   desc.pushSize = sizeof(std::uint32_t);  // which samples (COMPOSITE_*)

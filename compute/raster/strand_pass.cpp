@@ -1,5 +1,6 @@
 #include "compute/raster/strand_pass.h"
 
+#include "engine/vk/application_attachments.h"
 #include "shaders/shared/render.h"
 
 namespace hp::render {
@@ -26,9 +27,7 @@ std::shared_ptr<const vk::GraphicsPipeline> makeStrandPipeline(const vk::Context
   vk::GraphicsPipelineDesc desc;
   desc.vertexShader = "strands.vert";
   desc.fragmentShader = "strands.frag";
-  desc.colorFormats = {formats.color};
-  desc.depthFormat = formats.depth;
-  desc.samples = formats.samples;
+  vk::setApplicationAttachments(desc, formats);
   desc.depthTest = desc.depthWrite = true;
   // With MSAA the fragment shader writes its coverage as a dithered sample mask (order-independent);
   // without MSAA, coverage is alpha and blends.

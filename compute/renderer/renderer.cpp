@@ -8,13 +8,15 @@
 #include "engine/core/error.h"
 #include "engine/core/shading/lut_cache.h"
 #include "compute/renderer/frame_recorder.h"
+#include "engine/vk/application_attachments.h"
 #include "engine/vk/context.h"
 
 namespace hp {
 namespace {
-const RendererSettings& validated(const RendererSettings& s, VkPhysicalDeviceType type) {
+const RendererSettings& validated(const vk::Context& ctx, const RendererSettings& s) {
   s.validate();
-  if (s.motionVectors && resolveRasterMode(s.raster, type) != RasterMode::Compute)
+  vk::requireAttachmentSupport(ctx, s.formats, resolveRasterMode(s.raster, ctx.properties().deviceType) == RasterMode::Compute);
+  if (s.motionVectors && resolveRasterMode(s.raster, ctx.properties().deviceType) != RasterMode::Compute)
     throw Error("RendererSettings.motionVectors needs the compute raster: the graphics raster writes no motion");
   return s;
 }
@@ -22,7 +24,7 @@ const RendererSettings& validated(const RendererSettings& s, VkPhysicalDeviceTyp
 
 Renderer::Renderer(const vk::Context& ctx, const RendererSettings& settings)
     : ctx_(ctx),
-      settings_(validated(settings, ctx.properties().deviceType)),
+      settings_(validated(ctx, settings)),
       raster_(resolveRasterMode(settings.raster, ctx.properties().deviceType)),
       pipelines_(ctx, settings.pipelineCache),
       shadows_(std::make_unique<render::ShadowMaps>(ctx, settings.opacity, &pipelines_, settings.shadowedLights)),
@@ -80,6 +82,7 @@ void Renderer::destroyInstance(std::unique_ptr<HairInstance> instance) {
 
 void Renderer::setRasterTarget(VkExtent2D extent, VkImageView depth, std::span<HairInstance* const> instances) {
   if (raster_ != RasterMode::Compute) throw Error("Renderer::setRasterTarget: the raster mode is not compute");
+  if (depth == VK_NULL_HANDLE) throw Error("Renderer::setRasterTarget: the depth view is VK_NULL_HANDLE");
   for (const HairInstance* i : instances)
     if (!i || &i->renderer_ != this) throw Error("Renderer: an instance is null or belongs to another Renderer");
   std::shared_ptr<ComputeRaster> target;
@@ -207,6 +210,10 @@ void Renderer::setOpacityTuning(const render::OpacitySettings& opacity) {
 void Renderer::beginFrame(std::uint64_t frame, std::span<HairInstance* const> instances) {
   for (const HairInstance* i : instances)
     if (!i || &i->renderer_ != this) throw Error("Renderer: an instance is null or belongs to another Renderer");
+  // Retirement counts frames: a number that went back would free what frames in flight still read.
+  if (lastFrame_ && frame < *lastFrame_)
+    throw Error("Renderer: frame " + std::to_string(frame) + " comes after frame " + std::to_string(*lastFrame_) +
+                " was recorded: frame numbers must not go back");
   if (!lastFrame_ || frame > *lastFrame_) lastFrame_ = frame;
   // Frame `frame - framesInFlight` is complete (the application waited for it): what was retired by then goes.
   std::erase_if(retired_, [&](const Retired& r) { return !r.after || frame >= *r.after + settings_.framesInFlight; });

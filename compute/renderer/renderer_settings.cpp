@@ -7,6 +7,7 @@
 #include "engine/core/error.h"
 #include "engine/core/number_text.h"
 #include "engine/core/hair/finite.h"
+#include "engine/vk/application_attachments.h"
 
 namespace hp {
 RasterMode resolveRasterMode(RasterMode mode, VkPhysicalDeviceType type) {
@@ -20,8 +21,7 @@ RasterMode resolveRasterMode(RasterMode mode, VkPhysicalDeviceType type) {
 void RendererSettings::validate() const {
   render::validate(opacity);
   rasterSettings.validate();
-  // The strand shader builds its coverage sample mask in 32 bits (and gl_SampleMask[0] holds 32).
-  if (formats.samples > VK_SAMPLE_COUNT_16_BIT) throw Error("RendererSettings.formats.samples must be at most 16");
+  vk::validateAttachmentFormats(formats);  // samples at most 16: the strand shader's coverage mask is 32 bits
   if (framesInFlight < 1 || framesInFlight > kMaxFramesInFlight)
     throw Error("RendererSettings.framesInFlight must be in [1, " + std::to_string(kMaxFramesInFlight) + "]");
   if (maxViewsPerFrame < 1 || maxViewsPerFrame > kMaxViewsPerFrame)

@@ -202,6 +202,7 @@ GraphicsPipeline::GraphicsPipeline(const Context& ctx, const GraphicsPipelineDes
   rendering.colorAttachmentCount = static_cast<std::uint32_t>(d.colorFormats.size());
   rendering.pColorAttachmentFormats = d.colorFormats.data();
   rendering.depthAttachmentFormat = d.depthFormat;
+  rendering.stencilAttachmentFormat = d.stencilFormat;
 
   VkGraphicsPipelineCreateInfo info{VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO, &rendering};
   info.stageCount = static_cast<std::uint32_t>(stages.size());

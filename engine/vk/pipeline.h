@@ -73,6 +73,7 @@ struct GraphicsPipelineDesc {
   std::string fragmentShader;
   std::vector<VkFormat> colorFormats;
   VkFormat depthFormat = VK_FORMAT_UNDEFINED;
+  VkFormat stencilFormat = VK_FORMAT_UNDEFINED;  // the rendering's stencil attachment (none: UNDEFINED)
   VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
   BlendMode blend = BlendMode::None;  // applied to every color attachment
   bool depthTest = false;

@@ -33,7 +33,10 @@
 namespace {
 constexpr std::uint32_t kWidth = 160, kHeight = 120;
 constexpr VkFormat kColor = VK_FORMAT_R8G8B8A8_UNORM;  // the app's own choice of formats
-constexpr VkFormat kDepth = VK_FORMAT_D32_SFLOAT;
+// Depth with stencil, as a game's main pass has it (pickDepthFormat: the first the device supports), attached
+// as both depth and stencil; the compute rasterizer samples its depth aspect.
+constexpr VkFormat kDepthCandidates[] = {VK_FORMAT_D32_SFLOAT_S8_UINT, VK_FORMAT_D24_UNORM_S8_UINT};
+constexpr VkImageAspectFlags kDepthAspects = VK_IMAGE_ASPECT_DEPTH_BIT | VK_IMAGE_ASPECT_STENCIL_BIT;
 constexpr std::uint32_t kFramesInFlight = 2;
 
 void check(VkResult result, const char* what) {
@@ -85,6 +88,8 @@ struct App {
   VkFence fences[kFramesInFlight] = {};
   bool pending[kFramesInFlight] = {};
   Attachment color, depth;
+  VkFormat depthFormat = VK_FORMAT_UNDEFINED;
+  VkImageView depthSampled = VK_NULL_HANDLE;  // the depth aspect alone, for the compute rasterizer
 
   void createInstance(bool validation) {
     VkApplicationInfo appInfo{VK_STRUCTURE_TYPE_APPLICATION_INFO};
@@ -131,6 +136,20 @@ struct App {
     constexpr VkQueueFlags kNeeded = VK_QUEUE_GRAPHICS_BIT | VK_QUEUE_COMPUTE_BIT;
     while (family < families && (props[family].queueFlags & kNeeded) != kNeeded) ++family;
     if (family == families) throw std::runtime_error("no graphics+compute queue");
+    pickDepthFormat();
+  }
+
+  void pickDepthFormat() {
+    constexpr VkFormatFeatureFlags kNeeded = VK_FORMAT_FEATURE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT;
+    for (VkFormat f : kDepthCandidates) {
+      VkFormatProperties props{};
+      vkGetPhysicalDeviceFormatProperties(physical, f, &props);
+      if ((props.optimalTilingFeatures & kNeeded) == kNeeded) {
+        depthFormat = f;
+        return;
+      }
+    }
+    throw std::runtime_error("no sampled depth/stencil format");
   }
 
   void createDevice() {
@@ -176,6 +195,17 @@ struct App {
     return memory;
   }
 
+  VkImageView createView(VkImage image, VkFormat format, VkImageAspectFlags aspect) const {
+    VkImageViewCreateInfo vi{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
+    vi.image = image;
+    vi.viewType = VK_IMAGE_VIEW_TYPE_2D;
+    vi.format = format;
+    vi.subresourceRange = {aspect, 0, 1, 0, 1};
+    VkImageView view = VK_NULL_HANDLE;
+    check(vkCreateImageView(device, &vi, nullptr, &view), "vkCreateImageView");
+    return view;
+  }
+
   Attachment createAttachment(VkFormat format, VkImageUsageFlags usage, VkImageAspectFlags aspect) const {
     Attachment a;
     VkImageCreateInfo ii{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
@@ -190,12 +220,7 @@ struct App {
     vkGetImageMemoryRequirements(device, a.image, &req);
     a.memory = allocate(req, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
     check(vkBindImageMemory(device, a.image, a.memory, 0), "vkBindImageMemory");
-    VkImageViewCreateInfo vi{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
-    vi.image = a.image;
-    vi.viewType = VK_IMAGE_VIEW_TYPE_2D;
-    vi.format = format;
-    vi.subresourceRange = {aspect, 0, 1, 0, 1};
-    check(vkCreateImageView(device, &vi, nullptr, &a.view), "vkCreateImageView");
+    a.view = createView(a.image, format, aspect);
     return a;
   }
 
@@ -227,6 +252,7 @@ struct App {
   void destroy() {
     if (device) vkDeviceWaitIdle(device);
     if (device) destroyAttachment(color);
+    if (depthSampled) vkDestroyImageView(device, depthSampled, nullptr);
     if (device) destroyAttachment(depth);
     for (VkFence f : fences)
       if (f) vkDestroyFence(device, f, nullptr);
@@ -270,8 +296,8 @@ void beginAttachments(VkCommandBuffer cmd, const App& app) {
              VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT | VK_PIPELINE_STAGE_2_COPY_BIT,
              VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
              VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT);
-  transition(cmd, app.depth.image, VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
-             VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, kDepthStages, VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
+  transition(cmd, app.depth.image, kDepthAspects, VK_IMAGE_LAYOUT_UNDEFINED,
+             VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL, kDepthStages, VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
              kDepthStages,
              VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT | VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT);
 }
@@ -289,7 +315,7 @@ VkRenderingAttachmentInfo attachmentInfo(VkImageView view, VkImageLayout layout,
 
 // [embed-readme-begin]
 // One frame of the application: hairpipe's update and shadows outside rendering, then the application's
-// own rendering (its colour + depth attachments) with hairpipe's draw inside it. With the compute
+// own rendering (its colour, depth and stencil attachments) with hairpipe's draw inside it. With the compute
 // rasterizer, the hair is drawn between that rendering and a second one of the same attachments.
 void recordFrame(VkCommandBuffer cmd, const App& app, hairpipe::Renderer& renderer, std::uint64_t frame,
                  std::span<hairpipe::Instance* const> heads, std::span<const hairpipe::Light> lights,
@@ -305,7 +331,7 @@ void recordFrame(VkCommandBuffer cmd, const App& app, hairpipe::Renderer& render
                                                    VK_ATTACHMENT_STORE_OP_STORE, {{{0.2f, 0.25f, 0.3f, 1.0f}}});
   VkClearValue far{};
   far.depthStencil = {1.0f, 0};
-  VkRenderingAttachmentInfo depth = attachmentInfo(app.depth.view, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL,
+  VkRenderingAttachmentInfo depth = attachmentInfo(app.depth.view, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL,
                                                    compute ? VK_ATTACHMENT_STORE_OP_STORE : VK_ATTACHMENT_STORE_OP_DONT_CARE, far);
   VkRenderingInfo ri{VK_STRUCTURE_TYPE_RENDERING_INFO};
   ri.renderArea = {{0, 0}, {kWidth, kHeight}};
@@ -313,18 +339,19 @@ void recordFrame(VkCommandBuffer cmd, const App& app, hairpipe::Renderer& render
   ri.colorAttachmentCount = 1;
   ri.pColorAttachments = &color;
   ri.pDepthAttachment = &depth;
+  ri.pStencilAttachment = &depth;  // one combined image: RendererSettings::formats.stencil says so
   vkCmdBeginRendering(cmd, &ri);
   check(renderer.recordDraw(cmd, frame, view, heads));      // heads (+ hair ribbons in graphics mode)
   vkCmdEndRendering(cmd);
   if (compute) {
     constexpr VkPipelineStageFlags2 kDepthStages =
         VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT;
-    transition(cmd, app.depth.image, VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL,
+    transition(cmd, app.depth.image, kDepthAspects, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL,
                VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, kDepthStages, VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
                VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
     check(renderer.recordRaster(cmd, frame, view));         // the hair of every head, against the depth
-    transition(cmd, app.depth.image, VK_IMAGE_ASPECT_DEPTH_BIT, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
-               VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_NONE,
+    transition(cmd, app.depth.image, kDepthAspects, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+               VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_NONE,
                kDepthStages, VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT | VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT);
     transition(cmd, app.color.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
                VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
@@ -367,7 +394,7 @@ void renderFrames(App& app, std::uint32_t frames, hairpipe::RasterMode raster) {
   hairpipe::Context ctx = take(hairpipe::Context::adopt(
       {vkGetInstanceProcAddr, app.instance, app.physical, app.device, app.family, app.queue, true}));
   hairpipe::RendererSettings rs;
-  rs.formats = {kColor, kDepth, VK_SAMPLE_COUNT_1_BIT};  // your attachments
+  rs.formats = {kColor, app.depthFormat, VK_SAMPLE_COUNT_1_BIT, app.depthFormat};  // your attachments
   rs.framesInFlight = kFramesInFlight;
   rs.raster = raster;
   rs.shadowedLights = 2;  // the key and the rim cast hair shadows
@@ -384,7 +411,7 @@ void renderFrames(App& app, std::uint32_t frames, hairpipe::RasterMode raster) {
   hairpipe::Instance jaw = take(renderer.createInstance(asset, skinned));
   hairpipe::Instance other = take(renderer.createInstance(asset, rigid, toHairpipe(rigidPlace)));
   hairpipe::Instance* heads[] = {&jaw, &other};
-  if (raster == hairpipe::RasterMode::Compute) check(renderer.setRasterTarget({kWidth, kHeight}, app.depth.view, heads));
+  if (raster == hairpipe::RasterMode::Compute) check(renderer.setRasterTarget({kWidth, kHeight}, app.depthSampled, heads));
 
   const hairpipe::View view = take(hairpipe::makeView(
       {{0.751f, 0.128f, 1.023f}, {0.16f, -0.08f, 0.0f}, {0.0f, 1.0f, 0.0f}, 0.6109f, 0.024f, 24.0f}, {kWidth, kHeight}));
@@ -483,8 +510,9 @@ int run(bool validation, std::uint32_t frames, hairpipe::RasterMode raster, cons
     app.color = app.createAttachment(kColor, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
                                      VK_IMAGE_ASPECT_COLOR_BIT);
     // SAMPLED: the compute rasterizer reads the depth (renderer.h lists each image's usage).
-    app.depth = app.createAttachment(kDepth, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
-                                     VK_IMAGE_ASPECT_DEPTH_BIT);
+    app.depth = app.createAttachment(app.depthFormat, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
+                                     kDepthAspects);
+    app.depthSampled = app.createView(app.depth.image, app.depthFormat, VK_IMAGE_ASPECT_DEPTH_BIT);
     renderFrames(app, frames, raster);
     writePng(out, readColor(app));
     app.destroy();

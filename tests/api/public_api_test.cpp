@@ -144,6 +144,21 @@ TEST_F(PublicApi, RendererSettingsAreRefusedByField) {
   s.shadingSpacing = -1.0f;
   EXPECT_THAT(failureOf(hairpipe::Renderer::create(*ctx_, s)), HasSubstr("shadingSpacing must be in [0, 4096]"));
   s = {};
+  s.formats.depth = VK_FORMAT_R32_SFLOAT;
+  EXPECT_THAT(failureOf(hairpipe::Renderer::create(*ctx_, s)), HasSubstr("formats.depth must be a depth format"));
+  s = {};
+  s.formats.stencil = VK_FORMAT_D32_SFLOAT_S8_UINT;  // with a depth format that has no stencil
+  EXPECT_THAT(failureOf(hairpipe::Renderer::create(*ctx_, s)), HasSubstr("formats.stencil must be VK_FORMAT_UNDEFINED"));
+  s = {};
+  s.formats.color = VK_FORMAT_D32_SFLOAT;
+  EXPECT_THAT(failureOf(hairpipe::Renderer::create(*ctx_, s)), HasSubstr("formats.color must be a colour format"));
+  s = {};
+  s.formats.samples = VkSampleCountFlagBits(3);
+  EXPECT_THAT(failureOf(hairpipe::Renderer::create(*ctx_, s)), HasSubstr("samples must be 1, 2, 4, 8 or 16, got 3"));
+  s = {};
+  s.formats.color = VK_FORMAT_R32G32B32A32_UINT;  // an integer format: no blending on any device
+  EXPECT_THAT(failureOf(hairpipe::Renderer::create(*ctx_, s)), HasSubstr("is not a blendable colour attachment on"));
+  s = {};
   s.pipelineCache.assign(12, 0);
   EXPECT_THAT(failureOf(hairpipe::Renderer::create(*ctx_, s)),
               HasSubstr("pipeline cache data of 12 bytes is shorter than its 32-byte header"));
@@ -366,6 +381,18 @@ TEST_F(PublicApi, RecordCallsRefuseBadFramesBeforeRecording) {
   EXPECT_THAT(failureOf(renderer_->setRasterTarget({64, 64}, VK_NULL_HANDLE, heads)), HasSubstr("not compute"));
   EXPECT_THAT(failureOf(renderer_->recordRaster(VK_NULL_HANDLE, 0, hairpipe::View{})), HasSubstr("setRasterTarget"));
   EXPECT_EQ(renderer_->raster(), hairpipe::RasterMode::Graphics);
+}
+
+TEST_F(PublicApi, AComputeRasterTargetWithoutADepthViewIsRefused) {
+  hairpipe::RendererSettings s;
+  s.formats = {VK_FORMAT_R8G8B8A8_UNORM, VK_FORMAT_D32_SFLOAT, VK_SAMPLE_COUNT_1_BIT};
+  s.raster = hairpipe::RasterMode::Compute;
+  hairpipe::Result<hairpipe::Renderer> r = hairpipe::Renderer::create(*ctx_, s);
+  ASSERT_TRUE(r.ok()) << r.message();
+  hairpipe::Result<hairpipe::Instance> head = r.value().createInstance(*asset_, {});
+  ASSERT_TRUE(head.ok()) << head.message();
+  hairpipe::Instance* heads[] = {&head.value()};
+  EXPECT_THAT(failureOf(r.value().setRasterTarget({64, 64}, VK_NULL_HANDLE, heads)), HasSubstr("the depth view is VK_NULL_HANDLE"));
 }
 
 TEST_F(PublicApi, InstancesOfAnotherRendererAreRefused) {

@@ -167,6 +167,13 @@ TEST_F(VulkanTest, SeveralViewsOfOneFrameReuseItsShadows) {
   EXPECT_EQ(differingPixels(front, left.readDisplay()), 0u);
   b.index = renderer.settings().maxViewsPerFrame;
   EXPECT_THROW(renderer.recordDraw(VK_NULL_HANDLE, 7, b, one), hp::Error);
+  // A frame number that goes back is refused before anything is recorded (retirement counts frames).
+  try {
+    renderer.recordUpdate(VK_NULL_HANDLE, 6, one);
+    ADD_FAILURE() << "frame 6 after frame 7 was accepted";
+  } catch (const hp::Error& e) {
+    EXPECT_NE(std::string(e.what()).find("frame 6 comes after frame 7 was recorded"), std::string::npos) << e.what();
+  }
 }
 
 namespace {

@@ -6,7 +6,7 @@
 // failed record call has recorded nothing (its arguments are checked first).
 //
 // Frames in flight: `frame` is the application's frame number, one more per frame (it may start
-// anywhere). When it records frame F the application has waited for frame F - framesInFlight to
+// anywhere; a record call whose frame is below one already recorded is refused). When it records frame F the application has waited for frame F - framesInFlight to
 // complete, and it submits frames in order on one queue. Setters may be called between frames while
 // earlier ones are in flight: what the GPU may still read is retired and destroyed framesInFlight frames
 // later by a record call, never by waiting on the device. After the first recorded frame, the device
@@ -33,14 +33,15 @@
 //   recordDraw(cmd, frame, view, instances)   inside the application's vkCmdBeginRendering (dynamic
 //       rendering, begun by the application) whose attachments have RendererSettings::formats and cover
 //       view.extent from (0, 0): colour in COLOR_ATTACHMENT_OPTIMAL, depth in DEPTH_ATTACHMENT_OPTIMAL or
-//       DEPTH_STENCIL_ATTACHMENT_OPTIMAL. Depth convention: test LESS_OR_EQUAL against a depth cleared to
+//       DEPTH_STENCIL_ATTACHMENT_OPTIMAL, a stencil attachment exactly where formats.stencil names one
+//       (the depth's combined image; hairpipe neither tests nor writes stencil). Depth convention: test LESS_OR_EQUAL against a depth cleared to
 //       1 (reversed-Z is not supported). Draws the heads of instances with InstanceSettings::drawHead
 //       (depth test and write, colour write) and, in RasterMode::Graphics, the hair (ribbons, depth
 //       tested, blended) in EARLY/LATE_FRAGMENT_TESTS and COLOR_ATTACHMENT_OUTPUT. Sets its own viewport
 //       (the whole extent, y up: a negative-height viewport for OpenGL-style projections) and scissor.
 // RasterMode::Compute draws the hair after the heads, against the depth (setRasterTarget once, outside
 // the frame loop, with a view of the application's depth image: format and samples of
-// RendererSettings::formats, usage DEPTH_STENCIL_ATTACHMENT | SAMPLED, aspect DEPTH; a new depth image
+// RendererSettings::formats, usage DEPTH_STENCIL_ATTACHMENT | SAMPLED, the view's aspect DEPTH alone; a new depth image
 // needs a new setRasterTarget). One view per frame. Per frame:
 //   1. recordDraw as above (heads only) in a rendering whose depth attachment has STORE_OP_STORE;
 //      the application ends that rendering.

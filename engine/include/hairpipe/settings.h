@@ -28,9 +28,12 @@ enum class Scattering { Single, Dual };
 enum class OpacityRaster { Auto, Compute, Graphics };
 
 struct AttachmentFormats {  // the application's attachments recordDraw / recordComposite draw into
-  VkFormat color = VK_FORMAT_R16G16B16A16_SFLOAT;
-  VkFormat depth = VK_FORMAT_D32_SFLOAT;
-  VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_4_BIT;
+  VkFormat color = VK_FORMAT_R16G16B16A16_SFLOAT;  // its one colour attachment: blendable
+  VkFormat depth = VK_FORMAT_D32_SFLOAT;           // D16, D32, or a combined D16S8, D24S8 or D32S8
+  VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_4_BIT;  // of both: 1, 2, 4, 8 or 16
+  // Its stencil attachment: VK_FORMAT_UNDEFINED where the rendering has none (a combined depth attached as
+  // depth only), else the depth's own combined format (the same image view as depth and stencil).
+  VkFormat stencil = VK_FORMAT_UNDEFINED;
 };
 
 // The opacity shadow maps the Renderer shares among its instances (one light).

@@ -1,0 +1,63 @@
+#include "engine/vk/application_attachments.h"
+
+#include <bit>
+#include <string>
+
+#include "engine/core/error.h"
+#include "engine/vk/context.h"
+#include "engine/vk/image.h"
+
+namespace hp::vk {
+namespace {
+bool hasStencil(VkFormat format) {
+  return format == VK_FORMAT_D16_UNORM_S8_UINT || format == VK_FORMAT_D24_UNORM_S8_UINT ||
+         format == VK_FORMAT_D32_SFLOAT_S8_UINT;
+}
+
+std::string formatText(VkFormat format) { return "VkFormat " + std::to_string(int(format)); }
+}  // namespace
+
+void validateAttachmentFormats(const hairpipe::AttachmentFormats& formats) {
+  const std::string field = "RendererSettings.formats.";
+  if (formats.color == VK_FORMAT_UNDEFINED || isDepthFormat(formats.color) || hasStencil(formats.color))
+    throw Error(field + "color must be a colour format, got " + formatText(formats.color));
+  if (!isDepthFormat(formats.depth) && formats.depth != VK_FORMAT_D16_UNORM_S8_UINT)
+    throw Error(field + "depth must be a depth format (D16, D32, D16S8, D24S8 or D32S8), got " + formatText(formats.depth));
+  if (formats.stencil != VK_FORMAT_UNDEFINED && !(formats.stencil == formats.depth && hasStencil(formats.depth)))
+    throw Error(field + "stencil must be VK_FORMAT_UNDEFINED (no stencil attachment) or the depth's own combined "
+                "depth/stencil format, got " + formatText(formats.stencil) + " with depth " + formatText(formats.depth));
+  const auto samples = std::uint32_t(formats.samples);
+  if (samples == 0 || samples > 16 || !std::has_single_bit(samples))
+    throw Error(field + "samples must be 1, 2, 4, 8 or 16, got " + std::to_string(samples));
+}
+
+void requireAttachmentSupport(const Context& ctx, const hairpipe::AttachmentFormats& formats, bool sampledDepth) {
+  const std::string device = ctx.properties().deviceName;
+  auto features = [&](VkFormat format) {
+    VkFormatProperties props{};
+    vkGetPhysicalDeviceFormatProperties(ctx.physicalDevice(), format, &props);
+    return props.optimalTilingFeatures;
+  };
+  constexpr VkFormatFeatureFlags kColor = VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT | VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BLEND_BIT;
+  if ((features(formats.color) & kColor) != kColor)
+    throw Error("RendererSettings.formats.color: " + formatText(formats.color) + " is not a blendable colour attachment on " + device);
+  const VkFormatFeatureFlags depthNeeds =
+      VK_FORMAT_FEATURE_DEPTH_STENCIL_ATTACHMENT_BIT | (sampledDepth ? VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT : 0);
+  if ((features(formats.depth) & depthNeeds) != depthNeeds)
+    throw Error("RendererSettings.formats.depth: " + formatText(formats.depth) + " is not a depth attachment" +
+                (sampledDepth ? " the compute raster can sample" : "") + " on " + device);
+  const VkPhysicalDeviceLimits& limits = ctx.properties().limits;
+  const VkSampleCountFlags counts = limits.framebufferColorSampleCounts & limits.framebufferDepthSampleCounts &
+                                    (formats.stencil != VK_FORMAT_UNDEFINED ? limits.framebufferStencilSampleCounts : ~0u);
+  if ((counts & formats.samples) == 0)
+    throw Error("RendererSettings.formats.samples: " + std::to_string(int(formats.samples)) +
+                " samples are not supported for colour and depth attachments on " + device);
+}
+
+void setApplicationAttachments(GraphicsPipelineDesc& desc, const hairpipe::AttachmentFormats& formats) {
+  desc.colorFormats = {formats.color};
+  desc.depthFormat = formats.depth;
+  desc.stencilFormat = formats.stencil;
+  desc.samples = formats.samples;
+}
+}  // namespace hp::vk

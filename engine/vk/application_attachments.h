@@ -1,0 +1,25 @@
+#pragma once
+// Contract: the application's attachments (hairpipe::AttachmentFormats) that hairpipe's graphics pipelines
+// draw into inside the application's rendering: checked by field (validateAttachmentFormats: no device
+// needed), checked against a device (requireAttachmentSupport: the formats' features and the sample count),
+// and written into a pipeline's description (setApplicationAttachments), so every such pipeline matches the
+// rendering the same way (colour, depth and, where the application attaches one, stencil).
+#include "hairpipe_volk.h"
+
+#include "engine/vk/pipeline.h"
+#include "hairpipe/settings.h"
+
+namespace hp::vk {
+class Context;
+
+// Throws hp::Error naming the field: a colour of UNDEFINED or a depth format, a depth that is not one,
+// a stencil that is not UNDEFINED nor the depth's own combined format, a sample count that is not one of
+// 1, 2, 4, 8 or 16.
+void validateAttachmentFormats(const hairpipe::AttachmentFormats& formats);
+// Throws hp::Error naming the format and the device where the colour cannot be a blended colour attachment,
+// the depth a depth attachment (and, with sampledDepth, the compute raster's sampled image), or the sample
+// count is not supported for both.
+void requireAttachmentSupport(const Context& ctx, const hairpipe::AttachmentFormats& formats, bool sampledDepth);
+// The description's colour (one attachment), depth, stencil and sample count.
+void setApplicationAttachments(GraphicsPipelineDesc& desc, const hairpipe::AttachmentFormats& formats);
+}  // namespace hp::vk
