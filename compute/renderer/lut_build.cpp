@@ -8,16 +8,18 @@
 #include "engine/core/error.h"
 #include "engine/core/shading/lut_cache.h"
 
-namespace hp {
-namespace {
-// The thread's entry: runs the build its holder names, then lets the holder (a shared_ptr) go.
-extern "C" void* runLutBuild(void* holder) {
-  auto* build = static_cast<std::shared_ptr<LutBuild>*>(holder);
+// The thread's entry: runs the build its holder names, then lets the holder (a shared_ptr) go. C linkage for
+// pthread_create, and static: no global symbol leaves the library.
+extern "C" {
+static void* runLutBuild(void* holder) {
+  auto* build = static_cast<std::shared_ptr<hp::LutBuild>*>(holder);
   (*build)->run();
   delete build;
   return nullptr;
 }
-}  // namespace
+}
+
+namespace hp {
 
 std::shared_ptr<LutBuild> LutBuild::start(const HairMaterial& material, LutMode mode) {
   auto build = std::make_shared<LutBuild>(material, mode);

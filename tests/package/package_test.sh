@@ -5,11 +5,13 @@
 #              graphics and the compute raster (it fails on any validation message and must write a PNG)
 #   hello      builds samples/hello_hair against it, runs it under validation, checks its PNG
 #   consumers  builds tests/package/consumers (a -fno-exceptions consumer and one with glm's macros set
-#              the other way from hairpipe's internals) and runs both
+#              the other way from hairpipe's internals), with CMake's FindVulkan disabled (the package needs
+#              Vulkan's headers, not the loader), and runs both
 #   headers    the installed headers are exactly docs/API.md's public list, each compiles alone
 #              (-fno-exceptions, -Wall -Wextra -Werror) and includes only public headers, Vulkan's core
 #              header and the standard library
-#   symbols    no installed archive defines a global vk* or volk* symbol; the CMake package names no
+#   symbols    no installed archive defines a global vk* or volk* symbol, nor any strong global symbol outside
+#              hairpipe's namespaces (its copies of tinyobjloader and tinygltf renamed); the CMake package names no
 #              absolute path, no compile definition and no link dependency but Vulkan's headers and libdl
 # Usage: package_test.sh MODE SOURCE_DIR BUILD_DIR WORK_DIR CXX_COMPILER [LAUNCHER] [EXTRA_FLAGS]
 set -euo pipefail
@@ -20,14 +22,16 @@ cmake --install "$build" --prefix "$work/install" > "$work/install.log"
 mv "$work/install" "$work/prefix"
 prefix=$work/prefix
 
-configure_and_build() {  # configure_and_build PROJECT_DIR BUILD_DIR
-  cmake -S "$1" -B "$2" -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH="$prefix" -DCMAKE_CXX_COMPILER="$cxx" \
+configure_and_build() {  # configure_and_build PROJECT_DIR BUILD_DIR [CMAKE_ARG...]
+  local project=$1 out=$2
+  shift 2
+  cmake -S "$project" -B "$out" "$@" -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH="$prefix" -DCMAKE_CXX_COMPILER="$cxx" \
     ${launcher:+-DCMAKE_CXX_COMPILER_LAUNCHER="$launcher"} \
-    ${flags:+-DCMAKE_CXX_FLAGS="$flags" -DCMAKE_EXE_LINKER_FLAGS="$flags"} > "$2.configure.log"
-  cmake --build "$2" -j2 > "$2.build.log" || { cat "$2.build.log" >&2; exit 1; }
+    ${flags:+-DCMAKE_CXX_FLAGS="$flags" -DCMAKE_EXE_LINKER_FLAGS="$flags"} > "$out.configure.log"
+  cmake --build "$out" -j2 > "$out.build.log" || { cat "$out.build.log" >&2; exit 1; }
   # The application's code must not reach into the source tree: only the prefix's headers were used.
-  if grep -rq "$src/engine\|$src/compute\|$src/third_party" "$2"/CMakeFiles/*.dir/flags.make; then
-    echo "$1 was compiled with the source tree on its include path" >&2
+  if grep -rq "$src/engine\|$src/compute\|$src/third_party" "$out"/CMakeFiles/*.dir/flags.make; then
+    echo "$project was compiled with the source tree on its include path" >&2
     exit 1
   fi
 }
@@ -58,7 +62,8 @@ case $mode in
     [ -s "$work/hello_hair.png" ] || { echo "hello_hair wrote no PNG" >&2; exit 1; }
     ;;
   consumers)
-    configure_and_build "$src/tests/package/consumers" "$work/consumers"
+    # Without CMake's FindVulkan (which wants the loader library): the package finds Vulkan's headers alone.
+    configure_and_build "$src/tests/package/consumers" "$work/consumers" -DCMAKE_DISABLE_FIND_PACKAGE_Vulkan=TRUE
     "$work/consumers/noexcept_consumer"
     "$work/consumers/glm_consumer"
     # Negative control: with a forced glm macro the consumer's check must fail, naming its own glm.
@@ -92,6 +97,16 @@ case $mode in
     if [ -n "$defined" ]; then
       echo "the installed archives define global Vulkan/volk symbols:" >&2
       echo "$defined" | head -20 >&2
+      exit 1
+    fi
+    # Every other strong global symbol is hairpipe's own (namespaces hp, hairpipe and the renamed copies
+    # hp_tinyobj, hp_tinygltf; volk's hpvk_*): an application's tinyobjloader or tinygltf cannot clash.
+    foreign=$(nm -gC --defined-only "$prefix"/lib/*.a | awk 'NF >= 3 && $2 ~ /^[TDBRGS]$/ {$1 = ""; $2 = ""; print}' \
+      | sed -E 's/^ +//; s/^(vtable|typeinfo|typeinfo name|VTT|guard variable|construction vtable) for //' \
+      | grep -vE '^(hp::|hairpipe::|hp_[a-z]+::|hpvk)' | sort -u || true)
+    if [ -n "$foreign" ]; then
+      echo "the installed archives define global symbols outside hairpipe's namespaces:" >&2
+      echo "$foreign" | head -20 >&2
       exit 1
     fi
     config=$(cat "$prefix"/lib/cmake/hairpipe/*.cmake)

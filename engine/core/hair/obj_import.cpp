@@ -1,6 +1,6 @@
 #include "engine/core/hair/obj_import.h"
 
-#include <tiny_obj_loader.h>  // its implementation: tinyobj_implementation.cpp
+#include "engine/core/hair/tinyobj_config.h"  // its implementation: tinyobj_implementation.cpp
 
 #include <charconv>
 #include <cmath>

@@ -3,4 +3,4 @@
 // shared library is): its parser converts out-of-range floats to int in lines hairpipe never uses (`vw`
 // skin weights), which UBSan reports while fuzzing the OBJ reader; hairpipe's own code around it is checked.
 #define TINYOBJLOADER_IMPLEMENTATION
-#include <tiny_obj_loader.h>
+#include "engine/core/hair/tinyobj_config.h"
