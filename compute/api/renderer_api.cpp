@@ -1,6 +1,7 @@
 // hairpipe::Renderer and hairpipe::Instance over hp::Renderer and hp::HairInstance.
 #include "compute/api/access.h"
 #include "compute/api/convert.h"
+#include "compute/renderer/instance_preparation.h"
 #include "engine/core/hair/strand_topology.h"
 
 namespace hairpipe {
@@ -102,6 +103,12 @@ Status Instance::setDensity(const Density& density) noexcept {
   });
 }
 bool Instance::materialPending() const noexcept { return impl_ && impl_->instance->materialPending(); }
+Status Instance::materialStatus() const noexcept {
+  return guardedStatus("hairpipe::Instance::materialStatus", [&] {
+    const std::string& error = implementation(impl_.get()).materialError();
+    if (!error.empty()) throw hp::Error(error);
+  });
+}
 std::uint32_t Instance::strandCount() const noexcept {
   return impl_ ? impl_->instance->strands().layout().strandCount : 0;  // 0: moved from
 }
@@ -115,6 +122,11 @@ Result<Renderer> Renderer::create(const Context& context, const RendererSettings
   return guarded<Renderer>("hairpipe::Renderer::create", [&] {
     return Access::makeRenderer(std::make_shared<hp::Renderer>(Access::context(context), convert::renderer(settings)));
   });
+}
+
+Status prepareInstance(const Asset& asset, const InstanceSettings& settings) noexcept {
+  return guardedStatus("hairpipe::prepareInstance",
+                       [&] { hp::prepareInstance(Access::asset(asset), convert::instance(settings)); });
 }
 
 Result<Instance> Renderer::createInstance(const Asset& asset, const InstanceSettings& settings,

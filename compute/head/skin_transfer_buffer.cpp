@@ -17,9 +17,13 @@ namespace {
 // vertex count; 2.5 MiB each for the default head. Never destroyed, like the tables' cache.
 using TransferCache = RecentCache<std::pair<std::uint64_t, std::size_t>, std::vector<float>, 4>;
 
+TransferCache& transfers() {
+  static auto& cache = *new TransferCache;
+  return cache;
+}
+
 std::shared_ptr<const std::vector<float>> packed(const HeadMesh& mesh, std::uint64_t key) {
-  static auto& transfers = *new TransferCache;
-  return transfers.get({key, mesh.positions.size()}, [&] { return packedSkinTransfer(mesh); });
+  return transfers().get({key, mesh.positions.size()}, [&] { return packedSkinTransfer(mesh); });
 }
 
 // FNV-1a over a span's bytes, then its length (two meshes whose arrays split the same bytes differently differ).
@@ -48,4 +52,9 @@ std::uint64_t fingerprint(const HeadMesh& mesh) {
   hashInto(h, mesh.scalp);
   return h;
 }
+void prepareSkinTransfer(const HeadMesh& mesh) {
+  if (!mesh.positions.empty()) packed(mesh, fingerprint(mesh));
+}
+
+std::uint64_t skinTransfersComputed() { return transfers().made(); }
 }  // namespace hp::render

@@ -24,4 +24,9 @@ class SkinTransferBuffer {
 
 // A 64-bit hash of everything the transfer depends on: positions, normals, indices and scalp weights.
 std::uint64_t fingerprint(const HeadMesh& mesh);
+// The mesh's transfer computed into the process's values now, on the calling thread (any thread; nothing for
+// an empty mesh), so a later SkinTransferBuffer of it only uploads.
+void prepareSkinTransfer(const HeadMesh& mesh);
+// Transfers the process has computed (values taken from its cache not counted).
+std::uint64_t skinTransfersComputed();
 }  // namespace hp::render

@@ -123,7 +123,8 @@ void HairInstance::setHeadToWorld(const glm::mat4& headToWorld) {
 
 void HairInstance::setMaterial(const HairMaterial& material, LutMode mode) {
   material.validate();
-  pending_.reset();  // a newer change replaces a pending one (its worker finishes into nothing)
+  pending_.reset();  // a newer change replaces a pending one (skipped if the worker has not started it)
+  materialError_.clear();
   if (material == settings_.material && mode == settings_.lutMode) return;
   std::shared_ptr<render::MarschnerTextures> cached = renderer_.cachedMarschner(material, mode);
   if (cached) return applyMaterial([&] { return cached; }, material, mode);
@@ -140,7 +141,7 @@ void HairInstance::applyReadyMaterial() {
     if (!done->error().empty()) throw Error(done->error());
     applyMaterial([&] { return renderer_.marschnerFrom(done->lut(), &done->params()); }, done->material(), done->mode());
   } catch (const std::exception& e) {  // record calls do not throw: the old material stays, the reason is kept
-    materialError_ = e.what();
+    materialError_ = "the material change did not apply (the instance keeps its former material): " + std::string(e.what());
   }
 }
 

@@ -62,7 +62,8 @@ class HairInstance {
   void waitForMaterial() const {
     if (pending_) pending_->wait();
   }
-  // Why the last worker build was dropped (empty: none was).
+  // Why the last material change made in the frame loop did not apply (its tables' build or upload failed;
+  // empty: it applied, is pending, or none was made). A later setMaterial clears it.
   const std::string& materialError() const { return materialError_; }
   void setLook(const render::LookSettings& look);
   void setLod(const hairpipe::LodSettings& lod);

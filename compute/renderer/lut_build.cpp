@@ -2,40 +2,73 @@
 
 #include <pthread.h>
 
+#include <atomic>
 #include <cstring>
+#include <deque>
 #include <exception>
 
 #include "engine/core/error.h"
 #include "engine/core/shading/lut_cache.h"
 
-// The thread's entry: runs the build its holder names, then lets the holder (a shared_ptr) go. C linkage for
-// pthread_create, and static: no global symbol leaves the library.
+namespace hp {
+namespace {
+// The process's one worker: builds in the order they were queued, each skipped where its owner let it go
+// before its turn. Never destroyed: the detached thread waits on it for the life of the process.
+struct LutWorker {
+  std::mutex mutex;
+  std::condition_variable wake;
+  std::deque<std::weak_ptr<LutBuild>> queue;  // under mutex
+  bool started = false;                          // under mutex
+  std::atomic<std::uint64_t> built{0};
+};
+
+LutWorker& lutWorker() {
+  static LutWorker* const w = new LutWorker;
+  return *w;
+}
+}  // namespace
+}  // namespace hp
+
+// The worker thread's body. C linkage for pthread_create, and static: no global symbol leaves the library.
 extern "C" {
-static void* runLutBuild(void* holder) {
-  auto* build = static_cast<std::shared_ptr<hp::LutBuild>*>(holder);
-  (*build)->run();
-  delete build;
-  return nullptr;
+static void* runLutWorker(void*) {
+  hp::LutWorker& w = hp::lutWorker();
+  for (;;) {
+    std::shared_ptr<hp::LutBuild> build;
+    {
+      std::unique_lock<std::mutex> lock(w.mutex);
+      w.wake.wait(lock, [&] { return !w.queue.empty(); });
+      build = w.queue.front().lock();
+      w.queue.pop_front();
+    }
+    if (!build) continue;  // replaced before its turn
+    build->run();
+    ++w.built;
+  }
 }
 }
 
 namespace hp {
-
 std::shared_ptr<LutBuild> LutBuild::start(const HairMaterial& material, LutMode mode) {
   auto build = std::make_shared<LutBuild>(material, mode);
-  auto* holder = new std::shared_ptr<LutBuild>(build);
-  pthread_attr_t attr;
-  pthread_attr_init(&attr);
-  pthread_attr_setdetachstate(&attr, PTHREAD_CREATE_DETACHED);
-  pthread_t thread;
-  const int rc = pthread_create(&thread, &attr, runLutBuild, holder);
-  pthread_attr_destroy(&attr);
-  if (rc != 0) {
-    delete holder;
-    throw Error(std::string("material tables: could not start a worker thread: ") + std::strerror(rc));
+  LutWorker& w = lutWorker();
+  std::lock_guard<std::mutex> lock(w.mutex);
+  if (!w.started) {
+    pthread_attr_t attr;
+    pthread_attr_init(&attr);
+    pthread_attr_setdetachstate(&attr, PTHREAD_CREATE_DETACHED);
+    pthread_t thread;
+    const int rc = pthread_create(&thread, &attr, runLutWorker, nullptr);
+    pthread_attr_destroy(&attr);
+    if (rc != 0) throw Error(std::string("material tables: could not start the worker thread: ") + std::strerror(rc));
+    w.started = true;
   }
+  w.queue.push_back(build);
+  w.wake.notify_one();
   return build;
 }
+
+std::uint64_t LutBuild::builtCount() { return lutWorker().built.load(); }
 
 void LutBuild::run() noexcept {
   try {

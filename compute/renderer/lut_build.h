@@ -1,11 +1,13 @@
 #pragma once
 // Contract: one material's lookup tables (buildLut) and their device parameter block (marschnerGpuParams:
-// the sky albedo's furnace quadrature, 12-28 ms of CPU) built on a detached POSIX thread, so a material
-// change in the frame loop costs the application's thread no table building (HairInstance::setMaterial). The
-// build owns copies of its inputs and is shared between the thread and its owner: dropping the owner's
-// handle lets the thread finish into nothing. A POSIX thread rather than std::thread: the library never
-// references std::terminate (tests/support: Library.NeverCallsAbortOrExit).
+// the sky albedo's furnace quadrature, 12-28 ms of CPU) built off the application's thread, so a material
+// change in the frame loop costs it no table building (HairInstance::setMaterial). Builds queue in order for
+// the process's one worker (a detached POSIX thread, started with the first build and kept): the queue holds
+// each build weakly, so one whose owner let it go before it started (a later setMaterial replaced it) is
+// skipped, never built; one already running finishes into nothing. A POSIX thread rather than std::thread:
+// the library never references std::terminate (tests/support: Library.NeverCallsAbortOrExit).
 #include <condition_variable>
+#include <cstdint>
 #include <memory>
 #include <mutex>
 #include <string>
@@ -17,8 +19,10 @@
 namespace hp {
 class LutBuild {
  public:
-  // Starts the thread; hp::Error when it cannot be started.
+  // Queues the build (starting the worker if it is not running); hp::Error when the worker cannot be started.
   static std::shared_ptr<LutBuild> start(const HairMaterial& material, LutMode mode);
+  // Builds the worker has run in this process (skipped ones not counted).
+  static std::uint64_t builtCount();
   LutBuild(const HairMaterial& material, LutMode mode) : material_(material), mode_(mode) {}
 
   bool done() const;

@@ -6,6 +6,7 @@
 // is kept then. A process-wide instance is best never destroyed (`static auto& c = *new RecentCache<...>`):
 // a detached thread may still be making a value when the process exits.
 #include <cstddef>
+#include <cstdint>
 #include <deque>
 #include <memory>
 #include <mutex>
@@ -23,7 +24,13 @@ class RecentCache {
     if (auto kept = findLocked(key)) return kept;  // another thread made it meanwhile
     entries_.emplace_back(key, value);
     if (entries_.size() > Capacity) entries_.pop_front();
+    ++made_;
     return value;
+  }
+  // Values made and kept so far (a diagnostic: whether a get was a hit).
+  std::uint64_t made() const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return made_;
   }
 
  private:
@@ -37,7 +44,8 @@ class RecentCache {
     return nullptr;
   }
 
-  std::mutex mutex_;
+  mutable std::mutex mutex_;
+  std::uint64_t made_ = 0;  // under mutex_
   std::deque<std::pair<Key, std::shared_ptr<const Value>>> entries_;  // most recently made last
 };
 }  // namespace hp

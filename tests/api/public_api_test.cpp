@@ -410,10 +410,14 @@ TEST_F(PublicApi, MovedFromHandlesReturnFailuresAndInstancesOutliveTheirRenderer
   EXPECT_THAT(failureOf(renderer_->createInstance(*asset_, {})), HasSubstr("the Renderer was moved from"));
   hairpipe::Instance other = std::move(head);
   EXPECT_THAT(failureOf(head.setLook({})), HasSubstr("the instance was moved from"));
+  EXPECT_THAT(failureOf(head.materialStatus()), HasSubstr("hairpipe::Instance::materialStatus: the instance was moved from"));
+  EXPECT_TRUE(other.materialStatus().ok());  // no material change failed
   EXPECT_EQ(head.strandCount(), 0u);
   hairpipe::Asset copy = *asset_;
   hairpipe::Asset emptied = std::move(copy);
   EXPECT_THAT(failureOf(copy.guideRoots()), HasSubstr("the Asset was moved from"));
+  EXPECT_THAT(failureOf(hairpipe::prepareInstance(copy, {})), HasSubstr("hairpipe::prepareInstance: the Asset was moved from"));
+  EXPECT_TRUE(hairpipe::prepareInstance(emptied, {}).ok());
   EXPECT_EQ(copy.guideCount(), 0u);
   EXPECT_EQ(emptied.guideCount(), asset_->guideCount());
   // The Renderer goes first: its instance keeps what it needs and still takes settings.

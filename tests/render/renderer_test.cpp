@@ -9,6 +9,7 @@
 #include <cmath>
 #include <iostream>
 #include <memory>
+#include <thread>
 #include <vector>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -16,7 +17,11 @@
 #include "engine/core/error.h"
 #include "engine/core/hair/default_head.h"
 #include "samples/tools/offscreen_renderer.h"
+#include "compute/head/skin_transfer_buffer.h"
+#include "compute/renderer/instance_preparation.h"
+#include "compute/renderer/lut_build.h"
 #include "compute/renderer/renderer.h"
+#include "engine/core/shading/lut_cache.h"
 #include "engine/core/shading/material_color.h"
 #include "engine/vk/check.h"
 #include "engine/vk/submit.h"
@@ -494,6 +499,102 @@ TEST_F(VulkanTest, TwoMaterialChangesBetweenFramesDrawTheSecond) {
 // An instance's frame blocks carry its physical material's mean forward albedo and the forward density
 // with dual scattering (what the hair passes on to and from the skin, frame_shadows.glsl
 // hairTransmittance), and nothing with single scattering or the paper's model.
+namespace {
+// A Renderer of one 400-strand head, one frame in flight, drawing 96 x 64 frames (recordUpdate in frame 0
+// only: the same strands in every frame).
+struct OneHeadFrames {
+  explicit OneHeadFrames(const hp::vk::Context& context)
+      : ctx(context), target(context, 96, 64, 1), renderer(context, settings(target)),
+        hair(renderer.createInstance(head(400), {})) {}
+  static hp::RendererSettings settings(const hp::render::OffscreenRenderer& target) {
+    hp::RendererSettings s = rendererSettings(target);
+    s.framesInFlight = 1;
+    return s;
+  }
+  std::vector<std::uint8_t> frame(std::uint64_t f) {
+    hp::HairInstance* one[] = {hair.get()};
+    hp::CameraSpec cam;
+    const hp::View view{hp::orbitCamera(cam, 1.5f), {96, 64}, false, 0};
+    hp::vk::submitAndWait(ctx, [&](VkCommandBuffer cmd) {
+      if (f == 0) renderer.recordUpdate(cmd, f, one);
+      renderer.recordShadows(cmd, f, hp::LightSpec{}, one);
+      target.record(cmd, [&](VkCommandBuffer c) { renderer.recordDraw(c, f, view, one); }, 1.0f);
+    }, "one head");
+    return target.readDisplay();
+  }
+  const hp::vk::Context& ctx;
+  hp::render::OffscreenRenderer target;
+  hp::Renderer renderer;
+  std::unique_ptr<hp::HairInstance> hair;
+};
+
+hp::HairMaterial tinted(double red) {
+  hp::HairMaterial m;
+  m.absorption = hp::absorptionFromColor({red, 0.3, 0.2});
+  return m;
+}
+}  // namespace
+
+// A change in the frame loop whose tables cannot be uploaded (no device memory left in the budget) leaves
+// the former material drawn and says why; a later change clears that and applies.
+TEST_F(VulkanTest, AMaterialChangeThatCannotApplyIsReportedAndTheFormerMaterialStays) {
+  OneHeadFrames heads(*ctx);
+  const auto before = heads.frame(0);
+  ctx->setDeviceMemoryBudget(ctx->allocatedBytes() + 256 * 1024);  // the frames' readback, not the tables
+  heads.hair->setMaterial(tinted(0.9), hp::LutMode::Float);
+  heads.hair->waitForMaterial();
+  const auto refused = heads.frame(1);
+  EXPECT_FALSE(heads.hair->materialPending());
+  EXPECT_NE(heads.hair->materialError().find("did not apply"), std::string::npos) << heads.hair->materialError();
+  EXPECT_NE(heads.hair->materialError().find("budget"), std::string::npos) << heads.hair->materialError();
+  EXPECT_EQ(differingPixels(before, refused), 0u);
+  ctx->setDeviceMemoryBudget(0);
+  heads.hair->setMaterial(tinted(0.9), hp::LutMode::Float);
+  EXPECT_TRUE(heads.hair->materialError().empty());
+  heads.hair->waitForMaterial();
+  const auto applied = heads.frame(2);
+  EXPECT_TRUE(heads.hair->materialError().empty()) << heads.hair->materialError();
+  EXPECT_GT(differingPixels(before, applied), 100u);
+}
+
+// Eight changes made at once in the frame loop build at most two tables (the one the worker started and
+// the last): the others are replaced before their turn and skipped; the last is what is drawn.
+TEST_F(VulkanTest, MaterialChangesReplacedBeforeTheirTurnAreNotBuilt) {
+  OneHeadFrames heads(*ctx);
+  heads.frame(0);
+  const std::uint64_t builtBefore = hp::LutBuild::builtCount();
+  for (int k = 1; k <= 8; ++k) heads.hair->setMaterial(tinted(0.05 * k), hp::LutMode::Float);
+  heads.hair->waitForMaterial();
+  const std::uint64_t built = hp::LutBuild::builtCount() - builtBefore;
+  std::cout << built << " of 8 material builds ran\n";
+  EXPECT_GE(built, 1u);
+  EXPECT_LE(built, 2u);
+  heads.frame(1);
+  EXPECT_FALSE(heads.hair->materialPending());
+  EXPECT_TRUE(heads.hair->settings().material == tinted(0.05 * 8));
+}
+
+// An instance's CPU start-up work prepared on a loading thread: its tables and its head's transfer are
+// computed there, once, and createInstance on this thread computes neither.
+TEST_F(VulkanTest, AnInstancePreparedOnAnotherThreadComputesNoTablesOrTransferWhenCreated) {
+  hp::HairAsset asset = head(400);
+  asset.head.positions[0] *= 1.001f;  // a mesh this process has not seen
+  hp::InstanceSettings settings;
+  settings.material.absorption = hp::absorptionFromColor({0.31, 0.27, 0.19});  // tables not made yet
+  const std::uint64_t luts = hp::sharedLutsMade(), transfers = hp::render::skinTransfersComputed();
+  std::thread loader([&] { hp::prepareInstance(asset, settings); });
+  loader.join();
+  EXPECT_EQ(hp::sharedLutsMade(), luts + 1);
+  EXPECT_EQ(hp::render::skinTransfersComputed(), transfers + 1);
+  hp::render::OffscreenRenderer target(*ctx, 64, 48, 1);
+  hp::Renderer renderer(*ctx, rendererSettings(target));
+  auto hair = renderer.createInstance(asset, settings);
+  EXPECT_EQ(hp::sharedLutsMade(), luts + 1);
+  EXPECT_EQ(hp::render::skinTransfersComputed(), transfers + 1);
+  settings.material.eta = std::nan("");
+  EXPECT_THROW(hp::prepareInstance(asset, settings), hp::Error);
+}
+
 TEST_F(VulkanTest, FrameBlocksCarryTheHairsForwardAlbedoWithDualScatteringOnly) {
   hp::render::OffscreenRenderer target(*ctx, 64, 48, 1);
   hp::Renderer renderer(*ctx, rendererSettings(target));

@@ -65,4 +65,5 @@ std::shared_ptr<const MarschnerLut> sharedLut(LutMode mode, const HairMaterial& 
   const LutKey key{mode, material, options.floatFormat, options.paperFormat};
   return luts().get(key, [&] { return loadOrBuildLut(DiskCache::process(), mode, material, options); });
 }
+std::uint64_t sharedLutsMade() { return luts().made(); }
 }  // namespace hp

@@ -6,6 +6,7 @@
 // lock (two threads asking for the same new tables at once may both build them; both get the first kept).
 // Errors are buildLut's (an invalid material throws and nothing is kept). With a disk cache (engine/core/disk_cache.h,
 // HAIRPIPE_CACHE_DIR) a process reads tables another process of the same build made instead of building them.
+#include <cstdint>
 #include <memory>
 
 #include "engine/core/disk_cache.h"
@@ -15,6 +16,8 @@ namespace hp {
 // The tables from `disk` when it holds them (bit for bit what buildLut gives), else built and kept there.
 MarschnerLut loadOrBuildLut(const DiskCache& disk, LutMode mode, const HairMaterial& material,
                             const LutBuildOptions& options = {});
+// Tables the process has made for sharedLut (values it kept and handed out again not counted).
+std::uint64_t sharedLutsMade();
 std::shared_ptr<const MarschnerLut> sharedLut(LutMode mode, const HairMaterial& material,
                                               const LutBuildOptions& options = {});
 }  // namespace hp

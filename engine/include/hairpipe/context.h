@@ -11,7 +11,8 @@
 // hairpipe never destroys what it adopted and never waits idle on an adopted device. Its one-shot work
 // outside the frame loop (construction uploads, material changes) submits to the given queue and waits on
 // its own fence: the application must not use that queue from another thread during those calls.
-// A Context must outlive every Renderer made on it.
+// A Context must outlive every Renderer made on it. A Context and what is made on it are used by one thread
+// at a time (hairpipe/renderer.h, "Threads").
 // A headless Context owns its device; its VkInstance is shared by every headless Context of the process
 // with the same validation setting and lives until the process ends (a driver may refuse new instances after many
 // were created and destroyed: NVIDIA 580 did from the 30th). With validation, each Context's log then

@@ -59,9 +59,14 @@
 //      application's resolve attachments, if any, here), in which recordComposite(cmd, extent) blends the
 //      hair over the colour (multisampled: per sample, with the coverage recordRaster took from the
 //      heads' depth samples).
-// Calls that submit to the context's queue and wait for it (outside the frame loop): Renderer::create,
-// createInstance, Instance::setMaterial (a new material's tables), Instance::setDensity, setRasterTarget.
-// hairpipe never waits on a queue and never submits inside these calls.
+// Calls that submit to the context's queue and wait for it, before the first recorded frame only:
+// Renderer::create, createInstance, Instance::setMaterial (a new material's tables), Instance::setDensity,
+// setRasterTarget. From the first recorded frame on none of them submits or waits (their device work goes
+// into the next recordUpdate or recordShadows, above), and no record call ever does.
+// Threads: a Context and everything made on it (its Renderers and their Instances) are used by one thread at
+// a time; none of these calls is synchronized against another on the same Context (they share its command
+// pool and upload batch). Objects of different Contexts may be used on different threads at once. A new
+// material's tables are built on hairpipe's own worker thread (setMaterial above), which touches none of them.
 #include <vulkan/vulkan_core.h>
 
 #include <cstdint>
@@ -115,6 +120,10 @@ class Instance {
   // the same image, slower on CPU devices, until setRasterTarget: docs/API.md "Frames in flight, lifetimes").
   Status setMaterial(const Material& material, FibreModel fibre) noexcept;
   bool materialPending() const noexcept;
+  // A failure naming why the last setMaterial made in the frame loop did not apply once it left
+  // materialPending() (its tables could not be built or uploaded; the instance keeps its former material);
+  // ok while it is pending, once it applied, or when none failed. A later setMaterial clears it.
+  Status materialStatus() const noexcept;
   Status setLook(const LookSettings& look) noexcept;
   Status setLod(const LodSettings& lod) noexcept;
   // Clumps, curl and frizz from the next recordUpdate on (push constants: nothing is rebuilt).
@@ -197,6 +206,14 @@ class Renderer {
   explicit Renderer(std::shared_ptr<hp::Renderer> impl) noexcept;
   std::shared_ptr<hp::Renderer> impl_;  // shared with its instances
 };
+
+// The CPU start-up work of createInstance(asset, settings), done now on the calling thread, which may be any
+// thread (a loading thread: it touches no Context, Renderer or Instance): the material's lookup tables and,
+// with drawHead, the head mesh's skin transfer go into the process's caches (the last 4 of each), so a
+// createInstance of the same asset and material soon after, on the thread that records frames, takes them
+// instead of computing them there (~0.5 s and ~0.25 s of CPU for the default head's on a 2-core machine). A
+// failure names the settings createInstance would refuse.
+Status prepareInstance(const Asset& asset, const InstanceSettings& settings) noexcept;
 
 // A view for hairpipe's conventions (right-handed view, Vulkan [0, 1] depth) from a camera; a failure
 // names a degenerate camera (eye at target, up along the view direction, fovY outside (0, pi), bad planes).
