@@ -38,13 +38,13 @@ layout(binding = RASTER_BINDING_LIST_TEXELS) uniform usamplerBuffer listTexels;
 layout(binding = RASTER_BINDING_SCREEN_TEXELS) uniform samplerBuffer screenTexels;
 layout(binding = RASTER_BINDING_COLOR_TEXELS) uniform usamplerBuffer colorTexels;
 #endif
+layout(std430, binding = RASTER_BINDING_PARAMS) readonly buffer Params { RasterParams params; };
 #include "raster_head_depth.glsl"
 layout(binding = RASTER_BINDING_OUTPUT, rgba16f) uniform writeonly image2D outImage;
 #ifdef RASTER_HEAD_MULTISAMPLED
 layout(binding = RASTER_BINDING_OUTPUT_NEAR, rgba16f) uniform writeonly image2D nearImage;
 layout(binding = RASTER_BINDING_NEAR_MASK, r32ui) uniform writeonly uimage2D nearMaskImage;
 #endif
-layout(std430, binding = RASTER_BINDING_PARAMS) readonly buffer Params { RasterParams params; };
 layout(std430, binding = RASTER_BINDING_MOTION) readonly buffer Motion { uint motion[]; };
 layout(binding = RASTER_BINDING_MOTION_OUTPUT, rg16f) uniform writeonly image2D motionImage;
 

@@ -45,6 +45,7 @@ void main() {
     uint global = params.firstVertex + i;
     vec4 pos = positions[i];
     vec4 clip = frame.proj * frame.view * vec4(pos.xyz, 1.0);
+    if (params.reversedDepth != 0u) clip.z = clip.w - clip.z;  // near 0, far 1, as the head's depth is read
     // Behind the camera, or not finite (a NaN guide's strands): no footprint, and kept out of the depth range
     // (a NaN's bits would order past every depth and widen the bins for the whole frame).
     if (!allFinite(clip) || clip.w <= 1e-6 || clip.z < 0.0) {

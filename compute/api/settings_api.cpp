@@ -82,7 +82,10 @@ Result<View> makeView(const Camera& c, VkExtent2D extent, std::uint32_t index) n
     if (extent.width == 0 || extent.height == 0) throw hp::Error("the extent must not be empty");
     View v;
     v.view = convert::mat(glm::lookAtRH(eye, target, up));
-    v.projection = convert::mat(glm::perspectiveRH_ZO(c.fovY, float(extent.width) / float(extent.height), c.nearZ, c.farZ));
+    // Reversed-Z: the same projection with the planes swapped maps near to 1 and far to 0.
+    const float aspect = float(extent.width) / float(extent.height);
+    v.projection = convert::mat(c.reversedDepth ? glm::perspectiveRH_ZO(c.fovY, aspect, c.farZ, c.nearZ)
+                                                : glm::perspectiveRH_ZO(c.fovY, aspect, c.nearZ, c.farZ));
     v.eye = c.eye;
     v.fovY = c.fovY;
     v.extent = extent;

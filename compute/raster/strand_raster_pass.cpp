@@ -104,6 +104,7 @@ gpu::RasterParams baseParams(std::uint32_t tilesX, std::uint32_t tilesY, const R
   p.tilesY = tilesY;
   p.tileBudget = settings.tileBudget;
   p.shadingSpacing = settings.shadingSpacing;
+  p.reversedDepth = settings.reversedDepth ? 1u : 0u;
   p.capacity = capacity;
   p.width = extent.width;
   p.height = extent.height;

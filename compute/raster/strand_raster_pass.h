@@ -67,6 +67,7 @@ struct RasterSettings {
   std::uint32_t tileBudget = 16384;  // list entries kept per 8x8 tile, [1, 1<<24]
   float shadingSpacing = 24.0f;      // pixels, [0, kMaxShadingSpacing]; the public default
   bool motion = false;               // write motion vectors (motionOutput)
+  bool reversedDepth = false;        // the head's depth and the view's projection are reversed-Z (near 1, far 0)
   FineWalk fineWalk = FineWalk::Auto;
   void validate() const;
 };

@@ -14,6 +14,7 @@ namespace {
 compute::RasterSettings rasterSettingsOf(const RendererSettings& settings) {
   compute::RasterSettings r = settings.rasterSettings;
   r.motion = settings.motionVectors;
+  r.reversedDepth = settings.formats.reversedDepth;
   return r;
 }
 }  // namespace

@@ -58,6 +58,7 @@ void setApplicationAttachments(GraphicsPipelineDesc& desc, const hairpipe::Attac
   desc.colorFormats = {formats.color};
   desc.depthFormat = formats.depth;
   desc.stencilFormat = formats.stencil;
+  desc.depthCompare = formats.reversedDepth ? VK_COMPARE_OP_GREATER_OR_EQUAL : VK_COMPARE_OP_LESS_OR_EQUAL;
   desc.samples = formats.samples;
 }
 }  // namespace hp::vk

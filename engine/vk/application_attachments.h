@@ -20,6 +20,6 @@ void validateAttachmentFormats(const hairpipe::AttachmentFormats& formats);
 // the depth a depth attachment (and, with sampledDepth, the compute raster's sampled image), or the sample
 // count is not supported for both.
 void requireAttachmentSupport(const Context& ctx, const hairpipe::AttachmentFormats& formats, bool sampledDepth);
-// The description's colour (one attachment), depth, stencil and sample count.
+// The description's colour (one attachment), depth, stencil, sample count and the depth test's direction.
 void setApplicationAttachments(GraphicsPipelineDesc& desc, const hairpipe::AttachmentFormats& formats);
 }  // namespace hp::vk

@@ -14,9 +14,10 @@ VkRenderingAttachmentInfo attachment(VkImageView view, ImageUse use, VkAttachmen
 }
 }  // namespace
 
-VkRenderingAttachmentInfo depthAttachment(VkImageView view, VkAttachmentLoadOp load, VkAttachmentStoreOp store) {
+VkRenderingAttachmentInfo depthAttachment(VkImageView view, VkAttachmentLoadOp load, VkAttachmentStoreOp store,
+                                          float clear) {
   VkRenderingAttachmentInfo a = attachment(view, ImageUse::DepthAttachment, load, store);
-  a.clearValue.depthStencil = {1.0f, 0};
+  a.clearValue.depthStencil = {clear, 0};
   return a;
 }
 

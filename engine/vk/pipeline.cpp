@@ -189,7 +189,7 @@ GraphicsPipeline::GraphicsPipeline(const Context& ctx, const GraphicsPipelineDes
   VkPipelineDepthStencilStateCreateInfo depth{VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO};
   depth.depthTestEnable = d.depthTest ? VK_TRUE : VK_FALSE;
   depth.depthWriteEnable = d.depthWrite ? VK_TRUE : VK_FALSE;
-  depth.depthCompareOp = VK_COMPARE_OP_LESS_OR_EQUAL;
+  depth.depthCompareOp = d.depthCompare;
   std::vector<VkPipelineColorBlendAttachmentState> blends(d.colorFormats.size(), blendState(d.blend));
   VkPipelineColorBlendStateCreateInfo blend{VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
   blend.attachmentCount = static_cast<std::uint32_t>(blends.size());

@@ -74,6 +74,7 @@ struct GraphicsPipelineDesc {
   std::vector<VkFormat> colorFormats;
   VkFormat depthFormat = VK_FORMAT_UNDEFINED;
   VkFormat stencilFormat = VK_FORMAT_UNDEFINED;  // the rendering's stencil attachment (none: UNDEFINED)
+  VkCompareOp depthCompare = VK_COMPARE_OP_LESS_OR_EQUAL;  // with depthTest
   VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
   BlendMode blend = BlendMode::None;  // applied to every color attachment
   bool depthTest = false;

@@ -17,7 +17,7 @@ std::string computeKey(const std::string& shader, std::uint32_t workgroupSize, s
 
 std::string graphicsKey(const GraphicsPipelineDesc& d) {
   std::string key = "g|" + d.vertexShader + "|" + d.fragmentShader + "|" + std::to_string(d.depthFormat) + "|" +
-                    std::to_string(d.stencilFormat) + "|" +
+                    std::to_string(d.stencilFormat) + "|" + std::to_string(d.depthCompare) + "|" +
                     std::to_string(d.samples) + "|" + std::to_string(int(d.blend)) + "|" +
                     std::to_string(d.depthTest) + std::to_string(d.depthWrite) + std::to_string(d.alphaToCoverage) +
                     "|" + std::to_string(d.topology) + "|" + std::to_string(d.cullMode) + "|" +

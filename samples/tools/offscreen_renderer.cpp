@@ -27,9 +27,10 @@ VkRenderingInfo renderingInfo(VkExtent2D extent, const VkRenderingAttachmentInfo
 }  // namespace
 
 OffscreenRenderer::OffscreenRenderer(const vk::Context& ctx, std::uint32_t width, std::uint32_t height,
-                                     std::uint32_t msaa, RasterMode raster)
+                                     std::uint32_t msaa, RasterMode raster, bool reversedDepth)
     : ctx_(ctx),
       raster_(raster),
+      reversedDepth_(reversedDepth),
       targets_(ctx, width, height, msaa, raster == RasterMode::Compute),
       tonemap_(ctx, kDisplayFormat) {
   if (raster == RasterMode::Auto) throw Error("OffscreenRenderer: resolve RasterMode::Auto first (resolveRasterMode)");
@@ -47,7 +48,15 @@ void OffscreenRenderer::attach(Renderer& renderer, std::span<HairInstance* const
   renderer.setRasterTarget(extent(), targets_.depth.view(), instances);
 }
 
-hairpipe::AttachmentFormats OffscreenRenderer::formats() const { return {kHdrFormat, kDepthFormat, targets_.samples()}; }
+hairpipe::AttachmentFormats OffscreenRenderer::formats() const {
+  hairpipe::AttachmentFormats f{kHdrFormat, kDepthFormat, targets_.samples()};
+  f.reversedDepth = reversedDepth_;
+  return f;
+}
+
+VkRenderingAttachmentInfo OffscreenRenderer::sceneDepth(VkAttachmentLoadOp load, VkAttachmentStoreOp store) const {
+  return vk::depthAttachment(targets_.depth.view(), load, store, reversedDepth_ ? 0.0f : 1.0f);
+}
 
 void OffscreenRenderer::record(VkCommandBuffer cmd, HairSystem& hair, const DrawView& view, float exposure,
                                vk::GpuProfiler* profiler) const {
@@ -88,8 +97,7 @@ void OffscreenRenderer::recordComputeScene(VkCommandBuffer cmd, const Record& dr
   const VkImage hdr = targets_.hdr.handle(), depthImage = targets_.depth.handle();
   discardTargets(cmd);
   VkRenderingAttachmentInfo color = vk::colorAttachment(targets_.hdr.view(), VK_ATTACHMENT_LOAD_OP_CLEAR, kBackground);
-  VkRenderingAttachmentInfo depth = vk::depthAttachment(targets_.depth.view(), VK_ATTACHMENT_LOAD_OP_CLEAR,
-                                                    VK_ATTACHMENT_STORE_OP_STORE);
+  VkRenderingAttachmentInfo depth = sceneDepth(VK_ATTACHMENT_LOAD_OP_CLEAR, VK_ATTACHMENT_STORE_OP_STORE);
   VkRenderingInfo info = renderingInfo(extent(), &color, &depth);
   ctx_.fn().vkCmdBeginRendering(cmd, &info);
   drawHeads(cmd);
@@ -103,7 +111,7 @@ void OffscreenRenderer::recordComputeScene(VkCommandBuffer cmd, const Record& dr
   vk::imageBarrier(ctx_, cmd, hdr, VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::ColorAttachment, vk::ImageUse::ColorAttachment);
   color.loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;
   resolveInto(color);
-  depth = vk::depthAttachment(targets_.depth.view(), VK_ATTACHMENT_LOAD_OP_LOAD, VK_ATTACHMENT_STORE_OP_DONT_CARE);
+  depth = sceneDepth(VK_ATTACHMENT_LOAD_OP_LOAD, VK_ATTACHMENT_STORE_OP_DONT_CARE);
   // The composite's own scope lies inside the rendering instance, where lavapipe stamps before it runs the
   // draw (and the MSAA resolve at its end): this one, outside, times them (docs/PERFORMANCE.md).
   if (profiler) profiler->begin(cmd, "composite pass");
@@ -150,8 +158,7 @@ void OffscreenRenderer::recordScene(VkCommandBuffer cmd, const std::function<voi
   discardTargets(cmd);
   VkRenderingAttachmentInfo color = vk::colorAttachment(targets_.hdr.view(), VK_ATTACHMENT_LOAD_OP_CLEAR, kBackground);
   resolveInto(color);
-  VkRenderingAttachmentInfo depth =
-      vk::depthAttachment(targets_.depth.view(), VK_ATTACHMENT_LOAD_OP_CLEAR, VK_ATTACHMENT_STORE_OP_DONT_CARE);
+  VkRenderingAttachmentInfo depth = sceneDepth(VK_ATTACHMENT_LOAD_OP_CLEAR, VK_ATTACHMENT_STORE_OP_DONT_CARE);
   VkRenderingInfo info = renderingInfo(extent(), &color, &depth);
   ctx_.fn().vkCmdBeginRendering(cmd, &info);
   draws(cmd);

@@ -19,8 +19,10 @@
 namespace hp::render {
 class OffscreenRenderer {
  public:
+  // reversedDepth: the depth cleared to 0 and formats() saying so, as a reversed-Z application's (its views'
+  // projections must then be reversed too).
   OffscreenRenderer(const vk::Context& ctx, std::uint32_t width, std::uint32_t height, std::uint32_t msaa,
-                    RasterMode raster = RasterMode::Graphics);
+                    RasterMode raster = RasterMode::Graphics, bool reversedDepth = false);
   RasterMode raster() const { return raster_; }
   // Compute raster: binds this renderer's extent and depth to the hair's rasterizer (outside the frame loop).
   void attach(HairSystem& hair) const;
@@ -63,8 +65,12 @@ class OffscreenRenderer {
   void resolveInto(VkRenderingAttachmentInfo& color) const;
   const vk::Image& hdrInput() const { return targets_.resolved ? targets_.resolved : targets_.hdr; }
 
+  // The depth attachment as the scene's renderings take it (cleared to the far plane of its convention).
+  VkRenderingAttachmentInfo sceneDepth(VkAttachmentLoadOp load, VkAttachmentStoreOp store) const;
+
   const vk::Context& ctx_;
   RasterMode raster_;
+  bool reversedDepth_;
   RenderTargets targets_;
   TonemapPass tonemap_;
 };

@@ -139,7 +139,7 @@ struct RasterParams {
   uint chunkCount;    // chunks of every source together
   uint maxGroupsX;    // the device's maxComputeWorkGroupCount[0] (the shade dispatch goes 2D past it)
   float shadingSpacing;  // pixels: a strand's odd vertices take their neighbours' mean within it (0: none)
-  uint pad1;
+  uint reversedDepth;  // 1: the head's depth and the view's projection are reversed-Z (near 1): read as 1 - z
   uint pad2;
 };
 HP_END

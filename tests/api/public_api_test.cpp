@@ -105,6 +105,27 @@ TEST(PublicApiWithoutDevice, AssetsAndHelpersRefuseBadInputByName) {
 
 // The studio splits into its two bright regions as lights, the rim (brightest) first, and SH for the rest,
 // which a look takes; an image that is not an environment is refused naming the problem.
+// makeView's projection maps the near plane to depth 0 and the far one to 1, or with Camera::reversedDepth
+// the other way round (what AttachmentFormats::reversedDepth expects of every view).
+TEST(PublicApiWithoutDevice, MakeViewReversesDepthOnRequest) {
+  hairpipe::Camera camera;  // eye at z = 1 looking at the origin
+  camera.nearZ = 0.1f;
+  camera.farZ = 10.0f;
+  const auto depthAt = [](const hairpipe::View& v, float distance) {  // along the view axis, in front of the eye
+    const float* p = v.projection.m;  // column-major: element (row r, column c) at p[c * 4 + r]
+    const float zView = -distance;   // view space looks down -z
+    return (p[10] * zView + p[14]) / (p[11] * zView + p[15]);
+  };
+  const hairpipe::Result<hairpipe::View> forward = hairpipe::makeView(camera, {64, 64});
+  camera.reversedDepth = true;
+  const hairpipe::Result<hairpipe::View> reversed = hairpipe::makeView(camera, {64, 64});
+  ASSERT_TRUE(forward.ok() && reversed.ok());
+  EXPECT_NEAR(depthAt(forward.value(), 0.1f), 0.0f, 1e-5f);
+  EXPECT_NEAR(depthAt(forward.value(), 10.0f), 1.0f, 1e-5f);
+  EXPECT_NEAR(depthAt(reversed.value(), 0.1f), 1.0f, 1e-5f);
+  EXPECT_NEAR(depthAt(reversed.value(), 10.0f), 0.0f, 1e-5f);
+}
+
 TEST(PublicApiWithoutDevice, EnvironmentLightingSplitsTheStudioAndRefusesBadImages) {
   hairpipe::Result<hairpipe::EnvironmentImage> studio = hairpipe::studioEnvironment();
   ASSERT_TRUE(studio.ok()) << studio.message();

@@ -595,6 +595,54 @@ TEST_F(VulkanTest, AnInstancePreparedOnAnotherThreadComputesNoTablesOrTransferWh
   EXPECT_THROW(hp::prepareInstance(asset, settings), hp::Error);
 }
 
+namespace {
+// The default-orbit frame of one head, on a target whose depth has the given convention (cleared to 0 and
+// the projection's planes swapped where reversed), graphics or compute raster.
+std::vector<std::uint8_t> frameWithDepthConvention(const hp::vk::Context& ctx, hp::RasterMode raster, bool reversed) {
+  hp::render::OffscreenRenderer target(ctx, kRendererWidth, kRendererHeight, 1, raster, reversed);
+  hp::RendererSettings settings = rendererSettings(target);
+  settings.raster = raster;
+  hp::Renderer renderer(ctx, settings);
+  auto hair = renderer.createInstance(head(800), {});
+  hp::HairInstance* one[] = {hair.get()};
+  hp::View view = frontView(0.0f);
+  if (reversed) {  // the same planes as orbitCamera's, swapped: near at depth 1, far at 0
+    const float distance = 1.1f;
+    view.camera.proj = glm::perspectiveRH_ZO(view.camera.fovY, float(kRendererWidth) / kRendererHeight,
+                                             20.0f * distance, 0.02f * distance);
+  }
+  if (raster == hp::RasterMode::Compute) target.attach(renderer, one);
+  hp::vk::submitAndWait(ctx, [&](VkCommandBuffer cmd) {
+    renderer.recordUpdate(cmd, 0, one);
+    renderer.recordShadows(cmd, 0, hp::LightSpec{}, one);
+    if (raster == hp::RasterMode::Compute) target.record(cmd, renderer, 0, view, one, 1.0f);
+    else target.record(cmd, [&](VkCommandBuffer c) { renderer.recordDraw(c, 0, view, one); }, 1.0f);
+  }, "depth convention");
+  return target.readDisplay();
+}
+}  // namespace
+
+// A reversed-Z application (depth cleared to 0, nearer larger, a reversed projection) gets the frame a
+// forward one gets, with either raster: the heads' and ribbons' depth test turned, the compute raster reading
+// the depth and the hair's projected depth as 1 - z. Without that the reversed frame has no head (every
+// fragment fails LESS_OR_EQUAL against 0).
+TEST_F(VulkanTest, AReversedDepthApplicationGetsTheForwardFrame) {
+  for (const hp::RasterMode raster : {hp::RasterMode::Graphics, hp::RasterMode::Compute}) {
+    const auto forward = frameWithDepthConvention(*ctx, raster, false);
+    const auto reversed = frameWithDepthConvention(*ctx, raster, true);
+    double forwardSum = 0.0, reversedSum = 0.0;
+    for (std::size_t px = 0; px < forward.size() / 4; ++px) {
+      forwardSum += hp::test::rgbaLinearSum(forward, px);
+      reversedSum += hp::test::rgbaLinearSum(reversed, px);
+    }
+    const std::size_t differing = differingPixels(forward, reversed);
+    std::cout << (raster == hp::RasterMode::Compute ? "compute" : "graphics") << ": " << differing
+              << " pixels differ, brightness ratio " << reversedSum / forwardSum << "\n";
+    EXPECT_LT(differing, forward.size() / 4 / 100);
+    EXPECT_NEAR(reversedSum / forwardSum, 1.0, 0.005);
+  }
+}
+
 TEST_F(VulkanTest, FrameBlocksCarryTheHairsForwardAlbedoWithDualScatteringOnly) {
   hp::render::OffscreenRenderer target(*ctx, 64, 48, 1);
   hp::Renderer renderer(*ctx, rendererSettings(target));

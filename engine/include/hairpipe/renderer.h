@@ -34,8 +34,9 @@
 //       rendering, begun by the application) whose attachments have RendererSettings::formats and cover
 //       view.extent from (0, 0): colour in COLOR_ATTACHMENT_OPTIMAL, depth in DEPTH_ATTACHMENT_OPTIMAL or
 //       DEPTH_STENCIL_ATTACHMENT_OPTIMAL, a stencil attachment exactly where formats.stencil names one
-//       (the depth's combined image; hairpipe neither tests nor writes stencil). Depth convention: test LESS_OR_EQUAL against a depth cleared to
-//       1 (reversed-Z is not supported). Draws the heads of instances with InstanceSettings::drawHead
+//       (the depth's combined image; hairpipe neither tests nor writes stencil). Depth convention: test
+//       LESS_OR_EQUAL against a depth cleared to 1, or with formats.reversedDepth GREATER_OR_EQUAL against
+//       one cleared to 0 (the views' projections reversed too). Draws the heads of instances with InstanceSettings::drawHead
 //       (depth test and write, colour write) and, in RasterMode::Graphics, the hair (ribbons, depth
 //       tested, blended) in EARLY/LATE_FRAGMENT_TESTS and COLOR_ATTACHMENT_OUTPUT. Sets its own viewport
 //       (the whole extent, y up: a negative-height viewport for OpenGL-style projections) and scissor.

@@ -34,6 +34,10 @@ struct AttachmentFormats {  // the application's attachments recordDraw / record
   // Its stencil attachment: VK_FORMAT_UNDEFINED where the rendering has none (a combined depth attached as
   // depth only), else the depth's own combined format (the same image view as depth and stencil).
   VkFormat stencil = VK_FORMAT_UNDEFINED;
+  // The depth's convention. false: cleared to 1, nearer is smaller (hairpipe tests LESS_OR_EQUAL); true:
+  // reversed-Z, cleared to 0, nearer is larger (GREATER_OR_EQUAL), and each View::projection maps the near
+  // plane to 1 (Camera::reversedDepth makes one; a far plane at infinity is fine).
+  bool reversedDepth = false;
 };
 
 // The opacity shadow maps the Renderer shares among its instances (one light).
@@ -359,6 +363,7 @@ struct Camera {
   float fovY = 0.6f;
   float nearZ = 0.01f;
   float farZ = 100.0f;
+  bool reversedDepth = false;  // a reversed-Z projection (near plane at depth 1, far at 0)
 };
 
 // Where a head is during one frame (head space to world), and the clock.
