@@ -139,6 +139,10 @@ Result<Instance> Renderer::createInstance(const Asset& asset, const InstanceSett
   });
 }
 
+Status Renderer::releaseRetired() noexcept {
+  return guardedStatus("hairpipe::Renderer::releaseRetired", [&] { implementation(impl_).releaseRetired(); });
+}
+
 Status Renderer::recordUpdate(VkCommandBuffer cmd, std::uint64_t frame, std::span<Instance* const> instances) noexcept {
   return guardedStatus("hairpipe::Renderer::recordUpdate",
                        [&] { implementation(impl_).recordUpdate(cmd, frame, implementations(instances)); });

@@ -135,6 +135,9 @@ class Renderer {
   // them. (The setters swap last; a raster target follows after the change, in a batch of its own.)
   void withUploads(const std::string& name, const std::function<void()>& change);
   std::size_t retiredCount() const { return retired_.size(); }
+  // The caller waited for every frame recorded so far: what was retired is destroyed now instead of by a
+  // later record call (a level unloaded, the Renderer kept). What changes' waiting uploads need stays.
+  void releaseRetired() { retired_.clear(); }
 
  private:
   friend class HairInstance;

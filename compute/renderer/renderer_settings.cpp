@@ -79,6 +79,9 @@ void View::validate(std::uint32_t maxViews) const {
   if (!allFinite(camera.view) || !allFinite(camera.proj) || !std::isfinite(camera.fovY) ||
       !std::isfinite(glm::length(camera.position)))
     throw Error("the view's matrices, eye and fovY must be finite");
+  // The strands' width in pixels follows from fovY: a value no projection has would draw them wrongly sized.
+  if (!(camera.fovY > 0.0f && camera.fovY < 3.14159f))
+    throw Error("View.fovY must be in (0, pi) radians, got " + numberText(camera.fovY));
   if (!(std::abs(jitter.x) <= 1.0f && std::abs(jitter.y) <= 1.0f))
     throw Error("View.jitter must be finite, within [-1, 1] pixels, got (" + numberText(jitter.x) + ", " +
                 numberText(jitter.y) + ")");

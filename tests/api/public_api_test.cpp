@@ -399,6 +399,9 @@ TEST_F(PublicApi, RecordCallsRefuseBadFramesBeforeRecording) {
   hairpipe::View view;
   view.index = 4;  // maxViewsPerFrame is 4
   EXPECT_THAT(failureOf(renderer_->recordDraw(VK_NULL_HANDLE, 0, view, heads)), HasSubstr("index"));
+  view.index = 0;
+  view.fovY = -0.5f;
+  EXPECT_THAT(failureOf(renderer_->recordDraw(VK_NULL_HANDLE, 0, view, heads)), HasSubstr("View.fovY must be in (0, pi) radians, got -0.5"));
   EXPECT_THAT(failureOf(renderer_->setRasterTarget({64, 64}, VK_NULL_HANDLE, heads)), HasSubstr("not compute"));
   EXPECT_THAT(failureOf(renderer_->recordRaster(VK_NULL_HANDLE, 0, hairpipe::View{})), HasSubstr("setRasterTarget"));
   EXPECT_EQ(renderer_->raster(), hairpipe::RasterMode::Graphics);

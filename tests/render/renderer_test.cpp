@@ -574,6 +574,24 @@ TEST_F(VulkanTest, MaterialChangesReplacedBeforeTheirTurnAreNotBuilt) {
   EXPECT_TRUE(heads.hair->settings().material == tinted(0.05 * 8));
 }
 
+// An instance destroyed in the frame loop is retired (frames in flight may read it); once the application
+// has waited for its frames, releaseRetired gives its device memory back at once.
+TEST_F(VulkanTest, RetiredInstancesAreReleasedWhenTheApplicationSaysItsFramesAreDone) {
+  OneHeadFrames heads(*ctx);
+  heads.frame(0);
+  auto second = heads.renderer.createInstance(head(400), {});
+  heads.frame(1);  // its uploads run in this frame
+  const std::uint64_t withTwo = ctx->allocatedBytes();
+  const std::size_t retiredBefore = heads.renderer.retiredCount();
+  heads.renderer.destroyInstance(std::move(second));  // in the frame loop: retired, not freed
+  EXPECT_GT(heads.renderer.retiredCount(), retiredBefore);
+  EXPECT_EQ(ctx->allocatedBytes(), withTwo);
+  heads.renderer.releaseRetired();  // frames 0 and 1 were waited for (submitAndWait)
+  EXPECT_EQ(heads.renderer.retiredCount(), 0u);
+  EXPECT_LT(ctx->allocatedBytes(), withTwo);
+  heads.frame(2);  // the remaining head still draws
+}
+
 // An instance's CPU start-up work prepared on a loading thread: its tables and its head's transfer are
 // computed there, once, and createInstance on this thread computes neither.
 TEST_F(VulkanTest, AnInstancePreparedOnAnotherThreadComputesNoTablesOrTransferWhenCreated) {

@@ -179,6 +179,11 @@ class Renderer {
   Status setOpacityTuning(const OpacitySettings& opacity) noexcept;
   // The raster mode in effect (Auto resolved for the device).
   RasterMode raster() const noexcept;
+  // Every frame recorded so far is complete (the application waited on its fences or its device): what
+  // destroyed instances and replaced resources left retired is destroyed now, rather than by the record
+  // calls framesInFlight frames later (a level unloaded while the Renderer is kept: its device memory comes
+  // back at once). Work recorded for the next frame (changes since the last one) keeps what it needs.
+  Status releaseRetired() noexcept;
   // The pipeline cache's data now (vkGetPipelineCacheData), for RendererSettings::pipelineCache of a later run.
   Result<std::vector<std::uint8_t>> pipelineCacheData() const noexcept;
 
