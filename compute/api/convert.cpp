@@ -157,6 +157,7 @@ hp::ScalpInput scalp(const ScalpInput& s) {
                                                   : hp::ScalpInput::Kind::Rigid;
   h.rootFrames = s.rootFrames;
   h.rootFramesBytes = s.rootFramesBytes;
+  h.rootFramesOffset = s.rootFramesOffset;
   h.boneCount = s.boneCount;
   h.skin.reserve(s.skin.size());
   for (const SkinWeights& w : s.skin)

@@ -45,6 +45,11 @@ ScalpState::ScalpState(const vk::Context& ctx, const ScalpInput& input, std::spa
     : ctx_(&ctx), input_(input) {
   const std::uint32_t guides = static_cast<std::uint32_t>(rest.size() / particlesPerGuide);
   input_.validate(guides);
+  const VkDeviceSize alignment = ctx.properties().limits.minStorageBufferOffsetAlignment;
+  if (input_.kind == ScalpInput::Kind::RootFrames && input_.rootFramesOffset % alignment != 0)
+    throw Error("scalp input: the root frames' offset " + std::to_string(input_.rootFramesOffset) +
+                " is not a multiple of the device's minStorageBufferOffsetAlignment (" + std::to_string(alignment) + ")");
+  rootFramesRange_ = VkDeviceSize(guides) * 2 * sizeof(glm::vec4);
   dummy_ = vk::Buffer(ctx, 64, kScalpUsage, vk::MemoryKind::DeviceLocal, "scalp unused");
   if (input_.kind == ScalpInput::Kind::RootFrames) {
     // The frame before the first: the rest roots placed by the initial head.
@@ -80,7 +85,11 @@ std::uint32_t ScalpState::mode() const {
 void ScalpState::writeDescriptors(const vk::DescriptorSet& set) const {
   const bool frames = input_.kind == ScalpInput::Kind::RootFrames;
   const bool bones = input_.kind == ScalpInput::Kind::Bones;
-  set.writeStorageBuffer(gpu::SIM_BINDING_ROOTS, frames ? input_.rootFrames : dummy_.handle());
+  if (frames)
+    set.writeBuffer(gpu::SIM_BINDING_ROOTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, input_.rootFrames, input_.rootFramesOffset,
+                    rootFramesRange_);
+  else
+    set.writeStorageBuffer(gpu::SIM_BINDING_ROOTS, dummy_.handle());
   set.writeStorageBuffer(gpu::SIM_BINDING_ROOTS_PREV, frames ? rootsPrev_.handle() : dummy_.handle());
   set.writeStorageBuffer(gpu::SIM_BINDING_BONES, bones ? bones_.handle() : dummy_.handle());
   set.writeStorageBuffer(gpu::SIM_BINDING_SKIN, bones ? skin_.handle() : dummy_.handle());

@@ -27,7 +27,8 @@ struct ScalpInput {
   enum class Kind { Rigid, RootFrames, Bones };
   Kind kind = Kind::Rigid;
   VkBuffer rootFrames = VK_NULL_HANDLE;  // RootFrames: the application's buffer (storage usage) ...
-  VkDeviceSize rootFramesBytes = 0;      // ... and its size, at least guides x 32 bytes
+  VkDeviceSize rootFramesBytes = 0;      // ... its size from rootFramesOffset, at least guides x 32 bytes
+  VkDeviceSize rootFramesOffset = 0;     // ... where the frames start: a multiple of minStorageBufferOffsetAlignment
   std::vector<gpu::SkinWeights> skin;    // Bones: one per guide, weights >= 0 summing to 1
   std::uint32_t boneCount = 0;           // Bones: [1, SIM_MAX_BONES]
   void validate(std::uint32_t guideCount) const;  // throws hp::Error naming the problem
@@ -51,6 +52,7 @@ class ScalpState {
   const vk::Context* ctx_;
   ScalpInput input_;
   vk::Buffer rootsPrev_;  // RootFrames: last frame's root frames (written by the simulate shader)
+  VkDeviceSize rootFramesRange_ = 0;  // RootFrames: the bytes of the application's buffer read, guides x 32
   vk::Buffer bones_;      // Bones: 2 x boneCount mat4 (start, end)
   vk::Buffer skin_;       // Bones: SkinWeights per guide
   vk::Buffer dummy_;      // bound where the mode reads nothing

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -143,45 +144,74 @@ TEST_F(VulkanTest, BoneSkinnedRootsFollowExactlyAndAMovingCapsuleIsNeverPenetrat
   EXPECT_LT(freeClearance, -0.005) << "the capsule is not where the hair goes; the test proves nothing";
 }
 
-TEST_F(VulkanTest, RootFramesCarryingARigidRotationReproduceTheRigidHead) {
+namespace {
+// The application's root frames, starting `offset` bytes into its buffer (NaN before them: reading from the
+// wrong place would show), carrying a rigid rotation, against the rigid head: the largest distance between
+// the two simulations' particles and between the skinned roots and the frames given, metres.
+struct RootFrameRun {
+  double worst = 0.0, rootWorst = 0.0;
+};
+RootFrameRun rootFramesAgainstTheRigidHead(const vk::Context& ctx, VkDeviceSize offset) {
   const HairAsset asset = smallHead();
   SimulationParams params;
   const std::uint32_t guides = asset.guides.guideCount();
-  vk::Buffer frames(*ctx, VkDeviceSize(guides) * 2 * sizeof(glm::vec4),
+  const std::size_t padding = std::size_t(offset / sizeof(glm::vec4));
+  vk::Buffer frames(ctx, offset + VkDeviceSize(guides) * 2 * sizeof(glm::vec4),
                     VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT, vk::MemoryKind::DeviceLocal,
                     "application root frames");
   ScalpInput scalp;
   scalp.kind = ScalpInput::Kind::RootFrames;
   scalp.rootFrames = frames.handle();
-  scalp.rootFramesBytes = frames.size();
-  SimulatePass skinned(*ctx, asset, params, glm::mat4(1.0f), nullptr, scalp);
-  SimulatePass rigid(*ctx, asset, params);
+  scalp.rootFramesBytes = frames.size() - offset;
+  scalp.rootFramesOffset = offset;
+  SimulatePass skinned(ctx, asset, params, glm::mat4(1.0f), nullptr, scalp);
+  SimulatePass rigid(ctx, asset, params);
   // Without colliders: in root frames mode they follow the (here identity) head pair, not the roots.
   skinned.setColliders({});
   rigid.setColliders({});
   const std::uint32_t p = skinned.particlesPerGuide();
-  double worst = 0.0, rootWorst = 0.0;
+  RootFrameRun run;
   for (int f = 0; f < 30; ++f) {
     const double t0 = f * params.dt, t1 = (f + 1) * params.dt;
     const glm::mat4 from = jawBone(t0), to = jawBone(t1);
     // The application's skinning: each root's world position and the head's rotation.
-    std::vector<glm::vec4> data;
+    std::vector<glm::vec4> data(padding, glm::vec4(std::nanf("")));
     const glm::quat q = glm::quat_cast(glm::mat3(to));
     for (std::uint32_t g = 0; g < guides; ++g) {
       data.push_back(to * glm::vec4(glm::vec3(skinned.rest()[std::size_t(g) * p]), 1.0f));
       data.emplace_back(q.x, q.y, q.z, q.w);
     }
-    vk::upload<glm::vec4>(*ctx, frames, data, vk::BufferUse::ComputeRead);
-    runFrame(*ctx, skinned, HeadMotion{});
-    runFrame(*ctx, rigid, HeadMotion{from, to, t0, false});
-    const auto a = positions(*ctx, skinned), b = positions(*ctx, rigid);
-    for (std::size_t i = 0; i < a.size(); ++i) worst = std::max(worst, double(glm::length(glm::vec3(a[i] - b[i]))));
+    vk::upload<glm::vec4>(ctx, frames, data, vk::BufferUse::ComputeRead);
+    runFrame(ctx, skinned, HeadMotion{});
+    runFrame(ctx, rigid, HeadMotion{from, to, t0, false});
+    const auto a = positions(ctx, skinned), b = positions(ctx, rigid);
+    for (std::size_t i = 0; i < a.size(); ++i) run.worst = std::max(run.worst, double(glm::length(glm::vec3(a[i] - b[i]))));
     for (std::uint32_t g = 0; g < guides; ++g)
-      rootWorst = std::max(rootWorst, double(glm::length(glm::vec3(a[std::size_t(g) * p] - data[2 * g]))));
+      run.rootWorst = std::max(run.rootWorst, double(glm::length(glm::vec3(a[std::size_t(g) * p] - data[padding + 2 * g]))));
   }
-  EXPECT_LT(rootWorst, 1e-5);
-  // Matrix vs quaternion arithmetic in float over 30 frames: micrometres.
-  EXPECT_LT(worst, 2e-5) << "root frames vs rigid head, metres";
+  return run;
+}
+}  // namespace
+
+TEST_F(VulkanTest, RootFramesCarryingARigidRotationReproduceTheRigidHead) {
+  // At the buffer's start, and past two of the device's storage offset alignments (at least 16 bytes).
+  const VkDeviceSize alignment = std::max<VkDeviceSize>(ctx->properties().limits.minStorageBufferOffsetAlignment, 16);
+  for (const VkDeviceSize offset : {VkDeviceSize(0), 2 * alignment}) {
+    const RootFrameRun run = rootFramesAgainstTheRigidHead(*ctx, offset);
+    EXPECT_LT(run.rootWorst, 1e-5) << "offset " << offset;
+    // Matrix vs quaternion arithmetic in float over 30 frames: micrometres.
+    EXPECT_LT(run.worst, 2e-5) << "root frames vs rigid head, metres; offset " << offset;
+  }
+  // An offset off the device's alignment is refused by name.
+  const HairAsset asset = smallHead();
+  vk::Buffer frames(*ctx, 4096, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryKind::DeviceLocal, "misaligned frames");
+  ScalpInput scalp;
+  scalp.kind = ScalpInput::Kind::RootFrames;
+  scalp.rootFrames = frames.handle();
+  scalp.rootFramesBytes = 4096 - 4;
+  scalp.rootFramesOffset = 4;
+  if (ctx->properties().limits.minStorageBufferOffsetAlignment > 4)
+    EXPECT_THROW(SimulatePass(*ctx, asset, {}, glm::mat4(1.0f), nullptr, scalp), hp::Error);
 }
 
 TEST_F(VulkanTest, ScalpInputIsValidatedWhenSet) {

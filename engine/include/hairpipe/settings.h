@@ -212,8 +212,11 @@ struct ScalpInput {
   // per guide the root's world position (vec4, w unused) and its unit orientation quaternion (x, y, z, w).
   // The application's writes are made visible to COMPUTE_SHADER storage reads before recordUpdate,
   // which only reads it, in COMPUTE_SHADER.
+  // The frames may start at rootFramesOffset (a sub-allocation of a larger buffer): a multiple of the
+  // device's minStorageBufferOffsetAlignment, with rootFramesBytes counted from there.
   VkBuffer rootFrames = VK_NULL_HANDLE;
   VkDeviceSize rootFramesBytes = 0;
+  VkDeviceSize rootFramesOffset = 0;
   std::vector<SkinWeights> skin;    // Bones: one per guide
   std::uint32_t boneCount = 0;      // Bones: [1, 256]
 };
