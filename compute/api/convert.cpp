@@ -213,6 +213,7 @@ hp::View view(const View& v) {
   h.lines = v.lines;
   h.jitter = {v.jitterX, v.jitterY};
   if (v.hasPrevious) h.previousViewProj = mat(v.previousViewProjection);
+  h.fromApplication = true;
   return h;
 }
 

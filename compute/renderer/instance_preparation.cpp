@@ -6,7 +6,7 @@
 namespace hp {
 void prepareInstance(const HairAsset& asset, const InstanceSettings& settings) {
   settings.validate();
-  sharedLut(settings.lutMode, settings.material);  // what Renderer::marschner takes for this material
+  sharedMarschnerParams(settings.lutMode, settings.material);  // and its tables: what Renderer::marschner takes
   if (settings.drawHead) render::prepareSkinTransfer(asset.head);
 }
 }  // namespace hp

@@ -19,6 +19,7 @@ struct LutWorker {
   std::condition_variable wake;
   std::deque<std::weak_ptr<LutBuild>> queue;  // under mutex
   bool started = false;                          // under mutex
+  std::uint32_t holds = 0;                       // under mutex: LutWorkerHold objects alive (the worker waits)
   std::atomic<std::uint64_t> built{0};
 };
 
@@ -37,13 +38,13 @@ static void* runLutWorker(void*) {
     std::shared_ptr<hp::LutBuild> build;
     {
       std::unique_lock<std::mutex> lock(w.mutex);
-      w.wake.wait(lock, [&] { return !w.queue.empty(); });
+      w.wake.wait(lock, [&] { return !w.queue.empty() && w.holds == 0; });
       build = w.queue.front().lock();
       w.queue.pop_front();
     }
     if (!build) continue;  // replaced before its turn
+    ++w.built;              // before run() signals done: a waiter then sees it counted
     build->run();
-    ++w.built;
   }
 }
 }
@@ -70,10 +71,23 @@ std::shared_ptr<LutBuild> LutBuild::start(const HairMaterial& material, LutMode 
 
 std::uint64_t LutBuild::builtCount() { return lutWorker().built.load(); }
 
+LutWorkerHold::LutWorkerHold() {
+  LutWorker& w = lutWorker();
+  std::lock_guard<std::mutex> lock(w.mutex);
+  ++w.holds;
+}
+
+LutWorkerHold::~LutWorkerHold() {
+  LutWorker& w = lutWorker();
+  std::lock_guard<std::mutex> lock(w.mutex);
+  --w.holds;
+  w.wake.notify_one();
+}
+
 void LutBuild::run() noexcept {
   try {
     lut_ = *sharedLut(mode_, material_);
-    params_ = marschnerGpuParams(lut_);
+    params_ = *sharedMarschnerParams(mode_, material_);
   } catch (const std::exception& e) {
     error_ = e.what();
   } catch (...) {

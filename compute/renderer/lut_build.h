@@ -21,7 +21,8 @@ class LutBuild {
  public:
   // Queues the build (starting the worker if it is not running); hp::Error when the worker cannot be started.
   static std::shared_ptr<LutBuild> start(const HairMaterial& material, LutMode mode);
-  // Builds the worker has run in this process (skipped ones not counted).
+  // Builds the worker has started in this process (skipped ones not counted); counted before the build is
+  // done, so a wait() that returned sees its own build counted.
   static std::uint64_t builtCount();
   LutBuild(const HairMaterial& material, LutMode mode) : material_(material), mode_(mode) {}
 
@@ -45,5 +46,15 @@ class LutBuild {
   mutable std::mutex mutex_;
   mutable std::condition_variable finished_;
   bool done_ = false;  // under mutex_
+};
+
+// While one lives the worker starts no build (the one it runs goes on): tests queue several changes and
+// release them at once, so which are skipped does not depend on the threads' timing.
+class LutWorkerHold {
+ public:
+  LutWorkerHold();
+  ~LutWorkerHold();
+  LutWorkerHold(const LutWorkerHold&) = delete;
+  LutWorkerHold& operator=(const LutWorkerHold&) = delete;
 };
 }  // namespace hp

@@ -124,7 +124,7 @@ ComputeRaster& Renderer::target() { return const_cast<ComputeRaster&>(std::as_co
 void Renderer::recordRaster(VkCommandBuffer cmd, std::uint64_t frame, const View& view, vk::GpuProfiler* profiler) {
   requireNoDeferredWork("recordRaster");
   ComputeRaster& t = target();
-  view.validate(settings_.maxViewsPerFrame);
+  view.validate(settings_.maxViewsPerFrame, settings_.formats.reversedDepth);
   beginFrame(frame, t.instances());
   for (HairInstance* i : t.instances()) i->noteViewFraction(frame, i->lodFraction(view.camera.position));
   t.record(cmd, frame, view, frameLights_[frame % settings_.framesInFlight], profiler);
@@ -157,7 +157,7 @@ std::shared_ptr<render::MarschnerTextures> Renderer::cachedMarschner(const HairM
 
 std::shared_ptr<render::MarschnerTextures> Renderer::marschner(const HairMaterial& material, LutMode mode) {
   if (auto cached = cachedMarschner(material, mode)) return cached;
-  return marschnerFrom(*sharedLut(mode, material));
+  return marschnerFrom(*sharedLut(mode, material), sharedMarschnerParams(mode, material).get());
 }
 
 std::shared_ptr<render::MarschnerTextures> Renderer::marschnerFrom(const MarschnerLut& lut,
@@ -210,11 +210,13 @@ void Renderer::setOpacityTuning(const render::OpacitySettings& opacity) {
 void Renderer::beginFrame(std::uint64_t frame, std::span<HairInstance* const> instances) {
   for (const HairInstance* i : instances)
     if (!i || &i->renderer_ != this) throw Error("Renderer: an instance is null or belongs to another Renderer");
-  // Retirement counts frames: a number that went back would free what frames in flight still read.
-  if (lastFrame_ && frame < *lastFrame_)
+  // Retirement counts frames: a number that went back would free what frames in flight still read (after
+  // releaseRetired nothing is in flight and nothing retired: the numbering may start again).
+  if (lastFrame_ && frame < *lastFrame_ && !numberingRestarts_)
     throw Error("Renderer: frame " + std::to_string(frame) + " comes after frame " + std::to_string(*lastFrame_) +
-                " was recorded: frame numbers must not go back");
-  if (!lastFrame_ || frame > *lastFrame_) lastFrame_ = frame;
+                " was recorded: frame numbers must not go back (after releaseRetired they may start again)");
+  if (!lastFrame_ || frame > *lastFrame_ || numberingRestarts_) lastFrame_ = frame;
+  numberingRestarts_ = false;
   // Frame `frame - framesInFlight` is complete (the application waited for it): what was retired by then goes.
   std::erase_if(retired_, [&](const Retired& r) { return !r.after || frame >= *r.after + settings_.framesInFlight; });
 }
@@ -314,7 +316,7 @@ void Renderer::recordHeadBounce(VkCommandBuffer cmd, const render::FrameLights& 
 void Renderer::recordDraw(VkCommandBuffer cmd, std::uint64_t frame, const View& view,
                           std::span<HairInstance* const> instances, vk::GpuProfiler* profiler) {
   requireNoDeferredWork("recordDraw");
-  view.validate(settings_.maxViewsPerFrame);
+  view.validate(settings_.maxViewsPerFrame, settings_.formats.reversedDepth);
   beginFrame(frame, instances);
   const render::FrameLights& lights = frameLights_[frame % settings_.framesInFlight];
   for (HairInstance* i : instances) {

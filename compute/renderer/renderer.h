@@ -137,7 +137,11 @@ class Renderer {
   std::size_t retiredCount() const { return retired_.size(); }
   // The caller waited for every frame recorded so far: what was retired is destroyed now instead of by a
   // later record call (a level unloaded, the Renderer kept). What changes' waiting uploads need stays.
-  void releaseRetired() { retired_.clear(); }
+  // The frame numbers may then start again anywhere (an application that resets its counter).
+  void releaseRetired() {
+    retired_.clear();
+    numberingRestarts_ = true;
+  }
 
  private:
   friend class HairInstance;
@@ -190,6 +194,7 @@ class Renderer {
   std::vector<render::FrameLights> frameLights_;  // per ring slot: the lights recordShadows was given
   std::vector<Retired> retired_;
   std::optional<std::uint64_t> lastFrame_;
+  bool numberingRestarts_ = false;  // releaseRetired: the next frame number may be below lastFrame_
   std::shared_ptr<ComputeRaster> rasterTarget_;  // retired through retire() when replaced
   std::vector<std::shared_ptr<vk::DeferredWork>> deferred_;  // changes' uploads not yet executed
   std::vector<std::shared_ptr<void>> retiredWithDeferred_;   // retired while such work waited

@@ -74,7 +74,7 @@ std::uint32_t lodStrandCount(float fraction, std::uint32_t strands) {
   return std::uint32_t(std::clamp(n, 1.0, double(strands)));
 }
 
-void View::validate(std::uint32_t maxViews) const {
+void View::validate(std::uint32_t maxViews, bool reversedDepth) const {
   if (extent.width == 0 || extent.height == 0) throw Error("View.extent must be non-zero");
   if (!allFinite(camera.view) || !allFinite(camera.proj) || !std::isfinite(camera.fovY) ||
       !std::isfinite(glm::length(camera.position)))
@@ -89,5 +89,10 @@ void View::validate(std::uint32_t maxViews) const {
   if (index >= maxViews)
     throw Error("View.index " + std::to_string(index) + " is past RendererSettings.maxViewsPerFrame (" +
                 std::to_string(maxViews) + ")");
+  if (!fromApplication) return;
+  const float slope = camera.proj[2][2];
+  if (reversedDepth ? slope < 0.0f : slope >= 0.0f)
+    throw Error(std::string("View.projection maps depth ") + (reversedDepth ? "forward" : "reversed (near to 1)") +
+                ", but RendererSettings.formats.reversedDepth is " + (reversedDepth ? "true" : "false"));
 }
 }  // namespace hp

@@ -92,6 +92,12 @@ struct View {
   glm::vec2 jitter{0.0f};
   // The previous frame's unjittered proj * view, for motion vectors; none: the camera did not move.
   std::optional<glm::mat4> previousViewProj;
-  void validate(std::uint32_t maxViews) const;
+  // An application's view (the public API's): its projection is checked against the depth convention (the
+  // tools' own views, some without a projection in shadow-only frames, are not).
+  bool fromApplication = false;
+  // maxViews and, for an application's view, the depth convention: a right-handed projection's depth falls
+  // toward the eye (proj[2][2] < 0) forward and rises reversed (>= 0: 0 with the far plane at infinity); the
+  // other way draws nothing. Throws hp::Error naming the problem.
+  void validate(std::uint32_t maxViews, bool reversedDepth) const;
 };
 }  // namespace hp

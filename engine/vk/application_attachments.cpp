@@ -48,10 +48,12 @@ void requireAttachmentSupport(const Context& ctx, const hairpipe::AttachmentForm
                 (sampledDepth ? " the compute raster can sample" : "") + " on " + device);
   const VkPhysicalDeviceLimits& limits = ctx.properties().limits;
   const VkSampleCountFlags counts = limits.framebufferColorSampleCounts & limits.framebufferDepthSampleCounts &
-                                    (formats.stencil != VK_FORMAT_UNDEFINED ? limits.framebufferStencilSampleCounts : ~0u);
+                                    (formats.stencil != VK_FORMAT_UNDEFINED ? limits.framebufferStencilSampleCounts : ~0u) &
+                                    (sampledDepth ? limits.sampledImageDepthSampleCounts : ~0u);
   if ((counts & formats.samples) == 0)
     throw Error("RendererSettings.formats.samples: " + std::to_string(int(formats.samples)) +
-                " samples are not supported for colour and depth attachments on " + device);
+                " samples are not supported for colour and depth attachments" +
+                (sampledDepth ? std::string(" and a sampled depth") : std::string()) + " on " + device);
 }
 
 void setApplicationAttachments(GraphicsPipelineDesc& desc, const hairpipe::AttachmentFormats& formats) {

@@ -49,7 +49,7 @@ void HairSystem::recordUpdate(VkCommandBuffer cmd, const HeadMotion& motion, vk:
 }
 
 void HairSystem::recordPrepareDraw(VkCommandBuffer cmd, const DrawView& view, vk::GpuProfiler* profiler) {
-  viewOf(view, true).validate(1);
+  viewOf(view, true).validate(1, false);
   validateLights(view.lights);  // names the bad light by index, before anything is recorded
   instance_->setHeadToWorld(view.headToWorld);
   HairInstance* one[] = {instance_.get()};

@@ -103,8 +103,6 @@ TEST(PublicApiWithoutDevice, AssetsAndHelpersRefuseBadInputByName) {
   EXPECT_STREQ(hairpipe::versionString(), "0.2.0");
 }
 
-// The studio splits into its two bright regions as lights, the rim (brightest) first, and SH for the rest,
-// which a look takes; an image that is not an environment is refused naming the problem.
 // makeView's projection maps the near plane to depth 0 and the far one to 1, or with Camera::reversedDepth
 // the other way round (what AttachmentFormats::reversedDepth expects of every view).
 TEST(PublicApiWithoutDevice, MakeViewReversesDepthOnRequest) {
@@ -126,6 +124,8 @@ TEST(PublicApiWithoutDevice, MakeViewReversesDepthOnRequest) {
   EXPECT_NEAR(depthAt(reversed.value(), 10.0f), 0.0f, 1e-5f);
 }
 
+// The studio splits into its two bright regions as lights, the rim (brightest) first, and SH for the rest,
+// which a look takes; an image that is not an environment is refused naming the problem.
 TEST(PublicApiWithoutDevice, EnvironmentLightingSplitsTheStudioAndRefusesBadImages) {
   hairpipe::Result<hairpipe::EnvironmentImage> studio = hairpipe::studioEnvironment();
   ASSERT_TRUE(studio.ok()) << studio.message();
@@ -402,6 +402,9 @@ TEST_F(PublicApi, RecordCallsRefuseBadFramesBeforeRecording) {
   view.index = 0;
   view.fovY = -0.5f;
   EXPECT_THAT(failureOf(renderer_->recordDraw(VK_NULL_HANDLE, 0, view, heads)), HasSubstr("View.fovY must be in (0, pi) radians, got -0.5"));
+  view.fovY = 0.6f;  // the default View's identity projection keeps depth rising with distance ahead: not forward
+  EXPECT_THAT(failureOf(renderer_->recordDraw(VK_NULL_HANDLE, 0, view, heads)),
+              HasSubstr("View.projection maps depth reversed (near to 1), but RendererSettings.formats.reversedDepth is false"));
   EXPECT_THAT(failureOf(renderer_->setRasterTarget({64, 64}, VK_NULL_HANDLE, heads)), HasSubstr("not compute"));
   EXPECT_THAT(failureOf(renderer_->recordRaster(VK_NULL_HANDLE, 0, hairpipe::View{})), HasSubstr("setRasterTarget"));
   EXPECT_EQ(renderer_->raster(), hairpipe::RasterMode::Graphics);

@@ -100,8 +100,12 @@ case $mode in
       exit 1
     fi
     # Every other strong global symbol is hairpipe's own (namespaces hp, hairpipe and the renamed copies
-    # hp_tinyobj, hp_tinygltf; volk's hpvk_*): an application's tinyobjloader or tinygltf cannot clash.
-    foreign=$(nm -gC --defined-only "$prefix"/lib/*.a | awk 'NF >= 3 && $2 ~ /^[TDBRGS]$/ {$1 = ""; $2 = ""; print}' \
+    # hp_tinyobj, hp_tinygltf; volk's hpvk_*): an application's tinyobjloader or tinygltf cannot clash. (Weak
+    # symbols, template instances of std, glm and nlohmann::json, merge with an application's like any
+    # header-only library's.)
+    symbols=$(nm -gC --defined-only "$prefix"/lib/*.a)
+    grep -q ' hp::' <<< "$symbols" || { echo "nm listed no hp:: symbol: the check would see nothing" >&2; exit 1; }
+    foreign=$(echo "$symbols" | awk 'NF >= 3 && $2 ~ /^[TDBRGS]$/ {$1 = ""; $2 = ""; print}' \
       | sed -E 's/^ +//; s/^(vtable|typeinfo|typeinfo name|VTT|guard variable|construction vtable) for //' \
       | grep -vE '^(hp::|hairpipe::|hp_[a-z]+::|hpvk)' | sort -u || true)
     if [ -n "$foreign" ]; then

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <iostream>
 #include <memory>
+#include <array>
 #include <thread>
 #include <vector>
 
@@ -496,9 +497,6 @@ TEST_F(VulkanTest, TwoMaterialChangesBetweenFramesDrawTheSecond) {
   EXPECT_EQ(differingPixels(changed, again), 0u);
 }
 
-// An instance's frame blocks carry its physical material's mean forward albedo and the forward density
-// with dual scattering (what the hair passes on to and from the skin, frame_shadows.glsl
-// hairTransmittance), and nothing with single scattering or the paper's model.
 namespace {
 // A Renderer of one 400-strand head, one frame in flight, drawing 96 x 64 frames (recordUpdate in frame 0
 // only: the same strands in every frame).
@@ -557,25 +555,28 @@ TEST_F(VulkanTest, AMaterialChangeThatCannotApplyIsReportedAndTheFormerMaterialS
   EXPECT_GT(differingPixels(before, applied), 100u);
 }
 
-// Eight changes made at once in the frame loop build at most two tables (the one the worker started and
-// the last): the others are replaced before their turn and skipped; the last is what is drawn.
+// Eight changes queued in the frame loop while the worker is held build one table: the first seven are
+// replaced before their turn and skipped; the last is what is drawn.
 TEST_F(VulkanTest, MaterialChangesReplacedBeforeTheirTurnAreNotBuilt) {
   OneHeadFrames heads(*ctx);
   heads.frame(0);
   const std::uint64_t builtBefore = hp::LutBuild::builtCount();
-  for (int k = 1; k <= 8; ++k) heads.hair->setMaterial(tinted(0.05 * k), hp::LutMode::Float);
+  {
+    const hp::LutWorkerHold hold;
+    for (int k = 1; k <= 8; ++k) heads.hair->setMaterial(tinted(0.05 * k), hp::LutMode::Float);
+  }
   heads.hair->waitForMaterial();
   const std::uint64_t built = hp::LutBuild::builtCount() - builtBefore;
   std::cout << built << " of 8 material builds ran\n";
-  EXPECT_GE(built, 1u);
-  EXPECT_LE(built, 2u);
+  EXPECT_EQ(built, 1u);
   heads.frame(1);
   EXPECT_FALSE(heads.hair->materialPending());
   EXPECT_TRUE(heads.hair->settings().material == tinted(0.05 * 8));
 }
 
 // An instance destroyed in the frame loop is retired (frames in flight may read it); once the application
-// has waited for its frames, releaseRetired gives its device memory back at once.
+// has waited for its frames, releaseRetired gives its device memory back at once, and the frame numbers may
+// start again.
 TEST_F(VulkanTest, RetiredInstancesAreReleasedWhenTheApplicationSaysItsFramesAreDone) {
   OneHeadFrames heads(*ctx);
   heads.frame(0);
@@ -589,26 +590,31 @@ TEST_F(VulkanTest, RetiredInstancesAreReleasedWhenTheApplicationSaysItsFramesAre
   heads.renderer.releaseRetired();  // frames 0 and 1 were waited for (submitAndWait)
   EXPECT_EQ(heads.renderer.retiredCount(), 0u);
   EXPECT_LT(ctx->allocatedBytes(), withTwo);
-  heads.frame(2);  // the remaining head still draws
+  heads.frame(0);  // the numbering may start again after releaseRetired; the remaining head still draws
+  heads.frame(3);
+  hp::HairInstance* one[] = {heads.hair.get()};
+  EXPECT_THROW(heads.renderer.recordUpdate(VK_NULL_HANDLE, 2, one), hp::Error);  // going back is refused again
 }
 
-// An instance's CPU start-up work prepared on a loading thread: its tables and its head's transfer are
-// computed there, once, and createInstance on this thread computes neither.
+// An instance's CPU start-up work prepared on a loading thread (its tables, their parameter block, its head's
+// transfer: a mesh and material no earlier test used): createInstance on this thread then computes none of
+// them (without prepareInstance it computes all three).
 TEST_F(VulkanTest, AnInstancePreparedOnAnotherThreadComputesNoTablesOrTransferWhenCreated) {
   hp::HairAsset asset = head(400);
   asset.head.positions[0] *= 1.001f;  // a mesh this process has not seen
   hp::InstanceSettings settings;
   settings.material.absorption = hp::absorptionFromColor({0.31, 0.27, 0.19});  // tables not made yet
-  const std::uint64_t luts = hp::sharedLutsMade(), transfers = hp::render::skinTransfersComputed();
+  const auto made = [] {
+    return std::array<std::uint64_t, 3>{hp::sharedLutsMade(), hp::sharedMarschnerParamsMade(),
+                                        hp::render::skinTransfersComputed()};
+  };
   std::thread loader([&] { hp::prepareInstance(asset, settings); });
   loader.join();
-  EXPECT_EQ(hp::sharedLutsMade(), luts + 1);
-  EXPECT_EQ(hp::render::skinTransfersComputed(), transfers + 1);
+  const auto prepared = made();
   hp::render::OffscreenRenderer target(*ctx, 64, 48, 1);
   hp::Renderer renderer(*ctx, rendererSettings(target));
   auto hair = renderer.createInstance(asset, settings);
-  EXPECT_EQ(hp::sharedLutsMade(), luts + 1);
-  EXPECT_EQ(hp::render::skinTransfersComputed(), transfers + 1);
+  EXPECT_EQ(made(), prepared);  // createInstance made none of them
   settings.material.eta = std::nan("");
   EXPECT_THROW(hp::prepareInstance(asset, settings), hp::Error);
 }
@@ -616,8 +622,9 @@ TEST_F(VulkanTest, AnInstancePreparedOnAnotherThreadComputesNoTablesOrTransferWh
 namespace {
 // The default-orbit frame of one head, on a target whose depth has the given convention (cleared to 0 and
 // the projection's planes swapped where reversed), graphics or compute raster.
-std::vector<std::uint8_t> frameWithDepthConvention(const hp::vk::Context& ctx, hp::RasterMode raster, bool reversed) {
-  hp::render::OffscreenRenderer target(ctx, kRendererWidth, kRendererHeight, 1, raster, reversed);
+std::vector<std::uint8_t> frameWithDepthConvention(const hp::vk::Context& ctx, hp::RasterMode raster, bool reversed,
+                                                   std::uint32_t samples) {
+  hp::render::OffscreenRenderer target(ctx, kRendererWidth, kRendererHeight, samples, raster, reversed);
   hp::RendererSettings settings = rendererSettings(target);
   settings.raster = raster;
   hp::Renderer renderer(ctx, settings);
@@ -641,26 +648,33 @@ std::vector<std::uint8_t> frameWithDepthConvention(const hp::vk::Context& ctx, h
 }  // namespace
 
 // A reversed-Z application (depth cleared to 0, nearer larger, a reversed projection) gets the frame a
-// forward one gets, with either raster: the heads' and ribbons' depth test turned, the compute raster reading
-// the depth and the hair's projected depth as 1 - z. Without that the reversed frame has no head (every
-// fragment fails LESS_OR_EQUAL against 0).
+// forward one gets, with either raster and, on the compute raster, a single- or 4-sample depth: the heads' and
+// ribbons' depth test turned, the compute raster reading the depth and the hair's projected depth as 1 - z.
+// Without that the reversed frame has no head (every fragment fails LESS_OR_EQUAL against 0). Measured on
+// lavapipe: no pixel differs (graphics), 0-43 of 15,360 (compute: the order within a depth bin follows its
+// atomics, as between two forward runs); asserted: under 1%, brightness within 0.5%.
 TEST_F(VulkanTest, AReversedDepthApplicationGetsTheForwardFrame) {
-  for (const hp::RasterMode raster : {hp::RasterMode::Graphics, hp::RasterMode::Compute}) {
-    const auto forward = frameWithDepthConvention(*ctx, raster, false);
-    const auto reversed = frameWithDepthConvention(*ctx, raster, true);
+  const std::pair<hp::RasterMode, std::uint32_t> cases[] = {
+      {hp::RasterMode::Graphics, 1}, {hp::RasterMode::Compute, 1}, {hp::RasterMode::Compute, 4}};
+  for (const auto& [raster, samples] : cases) {
+    const auto forward = frameWithDepthConvention(*ctx, raster, false, samples);
+    const auto reversed = frameWithDepthConvention(*ctx, raster, true, samples);
     double forwardSum = 0.0, reversedSum = 0.0;
     for (std::size_t px = 0; px < forward.size() / 4; ++px) {
       forwardSum += hp::test::rgbaLinearSum(forward, px);
       reversedSum += hp::test::rgbaLinearSum(reversed, px);
     }
     const std::size_t differing = differingPixels(forward, reversed);
-    std::cout << (raster == hp::RasterMode::Compute ? "compute" : "graphics") << ": " << differing
+    std::cout << (raster == hp::RasterMode::Compute ? "compute" : "graphics") << " x" << samples << ": " << differing
               << " pixels differ, brightness ratio " << reversedSum / forwardSum << "\n";
     EXPECT_LT(differing, forward.size() / 4 / 100);
     EXPECT_NEAR(reversedSum / forwardSum, 1.0, 0.005);
   }
 }
 
+// An instance's frame blocks carry its physical material's mean forward albedo and the forward density
+// with dual scattering (what the hair passes on to and from the skin, frame_shadows.glsl
+// hairTransmittance), and nothing with single scattering or the paper's model.
 TEST_F(VulkanTest, FrameBlocksCarryTheHairsForwardAlbedoWithDualScatteringOnly) {
   hp::render::OffscreenRenderer target(*ctx, 64, 48, 1);
   hp::Renderer renderer(*ctx, rendererSettings(target));

@@ -66,4 +66,17 @@ std::shared_ptr<const MarschnerLut> sharedLut(LutMode mode, const HairMaterial& 
   return luts().get(key, [&] { return loadOrBuildLut(DiskCache::process(), mode, material, options); });
 }
 std::uint64_t sharedLutsMade() { return luts().made(); }
+
+RecentCache<LutKey, gpu::MarschnerParams, 4>& marschnerParams() {
+  static auto& cache = *new RecentCache<LutKey, gpu::MarschnerParams, 4>;  // never destroyed, as luts()
+  return cache;
+}
+
+std::shared_ptr<const gpu::MarschnerParams> sharedMarschnerParams(LutMode mode, const HairMaterial& material) {
+  const LutBuildOptions defaults;
+  return marschnerParams().get(LutKey{mode, material, defaults.floatFormat, defaults.paperFormat},
+                               [&] { return marschnerGpuParams(*sharedLut(mode, material)); });
+}
+
+std::uint64_t sharedMarschnerParamsMade() { return marschnerParams().made(); }
 }  // namespace hp

@@ -11,6 +11,7 @@
 
 #include "engine/core/disk_cache.h"
 #include "engine/core/shading/lut.h"
+#include "engine/core/shading/marschner_gpu.h"
 
 namespace hp {
 // The tables from `disk` when it holds them (bit for bit what buildLut gives), else built and kept there.
@@ -18,6 +19,10 @@ MarschnerLut loadOrBuildLut(const DiskCache& disk, LutMode mode, const HairMater
                             const LutBuildOptions& options = {});
 // Tables the process has made for sharedLut (values it kept and handed out again not counted).
 std::uint64_t sharedLutsMade();
+// The device parameter block of sharedLut's tables (marschnerGpuParams: the sky albedo's quadrature, 12-28 ms
+// of CPU), kept for the same last few materials; and how many the process has computed.
+std::shared_ptr<const gpu::MarschnerParams> sharedMarschnerParams(LutMode mode, const HairMaterial& material);
+std::uint64_t sharedMarschnerParamsMade();
 std::shared_ptr<const MarschnerLut> sharedLut(LutMode mode, const HairMaterial& material,
                                               const LutBuildOptions& options = {});
 }  // namespace hp

@@ -6,7 +6,8 @@
 // failed record call has recorded nothing (its arguments are checked first).
 //
 // Frames in flight: `frame` is the application's frame number, one more per frame (it may start
-// anywhere; a record call whose frame is below one already recorded is refused). When it records frame F the application has waited for frame F - framesInFlight to
+// anywhere; a record call whose frame is below one already recorded is refused, except right after
+// Renderer::releaseRetired, from which the numbering may start again). When it records frame F the application has waited for frame F - framesInFlight to
 // complete, and it submits frames in order on one queue. Setters may be called between frames while
 // earlier ones are in flight: what the GPU may still read is retired and destroyed framesInFlight frames
 // later by a record call, never by waiting on the device. After the first recorded frame, the device
@@ -60,14 +61,16 @@
 //      application's resolve attachments, if any, here), in which recordComposite(cmd, extent) blends the
 //      hair over the colour (multisampled: per sample, with the coverage recordRaster took from the
 //      heads' depth samples).
-// Calls that submit to the context's queue and wait for it, before the first recorded frame only:
-// Renderer::create, createInstance, Instance::setMaterial (a new material's tables), Instance::setDensity,
-// setRasterTarget. From the first recorded frame on none of them submits or waits (their device work goes
+// Calls that submit to the context's queue and wait for it: Renderer::create, always; createInstance,
+// Instance::setMaterial (a new material's tables), Instance::setDensity and setRasterTarget until that
+// Renderer's first recorded frame. From then on none of these four submits or waits (their device work goes
 // into the next recordUpdate or recordShadows, above), and no record call ever does.
 // Threads: a Context and everything made on it (its Renderers and their Instances) are used by one thread at
 // a time; none of these calls is synchronized against another on the same Context (they share its command
-// pool and upload batch). Objects of different Contexts may be used on different threads at once. A new
-// material's tables are built on hairpipe's own worker thread (setMaterial above), which touches none of them.
+// pool and upload batch). Objects of different Contexts may be used on different threads at once, except that
+// creating a Context (adopt, createHeadless) and unfitReasons load the process's Vulkan entry points and must
+// not overlap any other hairpipe call. A new material's tables are built on hairpipe's own worker thread
+// (setMaterial above), which touches none of them.
 #include <vulkan/vulkan_core.h>
 
 #include <cstdint>
@@ -182,7 +185,8 @@ class Renderer {
   // Every frame recorded so far is complete (the application waited on its fences or its device): what
   // destroyed instances and replaced resources left retired is destroyed now, rather than by the record
   // calls framesInFlight frames later (a level unloaded while the Renderer is kept: its device memory comes
-  // back at once). Work recorded for the next frame (changes since the last one) keeps what it needs.
+  // back at once). Work recorded for the next frame (changes since the last one) keeps what it needs. The
+  // next record call may then number its frame from anywhere (a frame counter reset with the level).
   Status releaseRetired() noexcept;
   // The pipeline cache's data now (vkGetPipelineCacheData), for RendererSettings::pipelineCache of a later run.
   Result<std::vector<std::uint8_t>> pipelineCacheData() const noexcept;
@@ -214,8 +218,8 @@ class Renderer {
 };
 
 // The CPU start-up work of createInstance(asset, settings), done now on the calling thread, which may be any
-// thread (a loading thread: it touches no Context, Renderer or Instance): the material's lookup tables and,
-// with drawHead, the head mesh's skin transfer go into the process's caches (the last 4 of each), so a
+// thread (a loading thread: it touches no Context, Renderer or Instance): the material's lookup tables with
+// their parameter block and, with drawHead, the head mesh's skin transfer go into the process's caches (the last 4 of each), so a
 // createInstance of the same asset and material soon after, on the thread that records frames, takes them
 // instead of computing them there (~0.5 s and ~0.25 s of CPU for the default head's on a 2-core machine). A
 // failure names the settings createInstance would refuse.
