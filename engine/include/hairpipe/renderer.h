@@ -132,6 +132,8 @@ class Instance {
   Status setLod(const LodSettings& lod) noexcept;
   // Clumps, curl and frizz from the next recordUpdate on (push constants: nothing is rebuilt).
   Status setGroom(const GroomSettings& groom) noexcept;
+  // From the next recordUpdate on; cheap (nothing is rebuilt), so an application with a varying frame time
+  // sets each frame's dt here before recording it (gridResolution is fixed at creation).
   Status setSimulation(const SimulationSettings& simulation) noexcept;
   // Another density of render strands between the same guides (new strand buffers, filled by the next
   // recordUpdate; a raster target holding the instance is rebuilt).
