@@ -65,6 +65,10 @@ Status Instance::setColliders(std::span<const SphereCollider> spheres, std::span
     implementation(impl_.get()).setColliders(convert::spheres(spheres), convert::capsules(capsules));
   });
 }
+Status Instance::setRootFrames(VkBuffer buffer, VkDeviceSize offset, VkDeviceSize bytes) noexcept {
+  return guardedStatus("hairpipe::Instance::setRootFrames",
+                       [&] { implementation(impl_.get()).setRootFrames(buffer, offset, bytes); });
+}
 Status Instance::setBones(std::span<const Mat4> bones) noexcept {
   return guardedStatus("hairpipe::Instance::setBones",
                        [&] { implementation(impl_.get()).setBones(convert::mats(bones)); });

@@ -121,6 +121,10 @@ void HairInstance::setHeadToWorld(const glm::mat4& headToWorld) {
   motion_.to = headToWorld;
 }
 
+void HairInstance::setRootFrames(VkBuffer buffer, VkDeviceSize offset, VkDeviceSize bytes) {
+  renderer_.retire(simulate_.setRootFrames(buffer, offset, bytes));
+}
+
 void HairInstance::setMaterial(const HairMaterial& material, LutMode mode) {
   material.validate();
   pending_.reset();  // a newer change replaces a pending one (skipped if the worker has not started it)

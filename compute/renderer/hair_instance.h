@@ -48,6 +48,9 @@ class HairInstance {
     simulate_.setColliders(spheres, capsules);
   }
   void setBones(std::span<const glm::mat4> bones) { simulate_.setBones(bones); }
+  // Scalp input RootFrames: the application's buffer the next recorded frames read (the descriptor set the
+  // frames in flight bind is retired, not rewritten).
+  void setRootFrames(VkBuffer buffer, VkDeviceSize offset, VkDeviceSize bytes);
   // A skinned character's pose for the next frame (SimulatePass::setCharacterPose): the collision grid is
   // rebuilt from it and the drawn head (the character) takes it.
   void setCharacterPose(std::span<const glm::mat4> bones) { simulate_.setCharacterPose(bones); }

@@ -14,6 +14,13 @@
 namespace hp {
 namespace {
 constexpr VkBufferUsageFlags kScalpUsage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
+
+void requireAlignedRootFrames(const vk::Context& ctx, VkDeviceSize offset) {
+  const VkDeviceSize alignment = ctx.properties().limits.minStorageBufferOffsetAlignment;
+  if (offset % alignment != 0)
+    throw Error("scalp input: the root frames' offset " + std::to_string(offset) +
+                " is not a multiple of the device's minStorageBufferOffsetAlignment (" + std::to_string(alignment) + ")");
+}
 }  // namespace
 
 void ScalpInput::validate(std::uint32_t guideCount) const {
@@ -45,10 +52,7 @@ ScalpState::ScalpState(const vk::Context& ctx, const ScalpInput& input, std::spa
     : ctx_(&ctx), input_(input) {
   const std::uint32_t guides = static_cast<std::uint32_t>(rest.size() / particlesPerGuide);
   input_.validate(guides);
-  const VkDeviceSize alignment = ctx.properties().limits.minStorageBufferOffsetAlignment;
-  if (input_.kind == ScalpInput::Kind::RootFrames && input_.rootFramesOffset % alignment != 0)
-    throw Error("scalp input: the root frames' offset " + std::to_string(input_.rootFramesOffset) +
-                " is not a multiple of the device's minStorageBufferOffsetAlignment (" + std::to_string(alignment) + ")");
+  if (input_.kind == ScalpInput::Kind::RootFrames) requireAlignedRootFrames(ctx, input_.rootFramesOffset);
   rootFramesRange_ = VkDeviceSize(guides) * 2 * sizeof(glm::vec4);
   dummy_ = vk::Buffer(ctx, 64, kScalpUsage, vk::MemoryKind::DeviceLocal, "scalp unused");
   if (input_.kind == ScalpInput::Kind::RootFrames) {
@@ -93,6 +97,17 @@ void ScalpState::writeDescriptors(const vk::DescriptorSet& set) const {
   set.writeStorageBuffer(gpu::SIM_BINDING_ROOTS_PREV, frames ? rootsPrev_.handle() : dummy_.handle());
   set.writeStorageBuffer(gpu::SIM_BINDING_BONES, bones ? bones_.handle() : dummy_.handle());
   set.writeStorageBuffer(gpu::SIM_BINDING_SKIN, bones ? skin_.handle() : dummy_.handle());
+}
+
+void ScalpState::setRootFrames(VkBuffer buffer, VkDeviceSize offset, VkDeviceSize bytes) {
+  if (input_.kind != ScalpInput::Kind::RootFrames) throw Error("setRootFrames: the scalp input is not RootFrames");
+  ScalpInput next = input_;
+  next.rootFrames = buffer;
+  next.rootFramesOffset = offset;
+  next.rootFramesBytes = bytes;
+  next.validate(std::uint32_t(rootFramesRange_ / (2 * sizeof(glm::vec4))));
+  requireAlignedRootFrames(*ctx_, offset);
+  input_ = std::move(next);
 }
 
 void ScalpState::setBones(std::span<const glm::mat4> bones) {

@@ -45,6 +45,10 @@ class ScalpState {
   // count or non-finite values.
   void setBones(std::span<const glm::mat4> bones);
   std::uint32_t boneCount() const { return input_.boneCount; }
+  // RootFrames: the application's buffer from now on (descriptors written after this call read it). Throws
+  // hp::Error in another mode, for a null buffer, too few bytes or a misaligned offset.
+  void setRootFrames(VkBuffer buffer, VkDeviceSize offset, VkDeviceSize bytes);
+  const ScalpInput& input() const { return input_; }
   // Records the bone upload (Bones mode, when setBones gave new ones); guards its buffer with barriers.
   void record(VkCommandBuffer cmd);
 

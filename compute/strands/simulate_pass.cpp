@@ -70,14 +70,7 @@ SimulatePass::SimulatePass(const vk::Context& ctx, const HairAsset& asset, const
                       vk::MemoryKind::DeviceLocal, "simulation frame");
   grid_.emplace(ctx, rest_, particlesPerGuide_, params_.gridResolution, float(params_.pearlRadius), positions_, previous_,
                 library);
-  set_ = vk::DescriptorSet(ctx, kSimulateBindings, "simulate");
-  set_.writeStorageBuffer(gpu::SIM_BINDING_FRAME, frame_.handle());
-  set_.writeStorageBuffer(gpu::SIM_BINDING_POSITIONS, positions_.handle());
-  set_.writeStorageBuffer(gpu::SIM_BINDING_PREVIOUS, previous_.handle());
-  set_.writeStorageBuffer(gpu::SIM_BINDING_REST, restBuffer_.handle());
-  scalp_.writeDescriptors(set_);
-  set_.writeStorageBuffer(gpu::SIM_BINDING_SDF, sdf_.buffer().handle());
-  set_.writeStorageBuffer(gpu::SIM_BINDING_GRID, grid_->cells().handle());
+  set_ = makeSet();
   static_assert(gpu::SIM_SPEC_PARTICLES == 0, "ComputePipeline numbers specialization constants from 0");
   pipeline_ = vk::makeComputePipeline(ctx, library, "simulate.comp", gpu::SIM_WORKGROUP_SIZE, {set_.layout()}, 0, "simulate",
                                   {particlesPerGuide_});
@@ -88,6 +81,31 @@ SimulatePass::SimulatePass(const vk::Context& ctx, const HairAsset& asset, const
                                                                                 : std::span<const float>(), sdf_, library);
   }
   reset(initialHead);
+}
+
+vk::DescriptorSet SimulatePass::makeSet() const {
+  vk::DescriptorSet set(ctx_, kSimulateBindings, "simulate");
+  set.writeStorageBuffer(gpu::SIM_BINDING_FRAME, frame_.handle());
+  set.writeStorageBuffer(gpu::SIM_BINDING_POSITIONS, positions_.handle());
+  set.writeStorageBuffer(gpu::SIM_BINDING_PREVIOUS, previous_.handle());
+  set.writeStorageBuffer(gpu::SIM_BINDING_REST, restBuffer_.handle());
+  scalp_.writeDescriptors(set);
+  set.writeStorageBuffer(gpu::SIM_BINDING_SDF, sdf_.buffer().handle());
+  set.writeStorageBuffer(gpu::SIM_BINDING_GRID, grid_->cells().handle());
+  return set;
+}
+
+std::shared_ptr<vk::DescriptorSet> SimulatePass::setRootFrames(VkBuffer buffer, VkDeviceSize offset, VkDeviceSize bytes) {
+  const ScalpInput before = scalp_.input();
+  scalp_.setRootFrames(buffer, offset, bytes);
+  try {
+    auto old = std::make_shared<vk::DescriptorSet>(makeSet());  // the new set, swapped in below
+    std::swap(*old, set_);
+    return old;
+  } catch (...) {  // no set: the pass keeps reading the former buffer
+    scalp_.setRootFrames(before.rootFrames, before.rootFramesOffset, before.rootFramesBytes);
+    throw;
+  }
 }
 
 void SimulatePass::setCharacterPose(std::span<const glm::mat4> bones) {

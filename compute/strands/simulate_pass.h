@@ -51,6 +51,10 @@ class SimulatePass {
   void setColliders(std::span<const SphereCollider> spheres, std::span<const CapsuleCollider> capsules = {});
   // Scalp input Bones: the bone matrices at the end of the next recorded frame (ScalpState::setBones).
   void setBones(std::span<const glm::mat4> bones) { scalp_.setBones(bones); }
+  // Scalp input RootFrames: the application's buffer (offset, bytes from it) that the next recorded frames
+  // read, in a new descriptor set; the one frames already recorded bind is returned for the caller to keep
+  // until they are done. Throws hp::Error as ScalpState::setRootFrames.
+  std::shared_ptr<vk::DescriptorSet> setRootFrames(VkBuffer buffer, VkDeviceSize offset, VkDeviceSize bytes);
   // A skinned character the hair collides with (HairAsset::characterCollides): its pose for the next recorded
   // frame (one head-space matrix per joint), which record() skins and rebuilds the distance grid from on the
   // device (CharacterPass). Throws hp::Error when the asset has none or the pose does not fit it.
@@ -77,6 +81,7 @@ class SimulatePass {
 
  private:
   gpu::SimFrame frameConstants(const HeadMotion& motion, bool gridActs) const;
+  vk::DescriptorSet makeSet() const;  // every binding of the simulate shader, as the pass holds them now
 
   const vk::Context& ctx_;
   SimulationParams params_;

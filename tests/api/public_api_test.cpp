@@ -378,6 +378,8 @@ TEST_F(PublicApi, InstanceSettingsAndSettersAreRefusedByField) {
   bad.skinBounceSamples = 1;
   EXPECT_THAT(failureOf(renderer_->createInstance(*asset_, bad)),
               HasSubstr("skinBounceSamples must be in [2, 256], got 1"));
+  EXPECT_THAT(failureOf(head.setRootFrames(VK_NULL_HANDLE, 0, 0)),
+              HasSubstr("hairpipe::Instance::setRootFrames: setRootFrames: the scalp input is not RootFrames"));
   EXPECT_EQ(head.strandCount(), 500u);  // a refused setter changes nothing
 }
 

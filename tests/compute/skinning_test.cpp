@@ -147,22 +147,26 @@ TEST_F(VulkanTest, BoneSkinnedRootsFollowExactlyAndAMovingCapsuleIsNeverPenetrat
 namespace {
 // The application's root frames, starting `offset` bytes into its buffer (NaN before them: reading from the
 // wrong place would show), carrying a rigid rotation, against the rigid head: the largest distance between
-// the two simulations' particles and between the skinned roots and the frames given, metres.
+// the two simulations' particles and between the skinned roots and the frames given, metres. With a ring of
+// two buffers each frame's frames go to the next one, named by setRootFrames (the other keeps last frame's).
 struct RootFrameRun {
   double worst = 0.0, rootWorst = 0.0;
 };
-RootFrameRun rootFramesAgainstTheRigidHead(const vk::Context& ctx, VkDeviceSize offset) {
+RootFrameRun rootFramesAgainstTheRigidHead(const vk::Context& ctx, VkDeviceSize offset, std::size_t ring = 1) {
   const HairAsset asset = smallHead();
   SimulationParams params;
   const std::uint32_t guides = asset.guides.guideCount();
   const std::size_t padding = std::size_t(offset / sizeof(glm::vec4));
-  vk::Buffer frames(ctx, offset + VkDeviceSize(guides) * 2 * sizeof(glm::vec4),
-                    VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT, vk::MemoryKind::DeviceLocal,
-                    "application root frames");
+  std::vector<vk::Buffer> buffers;
+  for (std::size_t k = 0; k < ring; ++k)
+    buffers.emplace_back(ctx, offset + VkDeviceSize(guides) * 2 * sizeof(glm::vec4),
+                         VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT, vk::MemoryKind::DeviceLocal,
+                         "application root frames");
+  const VkDeviceSize bytes = buffers[0].size() - offset;
   ScalpInput scalp;
   scalp.kind = ScalpInput::Kind::RootFrames;
-  scalp.rootFrames = frames.handle();
-  scalp.rootFramesBytes = frames.size() - offset;
+  scalp.rootFrames = buffers[0].handle();
+  scalp.rootFramesBytes = bytes;
   scalp.rootFramesOffset = offset;
   SimulatePass skinned(ctx, asset, params, glm::mat4(1.0f), nullptr, scalp);
   SimulatePass rigid(ctx, asset, params);
@@ -181,7 +185,9 @@ RootFrameRun rootFramesAgainstTheRigidHead(const vk::Context& ctx, VkDeviceSize 
       data.push_back(to * glm::vec4(glm::vec3(skinned.rest()[std::size_t(g) * p]), 1.0f));
       data.emplace_back(q.x, q.y, q.z, q.w);
     }
+    const vk::Buffer& frames = buffers[std::size_t(f) % ring];
     vk::upload<glm::vec4>(ctx, frames, data, vk::BufferUse::ComputeRead);
+    if (ring > 1) skinned.setRootFrames(frames.handle(), offset, bytes);  // the former set: dropped, the frame waited
     runFrame(ctx, skinned, HeadMotion{});
     runFrame(ctx, rigid, HeadMotion{from, to, t0, false});
     const auto a = positions(ctx, skinned), b = positions(ctx, rigid);
@@ -194,13 +200,15 @@ RootFrameRun rootFramesAgainstTheRigidHead(const vk::Context& ctx, VkDeviceSize 
 }  // namespace
 
 TEST_F(VulkanTest, RootFramesCarryingARigidRotationReproduceTheRigidHead) {
-  // At the buffer's start, and past two of the device's storage offset alignments (at least 16 bytes).
+  // At the buffer's start, past two of the device's storage offset alignments (at least 16 bytes), and in a
+  // ring of two buffers named by setRootFrames each frame.
   const VkDeviceSize alignment = std::max<VkDeviceSize>(ctx->properties().limits.minStorageBufferOffsetAlignment, 16);
-  for (const VkDeviceSize offset : {VkDeviceSize(0), 2 * alignment}) {
-    const RootFrameRun run = rootFramesAgainstTheRigidHead(*ctx, offset);
-    EXPECT_LT(run.rootWorst, 1e-5) << "offset " << offset;
+  const std::pair<VkDeviceSize, std::size_t> cases[] = {{0, 1}, {2 * alignment, 1}, {2 * alignment, 2}};
+  for (const auto& [offset, ring] : cases) {
+    const RootFrameRun run = rootFramesAgainstTheRigidHead(*ctx, offset, ring);
+    EXPECT_LT(run.rootWorst, 1e-5) << "offset " << offset << ", ring " << ring;
     // Matrix vs quaternion arithmetic in float over 30 frames: micrometres.
-    EXPECT_LT(run.worst, 2e-5) << "root frames vs rigid head, metres; offset " << offset;
+    EXPECT_LT(run.worst, 2e-5) << "root frames vs rigid head, metres; offset " << offset << ", ring " << ring;
   }
   // An offset off the device's alignment is refused by name.
   const HairAsset asset = smallHead();
@@ -212,6 +220,15 @@ TEST_F(VulkanTest, RootFramesCarryingARigidRotationReproduceTheRigidHead) {
   scalp.rootFramesOffset = 4;
   if (ctx->properties().limits.minStorageBufferOffsetAlignment > 4)
     EXPECT_THROW(SimulatePass(*ctx, asset, {}, glm::mat4(1.0f), nullptr, scalp), hp::Error);
+  // setRootFrames refuses what ScalpInput refuses, and any call in another mode.
+  scalp.rootFramesOffset = 0;
+  scalp.rootFramesBytes = 4096;
+  SimulatePass pass(*ctx, asset, {}, glm::mat4(1.0f), nullptr, scalp);
+  EXPECT_THROW(pass.setRootFrames(frames.handle(), 0, 16), hp::Error);               // too few bytes
+  EXPECT_THROW(pass.setRootFrames(VK_NULL_HANDLE, 0, 4096), hp::Error);              // no buffer
+  EXPECT_NO_THROW(pass.setRootFrames(frames.handle(), 0, 4096));
+  SimulatePass rigid(*ctx, asset, {});
+  EXPECT_THROW(rigid.setRootFrames(frames.handle(), 0, 4096), hp::Error);            // not RootFrames
 }
 
 TEST_F(VulkanTest, ScalpInputIsValidatedWhenSet) {

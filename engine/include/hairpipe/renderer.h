@@ -109,6 +109,10 @@ class Instance {
                       std::span<const CapsuleCollider> capsules = {}) noexcept;
   // ScalpInput::Kind::Bones: the bone matrices (head-space rest pose to world) at the end of the next frame.
   Status setBones(std::span<const Mat4> bones) noexcept;
+  // ScalpInput::Kind::RootFrames: the buffer (from offset, bytes of it) the next recordUpdate reads the root
+  // frames from, e.g. this frame's slot of a ring the application's skinning writes; frames already recorded
+  // keep reading the former one. Refused in another mode, or for a buffer ScalpInput would refuse.
+  Status setRootFrames(VkBuffer buffer, VkDeviceSize offset, VkDeviceSize bytes) noexcept;
   // An asset with a skinned character mesh (AssetSource::mesh): its pose at the end of the next frame, one
   // head-space matrix per joint (bind pose to pose: meshClipPose, or the application's skinning in head space).
   // The next recordUpdate skins the mesh and rebuilds the distance grid the hair collides with on the device,
