@@ -125,6 +125,11 @@ void Renderer::recordRaster(VkCommandBuffer cmd, std::uint64_t frame, const View
   requireNoDeferredWork("recordRaster");
   ComputeRaster& t = target();
   view.validate(settings_.maxViewsPerFrame, settings_.formats.reversedDepth);
+  // The strands' width in pixels comes from the view's extent, the tiles from the target's: they must agree.
+  if (view.extent.width != t.extent().width || view.extent.height != t.extent().height)
+    throw Error("Renderer::recordRaster: View.extent " + std::to_string(view.extent.width) + "x" +
+                std::to_string(view.extent.height) + " differs from the raster target's " +
+                std::to_string(t.extent().width) + "x" + std::to_string(t.extent().height) + " (setRasterTarget)");
   beginFrame(frame, t.instances());
   for (HairInstance* i : t.instances()) i->noteViewFraction(frame, i->lodFraction(view.camera.position));
   t.record(cmd, frame, view, frameLights_[frame % settings_.framesInFlight], profiler);

@@ -422,6 +422,7 @@ TEST_F(PublicApi, AComputeRasterTargetWithoutADepthViewIsRefused) {
   ASSERT_TRUE(head.ok()) << head.message();
   hairpipe::Instance* heads[] = {&head.value()};
   EXPECT_THAT(failureOf(r.value().setRasterTarget({64, 64}, VK_NULL_HANDLE, heads)), HasSubstr("the depth view is VK_NULL_HANDLE"));
+  EXPECT_THAT(failureOf(r.value().recordRaster(VK_NULL_HANDLE, 0, hairpipe::View{})), HasSubstr("setRasterTarget"));
 }
 
 TEST_F(PublicApi, InstancesOfAnotherRendererAreRefused) {

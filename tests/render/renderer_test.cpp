@@ -328,6 +328,27 @@ HairColumns hairColumns(const hp::vk::Context& ctx, const hp::Renderer& renderer
 }
 }  // namespace
 
+// The compute raster's strands take their width from the view's extent and its tiles from the target's: a
+// view of another size is refused before anything is recorded (it drew strands of the wrong width).
+TEST_F(VulkanTest, ARasterViewOfAnotherExtentThanItsTargetIsRefused) {
+  hp::render::OffscreenRenderer target(*ctx, kRendererWidth, kRendererHeight, 1, hp::RasterMode::Compute);
+  hp::RendererSettings settings = rendererSettings(target);
+  settings.raster = hp::RasterMode::Compute;
+  hp::Renderer renderer(*ctx, settings);
+  auto hair = renderer.createInstance(head(300), {});
+  hp::HairInstance* one[] = {hair.get()};
+  target.attach(renderer, one);
+  hp::View view = frontView(0.0f);
+  view.extent = {kRendererWidth / 2, kRendererHeight};
+  try {
+    renderer.recordRaster(VK_NULL_HANDLE, 0, view);
+    ADD_FAILURE() << "a view of another extent was accepted";
+  } catch (const hp::Error& e) {
+    EXPECT_NE(std::string(e.what()).find("View.extent 80x96 differs from the raster target's 160x96"), std::string::npos)
+        << e.what();
+  }
+}
+
 // The middleware API on the compute raster: two heads side by side in one set of tile lists, both drawn;
 // a target of one head draws that head only; after a material change the target (kept) draws the changed
 // head's hair brighter and the other's unchanged. Sync-validation clean (fixture).
