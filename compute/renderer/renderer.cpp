@@ -15,8 +15,9 @@ namespace hp {
 namespace {
 const RendererSettings& validated(const vk::Context& ctx, const RendererSettings& s) {
   s.validate();
-  vk::requireAttachmentSupport(ctx, s.formats, resolveRasterMode(s.raster, ctx.properties().deviceType) == RasterMode::Compute);
-  if (s.motionVectors && resolveRasterMode(s.raster, ctx.properties().deviceType) != RasterMode::Compute)
+  const bool compute = resolveRasterMode(s.raster, ctx.properties().deviceType) == RasterMode::Compute;
+  vk::requireAttachmentSupport(ctx, s.formats, compute);
+  if (s.motionVectors && !compute)
     throw Error("RendererSettings.motionVectors needs the compute raster: the graphics raster writes no motion");
   return s;
 }

@@ -9,21 +9,16 @@
 
 namespace hp::vk {
 namespace {
-bool hasStencil(VkFormat format) {
-  return format == VK_FORMAT_D16_UNORM_S8_UINT || format == VK_FORMAT_D24_UNORM_S8_UINT ||
-         format == VK_FORMAT_D32_SFLOAT_S8_UINT;
-}
-
 std::string formatText(VkFormat format) { return "VkFormat " + std::to_string(int(format)); }
 }  // namespace
 
 void validateAttachmentFormats(const hairpipe::AttachmentFormats& formats) {
   const std::string field = "RendererSettings.formats.";
-  if (formats.color == VK_FORMAT_UNDEFINED || isDepthFormat(formats.color) || hasStencil(formats.color))
+  if (formats.color == VK_FORMAT_UNDEFINED || isDepthFormat(formats.color))
     throw Error(field + "color must be a colour format, got " + formatText(formats.color));
-  if (!isDepthFormat(formats.depth) && formats.depth != VK_FORMAT_D16_UNORM_S8_UINT)
+  if (!isDepthFormat(formats.depth))
     throw Error(field + "depth must be a depth format (D16, D32, D16S8, D24S8 or D32S8), got " + formatText(formats.depth));
-  if (formats.stencil != VK_FORMAT_UNDEFINED && !(formats.stencil == formats.depth && hasStencil(formats.depth)))
+  if (formats.stencil != VK_FORMAT_UNDEFINED && !(formats.stencil == formats.depth && hasStencilComponent(formats.depth)))
     throw Error(field + "stencil must be VK_FORMAT_UNDEFINED (no stencil attachment) or the depth's own combined "
                 "depth/stencil format, got " + formatText(formats.stencil) + " with depth " + formatText(formats.depth));
   const auto samples = std::uint32_t(formats.samples);

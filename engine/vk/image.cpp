@@ -7,9 +7,13 @@
 #include "engine/vk/context.h"
 
 namespace hp::vk {
-bool isDepthFormat(VkFormat format) {
-  return format == VK_FORMAT_D32_SFLOAT || format == VK_FORMAT_D16_UNORM || format == VK_FORMAT_D24_UNORM_S8_UINT ||
+bool hasStencilComponent(VkFormat format) {
+  return format == VK_FORMAT_D16_UNORM_S8_UINT || format == VK_FORMAT_D24_UNORM_S8_UINT ||
          format == VK_FORMAT_D32_SFLOAT_S8_UINT;
+}
+
+bool isDepthFormat(VkFormat format) {
+  return format == VK_FORMAT_D32_SFLOAT || format == VK_FORMAT_D16_UNORM || hasStencilComponent(format);
 }
 
 std::uint32_t formatBytesPerPixel(VkFormat format) {

@@ -67,7 +67,8 @@ class Image {
   ImageDesc desc_;
 };
 
-bool isDepthFormat(VkFormat format);
+bool isDepthFormat(VkFormat format);        // D16, D32, or a combined D16S8, D24S8 or D32S8
+bool hasStencilComponent(VkFormat format);  // the combined ones
 std::uint32_t formatBytesPerPixel(VkFormat format);  // for the formats hairpipe reads back
 
 // A sampler with linear filtering (or `filter`: nearest for formats that cannot filter) and clamp-to-edge
