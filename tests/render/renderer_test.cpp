@@ -51,6 +51,7 @@ hp::HairMaterial blonde() {
 hp::RendererSettings rendererSettings(const hp::render::OffscreenRenderer& target) {
   hp::RendererSettings s;
   s.formats = target.formats();
+  s.raster = target.raster();
   s.opacity.resolution = 256;
   s.opacity.strandOpacity = 0.3f;  // 3,000 strands stand in for the default 20,000 at 0.04
   return s;
@@ -332,9 +333,7 @@ HairColumns hairColumns(const hp::vk::Context& ctx, const hp::Renderer& renderer
 // view of another size is refused before anything is recorded (it drew strands of the wrong width).
 TEST_F(VulkanTest, ARasterViewOfAnotherExtentThanItsTargetIsRefused) {
   hp::render::OffscreenRenderer target(*ctx, kRendererWidth, kRendererHeight, 1, hp::RasterMode::Compute);
-  hp::RendererSettings settings = rendererSettings(target);
-  settings.raster = hp::RasterMode::Compute;
-  hp::Renderer renderer(*ctx, settings);
+  hp::Renderer renderer(*ctx, rendererSettings(target));
   auto hair = renderer.createInstance(head(300), {});
   hp::HairInstance* one[] = {hair.get()};
   target.attach(renderer, one);
@@ -354,9 +353,7 @@ TEST_F(VulkanTest, ARasterViewOfAnotherExtentThanItsTargetIsRefused) {
 // head's hair brighter and the other's unchanged. Sync-validation clean (fixture).
 TEST_F(VulkanTest, TwoInstancesOnTheComputeRasterAreBothDrawnAndFollowAMaterialChange) {
   hp::render::OffscreenRenderer target(*ctx, kRendererWidth, kRendererHeight, 1, hp::RasterMode::Compute);
-  hp::RendererSettings settings = rendererSettings(target);
-  settings.raster = hp::RasterMode::Compute;
-  hp::Renderer renderer(*ctx, settings);
+  hp::Renderer renderer(*ctx, rendererSettings(target));
   auto left = renderer.createInstance(head(600), {});
   auto right = renderer.createInstance(head(500), {}, glm::translate(glm::mat4(1.0f), {0.3f, 0.0f, 0.0f}));
   hp::HairInstance* both[] = {left.get(), right.get()};
@@ -411,7 +408,6 @@ std::vector<std::vector<std::uint8_t>> computeFramesInFlight(const hp::vk::Conte
                                                              bool* sameTarget = nullptr) {
   hp::render::OffscreenRenderer target(ctx, 96, 64, 1, hp::RasterMode::Compute);
   hp::RendererSettings settings = rendererSettings(target);
-  settings.raster = hp::RasterMode::Compute;
   settings.framesInFlight = 2;
   hp::Renderer renderer(ctx, settings);
   auto hair = renderer.createInstance(head(500), {});
@@ -646,9 +642,7 @@ namespace {
 std::vector<std::uint8_t> frameWithDepthConvention(const hp::vk::Context& ctx, hp::RasterMode raster, bool reversed,
                                                    std::uint32_t samples) {
   hp::render::OffscreenRenderer target(ctx, kRendererWidth, kRendererHeight, samples, raster, reversed);
-  hp::RendererSettings settings = rendererSettings(target);
-  settings.raster = raster;
-  hp::Renderer renderer(ctx, settings);
+  hp::Renderer renderer(ctx, rendererSettings(target));
   auto hair = renderer.createInstance(head(800), {});
   hp::HairInstance* one[] = {hair.get()};
   hp::View view = frontView(0.0f);
