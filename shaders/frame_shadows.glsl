@@ -4,7 +4,7 @@
 // `headShadowMap` after including shared/render.h.
 #ifndef HP_FRAME_SHADOWS_GLSL
 #define HP_FRAME_SHADOWS_GLSL
-#include "opacity_lookup.glsl"
+#include "shared/opacity.h"
 #include "head_shadow.glsl"
 #include "light.glsl"
 
@@ -12,19 +12,17 @@
 // and with dual scattering (frame.hairForward, 0 otherwise) also d_f of what the hair on the way passes on
 // forward, E[a_f^N; N >= 1] = exp(-tau (1 - a_f)) - exp(-tau) (the skin is Lambertian: the spread in
 // direction does not matter to it; docs/SHADING.md "Skin bounce").
-vec3 hairTransmittance(float tau) {
-  float unscattered = exp(-tau);
-  return unscattered + frame.hairForward.w * max(exp(-tau * (1.0 - frame.hairForward.rgb)) - unscattered, vec3(0.0));
-}
+vec3 hairTransmittance(float tau) { return hairpipeHairTransmittance(tau, frame.hairForward); }
 
 // The opacity-map value at p for shadow slot `slot`, with the frame's kind of slices and bias. `soft`: over
-// a few texels (opaque receivers: opacityAlphaSoft).
+// a few texels (opaque receivers: hairpipeShadowAlphaSoft). The lookups are the ones applications call
+// (public/hairpipe/hair_shadows.glsl, included by shared/opacity.h).
 float frameOpacityAlpha(uint slot, vec3 p, bool soft) {
   if (frame.options.y == 0u) return 0.0;  // the hair casts no shadow
-  OpacityPoint o = opacityPoint(lightSpaces[slot], p);
+  HairpipeShadowPoint o = hairpipeShadowPoint(lightSpaces[slot].viewProj, p);
   bool deep = frame.options.w != 0u;
-  return soft ? opacityAlphaSoft(opacityMaps, slot, o.uvw, o.s, deep, frame.strand.w)
-              : opacityAlpha(opacityMaps, slot, o.uvw, o.s, deep, frame.strand.w);
+  return soft ? hairpipeShadowAlphaSoft(opacityMaps, slot, o.uvw, o.s, deep, frame.strand.w)
+              : hairpipeShadowAlpha(opacityMaps, slot, o.uvw, o.s, deep, frame.strand.w);
 }
 
 // What stands between p and a light: alpha, the hair's opacity-map value (0 for an unshadowed light), and

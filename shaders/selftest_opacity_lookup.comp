@@ -1,9 +1,9 @@
 #version 460
-// opacity_lookup.glsl's opacityAlpha at given slice coordinates, in the one texel of a 1 x 1 map (whose
+// hair_shadows.glsl's hairpipeShadowAlpha (public/hairpipe/, included by shared/opacity.h) at given slice coordinates, in the one texel of a 1 x 1 map (whose
 // filtered value is the texel's own), for tests/render/opacity_lookup_test.cpp.
 #include "shared/selftest.h"
 #include "common.glsl"
-#include "opacity_lookup.glsl"
+#include "shared/opacity.h"
 
 layout(local_size_x = LOOKUP_WORKGROUP_SIZE) in;
 layout(binding = LOOKUP_BINDING_MAPS) uniform sampler2DArray maps;
@@ -15,5 +15,5 @@ void main() {
   uint i = hpThreadId(LOOKUP_WORKGROUP_SIZE);
   if (i >= push.count) return;
   vec4 q = queries[i];
-  results[i] = opacityAlpha(maps, 0u, vec3(0.5, 0.5, 1.0), q.x, q.z > 0.5, q.y);
+  results[i] = hairpipeShadowAlpha(maps, 0u, vec3(0.5, 0.5, 1.0), q.x, q.z > 0.5, q.y);
 }

@@ -113,6 +113,12 @@ Status Instance::materialStatus() const noexcept {
     if (!error.empty()) throw hp::Error(error);
   });
 }
+Result<Instance::HairShadowForward> Instance::hairShadowForward() const noexcept {
+  return guarded<HairShadowForward>("hairpipe::Instance::hairShadowForward", [&] {
+    const glm::vec4 forward = implementation(impl_.get()).shadowForward();
+    return HairShadowForward{{forward.r, forward.g, forward.b}, forward.a};
+  });
+}
 std::uint32_t Instance::strandCount() const noexcept {
   return impl_ ? impl_->instance->strands().layout().strandCount : 0;  // 0: moved from
 }
@@ -188,6 +194,25 @@ Result<Renderer::MotionImage> Renderer::motionImage() const noexcept {
   return guarded<MotionImage>("hairpipe::Renderer::motionImage", [&] {
     const hp::vk::Image& image = implementation(impl_).motionImage();
     return MotionImage{image.handle(), image.view(), image.desc().format, image.extent()};
+  });
+}
+Result<Renderer::HairShadows> Renderer::hairShadows() const noexcept {
+  return guarded<HairShadows>("hairpipe::Renderer::hairShadows", [&] {
+    const hp::render::ShadowMaps& maps = implementation(impl_).shadows();
+    const hp::render::OpacitySettings& opacity = maps.settings();
+    const hp::render::ShadowInputs inputs = maps.inputs();
+    return HairShadows{maps.image().handle(),
+                       inputs.opacityView,
+                       inputs.sampler,
+                       maps.image().desc().format,
+                       maps.image().extent().width,
+                       maps.slots(),
+                       hp::gpu::OPACITY_LAYERS,
+                       maps.lightSpace().handle(),
+                       maps.lightSpace().size(),
+                       opacity.enabled ? opacity.k : 0.0f,
+                       hp::render::lookupBias(opacity),
+                       opacity.deep};
   });
 }
 Result<std::vector<std::uint8_t>> Renderer::pipelineCacheData() const noexcept {

@@ -78,6 +78,10 @@ void setEnvironment(gpu::RenderFrame& f, const LookSettings& look) {
 }
 }  // namespace
 
+glm::vec4 hairForward(const LookSettings& look, const glm::vec3& forwardAlbedo) {
+  return look.scattering == Scattering::Dual ? glm::vec4(forwardAlbedo, gpu::MARSCHNER_FORWARD_DENSITY) : glm::vec4(0.0f);
+}
+
 gpu::RenderFrame makeRenderFrame(const CameraMatrices& camera, VkExtent2D extent, const FrameLights& lights,
                                  const HairMaterial& material, const LookSettings& look,
                                  const compute::StrandLayout& strands, const OpacitySettings& opacity,
@@ -96,8 +100,7 @@ gpu::RenderFrame makeRenderFrame(const CameraMatrices& camera, VkExtent2D extent
   f.hairColor = glm::vec4(glm::vec3(albedo), 0.0f);
   setEnvironment(f, look);
   f.skinColor = glm::vec4(look.skinColor, look.wrap);
-  if (look.scattering == Scattering::Dual)
-    f.hairForward = glm::vec4(forwardAlbedo, gpu::MARSCHNER_FORWARD_DENSITY);
+  f.hairForward = hairForward(look, forwardAlbedo);
   f.strand = glm::vec4(look.strandWidth, look.tipWidthFraction, opacity.k, lookupBias(opacity));
   f.options = glm::uvec4(strands.verticesPerStrand, opacity.enabled ? 1u : 0u,
                          look.scattering == Scattering::Dual ? gpu::RENDER_SCATTERING_DUAL : gpu::RENDER_SCATTERING_SINGLE,

@@ -53,6 +53,11 @@ struct LookSettings {
   void validate() const;             // throws hp::Error naming the field
 };
 
+// What the hair passes on forward to a diffuse receiver beneath it (RenderFrame::hairForward, the public
+// hairpipeHairTransmittance's `forward`): the material's mean forward albedo and its weight with dual
+// scattering, 0 with single.
+glm::vec4 hairForward(const LookSettings& look, const glm::vec3& forwardAlbedo);
+
 // The skin's bounce (headBounce) is on where the look asks for it and slot 0 has a head map (the bounce map
 // is drawn from slot 0's light, framed like its head map). forwardAlbedo: the material's mean forward
 // albedo (MarschnerParams.forwardMean; 0 for the paper's model), taken with dual scattering. `strands`: the

@@ -79,6 +79,10 @@ HairInstance::HairInstance(Renderer& renderer, const HairAsset& asset, const Ins
 
 HairInstance::~HairInstance() { renderer_.forgetInstance(*this); }
 
+glm::vec4 HairInstance::shadowForward() const {
+  return render::hairForward(settings_.look, glm::vec3(marschner_->params().forwardMean));
+}
+
 gpu::RenderFrame HairInstance::frameBlock(const CameraMatrices& camera, VkExtent2D extent,
                                           const render::FrameLights& lights, const render::LookSettings& look) const {
   gpu::RenderFrame f = render::makeRenderFrame(camera, extent, lights, settings_.material, look, strands().layout(),

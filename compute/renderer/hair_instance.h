@@ -80,6 +80,9 @@ class HairInstance {
   const glm::mat4& headToWorld() const { return motion_.to; }
   const compute::StrandBuffers& strands() const { return geometry_->buffers; }
   const render::MarschnerTextures& marschner() const { return *marschner_; }
+  // What its hair passes on forward to a diffuse receiver beneath it (render::hairForward): the material and
+  // look in effect.
+  glm::vec4 shadowForward() const;
   // The instance's frame block for a view or pass: its material and its tables' forward albedo, `look`.
   gpu::RenderFrame frameBlock(const CameraMatrices& camera, VkExtent2D extent, const render::FrameLights& lights,
                               const render::LookSettings& look) const;

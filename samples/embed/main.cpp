@@ -9,7 +9,9 @@
 //      with two frames in flight (a command buffer and fence per slot); with --raster compute the hair
 //      is drawn by the compute rasterizer between two renderings, with the barriers the contract in
 //      <hairpipe/renderer.h> lists, written here in plain Vulkan,
-//   5. reads its colour attachment back, writes a PNG (libpng, its own), destroys hairpipe before its device.
+//   5. draws its own wall behind the heads in the hair's shadow (backdrop.h: its shader includes
+//      <hairpipe/hair_shadows.glsl> and reads the maps Renderer::hairShadows() hands out),
+//   6. reads its colour attachment back, writes a PNG (libpng, its own), destroys hairpipe before its device.
 // Every hairpipe call returns a Status or Result (no exceptions cross the boundary).
 // Usage: hairpipe_embed [--validation] [--frames N] [--raster graphics|compute] [--out FILE.png]
 // With --validation, VK_LAYER_KHRONOS_validation runs with synchronization validation; any message fails.
@@ -29,6 +31,8 @@
 #include <glm/gtc/matrix_transform.hpp>  // the application's own math library
 
 #include <hairpipe/hairpipe.h>
+
+#include "backdrop.h"
 
 namespace {
 constexpr std::uint32_t kWidth = 160, kHeight = 120;
@@ -317,7 +321,7 @@ VkRenderingAttachmentInfo attachmentInfo(VkImageView view, VkImageLayout layout,
 // One frame of the application: hairpipe's update and shadows outside rendering, then the application's
 // own rendering (its colour, depth and stencil attachments) with hairpipe's draw inside it. With the compute
 // rasterizer, the hair is drawn between that rendering and a second one of the same attachments.
-void recordFrame(VkCommandBuffer cmd, const App& app, hairpipe::Renderer& renderer, std::uint64_t frame,
+void recordFrame(VkCommandBuffer cmd, const App& app, hairpipe::Renderer& renderer, const Backdrop& backdrop, std::uint64_t frame,
                  std::span<hairpipe::Instance* const> heads, std::span<const hairpipe::Light> lights,
                  const hairpipe::View& view) {
   const bool compute = renderer.raster() == hairpipe::RasterMode::Compute;
@@ -341,6 +345,9 @@ void recordFrame(VkCommandBuffer cmd, const App& app, hairpipe::Renderer& render
   ri.pDepthAttachment = &depth;
   ri.pStencilAttachment = &depth;  // one combined image: RendererSettings::formats.stencil says so
   vkCmdBeginRendering(cmd, &ri);
+  // Your opaque geometry first (the graphics raster blends the hair over what is drawn before it): a wall in
+  // the hair's shadow, read from the maps recordShadows just wrote.
+  backdrop.record(cmd, view, lights[0], take(renderer.hairShadows()), take(heads[0]->hairShadowForward()));
   check(renderer.recordDraw(cmd, frame, view, heads));      // heads (+ hair ribbons in graphics mode)
   vkCmdEndRendering(cmd);
   if (compute) {
@@ -411,11 +418,12 @@ void renderFrames(App& app, std::uint32_t frames, hairpipe::RasterMode raster) {
   hairpipe::Instance jaw = take(renderer.createInstance(asset, skinned));
   hairpipe::Instance other = take(renderer.createInstance(asset, rigid, toHairpipe(rigidPlace)));
   hairpipe::Instance* heads[] = {&jaw, &other};
+  const Backdrop backdrop(app.device, take(renderer.hairShadows()), rs.formats);  // your geometry, in the hair's shadow
   if (raster == hairpipe::RasterMode::Compute) check(renderer.setRasterTarget({kWidth, kHeight}, app.depthSampled, heads));
 
   const hairpipe::View view = take(hairpipe::makeView(
       {{0.751f, 0.128f, 1.023f}, {0.16f, -0.08f, 0.0f}, {0.0f, 1.0f, 0.0f}, 0.6109f, 0.024f, 24.0f}, {kWidth, kHeight}));
-  // Your lights: a key (the default sun) and a cool rim from behind, both shadowed, and a warm point fill.
+  // Your lights: a key and a cool rim from behind, both shadowed, and a warm point fill.
   hairpipe::Light rim;
   rim.direction = {-0.3939193f, 0.3939193f, -0.8304548f};
   rim.color = {0.7f, 0.8f, 1.0f};
@@ -427,7 +435,9 @@ void renderFrames(App& app, std::uint32_t frames, hairpipe::RasterMode raster) {
   fill.color = {1.0f, 0.85f, 0.7f};
   fill.intensity = 0.6f;
   fill.shadows = false;
-  const hairpipe::Light lights[] = {hairpipe::Light{}, rim, fill};
+  hairpipe::Light key;  // from the upper left, so the hair's shadows fall on the wall beside the heads
+  key.direction = {-0.5496154f, 0.4996504f, 0.6695315f};
+  const hairpipe::Light lights[] = {key, rim, fill};
   for (std::uint32_t f = 0; f < frames; ++f) {
     const std::uint32_t slot = f % kFramesInFlight;
     app.waitSlot(slot);  // frame f - kFramesInFlight is done: its slot and command buffer are free
@@ -435,7 +445,7 @@ void renderFrames(App& app, std::uint32_t frames, hairpipe::RasterMode raster) {
     const hairpipe::Mat4 bones[] = {toHairpipe(glm::mat4(1.0f)), toHairpipe(jawBone(pivot, t1))};
     check(jaw.setBones(bones));  // per-frame inputs: bones, colliders, motion
     check(other.setMotion({toHairpipe(rigidPlace * nod(t0)), toHairpipe(rigidPlace * nod(t1)), t0, false}));
-    recordFrame(app.cmds[slot], app, renderer, f, heads, lights, view);
+    recordFrame(app.cmds[slot], app, renderer, backdrop, f, heads, lights, view);
     app.submit(slot);
   }
   for (std::uint32_t slot = 0; slot < kFramesInFlight; ++slot) app.waitSlot(slot);

@@ -1,6 +1,6 @@
 // Shared by GLSL and C++: opacity shadow maps (docs/THEORY.md §5): the bounds pass
 // (compute/shadows/bounds_pass.h, shaders/bounds.comp), the opacity pass (compute/shadows/opacity_pass.h,
-// shaders/opacity*.vert/.frag) and the lookup in the shading passes (shaders/opacity_lookup.glsl).
+// shaders/opacity*.vert/.frag) and the lookup in the shading passes (shaders/public/hairpipe/hair_shadows.glsl, also installed for applications; included below).
 //
 // Light space. For a directional light with unit direction L (from the hair toward the light), the
 // host builds an orthonormal basis (rows r0, r1, r2 = L; see lightBasis in bounds_pass.cpp): a point p
@@ -20,16 +20,19 @@
 #ifndef HP_SHARED_OPACITY_H
 #define HP_SHARED_OPACITY_H
 #include "common.h"
+// The maps' layout an application's shaders read too (installed as <hairpipe/hair_shadows.glsl>): the
+// constants below take its values, and GLSL includers get its lookup functions.
+#include "../public/hairpipe/hair_shadows.glsl"
 
 HP_BEGIN
-HP_CONST(uint, OPACITY_SLICES, 16)
-HP_CONST(uint, OPACITY_TARGETS, 4)            // RGBA layers of slices: OPACITY_SLICES / 4
+HP_CONST(uint, OPACITY_SLICES, HAIRPIPE_SHADOW_SLICES)
+HP_CONST(uint, OPACITY_TARGETS, HAIRPIPE_SHADOW_SLICE_LAYERS)  // RGBA layers of slices: OPACITY_SLICES / 4
 // The image has one layer more: deep opacity maps (OpacitySettings::deep) keep each texel's first hair
 // there, as its global slice coordinate s0 in .x (OPACITY_NO_HAIR where none); the slices then start at s0
 // and are OPACITY_DEEP_FACTOR times finer: deep slice coordinate = (s - s0) x OPACITY_DEEP_FACTOR.
-HP_CONST(uint, OPACITY_LAYERS, 5)
-HP_CONST(float, OPACITY_DEEP_FACTOR, 4.0f)
-HP_CONST(float, OPACITY_NO_HAIR, 1.0e4f)           // exact in RGBA16F too
+HP_CONST(uint, OPACITY_LAYERS, HAIRPIPE_SHADOW_LAYERS)
+HP_CONST(float, OPACITY_DEEP_FACTOR, HAIRPIPE_SHADOW_DEEP_FACTOR)
+HP_CONST(float, OPACITY_NO_HAIR, HAIRPIPE_SHADOW_NO_HAIR)  // exact in RGBA16F too
 // A fragment at slice coordinate s adds to slice i when s <= i + OPACITY_SLICE_EPSILON, so hair at
 // exactly z_far (s = 16 up to rounding) still lands in slice 16.
 HP_CONST(float, OPACITY_SLICE_EPSILON, 1.0e-3f)

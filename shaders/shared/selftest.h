@@ -12,10 +12,24 @@ HP_CONST(uint, DRAW_BINDING_VERTICES, 0) // vec4[]: xy in pixels
 HP_CONST(uint, LOOKUP_WORKGROUP_SIZE, 64)
 HP_CONST(uint, LOOKUP_BINDING_MAPS, 0)     // sampler2DArray: one shadow slot's OPACITY_LAYERS layers, 1 x 1
 HP_CONST(uint, LOOKUP_BINDING_QUERIES, 1)  // vec4[]: x = slice coordinate s, y = bias, z = 1 for a deep map
-HP_CONST(uint, LOOKUP_BINDING_RESULTS, 2)  // float[]: opacityAlpha at each query
+HP_CONST(uint, LOOKUP_BINDING_RESULTS, 2)  // float[]: hairpipeShadowAlpha at each query
+// selftest_hair_shadows.comp: an application's receivers, through the public hair_shadows.glsl alone.
+HP_CONST(uint, HAIR_SHADOW_TEST_BINDING_MAPS, 0)     // sampler2DArray: Renderer::hairShadows().view
+HP_CONST(uint, HAIR_SHADOW_TEST_BINDING_LIGHTS, 1)   // HairpipeLightSpace[]: .lightSpaces
+HP_CONST(uint, HAIR_SHADOW_TEST_BINDING_POINTS, 2)   // vec4[]: world points (w unused)
+HP_CONST(uint, HAIR_SHADOW_TEST_BINDING_RESULTS, 3)  // vec4[]: rgb = hairpipeHairShadow, a = the sharp alpha
 
 struct ScanPush {
   uint count;
+};
+
+struct HairShadowTestPush {
+  vec4 params;   // hairpipeHairShadow's: k, bias, deep
+  vec4 forward;  // Instance::hairShadowForward()
+  uint slot;
+  uint count;
+  uint pad0;
+  uint pad1;
 };
 
 struct FlatDrawPush {
@@ -28,5 +42,6 @@ HP_END
 #ifdef __cplusplus
 static_assert(sizeof(hp::gpu::ScanPush) == 4);
 static_assert(sizeof(hp::gpu::FlatDrawPush) == 32);
+static_assert(sizeof(hp::gpu::HairShadowTestPush) == 48);
 #endif
 #endif

@@ -470,3 +470,49 @@ TEST_F(PublicApi, AnInstanceAssignedOverGivesWayToTheOther) {
 }
 
 }  // namespace
+
+// Renderer::hairShadows() hands out the maps an application's shaders read (tests/render/
+// hair_shadows_export_test.cpp reads them on the device); its parameters follow setOpacityTuning, and an
+// instance's forward term its look.
+TEST_F(PublicApi, HairShadowsDescribeTheMapsAndFollowTheTuning) {
+  hairpipe::Result<hairpipe::Renderer::HairShadows> shadows = renderer_->hairShadows();
+  ASSERT_TRUE(shadows.ok()) << shadows.message();
+  const hairpipe::OpacitySettings defaults;
+  EXPECT_NE(shadows.value().image, VK_NULL_HANDLE);
+  EXPECT_NE(shadows.value().view, VK_NULL_HANDLE);
+  EXPECT_NE(shadows.value().sampler, VK_NULL_HANDLE);
+  EXPECT_NE(shadows.value().lightSpaces, VK_NULL_HANDLE);
+  EXPECT_EQ(shadows.value().resolution, defaults.resolution);
+  EXPECT_EQ(shadows.value().slots, 1u);
+  EXPECT_EQ(shadows.value().layersPerSlot, 5u);
+  EXPECT_EQ(shadows.value().lightSpacesBytes, 128u);
+  EXPECT_EQ(shadows.value().opacityScale, defaults.k);
+  // lavapipe takes the compute path, where deep maps are the default: their bias is the one in effect.
+  EXPECT_TRUE(shadows.value().deep);
+  EXPECT_EQ(shadows.value().bias, defaults.deepBiasSlices);
+  hairpipe::OpacitySettings tuned = defaults;
+  tuned.k = 0.7f;
+  tuned.biasSlices = 2.0f;
+  tuned.deepBiasSlices = 0.5f;
+  ASSERT_TRUE(renderer_->setOpacityTuning(tuned).ok());
+  EXPECT_EQ(renderer_->hairShadows().value().opacityScale, 0.7f);
+  EXPECT_EQ(renderer_->hairShadows().value().bias, 0.5f);
+  tuned.enabled = false;
+  ASSERT_TRUE(renderer_->setOpacityTuning(tuned).ok());
+  EXPECT_EQ(renderer_->hairShadows().value().opacityScale, 0.0f);  // no hair shadow: T = 1
+  EXPECT_EQ(renderer_->hairShadows().value().view, shadows.value().view);
+
+  hairpipe::InstanceSettings single;
+  single.look.scattering = hairpipe::Scattering::Single;
+  hairpipe::Instance head = instance(single);
+  EXPECT_EQ(head.hairShadowForward().value().weight, 0.0f);
+  hairpipe::LookSettings dual;
+  ASSERT_TRUE(head.setLook(dual).ok());
+  const hairpipe::Instance::HairShadowForward forward = head.hairShadowForward().value();
+  EXPECT_GT(forward.weight, 0.0f);
+  EXPECT_GT(forward.albedo.x, forward.albedo.z);  // brown hair passes more red on
+  hairpipe::Instance gone = std::move(head);
+  EXPECT_THAT(failureOf(head.hairShadowForward()), HasSubstr("the instance was moved from"));
+  hairpipe::Renderer taken = std::move(*renderer_);
+  EXPECT_THAT(failureOf(renderer_->hairShadows()), HasSubstr("the Renderer was moved from"));
+}

@@ -9,7 +9,8 @@
 #              Vulkan's headers, not the loader), and runs both
 #   headers    the installed headers are exactly docs/API.md's public list, each compiles alone
 #              (-fno-exceptions, -Wall -Wextra -Werror) and includes only public headers, Vulkan's core
-#              header and the standard library
+#              header and the standard library; the GLSL file includes nothing and compiles (glslc) into an
+#              application's compute shader that calls hairpipeHairShadow
 #   symbols    no installed archive defines a global vk* or volk* symbol, nor any strong global symbol outside
 #              hairpipe's namespaces (its copies of tinyobjloader and tinygltf renamed); the CMake package names no
 #              absolute path, no compile definition and no link dependency but Vulkan's headers and libdl
@@ -77,12 +78,34 @@ case $mode in
   headers)
     installed=$(cd "$prefix/include" && find . -type f | sed 's|^\./||' | sort)
     documented=$(sed -n '/^<!-- public-headers-begin -->$/,/^<!-- public-headers-end -->$/p' "$src/docs/API.md" \
-      | grep -o '^| `hairpipe/[a-z_]*\.h`' | sed 's/^| `//; s/`$//' | sort)
+      | grep -oE '^\| `hairpipe/[a-z_]*\.(h|glsl)`' | sed 's/^| `//; s/`$//' | sort)
     if [ "$installed" != "$documented" ]; then
       echo "installed headers differ from docs/API.md's public list:" >&2
       diff <(echo "$documented") <(echo "$installed") >&2 || true
       exit 1
     fi
+    # The GLSL an application's shaders include: it compiles in a compute shader of the application's that
+    # binds what Renderer::hairShadows() hands out and calls the one function it needs, with no other include.
+    for h in $(echo "$installed" | grep '\.glsl$'); do
+      cat > "$work/receiver.comp" <<GLSL
+#version 460
+#extension GL_GOOGLE_include_directive : require
+#include <$h>
+layout(local_size_x = 64) in;
+layout(binding = 0) uniform sampler2DArray hairShadowMaps;
+layout(std430, binding = 1) readonly buffer HairLights { HairpipeLightSpace hairLights[]; };
+layout(std430, binding = 2) buffer Points { vec4 points[]; };
+layout(push_constant) uniform Push { vec4 params; vec4 forward; };
+void main() {
+  uint i = gl_GlobalInvocationID.x;
+  points[i].rgb = hairpipeHairShadow(hairShadowMaps, hairLights[0], 0u, points[i].xyz, params, forward);
+}
+GLSL
+      glslc --target-env=vulkan1.3 -Werror -I"$prefix/include" -o "$work/receiver.spv" "$work/receiver.comp" \
+        || { echo "$h does not compile in an application's shader" >&2; exit 1; }
+      if grep -q '^#include' "$prefix/include/$h"; then echo "$h includes another file" >&2; exit 1; fi
+    done
+    installed=$(echo "$installed" | grep -v '\.glsl$')
     for h in $installed; do
       bad=$(grep -E '^#include' "$prefix/include/$h" | grep -vE '^#include "hairpipe/[a-z_]+\.h"$|^#include <vulkan/vulkan_core\.h>$|^#include <[a-z_]+>$' || true)
       [ -z "$bad" ] || { echo "$h includes more than public headers, Vulkan's core header and the standard library: $bad" >&2; exit 1; }
@@ -90,7 +113,7 @@ case $mode in
       "$cxx" -std=c++20 -fno-exceptions -Wall -Wextra -Wpedantic -Werror -fsyntax-only -I"$prefix/include" "$work/alone.cpp" \
         || { echo "$h does not compile alone" >&2; exit 1; }
     done
-    echo "$(echo "$installed" | wc -l) installed headers = docs/API.md's list; each compiles alone"
+    echo "$(echo "$installed" | wc -l) installed headers and the GLSL = docs/API.md's list; each compiles alone"
     ;;
   symbols)
     defined=$(nm -g --defined-only "$prefix"/lib/*.a | awk 'NF == 3 && $2 ~ /[A-TV-Z]/ {print $3}' | grep -E '^(vk|volk)' || true)

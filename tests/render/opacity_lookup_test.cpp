@@ -1,4 +1,4 @@
-// The opacity lookup (shaders/opacity_lookup.glsl) on the device against its definition on the CPU: alpha at
+// The opacity lookup (hairpipeShadowAlpha, shaders/public/hairpipe/hair_shadows.glsl) on the device against its definition on the CPU: alpha at
 // slice coordinate d is sum over the 16 slices i of max(0, 1 - |d - i|) alpha_i, d = s - bias (global maps)
 // or (s - s0) x OPACITY_DEEP_FACTOR - bias (deep maps), clamped to [0, 16], and 0 in front of the maps
 // (s < 0). The lookup fetches only the layers whose weights can be non-zero and none in front of the first

@@ -30,7 +30,8 @@
 //       (SHADER_STORAGE_READ): the application's writes to it must be made visible to that first.
 //   recordShadows(cmd, frame, lights, instances)   outside any rendering, every frame (it also orders the
 //       new strands before recordDraw reads them). Begins and ends its own renderings on hairpipe's
-//       shadow maps; touches nothing of the application's.
+//       shadow maps; touches nothing of the application's. The application's shaders may read the maps
+//       after it (Renderer::hairShadows says in which stages without a barrier).
 //   recordDraw(cmd, frame, view, instances)   inside the application's vkCmdBeginRendering (dynamic
 //       rendering, begun by the application) whose attachments have RendererSettings::formats and cover
 //       view.extent from (0, 0): colour in COLOR_ATTACHMENT_OPTIMAL, depth in DEPTH_ATTACHMENT_OPTIMAL or
@@ -128,6 +129,16 @@ class Instance {
   // the same image, slower on CPU devices, until setRasterTarget: docs/API.md "Frames in flight, lifetimes").
   Status setMaterial(const Material& material, FibreModel fibre) noexcept;
   bool materialPending() const noexcept;
+  // What this instance's hair passes on forward to a diffuse receiver beneath it, for
+  // hairpipeHairShadow's `forward` (hairpipe/hair_shadows.glsl): with dual scattering the material's mean
+  // forward albedo and its weight, with single scattering all 0. It follows setLook at once and setMaterial
+  // once the new material applies (materialPending() false: in the frame loop, the recordUpdate or
+  // recordShadows that applies it), so an application asks after those calls, each frame.
+  struct HairShadowForward {
+    Vec3 albedo;
+    float weight = 0.0f;
+  };
+  Result<HairShadowForward> hairShadowForward() const noexcept;
   // A failure naming why the last setMaterial made in the frame loop did not apply once it left
   // materialPending() (its tables could not be built or uploaded; the instance keeps its former material);
   // ok while it is pending, once it applied, or when none failed. A later setMaterial clears it.
@@ -216,6 +227,36 @@ class Renderer {
     VkExtent2D extent{};
   };
   Result<MotionImage> motionImage() const noexcept;
+
+  // The hair's opacity shadow maps, for the application's own shaders: receivers hairpipe does not draw (a
+  // body, clothes, a floor) darken under the hair as hairpipe's heads do, through hairpipeHairShadow
+  // (hairpipe/hair_shadows.glsl, installed beside this header; docs/API.md "Hair shadows in your shaders").
+  // Shadow slot i is the i-th light with Light::shadows of the latest recordShadows (at most `slots`); a slot
+  // no light took there (or every slot, in a frame without instances or with hair shadows off) keeps an
+  // earlier frame's contents, so read only the slots of that frame's shadowed lights.
+  // Synchronisation: recordShadows leaves `view` in SHADER_READ_ONLY_OPTIMAL with its writes visible to
+  // FRAGMENT_SHADER sampled reads, and `lightSpaces` (bound as a storage buffer) with its writes visible to
+  // VERTEX_SHADER, FRAGMENT_SHADER and COMPUTE_SHADER storage reads; so a rendering after recordShadows reads
+  // them in those stages without a barrier of the application's. The next recordShadows rewrites them after a
+  // barrier from those stages: an application that samples the maps in another stage (a compute lighting
+  // pass) adds a barrier FRAGMENT_SHADER -> its stage before, and its stage -> FRAGMENT_SHADER after its
+  // reads, with the layout kept. The handles live as long as the Renderer; the parameters change with
+  // setOpacityTuning (ask again after it).
+  struct HairShadows {
+    VkImage image = VK_NULL_HANDLE;
+    VkImageView view = VK_NULL_HANDLE;  // 2D array: layersPerSlot layers per slot, from layer slot x layersPerSlot
+    VkSampler sampler = VK_NULL_HANDLE;  // linear, clamped to the edge: the one hairpipe samples them with
+    VkFormat format = VK_FORMAT_UNDEFINED;
+    std::uint32_t resolution = 0;  // texels per side
+    std::uint32_t slots = 0;       // RendererSettings::shadowedLights
+    std::uint32_t layersPerSlot = 0;
+    VkBuffer lightSpaces = VK_NULL_HANDLE;  // HairpipeLightSpace[slots] (std430, 128 bytes each) from offset 0
+    VkDeviceSize lightSpacesBytes = 0;
+    float opacityScale = 0.0f;  // k: optical depth per unit of the maps' opacity (0 while shadows are off)
+    float bias = 0.0f;          // slices the lookup moves toward the light
+    bool deep = false;          // deep opacity maps: slices from each texel's first hair
+  };
+  Result<HairShadows> hairShadows() const noexcept;
 
  private:
   friend struct Access;
