@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 #include "engine/core/error.h"
 #include "engine/core/hair/finite.h"
@@ -67,6 +68,7 @@ HairInstance::HairInstance(Renderer& renderer, const HairAsset& asset, const Ins
   frames_ = vk::Buffer(ctx, VkDeviceSize(frameStride_) * rs.framesInFlight * rs.maxViewsPerFrame,
                        VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, vk::MemoryKind::Upload, "render frame ring");
   // Valid blocks from the start, so a draw before any prepared view reads sane values.
+  blockWrites_.resize(rs.maxViewsPerFrame);
   for (std::uint32_t slot = 0; slot < rs.framesInFlight * rs.maxViewsPerFrame; ++slot)
     *frameSlot(slot / rs.maxViewsPerFrame, slot % rs.maxViewsPerFrame) =
         frameBlock(CameraMatrices{}, {1, 1}, render::FrameLights{}, settings_.look);
@@ -183,6 +185,20 @@ float HairInstance::lodFraction(const glm::vec3& eye) const {
 
 std::uint32_t HairInstance::lodStrands(float fraction) const {
   return lodStrandCount(fraction, strands().layout().strandCount);
+}
+
+void HairInstance::checkFrameBlock(std::uint64_t frame, std::uint32_t index, const gpu::RenderFrame& block) const {
+  const std::optional<BlockWrite>& written = blockWrites_.at(index);
+  if (!written || written->epoch != renderer_.recordEpoch() || written->frame != frame) return;
+  if (std::memcmp(frameSlot(frame, index), &block, sizeof(block)) != 0)
+    throw Error("Renderer::recordDraw: View.index " + std::to_string(index) + " already drew another view in frame " +
+                std::to_string(frame) + " (another camera, extent or jitter): each view of a frame needs its own " +
+                "index, below RendererSettings::maxViewsPerFrame");
+}
+
+void HairInstance::writeFrameBlock(std::uint64_t frame, std::uint32_t index, const gpu::RenderFrame& block) {
+  *frameSlot(frame, index) = block;
+  blockWrites_.at(index) = BlockWrite{renderer_.recordEpoch(), frame};
 }
 
 void HairInstance::noteViewFraction(std::uint64_t frame, float fraction) {

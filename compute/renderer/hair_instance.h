@@ -12,6 +12,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "compute/shadows/bounds_pass.h"
 #include "compute/strands/interpolate_pass.h"
@@ -127,6 +128,13 @@ class HairInstance {
   void applyReadyMaterial();
   // A view of `frame` draws `fraction` (the shadows of the next frame use the largest of a frame's).
   void noteViewFraction(std::uint64_t frame, float fraction);
+  // recordDraw's frame block for view slot `index` of `frame`, checked before anything is written: the draws
+  // of one frame read the block as it was written last (host memory), so a second view with the same index
+  // and another block (another camera, extent or jitter) would draw the first with its camera. Throws
+  // hp::Error naming the index; the same block again passes.
+  void checkFrameBlock(std::uint64_t frame, std::uint32_t index, const gpu::RenderFrame& block) const;
+  // Writes it (after every instance's check).
+  void writeFrameBlock(std::uint64_t frame, std::uint32_t index, const gpu::RenderFrame& block);
 
   Renderer& renderer_;
   InstanceSettings settings_;
@@ -148,6 +156,10 @@ class HairInstance {
   std::shared_ptr<render::StrandPass> strandPass_;  // the graphics raster's ribbons; null with the compute raster
   bool viewsDrawn_ = false;
   std::uint64_t viewFrame_ = 0;       // the frame of the views most recently drawn
+  struct BlockWrite {
+    std::uint64_t epoch, frame;  // Renderer::recordEpoch() and the frame when recordDraw last wrote the slot
+  };
+  std::vector<std::optional<BlockWrite>> blockWrites_;  // per View::index
   float largestViewFraction_ = 1.0f;  // their largest LOD fraction
 };
 }  // namespace hp

@@ -325,12 +325,20 @@ void Renderer::recordDraw(VkCommandBuffer cmd, std::uint64_t frame, const View& 
   view.validate(settings_.maxViewsPerFrame, settings_.formats.reversedDepth);
   beginFrame(frame, instances);
   const render::FrameLights& lights = frameLights_[frame % settings_.framesInFlight];
+  // Every instance's block first: a view index another view of this frame took is refused before anything is
+  // written or recorded.
+  std::vector<gpu::RenderFrame> blocks;
   for (HairInstance* i : instances) {
     const float fraction = i->lodFraction(view.camera.position);
+    blocks.push_back(i->frameBlock(view.camera, view.extent, lights, lodLook(i->settings_.look, fraction)));
+    render::setViewMotion(blocks.back(), view.extent, view.jitter, view.previousViewProj);
+    i->checkFrameBlock(frame, view.index, blocks.back());
+  }
+  for (std::size_t n = 0; n < instances.size(); ++n) {
+    HairInstance* i = instances[n];
+    const float fraction = i->lodFraction(view.camera.position);
     i->noteViewFraction(frame, fraction);
-    gpu::RenderFrame* block = i->frameSlot(frame, view.index);
-    *block = i->frameBlock(view.camera, view.extent, lights, lodLook(i->settings_.look, fraction));
-    render::setViewMotion(*block, view.extent, view.jitter, view.previousViewProj);
+    i->writeFrameBlock(frame, view.index, blocks[n]);
     const std::uint32_t offset = i->frameOffset(frame, view.index);
     if (profiler) profiler->beginInRendering(cmd, "head");
     i->head_->draw(cmd, view.extent, i->headToWorld(), offset, lights.lights.size() <= 1);

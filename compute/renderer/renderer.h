@@ -141,7 +141,11 @@ class Renderer {
   void releaseRetired() {
     retired_.clear();
     numberingRestarts_ = true;
+    ++recordEpoch_;
   }
+  // How many times the frame numbering may have started again (releaseRetired): a frame number means the
+  // same frame only within one epoch.
+  std::uint64_t recordEpoch() const { return recordEpoch_; }
 
  private:
   friend class HairInstance;
@@ -195,6 +199,7 @@ class Renderer {
   std::vector<Retired> retired_;
   std::optional<std::uint64_t> lastFrame_;
   bool numberingRestarts_ = false;  // releaseRetired: the next frame number may be below lastFrame_
+  std::uint64_t recordEpoch_ = 0;
   std::shared_ptr<ComputeRaster> rasterTarget_;  // retired through retire() when replaced
   std::vector<std::shared_ptr<vk::DeferredWork>> deferred_;  // changes' uploads not yet executed
   std::vector<std::shared_ptr<void>> retiredWithDeferred_;   // retired while such work waited

@@ -348,6 +348,39 @@ TEST_F(VulkanTest, ARasterViewOfAnotherExtentThanItsTargetIsRefused) {
   }
 }
 
+// Two views of one frame with the same View::index share the instance's frame block (host memory the draws
+// read at execution): the second would draw the first with its camera. Refused before anything is recorded;
+// the same view again, another index, or the next frame pass.
+TEST_F(VulkanTest, TwoViewsOfAFrameWithOneIndexAreRefused) {
+  hp::render::OffscreenRenderer target(*ctx, kRendererWidth, kRendererHeight, 1);
+  hp::Renderer renderer(*ctx, rendererSettings(target));
+  auto hair = renderer.createInstance(head(300), {});
+  hp::HairInstance* one[] = {hair.get()};
+  const hp::View left = frontView(-0.1f), right = frontView(0.1f);
+  hp::View rightAtOne = right;
+  rightAtOne.index = 1;
+  std::string refusal;
+  hp::vk::submitAndWait(*ctx, [&](VkCommandBuffer cmd) {
+    renderer.recordUpdate(cmd, 1, one);
+    renderer.recordShadows(cmd, 1, hp::LightSpec{}, one);
+    target.record(cmd, [&](VkCommandBuffer c) {
+      renderer.recordDraw(c, 1, left, one);
+      renderer.recordDraw(c, 1, left, one);        // the same view again: the same block
+      renderer.recordDraw(c, 1, rightAtOne, one);  // another index
+      try {
+        renderer.recordDraw(c, 1, right, one);
+      } catch (const hp::Error& e) {
+        refusal = e.what();
+      }
+    }, 1.0f);
+  }, "one index, two views");
+  EXPECT_NE(refusal.find("View.index 0 already drew another view in frame 1"), std::string::npos) << refusal;
+  hp::vk::submitAndWait(*ctx, [&](VkCommandBuffer cmd) {
+    renderer.recordShadows(cmd, 2, hp::LightSpec{}, one);
+    target.record(cmd, [&](VkCommandBuffer c) { renderer.recordDraw(c, 2, right, one); }, 1.0f);  // the next frame
+  }, "next frame");
+}
+
 // The middleware API on the compute raster: two heads side by side in one set of tile lists, both drawn;
 // a target of one head draws that head only; after a material change the target (kept) draws the changed
 // head's hair brighter and the other's unchanged. Sync-validation clean (fixture).

@@ -338,7 +338,8 @@ Result<EnvironmentImage> studioEnvironment() noexcept;
 // clip space with depth in [0, 1] and y up (OpenGL-style, e.g. glm::perspectiveRH_ZO: hairpipe's draws
 // flip y with a negative-height viewport over the whole extent). eye: the camera's world position; fovY
 // the vertical field of view of `projection` (it sets the strands' pixel width). Several views of one
-// frame (a mirror, a second camera) reuse its update and shadows; each needs its own index.
+// frame (a mirror, a second camera) reuse its update and shadows; each needs its own index (recordDraw
+// refuses a second view of the frame at an index another view took; the same view again passes).
 struct View {
   Mat4 view;
   Mat4 projection;
