@@ -101,7 +101,7 @@ void main() {
   points[i].rgb = hairpipeHairShadow(hairShadowMaps, hairLights[0], 0u, points[i].xyz, params, forward);
 }
 GLSL
-      glslc --target-env=vulkan1.3 -Werror -I"$prefix/include" -o "$work/receiver.spv" "$work/receiver.comp" \
+      "${GLSLC:-glslc}" --target-env=vulkan1.3 -Werror -I"$prefix/include" -o "$work/receiver.spv" "$work/receiver.comp" \
         || { echo "$h does not compile in an application's shader" >&2; exit 1; }
       if grep -q '^#include' "$prefix/include/$h"; then echo "$h includes another file" >&2; exit 1; fi
     done
