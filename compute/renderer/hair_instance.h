@@ -156,10 +156,10 @@ class HairInstance {
   std::shared_ptr<render::StrandPass> strandPass_;  // the graphics raster's ribbons; null with the compute raster
   bool viewsDrawn_ = false;
   std::uint64_t viewFrame_ = 0;       // the frame of the views most recently drawn
+  float largestViewFraction_ = 1.0f;  // their largest LOD fraction
   struct BlockWrite {
     std::uint64_t epoch, frame;  // Renderer::recordEpoch() and the frame when recordDraw last wrote the slot
   };
   std::vector<std::optional<BlockWrite>> blockWrites_;  // per View::index
-  float largestViewFraction_ = 1.0f;  // their largest LOD fraction
 };
 }  // namespace hp
