@@ -215,6 +215,28 @@ Result<Renderer::HairShadows> Renderer::hairShadows() const noexcept {
                        opacity.deep};
   });
 }
+Result<Renderer::OccluderTargets> Renderer::occluderTargets() const noexcept {
+  return guarded<OccluderTargets>("hairpipe::Renderer::occluderTargets", [&] {
+    const hp::Renderer& renderer = implementation(impl_);
+    if (!renderer.settings().applicationOccluders) throw hp::Error("RendererSettings::applicationOccluders is off");
+    const hp::render::FrameLights* lights = renderer.latestShadowLights();
+    if (!lights) throw hp::Error("no frame's shadows were recorded yet (call it after recordShadows)");
+    const hp::render::ShadowMaps& maps = renderer.shadows();
+    OccluderTargets targets;
+    targets.image = maps.headImage().handle();
+    targets.format = hp::render::ShadowMaps::kHeadDepthFormat;
+    targets.extent = maps.headImage().extent();
+    targets.slots = maps.slots();
+    static_assert(std::size(OccluderTargets{}.layers) == hp::gpu::OPACITY_MAX_LIGHTS);
+    for (std::uint32_t slot = 0; slot < maps.slots(); ++slot) {
+      const hp::render::HeadShadowView& view = lights->headViews[slot];
+      targets.layers[slot] = maps.headImage().layerView(slot);
+      targets.framed[slot] = slot < lights->shadowed() && view.params.x != 0.0f && maps.settings().enabled;
+      targets.viewProjection[slot] = convert::mat(view.viewProj);
+    }
+    return targets;
+  });
+}
 Result<std::vector<std::uint8_t>> Renderer::pipelineCacheData() const noexcept {
   return guarded<std::vector<std::uint8_t>>("hairpipe::Renderer::pipelineCacheData",
                                             [&] { return implementation(impl_).pipelineCacheData(); });

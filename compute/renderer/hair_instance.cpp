@@ -12,6 +12,16 @@
 
 namespace hp {
 namespace {
+// The bounding sphere of every guide particle at rest (head space): where the hair and the head it grows on lie.
+render::HeadSphere guidesSphere(const GuideSet& guides) {
+  if (guides.positions.empty()) return {};
+  glm::vec3 lo = guides.positions.front(), hi = lo;
+  for (const glm::vec3& p : guides.positions) lo = glm::min(lo, p), hi = glm::max(hi, p);
+  render::HeadSphere sphere{0.5f * (lo + hi), 0.0f};
+  for (const glm::vec3& p : guides.positions) sphere.radius = std::max(sphere.radius, glm::length(p - sphere.centre));
+  return sphere;
+}
+
 const InstanceSettings& validated(const InstanceSettings& s) {
   s.validate();
   return s;
@@ -77,6 +87,10 @@ HairInstance::HairInstance(Renderer& renderer, const HairAsset& asset, const Ins
   bounce_ = std::make_unique<render::HeadBouncePass>(ctx, *head_, bounceFrame_.handle(), renderer.shadows().inputs(),
                                                      &renderer.pipelines());
   strandPass_ = makeStrandPass(*geometry_, *marschner_);
+  // Hair only, with the application's occluders: the heads' depth map is framed around the guides (the
+  // application draws its character there), so it exists without hairpipe's head.
+  if (!settings.drawHead && rs.applicationOccluders) occluderSphere_ = guidesSphere(asset.guides);
+  geometry_->opacity.encloseHead(occluderSphere_);
 }
 
 HairInstance::~HairInstance() { renderer_.forgetInstance(*this); }
@@ -223,6 +237,7 @@ void HairInstance::setStrands(const InterpolationTopology& topology, const compu
     InstanceSettings next = settings_;
     next.strands = options;
     auto geometry = std::make_shared<Geometry>(renderer_, simulate_, topology, headMesh_, next, bounceFrame_);
+    geometry->opacity.encloseHead(occluderSphere_);
     auto pass = makeStrandPass(*geometry, *marschner_);
     renderer_.retire(geometry_);
     geometry_ = std::move(geometry);

@@ -161,5 +161,6 @@ class HairInstance {
     std::uint64_t epoch, frame;  // Renderer::recordEpoch() and the frame when recordDraw last wrote the slot
   };
   std::vector<std::optional<BlockWrite>> blockWrites_;  // per View::index
+  render::HeadSphere occluderSphere_;  // RendererSettings::applicationOccluders without a head: the guides' sphere
 };
 }  // namespace hp

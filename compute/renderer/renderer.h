@@ -143,6 +143,10 @@ class Renderer {
     numberingRestarts_ = true;
     ++recordEpoch_;
   }
+  // The lights and heads' depth map framings of the latest recordShadows (none before the first).
+  const render::FrameLights* latestShadowLights() const {
+    return lastFrame_ ? &frameLights_[*lastFrame_ % settings_.framesInFlight] : nullptr;
+  }
   // How many times the frame numbering may have started again (releaseRetired): a frame number means the
   // same frame only within one epoch.
   std::uint64_t recordEpoch() const { return recordEpoch_; }

@@ -34,6 +34,9 @@ struct RendererSettings {
   // Motion vectors: every instance keeps its previous render positions (a copy per recordUpdate) and the
   // compute raster target writes the hair's screen motion (Renderer::motionImage).
   bool motionVectors = false;
+  // hairpipe::RendererSettings::applicationOccluders: hair-only instances frame the heads' depth map around
+  // their guides, so the application can draw its occluders into it (Renderer::occluderTargets).
+  bool applicationOccluders = false;
   std::uint32_t framesInFlight = 2;   // [1, kMaxFramesInFlight]
   std::uint32_t maxViewsPerFrame = 4; // [1, kMaxViewsPerFrame]: draws of one frame with different cameras
   // How hair reaches the camera: Graphics (ribbons in recordDraw) or Compute (setRasterTarget,

@@ -62,7 +62,7 @@ OpacityPass::OpacityPass(const vk::Context& ctx, const compute::StrandBuffers& s
 }
 
 HeadSphere OpacityPass::headSphere(const glm::mat4& headToWorld) const {
-  if (headIndexCount_ == 0) return {};
+  if (sphere_.radius <= 0.0f) return {};  // no head, and no application occluders framed for the hair
   const float scale = std::max({glm::length(glm::vec3(headToWorld[0])), glm::length(glm::vec3(headToWorld[1])),
                                 glm::length(glm::vec3(headToWorld[2]))});
   return {glm::vec3(headToWorld * glm::vec4(sphere_.centre, 1.0f)), sphere_.radius * scale};

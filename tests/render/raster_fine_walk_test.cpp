@@ -12,6 +12,7 @@
 #include <cmath>
 #include <iostream>
 
+#include "engine/core/error.h"
 #include "engine/core/hair/default_head.h"
 #include "samples/tools/render_job.h"
 #include "tests/support/vk_fixture.h"

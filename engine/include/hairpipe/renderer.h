@@ -31,7 +31,9 @@
 //   recordShadows(cmd, frame, lights, instances)   outside any rendering, every frame (it also orders the
 //       new strands before recordDraw reads them). Begins and ends its own renderings on hairpipe's
 //       shadow maps; touches nothing of the application's. The application's shaders may read the maps
-//       after it (Renderer::hairShadows says in which stages without a barrier).
+//       after it (Renderer::hairShadows says in which stages without a barrier), and with
+//       RendererSettings::applicationOccluders it may draw its occluders into the heads' depth map before
+//       recordDraw (Renderer::occluderTargets lists the barriers).
 //   recordDraw(cmd, frame, view, instances)   inside the application's vkCmdBeginRendering (dynamic
 //       rendering, begun by the application) whose attachments have RendererSettings::formats and cover
 //       view.extent from (0, 0): colour in COLOR_ATTACHMENT_OPTIMAL, depth in DEPTH_ATTACHMENT_OPTIMAL or
@@ -257,6 +259,32 @@ class Renderer {
     bool deep = false;          // deep opacity maps: slices from each texel's first hair
   };
   Result<HairShadows> hairShadows() const noexcept;
+
+  // RendererSettings::applicationOccluders: the heads' depth shadow map, into which the application draws its
+  // own occluders (its character's head and body, a hat) after recordShadows, so that they shadow the hair and
+  // hairpipe's heads. Per shadow slot the latest recordShadows framed (`framed`): a 2D view of the slot's
+  // layer and the world-to-clip matrix of that frame (orthographic along a directional light, perspective
+  // from a spot or point light; depth [0, 1], y up: draw with the negative-height viewport hairpipe's own
+  // draws use). The map holds BACK faces (cull front faces; a receiver moves a few texels toward the light
+  // before its comparison, so a lit surface never shadows itself), depth test LESS_OR_EQUAL with writes, no
+  // colour attachment; it covers a sphere around the heads, or around each hair-only instance's guides,
+  // and what lies outside it casts nothing. Synchronisation, per framed slot, between recordShadows and the
+  // frame's recordDraw / recordRaster: the layer is in SHADER_READ_ONLY_OPTIMAL; the application's barrier
+  // FRAGMENT_SHADER | COMPUTE_SHADER (SHADER_SAMPLED_READ) -> EARLY|LATE_FRAGMENT_TESTS, to
+  // DEPTH_ATTACHMENT_OPTIMAL (or DEPTH_STENCIL_ATTACHMENT_OPTIMAL); a rendering of the view with LOAD_OP_LOAD
+  // and STORE_OP_STORE (hairpipe's heads are already in it); then LATE_FRAGMENT_TESTS
+  // (DEPTH_STENCIL_ATTACHMENT_WRITE) -> FRAGMENT_SHADER (SHADER_SAMPLED_READ), back to
+  // SHADER_READ_ONLY_OPTIMAL. Fails without applicationOccluders, or before the first recordShadows.
+  struct OccluderTargets {
+    VkImage image = VK_NULL_HANDLE;  // 2D array, a layer per slot
+    VkFormat format = VK_FORMAT_UNDEFINED;  // VK_FORMAT_D32_SFLOAT
+    VkExtent2D extent{};
+    std::uint32_t slots = 0;
+    VkImageView layers[4] = {};      // per slot: a 2D view of its layer, for the depth attachment
+    Mat4 viewProjection[4];          // per slot: world to the map's clip space, this frame
+    bool framed[4] = {};             // per slot: framed and cleared by this frame's recordShadows
+  };
+  Result<OccluderTargets> occluderTargets() const noexcept;
 
  private:
   friend struct Access;

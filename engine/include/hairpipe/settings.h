@@ -78,6 +78,10 @@ struct RendererSettings {
   // positions (one copy of them per recordUpdate) and the raster target writes the hair's screen motion
   // (Renderer::motionImage). The graphics raster writes none.
   bool motionVectors = false;
+  // The application's occluders shadow the hair (Renderer::occluderTargets): it draws its own character's depth
+  // into the heads' depth shadow map after recordShadows. Instances without hairpipe's head (drawHead false)
+  // then frame that map around their guides, so it exists for them too (one depth pass per shadowed light).
+  bool applicationOccluders = false;
   RasterMode raster = RasterMode::Graphics;
   std::uint32_t tileBudget = 16384;    // compute raster: list entries kept per 8x8 tile, [1, 2^24]
   // Compute raster: where a render strand's vertices 2j and 2j + 2 lie within this many pixels of each other on
