@@ -219,8 +219,8 @@ Result<Renderer::OccluderTargets> Renderer::occluderTargets() const noexcept {
   return guarded<OccluderTargets>("hairpipe::Renderer::occluderTargets", [&] {
     const hp::Renderer& renderer = implementation(impl_);
     if (!renderer.settings().applicationOccluders) throw hp::Error("RendererSettings::applicationOccluders is off");
-    const hp::render::FrameLights* lights = renderer.latestShadowLights();
-    if (!lights) throw hp::Error("no frame's shadows were recorded yet (call it after recordShadows)");
+    const hp::render::FrameLights* lights = renderer.currentShadowLights();
+    if (!lights) throw hp::Error("the current frame's shadows are not recorded yet (call it after its recordShadows)");
     const hp::render::ShadowMaps& maps = renderer.shadows();
     OccluderTargets targets;
     targets.image = maps.headImage().handle();

@@ -56,7 +56,7 @@ HairInstance::Geometry::Geometry(Renderer& r, const SimulatePass& sim, const Int
       opacity(r.context(), buffers, head, r.shadows(), &r.pipelines()),
       bounce(r.context(), buffers, bounceFrame.handle(), r.shadows().inputs(), &r.pipelines()) {
   // A posed character reaches past its rest mesh: its shadows are framed on the grid that covers its poses.
-  if (sim.character() && sim.sdf() && !head.positions.empty()) {
+  if (sim.character() && sim.sdf() && !head.indices.empty()) {
     const SdfGrid& g = *sim.sdf();
     opacity.encloseHead({0.5f * (g.origin + g.upper()), 0.5f * glm::length(g.upper() - g.origin)});
   }
@@ -87,9 +87,10 @@ HairInstance::HairInstance(Renderer& renderer, const HairAsset& asset, const Ins
   bounce_ = std::make_unique<render::HeadBouncePass>(ctx, *head_, bounceFrame_.handle(), renderer.shadows().inputs(),
                                                      &renderer.pipelines());
   strandPass_ = makeStrandPass(*geometry_, *marschner_);
-  // Hair only, with the application's occluders: the heads' depth map is framed around the guides (the
-  // application draws its character there), so it exists without hairpipe's head.
-  if (!settings.drawHead && rs.applicationOccluders) occluderSphere_ = guidesSphere(asset.guides);
+  // Hair only (drawHead false, or an asset without a head mesh), with the application's occluders: the heads'
+  // depth map is framed around the guides (the application draws its character there), so it exists without
+  // hairpipe's head.
+  if (headMesh_.indices.empty() && rs.applicationOccluders) occluderSphere_ = guidesSphere(asset.guides);
   geometry_->opacity.encloseHead(occluderSphere_);
 }
 

@@ -252,6 +252,7 @@ void Renderer::recordShadows(VkCommandBuffer cmd, std::uint64_t frame, std::span
   executeDeferred(cmd);
   render::FrameLights& current = frameLights_[frame % settings_.framesInFlight];
   current = std::move(frameLights);
+  shadowsFrame_ = frame;
   makeStrandsDrawable(ctx_, cmd);
   if (!shadows_->settings().enabled) return;
   render::HeadSphere heads;

@@ -142,10 +142,13 @@ class Renderer {
     retired_.clear();
     numberingRestarts_ = true;
     ++recordEpoch_;
+    shadowsFrame_.reset();
   }
-  // The lights and heads' depth map framings of the latest recordShadows (none before the first).
-  const render::FrameLights* latestShadowLights() const {
-    return lastFrame_ ? &frameLights_[*lastFrame_ % settings_.framesInFlight] : nullptr;
+  // The lights and heads' depth map framings of the current frame's recordShadows: none before it (a later
+  // frame's recordUpdate, or a restarted numbering, makes the latest one another frame's).
+  const render::FrameLights* currentShadowLights() const {
+    if (!shadowsFrame_ || shadowsFrame_ != lastFrame_) return nullptr;
+    return &frameLights_[*shadowsFrame_ % settings_.framesInFlight];
   }
   // How many times the frame numbering may have started again (releaseRetired): a frame number means the
   // same frame only within one epoch.
@@ -204,6 +207,7 @@ class Renderer {
   std::optional<std::uint64_t> lastFrame_;
   bool numberingRestarts_ = false;  // releaseRetired: the next frame number may be below lastFrame_
   std::uint64_t recordEpoch_ = 0;
+  std::optional<std::uint64_t> shadowsFrame_;  // the frame of the latest recordShadows
   std::shared_ptr<ComputeRaster> rasterTarget_;  // retired through retire() when replaced
   std::vector<std::shared_ptr<vk::DeferredWork>> deferred_;  // changes' uploads not yet executed
   std::vector<std::shared_ptr<void>> retiredWithDeferred_;   // retired while such work waited

@@ -81,7 +81,7 @@ void OpacityPass::uploadHead(const HeadMesh& head) {
     if (i >= head.positions.size()) throw Error("head mesh: index " + std::to_string(i) + " is out of range");
   std::vector<glm::vec4> positions;
   for (const glm::vec3& p : head.positions) positions.emplace_back(p, 1.0f);
-  if (!head.positions.empty()) {
+  if (headIndexCount_ > 0 && !head.positions.empty()) {  // a head drawn: its sphere frames the heads' depth map
     glm::vec3 lo = head.positions.front(), hi = lo;
     for (const glm::vec3& p : head.positions) lo = glm::min(lo, p), hi = glm::max(hi, p);
     sphere_.centre = 0.5f * (lo + hi);

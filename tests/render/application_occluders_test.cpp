@@ -5,7 +5,8 @@
 //   - the setting alone, with nothing drawn, leaves the frame as it was without it;
 //   - a quad across the guides' sphere, between the light and the hair, takes most of the light's share of
 //     the hair's brightness away (the frame without that light gives the share);
-//   - the same quad on the far side of the hair leaves the frame as it was.
+//   - the same quad on the far side of the hair leaves the frame as it was;
+//   - a small square above one root darkens the hair around it in the image, not around the root across.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -34,14 +35,40 @@ struct OccluderPush {  // selftest_occluder.vert
   glm::vec4 corners[4];
 };
 
-// A square of half-size `half` across `centre`, facing the light.
-OccluderPush square(const glm::vec3& centre, const glm::vec3& towardLight, float half) {
-  const glm::vec3 u = glm::normalize(glm::cross(towardLight, std::abs(towardLight.y) < 0.9f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0)));
-  const glm::vec3 v = glm::cross(towardLight, u);
+// Two axes across the light.
+glm::vec3 acrossU(const glm::vec3& towardLight) {
+  return glm::normalize(glm::cross(towardLight, std::abs(towardLight.y) < 0.9f ? glm::vec3(0, 1, 0) : glm::vec3(1, 0, 0)));
+}
+glm::vec3 acrossV(const glm::vec3& towardLight) { return glm::cross(towardLight, acrossU(towardLight)); }
+
+// A rectangle across `centre`, facing the light: [u0, u1] x [v0, v1] along the two axes.
+OccluderPush rectangle(const glm::vec3& centre, const glm::vec3& towardLight, glm::vec2 u, glm::vec2 v) {
   OccluderPush p{};
   for (int k = 0; k < 4; ++k)
-    p.corners[k] = glm::vec4(centre + half * (float(k & 1) * 2.0f - 1.0f) * u + half * (float(k >> 1) * 2.0f - 1.0f) * v, 1.0f);
+    p.corners[k] = glm::vec4(centre + ((k & 1) ? u.y : u.x) * acrossU(towardLight) +
+                                 ((k >> 1) ? v.y : v.x) * acrossV(towardLight), 1.0f);
   return p;
+}
+OccluderPush square(const glm::vec3& centre, const glm::vec3& towardLight, float half) {
+  return rectangle(centre, towardLight, {-half, half}, {-half, half});
+}
+
+// Where a world point lands in the image, in pixels (x right, y down).
+glm::vec2 pixelOf(const hp::View& view, const glm::vec3& p) {
+  const glm::vec4 clip = view.camera.proj * view.camera.view * glm::vec4(p, 1.0f);
+  return {(0.5f + 0.5f * clip.x / clip.w) * float(view.extent.width), (0.5f - 0.5f * clip.y / clip.w) * float(view.extent.height)};
+}
+
+// How much darker `shaded` is than `plain` within 8 pixels of `at`.
+double windowDarkening(const std::vector<std::uint8_t>& plain, const std::vector<std::uint8_t>& shaded, glm::vec2 at) {
+  double sum = 0.0;
+  for (std::uint32_t y = 0; y < kHeight; ++y)
+    for (std::uint32_t x = 0; x < kWidth; ++x)
+      if (glm::length(glm::vec2(float(x) + 0.5f, float(y) + 0.5f) - at) <= 8.0f) {
+        const std::size_t px = std::size_t(y) * kWidth + x;
+        sum += hp::test::rgbaLinearSum(plain, px) - hp::test::rgbaLinearSum(shaded, px);
+      }
+  return sum;
 }
 
 // The image barrier the contract asks of the application around its draw into a slot's layer.
@@ -175,6 +202,23 @@ TEST_F(VulkanTest, TheApplicationsOccludersShadowHairOnlyInstances) {
       EXPECT_NEAR(hairLuminance(framed, plain), lit, 0.01 * lit);
       EXPECT_NEAR(hairLuminance(behind, plain), lit, 0.01 * lit);
     }
+    // A small square just above one root facing the light, toward the light: the hair around that root, as
+    // the image shows it, darkens, and not the hair around the root across from it (the map's orientation: a
+    // mirrored or flipped matrix or viewport would put the square's shadow elsewhere).
+    const glm::vec3 u = acrossU(L);
+    const std::vector<glm::vec3> roots = asset.guides.roots();
+    glm::vec3 near = centre, far = centre;
+    for (const glm::vec3& root : roots) {
+      if (glm::dot(glm::normalize(root - centre), L) < 0.5f) continue;  // facing the light
+      if (near == centre || glm::dot(root - centre, u) > glm::dot(near - centre, u)) near = root;
+      if (far == centre || glm::dot(root - centre, u) < glm::dot(far - centre, u)) far = root;
+    }
+    const float side = 0.03f;
+    const std::vector<std::uint8_t> spot = render(true, rectangle(near + 0.04f * L, L, {-side, side}, {-side, side}));
+    const double atNear = windowDarkening(plain, spot, pixelOf(view, near)), atFar = windowDarkening(plain, spot, pixelOf(view, far));
+    std::printf("  a %.0f cm square above one root: darkening %.3f around it, %.3f around the root across\n",
+                200.0 * side, atNear, atFar);
+    EXPECT_GT(atNear, 3.0 * std::max(atFar, 0.0));
     // The quad takes most of the sun's light off the hair (the hair nearer the light than the quad keeps
     // it; measured 82% graphics, 94% compute), and no more than the sun gives.
     EXPECT_GT(lit - sunOff, 0.0);
@@ -190,5 +234,5 @@ TEST_F(VulkanTest, TheApplicationsOccludersShadowHairOnlyInstances) {
   EXPECT_NE(off.find("applicationOccluders is off"), std::string::npos) << off;
   settings.applicationOccluders = true;
   const std::string early = hairpipe::Access::makeRenderer(std::make_shared<hp::Renderer>(*ctx, settings)).occluderTargets().message();
-  EXPECT_NE(early.find("after recordShadows"), std::string::npos) << early;
+  EXPECT_NE(early.find("after its recordShadows"), std::string::npos) << early;
 }

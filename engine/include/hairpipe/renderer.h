@@ -262,19 +262,21 @@ class Renderer {
 
   // RendererSettings::applicationOccluders: the heads' depth shadow map, into which the application draws its
   // own occluders (its character's head and body, a hat) after recordShadows, so that they shadow the hair and
-  // hairpipe's heads. Per shadow slot the latest recordShadows framed (`framed`): a 2D view of the slot's
-  // layer and the world-to-clip matrix of that frame (orthographic along a directional light, perspective
-  // from a spot or point light; depth [0, 1], y up: draw with the negative-height viewport hairpipe's own
-  // draws use). The map holds BACK faces (cull front faces; a receiver moves a few texels toward the light
-  // before its comparison, so a lit surface never shadows itself), depth test LESS_OR_EQUAL with writes, no
-  // colour attachment; it covers a sphere around the heads, or around each hair-only instance's guides,
-  // and what lies outside it casts nothing. Synchronisation, per framed slot, between recordShadows and the
-  // frame's recordDraw / recordRaster: the layer is in SHADER_READ_ONLY_OPTIMAL; the application's barrier
-  // FRAGMENT_SHADER | COMPUTE_SHADER (SHADER_SAMPLED_READ) -> EARLY|LATE_FRAGMENT_TESTS, to
-  // DEPTH_ATTACHMENT_OPTIMAL (or DEPTH_STENCIL_ATTACHMENT_OPTIMAL); a rendering of the view with LOAD_OP_LOAD
-  // and STORE_OP_STORE (hairpipe's heads are already in it); then LATE_FRAGMENT_TESTS
-  // (DEPTH_STENCIL_ATTACHMENT_WRITE) -> FRAGMENT_SHADER (SHADER_SAMPLED_READ), back to
-  // SHADER_READ_ONLY_OPTIMAL. Fails without applicationOccluders, or before the first recordShadows.
+  // hairpipe's heads. Per shadow slot the frame's recordShadows framed (`framed`): a 2D view of the slot's
+  // layer and this frame's world-to-clip matrix (orthographic along a directional light, perspective from a
+  // spot or point light; depth [0, 1], y up: draw with the negative-height viewport hairpipe's draws use,
+  // front faces counter-clockwise). The map holds BACK faces (cull front faces; a receiver moves a few texels
+  // toward the light before its comparison, so a lit surface never shadows itself), depth test
+  // LESS_OR_EQUAL with writes, no colour attachment. It covers a sphere around hairpipe's heads, or around
+  // each hair-only instance's guides at rest (placed by its head transform): an occluder outside it casts
+  // nothing (one nearer the light is clipped, unless the application's pipeline clamps depth), and hair that
+  // leaves it is not shadowed. Synchronisation, per framed slot, between recordShadows and the frame's
+  // recordDraw / recordRaster: the layer is in SHADER_READ_ONLY_OPTIMAL; the application's barrier
+  // FRAGMENT_SHADER | COMPUTE_SHADER (SHADER_SAMPLED_READ) -> EARLY|LATE_FRAGMENT_TESTS
+  // (DEPTH_STENCIL_ATTACHMENT_READ | WRITE), to DEPTH_ATTACHMENT_OPTIMAL (or DEPTH_STENCIL_ATTACHMENT_OPTIMAL);
+  // a rendering of the view with LOAD_OP_LOAD and STORE_OP_STORE (hairpipe's heads are already in it); then
+  // LATE_FRAGMENT_TESTS (DEPTH_STENCIL_ATTACHMENT_WRITE) -> FRAGMENT_SHADER (SHADER_SAMPLED_READ), back to
+  // SHADER_READ_ONLY_OPTIMAL. Fails without applicationOccluders, or before the current frame's recordShadows.
   struct OccluderTargets {
     VkImage image = VK_NULL_HANDLE;  // 2D array, a layer per slot
     VkFormat format = VK_FORMAT_UNDEFINED;  // VK_FORMAT_D32_SFLOAT

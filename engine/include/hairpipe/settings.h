@@ -79,8 +79,10 @@ struct RendererSettings {
   // (Renderer::motionImage). The graphics raster writes none.
   bool motionVectors = false;
   // The application's occluders shadow the hair (Renderer::occluderTargets): it draws its own character's depth
-  // into the heads' depth shadow map after recordShadows. Instances without hairpipe's head (drawHead false)
-  // then frame that map around their guides, so it exists for them too (one depth pass per shadowed light).
+  // into the heads' depth shadow map after recordShadows. Instances without hairpipe's head (drawHead false,
+  // or an asset without a head mesh) then frame that map around their guides, so it exists for them too: a
+  // depth pass per shadowed light, and the skin-bounce passes of a look with skinBounce, which gather nothing
+  // from a head that is not drawn.
   bool applicationOccluders = false;
   RasterMode raster = RasterMode::Graphics;
   std::uint32_t tileBudget = 16384;    // compute raster: list entries kept per 8x8 tile, [1, 2^24]
