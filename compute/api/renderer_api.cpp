@@ -231,7 +231,7 @@ Result<Renderer::OccluderTargets> Renderer::occluderTargets() const noexcept {
     for (std::uint32_t slot = 0; slot < maps.slots(); ++slot) {
       const hp::render::HeadShadowView& view = lights->headViews[slot];
       targets.layers[slot] = maps.headImage().layerView(slot);
-      targets.framed[slot] = slot < lights->shadowed() && view.params.x != 0.0f && maps.settings().enabled;
+      targets.framed[slot] = view.params.x != 0.0f;  // off for a slot no light took, or with shadows off
       targets.viewProjection[slot] = convert::mat(view.viewProj);
     }
     return targets;

@@ -12,16 +12,6 @@
 
 namespace hp {
 namespace {
-// The bounding sphere of every guide particle at rest (head space): where the hair and the head it grows on lie.
-render::HeadSphere guidesSphere(const GuideSet& guides) {
-  if (guides.positions.empty()) return {};
-  glm::vec3 lo = guides.positions.front(), hi = lo;
-  for (const glm::vec3& p : guides.positions) lo = glm::min(lo, p), hi = glm::max(hi, p);
-  render::HeadSphere sphere{0.5f * (lo + hi), 0.0f};
-  for (const glm::vec3& p : guides.positions) sphere.radius = std::max(sphere.radius, glm::length(p - sphere.centre));
-  return sphere;
-}
-
 const InstanceSettings& validated(const InstanceSettings& s) {
   s.validate();
   return s;
@@ -90,7 +80,8 @@ HairInstance::HairInstance(Renderer& renderer, const HairAsset& asset, const Ins
   // Hair only (drawHead false, or an asset without a head mesh), with the application's occluders: the heads'
   // depth map is framed around the guides (the application draws its character there), so it exists without
   // hairpipe's head.
-  if (headMesh_.indices.empty() && rs.applicationOccluders) occluderSphere_ = guidesSphere(asset.guides);
+  if (headMesh_.indices.empty() && rs.applicationOccluders)
+    occluderSphere_ = render::boundingSphere(asset.guides.positions);
   geometry_->opacity.encloseHead(occluderSphere_);
 }
 

@@ -329,15 +329,16 @@ void Renderer::recordDraw(VkCommandBuffer cmd, std::uint64_t frame, const View& 
   // Every instance's block first: a view index another view of this frame took is refused before anything is
   // written or recorded.
   std::vector<gpu::RenderFrame> blocks;
+  std::vector<float> fractions;
   for (HairInstance* i : instances) {
-    const float fraction = i->lodFraction(view.camera.position);
-    blocks.push_back(i->frameBlock(view.camera, view.extent, lights, lodLook(i->settings_.look, fraction)));
+    fractions.push_back(i->lodFraction(view.camera.position));
+    blocks.push_back(i->frameBlock(view.camera, view.extent, lights, lodLook(i->settings_.look, fractions.back())));
     render::setViewMotion(blocks.back(), view.extent, view.jitter, view.previousViewProj);
     i->checkFrameBlock(frame, view.index, blocks.back());
   }
   for (std::size_t n = 0; n < instances.size(); ++n) {
     HairInstance* i = instances[n];
-    const float fraction = i->lodFraction(view.camera.position);
+    const float fraction = fractions[n];
     i->noteViewFraction(frame, fraction);
     i->writeFrameBlock(frame, view.index, blocks[n]);
     const std::uint32_t offset = i->frameOffset(frame, view.index);

@@ -28,6 +28,15 @@ HeadSphere enclose(const HeadSphere& a, const HeadSphere& b) {
   return {a.centre + (b.centre - a.centre) * ((r - a.radius) / d), r};
 }
 
+HeadSphere boundingSphere(std::span<const glm::vec3> points) {
+  if (points.empty()) return {};
+  glm::vec3 lo = points.front(), hi = lo;
+  for (const glm::vec3& p : points) lo = glm::min(lo, p), hi = glm::max(hi, p);
+  HeadSphere sphere{0.5f * (lo + hi), 0.0f};
+  for (const glm::vec3& p : points) sphere.radius = std::max(sphere.radius, glm::length(p - sphere.centre));
+  return sphere;
+}
+
 HeadShadowView headShadowView(const LightSpec& light, const HeadSphere& heads, std::uint32_t resolution) {
   HeadShadowView v;
   if (!(heads.radius > 0.0f)) return v;

@@ -9,6 +9,7 @@
 #include <glm/glm.hpp>
 
 #include <cstdint>
+#include <span>
 
 #include "engine/core/hair/scene.h"
 
@@ -18,6 +19,8 @@ struct HeadSphere {
   float radius = 0.0f;  // <= 0: no head
 };
 HeadSphere enclose(const HeadSphere& a, const HeadSphere& b);
+// A sphere around `points`: centred on their box, out to the farthest (none for no points).
+HeadSphere boundingSphere(std::span<const glm::vec3> points);
 
 struct HeadShadowView {
   glm::mat4 viewProj{1.0f};  // world -> map clip (Vulkan depth [0, 1])

@@ -81,12 +81,7 @@ void OpacityPass::uploadHead(const HeadMesh& head) {
     if (i >= head.positions.size()) throw Error("head mesh: index " + std::to_string(i) + " is out of range");
   std::vector<glm::vec4> positions;
   for (const glm::vec3& p : head.positions) positions.emplace_back(p, 1.0f);
-  if (headIndexCount_ > 0 && !head.positions.empty()) {  // a head drawn: its sphere frames the heads' depth map
-    glm::vec3 lo = head.positions.front(), hi = lo;
-    for (const glm::vec3& p : head.positions) lo = glm::min(lo, p), hi = glm::max(hi, p);
-    sphere_.centre = 0.5f * (lo + hi);
-    for (const glm::vec3& p : head.positions) sphere_.radius = std::max(sphere_.radius, glm::length(p - sphere_.centre));
-  }
+  if (headIndexCount_ > 0) sphere_ = boundingSphere(head.positions);  // a head drawn: it frames the heads' depth map
   // Placeholders keep the descriptors valid for a head-less asset (nothing is drawn then).
   if (positions.empty()) positions.emplace_back(0.0f);
   std::vector<std::uint32_t> indices = head.indices;

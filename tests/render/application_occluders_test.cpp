@@ -18,6 +18,7 @@
 #include "compute/api/access.h"
 #include "compute/api/convert.h"
 #include "compute/renderer/renderer.h"
+#include "compute/shadows/head_shadow_view.h"
 #include "engine/core/hair/default_head.h"
 #include "engine/vk/pipeline.h"
 #include "engine/vk/submit.h"
@@ -105,11 +106,9 @@ TEST_F(VulkanTest, TheApplicationsOccludersShadowHairOnlyInstances) {
   hp::DensityOptions density;
   density.totalStrands = 3000;
   const hp::HairAsset asset = hp::buildDefaultHeadAsset(hp::defaultHeadGrowth(), density);
-  glm::vec3 lo = asset.guides.positions.front(), hi = lo;
-  for (const glm::vec3& p : asset.guides.positions) lo = glm::min(lo, p), hi = glm::max(hi, p);
-  const glm::vec3 centre = 0.5f * (lo + hi);
-  float radius = 0.0f;
-  for (const glm::vec3& p : asset.guides.positions) radius = std::max(radius, glm::length(p - centre));
+  const hp::render::HeadSphere sphere = hp::render::boundingSphere(asset.guides.positions);  // the map's framing
+  const glm::vec3 centre = sphere.centre;
+  const float radius = sphere.radius;
   hp::LightSpec light;  // the default sun
   const glm::vec3 L = glm::normalize(light.direction);
 
