@@ -6,6 +6,7 @@
 #include "engine/core/hair/head_mesh.h"
 #include "engine/core/hair/head_sdf.h"
 #include "engine/core/hair/level_set_mesh.h"
+#include "engine/core/hair/mesh_simplify.h"
 #include "engine/core/hair/parallel_for.h"
 
 namespace hp {
@@ -66,6 +67,7 @@ const Geometry& geometry() {
     out.scalp = makeDefaultScalp();
     out.mesh = makeDefaultHeadMesh(field);
     markScalp(out.mesh, out.scalp.positions);
+    out.mesh = simplifyDefaultHeadMesh(out.mesh);
     out.grid = std::make_shared<SdfGrid>(std::move(field.grid));
     return out;
   }();
@@ -125,6 +127,10 @@ NarrowBandGrid makeDefaultHeadField() {
 
 HeadMesh makeDefaultHeadMesh(const NarrowBandGrid& field) {
   return meshZeroLevel(field.grid, field.band, kDefaultHeadMeshStride);
+}
+
+HeadMesh simplifyDefaultHeadMesh(const HeadMesh& marked) {
+  return simplifyMesh(marked, {kDefaultHeadMeshError, kDefaultHeadMeshNormalDegrees});
 }
 
 HairAsset buildDefaultHeadAsset(const GrowthOptions& growth, const DensityOptions& density) {

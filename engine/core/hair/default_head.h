@@ -24,8 +24,13 @@ inline constexpr float kDefaultHeadBand = 3.0f * kDefaultHeadCell;
 inline constexpr std::uint32_t kDefaultHeadBrick = 4;  // cells per brick side of the narrow band
 // The render mesh is cut on every kDefaultHeadMeshStride-th grid node. 2 (8 mm cells, 16.7k triangles)
 // looked worse in a close-up of the face (the lips cut flat, shallower eye sockets, a lumpier jaw), so
-// it stays 1: 66.5k triangles (docs/PERFORMANCE.md). The collider keeps the 4 mm grid either way.
+// it stays 1 (66.5k triangles) and is then simplified where that shows nothing (mesh_simplify.h): within
+// kDefaultHeadMeshError of its surface, its triangles' vertex normals within kDefaultHeadMeshNormalDegrees
+// (wider, and a close-up shows lines where the shading bends across a long triangle), the hairline whole:
+// ~20k triangles (docs/PERFORMANCE.md "Default head and distance grids"). The collider keeps the 4 mm grid.
 inline constexpr std::uint32_t kDefaultHeadMeshStride = 1;
+inline constexpr float kDefaultHeadMeshError = 0.0005f;       // m
+inline constexpr float kDefaultHeadMeshNormalDegrees = 15.0f;
 
 // The growth options the default head uses unless a scene overrides them.
 GrowthOptions defaultHeadGrowth();
@@ -36,6 +41,8 @@ ScalpMesh makeDefaultScalp(std::uint32_t sphereSamples = 5000);
 // marching-cubes mesh of it on every kDefaultHeadMeshStride-th node (scalp not marked).
 NarrowBandGrid makeDefaultHeadField();
 HeadMesh makeDefaultHeadMesh(const NarrowBandGrid& field);
+// The render mesh the default head draws: the marching-cubes mesh, its scalp marked, simplified.
+HeadMesh simplifyDefaultHeadMesh(const HeadMesh& marked);
 
 HairAsset buildDefaultHeadAsset(const GrowthOptions& growth = defaultHeadGrowth(),
                                 const DensityOptions& density = {});
