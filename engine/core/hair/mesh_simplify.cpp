@@ -8,26 +8,33 @@
 #include <unordered_map>
 
 #include "engine/core/error.h"
+#include "engine/core/number_text.h"
 
 namespace hp {
 namespace {
 void validate(const HeadMesh& mesh, const SimplifyOptions& options) {
   if (!(options.maxError >= 0.0f) || !std::isfinite(options.maxError))
-    throw Error("simplify mesh: maxError must be finite and >= 0, got " + std::to_string(options.maxError));
+    throw Error("simplify mesh: maxError must be finite and >= 0, got " + numberText(options.maxError));
   if (!(options.maxNormalDegrees >= 0.0f && options.maxNormalDegrees <= 180.0f))
-    throw Error("simplify mesh: maxNormalDegrees must be in [0, 180], got " + std::to_string(options.maxNormalDegrees));
+    throw Error("simplify mesh: maxNormalDegrees must be in [0, 180], got " + numberText(options.maxNormalDegrees));
   if (mesh.indices.size() % 3 != 0)
-    throw Error("simplify mesh: " + std::to_string(mesh.indices.size()) + " indices are not whole triangles");
-  if (mesh.normals.size() != mesh.positions.size() || (!mesh.scalp.empty() && mesh.scalp.size() != mesh.positions.size()))
-    throw Error("simplify mesh: normals and scalp weights must match the " + std::to_string(mesh.positions.size()) +
-                " positions");
+    throw Error("simplify mesh: " + numberText(double(mesh.indices.size())) + " indices are not whole triangles");
+  const std::string vertices = numberText(double(mesh.positions.size())) + " positions";
+  if (mesh.normals.size() != mesh.positions.size())
+    throw Error("simplify mesh: " + numberText(double(mesh.normals.size())) + " normals for " + vertices);
+  if (!mesh.scalp.empty() && mesh.scalp.size() != mesh.positions.size())
+    throw Error("simplify mesh: " + numberText(double(mesh.scalp.size())) + " scalp weights for " + vertices);
   for (const std::uint32_t i : mesh.indices)
     if (i >= mesh.positions.size())
-      throw Error("simplify mesh: index " + std::to_string(i) + " past the " + std::to_string(mesh.positions.size()) +
-                  " vertices");
-  for (std::size_t i = 0; i < mesh.positions.size(); ++i)
-    if (!std::isfinite(mesh.positions[i].x + mesh.positions[i].y + mesh.positions[i].z))
-      throw Error("simplify mesh: vertex " + std::to_string(i) + " is not finite");
+      throw Error("simplify mesh: index " + numberText(i) + " past the " + vertices);
+  const auto finite = [](const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); };
+  for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
+    if (!finite(mesh.positions[i])) throw Error("simplify mesh: vertex " + numberText(double(i)) + " is not finite");
+    const float length = glm::length(mesh.normals[i]);
+    if (!finite(mesh.normals[i]) || !(std::abs(length - 1.0f) < 1e-3f))
+      throw Error("simplify mesh: normal " + numberText(double(i)) + " is not a unit vector (length " +
+                  numberText(length) + ")");
+  }
 }
 
 // The sum over planes n.p + d = 0 of the squared distance (n.p + d)^2, as a symmetric 4x4 matrix.
@@ -51,7 +58,7 @@ struct Quadric {
 // Moving vertex `from` onto `to`, as it cost when pushed; `versions`: the sum of the two vertices' versions
 // then (each only grows, so the sum moves when either does).
 struct Candidate {
-  float cost;
+  double cost;
   std::uint32_t from, to, versions;
   bool operator>(const Candidate& o) const {  // cheapest first; ties by the vertices, so the order is fixed
     return cost != o.cost ? cost > o.cost : from != o.from ? from > o.from : to > o.to;
@@ -110,19 +117,44 @@ class Collapser {
     if (!mesh_.scalp.empty() && (mesh_.scalp[t.x] != mesh_.scalp[t.y] || mesh_.scalp[t.x] != mesh_.scalp[t.z]))
       return false;
     const glm::dvec3 a(mesh_.normals[t.x]), b(mesh_.normals[t.y]), c(mesh_.normals[t.z]);
-    return std::min({glm::dot(a, b), glm::dot(a, c), glm::dot(b, c)}) >= minCos_;
+    return glm::dot(a, b) >= minCos_ && glm::dot(a, c) >= minCos_ && glm::dot(b, c) >= minCos_;
   }
 
-  // Vertices of uneven triangles and of edges without exactly two triangles never move.
+  // Vertices of uneven triangles, of edges not wound once each way by two triangles (open, non-manifold or
+  // inconsistently wound) and pinched ones (whose triangles do not close one ring around them) never move.
   void lockUnevenAndBorders() {
-    std::unordered_map<std::uint64_t, std::uint32_t> edges;
-    const auto key = [](std::uint32_t a, std::uint32_t b) { return (std::uint64_t(std::min(a, b)) << 32) | std::max(a, b); };
+    std::unordered_map<std::uint64_t, std::uint32_t> directed;
+    const auto key = [](std::uint32_t a, std::uint32_t b) { return (std::uint64_t(a) << 32) | b; };
     for (const glm::uvec3& t : triangles_) {
       if (!even(t)) locked_[t.x] = locked_[t.y] = locked_[t.z] = 1;
-      for (int k = 0; k < 3; ++k) ++edges[key(t[k], t[(k + 1) % 3])];
+      for (int k = 0; k < 3; ++k) ++directed[key(t[k], t[(k + 1) % 3])];
     }
-    for (const auto& [edge, count] : edges)
-      if (count != 2) locked_[edge >> 32] = locked_[edge & 0xFFFFFFFFu] = 1;
+    for (const auto& [edge, count] : directed) {
+      const std::uint32_t a = std::uint32_t(edge >> 32), b = std::uint32_t(edge);
+      const auto back = directed.find(key(b, a));
+      if (count != 1 || back == directed.end() || back->second != 1) locked_[a] = locked_[b] = 1;
+    }
+    for (std::uint32_t v = 0; v < fans_.size(); ++v)
+      if (!oneRing(v)) locked_[v] = 1;
+  }
+
+  // Whether v's triangles, each seen as the edge opposite v in its winding, chain into one closed loop.
+  bool oneRing(std::uint32_t v) const {
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> link;  // (next, after) around v
+    for (const std::uint32_t t : fans_[v]) {
+      const glm::uvec3& tri = triangles_[t];
+      const int k = tri.x == v ? 0 : tri.y == v ? 1 : 2;
+      link.emplace_back(tri[(k + 1) % 3], tri[(k + 2) % 3]);
+    }
+    if (link.empty()) return true;  // unused: nothing to move
+    std::uint32_t at = link.front().first;
+    for (std::size_t steps = 0; steps < link.size(); ++steps) {
+      const auto next = std::find_if(link.begin(), link.end(), [&](const auto& e) { return e.first == at; });
+      if (next == link.end()) return false;
+      at = next->second;
+      if (at == link.front().first) return steps + 1 == link.size();
+    }
+    return false;
   }
 
   bool contains(const glm::uvec3& t, std::uint32_t v) const { return t.x == v || t.y == v || t.z == v; }
@@ -130,7 +162,7 @@ class Collapser {
   void push(std::uint32_t from, std::uint32_t to) {
     if (locked_[from]) return;
     const double cost = (quadrics_[from] + quadrics_[to]).at(glm::dvec3(mesh_.positions[to]));
-    if (cost <= maxCost_) queue_.push({float(cost), from, to, versions_[from] + versions_[to]});
+    if (cost <= maxCost_) queue_.push({cost, from, to, versions_[from] + versions_[to]});
   }
 
   glm::dvec3 normalOf(const glm::uvec3& t) const {
@@ -139,8 +171,9 @@ class Collapser {
   }
 
   // The edge from-to is interior (two living triangles), the rings of its ends meet only at those triangles'
-  // third vertices (the mesh stays manifold), and every triangle that moves stays even, keeps its facing and
-  // keeps some area.
+  // third vertices and no moved triangle repeats a living one (the mesh stays manifold: a tetrahedron does not
+  // fold into a two-sided sheet), and every triangle that moves stays even, keeps some area and faces as its
+  // vertex normals do (within 45 degrees of each, or no further off than it was).
   bool collapsible(std::uint32_t from, std::uint32_t to) const {
     std::uint32_t shared = 0;
     for (const std::uint32_t t : fans_[from]) {
@@ -152,12 +185,40 @@ class Collapser {
       glm::uvec3 moved = triangles_[t];
       for (int k = 0; k < 3; ++k)
         if (moved[k] == from) moved[k] = to;
-      const glm::dvec3 before = normalOf(triangles_[t]), after = normalOf(moved);
-      const double lengths = glm::length(before) * glm::length(after);
-      if (!even(moved) || !(glm::length(after) > 1e-3 * glm::length(before)) || glm::dot(before, after) < 0.5 * lengths)
-        return false;
+      if (!even(moved) || !facesAsBefore(triangles_[t], moved)) return false;
     }
-    return shared == 2 && commonNeighbours(from, to) == 2;
+    return shared == 2 && commonNeighbours(from, to) == 2 && !repeatsALivingTriangle(from, to);
+  }
+
+  bool facesAsBefore(const glm::uvec3& before, const glm::uvec3& after) const {
+    const glm::dvec3 was = normalOf(before), is = normalOf(after);
+    if (!(glm::length(is) > 1e-3 * glm::length(was)) || glm::dot(was, is) < 0.5 * glm::length(was) * glm::length(is))
+      return false;
+    const double limit = std::cos(glm::radians(45.0));
+    const glm::dvec3 unitIs = glm::normalize(is);
+    for (int k = 0; k < 3; ++k) {
+      const double wasFacing = glm::length(was) > 0.0 ? glm::dot(glm::normalize(was), glm::dvec3(mesh_.normals[before[k]])) : limit;
+      if (glm::dot(unitIs, glm::dvec3(mesh_.normals[after[k]])) < std::min(limit, wasFacing)) return false;
+    }
+    return true;
+  }
+
+  // Whether moving `from` onto `to` makes a triangle with the same three vertices as one already at `to`.
+  bool repeatsALivingTriangle(std::uint32_t from, std::uint32_t to) const {
+    const auto sorted = [](glm::uvec3 t) {
+      std::sort(&t.x, &t.x + 3);
+      return t;
+    };
+    for (const std::uint32_t t : fans_[from]) {
+      if (!alive_[t] || contains(triangles_[t], to)) continue;
+      glm::uvec3 moved = triangles_[t];
+      for (int k = 0; k < 3; ++k)
+        if (moved[k] == from) moved[k] = to;
+      moved = sorted(moved);
+      for (const std::uint32_t u : fans_[to])
+        if (alive_[u] && !contains(triangles_[u], from) && sorted(triangles_[u]) == moved) return true;
+    }
+    return false;
   }
 
   // How many vertices are neighbours of both a and b (each counted once).
@@ -194,7 +255,8 @@ class Collapser {
     fans_[from].clear();
     std::erase_if(fans_[to], [&](std::uint32_t t) { return !alive_[t]; });
     quadrics_[to] = quadrics_[to] + quadrics_[from];
-    ++versions_[to];  // every edge at `to` now costs more; the others are unchanged
+    ++versions_[from];  // its entries are dead
+    ++versions_[to];    // every edge at `to` now costs more; the others are unchanged
     ++stamp_;
     for (const std::uint32_t t : fans_[to])
       for (int k = 0; k < 3; ++k) {
@@ -215,8 +277,8 @@ class Collapser {
   std::vector<char> locked_;
   std::vector<Quadric> quadrics_;
   std::vector<std::uint32_t> versions_;
-  mutable std::vector<std::uint32_t> marks_;  // commonNeighbours' and collapse's scratch: a vertex seen this stamp
-  mutable std::uint32_t stamp_ = 0;
+  mutable std::vector<std::uint64_t> marks_;  // commonNeighbours' and collapse's scratch: a vertex seen this stamp
+  mutable std::uint64_t stamp_ = 0;
   std::priority_queue<Candidate, std::vector<Candidate>, std::greater<Candidate>> queue_;
 };
 
@@ -240,7 +302,7 @@ HeadMesh compact(const HeadMesh& mesh, std::vector<std::uint32_t> indices) {
 
 HeadMesh simplifyMesh(const HeadMesh& mesh, const SimplifyOptions& options) {
   validate(mesh, options);
-  if (mesh.indices.empty()) return mesh;
+  if (mesh.indices.empty()) return {};  // no triangle uses a vertex
   return compact(mesh, Collapser(mesh, options).run());
 }
 }  // namespace hp
