@@ -1,11 +1,10 @@
 #include "backdrop.h"
 
 #include <cstdint>
-#include <cstring>
-#include <stdexcept>
-#include <string>
 
 #include <glm/glm.hpp>
+
+#include "pipeline.h"
 
 namespace {
 // SPIR-V from glslc -mfmt=c (CMakeLists.txt).
@@ -21,25 +20,6 @@ struct Push {  // backdrop.vert / .frag
   glm::vec4 lightDirection, lightColor, hairParams, hairForward;
 };
 static_assert(sizeof(Push) == 128);
-
-void check(VkResult result, const char* what) {
-  if (result != VK_SUCCESS) throw std::runtime_error(std::string(what) + " failed: VkResult " + std::to_string(result));
-}
-
-glm::mat4 toGlm(const hairpipe::Mat4& m) {
-  glm::mat4 out;
-  std::memcpy(&out, m.m, sizeof(m.m));  // both column-major
-  return out;
-}
-
-VkShaderModule module(VkDevice device, const std::uint32_t* code, std::size_t bytes) {
-  VkShaderModuleCreateInfo info{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
-  info.codeSize = bytes;
-  info.pCode = code;
-  VkShaderModule m = VK_NULL_HANDLE;
-  check(vkCreateShaderModule(device, &info, nullptr, &m), "vkCreateShaderModule");
-  return m;
-}
 }  // namespace
 
 Backdrop::Backdrop(VkDevice device, const hairpipe::Renderer::HairShadows& shadows,
@@ -86,59 +66,14 @@ Backdrop::Backdrop(VkDevice device, const hairpipe::Renderer::HairShadows& shado
   pli.pPushConstantRanges = &push;
   check(vkCreatePipelineLayout(device, &pli, nullptr, &layout_), "vkCreatePipelineLayout");
 
-  VkShaderModule vert = module(device, kVertexCode, sizeof(kVertexCode));
-  VkShaderModule frag = module(device, kFragmentCode, sizeof(kFragmentCode));
-  VkPipelineShaderStageCreateInfo stages[2] = {{VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO},
-                                               {VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO}};
-  stages[0].stage = VK_SHADER_STAGE_VERTEX_BIT;
-  stages[0].module = vert;
-  stages[0].pName = "main";
-  stages[1].stage = VK_SHADER_STAGE_FRAGMENT_BIT;
-  stages[1].module = frag;
-  stages[1].pName = "main";
-  VkPipelineVertexInputStateCreateInfo vertexInput{VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
-  VkPipelineInputAssemblyStateCreateInfo assembly{VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO};
-  assembly.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_STRIP;
-  VkPipelineViewportStateCreateInfo viewport{VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO};
-  viewport.viewportCount = viewport.scissorCount = 1;
-  VkPipelineRasterizationStateCreateInfo raster{VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO};
-  raster.cullMode = VK_CULL_MODE_NONE;
-  raster.lineWidth = 1.0f;
-  VkPipelineMultisampleStateCreateInfo multisample{VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
-  multisample.rasterizationSamples = formats.samples;
-  VkPipelineDepthStencilStateCreateInfo depth{VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO};
-  depth.depthTestEnable = depth.depthWriteEnable = VK_TRUE;
-  depth.depthCompareOp = formats.reversedDepth ? VK_COMPARE_OP_GREATER_OR_EQUAL : VK_COMPARE_OP_LESS_OR_EQUAL;
-  VkPipelineColorBlendAttachmentState blend{};
-  blend.colorWriteMask = 0xf;
-  VkPipelineColorBlendStateCreateInfo colorBlend{VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
-  colorBlend.attachmentCount = 1;
-  colorBlend.pAttachments = &blend;
-  const VkDynamicState dynamic[] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
-  VkPipelineDynamicStateCreateInfo dynamicState{VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO};
-  dynamicState.dynamicStateCount = 2;
-  dynamicState.pDynamicStates = dynamic;
-  VkPipelineRenderingCreateInfo rendering{VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO};
-  rendering.colorAttachmentCount = 1;
-  rendering.pColorAttachmentFormats = &formats.color;
-  rendering.depthAttachmentFormat = formats.depth;
-  rendering.stencilAttachmentFormat = formats.stencil;
-  VkGraphicsPipelineCreateInfo gi{VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO, &rendering};
-  gi.stageCount = 2;
-  gi.pStages = stages;
-  gi.pVertexInputState = &vertexInput;
-  gi.pInputAssemblyState = &assembly;
-  gi.pViewportState = &viewport;
-  gi.pRasterizationState = &raster;
-  gi.pMultisampleState = &multisample;
-  gi.pDepthStencilState = &depth;
-  gi.pColorBlendState = &colorBlend;
-  gi.pDynamicState = &dynamicState;
-  gi.layout = layout_;
-  const VkResult made = vkCreateGraphicsPipelines(device, VK_NULL_HANDLE, 1, &gi, nullptr, &pipeline_);
-  vkDestroyShaderModule(device, vert, nullptr);
-  vkDestroyShaderModule(device, frag, nullptr);
-  check(made, "vkCreateGraphicsPipelines");
+  const ShaderModule vertex(device, kVertexCode, sizeof(kVertexCode));
+  const ShaderModule fragment(device, kFragmentCode, sizeof(kFragmentCode));
+  PipelineShape shape = inRendering(formats);
+  shape.layout = layout_;
+  shape.vertex = vertex.get();
+  shape.fragment = fragment.get();
+  shape.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_STRIP;
+  pipeline_ = makePipeline(device, shape);
 }
 
 Backdrop::~Backdrop() {

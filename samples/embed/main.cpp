@@ -10,7 +10,9 @@
 //      is drawn by the compute rasterizer between two renderings, with the barriers the contract in
 //      <hairpipe/renderer.h> lists, written here in plain Vulkan,
 //   5. draws its own wall behind the heads in the hair's shadow (backdrop.h: its shader includes
-//      <hairpipe/hair_shadows.glsl> and reads the maps Renderer::hairShadows() hands out),
+//      <hairpipe/hair_shadows.glsl> and reads the maps Renderer::hairShadows() hands out), and its own hat's
+//      brim over one head, which shadows that head's hair (hat.h: drawn into the heads' depth map that
+//      Renderer::occluderTargets() hands out, RendererSettings::applicationOccluders),
 //   6. reads its colour attachment back, writes a PNG (libpng, its own), destroys hairpipe before its device.
 // Every hairpipe call returns a Status or Result (no exceptions cross the boundary).
 // Usage: hairpipe_embed [--validation] [--frames N] [--raster graphics|compute] [--out FILE.png]
@@ -33,6 +35,8 @@
 #include <hairpipe/hairpipe.h>
 
 #include "backdrop.h"
+#include "hat.h"
+#include "pipeline.h"
 
 namespace {
 constexpr std::uint32_t kWidth = 160, kHeight = 120;
@@ -43,9 +47,6 @@ constexpr VkFormat kDepthCandidates[] = {VK_FORMAT_D32_SFLOAT_S8_UINT, VK_FORMAT
 constexpr VkImageAspectFlags kDepthAspects = VK_IMAGE_ASPECT_DEPTH_BIT | VK_IMAGE_ASPECT_STENCIL_BIT;
 constexpr std::uint32_t kFramesInFlight = 2;
 
-void check(VkResult result, const char* what) {
-  if (result != VK_SUCCESS) throw std::runtime_error(std::string(what) + " failed: VkResult " + std::to_string(result));
-}
 // hairpipe reports failures as values; this application turns them into its own exceptions.
 void check(const hairpipe::Status& status) {
   if (!status) throw std::runtime_error(status.message());
@@ -270,26 +271,6 @@ struct App {
   }
 };
 
-// One image layout transition (and its memory dependency) with synchronization2.
-void transition(VkCommandBuffer cmd, VkImage image, VkImageAspectFlags aspect, VkImageLayout from, VkImageLayout to,
-                VkPipelineStageFlags2 srcStage, VkAccessFlags2 srcAccess, VkPipelineStageFlags2 dstStage,
-                VkAccessFlags2 dstAccess) {
-  VkImageMemoryBarrier2 b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2};
-  b.srcStageMask = srcStage;
-  b.srcAccessMask = srcAccess;
-  b.dstStageMask = dstStage;
-  b.dstAccessMask = dstAccess;
-  b.oldLayout = from;
-  b.newLayout = to;
-  b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-  b.image = image;
-  b.subresourceRange = {aspect, 0, 1, 0, 1};
-  VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
-  dep.imageMemoryBarrierCount = 1;
-  dep.pImageMemoryBarriers = &b;
-  vkCmdPipelineBarrier2(cmd, &dep);
-}
-
 // Both frames in flight render into the same attachments: each frame discards them (layout UNDEFINED)
 // after the previous frame's attachment writes (and, for colour, the readback copy) are done.
 void beginAttachments(VkCommandBuffer cmd, const App& app) {
@@ -318,18 +299,26 @@ VkRenderingAttachmentInfo attachmentInfo(VkImageView view, VkImageLayout layout,
 }
 
 // [embed-readme-begin]
+// The application's own geometry: a wall that receives the hair's shadow, a hat's brim that casts one.
+struct Scenery {
+  const Backdrop& backdrop;
+  const Hat& hat;
+  glm::mat4 hatPlace;  // this frame's: the hat sits on the second head
+};
+
 // One frame of the application: hairpipe's update and shadows outside rendering, then the application's
 // own rendering (its colour, depth and stencil attachments) with hairpipe's draw inside it. With the compute
 // rasterizer, the hair is drawn between that rendering and a second one of the same attachments.
-void recordFrame(VkCommandBuffer cmd, const App& app, hairpipe::Renderer& renderer, const Backdrop& backdrop, std::uint64_t frame,
-                 std::span<hairpipe::Instance* const> heads, std::span<const hairpipe::Light> lights,
-                 const hairpipe::View& view) {
+void recordFrame(VkCommandBuffer cmd, const App& app, hairpipe::Renderer& renderer, const Scenery& scenery,
+                 std::uint64_t frame, std::span<hairpipe::Instance* const> heads,
+                 std::span<const hairpipe::Light> lights, const hairpipe::View& view) {
   const bool compute = renderer.raster() == hairpipe::RasterMode::Compute;
   VkCommandBufferBeginInfo bi{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
   bi.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
   check(vkBeginCommandBuffer(cmd, &bi), "vkBeginCommandBuffer");
   check(renderer.recordUpdate(cmd, frame, heads));          // simulate, tessellate, interpolate
   check(renderer.recordShadows(cmd, frame, lights, heads));  // per shadowed light, one map set over all heads
+  scenery.hat.recordShadow(cmd, take(renderer.occluderTargets()), scenery.hatPlace);  // your casters, after it
   beginAttachments(cmd, app);
   VkRenderingAttachmentInfo color = attachmentInfo(app.color.view, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
                                                    VK_ATTACHMENT_STORE_OP_STORE, {{{0.2f, 0.25f, 0.3f, 1.0f}}});
@@ -346,8 +335,9 @@ void recordFrame(VkCommandBuffer cmd, const App& app, hairpipe::Renderer& render
   ri.pStencilAttachment = &depth;  // one combined image: RendererSettings::formats.stencil says so
   vkCmdBeginRendering(cmd, &ri);
   // Your opaque geometry first (the graphics raster blends the hair over what is drawn before it): a wall in
-  // the hair's shadow, read from the maps recordShadows just wrote.
-  backdrop.record(cmd, view, lights[0], take(renderer.hairShadows()), take(heads[0]->hairShadowForward()));
+  // the hair's shadow, read from the maps recordShadows just wrote, and the hat.
+  scenery.backdrop.record(cmd, view, lights[0], take(renderer.hairShadows()), take(heads[0]->hairShadowForward()));
+  scenery.hat.record(cmd, view, scenery.hatPlace);
   check(renderer.recordDraw(cmd, frame, view, heads));      // heads (+ hair ribbons in graphics mode)
   vkCmdEndRendering(cmd);
   if (compute) {
@@ -405,6 +395,7 @@ void renderFrames(App& app, std::uint32_t frames, hairpipe::RasterMode raster) {
   rs.framesInFlight = kFramesInFlight;
   rs.raster = raster;
   rs.shadowedLights = 2;  // the key and the rim cast hair shadows
+  rs.applicationOccluders = true;  // the hat's brim shadows the hair too
   hairpipe::Renderer renderer = take(hairpipe::Renderer::create(ctx, rs));
 
   // One asset (guides, head mesh, interpolation topology), two heads with their own state and material.
@@ -419,6 +410,7 @@ void renderFrames(App& app, std::uint32_t frames, hairpipe::RasterMode raster) {
   hairpipe::Instance other = take(renderer.createInstance(asset, rigid, toHairpipe(rigidPlace)));
   hairpipe::Instance* heads[] = {&jaw, &other};
   const Backdrop backdrop(app.device, take(renderer.hairShadows()), rs.formats);  // your geometry, in the hair's shadow
+  const Hat hat(app.device, VK_FORMAT_D32_SFLOAT, rs.formats);  // and casting one
   if (raster == hairpipe::RasterMode::Compute) check(renderer.setRasterTarget({kWidth, kHeight}, app.depthSampled, heads));
 
   const hairpipe::View view = take(hairpipe::makeView(
@@ -445,7 +437,7 @@ void renderFrames(App& app, std::uint32_t frames, hairpipe::RasterMode raster) {
     const hairpipe::Mat4 bones[] = {toHairpipe(glm::mat4(1.0f)), toHairpipe(jawBone(pivot, t1))};
     check(jaw.setBones(bones));  // per-frame inputs: bones, colliders, motion
     check(other.setMotion({toHairpipe(rigidPlace * nod(t0)), toHairpipe(rigidPlace * nod(t1)), t0, false}));
-    recordFrame(app.cmds[slot], app, renderer, backdrop, f, heads, lights, view);
+    recordFrame(app.cmds[slot], app, renderer, {backdrop, hat, rigidPlace * nod(t1)}, f, heads, lights, view);
     app.submit(slot);
   }
   for (std::uint32_t slot = 0; slot < kFramesInFlight; ++slot) app.waitSlot(slot);
