@@ -1,5 +1,5 @@
 #pragma once
-// The application's own occluder: a hat's brim over one of the heads, following its motion. Drawn twice a frame,
+// The application's own occluder: a flat cap (a disc) over one of the heads' crown, following its motion. Drawn
 // as an engine draws any caster: into hairpipe's heads' depth shadow map after recordShadows (depth only, with
 // RendererSettings::applicationOccluders; Renderer::occluderTargets() gives each framed shadow slot's layer and
 // light transform, and the barriers are the ones its contract in <hairpipe/renderer.h> lists), so that it
@@ -20,12 +20,13 @@ class Hat {
   Hat& operator=(const Hat&) = delete;
   ~Hat();
 
-  // After recordShadows, outside any rendering: the brim into every framed slot's layer of the heads' depth map.
+  // After recordShadows, outside any rendering: the cap into every framed slot's layer of the heads' depth map.
   void recordShadow(VkCommandBuffer cmd, const hairpipe::Renderer::OccluderTargets& targets, const glm::mat4& place) const;
   // Inside the application's rendering, before hairpipe's recordDraw.
   void record(VkCommandBuffer cmd, const hairpipe::View& view, const glm::mat4& place) const;
 
  private:
+  void release();
   void draw(VkCommandBuffer cmd, VkPipeline pipeline, const glm::mat4& viewProj, const glm::mat4& place,
             VkExtent2D extent) const;
 

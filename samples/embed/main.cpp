@@ -10,8 +10,8 @@
 //      is drawn by the compute rasterizer between two renderings, with the barriers the contract in
 //      <hairpipe/renderer.h> lists, written here in plain Vulkan,
 //   5. draws its own wall behind the heads in the hair's shadow (backdrop.h: its shader includes
-//      <hairpipe/hair_shadows.glsl> and reads the maps Renderer::hairShadows() hands out), and its own hat's
-//      brim over one head, which shadows that head's hair (hat.h: drawn into the heads' depth map that
+//      <hairpipe/hair_shadows.glsl> and reads the maps Renderer::hairShadows() hands out), and its own flat
+//      cap over one head, which shadows that head's hair (hat.h: drawn into the heads' depth map that
 //      Renderer::occluderTargets() hands out, RendererSettings::applicationOccluders),
 //   6. reads its colour attachment back, writes a PNG (libpng, its own), destroys hairpipe before its device.
 // Every hairpipe call returns a Status or Result (no exceptions cross the boundary).
@@ -299,7 +299,7 @@ VkRenderingAttachmentInfo attachmentInfo(VkImageView view, VkImageLayout layout,
 }
 
 // [embed-readme-begin]
-// The application's own geometry: a wall that receives the hair's shadow, a hat's brim that casts one.
+// The application's own geometry: a wall that receives the hair's shadow, a flat cap that casts one.
 struct Scenery {
   const Backdrop& backdrop;
   const Hat& hat;
@@ -395,7 +395,7 @@ void renderFrames(App& app, std::uint32_t frames, hairpipe::RasterMode raster) {
   rs.framesInFlight = kFramesInFlight;
   rs.raster = raster;
   rs.shadowedLights = 2;  // the key and the rim cast hair shadows
-  rs.applicationOccluders = true;  // the hat's brim shadows the hair too
+  rs.applicationOccluders = true;  // the cap shadows the hair too
   hairpipe::Renderer renderer = take(hairpipe::Renderer::create(ctx, rs));
 
   // One asset (guides, head mesh, interpolation topology), two heads with their own state and material.

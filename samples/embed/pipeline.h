@@ -1,7 +1,7 @@
 #pragma once
-// The sample's own Vulkan helpers (main.cpp, backdrop.h, hat.h): VkResult checks, layout transitions, shader
+// The sample's own Vulkan helpers (main.cpp, backdrop.cpp, hat.cpp): VkResult checks, layout transitions, shader
 // modules from glslc's SPIR-V and one graphics pipeline shape (no vertex input, dynamic viewport and scissor,
-// no culling, depth test with writes). Plain Vulkan through the loader, as the application's engine has it.
+// depth test with writes). Plain Vulkan through the loader, as the application's engine has it.
 #include <vulkan/vulkan.h>
 
 #include <cstddef>
@@ -43,6 +43,8 @@ struct PipelineShape {
   VkFormat depth = VK_FORMAT_UNDEFINED;
   VkFormat stencil = VK_FORMAT_UNDEFINED;
   VkCompareOp depthCompare = VK_COMPARE_OP_LESS_OR_EQUAL;
+  VkCullModeFlags cull = VK_CULL_MODE_NONE;  // a closed caster into hairpipe's heads' map: FRONT
+  VkFrontFace frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE;
 };
 // The shape for the application's own rendering (RendererSettings::formats: samples, attachments, depth test).
 PipelineShape inRendering(const hairpipe::AttachmentFormats& formats);

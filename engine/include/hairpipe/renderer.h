@@ -273,7 +273,8 @@ class Renderer {
   // leaves it is not shadowed. Synchronisation, per framed slot, between recordShadows and the frame's
   // recordDraw / recordRaster: the layer is in SHADER_READ_ONLY_OPTIMAL; the application's barrier
   // FRAGMENT_SHADER | COMPUTE_SHADER (SHADER_SAMPLED_READ) -> EARLY|LATE_FRAGMENT_TESTS
-  // (DEPTH_STENCIL_ATTACHMENT_READ | WRITE), to DEPTH_ATTACHMENT_OPTIMAL (or DEPTH_STENCIL_ATTACHMENT_OPTIMAL);
+  // (DEPTH_STENCIL_ATTACHMENT_READ | WRITE), to DEPTH_STENCIL_ATTACHMENT_OPTIMAL (DEPTH_ATTACHMENT_OPTIMAL
+  // needs separateDepthStencilLayouts);
   // a rendering of the view with LOAD_OP_LOAD and STORE_OP_STORE (hairpipe's heads are already in it); then
   // LATE_FRAGMENT_TESTS (DEPTH_STENCIL_ATTACHMENT_WRITE) -> FRAGMENT_SHADER (SHADER_SAMPLED_READ), back to
   // SHADER_READ_ONLY_OPTIMAL. Fails without applicationOccluders, or before the current frame's recordShadows.
