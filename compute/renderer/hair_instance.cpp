@@ -38,7 +38,8 @@ std::uint32_t alignedSize(std::size_t size, VkDeviceSize alignment) {
 }  // namespace
 
 HairInstance::Geometry::Geometry(Renderer& r, const SimulatePass& sim, const InterpolationTopology& topology,
-                                 const HeadMesh& head, const InstanceSettings& s, const vk::Buffer& bounceFrame)
+                                 const HeadMesh& head, const render::HeadSphere& occluders, const InstanceSettings& s,
+                                 const vk::Buffer& bounceFrame)
     : buffers(r.context(), sim.guideCount(), sim.particlesPerGuide(), topology, strandOptions(r, s.strands)),
       tessellate(r.context(), sim.positions(), buffers, &r.pipelines()),
       interpolate(r.context(), buffers, &r.pipelines(), s.groom),
@@ -50,6 +51,7 @@ HairInstance::Geometry::Geometry(Renderer& r, const SimulatePass& sim, const Int
     const SdfGrid& g = *sim.sdf();
     opacity.encloseHead({0.5f * (g.origin + g.upper()), 0.5f * glm::length(g.upper() - g.origin)});
   }
+  opacity.encloseHead(occluders);
 }
 
 HairInstance::HairInstance(Renderer& renderer, const HairAsset& asset, const InstanceSettings& settings,
@@ -57,10 +59,17 @@ HairInstance::HairInstance(Renderer& renderer, const HairAsset& asset, const Ins
     : renderer_(renderer),
       settings_(validated(settings)),
       headMesh_(settings.drawHead ? asset.head : HeadMesh{}),
+      // Hair only (drawHead false, or an asset without a head mesh), with the application's occluders: the heads'
+      // depth map is framed around the guides (the application draws its character there), so it exists without
+      // hairpipe's head.
+      occluderSphere_(headMesh_.indices.empty() && renderer.settings().applicationOccluders
+                          ? render::boundingSphere(asset.guides.positions)
+                          : render::HeadSphere{}),
       motion_{initialHead, initialHead, 0.0, false},
       simulate_(renderer.context(), asset, settings.simulation, initialHead, &renderer.pipelines(), settings.scalp),
       bounceFrame_(makeBounceFrame(renderer.context())),
-      geometry_(std::make_shared<Geometry>(renderer, simulate_, asset.topology, headMesh_, settings_, bounceFrame_)),
+      geometry_(std::make_shared<Geometry>(renderer, simulate_, asset.topology, headMesh_, occluderSphere_, settings_,
+                                           bounceFrame_)),
       marschner_(renderer.marschner(settings.material, settings.lutMode)) {
   const vk::Context& ctx = renderer.context();
   const RendererSettings& rs = renderer.settings();
@@ -77,12 +86,6 @@ HairInstance::HairInstance(Renderer& renderer, const HairAsset& asset, const Ins
   bounce_ = std::make_unique<render::HeadBouncePass>(ctx, *head_, bounceFrame_.handle(), renderer.shadows().inputs(),
                                                      &renderer.pipelines());
   strandPass_ = makeStrandPass(*geometry_, *marschner_);
-  // Hair only (drawHead false, or an asset without a head mesh), with the application's occluders: the heads'
-  // depth map is framed around the guides (the application draws its character there), so it exists without
-  // hairpipe's head.
-  if (headMesh_.indices.empty() && rs.applicationOccluders)
-    occluderSphere_ = render::boundingSphere(asset.guides.positions);
-  geometry_->opacity.encloseHead(occluderSphere_);
 }
 
 HairInstance::~HairInstance() { renderer_.forgetInstance(*this); }
@@ -228,8 +231,8 @@ void HairInstance::setStrands(const InterpolationTopology& topology, const compu
   renderer_.withUploads("set strands", [&] {
     InstanceSettings next = settings_;
     next.strands = options;
-    auto geometry = std::make_shared<Geometry>(renderer_, simulate_, topology, headMesh_, next, bounceFrame_);
-    geometry->opacity.encloseHead(occluderSphere_);
+    auto geometry = std::make_shared<Geometry>(renderer_, simulate_, topology, headMesh_, occluderSphere_, next,
+                                               bounceFrame_);
     auto pass = makeStrandPass(*geometry, *marschner_);
     renderer_.retire(geometry_);
     geometry_ = std::move(geometry);

@@ -107,8 +107,9 @@ class HairInstance {
     render::OpacityPass opacity;
     render::StrandBouncePass bounce;  // the skin's bounce along the strands, read by both rasters' shading
     bool previousKept = false;  // the buffers' previous positions hold a frame (recordUpdate copied them once)
+    // occluders: the heads' depth map's framing for the application's occluders (none: radius 0).
     Geometry(Renderer& r, const SimulatePass& sim, const InterpolationTopology& topology, const HeadMesh& head,
-             const InstanceSettings& s, const vk::Buffer& bounceFrame);
+             const render::HeadSphere& occluders, const InstanceSettings& s, const vk::Buffer& bounceFrame);
   };
 
   HairInstance(Renderer& renderer, const HairAsset& asset, const InstanceSettings& settings,
@@ -139,6 +140,7 @@ class HairInstance {
   Renderer& renderer_;
   InstanceSettings settings_;
   HeadMesh headMesh_;  // the asset's head (none when !drawHead); kept for rebuilding the opacity pass with new strands
+  render::HeadSphere occluderSphere_;  // RendererSettings::applicationOccluders without a head: the guides' sphere
   HeadMotion motion_;
   SimulatePass simulate_;
   // The frame block the head bounce map's draw and the bounce along the strands read (light, colours, opacity
@@ -161,6 +163,5 @@ class HairInstance {
     std::uint64_t epoch, frame;  // Renderer::recordEpoch() and the frame when recordDraw last wrote the slot
   };
   std::vector<std::optional<BlockWrite>> blockWrites_;  // per View::index
-  render::HeadSphere occluderSphere_;  // RendererSettings::applicationOccluders without a head: the guides' sphere
 };
 }  // namespace hp

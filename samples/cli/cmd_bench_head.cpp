@@ -68,7 +68,8 @@ void run(const Options& o) {
   const Seconds simplifyS = bestSeconds(o.repeat, [&] { simplified = hp::simplifyDefaultHeadMesh(head); });
   head = std::move(simplified);
   const Seconds totalS = gridS + meshS + scalpS + markS + simplifyS;
-  // The skin's transfer (of the simplified mesh, which is what is drawn): what creating an instance adds (once per mesh and Renderer), not part of the build.
+  // The skin's transfer of the simplified mesh (the one drawn): what creating an instance adds (once per mesh
+  // and Renderer), not part of the build.
   const Seconds transferS = bestSeconds(o.repeat, [&] { (void)hp::computeSkinTransfer(head); });
   const auto stacks = std::uint32_t(std::sqrt(double(o.triangles) / 4.0));
   const hp::HeadMesh sphere = hp::makeEllipsoidMesh(glm::vec3(0.0f), glm::vec3(0.2f, 0.3f, 0.15f), 2 * stacks, stacks);

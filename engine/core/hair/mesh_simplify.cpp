@@ -158,6 +158,12 @@ class Collapser {
   }
 
   bool contains(const glm::uvec3& t, std::uint32_t v) const { return t.x == v || t.y == v || t.z == v; }
+  // Triangle t with vertex `from` moved onto `to`.
+  static glm::uvec3 moved(glm::uvec3 t, std::uint32_t from, std::uint32_t to) {
+    for (int k = 0; k < 3; ++k)
+      if (t[k] == from) t[k] = to;
+    return t;
+  }
 
   void push(std::uint32_t from, std::uint32_t to) {
     if (locked_[from]) return;
@@ -182,10 +188,8 @@ class Collapser {
         ++shared;
         continue;
       }
-      glm::uvec3 moved = triangles_[t];
-      for (int k = 0; k < 3; ++k)
-        if (moved[k] == from) moved[k] = to;
-      if (!even(moved) || !facesAsBefore(triangles_[t], moved)) return false;
+      const glm::uvec3 after = moved(triangles_[t], from, to);
+      if (!even(after) || !facesAsBefore(triangles_[t], after)) return false;
     }
     return shared == 2 && commonNeighbours(from, to) == 2 && !repeatsALivingTriangle(from, to);
   }
@@ -211,12 +215,9 @@ class Collapser {
     };
     for (const std::uint32_t t : fans_[from]) {
       if (!alive_[t] || contains(triangles_[t], to)) continue;
-      glm::uvec3 moved = triangles_[t];
-      for (int k = 0; k < 3; ++k)
-        if (moved[k] == from) moved[k] = to;
-      moved = sorted(moved);
+      const glm::uvec3 after = sorted(moved(triangles_[t], from, to));
       for (const std::uint32_t u : fans_[to])
-        if (alive_[u] && !contains(triangles_[u], from) && sorted(triangles_[u]) == moved) return true;
+        if (alive_[u] && !contains(triangles_[u], from) && sorted(triangles_[u]) == after) return true;
     }
     return false;
   }
@@ -248,8 +249,7 @@ class Collapser {
         --living_;
         continue;
       }
-      for (int k = 0; k < 3; ++k)
-        if (triangles_[t][k] == from) triangles_[t][k] = to;
+      triangles_[t] = moved(triangles_[t], from, to);
       fans_[to].push_back(t);
     }
     fans_[from].clear();
