@@ -21,6 +21,12 @@ struct Instance::Impl {
   std::unique_ptr<hp::HairInstance> instance;
 };
 
+// A raster target keeps its Renderer's implementation alive, as an instance does.
+struct RasterTarget::Impl {
+  std::shared_ptr<hp::Renderer> renderer;
+  std::shared_ptr<hp::RasterTarget> target;
+};
+
 struct Access {
   static const hp::vk::Context& context(const Context& c) {
     if (!c.impl_) throw hp::Error("the Context was moved from");
@@ -37,6 +43,8 @@ struct Access {
   static Renderer makeRenderer(std::shared_ptr<hp::Renderer> impl) { return Renderer(std::move(impl)); }
   static Instance makeInstance(std::unique_ptr<Instance::Impl> impl) { return Instance(std::move(impl)); }
   static Instance::Impl* impl(const Instance& i) { return i.impl_.get(); }
+  static RasterTarget makeRasterTarget(std::unique_ptr<RasterTarget::Impl> impl) { return RasterTarget(std::move(impl)); }
+  static RasterTarget::Impl* impl(const RasterTarget& t) { return t.impl_.get(); }
 };
 
 // The exception being handled as the failure "WHERE: what()"; called only inside a catch block.

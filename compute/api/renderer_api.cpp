@@ -29,6 +29,24 @@ hp::Renderer& implementation(const std::shared_ptr<hp::Renderer>& renderer) {
   return *renderer;
 }
 
+// The implementation's target behind a public one of this Renderer (`renderer`).
+hp::RasterTarget& implementation(const RasterTarget& target, const hp::Renderer& renderer) {
+  const RasterTarget::Impl* impl = Access::impl(target);
+  if (!impl) throw hp::Error("the raster target was moved from");
+  if (impl->renderer.get() != &renderer) throw hp::Error("the raster target belongs to another Renderer");
+  return *impl->target;
+}
+
+// Retires a target's raster through its Renderer (after the frames in flight).
+void retire(std::unique_ptr<RasterTarget::Impl> impl) noexcept {
+  if (!impl) return;
+  try {
+    impl->renderer->destroyRasterTarget(impl->target);
+  } catch (...) {
+    // Out of host memory while queueing it: the target's objects go with the last reference, the Impl's.
+  }
+}
+
 // Retires the instance through its Renderer, which keeps it until the frames in flight are done
 // (destroyInstance retires it before it rebuilds a raster target, which may fail).
 void retire(std::unique_ptr<Instance::Impl> impl) noexcept {
@@ -123,6 +141,17 @@ std::uint32_t Instance::strandCount() const noexcept {
   return impl_ ? impl_->instance->strands().layout().strandCount : 0;  // 0: moved from
 }
 
+RasterTarget::RasterTarget(std::unique_ptr<Impl> impl) noexcept : impl_(std::move(impl)) {}
+RasterTarget::RasterTarget(RasterTarget&&) noexcept = default;
+RasterTarget& RasterTarget::operator=(RasterTarget&& other) noexcept {
+  if (this != &other) {
+    retire(std::move(impl_));
+    impl_ = std::move(other.impl_);
+  }
+  return *this;
+}
+RasterTarget::~RasterTarget() { retire(std::move(impl_)); }
+
 Renderer::Renderer(std::shared_ptr<hp::Renderer> impl) noexcept : impl_(std::move(impl)) {}
 Renderer::Renderer(Renderer&&) noexcept = default;
 Renderer& Renderer::operator=(Renderer&&) noexcept = default;
@@ -184,16 +213,48 @@ Status Renderer::recordRaster(VkCommandBuffer cmd, std::uint64_t frame, const Vi
 Status Renderer::recordComposite(VkCommandBuffer cmd, VkExtent2D extent) noexcept {
   return guardedStatus("hairpipe::Renderer::recordComposite", [&] { implementation(impl_).recordComposite(cmd, extent); });
 }
+Result<RasterTarget> Renderer::createRasterTarget(VkExtent2D extent, VkImageView depth,
+                                                  std::span<Instance* const> instances) noexcept {
+  return guarded<RasterTarget>("hairpipe::Renderer::createRasterTarget", [&] {
+    hp::Renderer& renderer = implementation(impl_);
+    const std::vector<hp::HairInstance*> held = implementations(instances);
+    // Allocated first: nothing may throw once the target is built (its uploads may be batched for the frame).
+    auto impl = std::make_unique<RasterTarget::Impl>(RasterTarget::Impl{impl_, nullptr});
+    impl->target = renderer.createRasterTarget(extent, depth, held);
+    return Access::makeRasterTarget(std::move(impl));
+  });
+}
+Status Renderer::recordRaster(VkCommandBuffer cmd, std::uint64_t frame, const View& view, RasterTarget& target) noexcept {
+  return guardedStatus("hairpipe::Renderer::recordRaster", [&] {
+    hp::Renderer& renderer = implementation(impl_);
+    renderer.recordRaster(cmd, frame, convert::view(view), implementation(target, renderer));
+  });
+}
+Status Renderer::recordComposite(VkCommandBuffer cmd, VkExtent2D extent, const RasterTarget& target) noexcept {
+  return guardedStatus("hairpipe::Renderer::recordComposite", [&] {
+    const hp::Renderer& renderer = implementation(impl_);
+    renderer.recordComposite(cmd, extent, implementation(target, renderer));
+  });
+}
 Status Renderer::setOpacityTuning(const OpacitySettings& opacity) noexcept {
   return guardedStatus("hairpipe::Renderer::setOpacityTuning", [&] { implementation(impl_).setOpacityTuning(opacity); });
 }
 RasterMode Renderer::raster() const noexcept {
   return impl_ ? convert::raster(impl_->raster()) : RasterMode::Auto;  // Auto: a moved-from Renderer
 }
+namespace {
+Renderer::MotionImage motionImageOf(const hp::vk::Image& image) {
+  return {image.handle(), image.view(), image.desc().format, image.extent()};
+}
+}  // namespace
 Result<Renderer::MotionImage> Renderer::motionImage() const noexcept {
+  return guarded<MotionImage>("hairpipe::Renderer::motionImage",
+                              [&] { return motionImageOf(implementation(impl_).motionImage()); });
+}
+Result<Renderer::MotionImage> Renderer::motionImage(const RasterTarget& target) const noexcept {
   return guarded<MotionImage>("hairpipe::Renderer::motionImage", [&] {
-    const hp::vk::Image& image = implementation(impl_).motionImage();
-    return MotionImage{image.handle(), image.view(), image.desc().format, image.extent()};
+    const hp::Renderer& renderer = implementation(impl_);
+    return motionImageOf(renderer.motionImage(implementation(target, renderer)));
   });
 }
 Result<Renderer::HairShadows> Renderer::hairShadows() const noexcept {

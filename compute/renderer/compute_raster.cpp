@@ -52,7 +52,7 @@ ComputeRaster::ComputeRaster(const vk::Context& ctx, const RendererSettings& set
 }
 
 std::vector<compute::RasterSource> ComputeRaster::sources() const {
-  if (instances_.empty()) throw Error("Renderer::setRasterTarget: no instance to rasterize");
+  if (instances_.empty()) throw Error("Renderer: a raster target needs an instance to rasterize");
   std::vector<compute::RasterSource> sources;
   for (std::size_t i = 0; i < instances_.size(); ++i) sources.push_back({&instances_[i]->strands(), shadingWriter(i)});
   return sources;

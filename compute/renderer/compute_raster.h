@@ -3,8 +3,9 @@
 // compute::StrandRasterPass over every instance's strands (all in the same tile lists, so the hair of
 // different heads is depth-ordered per pixel; each instance shaded with its own material, look and LUTs
 // through its own frame block), and the composite of the hair image over the application's colour.
-// Built by Renderer::setRasterTarget outside the frame loop, and rebuilt by the Renderer (the old one
-// retired after its frames) when an instance in it changes its strands or is destroyed. A material change
+// Built by Renderer::setRasterTarget or createRasterTarget (one per view of a frame: hp::RasterTarget holds it),
+// and rebuilt by the Renderer (the old one retired after its frames) when an instance in it changes its
+// strands or is destroyed. A material change
 // keeps the target: the instance's shading bindings are rewritten in each frame slot's descriptor sets as
 // the first frame recorded with that slot after the change begins (the frame framesInFlight earlier, the
 // last to use those sets, is complete by then: the Renderer's frame contract).

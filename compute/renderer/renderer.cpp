@@ -34,7 +34,9 @@ Renderer::Renderer(const vk::Context& ctx, const RendererSettings& settings)
 // Retired instances go while every member is alive: their destructors tell the Renderer (forgetInstance).
 // The raster target first: it refers to instances, and nothing may draw from it any more.
 Renderer::~Renderer() {
-  rasterTarget_.reset();
+  for (const std::weak_ptr<RasterTarget>& weak : targets_)
+    if (const std::shared_ptr<RasterTarget> target = weak.lock()) target->raster_.reset();
+  ownTarget_.reset();
   retired_.clear();
   retiredWithDeferred_.clear();
   deferred_.clear();
@@ -81,78 +83,143 @@ void Renderer::destroyInstance(std::unique_ptr<HairInstance> instance) {
   instanceChanged(*retired, true);
 }
 
-void Renderer::setRasterTarget(VkExtent2D extent, VkImageView depth, std::span<HairInstance* const> instances) {
-  if (raster_ != RasterMode::Compute) throw Error("Renderer::setRasterTarget: the raster mode is not compute");
-  if (depth == VK_NULL_HANDLE) throw Error("Renderer::setRasterTarget: the depth view is VK_NULL_HANDLE");
+std::shared_ptr<ComputeRaster> Renderer::buildRaster(VkExtent2D extent, VkImageView depth,
+                                                     std::span<HairInstance* const> instances) {
+  if (raster_ != RasterMode::Compute) throw Error("Renderer: a raster target needs the compute raster (the raster mode is not compute)");
+  if (depth == VK_NULL_HANDLE) throw Error("Renderer: the depth view is VK_NULL_HANDLE");
   for (const HairInstance* i : instances)
     if (!i || &i->renderer_ != this) throw Error("Renderer: an instance is null or belongs to another Renderer");
-  std::shared_ptr<ComputeRaster> target;
-  withUploads("raster target",
-              [&] { target = std::make_shared<ComputeRaster>(ctx_, settings_, *shadows_, extent, depth, instances,
-                                                                pipelines_.cache()); });
-  if (rasterTarget_) retire(rasterTarget_);  // frames in flight may still use its buffers and descriptors
-  rasterTarget_ = std::move(target);
+  std::shared_ptr<ComputeRaster> raster;
+  withUploads("raster target", [&] {
+    raster = std::make_shared<ComputeRaster>(ctx_, settings_, *shadows_, extent, depth, instances, pipelines_.cache());
+  });
+  return raster;
 }
 
+template <class F>
+void Renderer::forEachTarget(F&& f) {
+  std::erase_if(targets_, [](const std::weak_ptr<RasterTarget>& t) { return t.expired(); });
+  for (const std::weak_ptr<RasterTarget>& weak : targets_)
+    if (const std::shared_ptr<RasterTarget> target = weak.lock()) f(*target);
+}
+
+// The target and its place in targets_ are made before the raster: once the raster is built (its uploads
+// batched), nothing may throw, or it would be destroyed while those uploads still write it.
+void Renderer::setRasterTarget(VkExtent2D extent, VkImageView depth, std::span<HairInstance* const> instances) {
+  if (!ownTarget_) {
+    targets_.reserve(targets_.size() + 1);
+    auto target = std::make_shared<RasterTarget>(nullptr, "call setRasterTarget() again");
+    target->raster_ = buildRaster(extent, depth, instances);
+    ownTarget_ = std::move(target);
+    targets_.push_back(ownTarget_);
+    return;
+  }
+  std::shared_ptr<ComputeRaster> raster = buildRaster(extent, depth, instances);
+  if (ownTarget_->raster_) retire(ownTarget_->raster_);  // frames in flight may still use its buffers and descriptors
+  ownTarget_->raster_ = std::move(raster);
+}
+
+std::shared_ptr<RasterTarget> Renderer::createRasterTarget(VkExtent2D extent, VkImageView depth,
+                                                          std::span<HairInstance* const> instances) {
+  targets_.reserve(targets_.size() + 1);
+  auto target = std::make_shared<RasterTarget>(nullptr, "create another with createRasterTarget()");
+  target->raster_ = buildRaster(extent, depth, instances);
+  targets_.push_back(target);
+  return target;
+}
+
+void Renderer::destroyRasterTarget(const std::shared_ptr<RasterTarget>& target) {
+  if (!target) return;
+  if (target->raster_) retire(std::move(target->raster_));
+  target->raster_.reset();
+  std::erase_if(targets_, [&](const std::weak_ptr<RasterTarget>& t) { return t.lock() == target; });
+}
+
+// Every target holding the instance is rebuilt without trying the others' rebuilds less: a failure leaves its
+// own target empty and is thrown once all were tried.
 void Renderer::instanceChanged(const HairInstance& instance, bool removed) {
-  if (!rasterTarget_ || !rasterTarget_->holds(&instance)) return;
-  std::vector<HairInstance*> kept;
-  for (HairInstance* i : rasterTarget_->instances())
-    if (!removed || i != &instance) kept.push_back(i);
-  const std::shared_ptr<ComputeRaster> old = rasterTarget_;
-  retire(old);
-  rasterTarget_.reset();
-  if (!kept.empty()) setRasterTarget(old->extent(), old->depth(), kept);
+  std::exception_ptr failure;
+  forEachTarget([&](RasterTarget& target) {
+    if (!target.holds(&instance)) return;
+    const std::shared_ptr<ComputeRaster> old = std::move(target.raster_);
+    target.raster_.reset();
+    try {
+      retire(old);
+      std::vector<HairInstance*> kept;
+      for (HairInstance* i : old->instances())
+        if (!removed || i != &instance) kept.push_back(i);
+      if (!kept.empty()) target.raster_ = buildRaster(old->extent(), old->depth(), kept);
+    } catch (...) {
+      if (!failure) failure = std::current_exception();
+    }
+  });
+  if (failure) std::rethrow_exception(failure);
 }
 
 void Renderer::materialChanged(const HairInstance& instance) {
-  if (rasterTarget_ && rasterTarget_->holds(&instance)) rasterTarget_->shadingChanged(&instance);
+  forEachTarget([&](RasterTarget& target) {
+    if (target.holds(&instance)) target.raster_->shadingChanged(&instance);
+  });
 }
 
 void Renderer::forgetInstance(const HairInstance& instance) noexcept {
-  if (!rasterTarget_ || !rasterTarget_->holds(&instance)) return;
-  retired_.push_back({lastFrame_, std::move(rasterTarget_)});
-  rasterTarget_.reset();
+  for (const std::weak_ptr<RasterTarget>& weak : targets_) {
+    const std::shared_ptr<RasterTarget> target = weak.lock();
+    if (!target || !target->holds(&instance)) continue;
+    // As retire() keeps it (with the changes' waiting work, or for the frames in flight).
+    if (!deferred_.empty()) retiredWithDeferred_.push_back(std::move(target->raster_));
+    else retired_.push_back({lastFrame_, std::move(target->raster_)});
+    target->raster_.reset();
+  }
 }
 
-const ComputeRaster& Renderer::target() const {
-  if (!rasterTarget_) throw Error("Renderer: the compute raster needs setRasterTarget() before recording");
-  return *rasterTarget_;
+const RasterTarget& Renderer::ownTarget() const {
+  if (!ownTarget_) throw Error("Renderer: the compute raster needs setRasterTarget() before recording");
+  return *ownTarget_;
 }
 
-ComputeRaster& Renderer::target() { return const_cast<ComputeRaster&>(std::as_const(*this).target()); }
-
-void Renderer::recordRaster(VkCommandBuffer cmd, std::uint64_t frame, const View& view, vk::GpuProfiler* profiler) {
+void Renderer::recordRaster(VkCommandBuffer cmd, std::uint64_t frame, const View& view, RasterTarget& target,
+                            vk::GpuProfiler* profiler) {
   requireNoDeferredWork("recordRaster");
-  ComputeRaster& t = target();
+  ComputeRaster& t = target.raster();
   view.validate(settings_.maxViewsPerFrame, settings_.formats.reversedDepth);
   // The strands' width in pixels comes from the view's extent, the tiles from the target's: they must agree.
   if (view.extent.width != t.extent().width || view.extent.height != t.extent().height)
     throw Error("Renderer::recordRaster: View.extent " + std::to_string(view.extent.width) + "x" +
                 std::to_string(view.extent.height) + " differs from the raster target's " +
-                std::to_string(t.extent().width) + "x" + std::to_string(t.extent().height) + " (setRasterTarget)");
+                std::to_string(t.extent().width) + "x" + std::to_string(t.extent().height));
   beginFrame(frame, t.instances());
   for (HairInstance* i : t.instances()) i->noteViewFraction(frame, i->lodFraction(view.camera.position));
   t.record(cmd, frame, view, frameLights_[frame % settings_.framesInFlight], profiler);
 }
 
-void Renderer::recordComposite(VkCommandBuffer cmd, VkExtent2D extent, vk::GpuProfiler* profiler) const {
+void Renderer::recordComposite(VkCommandBuffer cmd, VkExtent2D extent, const RasterTarget& target,
+                               vk::GpuProfiler* profiler) const {
   requireNoDeferredWork("recordComposite");
-  target().recordComposite(cmd, extent, profiler);
+  target.raster().recordComposite(cmd, extent, profiler);
 }
 
-const vk::Image& Renderer::rasterImage() const { return target().image(); }
-
-compute::RasterStats Renderer::rasterStats() const { return target().readStats(); }
-const vk::Image& Renderer::motionImage() const {
+void Renderer::requireMotionVectors() const {
   if (!settings_.motionVectors) throw Error("Renderer::motionImage: RendererSettings::motionVectors is off");
-  return target().motionImage();
 }
+
+const vk::Image& Renderer::motionImage(const RasterTarget& target) const {
+  requireMotionVectors();
+  return target.raster().motionImage();
+}
+
+const vk::Image& Renderer::motionImage() const {
+  requireMotionVectors();  // before asking for the target: the settings are the first refusal
+  return motionImage(ownTarget());
+}
+
+const vk::Image& Renderer::rasterImage() const { return ownTarget().raster().image(); }
+compute::RasterStats Renderer::rasterStats() const { return ownTarget().raster().readStats(); }
 std::vector<glm::vec2> Renderer::rasterMotion() const {
-  motionImage();  // the same refusals
-  return target().readMotion();
+  motionImage();  // the same refusals, in the same order
+  return ownTarget().raster().readMotion();
 }
-std::vector<float> Renderer::rasterCoverage() const { return target().readCoverage(); }
+std::vector<float> Renderer::rasterCoverage() const { return ownTarget().raster().readCoverage(); }
 
 std::shared_ptr<render::MarschnerTextures> Renderer::cachedMarschner(const HairMaterial& material, LutMode mode) {
   std::erase_if(luts_, [](const Lut& l) { return l.textures.expired(); });

@@ -19,8 +19,9 @@
 //                                               its depth image in ImageUse::ComputeSampled
 //   recordRaster(cmd, frame, view)              outside rendering: the compute rasterizer into rasterImage()
 //   recordComposite(cmd, extent)                inside a rendering of the same attachments: hair over colour
-// once per frame in that order; recordDraw once per view (View::index distinct per view of a frame), all
-// views reusing the frame's shadows. Stages touched: COMPUTE_SHADER, COPY/CLEAR, VERTEX_SHADER,
+// in that order, per view of a frame; each view with the compute raster has its own target (setRasterTarget's
+// for one, createRasterTarget's for more, each with its depth image); recordDraw once per view (View::index
+// distinct per view of a frame), all views reusing the frame's shadows. Stages touched: COMPUTE_SHADER, COPY/CLEAR, VERTEX_SHADER,
 // FRAGMENT_SHADER, early/late fragment tests, colour output; in the application's attachments only colour
 // and depth. hairpipe never waits on a queue inside these calls.
 //
@@ -34,10 +35,10 @@
 //
 // Errors (hp::Error): the constructor, createInstance and the instance setters (invalid parameters, device
 // limits, out of memory); recordShadows for an invalid light or too many and recordDraw for an invalid view (checked
-// before anything is recorded); any record call for an instance of another Renderer; setRasterTarget
-// (graphics mode, no instance, device limits) and recordRaster/recordComposite/rasterImage without a
-// raster target (none set, or dropped because one of its instances was destroyed without
-// destroyInstance); recordDraw, recordRaster and recordComposite while a change's work waits for the next
+// before anything is recorded); any record call for an instance of another Renderer; setRasterTarget and
+// createRasterTarget (graphics mode, no instance, device limits) and recordRaster/recordComposite/rasterImage
+// without a raster target or with an empty one (none set, its instances destroyed, a rebuild failed, or
+// dropped because one of its instances was destroyed without destroyInstance); recordDraw, recordRaster and recordComposite while a change's work waits for the next
 // recordUpdate or recordShadows. Nothing else in the record calls throws.
 #include <functional>
 #include <memory>
@@ -48,6 +49,7 @@
 
 #include "compute/head/skin_transfer_buffer.h"
 #include "compute/renderer/compute_raster.h"
+#include "compute/renderer/raster_target.h"
 #include "compute/renderer/hair_instance.h"
 #include "compute/shadows/shadow_maps.h"
 #include "compute/renderer/renderer_settings.h"
@@ -85,21 +87,38 @@ class Renderer {
   // samples (the composite then draws into attachments of that count). Rebuilt by the Renderer when one of
   // them changes strands or is destroyed; a material change rebinds its tables from the next frame on (a
   // change between two views of a frame shows in the next frame); call again for another extent or set.
+  // This is the Renderer's own target, which the calls without a target draw; createRasterTarget makes more.
   void setRasterTarget(VkExtent2D extent, VkImageView depth, std::span<HairInstance* const> instances);
-  // After recordDraw of the frame's view (heads drawn, depth in ImageUse::ComputeSampled), with the
-  // lights recordShadows was given; leaves rasterImage() in ImageUse::FragmentSampled. View::index is unused
-  // (one raster target: one view of a frame).
-  void recordRaster(VkCommandBuffer cmd, std::uint64_t frame, const View& view, vk::GpuProfiler* profiler = nullptr);
-  void recordComposite(VkCommandBuffer cmd, VkExtent2D extent, vk::GpuProfiler* profiler = nullptr) const;
+  // Another target like setRasterTarget's, for another view of a frame (its own extent and depth image: a
+  // second eye, a split screen, a mirror). The Renderer rebuilds it as it does its own while the caller holds
+  // it; destroyRasterTarget retires it after the frames that may use it.
+  std::shared_ptr<RasterTarget> createRasterTarget(VkExtent2D extent, VkImageView depth,
+                                                   std::span<HairInstance* const> instances);
+  void destroyRasterTarget(const std::shared_ptr<RasterTarget>& target);
+  // After recordDraw of the target's view (heads drawn, depth in ImageUse::ComputeSampled), with the
+  // lights recordShadows was given; leaves the target's image in ImageUse::FragmentSampled. View::index is
+  // unused: a target draws one view of a frame (another view takes another target).
+  void recordRaster(VkCommandBuffer cmd, std::uint64_t frame, const View& view, RasterTarget& target,
+                    vk::GpuProfiler* profiler = nullptr);
+  void recordRaster(VkCommandBuffer cmd, std::uint64_t frame, const View& view, vk::GpuProfiler* profiler = nullptr) {
+    recordRaster(cmd, frame, view, const_cast<RasterTarget&>(ownTarget()), profiler);
+  }
+  void recordComposite(VkCommandBuffer cmd, VkExtent2D extent, const RasterTarget& target,
+                       vk::GpuProfiler* profiler = nullptr) const;
+  void recordComposite(VkCommandBuffer cmd, VkExtent2D extent, vk::GpuProfiler* profiler = nullptr) const {
+    recordComposite(cmd, extent, ownTarget(), profiler);
+  }
   RasterMode raster() const { return raster_; }
+  // The Renderer's own target's (setRasterTarget):
   const vk::Image& rasterImage() const;
   compute::RasterStats rasterStats() const;  // blocking readback of the last frame's tile-list statistics
   // Blocking readback of the last frame's hair coverage per pixel (rows top to bottom), averaged over the
   // depth's samples (compute::StrandRasterPass::readCoverage).
   std::vector<float> rasterCoverage() const;
-  // With settings.motionVectors: the hair's motion image of the raster target (RG16F, pixels, current
+  // With settings.motionVectors: the hair's motion image of a raster target (RG16F, pixels, current
   // unjittered minus previous, coverage-weighted; 0 without hair), left by recordRaster in
   // ImageUse::FragmentSampled like rasterImage(); and its blocking readback (x, y per pixel, rows top to bottom).
+  const vk::Image& motionImage(const RasterTarget& target) const;
   const vk::Image& motionImage() const;
   std::vector<glm::vec2> rasterMotion() const;
 
@@ -166,8 +185,15 @@ class Renderer {
   // An instance destroyed without destroyInstance(): a raster target holding it is dropped (retired, not
   // rebuilt: nothing may throw here); recordRaster then asks for setRasterTarget().
   void forgetInstance(const HairInstance& instance) noexcept;
-  const ComputeRaster& target() const;
-  ComputeRaster& target();
+  // setRasterTarget's (throws before it was called).
+  const RasterTarget& ownTarget() const;
+  // Checks a target's instances and builds its raster (uploads batched by withUploads).
+  std::shared_ptr<ComputeRaster> buildRaster(VkExtent2D extent, VkImageView depth, std::span<HairInstance* const> instances);
+  // f(RasterTarget&) for each target someone still holds (the own one and createRasterTarget's), forgetting
+  // the others; allocates nothing (the material and strand changes that call it must not fail after their swap).
+  template <class F>
+  void forEachTarget(F&& f);
+  void requireMotionVectors() const;
   // The deferred work of changes since the last frame into `cmd` (outside any rendering), retired after it.
   void executeDeferred(VkCommandBuffer cmd);
   // recordDraw / recordRaster: every change's work was executed (a change between a frame's record calls
@@ -208,7 +234,8 @@ class Renderer {
   bool numberingRestarts_ = false;  // releaseRetired: the next frame number may be below lastFrame_
   std::uint64_t recordEpoch_ = 0;
   std::optional<std::uint64_t> shadowsFrame_;  // the frame of the latest recordShadows
-  std::shared_ptr<ComputeRaster> rasterTarget_;  // retired through retire() when replaced
+  std::shared_ptr<RasterTarget> ownTarget_;  // setRasterTarget's; a replaced raster is retired through retire()
+  std::vector<std::weak_ptr<RasterTarget>> targets_;  // every target made, the own one too: rebuilt on changes
   std::vector<std::shared_ptr<vk::DeferredWork>> deferred_;  // changes' uploads not yet executed
   std::vector<std::shared_ptr<void>> retiredWithDeferred_;   // retired while such work waited
 };

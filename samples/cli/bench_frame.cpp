@@ -106,7 +106,9 @@ FrameResult benchFrame(const vk::Context& ctx, const FrameCase& c) {
   settings.shadowedLights = shadowSlotsFor(lights);
   if (c.lodFraction < 1.0f) settings.lod = {true, 0.0f, 1e-3f, c.lodFraction};  // that fraction at any distance
   HairSystem hair(ctx, asset, settings);
-  renderer.attach(hair);
+  const std::uint64_t beforeTarget = ctx.allocatedBytes();
+  renderer.attach(hair);  // the compute raster's target (lists and images of this extent and strand count)
+  const double targetMiB = double(ctx.allocatedBytes() - beforeTarget) / (1024.0 * 1024.0);
   DrawView view;
   view.extent = renderer.extent();
   view.camera = orbitCamera(scene.camera, float(c.width) / float(c.height));
@@ -146,6 +148,7 @@ FrameResult benchFrame(const vk::Context& ctx, const FrameCase& c) {
   r.c.strands = hair.strands().layout().strandCount;  // the model's own count with ownStrands
   r.hostMs = vk::median(hostMs);
   r.residentMiB = residentAfter.back();
+  r.rasterTargetMiB = targetMiB;
   // Over the second half of the timed frames: on lavapipe resident memory still grows for the first two
   // or three frames after the warm-up (the driver's worker threads reach their working size; 452 -> 522 MiB
   // at 20k strands, then flat to the frame), which is not a per-frame cost.

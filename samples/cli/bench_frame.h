@@ -69,6 +69,7 @@ struct FrameResult {
   std::string unresolvedBecause;         // empty when they do
   double hostMs = 0;          // median wall time of a frame's submit-and-wait (driver compiles included)
   double residentMiB = 0;     // the process's resident memory after the last frame
+  double rasterTargetMiB = 0;  // compute path: the device memory its raster target holds (0 for graphics)
   double residentGrowthMiB = 0;  // per timed frame over the second half of the timed frames
 };
 

@@ -251,6 +251,7 @@ nlohmann::json toJson(const hp::cli::FrameResult& r) {
           {"copy_wall_ms", r.copyAlone.wallMs},        {"unresolved_because", r.unresolvedBecause},
           {"raster_entries", r.rasterEntries},         {"raster_overflow", r.rasterOverflow},
           {"host_frame_ms", r.hostMs},                 {"resident_mib", r.residentMiB},
+          {"raster_target_mib", r.rasterTargetMiB},
           {"resident_growth_mib_per_frame", r.residentGrowthMiB},
           {"passes", passes}};
 }
@@ -264,6 +265,8 @@ void printText(const nlohmann::json& row) {
               row["frame_ms"].get<double>(), row["frame_min_ms"].get<double>(), row["frame_max_ms"].get<double>(),
               row["host_frame_ms"].get<double>(), row["resident_mib"].get<double>(),
               row["resident_growth_mib_per_frame"].get<double>());
+  if (const double target = row.value("raster_target_mib", 0.0); target > 0.0)
+    std::printf("  raster target %.1f MiB of device memory (its lists and images)\n", target);
   std::printf("  copy yardstick %.2f GB/s alone (transfer %.2f, compute %.2f; transfer: %u submissions, %s), %.2f GB/s inside the frame%s\n",
               row["copy_gb_per_s"].get<double>(), row["copy_transfer_gb_per_s"].get<double>(),
               row["copy_compute_gb_per_s"].get<double>(), row["copy_runs"].get<unsigned>(),

@@ -8,7 +8,9 @@
 //   4. each frame records hairpipe's update, shadows and draw into ITS command buffer and ITS rendering,
 //      with two frames in flight (a command buffer and fence per slot); with --raster compute the hair
 //      is drawn by the compute rasterizer between two renderings, with the barriers the contract in
-//      <hairpipe/renderer.h> lists, written here in plain Vulkan,
+//      <hairpipe/renderer.h> lists, written here in plain Vulkan; a second camera (a close-up, its own
+//      attachments, and with the compute raster its own hairpipe::RasterTarget) reuses the frame's update and
+//      shadows, and its picture is copied into the main image's corner,
 //   5. draws its own wall behind the heads in the hair's shadow (backdrop.h: its shader includes
 //      <hairpipe/hair_shadows.glsl> and reads the maps Renderer::hairShadows() hands out), and its own flat
 //      cap over one head, which shadows that head's hair (hat.h: drawn into the heads' depth map that
@@ -25,6 +27,7 @@
 #include <cstdio>
 #include <cstring>
 #include <iostream>
+#include <optional>
 #include <span>
 #include <stdexcept>
 #include <string>
@@ -40,6 +43,9 @@
 
 namespace {
 constexpr std::uint32_t kWidth = 160, kHeight = 120;
+// A second camera's picture (a close-up of the capped head), set into the main image's top left corner, over
+// the wall.
+constexpr std::uint32_t kInsetWidth = 64, kInsetHeight = 48;
 constexpr VkFormat kColor = VK_FORMAT_R8G8B8A8_UNORM;  // the app's own choice of formats
 // Depth with stencil, as a game's main pass has it (pickDepthFormat: the first the device supports), attached
 // as both depth and stencil; the compute rasterizer samples its depth aspect.
@@ -80,6 +86,14 @@ struct Attachment {
   VkImageView view = VK_NULL_HANDLE;
 };
 
+// What one camera renders into: colour and depth/stencil attachments, and the depth aspect's own view for the
+// compute rasterizer.
+struct ViewTargets {
+  VkExtent2D extent{};
+  Attachment color, depth;
+  VkImageView depthSampled = VK_NULL_HANDLE;
+};
+
 // Everything the application owns, created and destroyed by the application with plain Vulkan.
 struct App {
   VkInstance instance = VK_NULL_HANDLE;
@@ -92,9 +106,8 @@ struct App {
   VkCommandBuffer cmds[kFramesInFlight] = {};
   VkFence fences[kFramesInFlight] = {};
   bool pending[kFramesInFlight] = {};
-  Attachment color, depth;
   VkFormat depthFormat = VK_FORMAT_UNDEFINED;
-  VkImageView depthSampled = VK_NULL_HANDLE;  // the depth aspect alone, for the compute rasterizer
+  ViewTargets main, inset;  // the main camera's and the second camera's
 
   void createInstance(bool validation) {
     VkApplicationInfo appInfo{VK_STRUCTURE_TYPE_APPLICATION_INFO};
@@ -211,12 +224,12 @@ struct App {
     return view;
   }
 
-  Attachment createAttachment(VkFormat format, VkImageUsageFlags usage, VkImageAspectFlags aspect) const {
+  Attachment createAttachment(VkExtent2D extent, VkFormat format, VkImageUsageFlags usage, VkImageAspectFlags aspect) const {
     Attachment a;
     VkImageCreateInfo ii{VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO};
     ii.imageType = VK_IMAGE_TYPE_2D;
     ii.format = format;
-    ii.extent = {kWidth, kHeight, 1};
+    ii.extent = {extent.width, extent.height, 1};
     ii.mipLevels = ii.arrayLayers = 1;
     ii.samples = VK_SAMPLE_COUNT_1_BIT;
     ii.usage = usage;
@@ -227,6 +240,25 @@ struct App {
     check(vkBindImageMemory(device, a.image, a.memory, 0), "vkBindImageMemory");
     a.view = createView(a.image, format, aspect);
     return a;
+  }
+
+  ViewTargets createViewTargets(VkExtent2D extent) const {
+    ViewTargets t;
+    t.extent = extent;
+    t.color = createAttachment(extent, kColor, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
+                                                   VK_IMAGE_USAGE_TRANSFER_DST_BIT, VK_IMAGE_ASPECT_COLOR_BIT);
+    // SAMPLED: the compute rasterizer reads the depth (renderer.h lists each image's usage).
+    t.depth = createAttachment(extent, depthFormat, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
+                               kDepthAspects);
+    t.depthSampled = createView(t.depth.image, depthFormat, VK_IMAGE_ASPECT_DEPTH_BIT);
+    return t;
+  }
+
+  void destroyViewTargets(ViewTargets& t) const {
+    destroyAttachment(t.color);
+    if (t.depthSampled) vkDestroyImageView(device, t.depthSampled, nullptr);
+    destroyAttachment(t.depth);
+    t = {};
   }
 
   void destroyAttachment(Attachment& a) const {
@@ -256,9 +288,8 @@ struct App {
 
   void destroy() {
     if (device) vkDeviceWaitIdle(device);
-    if (device) destroyAttachment(color);
-    if (depthSampled) vkDestroyImageView(device, depthSampled, nullptr);
-    if (device) destroyAttachment(depth);
+    if (device) destroyViewTargets(main);
+    if (device) destroyViewTargets(inset);
     for (VkFence f : fences)
       if (f) vkDestroyFence(device, f, nullptr);
     if (pool) vkDestroyCommandPool(device, pool, nullptr);
@@ -272,16 +303,16 @@ struct App {
 };
 
 // Both frames in flight render into the same attachments: each frame discards them (layout UNDEFINED)
-// after the previous frame's attachment writes (and, for colour, the readback copy) are done.
-void beginAttachments(VkCommandBuffer cmd, const App& app) {
+// after the previous frame's attachment writes (and, for colour, the inset's or the readback's copy) are done.
+void beginAttachments(VkCommandBuffer cmd, const ViewTargets& targets) {
   constexpr VkPipelineStageFlags2 kDepthStages =
       VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT;
-  transition(cmd, app.color.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+  transition(cmd, targets.color.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
              VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
              VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT | VK_PIPELINE_STAGE_2_COPY_BIT,
              VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
              VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT);
-  transition(cmd, app.depth.image, kDepthAspects, VK_IMAGE_LAYOUT_UNDEFINED,
+  transition(cmd, targets.depth.image, kDepthAspects, VK_IMAGE_LAYOUT_UNDEFINED,
              VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL, kDepthStages, VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
              kDepthStages,
              VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT | VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT);
@@ -306,28 +337,32 @@ struct Scenery {
   glm::mat4 hatPlace;  // this frame's: the hat sits on the second head
 };
 
-// One frame of the application: hairpipe's update and shadows outside rendering, then the application's
-// own rendering (its colour, depth and stencil attachments) with hairpipe's draw inside it. With the compute
-// rasterizer, the hair is drawn between that rendering and a second one of the same attachments.
-void recordFrame(VkCommandBuffer cmd, const App& app, hairpipe::Renderer& renderer, const Scenery& scenery,
-                 std::uint64_t frame, std::span<hairpipe::Instance* const> heads,
-                 std::span<const hairpipe::Light> lights, const hairpipe::View& view) {
+// One camera of the frame and where it renders: the main view with the Renderer's own raster target, the
+// inset with one the application made (hairpipe::RasterTarget) for its own extent and depth image.
+struct Camera {
+  const ViewTargets& targets;
+  hairpipe::View view;
+  hairpipe::RasterTarget* raster = nullptr;  // compute raster: null for the Renderer's own target
+};
+
+// The application's own rendering of one camera (its colour, depth and stencil attachments) with hairpipe's
+// draw inside it. With the compute rasterizer, the hair is drawn between that rendering and a second one of
+// the same attachments.
+void recordCamera(VkCommandBuffer cmd, hairpipe::Renderer& renderer, const Scenery& scenery, std::uint64_t frame,
+                  std::span<hairpipe::Instance* const> heads, std::span<const hairpipe::Light> lights,
+                  const Camera& camera) {
   const bool compute = renderer.raster() == hairpipe::RasterMode::Compute;
-  VkCommandBufferBeginInfo bi{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
-  bi.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
-  check(vkBeginCommandBuffer(cmd, &bi), "vkBeginCommandBuffer");
-  check(renderer.recordUpdate(cmd, frame, heads));          // simulate, tessellate, interpolate
-  check(renderer.recordShadows(cmd, frame, lights, heads));  // per shadowed light, one map set over all heads
-  scenery.hat.recordShadow(cmd, take(renderer.occluderTargets()), scenery.hatPlace);  // your casters, after it
-  beginAttachments(cmd, app);
-  VkRenderingAttachmentInfo color = attachmentInfo(app.color.view, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+  const ViewTargets& targets = camera.targets;
+  const hairpipe::View& view = camera.view;
+  beginAttachments(cmd, targets);
+  VkRenderingAttachmentInfo color = attachmentInfo(targets.color.view, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
                                                    VK_ATTACHMENT_STORE_OP_STORE, {{{0.2f, 0.25f, 0.3f, 1.0f}}});
   VkClearValue far{};
   far.depthStencil = {1.0f, 0};
-  VkRenderingAttachmentInfo depth = attachmentInfo(app.depth.view, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL,
+  VkRenderingAttachmentInfo depth = attachmentInfo(targets.depth.view, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL,
                                                    compute ? VK_ATTACHMENT_STORE_OP_STORE : VK_ATTACHMENT_STORE_OP_DONT_CARE, far);
   VkRenderingInfo ri{VK_STRUCTURE_TYPE_RENDERING_INFO};
-  ri.renderArea = {{0, 0}, {kWidth, kHeight}};
+  ri.renderArea = {{0, 0}, targets.extent};
   ri.layerCount = 1;
   ri.colorAttachmentCount = 1;
   ri.pColorAttachments = &color;
@@ -343,23 +378,60 @@ void recordFrame(VkCommandBuffer cmd, const App& app, hairpipe::Renderer& render
   if (compute) {
     constexpr VkPipelineStageFlags2 kDepthStages =
         VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT;
-    transition(cmd, app.depth.image, kDepthAspects, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL,
+    transition(cmd, targets.depth.image, kDepthAspects, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL,
                VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, kDepthStages, VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
                VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT);
-    check(renderer.recordRaster(cmd, frame, view));         // the hair of every head, against the depth
-    transition(cmd, app.depth.image, kDepthAspects, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+    // The hair of every head, against the depth: into the Renderer's own target or the camera's.
+    check(camera.raster ? renderer.recordRaster(cmd, frame, view, *camera.raster) : renderer.recordRaster(cmd, frame, view));
+    transition(cmd, targets.depth.image, kDepthAspects, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
                VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_NONE,
                kDepthStages, VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT | VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT);
-    transition(cmd, app.color.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+    transition(cmd, targets.color.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
                VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
                VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
                VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT);
     color.loadOp = depth.loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;
     depth.storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
     vkCmdBeginRendering(cmd, &ri);
-    check(renderer.recordComposite(cmd, {kWidth, kHeight}));  // the hair over the colour
+    check(camera.raster ? renderer.recordComposite(cmd, targets.extent, *camera.raster)  // the hair over the colour
+                        : renderer.recordComposite(cmd, targets.extent));
     vkCmdEndRendering(cmd);
   }
+}
+
+// The inset camera's colour copied into the main image's top left corner, which is left as the main
+// rendering left it (COLOR_ATTACHMENT_OPTIMAL, its writes visible to colour output).
+void copyInset(VkCommandBuffer cmd, const App& app) {
+  transition(cmd, app.inset.color.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+             VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+             VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT);
+  transition(cmd, app.main.color.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+             VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+             VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
+  VkImageCopy region{};
+  region.srcSubresource = region.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+  region.dstOffset = {4, 4, 0};
+  region.extent = {kInsetWidth, kInsetHeight, 1};
+  vkCmdCopyImage(cmd, app.inset.color.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, app.main.color.image,
+                 VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
+  transition(cmd, app.main.color.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+             VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+             VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT);
+}
+
+// One frame of the application: hairpipe's update and shadows outside rendering, once for the frame; then
+// each camera's rendering, both reusing them; then the inset into the main image.
+void recordFrame(VkCommandBuffer cmd, const App& app, hairpipe::Renderer& renderer, const Scenery& scenery,
+                 std::uint64_t frame, std::span<hairpipe::Instance* const> heads,
+                 std::span<const hairpipe::Light> lights, std::span<const Camera> cameras) {
+  VkCommandBufferBeginInfo bi{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+  bi.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+  check(vkBeginCommandBuffer(cmd, &bi), "vkBeginCommandBuffer");
+  check(renderer.recordUpdate(cmd, frame, heads));          // simulate, tessellate, interpolate
+  check(renderer.recordShadows(cmd, frame, lights, heads));  // per shadowed light, one map set over all heads
+  scenery.hat.recordShadow(cmd, take(renderer.occluderTargets()), scenery.hatPlace);  // your casters, after it
+  for (const Camera& camera : cameras) recordCamera(cmd, renderer, scenery, frame, heads, lights, camera);
+  copyInset(cmd, app);
   check(vkEndCommandBuffer(cmd), "vkEndCommandBuffer");
 }
 
@@ -411,10 +483,20 @@ void renderFrames(App& app, std::uint32_t frames, hairpipe::RasterMode raster) {
   hairpipe::Instance* heads[] = {&jaw, &other};
   const Backdrop backdrop(app.device, take(renderer.hairShadows()), rs.formats);  // your geometry, in the hair's shadow
   const Hat hat(app.device, VK_FORMAT_D32_SFLOAT, rs.formats);  // and casting one
-  if (raster == hairpipe::RasterMode::Compute) check(renderer.setRasterTarget({kWidth, kHeight}, app.depthSampled, heads));
-
-  const hairpipe::View view = take(hairpipe::makeView(
-      {{0.751f, 0.128f, 1.023f}, {0.16f, -0.08f, 0.0f}, {0.0f, 1.0f, 0.0f}, 0.6109f, 0.024f, 24.0f}, {kWidth, kHeight}));
+  // The compute raster draws each camera into a target of its extent and depth: the Renderer's own for the
+  // main camera, one of the application's for the inset (an engine's second eye, split screen or mirror).
+  std::optional<hairpipe::RasterTarget> insetRaster;
+  if (raster == hairpipe::RasterMode::Compute) {
+    check(renderer.setRasterTarget(app.main.extent, app.main.depthSampled, heads));
+    insetRaster.emplace(take(renderer.createRasterTarget(app.inset.extent, app.inset.depthSampled, heads)));
+  }
+  const Camera cameras[] = {
+      {app.main, take(hairpipe::makeView({{0.751f, 0.128f, 1.023f}, {0.16f, -0.08f, 0.0f}, {0.0f, 1.0f, 0.0f}, 0.6109f,
+                                          0.024f, 24.0f}, app.main.extent))},
+      {app.inset,  // a close-up of the capped head; View::index 1: the second view of each frame
+       take(hairpipe::makeView({{0.56f, 0.06f, 0.42f}, {0.32f, 0.0f, -0.1f}, {0.0f, 1.0f, 0.0f}, 0.6109f, 0.024f, 24.0f},
+                               app.inset.extent, 1)),
+       insetRaster ? &*insetRaster : nullptr}};
   // Your lights: a key and a cool rim from behind, both shadowed, and a warm point fill.
   hairpipe::Light rim;
   rim.direction = {-0.3939193f, 0.3939193f, -0.8304548f};
@@ -437,11 +519,11 @@ void renderFrames(App& app, std::uint32_t frames, hairpipe::RasterMode raster) {
     const hairpipe::Mat4 bones[] = {toHairpipe(glm::mat4(1.0f)), toHairpipe(jawBone(pivot, t1))};
     check(jaw.setBones(bones));  // per-frame inputs: bones, colliders, motion
     check(other.setMotion({toHairpipe(rigidPlace * nod(t0)), toHairpipe(rigidPlace * nod(t1)), t0, false}));
-    recordFrame(app.cmds[slot], app, renderer, {backdrop, hat, rigidPlace * nod(t1)}, f, heads, lights, view);
+    recordFrame(app.cmds[slot], app, renderer, {backdrop, hat, rigidPlace * nod(t1)}, f, heads, lights, cameras);
     app.submit(slot);
   }
   for (std::uint32_t slot = 0; slot < kFramesInFlight; ++slot) app.waitSlot(slot);
-}  // hairpipe (instances, renderer, context) is destroyed here, before the application's device
+}  // hairpipe (the inset's raster target, instances, renderer, context) is destroyed here, before the device
 // [embed-readme-end]
 
 // Copies the colour attachment into a host-visible buffer and returns its RGBA8 texels.
@@ -461,13 +543,13 @@ std::vector<std::uint8_t> readColor(App& app) {
   VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
   begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
   check(vkBeginCommandBuffer(cmd, &begin), "vkBeginCommandBuffer");
-  transition(cmd, app.color.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+  transition(cmd, app.main.color.image, VK_IMAGE_ASPECT_COLOR_BIT, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
              VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
              VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT);
   VkBufferImageCopy region{};
   region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
   region.imageExtent = {kWidth, kHeight, 1};
-  vkCmdCopyImageToBuffer(cmd, app.color.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, buffer, 1, &region);
+  vkCmdCopyImageToBuffer(cmd, app.main.color.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, buffer, 1, &region);
   check(vkEndCommandBuffer(cmd), "vkEndCommandBuffer");
   app.submit(0);
   app.waitSlot(0);
@@ -509,12 +591,8 @@ int run(bool validation, std::uint32_t frames, hairpipe::RasterMode raster, cons
     app.createInstance(validation);
     app.pickDevice();
     app.createDevice();
-    app.color = app.createAttachment(kColor, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
-                                     VK_IMAGE_ASPECT_COLOR_BIT);
-    // SAMPLED: the compute rasterizer reads the depth (renderer.h lists each image's usage).
-    app.depth = app.createAttachment(app.depthFormat, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
-                                     kDepthAspects);
-    app.depthSampled = app.createView(app.depth.image, app.depthFormat, VK_IMAGE_ASPECT_DEPTH_BIT);
+    app.main = app.createViewTargets({kWidth, kHeight});
+    app.inset = app.createViewTargets({kInsetWidth, kInsetHeight});
     renderFrames(app, frames, raster);
     writePng(out, readColor(app));
     app.destroy();
@@ -528,7 +606,7 @@ int run(bool validation, std::uint32_t frames, hairpipe::RasterMode raster, cons
     return 1;
   }
   std::cout << "hairpipe_embed: rendered " << frames << " frames of two heads (" << kFramesInFlight
-            << " in flight) into the application's attachments; wrote " << out << "\n";
+            << " in flight) from two cameras into the application's attachments; wrote " << out << "\n";
   return 0;
 }
 }  // namespace

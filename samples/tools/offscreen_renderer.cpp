@@ -48,6 +48,13 @@ void OffscreenRenderer::attach(Renderer& renderer, std::span<HairInstance* const
   renderer.setRasterTarget(extent(), targets_.depth.view(), instances);
 }
 
+std::shared_ptr<RasterTarget> OffscreenRenderer::createTarget(Renderer& renderer,
+                                                             std::span<HairInstance* const> instances) const {
+  if (raster_ != RasterMode::Compute || renderer.raster() != RasterMode::Compute)
+    throw Error("OffscreenRenderer::createTarget: the renderer and this target must both use the compute raster");
+  return renderer.createRasterTarget(extent(), targets_.depth.view(), instances);
+}
+
 hairpipe::AttachmentFormats OffscreenRenderer::formats() const {
   hairpipe::AttachmentFormats f{kHdrFormat, kDepthFormat, targets_.samples()};
   f.reversedDepth = reversedDepth_;
@@ -76,7 +83,7 @@ void OffscreenRenderer::record(VkCommandBuffer cmd, HairSystem& hair, const Draw
 
 void OffscreenRenderer::record(VkCommandBuffer cmd, Renderer& renderer, std::uint64_t frame, const View& view,
                                std::span<HairInstance* const> instances, float exposure,
-                               vk::GpuProfiler* profiler, const Record& applicationDraws) const {
+                               vk::GpuProfiler* profiler, const Record& applicationDraws, RasterTarget* target) const {
   if (raster_ != RasterMode::Compute || renderer.raster() != RasterMode::Compute)
     throw Error("OffscreenRenderer: a Renderer frame here needs the compute raster on both");
   recordComputeScene(
@@ -85,8 +92,15 @@ void OffscreenRenderer::record(VkCommandBuffer cmd, Renderer& renderer, std::uin
         if (applicationDraws) applicationDraws(c);
         renderer.recordDraw(c, frame, view, instances, profiler);
       },
-      [&](VkCommandBuffer c) { renderer.recordRaster(c, frame, view, profiler); },
-      [&](VkCommandBuffer c) { renderer.recordComposite(c, extent(), profiler); }, profiler);
+      [&](VkCommandBuffer c) {
+        if (target) return renderer.recordRaster(c, frame, view, *target, profiler);
+        renderer.recordRaster(c, frame, view, profiler);
+      },
+      [&](VkCommandBuffer c) {
+        if (target) return renderer.recordComposite(c, extent(), *target, profiler);
+        renderer.recordComposite(c, extent(), profiler);
+      },
+      profiler);
   recordTonemap(cmd, exposure);
 }
 

@@ -8,6 +8,7 @@
 // composite of the hair layers over the colour, resolve, tonemap. attach(hair) once binds the
 // rasterizer's target.
 #include <functional>
+#include <memory>
 #include <span>
 #include <vector>
 
@@ -28,6 +29,8 @@ class OffscreenRenderer {
   void attach(HairSystem& hair) const;
   // The same for a Renderer's instances (the middleware API; the Renderer's raster mode must be compute).
   void attach(Renderer& renderer, std::span<HairInstance* const> instances) const;
+  // A raster target of its own on the Renderer for this renderer's extent and depth (another view of a frame).
+  std::shared_ptr<RasterTarget> createTarget(Renderer& renderer, std::span<HairInstance* const> instances) const;
   hairpipe::AttachmentFormats formats() const;
   VkExtent2D extent() const { return targets_.extent(); }
   // The sRGB image record() leaves in ImageUse::ColorAttachment (a window blits it to its swapchain).
@@ -41,10 +44,10 @@ class OffscreenRenderer {
   // Compute raster: a Renderer's frame `frame` of its attached instances (heads by recordDraw, then
   // recordRaster, recordComposite), after its recordShadows. `applicationDraws`, when given, records into
   // the heads' rendering before recordDraw: what an application draws first (its character), which the
-  // heads and the hair are depth-tested against.
+  // heads and the hair are depth-tested against. `target`: one createTarget made (default: the Renderer's own).
   void record(VkCommandBuffer cmd, Renderer& renderer, std::uint64_t frame, const View& view,
               std::span<HairInstance* const> instances, float exposure, vk::GpuProfiler* profiler = nullptr,
-              const std::function<void(VkCommandBuffer)>& applicationDraws = {}) const;
+              const std::function<void(VkCommandBuffer)>& applicationDraws = {}, RasterTarget* target = nullptr) const;
   // RGBA8, sRGB-encoded, rows top to bottom. Waits for the queue through a one-shot readback.
   std::vector<std::uint8_t> readDisplay() const;
   // The frame's linear HDR radiance before exposure and tonemap (RGB floats, rows top to bottom);

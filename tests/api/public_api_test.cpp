@@ -15,6 +15,7 @@
 #include <string>
 
 #include "hairpipe/hairpipe.h"
+#include "tests/api/validated_context.h"
 
 namespace {
 using ::testing::HasSubstr;
@@ -28,11 +29,7 @@ class PublicApi : public ::testing::Test {
   }
   static void TearDownTestSuite() { delete asset_; }
   void SetUp() override {
-    hairpipe::HeadlessOptions o;
-    o.validation = true;
-    hairpipe::Result<hairpipe::Context> c = hairpipe::Context::createHeadless(o);
-    ASSERT_TRUE(c.ok()) << c.message();  // a missing device fails, never skips
-    ctx_.emplace(std::move(c).value());
+    ASSERT_NO_FATAL_FAILURE(hairpipe::test::createValidatedContext(ctx_));
     hairpipe::RendererSettings s;
     s.formats = {VK_FORMAT_R8G8B8A8_UNORM, VK_FORMAT_D32_SFLOAT, VK_SAMPLE_COUNT_1_BIT};
     hairpipe::Result<hairpipe::Renderer> r = hairpipe::Renderer::create(*ctx_, s);
@@ -41,12 +38,7 @@ class PublicApi : public ::testing::Test {
   }
   void TearDown() override {
     renderer_.reset();
-    if (ctx_) {
-      EXPECT_TRUE(ctx_->waitIdle().ok());
-      const hairpipe::Result<std::vector<std::string>> messages = ctx_->validationMessages();
-      ASSERT_TRUE(messages.ok()) << messages.message();
-      for (const std::string& m : messages.value()) ADD_FAILURE() << m;
-    }
+    if (ctx_) hairpipe::test::expectIdleAndSilent(*ctx_);
   }
   hairpipe::Instance instance(const hairpipe::InstanceSettings& s = {}) {
     hairpipe::Result<hairpipe::Instance> i = renderer_->createInstance(*asset_, s);
@@ -409,6 +401,8 @@ TEST_F(PublicApi, RecordCallsRefuseBadFramesBeforeRecording) {
               HasSubstr("View.projection maps depth reversed (near to 1), but RendererSettings.formats.reversedDepth is false"));
   EXPECT_THAT(failureOf(renderer_->setRasterTarget({64, 64}, VK_NULL_HANDLE, heads)), HasSubstr("not compute"));
   EXPECT_THAT(failureOf(renderer_->recordRaster(VK_NULL_HANDLE, 0, hairpipe::View{})), HasSubstr("setRasterTarget"));
+  EXPECT_THAT(failureOf(renderer_->createRasterTarget({64, 64}, VK_NULL_HANDLE, heads)),
+              HasSubstr("hairpipe::Renderer::createRasterTarget: Renderer: a raster target needs the compute raster"));
   EXPECT_EQ(renderer_->raster(), hairpipe::RasterMode::Graphics);
 }
 
@@ -423,6 +417,11 @@ TEST_F(PublicApi, AComputeRasterTargetWithoutADepthViewIsRefused) {
   hairpipe::Instance* heads[] = {&head.value()};
   EXPECT_THAT(failureOf(r.value().setRasterTarget({64, 64}, VK_NULL_HANDLE, heads)), HasSubstr("the depth view is VK_NULL_HANDLE"));
   EXPECT_THAT(failureOf(r.value().recordRaster(VK_NULL_HANDLE, 0, hairpipe::View{})), HasSubstr("setRasterTarget"));
+  EXPECT_THAT(failureOf(r.value().createRasterTarget({64, 64}, VK_NULL_HANDLE, heads)),
+              HasSubstr("the depth view is VK_NULL_HANDLE"));
+  hairpipe::Instance* none[] = {nullptr};
+  EXPECT_THAT(failureOf(r.value().createRasterTarget({64, 64}, VK_NULL_HANDLE, none)),
+              HasSubstr("an instance is null or was moved from"));
 }
 
 TEST_F(PublicApi, InstancesOfAnotherRendererAreRefused) {

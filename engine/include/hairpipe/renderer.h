@@ -11,7 +11,7 @@
 // complete, and it submits frames in order on one queue. Setters may be called between frames while
 // earlier ones are in flight: what the GPU may still read is retired and destroyed framesInFlight frames
 // later by a record call, never by waiting on the device. After the first recorded frame, the device
-// work of a change (setMaterial, setDensity, createInstance, setRasterTarget: uploads of new tables and
+// work of a change (setMaterial, setDensity, createInstance, setRasterTarget, createRasterTarget: uploads of new tables and
 // buffers) makes no submission and no wait on the application's queue: it is recorded into the next
 // recordUpdate or recordShadows (executed commands, outside any rendering, in TRANSFER and the shader
 // stages), so those two need a primary command buffer with no query active (vkCmdExecuteCommands). A
@@ -47,7 +47,7 @@
 // RasterMode::Compute draws the hair after the heads, against the depth (setRasterTarget once, outside
 // the frame loop, with a view of the application's depth image: format and samples of
 // RendererSettings::formats, usage DEPTH_STENCIL_ATTACHMENT | SAMPLED, the view's aspect DEPTH alone; a new depth image
-// needs a new setRasterTarget). One view per frame. Per frame:
+// needs a new setRasterTarget). One view per frame with this target (more views: createRasterTarget). Per frame:
 //   1. recordDraw as above (heads only) in a rendering whose depth attachment has STORE_OP_STORE;
 //      the application ends that rendering.
 //   2. the application's barrier on the depth image: LATE_FRAGMENT_TESTS, DEPTH_STENCIL_ATTACHMENT_WRITE ->
@@ -65,8 +65,8 @@
 //      hair over the colour (multisampled: per sample, with the coverage recordRaster took from the
 //      heads' depth samples).
 // Calls that submit to the context's queue and wait for it: Renderer::create, always; createInstance,
-// Instance::setMaterial (a new material's tables), Instance::setDensity and setRasterTarget until that
-// Renderer's first recorded frame. From then on none of these four submits or waits (their device work goes
+// Instance::setMaterial (a new material's tables), Instance::setDensity, setRasterTarget and createRasterTarget
+// until that Renderer's first recorded frame. From then on none of these five submits or waits (their device work goes
 // into the next recordUpdate or recordShadows, above), and no record call ever does.
 // Threads: a Context and everything made on it (its Renderers and their Instances) are used by one thread at
 // a time; none of these calls is synchronized against another on the same Context (they share its command
@@ -128,7 +128,8 @@ class Instance {
   // after they are done applies it (materialPending() is false from then). Before the first frame it
   // applies at once. A later setMaterial replaces a pending one. A raster target holding the instance is
   // kept (it takes the new tables frame slot by frame slot; a new fibre model shades with its run-time form,
-  // the same image, slower on CPU devices, until setRasterTarget: docs/API.md "Frames in flight, lifetimes").
+  // the same image, slower on CPU devices, until the target is set or created again: docs/API.md "Frames in
+  // flight, lifetimes").
   Status setMaterial(const Material& material, FibreModel fibre) noexcept;
   bool materialPending() const noexcept;
   // What this instance's hair passes on forward to a diffuse receiver beneath it, for
@@ -165,9 +166,31 @@ class Instance {
   std::unique_ptr<Impl> impl_;
 };
 
+// A compute raster target of the application's own (Renderer::createRasterTarget), for the views of a frame
+// beyond the one setRasterTarget's target draws: a second eye, a split screen, a mirror, an editor's second
+// viewport, each with its own extent and depth image. It draws one view per frame, and its Renderer rebuilds
+// it as it does its own (an instance in it changing density or destroyed); once none of its instances is
+// left it refuses to draw. Destroying it retires its buffers and images through its Renderer (destroyed after
+// the frames in flight); it keeps that Renderer's shared objects alive as an Instance does. A moved-from
+// RasterTarget holds nothing, and the calls given it return failures.
+class RasterTarget {
+ public:
+  RasterTarget(RasterTarget&&) noexcept;
+  // Retires the target held before (as the destructor does), then takes the other's.
+  RasterTarget& operator=(RasterTarget&&) noexcept;
+  ~RasterTarget();
+
+  struct Impl;  // hairpipe's implementation (opaque)
+
+ private:
+  friend struct Access;
+  explicit RasterTarget(std::unique_ptr<Impl> impl) noexcept;
+  std::unique_ptr<Impl> impl_;
+};
+
 class Renderer {
  public:
-  // The context must outlive the Renderer and its instances (a temporary cannot be given).
+  // The context must outlive the Renderer, its instances and its raster targets (a temporary cannot be given).
   static Result<Renderer> create(const Context& context, const RendererSettings& settings) noexcept;
   static Result<Renderer> create(Context&& context, const RendererSettings& settings) = delete;
   Renderer(Renderer&&) noexcept;
@@ -196,6 +219,16 @@ class Renderer {
   Status setRasterTarget(VkExtent2D extent, VkImageView depth, std::span<Instance* const> instances) noexcept;
   Status recordRaster(VkCommandBuffer cmd, std::uint64_t frame, const View& view) noexcept;
   Status recordComposite(VkCommandBuffer cmd, VkExtent2D extent) noexcept;
+  // More views of a frame with the compute raster: a target for each, made like setRasterTarget's (outside the
+  // frame loop, or in it: its uploads then go into the next recordUpdate or recordShadows), and the same
+  // per-view sequence as above with the target named: recordDraw of the view's heads into its depth image,
+  // the application's barriers, recordRaster(cmd, frame, view, target), recordComposite(cmd, extent, target).
+  // Every view of a frame reuses that frame's update and shadows; each target costs its own tile lists and
+  // images (docs/API.md "Several views of a frame").
+  Result<RasterTarget> createRasterTarget(VkExtent2D extent, VkImageView depth,
+                                          std::span<Instance* const> instances) noexcept;
+  Status recordRaster(VkCommandBuffer cmd, std::uint64_t frame, const View& view, RasterTarget& target) noexcept;
+  Status recordComposite(VkCommandBuffer cmd, VkExtent2D extent, const RasterTarget& target) noexcept;
 
   // Shadow tuning that keeps the maps' resolution, format and raster (opacity, k, bias, on/off).
   Status setOpacityTuning(const OpacitySettings& opacity) noexcept;
@@ -229,6 +262,7 @@ class Renderer {
     VkExtent2D extent{};
   };
   Result<MotionImage> motionImage() const noexcept;
+  Result<MotionImage> motionImage(const RasterTarget& target) const noexcept;  // a createRasterTarget target's
 
   // The hair's opacity shadow maps, for the application's own shaders: receivers hairpipe does not draw (a
   // body, clothes, a floor) darken under the hair as hairpipe's heads do, through hairpipeHairShadow
@@ -299,7 +333,7 @@ class Renderer {
 // thread (a loading thread: it touches no Context, Renderer or Instance): the material's lookup tables with
 // their parameter block and, with drawHead, the head mesh's skin transfer go into the process's caches (the last 4 of each), so a
 // createInstance of the same asset and material soon after, on the thread that records frames, takes them
-// instead of computing them there (~0.5 s and ~0.25 s of CPU for the default head's on a 2-core machine). A
+// instead of computing them there (~0.5 s and ~0.16 s of CPU for the default head's on a 2-core machine). A
 // failure names the settings createInstance would refuse.
 Status prepareInstance(const Asset& asset, const InstanceSettings& settings) noexcept;
 
