@@ -17,8 +17,10 @@
 //      Renderer::occluderTargets() hands out, RendererSettings::applicationOccluders),
 //   6. reads its colour attachment back, writes a PNG (libpng, its own), destroys hairpipe before its device.
 // Every hairpipe call returns a Status or Result (no exceptions cross the boundary).
-// Usage: hairpipe_embed [--validation] [--frames N] [--raster graphics|compute] [--out FILE.png]
+// Usage: hairpipe_embed [--validation] [--frames N] [--raster graphics|compute] [--out FILE.png] [--fail-at-frame N]
 // With --validation, VK_LAYER_KHRONOS_validation runs with synchronization validation; any message fails.
+// --fail-at-frame N: the application fails after submitting frame N (frames still in flight), as an engine's
+// error would; it waits for its device before hairpipe's objects go, and exits with 1 and no PNG.
 #include <png.h>
 #include <vulkan/vulkan.h>
 
@@ -108,6 +110,11 @@ struct App {
   bool pending[kFramesInFlight] = {};
   VkFormat depthFormat = VK_FORMAT_UNDEFINED;
   ViewTargets main, inset;  // the main camera's and the second camera's
+  std::uint32_t failAtFrame = UINT32_MAX;  // --fail-at-frame: the application fails there (its unwinding, tested)
+
+  void failIfAsked(std::uint32_t frame) const {
+    if (frame == failAtFrame) throw std::runtime_error("the application failed at frame " + std::to_string(frame));
+  }
 
   void createInstance(bool validation) {
     VkApplicationInfo appInfo{VK_STRUCTURE_TYPE_APPLICATION_INFO};
@@ -512,15 +519,22 @@ void renderFrames(App& app, std::uint32_t frames, hairpipe::RasterMode raster) {
   hairpipe::Light key;  // from the upper left, so the hair's shadows fall on the wall beside the heads
   key.direction = {-0.5496154f, 0.4996504f, 0.6695315f};
   const hairpipe::Light lights[] = {key, rim, fill};
-  for (std::uint32_t f = 0; f < frames; ++f) {
-    const std::uint32_t slot = f % kFramesInFlight;
-    app.waitSlot(slot);  // frame f - kFramesInFlight is done: its slot and command buffer are free
-    const double t0 = f / 60.0, t1 = (f + 1) / 60.0;
-    const hairpipe::Mat4 bones[] = {toHairpipe(glm::mat4(1.0f)), toHairpipe(jawBone(pivot, t1))};
-    check(jaw.setBones(bones));  // per-frame inputs: bones, colliders, motion
-    check(other.setMotion({toHairpipe(rigidPlace * nod(t0)), toHairpipe(rigidPlace * nod(t1)), t0, false}));
-    recordFrame(app.cmds[slot], app, renderer, {backdrop, hat, rigidPlace * nod(t1)}, f, heads, lights, cameras);
-    app.submit(slot);
+  try {
+    for (std::uint32_t f = 0; f < frames; ++f) {
+      const std::uint32_t slot = f % kFramesInFlight;
+      app.waitSlot(slot);  // frame f - kFramesInFlight is done: its slot and command buffer are free
+      const double t0 = f / 60.0, t1 = (f + 1) / 60.0;
+      const hairpipe::Mat4 bones[] = {toHairpipe(glm::mat4(1.0f)), toHairpipe(jawBone(pivot, t1))};
+      check(jaw.setBones(bones));  // per-frame inputs: bones, colliders, motion
+      check(other.setMotion({toHairpipe(rigidPlace * nod(t0)), toHairpipe(rigidPlace * nod(t1)), t0, false}));
+      recordFrame(app.cmds[slot], app, renderer, {backdrop, hat, rigidPlace * nod(t1)}, f, heads, lights, cameras);
+      app.submit(slot);
+      app.failIfAsked(f);  // with frames in flight
+    }
+  } catch (...) {
+    // hairpipe's objects go while this unwinds: the frames in flight that use them must be done first.
+    vkDeviceWaitIdle(app.device);
+    throw;
   }
   for (std::uint32_t slot = 0; slot < kFramesInFlight; ++slot) app.waitSlot(slot);
 }  // hairpipe (the inset's raster target, instances, renderer, context) is destroyed here, before the device
@@ -585,8 +599,10 @@ void writePng(const std::string& path, const std::vector<std::uint8_t>& rgba) {
   if (std::fclose(file) != 0) throw std::runtime_error("writing " + path + " failed");
 }
 
-int run(bool validation, std::uint32_t frames, hairpipe::RasterMode raster, const std::string& out) {
+int run(bool validation, std::uint32_t frames, hairpipe::RasterMode raster, const std::string& out,
+        std::uint32_t failAtFrame) {
   App app;
+  app.failAtFrame = failAtFrame;
   try {
     app.createInstance(validation);
     app.pickDevice();
@@ -615,20 +631,23 @@ int main(int argc, char** argv) {
   bool validation = false;
   std::uint32_t frames = 30;
   std::string out = "embed.png";
+  std::uint32_t failAtFrame = UINT32_MAX;
   hairpipe::RasterMode raster = hairpipe::RasterMode::Graphics;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--validation") validation = true;
     else if (a == "--frames" && i + 1 < argc) frames = static_cast<std::uint32_t>(std::stoul(argv[++i]));
     else if (a == "--out" && i + 1 < argc) out = argv[++i];
+    else if (a == "--fail-at-frame" && i + 1 < argc) failAtFrame = static_cast<std::uint32_t>(std::stoul(argv[++i]));
     else if (a == "--raster" && i + 1 < argc && std::string(argv[i + 1]) == "graphics") ++i;
     else if (a == "--raster" && i + 1 < argc && std::string(argv[i + 1]) == "compute") {
       raster = hairpipe::RasterMode::Compute;
       ++i;
     } else {
-      std::cerr << "usage: hairpipe_embed [--validation] [--frames N] [--raster graphics|compute] [--out FILE.png]\n";
+      std::cerr << "usage: hairpipe_embed [--validation] [--frames N] [--raster graphics|compute] [--out FILE.png]"
+                   " [--fail-at-frame N]\n";
       return 1;
     }
   }
-  return run(validation, frames, raster, out);
+  return run(validation, frames, raster, out, failAtFrame);
 }

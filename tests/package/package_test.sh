@@ -2,7 +2,8 @@
 # The installed package as an application meets it. Installs the build into WORK/install, MOVES that prefix
 # to WORK/prefix (the package must be relocatable), then, by MODE:
 #   embed      builds samples/embed against it and runs it under synchronization validation with the
-#              graphics and the compute raster (it fails on any validation message and must write a PNG)
+#              graphics and the compute raster (it fails on any validation message and must write a PNG),
+#              and once failing with frames in flight (--fail-at-frame: exit 1, its error, no PNG, no message)
 #   hello      builds samples/hello_hair against it, runs it under validation, checks its PNG
 #   consumers  builds tests/package/consumers (a -fno-exceptions consumer and one with glm's macros set
 #              the other way from hairpipe's internals), with CMake's FindVulkan disabled (the package needs
@@ -44,6 +45,15 @@ case $mode in
       "$work/embed/hairpipe_embed" --validation --frames 4 --raster $raster --out "$work/embed_$raster.png"
       [ -s "$work/embed_$raster.png" ] || { echo "no PNG written ($raster)" >&2; exit 1; }
     done
+    # An application failing with frames in flight: hairpipe's objects go while it unwinds, after its wait for
+    # the device (a destroyed object still in use is a validation message); exit status 1, its error, no PNG.
+    if "$work/embed/hairpipe_embed" --validation --frames 6 --raster compute --fail-at-frame 2 \
+        --out "$work/embed_failed.png" > "$work/embed_failed.out" 2>&1; then
+      echo "hairpipe_embed --fail-at-frame 2 succeeded" >&2; exit 1
+    fi
+    grep -q "error: the application failed at frame 2" "$work/embed_failed.out" &&
+      ! grep -q "validation" "$work/embed_failed.out" && [ ! -e "$work/embed_failed.png" ] ||
+      { cat "$work/embed_failed.out" >&2; echo "hairpipe_embed did not fail cleanly at frame 2" >&2; exit 1; }
     ;;
   hello)
     configure_and_build "$src/samples/hello_hair" "$work/hello"
