@@ -24,6 +24,13 @@ void validateAttachmentFormats(const hairpipe::AttachmentFormats& formats) {
   const auto samples = std::uint32_t(formats.samples);
   if (samples == 0 || samples > 16 || !std::has_single_bit(samples))
     throw Error(field + "samples must be 1, 2, 4, 8 or 16, got " + std::to_string(samples));
+  if (formats.otherColors.size() > kMaxOtherColors)
+    throw Error(field + "otherColors holds at most " + std::to_string(kMaxOtherColors) + " formats, got " +
+                std::to_string(formats.otherColors.size()));
+  for (std::size_t i = 0; i < formats.otherColors.size(); ++i)
+    if (formats.otherColors[i] == VK_FORMAT_UNDEFINED || isDepthFormat(formats.otherColors[i]))
+      throw Error(field + "otherColors[" + std::to_string(i) + "] must be a colour format, got " +
+                  formatText(formats.otherColors[i]));
 }
 
 void requireAttachmentSupport(const Context& ctx, const hairpipe::AttachmentFormats& formats, bool sampledDepth) {
@@ -41,7 +48,17 @@ void requireAttachmentSupport(const Context& ctx, const hairpipe::AttachmentForm
   if ((features(formats.depth) & depthNeeds) != depthNeeds)
     throw Error("RendererSettings.formats.depth: " + formatText(formats.depth) + " is not a depth attachment" +
                 (sampledDepth ? " the compute raster can sample" : "") + " on " + device);
+  for (std::size_t i = 0; i < formats.otherColors.size(); ++i)
+    if ((features(formats.otherColors[i]) & VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT) == 0)
+      throw Error("RendererSettings.formats.otherColors[" + std::to_string(i) + "]: " + formatText(formats.otherColors[i]) +
+                  " is not a colour attachment on " + device);
   const VkPhysicalDeviceLimits& limits = ctx.properties().limits;
+  if (1 + formats.otherColors.size() > limits.maxColorAttachments)
+    throw Error("RendererSettings.formats.otherColors: " + std::to_string(1 + formats.otherColors.size()) +
+                " colour attachments in all, more than the " + std::to_string(limits.maxColorAttachments) + " of " + device);
+  if (!formats.otherColors.empty() && !ctx.independentBlend())
+    throw Error("RendererSettings.formats.otherColors: the device's independentBlend feature is not enabled on " + device +
+                " (hairpipe leaves the other attachments unwritten while it blends into the first)");
   const VkSampleCountFlags counts = limits.framebufferColorSampleCounts & limits.framebufferDepthSampleCounts &
                                     (formats.stencil != VK_FORMAT_UNDEFINED ? limits.framebufferStencilSampleCounts : ~0u) &
                                     (sampledDepth ? limits.sampledImageDepthSampleCounts : ~0u);
@@ -53,6 +70,8 @@ void requireAttachmentSupport(const Context& ctx, const hairpipe::AttachmentForm
 
 void setApplicationAttachments(GraphicsPipelineDesc& desc, const hairpipe::AttachmentFormats& formats) {
   desc.colorFormats = {formats.color};
+  desc.colorFormats.insert(desc.colorFormats.end(), formats.otherColors.begin(), formats.otherColors.end());
+  desc.writtenColors = 1;  // the others are the application's, untouched
   desc.depthFormat = formats.depth;
   desc.stencilFormat = formats.stencil;
   desc.depthCompare = formats.reversedDepth ? VK_COMPARE_OP_GREATER_OR_EQUAL : VK_COMPARE_OP_LESS_OR_EQUAL;

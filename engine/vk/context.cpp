@@ -89,6 +89,7 @@ std::unique_ptr<Context> Context::adopt(const ExternalDevice& external) {
   ctx->queue_ = external.queue;
   ctx->queueFamily_ = external.queueFamily;
   ctx->debugUtils_ = external.debugUtilsEnabled;
+  ctx->independentBlend_ = external.independentBlendEnabled;
   ctx->checkAdopted();
   ctx->finishSetup();
   return ctx;
@@ -160,6 +161,10 @@ void Context::createDevice(const ContextOptions& options) {
   v13.dynamicRendering = VK_TRUE;
   v13.synchronization2 = VK_TRUE;
   VkPhysicalDeviceFeatures2 features{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &v13};
+  VkPhysicalDeviceFeatures available{};
+  vkGetPhysicalDeviceFeatures(physical_, &available);
+  features.features.independentBlend = available.independentBlend;  // for AttachmentFormats::otherColors
+  independentBlend_ = available.independentBlend == VK_TRUE;
   std::vector<const char*> extensions;
   for (const auto& e : options.deviceExtensions) {
     if (!deviceExtensionAvailable(physical_, e))

@@ -69,6 +69,9 @@ class Context {
   const VkPhysicalDeviceMemoryProperties& memoryProperties() const { return memory_; }
   bool timestampsSupported() const { return timestampsSupported_; }
   bool validationEnabled() const { return validation_; }
+  // The device has the independentBlend feature enabled (headless: where it has it; adopted: as the
+  // application says), which AttachmentFormats::otherColors needs.
+  bool independentBlend() const { return independentBlend_; }
   ValidationLog& validationLog() { return *log_; }
   // Shared so a test can still read messages reported while the device is destroyed.
   std::shared_ptr<ValidationLog> sharedValidationLog() const { return log_; }
@@ -122,6 +125,7 @@ class Context {
   VkPhysicalDeviceMemoryProperties memory_{};
   bool ownsDevice_ = false;
   bool debugUtils_ = false;
+  bool independentBlend_ = false;
   bool validation_ = false;
   bool timestampsSupported_ = false;
   std::shared_ptr<ValidationLog> log_ = std::make_shared<ValidationLog>();

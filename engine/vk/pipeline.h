@@ -76,7 +76,10 @@ struct GraphicsPipelineDesc {
   VkFormat stencilFormat = VK_FORMAT_UNDEFINED;  // the rendering's stencil attachment (none: UNDEFINED)
   VkCompareOp depthCompare = VK_COMPARE_OP_LESS_OR_EQUAL;  // with depthTest
   VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
-  BlendMode blend = BlendMode::None;  // applied to every color attachment
+  BlendMode blend = BlendMode::None;  // applied to the written colour attachments
+  // The first writtenColors colour attachments are written (with `blend`); the rest keep what they hold
+  // (write mask 0; needs the independentBlend feature).
+  std::uint32_t writtenColors = ~0u;
   bool depthTest = false;
   bool depthWrite = false;
   bool alphaToCoverage = false;

@@ -18,8 +18,8 @@
 using hp::test::VulkanTest;
 
 namespace {
-constexpr VkExtent2D kExtent{64, 48};
-constexpr float kFov = 0.8f;
+constexpr VkExtent2D kVariantExtent{64, 48};
+constexpr float kVariantFov = 0.8f;
 // The fixed fibre's largest radiance difference from the run-time form's (lavapipe: 0, the same arithmetic);
 // every two fibres' images differ by more than 10x this (the closest, paper and float lookups: 0.0039).
 constexpr double kSame = 1e-4;
@@ -84,8 +84,8 @@ TEST(ShadeVariant, TakesTheLightLoopAndTheFibreTheFrameAndParametersGive) {
 }
 
 TEST_F(VulkanTest, AFibreCompiledIntoTheShadePassShadesAsTheRunTimeForm) {
-  const hp::CameraMatrices camera = hp::test::rigCamera(kExtent, kFov);
-  auto buffers = hp::test::makePixelStrands(*ctx, camera, kExtent, fan(), 6);
+  const hp::CameraMatrices camera = hp::test::rigCamera(kVariantExtent, kVariantFov);
+  auto buffers = hp::test::makePixelStrands(*ctx, camera, kVariantExtent, fan(), 6);
   struct Case {
     hp::LutMode mode;
     hp::render::Scattering scattering;
@@ -99,9 +99,9 @@ TEST_F(VulkanTest, AFibreCompiledIntoTheShadePassShadesAsTheRunTimeForm) {
   std::vector<std::vector<glm::vec4>> images;
   for (const Case& c : cases) {
     hp::render::LookSettings look;
-    look.strandWidth = 2.0f * std::tan(0.5f * camera.fovY) / float(kExtent.height);  // one pixel at unit depth
+    look.strandWidth = 2.0f * std::tan(0.5f * camera.fovY) / float(kVariantExtent.height);  // one pixel at unit depth
     look.scattering = c.scattering;
-    hp::test::RasterRig rig(*ctx, *buffers, kExtent, camera, look, hp::LightSpec{}, {}, c.mode);
+    hp::test::RasterRig rig(*ctx, *buffers, kVariantExtent, camera, look, hp::LightSpec{}, {}, c.mode);
     rig.run();
     const auto runTime = rig.image();
     const hp::compute::ShadeVariant variant = hp::compute::shadeVariantOf(rig.frame, rig.marschner.params());

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <iostream>
 
+#include "engine/core/error.h"
 #include "engine/vk/transfer.h"
 #include "samples/tools/image_compare.h"
 #include "samples/tools/render_job.h"
@@ -121,7 +122,7 @@ TEST(ShadingSpacing, IsCheckedByName) {
     try {
       s.validate();
       ADD_FAILURE() << "shadingSpacing " << bad << " was accepted";
-    } catch (const Error& e) {
+    } catch (const hp::Error& e) {
       EXPECT_NE(std::string(e.what()).find("shadingSpacing"), std::string::npos) << e.what();
     }
   }

@@ -41,6 +41,9 @@ struct DeviceHandles {  // an application's device, which stays the application'
   std::uint32_t queueFamily = 0;
   VkQueue queue = VK_NULL_HANDLE;
   bool debugUtilsEnabled = false;  // the instance has VK_EXT_debug_utils: hairpipe names its objects
+  // The device was created with VkPhysicalDeviceFeatures::independentBlend: needed for
+  // AttachmentFormats::otherColors (hairpipe leaves them unwritten while it blends into the first colour).
+  bool independentBlendEnabled = false;
 };
 
 struct HeadlessOptions {

@@ -35,7 +35,8 @@
 //       RendererSettings::applicationOccluders it may draw its occluders into the heads' depth map before
 //       recordDraw (Renderer::occluderTargets lists the barriers).
 //   recordDraw(cmd, frame, view, instances)   inside the application's vkCmdBeginRendering (dynamic
-//       rendering, begun by the application) whose attachments have RendererSettings::formats and cover
+//       rendering, begun by the application) whose attachments have RendererSettings::formats (its colour,
+//       then formats.otherColors, which hairpipe leaves unwritten) and cover
 //       view.extent from (0, 0): colour in COLOR_ATTACHMENT_OPTIMAL, depth in DEPTH_ATTACHMENT_OPTIMAL or
 //       DEPTH_STENCIL_ATTACHMENT_OPTIMAL, a stencil attachment exactly where formats.stencil names one
 //       (the depth's combined image; hairpipe neither tests nor writes stencil). Depth convention: test

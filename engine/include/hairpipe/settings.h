@@ -38,6 +38,12 @@ struct AttachmentFormats {  // the application's attachments recordDraw / record
   // reversed-Z, cleared to 0, nearer is larger (GREATER_OR_EQUAL), and each View::projection maps the near
   // plane to 1 (Camera::reversedDepth makes one; a far plane at infinity is fine).
   bool reversedDepth = false;
+  // The rendering's further colour attachments after `color`, in attachment order (locations 1, 2, ...: an
+  // engine's velocity or normal target in its main pass), each a colour format, at most 7 and together with
+  // `color` at most the device's maxColorAttachments. hairpipe's draws leave them as they are (colour write
+  // mask 0), so its pipelines match a pass that renders into them too. With any, the device must have the
+  // independentBlend feature enabled (a headless Context enables it where the device has it).
+  std::vector<VkFormat> otherColors;
 };
 
 // The opacity shadow maps the Renderer shares among its instances (one light).
