@@ -109,6 +109,13 @@ void Context::checkAdopted() const {
   const VkQueueFlags needed = VK_QUEUE_GRAPHICS_BIT | VK_QUEUE_COMPUTE_BIT;
   if (queueFamily_ >= count || (families[queueFamily_].queueFlags & needed) != needed)
     throw Error("Context::adopt: queue family " + std::to_string(queueFamily_) + " does not support graphics and compute");
+  if (independentBlend_) {
+    VkPhysicalDeviceFeatures available{};
+    vkGetPhysicalDeviceFeatures(physical_, &available);
+    if (!available.independentBlend)
+      throw Error(std::string("Context::adopt: DeviceHandles::independentBlendEnabled is set, but ") + props.deviceName +
+                  " has no independentBlend feature");
+  }
   if (!computeSubgroupOperations(physical_))
     throw Error(std::string("Context::adopt: ") + props.deviceName + " lacks " + requirements().subgroups);
   if (!fn_.vkCmdPipelineBarrier2 || !fn_.vkCmdBeginRendering || !fn_.vkQueueSubmit2)

@@ -531,12 +531,13 @@ void renderFrames(App& app, std::uint32_t frames, hairpipe::RasterMode raster) {
       app.submit(slot);
       app.failIfAsked(f);  // with frames in flight
     }
+    for (std::uint32_t slot = 0; slot < kFramesInFlight; ++slot) app.waitSlot(slot);
   } catch (...) {
-    // hairpipe's objects go while this unwinds: the frames in flight that use them must be done first.
-    vkDeviceWaitIdle(app.device);
+    // hairpipe's objects go while this unwinds: the frames in flight that use them must be done first
+    // (a lost device needs no wait; its error is the one rethrown).
+    if (vkDeviceWaitIdle(app.device) != VK_SUCCESS) std::cerr << "hairpipe_embed: vkDeviceWaitIdle failed while unwinding\n";
     throw;
   }
-  for (std::uint32_t slot = 0; slot < kFramesInFlight; ++slot) app.waitSlot(slot);
 }  // hairpipe (the inset's raster target, instances, renderer, context) is destroyed here, before the device
 // [embed-readme-end]
 

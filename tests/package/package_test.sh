@@ -47,10 +47,10 @@ case $mode in
     done
     # An application failing with frames in flight: hairpipe's objects go while it unwinds, after its wait for
     # the device (a destroyed object still in use is a validation message); exit status 1, its error, no PNG.
-    if "$work/embed/hairpipe_embed" --validation --frames 6 --raster compute --fail-at-frame 2 \
-        --out "$work/embed_failed.png" > "$work/embed_failed.out" 2>&1; then
-      echo "hairpipe_embed --fail-at-frame 2 succeeded" >&2; exit 1
-    fi
+    status=0
+    "$work/embed/hairpipe_embed" --validation --frames 6 --raster compute --fail-at-frame 2 \
+      --out "$work/embed_failed.png" > "$work/embed_failed.out" 2>&1 || status=$?
+    [ "$status" -eq 1 ] || { cat "$work/embed_failed.out" >&2; echo "hairpipe_embed --fail-at-frame 2 exited with $status, not 1" >&2; exit 1; }
     grep -q "error: the application failed at frame 2" "$work/embed_failed.out" &&
       ! grep -q "validation" "$work/embed_failed.out" && [ ! -e "$work/embed_failed.png" ] ||
       { cat "$work/embed_failed.out" >&2; echo "hairpipe_embed did not fail cleanly at frame 2" >&2; exit 1; }

@@ -33,8 +33,10 @@ const VkClearColorValue kOtherClears[] = {{{3.0f, -2.0f, 0.0f, 0.0f}}, {{0.2f, 0
 const std::uint16_t kVelocityClear[2] = {0x4200, 0xC000};
 const std::uint8_t kNormalClear[4] = {51, 102, 204, 255};
 
-hp::vk::Image attachmentImage(const hp::vk::Context& ctx, VkFormat format, VkImageUsageFlags usage, const std::string& name) {
+hp::vk::Image attachmentImage(const hp::vk::Context& ctx, VkFormat format, VkImageUsageFlags usage, const std::string& name,
+                              VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT) {
   hp::vk::ImageDesc d;
+  d.samples = samples;
   d.width = hp::test::kSmallWidth;
   d.height = hp::test::kSmallHeight;
   d.format = format;
@@ -44,21 +46,29 @@ hp::vk::Image attachmentImage(const hp::vk::Context& ctx, VkFormat format, VkIma
 }
 
 // One frame of the small front view (500 strands) drawn into the application's colour, depth and, with
-// `others`, its other colour attachments. Returns every colour attachment's bytes, the first colour first.
-std::vector<std::vector<std::byte>> drawFrame(const hp::vk::Context& ctx, hp::RasterMode raster, bool others) {
+// `others`, its other colour attachments, of `samples` samples (multisampled: each colour resolved by the
+// last rendering). Returns every colour attachment's bytes (resolved), the first colour first.
+std::vector<std::vector<std::byte>> drawFrame(const hp::vk::Context& ctx, hp::RasterMode raster, bool others,
+                                              VkSampleCountFlagBits samples) {
   hp::RendererSettings s;
-  s.formats = {kColor, kDepth, VK_SAMPLE_COUNT_1_BIT};
+  s.formats = {kColor, kDepth, samples};
   if (others) s.formats.otherColors = kOthers;
   s.raster = raster;
   s.opacity.resolution = 256;
   hp::Renderer renderer(ctx, s);
   auto hair = renderer.createInstance(hp::test::defaultHeadWithStrands(500), {});
   hp::HairInstance* one[] = {hair.get()};
-  std::vector<hp::vk::Image> colors;
-  colors.push_back(attachmentImage(ctx, kColor, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT, "colour"));
-  for (std::size_t i = 0; others && i < kOthers.size(); ++i)
-    colors.push_back(attachmentImage(ctx, kOthers[i], VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT, "other " + std::to_string(i)));
-  const hp::vk::Image depth = attachmentImage(ctx, kDepth, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT, "depth");
+  const bool msaa = samples != VK_SAMPLE_COUNT_1_BIT;
+  std::vector<VkFormat> formats = {kColor};
+  if (others) formats.insert(formats.end(), kOthers.begin(), kOthers.end());
+  std::vector<hp::vk::Image> colors, resolved;
+  for (std::size_t i = 0; i < formats.size(); ++i) {
+    const std::string name = i == 0 ? "colour" : "other " + std::to_string(i);
+    colors.push_back(attachmentImage(ctx, formats[i], VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT, name, samples));
+    if (msaa) resolved.push_back(attachmentImage(ctx, formats[i], VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT, name + " resolved"));
+  }
+  const hp::vk::Image depth = attachmentImage(ctx, kDepth, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
+                                              "depth", samples);
   const bool compute = raster == hp::RasterMode::Compute;
   if (compute) renderer.setRasterTarget(depth.extent(), depth.view(), one);
   const hp::View view = hp::test::smallFrontView();
@@ -66,6 +76,9 @@ std::vector<std::vector<std::byte>> drawFrame(const hp::vk::Context& ctx, hp::Ra
     renderer.recordUpdate(cmd, 0, one);
     renderer.recordShadows(cmd, 0, hp::LightSpec{}, one);
     std::vector<VkRenderingAttachmentInfo> attachments;
+    for (const hp::vk::Image& r : resolved)
+      hp::vk::imageBarrier(ctx, cmd, r.handle(), VK_IMAGE_ASPECT_COLOR_BIT, hp::vk::ImageUse::Undefined,
+                           hp::vk::ImageUse::ColorAttachment);
     for (std::size_t i = 0; i < colors.size(); ++i) {
       hp::vk::imageBarrier(ctx, cmd, colors[i].handle(), VK_IMAGE_ASPECT_COLOR_BIT, hp::vk::ImageUse::Undefined,
                            hp::vk::ImageUse::ColorAttachment);
@@ -76,6 +89,15 @@ std::vector<std::vector<std::byte>> drawFrame(const hp::vk::Context& ctx, hp::Ra
                          hp::vk::ImageUse::DepthAttachment);
     VkRenderingAttachmentInfo depthInfo = hp::vk::depthAttachment(depth.view(), VK_ATTACHMENT_LOAD_OP_CLEAR,
                                                                    VK_ATTACHMENT_STORE_OP_STORE);
+    // The last rendering resolves each multisampled colour (the average of its samples).
+    const auto resolveInLastRendering = [&] {
+      for (std::size_t i = 0; i < resolved.size(); ++i) {
+        attachments[i].resolveMode = VK_RESOLVE_MODE_AVERAGE_BIT;
+        attachments[i].resolveImageView = resolved[i].view();
+        attachments[i].resolveImageLayout = hp::vk::imageLayout(hp::vk::ImageUse::ColorAttachment);
+      }
+    };
+    if (!compute) resolveInLastRendering();
     VkRenderingInfo info{VK_STRUCTURE_TYPE_RENDERING_INFO};
     info.renderArea = {{0, 0}, depth.extent()};
     info.layerCount = 1;
@@ -96,13 +118,15 @@ std::vector<std::vector<std::byte>> drawFrame(const hp::vk::Context& ctx, hp::Ra
                              hp::vk::ImageUse::ColorAttachment);
       for (VkRenderingAttachmentInfo& a : attachments) a.loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;
       depthInfo.loadOp = VK_ATTACHMENT_LOAD_OP_LOAD;
+      resolveInLastRendering();
       ctx.fn().vkCmdBeginRendering(cmd, &info);
       renderer.recordComposite(cmd, depth.extent());
       ctx.fn().vkCmdEndRendering(cmd);
     }
   }, "other colour attachments");
   std::vector<std::vector<std::byte>> bytes;
-  for (const hp::vk::Image& c : colors) bytes.push_back(hp::vk::readbackImage(ctx, c, hp::vk::ImageUse::ColorAttachment));
+  for (const hp::vk::Image& c : msaa ? resolved : colors)
+    bytes.push_back(hp::vk::readbackImage(ctx, c, hp::vk::ImageUse::ColorAttachment));
   return bytes;
 }
 
@@ -115,11 +139,14 @@ std::size_t texelsChanged(const std::vector<std::byte>& bytes, const void* clear
 }
 }  // namespace
 
+// Single-sampled and with 4 samples (the default: the ribbons' sample masks, the composite's two draws).
 TEST_F(VulkanTest, OtherColorAttachmentsAreLeftAsTheApplicationClearedThem) {
+  for (const VkSampleCountFlagBits samples : {VK_SAMPLE_COUNT_1_BIT, VK_SAMPLE_COUNT_4_BIT})
   for (const hp::RasterMode raster : {hp::RasterMode::Graphics, hp::RasterMode::Compute}) {
-    SCOPED_TRACE(raster == hp::RasterMode::Compute ? "compute raster" : "graphics raster");
-    const auto alone = drawFrame(*ctx, raster, false);
-    const auto withOthers = drawFrame(*ctx, raster, true);
+    SCOPED_TRACE(std::string(raster == hp::RasterMode::Compute ? "compute raster, " : "graphics raster, ") +
+                 std::to_string(int(samples)) + " sample(s)");
+    const auto alone = drawFrame(*ctx, raster, false, samples);
+    const auto withOthers = drawFrame(*ctx, raster, true, samples);
     ASSERT_EQ(withOthers.size(), 3u);
     // The first colour as drawn alone: the head and hair drawn over a tenth of the frame at least.
     const std::uint16_t background[4] = {};
