@@ -32,7 +32,7 @@ Renderer::Renderer(const vk::Context& ctx, const RendererSettings& settings)
       frameLights_(settings.framesInFlight) {}
 
 // Retired instances go while every member is alive: their destructors tell the Renderer (forgetInstance).
-// The raster target first: it refers to instances, and nothing may draw from it any more.
+// The raster targets first: they refer to instances, and nothing may draw from them any more.
 Renderer::~Renderer() {
   for (const std::weak_ptr<RasterTarget>& weak : targets_)
     if (const std::shared_ptr<RasterTarget> target = weak.lock()) target->raster_.reset();
@@ -135,8 +135,8 @@ void Renderer::destroyRasterTarget(const std::shared_ptr<RasterTarget>& target) 
   std::erase_if(targets_, [&](const std::weak_ptr<RasterTarget>& t) { return t.lock() == target; });
 }
 
-// Every target holding the instance is rebuilt without trying the others' rebuilds less: a failure leaves its
-// own target empty and is thrown once all were tried.
+// Every target holding the instance is rebuilt, each on its own: a failed rebuild leaves that target empty,
+// the others are still rebuilt, and the first failure is thrown once all were tried.
 void Renderer::instanceChanged(const HairInstance& instance, bool removed) {
   std::exception_ptr failure;
   forEachTarget([&](RasterTarget& target) {

@@ -11,8 +11,8 @@
 // complete, and it submits frames in order on one queue. Setters may be called between frames while
 // earlier ones are in flight: what the GPU may still read is retired and destroyed framesInFlight frames
 // later by a record call, never by waiting on the device. After the first recorded frame, the device
-// work of a change (setMaterial, setDensity, createInstance, setRasterTarget, createRasterTarget: uploads of new tables and
-// buffers) makes no submission and no wait on the application's queue: it is recorded into the next
+// work of a change (setMaterial, setDensity, createInstance, setRasterTarget, createRasterTarget: uploads of
+// new tables and buffers) makes no submission and no wait on the application's queue: it is recorded into the next
 // recordUpdate or recordShadows (executed commands, outside any rendering, in TRANSFER and the shader
 // stages), so those two need a primary command buffer with no query active (vkCmdExecuteCommands). A
 // change between recordUpdate and recordShadows of one frame runs in recordShadows, after that frame's
@@ -66,11 +66,11 @@
 //      hair over the colour (multisampled: per sample, with the coverage recordRaster took from the
 //      heads' depth samples).
 // Calls that submit to the context's queue and wait for it: Renderer::create, always; createInstance,
-// Instance::setMaterial (a new material's tables), Instance::setDensity, setRasterTarget and createRasterTarget
-// until that Renderer's first recorded frame. From then on none of these five submits or waits (their device work goes
-// into the next recordUpdate or recordShadows, above), and no record call ever does.
-// Threads: a Context and everything made on it (its Renderers and their Instances) are used by one thread at
-// a time; none of these calls is synchronized against another on the same Context (they share its command
+// Instance::setMaterial (a new material's tables), Instance::setDensity, setRasterTarget and
+// createRasterTarget until that Renderer's first recorded frame. From then on none of these five submits or
+// waits (their device work goes into the next recordUpdate or recordShadows, above), and no record call ever does.
+// Threads: a Context and everything made on it (its Renderers, their Instances and RasterTargets) are used by
+// one thread at a time; none of these calls is synchronized against another on the same Context (they share its command
 // pool and upload batch). Objects of different Contexts may be used on different threads at once, except that
 // creating a Context (adopt, createHeadless) and unfitReasons load the process's Vulkan entry points and must
 // not overlap any other hairpipe call. A new material's tables are built on hairpipe's own worker thread
