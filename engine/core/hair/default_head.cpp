@@ -6,7 +6,7 @@
 #include "engine/core/hair/head_mesh.h"
 #include "engine/core/hair/head_sdf.h"
 #include "engine/core/hair/level_set_mesh.h"
-#include "engine/core/hair/mesh_simplify.h"
+#include "engine/core/hair/mesh_simplify_cache.h"
 #include "engine/core/hair/parallel_for.h"
 
 namespace hp {
@@ -130,7 +130,7 @@ HeadMesh makeDefaultHeadMesh(const NarrowBandGrid& field) {
 }
 
 HeadMesh simplifyDefaultHeadMesh(const HeadMesh& marked) {
-  return simplifyMesh(marked, {kDefaultHeadMeshError, kDefaultHeadMeshNormalDegrees});
+  return simplifyMeshCached(DiskCache::process(), marked, {kDefaultHeadMeshError, kDefaultHeadMeshNormalDegrees});
 }
 
 HairAsset buildDefaultHeadAsset(const GrowthOptions& growth, const DensityOptions& density) {

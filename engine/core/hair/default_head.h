@@ -41,7 +41,8 @@ ScalpMesh makeDefaultScalp(std::uint32_t sphereSamples = 5000);
 // marching-cubes mesh of it on every kDefaultHeadMeshStride-th node (scalp not marked).
 NarrowBandGrid makeDefaultHeadField();
 HeadMesh makeDefaultHeadMesh(const NarrowBandGrid& field);
-// The render mesh the default head draws: the marching-cubes mesh, its scalp marked, simplified.
+// The render mesh the default head draws: the marching-cubes mesh, its scalp marked, simplified (through the
+// process's disk cache, HAIRPIPE_CACHE_DIR, when it has one).
 HeadMesh simplifyDefaultHeadMesh(const HeadMesh& marked);
 
 HairAsset buildDefaultHeadAsset(const GrowthOptions& growth = defaultHeadGrowth(),

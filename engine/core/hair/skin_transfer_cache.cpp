@@ -5,6 +5,7 @@
 #include <span>
 
 #include "engine/core/byte_stream.h"
+#include "engine/core/hair/head_mesh_bytes.h"
 #include "engine/core/hair/skin_transfer.h"
 #include "shaders/shared/render.h"
 
@@ -18,10 +19,7 @@ constexpr const char* kTransferKind = "skin-transfer";
 // The whole mesh (a 64-bit fingerprint could collide) and the options the transfer is computed with.
 std::vector<std::byte> diskKey(const HeadMesh& mesh) {
   ByteWriter out;
-  out.putVector(mesh.positions);
-  out.putVector(mesh.normals);
-  out.putVector(mesh.indices);
-  out.putVector(mesh.scalp);
+  writeHeadMesh(out, mesh);
   const SkinTransferOptions options;
   out.put(options.raysPerVertex);
   out.put(options.smoothingPasses);

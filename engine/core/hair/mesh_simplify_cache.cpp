@@ -1,0 +1,47 @@
+#include "engine/core/hair/mesh_simplify_cache.h"
+
+#include <optional>
+#include <vector>
+
+#include "engine/core/byte_stream.h"
+#include "engine/core/error.h"
+#include "engine/core/hair/head_mesh_bytes.h"
+
+namespace hp {
+namespace {
+constexpr const char* kKind = "simplified-mesh";
+
+// The whole source mesh (a 64-bit fingerprint could collide) and the options.
+std::vector<std::byte> keyOf(const HeadMesh& mesh, const SimplifyOptions& options) {
+  ByteWriter key;
+  writeHeadMesh(key, mesh);
+  key.put(options.maxError);
+  key.put(options.maxNormalDegrees);
+  key.put(options.targetTriangles);
+  return key.take();
+}
+
+// The mesh an entry holds, if it decodes whole into a well-formed one.
+std::optional<HeadMesh> decoded(std::span<const std::byte> bytes) {
+  try {
+    ByteReader in(bytes, "simplified mesh entry");
+    HeadMesh mesh = readHeadMesh(in);
+    if (in.atEnd()) return mesh;
+  } catch (const Error&) {
+  }
+  return std::nullopt;
+}
+}  // namespace
+
+HeadMesh simplifyMeshCached(const DiskCache& disk, const HeadMesh& mesh, const SimplifyOptions& options) {
+  if (!disk.enabled()) return simplifyMesh(mesh, options);
+  const std::vector<std::byte> key = keyOf(mesh, options);
+  if (const std::optional<std::vector<std::byte>> value = disk.load(kKind, key))
+    if (std::optional<HeadMesh> kept = decoded(*value)) return std::move(*kept);
+  HeadMesh simplified = simplifyMesh(mesh, options);
+  ByteWriter value;
+  writeHeadMesh(value, simplified);
+  disk.store(kKind, key, value.bytes());
+  return simplified;
+}
+}  // namespace hp
