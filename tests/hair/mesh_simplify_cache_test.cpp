@@ -57,13 +57,18 @@ TEST(MeshSimplifyCache, ReadsBackWhatSimplifyingGivesKeyedByTheMeshAndTheOptions
   const ino_t stored = test::inodeOf(entry);
   expectSame(simplifyMeshCached(disk, mesh, kOptions), simplified);  // read back: the entry not written again
   EXPECT_EQ(test::inodeOf(entry), stored) << "simplified again instead of read";
-  // Another bound, another entry; one scalp weight changed, another mesh and another entry.
-  expectSame(simplifyMeshCached(disk, mesh, {0.5f, 60.0f, 0}), simplifyMesh(mesh, {0.5f, 60.0f, 0}));
-  HeadMesh scalped = mesh;
+  // Each option and each array of the mesh is in the key: a change to one is another entry, simplified anew.
+  const SimplifyOptions otherOptions[] = {{0.5f, 60.0f, 0}, {0.05f, 30.0f, 0}, {0.05f, 60.0f, 150}};
+  for (const SimplifyOptions& o : otherOptions) expectSame(simplifyMeshCached(disk, mesh, o), simplifyMesh(mesh, o));
+  HeadMesh scalped = mesh, tilted = mesh, turned = mesh, moved = mesh;
   scalped.scalp[3] = 1.0f;
-  expectSame(simplifyMeshCached(disk, scalped, kOptions), simplifyMesh(scalped, kOptions));
-  EXPECT_EQ(entries(dir.path()), 3u);
-  // No cache: simplified, nothing written.
+  tilted.normals[3] = glm::normalize(glm::vec3(0.1f, 0.0f, 1.0f));
+  std::swap(turned.indices[0], turned.indices[1]);  // one triangle wound the other way
+  moved.positions[3].z += 0.01f;
+  for (const HeadMesh* m : {&scalped, &tilted, &turned, &moved})
+    expectSame(simplifyMeshCached(disk, *m, kOptions), simplifyMesh(*m, kOptions));
+  EXPECT_EQ(entries(dir.path()), 8u);
+  // No cache: simplified.
   expectSame(simplifyMeshCached(DiskCache(""), mesh, kOptions), simplified);
 }
 
@@ -78,6 +83,30 @@ TEST(MeshSimplifyCache, ADamagedEntryIsSimplifiedAgainAndReplaced) {
   expectSame(simplifyMeshCached(disk, mesh, kOptions), simplifyMesh(mesh, kOptions));
   EXPECT_NE(test::inodeOf(entry), damaged) << "the damaged entry was not replaced";
   expectSame(simplifyMeshCached(disk, mesh, kOptions), simplified);
+}
+
+// An entry whose checksum holds but whose mesh is not well formed (a value no simplification gives) is simplified
+// again and replaced, never drawn.
+TEST(MeshSimplifyCache, AnIllFormedMeshInAnEntryIsSimplifiedAgain) {
+  test::TempDir dir;
+  const DiskCache disk(dir.path());
+  const HeadMesh mesh = bumpedSheet(10);
+  ByteWriter key;  // as mesh_simplify_cache.cpp keys it: the whole mesh, then the options' fields
+  writeHeadMesh(key, mesh);
+  key.put(kOptions.maxError);
+  key.put(kOptions.maxNormalDegrees);
+  key.put(kOptions.targetTriangles);
+  HeadMesh bad = simplifyMesh(mesh, kOptions);
+  bad.indices[0] = std::uint32_t(bad.positions.size());  // out of range
+  ByteWriter value;
+  writeHeadMesh(value, bad);
+  disk.store("simplified-mesh", key.bytes(), value.bytes());
+  ASSERT_EQ(entries(dir.path()), 1u);
+  const std::filesystem::path entry = std::filesystem::directory_iterator(dir.path())->path();
+  const ino_t planted = test::inodeOf(entry);
+  expectSame(simplifyMeshCached(disk, mesh, kOptions), simplifyMesh(mesh, kOptions));
+  EXPECT_NE(test::inodeOf(entry), planted) << "the ill-formed entry was kept";
+  EXPECT_EQ(entries(dir.path()), 1u);  // the same key: that entry, replaced
 }
 
 // What an entry's bytes decode into is drawable: a mesh that is not well formed is refused by name.

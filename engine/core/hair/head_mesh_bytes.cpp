@@ -3,6 +3,8 @@
 #include <string>
 
 namespace hp {
+static_assert(sizeof(glm::vec3) == 3 * sizeof(float), "positions and normals are written as packed floats");
+
 void writeHeadMesh(ByteWriter& out, const HeadMesh& mesh) {
   out.putVector(mesh.positions);
   out.putVector(mesh.normals);

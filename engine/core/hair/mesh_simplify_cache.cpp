@@ -11,6 +11,9 @@ namespace hp {
 namespace {
 constexpr const char* kKind = "simplified-mesh";
 
+// Every field of the options is in the key; one added there must be added here too.
+static_assert(sizeof(SimplifyOptions) == 2 * sizeof(float) + sizeof(std::uint32_t));
+
 // The whole source mesh (a 64-bit fingerprint could collide) and the options.
 std::vector<std::byte> keyOf(const HeadMesh& mesh, const SimplifyOptions& options) {
   ByteWriter key;
