@@ -119,11 +119,15 @@ TEST_F(VulkanTest, TwoRasterTargetsDrawTwoViewsOfAFrameAsEachIsDrawnAlone) {
   const std::vector<std::uint8_t> sideAgain = alone.side.readDisplay();
   std::cout << "the side drawn alone twice: " << pixelsApart(sideAgain, sideAlone, 1) << " pixels apart, largest "
             << largestDifference(sideAgain, sideAlone) << " levels\n";
-  EXPECT_LE(pixelsApart(front, frontAlone, 1), frontPixels / 200);
-  EXPECT_LE(pixelsApart(side, sideAlone, 1), sidePixels / 200);
+  // The noise: 0-6 pixels of the front view and 5-89 of the side view, 6-52 between two runs of the side
+  // alone (lavapipe, 2026-11-29); the bound, 2%, is the noise's largest seen times ~3.
+  EXPECT_LE(pixelsApart(front, frontAlone, 1), frontPixels / 50);
+  EXPECT_LE(pixelsApart(side, sideAlone, 1), sidePixels / 50);
   // The comparison tells cameras apart: the side drawn alone from 4 degrees further round differs by far more.
   recordFrameZero(*ctx, alone, false, true, false, 94.0f);
-  EXPECT_GT(pixelsApart(alone.side.readDisplay(), sideAlone, 1), sidePixels / 20);
+  const std::size_t turned = pixelsApart(alone.side.readDisplay(), sideAlone, 1);
+  std::cout << "the side 4 degrees further round: " << turned << " pixels apart\n";
+  EXPECT_GT(turned, sidePixels / 10);
 }
 
 // A created target follows its instances as the Renderer's own does: rebuilt in place when one changes its
