@@ -166,9 +166,7 @@ void Renderer::forgetInstance(const HairInstance& instance) noexcept {
   for (const std::weak_ptr<RasterTarget>& weak : targets_) {
     const std::shared_ptr<RasterTarget> target = weak.lock();
     if (!target || !target->holds(&instance)) continue;
-    // As retire() keeps it (with the changes' waiting work, or for the frames in flight).
-    if (!deferred_.empty()) retiredWithDeferred_.push_back(std::move(target->raster_));
-    else retired_.push_back({lastFrame_, std::move(target->raster_)});
+    retire(std::move(target->raster_));  // only allocates: out of memory here ends the process (noexcept)
     target->raster_.reset();
   }
 }

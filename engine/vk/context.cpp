@@ -109,13 +109,9 @@ void Context::checkAdopted() const {
   const VkQueueFlags needed = VK_QUEUE_GRAPHICS_BIT | VK_QUEUE_COMPUTE_BIT;
   if (queueFamily_ >= count || (families[queueFamily_].queueFlags & needed) != needed)
     throw Error("Context::adopt: queue family " + std::to_string(queueFamily_) + " does not support graphics and compute");
-  if (independentBlend_) {
-    VkPhysicalDeviceFeatures available{};
-    vkGetPhysicalDeviceFeatures(physical_, &available);
-    if (!available.independentBlend)
-      throw Error(std::string("Context::adopt: DeviceHandles::independentBlendEnabled is set, but ") + props.deviceName +
-                  " has no independentBlend feature");
-  }
+  if (independentBlend_ && !independentBlendSupported(physical_))
+    throw Error(std::string("Context::adopt: DeviceHandles::independentBlendEnabled is set, but ") + props.deviceName +
+                " has no independentBlend feature");
   if (!computeSubgroupOperations(physical_))
     throw Error(std::string("Context::adopt: ") + props.deviceName + " lacks " + requirements().subgroups);
   if (!fn_.vkCmdPipelineBarrier2 || !fn_.vkCmdBeginRendering || !fn_.vkQueueSubmit2)
@@ -168,10 +164,8 @@ void Context::createDevice(const ContextOptions& options) {
   v13.dynamicRendering = VK_TRUE;
   v13.synchronization2 = VK_TRUE;
   VkPhysicalDeviceFeatures2 features{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &v13};
-  VkPhysicalDeviceFeatures available{};
-  vkGetPhysicalDeviceFeatures(physical_, &available);
-  features.features.independentBlend = available.independentBlend;  // for AttachmentFormats::otherColors
-  independentBlend_ = available.independentBlend == VK_TRUE;
+  independentBlend_ = independentBlendSupported(physical_);  // for AttachmentFormats::otherColors
+  features.features.independentBlend = independentBlend_ ? VK_TRUE : VK_FALSE;
   std::vector<const char*> extensions;
   for (const auto& e : options.deviceExtensions) {
     if (!deviceExtensionAvailable(physical_, e))

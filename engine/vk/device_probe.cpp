@@ -52,6 +52,12 @@ std::vector<DeviceReport> probeDevices(VkInstance instance) {
 
 DeviceRequirements requirements() { return {}; }
 
+bool independentBlendSupported(VkPhysicalDevice device) {
+  VkPhysicalDeviceFeatures features{};
+  vkGetPhysicalDeviceFeatures(device, &features);
+  return features.independentBlend == VK_TRUE;
+}
+
 bool computeSubgroupOperations(VkPhysicalDevice device) {
   VkPhysicalDeviceSubgroupProperties subgroups{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SUBGROUP_PROPERTIES};
   VkPhysicalDeviceProperties2 props{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2, &subgroups};

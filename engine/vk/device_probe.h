@@ -42,6 +42,8 @@ std::vector<std::string> unfitReasons(VkPhysicalDevice device);
 DeviceKind deviceKind(VkPhysicalDeviceType type);
 // Whether the device's compute shaders have the subgroup operations of DeviceRequirements::subgroups.
 bool computeSubgroupOperations(VkPhysicalDevice device);
+// Whether the device has the independentBlend feature (AttachmentFormats::otherColors needs it enabled).
+bool independentBlendSupported(VkPhysicalDevice device);
 
 class InstanceProbe {
  public:

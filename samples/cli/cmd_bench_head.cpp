@@ -68,7 +68,7 @@ void run(const Options& o) {
   hp::HeadMesh simplified;
   // simplifyMesh itself, not simplifyDefaultHeadMesh: that one reads HAIRPIPE_CACHE_DIR's entry when there is one.
   const Seconds simplifyS = bestSeconds(o.repeat, [&] {
-    simplified = hp::simplifyMesh(head, {hp::kDefaultHeadMeshError, hp::kDefaultHeadMeshNormalDegrees});
+    simplified = hp::simplifyMesh(head, hp::kDefaultHeadSimplify);
   });
   head = std::move(simplified);
   const Seconds totalS = gridS + meshS + scalpS + markS + simplifyS;

@@ -1,6 +1,7 @@
 #include "samples/tools/offscreen_renderer.h"
 
 #include <cstring>
+#include <string>
 
 #include "engine/core/error.h"
 #include "engine/core/shading/half_float.h"
@@ -42,16 +43,19 @@ void OffscreenRenderer::attach(HairSystem& hair) const {
   if (raster_ == RasterMode::Compute) hair.setRasterTarget(extent(), targets_.depth.view());
 }
 
-void OffscreenRenderer::attach(Renderer& renderer, std::span<HairInstance* const> instances) const {
+void OffscreenRenderer::requireCompute(const Renderer& renderer, const char* call) const {
   if (raster_ != RasterMode::Compute || renderer.raster() != RasterMode::Compute)
-    throw Error("OffscreenRenderer::attach: the renderer and this target must both use the compute raster");
+    throw Error(std::string("OffscreenRenderer::") + call + ": the renderer and this target must both use the compute raster");
+}
+
+void OffscreenRenderer::attach(Renderer& renderer, std::span<HairInstance* const> instances) const {
+  requireCompute(renderer, "attach");
   renderer.setRasterTarget(extent(), targets_.depth.view(), instances);
 }
 
 std::shared_ptr<RasterTarget> OffscreenRenderer::createTarget(Renderer& renderer,
                                                              std::span<HairInstance* const> instances) const {
-  if (raster_ != RasterMode::Compute || renderer.raster() != RasterMode::Compute)
-    throw Error("OffscreenRenderer::createTarget: the renderer and this target must both use the compute raster");
+  requireCompute(renderer, "createTarget");
   return renderer.createRasterTarget(extent(), targets_.depth.view(), instances);
 }
 
@@ -84,8 +88,7 @@ void OffscreenRenderer::record(VkCommandBuffer cmd, HairSystem& hair, const Draw
 void OffscreenRenderer::record(VkCommandBuffer cmd, Renderer& renderer, std::uint64_t frame, const View& view,
                                std::span<HairInstance* const> instances, float exposure,
                                vk::GpuProfiler* profiler, const Record& applicationDraws, RasterTarget* target) const {
-  if (raster_ != RasterMode::Compute || renderer.raster() != RasterMode::Compute)
-    throw Error("OffscreenRenderer: a Renderer frame here needs the compute raster on both");
+  requireCompute(renderer, "record");
   recordComputeScene(
       cmd,
       [&](VkCommandBuffer c) {

@@ -55,6 +55,8 @@ class OffscreenRenderer {
   LinearImage readLinear() const;
 
  private:
+  // Throws hp::Error naming `call` unless both this renderer and `renderer` use the compute raster.
+  void requireCompute(const Renderer& renderer, const char* call) const;
   void recordScene(VkCommandBuffer cmd, const std::function<void(VkCommandBuffer)>& draws) const;
   // Compute raster: heads (drawHeads, inside a rendering), raster (outside, depth sampled), composite (in a
   // rendering timed as "composite pass" by the profiler, if any).

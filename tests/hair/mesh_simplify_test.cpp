@@ -167,7 +167,7 @@ TEST(MeshSimplify, DefaultHeadStaysOnTheFieldAndItsShadingClose) {
 // Simplified here, not through the disk cache CTest gives the tests (which simplifyDefaultHeadMesh reads): the
 // same mesh as the drawn one, whether that one was simplified in this process or read from an entry.
 TEST(MeshSimplify, DefaultHeadIsDeterministic) {
-  const HeadMesh again = simplifyMesh(source().marched, {kDefaultHeadMeshError, kDefaultHeadMeshNormalDegrees});
+  const HeadMesh again = simplifyMesh(source().marched, kDefaultHeadSimplify);
   EXPECT_EQ(again.positions, source().drawn.positions);
   EXPECT_EQ(again.indices, source().drawn.indices);
 }

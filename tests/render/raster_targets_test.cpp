@@ -19,9 +19,12 @@
 #include "samples/tools/offscreen_renderer.h"
 #include "compute/renderer/renderer.h"
 #include "engine/vk/submit.h"
+#include "tests/support/rgba_luminance.h"
 #include "tests/support/small_frame.h"
 #include "tests/support/vk_fixture.h"
 
+using hp::test::largestDifference;
+using hp::test::pixelsApart;
 using hp::test::VulkanTest;
 
 namespace {
@@ -41,25 +44,6 @@ hp::View sideView(float orbitDeg = 90.0f) {
   cam.distance = 0.8f;
   cam.target = {0.0f, -0.05f, 0.0f};
   return hp::View{hp::orbitCamera(cam, float(kSideExtent.width) / kSideExtent.height), kSideExtent, false, 1};
-}
-
-// The largest difference of a channel between two RGBA8 images.
-int largestDifference(const std::vector<std::uint8_t>& a, const std::vector<std::uint8_t>& b) {
-  int largest = 0;
-  for (std::size_t i = 0; i < a.size(); ++i) largest = std::max(largest, std::abs(int(a[i]) - int(b[i])));
-  return largest;
-}
-
-// Pixels of two RGBA8 images whose channels differ by more than `levels`.
-std::size_t pixelsApart(const std::vector<std::uint8_t>& a, const std::vector<std::uint8_t>& b, int levels) {
-  std::size_t n = 0;
-  for (std::size_t px = 0; px < a.size() / 4; ++px)
-    for (int c = 0; c < 4; ++c)
-      if (std::abs(int(a[px * 4 + c]) - int(b[px * 4 + c])) > levels) {
-        ++n;
-        break;
-      }
-  return n;
 }
 
 struct TwoViews {

@@ -66,6 +66,7 @@ hp::View frontView(float targetX) {
   return hp::View{hp::orbitCamera(cam, float(kRendererWidth) / kRendererHeight), {kRendererWidth, kRendererHeight}, false, 0};
 }
 
+using hp::test::pixelsApart;
 using hp::test::rgbaLinearSum;
 
 // Sum of linear luminance over the columns [x0, x1).
@@ -74,17 +75,6 @@ double columnsLuminance(const std::vector<std::uint8_t>& rgba, std::uint32_t x0,
   for (std::uint32_t y = 0; y < kRendererHeight; ++y)
     for (std::uint32_t x = x0; x < x1; ++x) sum += rgbaLinearSum(rgba, std::size_t(y) * kRendererWidth + x);
   return sum;
-}
-
-std::size_t differingPixels(const std::vector<std::uint8_t>& a, const std::vector<std::uint8_t>& b) {
-  std::size_t n = 0;
-  for (std::size_t px = 0; px < a.size() / 4; ++px)
-    for (int c = 0; c < 4; ++c)
-      if (a[px * 4 + c] != b[px * 4 + c]) {
-        ++n;
-        break;
-      }
-  return n;
 }
 }  // namespace
 
@@ -167,11 +157,11 @@ TEST_F(VulkanTest, SeveralViewsOfOneFrameReuseItsShadows) {
   }, "two views");
   // Each view kept its own camera: the images differ, and the front view equals a frame drawn alone.
   const auto front = left.readDisplay();
-  EXPECT_GT(differingPixels(front, right.readDisplay()), std::size_t(kRendererWidth * kRendererHeight / 20));
+  EXPECT_GT(pixelsApart(front, right.readDisplay(), 0), std::size_t(kRendererWidth * kRendererHeight / 20));
   hp::vk::submitAndWait(*ctx, [&](VkCommandBuffer cmd) {
     left.record(cmd, [&](VkCommandBuffer c) { renderer.recordDraw(c, 7, a, one); }, 1.0f);
   }, "front again");
-  EXPECT_EQ(differingPixels(front, left.readDisplay()), 0u);
+  EXPECT_EQ(pixelsApart(front, left.readDisplay(), 0), 0u);
   b.index = renderer.settings().maxViewsPerFrame;
   EXPECT_THROW(renderer.recordDraw(VK_NULL_HANDLE, 7, b, one), hp::Error);
   // A frame number that goes back is refused before anything is recorded (retirement counts frames).
@@ -302,9 +292,9 @@ TEST_F(VulkanTest, ThreeFramesTwoInFlightWithAMaterialChangeEqualTheFramesRunOne
   EXPECT_GE(retiredAfterChange, 2u);
   EXPECT_EQ(retiredAtEnd, 0u);
   const auto oneAtATime = threeFrames(*ctx, 1, &retiredAfterChange, &retiredAtEnd);
-  for (std::size_t f = 0; f < 3; ++f) EXPECT_EQ(differingPixels(inFlight[f], oneAtATime[f]), 0u) << "frame " << f;
+  for (std::size_t f = 0; f < 3; ++f) EXPECT_EQ(pixelsApart(inFlight[f], oneAtATime[f], 0), 0u) << "frame " << f;
   // The change took effect in frame 3 only.
-  EXPECT_GT(differingPixels(inFlight[1], inFlight[2]), 100u);
+  EXPECT_GT(pixelsApart(inFlight[1], inFlight[2], 0), 100u);
 }
 
 namespace {
@@ -507,9 +497,9 @@ TEST_F(VulkanTest, AMaterialChangeOnTheComputeRasterRebindsItsLutsWithoutRebuild
       sumChanged += hp::test::rgbaLinearSum(changed[f], px);
       sumFromStart += hp::test::rgbaLinearSum(fromStart[f], px);
     }
-    std::cout << "frame " << f + 3 << ": " << differingPixels(changed[f], fromStart[f])
+    std::cout << "frame " << f + 3 << ": " << pixelsApart(changed[f], fromStart[f], 0)
               << " pixels differ, brightness ratio " << sumChanged / sumFromStart << "\n";
-    EXPECT_LT(differingPixels(changed[f], fromStart[f]), changed[f].size() / 4 / 100) << "frame " << f + 3;
+    EXPECT_LT(pixelsApart(changed[f], fromStart[f], 0), changed[f].size() / 4 / 100) << "frame " << f + 3;
     EXPECT_NEAR(sumChanged / sumFromStart, 1.0, 0.002) << "frame " << f + 3;
   }
 }
@@ -544,7 +534,7 @@ TEST_F(VulkanTest, TwoMaterialChangesBetweenFramesDrawTheSecond) {
   EXPECT_FALSE(hair->materialPending());
   hair->setMaterial(blonde(), hp::LutMode::Float);    // no change: nothing recorded
   const auto again = frame(2);
-  EXPECT_EQ(differingPixels(changed, again), 0u);
+  EXPECT_EQ(pixelsApart(changed, again, 0), 0u);
 }
 
 namespace {
@@ -595,14 +585,14 @@ TEST_F(VulkanTest, AMaterialChangeThatCannotApplyIsReportedAndTheFormerMaterialS
   EXPECT_FALSE(heads.hair->materialPending());
   EXPECT_NE(heads.hair->materialError().find("did not apply"), std::string::npos) << heads.hair->materialError();
   EXPECT_NE(heads.hair->materialError().find("budget"), std::string::npos) << heads.hair->materialError();
-  EXPECT_EQ(differingPixels(before, refused), 0u);
+  EXPECT_EQ(pixelsApart(before, refused, 0), 0u);
   ctx->setDeviceMemoryBudget(0);
   heads.hair->setMaterial(tinted(0.9), hp::LutMode::Float);
   EXPECT_TRUE(heads.hair->materialError().empty());
   heads.hair->waitForMaterial();
   const auto applied = heads.frame(2);
   EXPECT_TRUE(heads.hair->materialError().empty()) << heads.hair->materialError();
-  EXPECT_GT(differingPixels(before, applied), 100u);
+  EXPECT_GT(pixelsApart(before, applied, 0), 100u);
 }
 
 // Eight changes queued in the frame loop while the worker is held build one table: the first seven are
@@ -712,7 +702,7 @@ TEST_F(VulkanTest, AReversedDepthApplicationGetsTheForwardFrame) {
       forwardSum += hp::test::rgbaLinearSum(forward, px);
       reversedSum += hp::test::rgbaLinearSum(reversed, px);
     }
-    const std::size_t differing = differingPixels(forward, reversed);
+    const std::size_t differing = pixelsApart(forward, reversed, 0);
     std::cout << (raster == hp::RasterMode::Compute ? "compute" : "graphics") << " x" << samples << ": " << differing
               << " pixels differ, brightness ratio " << reversedSum / forwardSum << "\n";
     EXPECT_LT(differing, forward.size() / 4 / 100);

@@ -130,7 +130,7 @@ HeadMesh makeDefaultHeadMesh(const NarrowBandGrid& field) {
 }
 
 HeadMesh simplifyDefaultHeadMesh(const HeadMesh& marked) {
-  return simplifyMeshCached(DiskCache::process(), marked, {kDefaultHeadMeshError, kDefaultHeadMeshNormalDegrees});
+  return simplifyMeshCached(DiskCache::process(), marked, kDefaultHeadSimplify);
 }
 
 HairAsset buildDefaultHeadAsset(const GrowthOptions& growth, const DensityOptions& density) {

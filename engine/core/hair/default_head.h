@@ -11,6 +11,7 @@
 
 #include "engine/core/hair/guide_growth.h"
 #include "engine/core/hair/hair_asset.h"
+#include "engine/core/hair/mesh_simplify.h"
 #include "engine/core/hair/narrow_band.h"
 #include "engine/core/hair/scalp_mesh.h"
 #include "engine/core/hair/sdf_grid.h"
@@ -31,6 +32,7 @@ inline constexpr std::uint32_t kDefaultHeadBrick = 4;  // cells per brick side o
 inline constexpr std::uint32_t kDefaultHeadMeshStride = 1;
 inline constexpr float kDefaultHeadMeshError = 0.0005f;       // m
 inline constexpr float kDefaultHeadMeshNormalDegrees = 15.0f;
+inline constexpr SimplifyOptions kDefaultHeadSimplify{kDefaultHeadMeshError, kDefaultHeadMeshNormalDegrees, 0};
 
 // The growth options the default head uses unless a scene overrides them.
 GrowthOptions defaultHeadGrowth();

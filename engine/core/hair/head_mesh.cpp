@@ -5,7 +5,9 @@
 #include <limits>
 #include <vector>
 
+#include "engine/core/error.h"
 #include "engine/core/hair/parallel_for.h"
+#include "engine/core/number_text.h"
 
 namespace hp {
 HeadMesh makeEllipsoidMesh(const glm::vec3& center, const glm::vec3& radii, std::uint32_t slices,
@@ -130,5 +132,16 @@ void markScalp(HeadMesh& mesh, std::span<const glm::vec3> roots) {
     for (std::size_t v = chunk * kChunk; v < end; ++v)
       mesh.scalp[v] = 1.0f - glm::smoothstep(spacing, 3.0f * spacing, buckets.nearest(mesh.positions[v]));
   }, 1);
+}
+void requireMeshShape(const HeadMesh& mesh, const std::string& where) {
+  if (mesh.indices.size() % 3 != 0)
+    throw Error(where + ": " + numberText(double(mesh.indices.size())) + " indices are not whole triangles");
+  const std::string vertices = numberText(double(mesh.positions.size())) + " positions";
+  if (mesh.normals.size() != mesh.positions.size())
+    throw Error(where + ": " + numberText(double(mesh.normals.size())) + " normals for " + vertices);
+  if (!mesh.scalp.empty() && mesh.scalp.size() != mesh.positions.size())
+    throw Error(where + ": " + numberText(double(mesh.scalp.size())) + " scalp weights for " + vertices);
+  for (const std::uint32_t i : mesh.indices)
+    if (i >= mesh.positions.size()) throw Error(where + ": index " + numberText(i) + " past the " + vertices);
 }
 }  // namespace hp

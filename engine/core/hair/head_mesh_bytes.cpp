@@ -1,6 +1,6 @@
 #include "engine/core/hair/head_mesh_bytes.h"
 
-#include <string>
+#include "engine/core/hair/head_mesh.h"
 
 namespace hp {
 static_assert(sizeof(glm::vec3) == 3 * sizeof(float), "positions and normals are written as packed floats");
@@ -18,13 +18,7 @@ HeadMesh readHeadMesh(ByteReader& in) {
   mesh.normals = in.getVector<glm::vec3>("normals");
   mesh.indices = in.getVector<std::uint32_t>("indices");
   mesh.scalp = in.getVector<float>("scalp weights");
-  const std::size_t n = mesh.positions.size();
-  if (mesh.normals.size() != n || (!mesh.scalp.empty() && mesh.scalp.size() != n) || mesh.indices.size() % 3 != 0)
-    throw Error("head mesh bytes: " + std::to_string(n) + " positions with " + std::to_string(mesh.normals.size()) +
-                " normals, " + std::to_string(mesh.scalp.size()) + " scalp weights and " +
-                std::to_string(mesh.indices.size()) + " indices");
-  for (std::uint32_t i : mesh.indices)
-    if (i >= n) throw Error("head mesh bytes: index " + std::to_string(i) + " of " + std::to_string(n) + " positions");
+  requireMeshShape(mesh, "head mesh bytes");
   return mesh;
 }
 }  // namespace hp

@@ -8,6 +8,7 @@
 #include <unordered_map>
 
 #include "engine/core/error.h"
+#include "engine/core/hair/head_mesh.h"
 #include "engine/core/number_text.h"
 
 namespace hp {
@@ -17,16 +18,7 @@ void validate(const HeadMesh& mesh, const SimplifyOptions& options) {
     throw Error("simplify mesh: maxError must be finite and >= 0, got " + numberText(options.maxError));
   if (!(options.maxNormalDegrees >= 0.0f && options.maxNormalDegrees <= 180.0f))
     throw Error("simplify mesh: maxNormalDegrees must be in [0, 180], got " + numberText(options.maxNormalDegrees));
-  if (mesh.indices.size() % 3 != 0)
-    throw Error("simplify mesh: " + numberText(double(mesh.indices.size())) + " indices are not whole triangles");
-  const std::string vertices = numberText(double(mesh.positions.size())) + " positions";
-  if (mesh.normals.size() != mesh.positions.size())
-    throw Error("simplify mesh: " + numberText(double(mesh.normals.size())) + " normals for " + vertices);
-  if (!mesh.scalp.empty() && mesh.scalp.size() != mesh.positions.size())
-    throw Error("simplify mesh: " + numberText(double(mesh.scalp.size())) + " scalp weights for " + vertices);
-  for (const std::uint32_t i : mesh.indices)
-    if (i >= mesh.positions.size())
-      throw Error("simplify mesh: index " + numberText(i) + " past the " + vertices);
+  requireMeshShape(mesh, "simplify mesh");
   const auto finite = [](const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); };
   for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
     if (!finite(mesh.positions[i])) throw Error("simplify mesh: vertex " + numberText(double(i)) + " is not finite");

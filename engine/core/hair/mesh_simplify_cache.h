@@ -5,9 +5,15 @@
 // the result instead. A disabled cache, a miss, or an entry that does not decode into a well-formed mesh (normals
 // and scalp weights per position, whole triangles, indices in range) simplifies; the result is then stored.
 // Returns exactly what simplifyMesh returns.
+#include <cstddef>
+#include <vector>
+
 #include "engine/core/disk_cache.h"
 #include "engine/core/hair/mesh_simplify.h"
 
 namespace hp {
 HeadMesh simplifyMeshCached(const DiskCache& disk, const HeadMesh& mesh, const SimplifyOptions& options);
+// The entry's kind and key (tests plant entries under them).
+inline constexpr const char* kSimplifiedMeshKind = "simplified-mesh";
+std::vector<std::byte> simplifiedMeshKey(const HeadMesh& mesh, const SimplifyOptions& options);
 }  // namespace hp
