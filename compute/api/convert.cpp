@@ -58,6 +58,7 @@ hp::RendererSettings renderer(const RendererSettings& s) {
   r.maxViewsPerFrame = s.maxViewsPerFrame;
   r.shadowedLights = s.shadowedLights;
   r.motionVectors = s.motionVectors;
+  r.velocityOutput = s.velocityOutput;
   r.applicationOccluders = s.applicationOccluders;
   r.raster = raster(s.raster);
   r.rasterSettings.tileBudget = s.tileBudget;

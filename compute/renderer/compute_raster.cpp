@@ -38,7 +38,7 @@ ComputeRaster::ComputeRaster(const vk::Context& ctx, const RendererSettings& set
       pass_(ctx, sources(), extent, rasterSettingsOf(settings), std::uint32_t(settings.formats.samples), cache,
             settings.framesInFlight),
       stale_(settings.framesInFlight, std::vector<bool>(instances.size(), false)),
-      composite_(ctx, settings.formats, cache) {
+      composite_(ctx, settings.formats, settings.velocityOutput, cache) {
   pass_.setDepth(depth);
   // Each instance's fibre compiled into the shade pass, with and without the light loop (a fibre changed later,
   // in the frame loop, shades with the run-time form: compute/raster/shade_variant.h).
@@ -48,7 +48,8 @@ ComputeRaster::ComputeRaster(const vk::Context& ctx, const RendererSettings& set
     pass_.prepareShading({false, fibre});
     pass_.prepareShading({true, fibre});
   }
-  composite_.setInput(pass_.output().view(), pass_.nearOutput().view(), pass_.nearMask().view());
+  composite_.setInput(pass_.output().view(), pass_.nearOutput().view(), pass_.nearMask().view(),
+                     pass_.motionOutput().view());
 }
 
 std::vector<compute::RasterSource> ComputeRaster::sources() const {

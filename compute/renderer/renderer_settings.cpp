@@ -3,11 +3,13 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <utility>
 
 #include "engine/core/error.h"
 #include "engine/core/number_text.h"
 #include "engine/core/hair/finite.h"
 #include "engine/vk/application_attachments.h"
+#include "engine/vk/image.h"
 
 namespace hp {
 RasterMode resolveRasterMode(RasterMode mode, VkPhysicalDeviceType type) {
@@ -29,6 +31,28 @@ void RendererSettings::validate() const {
   if (shadowedLights < 1 || shadowedLights > gpu::OPACITY_MAX_LIGHTS)
     throw Error("RendererSettings.shadowedLights must be in [1, " + std::to_string(gpu::OPACITY_MAX_LIGHTS) + "], got " +
                 std::to_string(shadowedLights));
+  validateVelocityOutput(velocityOutput, formats, motionVectors);
+}
+
+void validateVelocityOutput(const hairpipe::VelocityOutput& v, const hairpipe::AttachmentFormats& formats,
+                            bool motionVectors) {
+  const std::string field = "RendererSettings.velocityOutput.";
+  const int others = int(formats.otherColors.size());
+  if (v.attachment < -1 || v.attachment >= others)
+    throw Error(field + "attachment must be -1 (none) or an index into formats.otherColors (" + std::to_string(others) +
+                " of them), got " + std::to_string(v.attachment));
+  if (v.attachment < 0) return;
+  if (!motionVectors) throw Error(field + "attachment needs RendererSettings.motionVectors: the motion it writes");
+  if (formats.otherColors[std::size_t(v.attachment)] == VK_FORMAT_UNDEFINED)
+    throw Error(field + "attachment: formats.otherColors[" + std::to_string(v.attachment) + "] is an unused slot (VK_FORMAT_UNDEFINED)");
+  if (vk::isIntegerColorFormat(formats.otherColors[std::size_t(v.attachment)]))
+    throw Error(field + "attachment: formats.otherColors[" + std::to_string(v.attachment) + "] is an integer format (VkFormat " +
+                std::to_string(int(formats.otherColors[std::size_t(v.attachment)])) + "); the motion is written as floats");
+  for (const auto& [value, name] : {std::pair{v.scaleX, "scaleX"}, {v.scaleY, "scaleY"}, {v.offsetX, "offsetX"},
+                                    {v.offsetY, "offsetY"}})
+    if (!std::isfinite(value)) throw Error(field + name + " must be finite, got " + numberText(value));
+  if (!(v.minCoverage > 0.0f && v.minCoverage <= 1.0f))
+    throw Error(field + "minCoverage must be in (0, 1], got " + numberText(v.minCoverage));
 }
 
 void InstanceSettings::validate() const {

@@ -34,6 +34,9 @@ struct RendererSettings {
   // Motion vectors: every instance keeps its previous render positions (a copy per recordUpdate) and the
   // compute raster target writes the hair's screen motion (Renderer::motionImage).
   bool motionVectors = false;
+  // hairpipe::RendererSettings::velocityOutput: the composite writes the hair's motion into one of the
+  // application's other colour attachments.
+  hairpipe::VelocityOutput velocityOutput;
   // hairpipe::RendererSettings::applicationOccluders: hair-only instances frame the heads' depth map around
   // their guides, so the application can draw its occluders into it (Renderer::occluderTargets).
   bool applicationOccluders = false;
@@ -61,6 +64,10 @@ struct InstanceSettings {
   void validate() const;
 };
 
+// hp::Error naming the field unless `v` is off (attachment -1) or names one of formats.otherColors that is not
+// an integer format, with motion vectors on, finite scales and offsets and minCoverage in (0, 1].
+void validateVelocityOutput(const hairpipe::VelocityOutput& v, const hairpipe::AttachmentFormats& formats,
+                            bool motionVectors);
 // hp::Error naming the field unless the distances are finite, 0 <= start < end, and minFraction in (0, 1].
 void validate(const hairpipe::LodSettings& lod);
 // The fraction of the strands drawn at `distance` (1 when LOD is off; see hairpipe::LodSettings).

@@ -28,8 +28,8 @@ void validateAttachmentFormats(const hairpipe::AttachmentFormats& formats) {
     throw Error(field + "otherColors holds at most " + std::to_string(kMaxOtherColors) + " formats, got " +
                 std::to_string(formats.otherColors.size()));
   for (std::size_t i = 0; i < formats.otherColors.size(); ++i)
-    if (formats.otherColors[i] == VK_FORMAT_UNDEFINED || isDepthFormat(formats.otherColors[i]))
-      throw Error(field + "otherColors[" + std::to_string(i) + "] must be a colour format, got " +
+    if (isDepthFormat(formats.otherColors[i]))
+      throw Error(field + "otherColors[" + std::to_string(i) + "] must be a colour format or VK_FORMAT_UNDEFINED, got " +
                   formatText(formats.otherColors[i]));
 }
 
@@ -49,7 +49,8 @@ void requireAttachmentSupport(const Context& ctx, const hairpipe::AttachmentForm
     throw Error("RendererSettings.formats.depth: " + formatText(formats.depth) + " is not a depth attachment" +
                 (sampledDepth ? " the compute raster can sample" : "") + " on " + device);
   for (std::size_t i = 0; i < formats.otherColors.size(); ++i)
-    if ((features(formats.otherColors[i]) & VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT) == 0)
+    if (formats.otherColors[i] != VK_FORMAT_UNDEFINED &&  // an unused slot
+        (features(formats.otherColors[i]) & VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT) == 0)
       throw Error("RendererSettings.formats.otherColors[" + std::to_string(i) + "]: " + formatText(formats.otherColors[i]) +
                   " is not a colour attachment on " + device);
   const VkPhysicalDeviceLimits& limits = ctx.properties().limits;
@@ -71,7 +72,7 @@ void requireAttachmentSupport(const Context& ctx, const hairpipe::AttachmentForm
 void setApplicationAttachments(GraphicsPipelineDesc& desc, const hairpipe::AttachmentFormats& formats) {
   desc.colorFormats = {formats.color};
   desc.colorFormats.insert(desc.colorFormats.end(), formats.otherColors.begin(), formats.otherColors.end());
-  desc.writtenColors = 1;  // the others are the application's, untouched
+  desc.writtenColors = 1u;  // the first only: the others are the application's, untouched
   desc.depthFormat = formats.depth;
   desc.stencilFormat = formats.stencil;
   desc.depthCompare = formats.reversedDepth ? VK_COMPARE_OP_GREATER_OR_EQUAL : VK_COMPARE_OP_LESS_OR_EQUAL;

@@ -16,6 +16,16 @@ bool isDepthFormat(VkFormat format) {
   return format == VK_FORMAT_D32_SFLOAT || format == VK_FORMAT_D16_UNORM || hasStencilComponent(format);
 }
 
+bool isIntegerColorFormat(VkFormat format) {
+  // The core UINT / SINT colour formats come in adjacent pairs (vulkan_core.h), from R8 to R64G64B64A64.
+  constexpr int kFirstOfPairs[] = {13, 20, 27, 34, 41, 48, 55, 62, 68, 74, 81, 88, 95, 98, 101, 104, 107, 110, 113, 116, 119};
+  static_assert(VK_FORMAT_R8_UINT == 13 && VK_FORMAT_R64G64B64A64_SINT == 120);
+  const int f = int(format);
+  for (const int first : kFirstOfPairs)
+    if (f == first || f == first + 1) return true;
+  return false;
+}
+
 std::uint32_t formatBytesPerPixel(VkFormat format) {
   switch (format) {
     case VK_FORMAT_R8G8B8A8_UNORM:

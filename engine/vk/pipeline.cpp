@@ -191,7 +191,8 @@ GraphicsPipeline::GraphicsPipeline(const Context& ctx, const GraphicsPipelineDes
   depth.depthWriteEnable = d.depthWrite ? VK_TRUE : VK_FALSE;
   depth.depthCompareOp = d.depthCompare;
   std::vector<VkPipelineColorBlendAttachmentState> blends(d.colorFormats.size(), blendState(d.blend));
-  for (std::size_t i = d.writtenColors; i < blends.size(); ++i) blends[i] = VkPipelineColorBlendAttachmentState{};
+  for (std::size_t i = 0; i < blends.size(); ++i)
+    if (i >= 32 || (d.writtenColors >> i & 1u) == 0) blends[i] = VkPipelineColorBlendAttachmentState{};
   VkPipelineColorBlendStateCreateInfo blend{VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
   blend.attachmentCount = static_cast<std::uint32_t>(blends.size());
   blend.pAttachments = blends.data();

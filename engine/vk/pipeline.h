@@ -77,8 +77,8 @@ struct GraphicsPipelineDesc {
   VkCompareOp depthCompare = VK_COMPARE_OP_LESS_OR_EQUAL;  // with depthTest
   VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
   BlendMode blend = BlendMode::None;  // applied to the written colour attachments
-  // The first writtenColors colour attachments are written (with `blend`); the rest keep what they hold
-  // (write mask 0; needs the independentBlend feature).
+  // Bit i set: colour attachment i is written (with `blend`); the others keep what they hold (write mask 0;
+  // where attachments differ so, the independentBlend feature is needed).
   std::uint32_t writtenColors = ~0u;
   bool depthTest = false;
   bool depthWrite = false;

@@ -110,10 +110,22 @@ HP_CONST(uint, COMPOSITE_BINDING_NEAR_MASK, 2)
 HP_CONST(uint, COMPOSITE_EVERY_SAMPLE, 0)  // the far layer into every sample (single-sample head depth)
 HP_CONST(uint, COMPOSITE_FAR_SAMPLES, 1)   // the far layer into the samples outside the near mask
 HP_CONST(uint, COMPOSITE_NEAR_SAMPLES, 2)  // the near layer into the near mask's samples
+// The velocity write (composite_velocity.glsl) also samples the motion image.
+HP_CONST(uint, COMPOSITE_BINDING_MOTION, 3)
 
 // raster_bin.comp's specialization constant 0.
 HP_CONST(uint, RASTER_MODE_COUNT, 1)    // per segment: count into (tile, bin) keys
 HP_CONST(uint, RASTER_MODE_SCATTER, 2)  // per segment: write ids into the tile lists
+
+// composite_velocity.glsl's push constants (hairpipe::VelocityOutput): motion * scale + offset where the hair's
+// coverage exceeds minCoverage; samples: the attachments' sample count (above 1 the coverage is the mean over
+// the pixel's samples of the two layers the composite draws).
+struct CompositeVelocityPush {
+  vec2 scale;
+  vec2 offset;
+  float minCoverage;
+  uint samples;
+};
 
 // Written by the passes each frame; the frame recorder re-arms it with vkCmdUpdateBuffer.
 struct RasterState {

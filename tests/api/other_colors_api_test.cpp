@@ -1,7 +1,8 @@
 // AttachmentFormats::otherColors through the public headers: an adopted device whose application did not
 // enable independentBlend is refused by name, one that did is taken (here: a headless context's device,
 // adopted a second time with either answer; the images drawn are checked in
-// tests/render/other_color_attachments_test.cpp).
+// tests/render/other_color_attachments_test.cpp). RendererSettings::velocityOutput reaches the Renderer: refused
+// by field where it names no attachment or the raster writes no motion, taken with the compute raster.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 #include <dlfcn.h>
@@ -41,5 +42,25 @@ TEST(OtherColorsApi, AnAdoptedDeviceMustSayItEnabledIndependentBlend) {
   }
   dlclose(loader);
   hairpipe::test::expectIdleAndSilent(*headless);
+}
+
+TEST(OtherColorsApi, AVelocityOutputNeedsOneOfTheOtherColoursAndTheComputeRastersMotion) {
+  std::optional<hairpipe::Context> context;
+  ASSERT_NO_FATAL_FAILURE(hairpipe::test::createValidatedContext(context));
+  hairpipe::RendererSettings s;
+  s.formats = {VK_FORMAT_R16G16B16A16_SFLOAT, VK_FORMAT_D32_SFLOAT, VK_SAMPLE_COUNT_1_BIT};
+  s.formats.otherColors = {VK_FORMAT_R16G16_SFLOAT};
+  s.raster = hairpipe::RasterMode::Compute;
+  s.motionVectors = true;
+  s.velocityOutput.attachment = 1;
+  EXPECT_THAT(hairpipe::Renderer::create(*context, s).message(),
+              HasSubstr("RendererSettings.velocityOutput.attachment must be -1 (none) or an index into "
+                        "formats.otherColors (1 of them), got 1"));
+  s.velocityOutput.attachment = 0;
+  const hairpipe::Result<hairpipe::Renderer> renderer = hairpipe::Renderer::create(*context, s);
+  EXPECT_TRUE(renderer.ok()) << renderer.message();
+  s.raster = hairpipe::RasterMode::Graphics;
+  EXPECT_THAT(hairpipe::Renderer::create(*context, s).message(), HasSubstr("motionVectors needs the compute raster"));
+  hairpipe::test::expectIdleAndSilent(*context);
 }
 }  // namespace

@@ -64,7 +64,8 @@
 //      composite's pipeline is made for RendererSettings::formats; it neither tests nor writes depth; the
 //      application's resolve attachments, if any, here), in which recordComposite(cmd, extent) blends the
 //      hair over the colour (multisampled: per sample, with the coverage recordRaster took from the
-//      heads' depth samples).
+//      heads' depth samples) and, with RendererSettings::velocityOutput, writes the hair's motion into that
+//      one of the other colour attachments (step 4's colour barrier then covers it too).
 // Calls that submit to the context's queue and wait for it: Renderer::create, always; createInstance,
 // Instance::setMaterial (a new material's tables), Instance::setDensity, setRasterTarget and
 // createRasterTarget until that Renderer's first recorded frame. From then on none of these five submits or

@@ -39,11 +39,27 @@ struct AttachmentFormats {  // the application's attachments recordDraw / record
   // plane to 1 (Camera::reversedDepth makes one; a far plane at infinity is fine).
   bool reversedDepth = false;
   // The rendering's further colour attachments after `color`, in attachment order (locations 1, 2, ...: an
-  // engine's velocity or normal target in its main pass), each a colour format, at most 7 and together with
-  // `color` at most the device's maxColorAttachments. hairpipe's draws leave them as they are (colour write
+  // engine's velocity or normal target in its main pass), each a colour format or VK_FORMAT_UNDEFINED for a slot
+  // the rendering leaves unused (a null image view there), at most 7 and together with `color` at most the
+  // device's maxColorAttachments. hairpipe's draws leave them as they are (colour write
   // mask 0), so its pipelines match a pass that renders into them too. With any, the device must have the
   // independentBlend feature enabled (a headless Context enables it where the device has it).
   std::vector<VkFormat> otherColors;
+};
+
+// The hair's motion written by recordComposite into the application's own velocity target, one of
+// AttachmentFormats::otherColors (compute raster with RendererSettings::motionVectors): where the hair covers a
+// pixel by more than minCoverage its motion replaces what the attachment holds there; elsewhere the attachment
+// is left as it is. The engine's temporal passes then see the hair move without a pass of their own.
+struct VelocityOutput {
+  int attachment = -1;  // index into otherColors (a float, UNORM or SNORM format, not UNDEFINED); -1: none (default)
+  // Written per pixel: (motion.x * scaleX + offsetX, motion.y * scaleY + offsetY, 0, 0), motion being
+  // Renderer::motionImage's (pixels, this frame's position minus the previous frame's, x right, y down). For
+  // example scaleX = 1 / width, scaleY = -1 / height for UV units with y up; negative scales for previous
+  // minus current; an offset of 0.5 for a UNORM target. Finite; the format clamps or rounds what it cannot hold.
+  float scaleX = 1.0f, scaleY = 1.0f;
+  float offsetX = 0.0f, offsetY = 0.0f;
+  float minCoverage = 0.5f;  // (0, 1]: the hair's coverage (the alpha recordComposite blends with) must exceed it
 };
 
 // The opacity shadow maps the Renderer shares among its instances (one light).
@@ -84,6 +100,9 @@ struct RendererSettings {
   // positions (one copy of them per recordUpdate) and the raster target writes the hair's screen motion
   // (Renderer::motionImage). The graphics raster writes none.
   bool motionVectors = false;
+  // recordComposite also writes the hair's motion into the application's velocity target (needs
+  // motionVectors and the compute raster; see VelocityOutput).
+  VelocityOutput velocityOutput;
   // The application's occluders shadow the hair (Renderer::occluderTargets): it draws its own character's depth
   // into the heads' depth shadow map after recordShadows. Instances without hairpipe's head (drawHead false,
   // or an asset without a head mesh) then frame that map around their guides, so it exists for them too: a
