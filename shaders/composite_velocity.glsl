@@ -4,7 +4,7 @@
 // the hair's coverage exceeds minCoverage, motion * scale + offset; elsewhere the fragment is discarded and the
 // attachment keeps what it holds. The coverage is the alpha the composite leaves in the pixel: over several
 // samples, the near layer's in the near mask's share of them and the far layer's in the rest (composite.frag).
-// The pipeline writes only that attachment, in every sample of the pixel.
+// The pipeline writes only that attachment's first two channels, in every sample of the pixel.
 #include "shared/raster.h"
 
 layout(binding = COMPOSITE_BINDING_HAIR) uniform sampler2D hair;

@@ -63,6 +63,7 @@ hp::RendererSettings renderer(const RendererSettings& s) {
   r.raster = raster(s.raster);
   r.rasterSettings.tileBudget = s.tileBudget;
   r.rasterSettings.shadingSpacing = s.shadingSpacing;
+  r.rasterSettings.growLists = s.growRasterLists;
   r.pipelineCache = s.pipelineCache;
   return r;
 }

@@ -50,6 +50,7 @@ std::optional<CompositePass::VelocityWrite> CompositePass::velocityWrite(const v
   desc.fragmentShader = "composite_velocity_" + std::to_string(location) + ".frag";
   vk::setApplicationAttachments(desc, formats);
   desc.writtenColors = 1u << location;  // the velocity attachment alone, replaced where the hair covers enough
+  desc.writtenComponents = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT;  // its other channels are the engine's
   desc.sets = {w.set.layout()};
   desc.pushSize = sizeof(gpu::CompositeVelocityPush);
   desc.name = "hair velocity";

@@ -144,12 +144,22 @@ void RasterSettings::validate() const {
   if (!(shadingSpacing >= 0.0f && shadingSpacing <= kMaxShadingSpacing))
     throw Error("shadingSpacing must be in [0, " + std::to_string(int(kMaxShadingSpacing)) + "] pixels, got " +
                 std::to_string(shadingSpacing));
+  if (listStartPerSegment < 1 || listStartPerSegment > 8)
+    throw Error("listStartPerSegment must be in [1, 8], got " + std::to_string(listStartPerSegment));
 }
 
 std::uint32_t rasterListCapacity(std::uint64_t segments, std::uint64_t tiles, std::uint64_t maxRangeBytes) {
   const std::uint64_t wanted = segments * 8 + tiles * 16;
   return std::uint32_t(std::clamp<std::uint64_t>(wanted, 1024, std::min<std::uint64_t>(maxRangeBytes / 8, 0xFFFFFFFFu)));
 }
+
+std::uint32_t listStartCapacity(std::uint64_t segments, std::uint64_t tiles, std::uint32_t perSegment,
+                                std::uint32_t maxCapacity) {
+  return std::uint32_t(
+      std::min<std::uint64_t>(std::max<std::uint64_t>(segments * perSegment + tiles * 16, 1024), maxCapacity));
+}
+
+std::uint64_t listNeed(const gpu::RasterState& state) { return std::uint64_t(state.entries.w) + state.entries.z; }
 
 StrandRasterPass::StrandRasterPass(const vk::Context& ctx, std::span<const RasterSource> sources, VkExtent2D extent,
                                    const RasterSettings& settings, std::uint32_t headSamples, VkPipelineCache cache,
@@ -175,7 +185,7 @@ StrandRasterPass::StrandRasterPass(const vk::Context& ctx, std::span<const Raste
   }
   const std::uint64_t tiles = std::uint64_t(tilesX_) * tilesY_;
   const std::size_t chunks = chunkCount(sources);
-  capacity_ = rasterListCapacity(segments, tiles, limit);
+  maxCapacity_ = rasterListCapacity(segments, tiles, limit);
   screen_ = rasterBuffer(ctx, vertices * 16, kTexelUsage, "screen vertices", limit);
   colors_ = rasterBuffer(ctx, vertices * 8, kTexelUsage, "vertex colours", limit);
   shadeFlags_ = rasterBuffer(ctx, vertices * 4, kArmedUsage, "shade flags", limit);
@@ -188,8 +198,9 @@ StrandRasterPass::StrandRasterPass(const vk::Context& ctx, std::span<const Raste
   tiles_ = rasterBuffer(ctx, tiles * 8, kStorageUsage, "tiles", limit);
   tileDepth_ = rasterBuffer(ctx, tiles * 4, kStorageUsage, "tile head depth", limit);
   blocks_ = rasterBuffer(ctx, divUp(std::uint32_t(tiles), gpu::RASTER_SCAN_SIZE) * 4, kStorageUsage, "blocks", limit);
-  list_ = rasterBuffer(ctx, VkDeviceSize(capacity_) * 8, kTexelUsage, "tile lists", limit);
   setUpFineWalk(settings.fineWalk, vertices);  // before bind(): the chunk sets take the walk's views
+  list_ = makeList(settings.growLists ? listStartCapacity(segments, tiles, settings.listStartPerSegment, maxCapacity_)
+                                      : maxCapacity_);
   output_ = outputImage(ctx, extent, true, VK_FORMAT_R16G16B16A16_SFLOAT, "raster hair image");
   nearOutput_ = outputImage(ctx, extent, multisampled(), VK_FORMAT_R16G16B16A16_SFLOAT, "raster hair image (near layer)");
   nearMask_ = outputImage(ctx, extent, multisampled(), VK_FORMAT_R32_UINT, "raster near-layer sample mask");
@@ -225,10 +236,10 @@ StrandRasterPass::StrandRasterPass(const vk::Context& ctx, std::span<const Raste
 
 void StrandRasterPass::setUpFineWalk(FineWalk requested, std::uint64_t vertices) {
   const bool cpu = ctx_.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
-  const bool texelsFit = vk::texelBufferFits(ctx_, capacity_) && vk::texelBufferFits(ctx_, vertices);
+  // The largest lists the pass may make: every one of them fits as a texel view.
+  const bool texelsFit = vk::texelBufferFits(ctx_, maxCapacity_) && vk::texelBufferFits(ctx_, vertices);
   walk_ = chooseStagedWalk(requested, cpu, texelsFit) ? FineWalk::Staged : FineWalk::Direct;
   if (walk_ == FineWalk::Staged) return;
-  listTexels_ = vk::BufferView(ctx_, list_, VK_FORMAT_R32G32_UINT, "raster tile lists (texels)");
   screenTexels_ = vk::BufferView(ctx_, screen_, VK_FORMAT_R32G32B32A32_SFLOAT, "raster screen vertices (texels)");
   colorTexels_ = vk::BufferView(ctx_, colors_, VK_FORMAT_R32G32_UINT, "raster vertex colours (texels)");
 }
@@ -246,7 +257,7 @@ void StrandRasterPass::bind(std::span<const RasterSource> sources) {
       throw Error("compute raster: bind() needs strand buffers of the size the pass was built for");
     for (const StrandChunk& c : strands.chunks()) {
       const std::string name = "raster [source " + std::to_string(s) + " chunk " + std::to_string(chunks.size()) + "]";
-      gpu::RasterParams params = baseParams(tilesX_, tilesY_, settings_, capacity_, extent_);
+      gpu::RasterParams params = baseParams(tilesX_, tilesY_, settings_, list_->capacity, extent_);
       params.firstStrand = c.range.firstStrand;
       params.strandCount = c.range.strandCount;
       params.firstVertex = firstVertex;
@@ -262,12 +273,61 @@ void StrandRasterPass::bind(std::span<const RasterSource> sources) {
       vk::uploadBytes(ctx_, chunk.params, &params, sizeof(params), vk::BufferUse::ComputeRead);
       for (std::uint32_t slot = 0; slot < frameSlots_; ++slot) {
         chunk.sets.emplace_back(ctx_, kStrandRasterBindings, name + " [slot " + std::to_string(slot) + "]");
-        writeChunkSet(chunk.sets.back(), sources[s].shading, c, chunk.params);
+        writeChunkSet(chunk.sets.back(), sources[s].shading, c, chunk.params, *list_);
       }
       chunks.push_back(std::move(chunk));
     }
   }
   chunks_ = std::move(chunks);
+  slotLists_.assign(frameSlots_, list_);
+}
+
+std::shared_ptr<const StrandRasterPass::TileList> StrandRasterPass::makeList(std::uint32_t capacity) const {
+  auto list = std::make_shared<TileList>();
+  list->buffer = rasterBuffer(ctx_, VkDeviceSize(capacity) * 8, kTexelUsage,
+                              "tile lists (" + std::to_string(capacity) + " entries)",
+                              ctx_.properties().limits.maxStorageBufferRange);
+  if (walk_ == FineWalk::Direct)
+    list->texels = vk::BufferView(ctx_, list->buffer, VK_FORMAT_R32G32_UINT, "raster tile lists (texels)");
+  list->capacity = capacity;
+  return list;
+}
+
+void StrandRasterPass::useLists(std::uint32_t slot, std::uint64_t need) {
+  if (slot >= frameSlots_)
+    throw Error("compute raster: frame slot " + std::to_string(slot) + " of " + std::to_string(frameSlots_));
+  const std::uint32_t capacity = list_->capacity;
+  if (settings_.growLists && !growthFailed_ && need * 4 > std::uint64_t(capacity) * 3 && capacity < maxCapacity_) {
+    try {
+      list_ = makeList(std::uint32_t(std::min<std::uint64_t>(need * 2, maxCapacity_)));
+    } catch (const Error&) {
+      growthFailed_ = true;  // out of device memory: the lists stay; their overflow is counted as before
+    }
+  }
+  if (slotLists_[slot] == list_) return;
+  for (const Chunk& c : chunks_) writeListBindings(c.sets[slot], *list_);
+  slotLists_[slot] = list_;
+}
+
+VkDeviceSize StrandRasterPass::listBytes() const {
+  VkDeviceSize bytes = 0;
+  std::vector<const TileList*> counted;
+  for (const std::shared_ptr<const TileList>& list : slotLists_) {
+    if (std::find(counted.begin(), counted.end(), list.get()) != counted.end()) continue;
+    counted.push_back(list.get());
+    bytes += list->buffer.size();
+  }
+  return bytes;
+}
+
+void StrandRasterPass::recordStateCopy(VkCommandBuffer cmd, const vk::Buffer& dst, VkDeviceSize offset) const {
+  // The previous copy into `dst` was read by the host: chained after it (no write-after-write).
+  vk::bufferBarrier(ctx_, cmd, dst.handle(), vk::BufferUse::HostRead, vk::BufferUse::TransferDst);
+  vk::bufferBarrier(ctx_, cmd, state_.handle(), vk::BufferUse::ComputeWrite, vk::BufferUse::TransferSrc);
+  const VkBufferCopy region{0, offset, sizeof(gpu::RasterState)};
+  ctx_.fn().vkCmdCopyBuffer(cmd, state_.handle(), dst.handle(), 1, &region);
+  vk::bufferBarrier(ctx_, cmd, dst.handle(), vk::BufferUse::TransferDst, vk::BufferUse::HostRead);
+  vk::bufferBarrier(ctx_, cmd, state_.handle(), vk::BufferUse::TransferSrc, vk::BufferUse::ComputeWrite);
 }
 
 void StrandRasterPass::rebindShading(std::uint32_t source, std::uint32_t slot, const ShadingWriter& shading) {
@@ -285,8 +345,13 @@ const vk::DescriptorSet& StrandRasterPass::setOf(const Chunk& c, std::uint32_t s
   return c.sets[slot];
 }
 
+void StrandRasterPass::writeListBindings(const vk::DescriptorSet& set, const TileList& list) const {
+  set.writeStorageBuffer(gpu::RASTER_BINDING_LIST, list.buffer.handle());
+  if (list.texels) set.writeTexelBuffer(gpu::RASTER_BINDING_LIST_TEXELS, list.texels.handle());
+}
+
 void StrandRasterPass::writeChunkSet(const vk::DescriptorSet& set, const ShadingWriter& shading, const StrandChunk& c,
-                                     const vk::Buffer& params) const {
+                                     const vk::Buffer& params, const TileList& list) const {
   shading(set);
   set.writeStorageBuffer(gpu::RASTER_BINDING_PARAMS, params.handle());
   set.writeStorageBuffer(gpu::RENDER_BINDING_POSITIONS, c.positions.handle());
@@ -300,12 +365,12 @@ void StrandRasterPass::writeChunkSet(const vk::DescriptorSet& set, const Shading
   for (const auto& [binding, buffer] :
        {std::pair{gpu::RASTER_BINDING_SCREEN, &screen_}, {gpu::RASTER_BINDING_COLORS, &colors_},
         {gpu::RASTER_BINDING_STATE, &state_}, {gpu::RASTER_BINDING_COUNTS, &counts_}, {gpu::RASTER_BINDING_KEYS, &keys_},
-        {gpu::RASTER_BINDING_TILES, &tiles_}, {gpu::RASTER_BINDING_BLOCKS, &blocks_}, {gpu::RASTER_BINDING_LIST, &list_},
+        {gpu::RASTER_BINDING_TILES, &tiles_}, {gpu::RASTER_BINDING_BLOCKS, &blocks_},
         {gpu::RASTER_BINDING_TILE_DEPTH, &tileDepth_}, {gpu::RASTER_BINDING_SHADE_FLAGS, &shadeFlags_},
         {gpu::RASTER_BINDING_SHADE_LIST, &shadeList_}, {gpu::RASTER_BINDING_SHADE_ARGS, &shadeArgs_}})
     set.writeStorageBuffer(binding, buffer->handle());
-  if (listTexels_) {
-    set.writeTexelBuffer(gpu::RASTER_BINDING_LIST_TEXELS, listTexels_.handle());
+  writeListBindings(set, list);
+  if (screenTexels_) {
     set.writeTexelBuffer(gpu::RASTER_BINDING_SCREEN_TEXELS, screenTexels_.handle());
     set.writeTexelBuffer(gpu::RASTER_BINDING_COLOR_TEXELS, colorTexels_.handle());
   }
@@ -350,11 +415,17 @@ std::uint32_t StrandRasterPass::drawnStrands(const Chunk& c, std::span<const std
 
 // The shaders bound their work by each chunk's RasterParams::strandCount, not by the dispatch (whose groups
 // round up): this frame's drawn count goes there, so no strand past the limit is read half-projected.
-void StrandRasterPass::recordStrandCounts(VkCommandBuffer cmd, std::span<const std::uint32_t> strandLimits) const {
+void StrandRasterPass::recordStrandCounts(VkCommandBuffer cmd, std::span<const std::uint32_t> strandLimits,
+                                          std::uint32_t slot) const {
   for (const Chunk& c : chunks_) {
     const std::uint32_t drawn = drawnStrands(c, strandLimits);
     vk::bufferBarrier(ctx_, cmd, c.params.handle(), vk::BufferUse::ComputeRead, vk::BufferUse::TransferDst);
     ctx_.fn().vkCmdUpdateBuffer(cmd, c.params.handle(), offsetof(gpu::RasterParams, strandCount), sizeof(drawn), &drawn);
+    if (settings_.growLists) {  // the lists this slot's sets bind (the params are shared by every slot)
+      const std::uint32_t capacity = slotLists_[slot]->capacity;
+      ctx_.fn().vkCmdUpdateBuffer(cmd, c.params.handle(), offsetof(gpu::RasterParams, capacity), sizeof(capacity),
+                                  &capacity);
+    }
     vk::bufferBarrier(ctx_, cmd, c.params.handle(), vk::BufferUse::TransferDst, vk::BufferUse::ComputeRead);
   }
 }
@@ -397,7 +468,7 @@ void StrandRasterPass::recordBinning(VkCommandBuffer cmd, vk::GpuProfiler* profi
     throw Error("compute raster: one strand limit per source, got " + std::to_string(strandLimits.size()));
   const std::uint32_t tiles = tilesX_ * tilesY_;
   begin(cmd, profiler, "raster project");
-  recordStrandCounts(cmd, strandLimits);
+  recordStrandCounts(cmd, strandLimits, slot);
   recordArm(cmd);
   recordPerChunk(cmd, project_, 0, strandLimits, slot);
   end(cmd, profiler);
@@ -485,6 +556,7 @@ RasterStats StrandRasterPass::readStats() const {
   for (const glm::uvec4& chunk : vk::readback<glm::uvec4>(ctx_, shadeArgs_, vk::BufferUse::IndirectRead, chunks_.size()))
     s.shaded += chunk.w;
   s.walk = walk_;
+  s.listCapacity = list_->capacity;
   return s;
 }
 }  // namespace hp::compute

@@ -31,6 +31,7 @@
 
 #include <array>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <span>
 #include <string>
@@ -44,6 +45,7 @@
 #include "engine/vk/image.h"
 #include "engine/vk/pipeline.h"
 #include "engine/vk/profiler.h"
+#include "shaders/shared/raster.h"
 
 namespace hp::compute {
 // How the fine pass walks a tile's list (shaders/raster_fine.glsl): every pixel on its own (Direct), or in
@@ -69,6 +71,10 @@ struct RasterSettings {
   bool motion = false;               // write motion vectors (motionOutput)
   bool reversedDepth = false;        // the head's depth and the view's projection are reversed-Z (near 1, far 0)
   FineWalk fineWalk = FineWalk::Auto;
+  // The tile lists start at listStartCapacity (listStartPerSegment entries per segment plus 16 per tile) and
+  // grow by useLists with the frames' need, up to rasterListCapacity; false: rasterListCapacity from the start.
+  bool growLists = false;
+  std::uint32_t listStartPerSegment = 2;  // [1, 8]
   void validate() const;
 };
 
@@ -78,6 +84,7 @@ struct RasterStats {
   std::uint64_t droppedByCapacity = 0;
   std::uint64_t kept = 0;
   std::uint64_t shaded = 0;              // vertices the shade pass shaded
+  std::uint32_t listCapacity = 0;        // entries of the newest lists (RasterSettings::growLists grows them)
   FineWalk walk = FineWalk::Auto;  // the walk the fine pass runs: Direct or Staged (Auto resolved)
   std::uint64_t overflow() const { return droppedByTileBudget + droppedByCapacity; }
 };
@@ -108,6 +115,15 @@ class StrandRasterPass {
                          settings, headSamples) {}
   // Outside the frame loop: rewrite descriptors after the shading resources changed (same strand sizes).
   void bind(std::span<const RasterSource> sources);
+  // settings.growLists, in the frame loop before the first record() of a frame with `slot`, when no pending
+  // frame was recorded with that slot: where `need` (the most list entries a recent frame's view asked for
+  // within the tile budget, listNeed) is over 3/4 of the newest lists, new lists of twice the need (within
+  // maxCapacity) become the newest; the slot's sets are pointed at the newest lists. The older lists go
+  // when no slot binds them. A failed allocation keeps the lists (their overflow stays in readStats()).
+  void useLists(std::uint32_t slot, std::uint64_t need);
+  // After record(): its RasterState copied into `dst` (host-visible) at `offset`, for listNeed once the
+  // frame is complete.
+  void recordStateCopy(VkCommandBuffer cmd, const vk::Buffer& dst, VkDeviceSize offset) const;
   // In the frame loop: the shading bindings of one source's chunks in one slot's sets rewritten, when no
   // pending frame was recorded with that slot (the strand and pass bindings stay).
   void rebindShading(std::uint32_t source, std::uint32_t slot, const ShadingWriter& shading);
@@ -142,7 +158,10 @@ class StrandRasterPass {
   const vk::Image& motionOutput() const { return motionOutput_; }
   bool multisampled() const { return headSamples_ > 1; }
   VkExtent2D extent() const { return extent_; }
-  std::uint32_t capacity() const { return capacity_; }
+  std::uint32_t capacity() const { return list_->capacity; }  // of the newest lists
+  std::uint32_t maxCapacity() const { return maxCapacity_; }
+  // The lists' device memory (every list a slot still binds).
+  VkDeviceSize listBytes() const;
   // Blocking readback of the last recorded frame's statistics (outside the frame loop).
   RasterStats readStats() const;
   // Blocking readback of the last frame's hair coverage per pixel (rows top to bottom), averaged over the
@@ -159,20 +178,29 @@ class StrandRasterPass {
     std::uint32_t source;
     std::uint32_t verticesPerStrand;
   };
+  // One set of tile lists (entries of 8 bytes) and, for the direct walk, its texel view.
+  struct TileList {
+    vk::Buffer buffer;
+    vk::BufferView texels;  // after the buffer: destroyed first
+    std::uint32_t capacity = 0;
+  };
+  std::shared_ptr<const TileList> makeList(std::uint32_t capacity) const;
   std::array<const vk::Image*, 4> outputs() const { return {&output_, &nearOutput_, &nearMask_, &motionOutput_}; }
   void recordArm(VkCommandBuffer cmd) const;
   // Resolves the fine walk (chooseStagedWalk) into walk_ and, for the direct one, makes its texel views of
   // the list, screen and colour buffers (`vertices`: the screen and colour buffers' length).
   void setUpFineWalk(FineWalk requested, std::uint64_t vertices);
   void writeChunkSet(const vk::DescriptorSet& set, const ShadingWriter& shading, const StrandChunk& c,
-                     const vk::Buffer& params) const;
+                     const vk::Buffer& params, const TileList& list) const;
+  void writeListBindings(const vk::DescriptorSet& set, const TileList& list) const;
   // One dispatch per chunk of strands * (verticesPerStrand - perStrandLess) invocations, strands those of
   // the chunk within its source's limit (all without limits).
   void recordPerChunk(VkCommandBuffer cmd, const vk::ComputePipeline& pipeline, std::uint32_t perStrandLess,
                       std::span<const std::uint32_t> strandLimits, std::uint32_t slot) const;
   const vk::DescriptorSet& setOf(const Chunk& c, std::uint32_t slot) const;
   std::uint32_t drawnStrands(const Chunk& c, std::span<const std::uint32_t> strandLimits) const;
-  void recordStrandCounts(VkCommandBuffer cmd, std::span<const std::uint32_t> strandLimits) const;
+  // Each chunk's drawn strands and (growLists) the capacity of the lists `slot` binds, into its params.
+  void recordStrandCounts(VkCommandBuffer cmd, std::span<const std::uint32_t> strandLimits, std::uint32_t slot) const;
   void recordOnce(VkCommandBuffer cmd, const vk::ComputePipeline& pipeline, std::uint32_t threads,
                   std::uint32_t slot) const;
 
@@ -181,13 +209,16 @@ class StrandRasterPass {
   RasterSettings settings_;
   std::uint32_t headSamples_;
   std::uint32_t frameSlots_;
-  std::uint32_t tilesX_, tilesY_, capacity_ = 0;
+  std::uint32_t tilesX_, tilesY_, maxCapacity_ = 0;
   FineWalk walk_ = FineWalk::Direct;  // Auto resolved
   std::vector<std::uint32_t> sourceVertices_;  // render vertices of each source (bind() must match)
-  vk::Buffer screen_, colors_, state_, counts_, keys_, tiles_, blocks_, list_, tileDepth_;
-  // The direct fine walk's views of list_, screen_ and colors_ (none for the staged): declared after the
-  // buffers, so destroyed before them.
-  vk::BufferView listTexels_, screenTexels_, colorTexels_;
+  vk::Buffer screen_, colors_, state_, counts_, keys_, tiles_, blocks_, tileDepth_;
+  // The direct fine walk's views of screen_ and colors_ (none for the staged): declared after the buffers,
+  // so destroyed before them.
+  vk::BufferView screenTexels_, colorTexels_;
+  std::shared_ptr<const TileList> list_;                  // the newest lists
+  std::vector<std::shared_ptr<const TileList>> slotLists_;  // per frame slot: the lists its sets bind
+  bool growthFailed_ = false;                             // an allocation failed: no further attempt
   vk::Buffer shadeFlags_, shadeList_, shadeArgs_, motion_;
   vk::Image output_, nearOutput_, nearMask_, motionOutput_;
   vk::Sampler sampler_;
@@ -199,6 +230,12 @@ class StrandRasterPass {
 
 // List entries reserved for a frame: every segment in 8 tiles plus 16 per tile (the default head at
 // 3840x2160 asks for 4.3M of 7.7M), within the device's
-// storage buffer range (pure arithmetic, for tests and the docs).
+// storage buffer range (pure arithmetic, for tests and the docs). With growLists, the most the lists grow to.
 std::uint32_t rasterListCapacity(std::uint64_t segments, std::uint64_t tiles, std::uint64_t maxRangeBytes);
+// With growLists, the lists' first capacity: every segment in `perSegment` tiles plus 16 per tile, at most
+// `maxCapacity`.
+std::uint32_t listStartCapacity(std::uint64_t segments, std::uint64_t tiles, std::uint32_t perSegment,
+                                std::uint32_t maxCapacity);
+// The list entries a frame's view asked for within the tile budget (kept and dropped past the capacity).
+std::uint64_t listNeed(const gpu::RasterState& state);
 }  // namespace hp::compute

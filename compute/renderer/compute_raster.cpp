@@ -1,12 +1,15 @@
 #include "compute/renderer/compute_raster.h"
 
 #include <algorithm>
+#include <cstring>
+#include <string>
 
 #include "engine/core/error.h"
 #include "compute/raster/raster_shading.h"
 #include "compute/renderer/hair_instance.h"
 #include "engine/vk/barriers.h"
 #include "engine/vk/context.h"
+#include "shaders/shared/raster.h"
 #include "shaders/shared/render.h"
 
 namespace hp {
@@ -16,6 +19,16 @@ compute::RasterSettings rasterSettingsOf(const RendererSettings& settings) {
   r.motion = settings.motionVectors;
   r.reversedDepth = settings.formats.reversedDepth;
   return r;
+}
+
+// With growing lists, per frame slot: room for the RasterState of each view the slot's frame records.
+std::vector<vk::Buffer> makeListStates(const vk::Context& ctx, const RendererSettings& settings) {
+  std::vector<vk::Buffer> states;
+  if (!settings.rasterSettings.growLists) return states;
+  for (std::uint32_t slot = 0; slot < settings.framesInFlight; ++slot)
+    states.emplace_back(ctx, sizeof(gpu::RasterState) * settings.maxViewsPerFrame, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                        vk::MemoryKind::Readback, "raster list needs [slot " + std::to_string(slot) + "]");
+  return states;
 }
 }  // namespace
 
@@ -38,7 +51,9 @@ ComputeRaster::ComputeRaster(const vk::Context& ctx, const RendererSettings& set
       pass_(ctx, sources(), extent, rasterSettingsOf(settings), std::uint32_t(settings.formats.samples), cache,
             settings.framesInFlight),
       stale_(settings.framesInFlight, std::vector<bool>(instances.size(), false)),
-      composite_(ctx, settings.formats, settings.velocityOutput, cache) {
+      composite_(ctx, settings.formats, settings.velocityOutput, cache),
+      listStates_(makeListStates(ctx, settings)),
+      slotViews_(settings.framesInFlight, 0) {
   pass_.setDepth(depth);
   // Each instance's fibre compiled into the shade pass, with and without the light loop (a fibre changed later,
   // in the frame loop, shades with the run-time form: compute/raster/shade_variant.h).
@@ -73,7 +88,7 @@ void ComputeRaster::shadingChanged(const HairInstance* instance) {
   for (std::vector<bool>& slot : stale_) slot[std::size_t(it - instances_.begin())] = true;
 }
 
-void ComputeRaster::rebindStale(std::uint64_t frame, std::uint32_t slot) {
+void ComputeRaster::prepareSlot(std::uint64_t frame, std::uint32_t slot) {
   if (lastFrame_ == frame) return;  // a later view of the same frame: its sets are bound already
   lastFrame_ = frame;
   for (std::size_t source = 0; source < instances_.size(); ++source) {
@@ -81,6 +96,18 @@ void ComputeRaster::rebindStale(std::uint64_t frame, std::uint32_t slot) {
     pass_.rebindShading(std::uint32_t(source), slot, shadingWriter(source));
     stale_[slot][source] = false;
   }
+  if (listStates_.empty()) return;
+  // The slot's last frame is complete (the frame contract): the most any of its views asked of the lists.
+  const vk::Buffer& states = listStates_[slot];
+  states.invalidate();
+  std::uint64_t need = 0;
+  for (std::uint32_t view = 0; view < slotViews_[slot]; ++view) {
+    gpu::RasterState state;
+    std::memcpy(&state, static_cast<const std::byte*>(states.mapped()) + view * sizeof(state), sizeof(state));
+    need = std::max(need, compute::listNeed(state));
+  }
+  slotViews_[slot] = 0;
+  pass_.useLists(slot, need);
 }
 
 bool ComputeRaster::holds(const HairInstance* instance) const {
@@ -114,7 +141,7 @@ ComputeRaster::SourceFrames ComputeRaster::recordFrameBlocks(VkCommandBuffer cmd
 void ComputeRaster::record(VkCommandBuffer cmd, std::uint64_t frame, const View& view,
                            const render::FrameLights& lights, vk::GpuProfiler* profiler) {
   const auto slot = std::uint32_t(frame % stale_.size());  // the frame slot: one per frame in flight
-  rebindStale(frame, slot);
+  prepareSlot(frame, slot);
   const SourceFrames sources = recordFrameBlocks(cmd, view, lights, slot);
   // The graphics readers' states (recordShadows) extended to compute for the pass, then back, so the
   // next frame's barriers (which wait on vertex/fragment readers) still cover these reads.
@@ -129,6 +156,8 @@ void ComputeRaster::record(VkCommandBuffer cmd, std::uint64_t frame, const View&
   vk::imageBarrier(ctx_, cmd, maps, VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::FragmentSampled,
                    vk::ImageUse::ComputeSampled, mapLayers);
   pass_.record(cmd, profiler, sources.strandLimits, sources.shading, slot);
+  if (!listStates_.empty() && slotViews_[slot] * sizeof(gpu::RasterState) < listStates_[slot].size())
+    pass_.recordStateCopy(cmd, listStates_[slot], slotViews_[slot]++ * sizeof(gpu::RasterState));
   vk::bufferBarrier(ctx_, cmd, lightSpace, vk::BufferUse::ComputeRead, vk::BufferUse::GraphicsRead);
   vk::imageBarrier(ctx_, cmd, maps, VK_IMAGE_ASPECT_COLOR_BIT, vk::ImageUse::ComputeSampled,
                    vk::ImageUse::FragmentSampled, mapLayers);

@@ -56,8 +56,9 @@ class ComputeRaster {
   static std::vector<vk::Buffer> makeFrameBlocks(const vk::Context& ctx, std::size_t count);
   std::vector<compute::RasterSource> sources() const;
   compute::ShadingWriter shadingWriter(std::size_t source) const;
-  // The first view of `frame`: the stale shading bindings of its slot rewritten.
-  void rebindStale(std::uint64_t frame, std::uint32_t slot);
+  // The first view of `frame`: the stale shading bindings of its slot rewritten and, with growing lists, the
+  // lists the slot binds sized by its last frame's views (StrandRasterPass::useLists).
+  void prepareSlot(std::uint64_t frame, std::uint32_t slot);
   // What each instance draws in a view: its strands (the level of detail's prefix) and its shade variant.
   struct SourceFrames {
     std::vector<std::uint32_t> strandLimits;
@@ -77,5 +78,9 @@ class ComputeRaster {
   std::vector<std::vector<bool>> stale_;   // [frame slot][instance]: its shading bindings name old resources
   std::optional<std::uint64_t> lastFrame_;  // the frame of the views most recently recorded
   render::CompositePass composite_;
+  // Growing lists (RasterSettings::growLists): per frame slot, each view's RasterState copied after its
+  // binning, and how many views the slot's latest frame recorded; empty when the lists do not grow.
+  std::vector<vk::Buffer> listStates_;
+  std::vector<std::uint32_t> slotViews_;
 };
 }  // namespace hp

@@ -19,6 +19,10 @@ const RendererSettings& validated(const vk::Context& ctx, const RendererSettings
   vk::requireAttachmentSupport(ctx, s.formats, compute);
   if (s.motionVectors && !compute)
     throw Error("RendererSettings.motionVectors needs the compute raster: the graphics raster writes no motion");
+  const std::uint32_t outputs = ctx.properties().limits.maxFragmentOutputAttachments;
+  if (s.velocityOutput.attachment >= 0 && std::uint32_t(s.velocityOutput.attachment) + 1 >= outputs)
+    throw Error("RendererSettings.velocityOutput.attachment: colour location " + std::to_string(s.velocityOutput.attachment + 1) +
+                " is past the " + std::to_string(outputs) + " fragment outputs of " + ctx.properties().deviceName);
   return s;
 }
 }  // namespace

@@ -45,14 +45,17 @@ void validateVelocityOutput(const hairpipe::VelocityOutput& v, const hairpipe::A
   if (!motionVectors) throw Error(field + "attachment needs RendererSettings.motionVectors: the motion it writes");
   if (formats.otherColors[std::size_t(v.attachment)] == VK_FORMAT_UNDEFINED)
     throw Error(field + "attachment: formats.otherColors[" + std::to_string(v.attachment) + "] is an unused slot (VK_FORMAT_UNDEFINED)");
+  if (vk::isSrgbFormat(formats.otherColors[std::size_t(v.attachment)]))
+    throw Error(field + "attachment: formats.otherColors[" + std::to_string(v.attachment) + "] is an SRGB format (VkFormat " +
+                std::to_string(int(formats.otherColors[std::size_t(v.attachment)])) + "); the motion would be gamma-encoded");
   if (vk::isIntegerColorFormat(formats.otherColors[std::size_t(v.attachment)]))
     throw Error(field + "attachment: formats.otherColors[" + std::to_string(v.attachment) + "] is an integer format (VkFormat " +
                 std::to_string(int(formats.otherColors[std::size_t(v.attachment)])) + "); the motion is written as floats");
   for (const auto& [value, name] : {std::pair{v.scaleX, "scaleX"}, {v.scaleY, "scaleY"}, {v.offsetX, "offsetX"},
                                     {v.offsetY, "offsetY"}})
     if (!std::isfinite(value)) throw Error(field + name + " must be finite, got " + numberText(value));
-  if (!(v.minCoverage > 0.0f && v.minCoverage <= 1.0f))
-    throw Error(field + "minCoverage must be in (0, 1], got " + numberText(v.minCoverage));
+  if (!(v.minCoverage >= 0.0f && v.minCoverage < 1.0f))  // the coverage is at most 1: 1 would write nothing
+    throw Error(field + "minCoverage must be in [0, 1), got " + numberText(v.minCoverage));
 }
 
 void InstanceSettings::validate() const {

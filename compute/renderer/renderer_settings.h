@@ -65,7 +65,7 @@ struct InstanceSettings {
 };
 
 // hp::Error naming the field unless `v` is off (attachment -1) or names one of formats.otherColors that is not
-// an integer format, with motion vectors on, finite scales and offsets and minCoverage in (0, 1].
+// an unused, SRGB or integer format, with motion vectors on, finite scales and offsets and minCoverage in [0, 1).
 void validateVelocityOutput(const hairpipe::VelocityOutput& v, const hairpipe::AttachmentFormats& formats,
                             bool motionVectors);
 // hp::Error naming the field unless the distances are finite, 0 <= start < end, and minFraction in (0, 1].

@@ -26,6 +26,21 @@ bool isIntegerColorFormat(VkFormat format) {
   return false;
 }
 
+bool isSrgbFormat(VkFormat format) {
+  switch (format) {
+    case VK_FORMAT_R8_SRGB:
+    case VK_FORMAT_R8G8_SRGB:
+    case VK_FORMAT_R8G8B8_SRGB:
+    case VK_FORMAT_B8G8R8_SRGB:
+    case VK_FORMAT_R8G8B8A8_SRGB:
+    case VK_FORMAT_B8G8R8A8_SRGB:
+    case VK_FORMAT_A8B8G8R8_SRGB_PACK32:
+      return true;
+    default:
+      return false;
+  }
+}
+
 std::uint32_t formatBytesPerPixel(VkFormat format) {
   switch (format) {
     case VK_FORMAT_R8G8B8A8_UNORM:

@@ -70,6 +70,7 @@ class Image {
 bool isDepthFormat(VkFormat format);        // D16, D32, or a combined D16S8, D24S8 or D32S8
 bool hasStencilComponent(VkFormat format);  // the combined ones
 bool isIntegerColorFormat(VkFormat format); // a UINT or SINT colour format (a shader writes it integers)
+bool isSrgbFormat(VkFormat format);         // an uncompressed SRGB colour format (encoded on write)
 std::uint32_t formatBytesPerPixel(VkFormat format);  // for the formats hairpipe reads back
 
 // A sampler with linear filtering (or `filter`: nearest for formats that cannot filter) and clamp-to-edge

@@ -190,7 +190,9 @@ GraphicsPipeline::GraphicsPipeline(const Context& ctx, const GraphicsPipelineDes
   depth.depthTestEnable = d.depthTest ? VK_TRUE : VK_FALSE;
   depth.depthWriteEnable = d.depthWrite ? VK_TRUE : VK_FALSE;
   depth.depthCompareOp = d.depthCompare;
-  std::vector<VkPipelineColorBlendAttachmentState> blends(d.colorFormats.size(), blendState(d.blend));
+  VkPipelineColorBlendAttachmentState written = blendState(d.blend);
+  written.colorWriteMask = d.writtenComponents;
+  std::vector<VkPipelineColorBlendAttachmentState> blends(d.colorFormats.size(), written);
   for (std::size_t i = 0; i < blends.size(); ++i)
     if (i >= 32 || (d.writtenColors >> i & 1u) == 0) blends[i] = VkPipelineColorBlendAttachmentState{};
   VkPipelineColorBlendStateCreateInfo blend{VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};

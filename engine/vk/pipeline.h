@@ -80,6 +80,9 @@ struct GraphicsPipelineDesc {
   // Bit i set: colour attachment i is written (with `blend`); the others keep what they hold (write mask 0;
   // where attachments differ so, the independentBlend feature is needed).
   std::uint32_t writtenColors = ~0u;
+  // The channels the written attachments take (the rest keep theirs).
+  VkColorComponentFlags writtenComponents = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT |
+                                            VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT;
   bool depthTest = false;
   bool depthWrite = false;
   bool alphaToCoverage = false;

@@ -22,7 +22,7 @@ std::string graphicsKey(const GraphicsPipelineDesc& d) {
                     std::to_string(d.depthTest) + std::to_string(d.depthWrite) + std::to_string(d.alphaToCoverage) +
                     "|" + std::to_string(d.topology) + "|" + std::to_string(d.cullMode) + "|" +
                     std::to_string(d.pushSize) + "|" + std::to_string(d.sets.size()) + "|w" +
-                    std::to_string(d.writtenColors);
+                    std::to_string(d.writtenColors) + "c" + std::to_string(d.writtenComponents);
   for (VkFormat f : d.colorFormats) key += "|" + std::to_string(f);
   key += "|s";
   for (std::uint32_t s : d.fragmentSpecialization) key += "|" + std::to_string(s);

@@ -47,6 +47,7 @@ struct FrameCase {
   bool skinIndirect = true;  // both paths: LookSettings::skinIndirect (the head's indirect light)
   std::uint32_t shadowStrands = render::OpacitySettings{}.shadowStrands;  // OpacitySettings::shadowStrands
   float shadingSpacing = compute::RasterSettings{}.shadingSpacing;  // compute only: RasterSettings::shadingSpacing
+  bool growLists = false;  // compute only: RasterSettings::growLists
   HairMaterial material;  // the fibres (the scenes' by default; bench's material options)
 };
 

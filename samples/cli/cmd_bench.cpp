@@ -51,6 +51,7 @@ struct BenchOptions {
   std::vector<std::string> grooms{"scene"};
   std::vector<std::uint32_t> shadowStrands{hp::render::OpacitySettings{}.shadowStrands};
   std::vector<float> shadingSpacings{hp::compute::RasterSettings{}.shadingSpacing};
+  std::vector<std::string> growLists{"off"};
   hp::HairMaterial material;  // every case's (the material options; else the scene's)
   bool materialGiven = false;
   hp::cli::SceneOptions scene;  // --scene / --model (its --device and --validation unused: bench's own)
@@ -179,6 +180,8 @@ std::vector<hp::cli::FrameCase> cases(const BenchOptions& o, const std::shared_p
   const std::vector<bool> indirects = twoWordList("--skin-indirect", o.skinIndirect, "off", "on", "on");
   const std::vector<hp::compute::FineWalk> computeWalks = fineWalks(o), graphicsWalks{base.fineWalk};
   const std::vector<float> graphicsSpacings{base.shadingSpacing};
+  const std::vector<bool> computeGrowths = twoWordList("--grow-lists", o.growLists, "off", "on", "on"),
+                          graphicsGrowths{base.growLists};
   std::vector<hp::RasterMode> modes;
   for (const std::string& r : o.raster) {
     modes.push_back(hp::parseRasterMode(r));
@@ -198,12 +201,14 @@ std::vector<hp::cli::FrameCase> cases(const BenchOptions& o, const std::shared_p
         c.scattering = scattering;
         for (const bool bounce : mode == hp::RasterMode::Compute ? computeBounces : graphicsBounces)
           for (const hp::compute::FineWalk walk : mode == hp::RasterMode::Compute ? computeWalks : graphicsWalks)
-            for (const float spacing : mode == hp::RasterMode::Compute ? o.shadingSpacings : graphicsSpacings) {
-              c.skinBounce = bounce;
-              c.fineWalk = walk;
-              c.shadingSpacing = spacing;
-              addSampleCounts(c, o, grooms, indirects, out);  // head (and graphics hair) samples, LOD, lights, ...
-            }
+            for (const float spacing : mode == hp::RasterMode::Compute ? o.shadingSpacings : graphicsSpacings)
+              for (const bool grow : mode == hp::RasterMode::Compute ? computeGrowths : graphicsGrowths) {
+                c.skinBounce = bounce;
+                c.fineWalk = walk;
+                c.shadingSpacing = spacing;
+                c.growLists = grow;
+                addSampleCounts(c, o, grooms, indirects, out);  // head (and graphics hair) samples, LOD, lights, ...
+              }
       }
     }
   }
@@ -236,6 +241,7 @@ nlohmann::json toJson(const hp::cli::FrameResult& r) {
           {"skin_indirect", r.c.skinIndirect},
           {"shadow_strands", r.c.shadowStrands},
           {"shading_spacing", compute ? nlohmann::json(r.c.shadingSpacing) : nlohmann::json()},
+          {"grow_lists", compute ? nlohmann::json(r.c.growLists) : nlohmann::json()},
           {"shaded_vertices", compute ? nlohmann::json(r.shadedVertices) : nlohmann::json()},
           {"roughness_variation", r.c.material.roughnessVariation},
           {"height", r.c.height},        {"raster", hp::cli::frameCaseName(r.c)},
@@ -266,7 +272,8 @@ void printText(const nlohmann::json& row) {
               row["host_frame_ms"].get<double>(), row["resident_mib"].get<double>(),
               row["resident_growth_mib_per_frame"].get<double>());
   if (const double target = row.value("raster_target_mib", 0.0); target > 0.0)
-    std::printf("  raster target %.1f MiB of device memory (its lists and images)\n", target);
+    std::printf("  raster target %.1f MiB of device memory (its lists and images%s)\n", target,
+                row.value("grow_lists", false) ? ", the lists grown in the frames" : "");
   std::printf("  copy yardstick %.2f GB/s alone (transfer %.2f, compute %.2f; transfer: %u submissions, %s), %.2f GB/s inside the frame%s\n",
               row["copy_gb_per_s"].get<double>(), row["copy_transfer_gb_per_s"].get<double>(),
               row["copy_compute_gb_per_s"].get<double>(), row["copy_runs"].get<unsigned>(),
@@ -372,6 +379,10 @@ void setup(CLI::App& app) {
   cmd->add_option("--shading-spacing", o->shadingSpacings,
                   "Compute raster: pixels within which a strand's every other vertex takes its neighbours' mean "
                   "instead of being shaded; 0 shades every vertex (comma separated)")
+      ->delimiter(',')->capture_default_str();
+  cmd->add_option("--grow-lists", o->growLists,
+                  "Compute raster: the tile lists start small and grow with the frames' need (on), or reserve the "
+                  "close-up worst case from the start (off; comma separated)")
       ->delimiter(',')->capture_default_str();
   cmd->add_option("--shadow-strands", o->shadowStrands,
                   "Render strands drawn into the opacity maps at most, an even sample widened to keep the hair's "

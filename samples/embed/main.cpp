@@ -475,6 +475,7 @@ void renderFrames(App& app, std::uint32_t frames, hairpipe::RasterMode raster) {
   rs.raster = raster;
   rs.shadowedLights = 2;  // the key and the rim cast hair shadows
   rs.applicationOccluders = true;  // the cap shadows the hair too
+  rs.growRasterLists = true;       // compute raster: tile lists sized by the frames' need, not a close-up's
   hairpipe::Renderer renderer = take(hairpipe::Renderer::create(ctx, rs));
 
   // One asset (guides, head mesh, interpolation topology), two heads with their own state and material.

@@ -51,7 +51,14 @@ hp::vk::Image attachmentImage(const hp::vk::Context& ctx, VkFormat format, VkIma
   return hp::vk::Image(ctx, d);
 }
 
-VkClearColorValue clearOf(VkFormat format) { return format == kOthers[0] ? kOtherClears[0] : kOtherClears[1]; }
+// A four-channel velocity target whose last two channels hold the engine's own values (halves 0.25, 0.5).
+constexpr VkFormat kWideVelocity = VK_FORMAT_R16G16B16A16_SFLOAT;
+const VkClearColorValue kWideVelocityClear = {{3.0f, -2.0f, 0.25f, 0.5f}};
+const std::uint16_t kWideVelocityBlueAlpha[2] = {0x3400, 0x3800};
+
+VkClearColorValue clearOf(VkFormat format) {
+  return format == kOthers[0] ? kOtherClears[0] : format == kWideVelocity ? kWideVelocityClear : kOtherClears[1];
+}
 
 hp::RendererSettings frameSettings(hp::RasterMode raster, bool others, VkSampleCountFlagBits samples) {
   hp::RendererSettings s;
@@ -156,10 +163,10 @@ std::vector<std::vector<std::byte>> drawFrame(const hp::vk::Context& ctx, const 
   return bytes;
 }
 
-// The R16G16_SFLOAT velocity texel at `pixel` of `bytes`.
-glm::vec2 velocityAt(const std::vector<std::byte>& bytes, std::size_t pixel) {
+// The first two half-float channels of the velocity texel at `pixel` of `bytes` (texelBytes each).
+glm::vec2 velocityAt(const std::vector<std::byte>& bytes, std::size_t pixel, std::size_t texelBytes) {
   std::uint16_t h[2];
-  std::memcpy(h, bytes.data() + pixel * 4, 4);
+  std::memcpy(h, bytes.data() + pixel * texelBytes, 4);
   return {hp::shading::halfToFloat(h[0]), hp::shading::halfToFloat(h[1])};
 }
 
@@ -226,7 +233,9 @@ TEST_F(VulkanTest, OtherColorAttachmentsAreRefusedByField) {
 // other pixels and the other attachments as they were. The previous camera is shifted by (+3, -2) pixels, so
 // every hair pixel moves by (-3, +2) (tests/render/motion_vectors_test.cpp); with scale (0.5, -0.25) and
 // offset (1, 1) the attachment reads (-0.5, 0.5) there. The velocity attachment at colour location 1, 2, or 3
-// after a slot the rendering leaves unused (three of the compiled variants), with 1 and 4 samples.
+// after a slot the rendering leaves unused (three of the compiled variants), and an RGBA16F one whose last two
+// channels must keep the engine's values, with 1 and 4 samples. (With 4 samples the test's coverage is
+// Renderer::rasterCoverage, the same mean over the samples of the two layers that the shader computes.)
 TEST_F(VulkanTest, VelocityOutputWritesTheHairsMotionWhereItCoversEnough) {
   hp::View view = hp::test::smallFrontView();
   glm::mat4 shift(1.0f);
@@ -235,14 +244,20 @@ TEST_F(VulkanTest, VelocityOutputWritesTheHairsMotionWhereItCoversEnough) {
   view.previousViewProj = shift * view.camera.proj * view.camera.view;
   const glm::vec2 expected(-3.0f * 0.5f + 1.0f, 2.0f * -0.25f + 1.0f), clear(3.0f, -2.0f);
   constexpr float kMinCoverage = 0.3f;
-  const VkFormat velocityFormat = kOthers[0], normalFormat = kOthers[1];
-  // The others in three orders: the velocity at colour location 1, 2, or 3 after an unused slot.
-  const std::vector<std::vector<VkFormat>> orders = {{velocityFormat, normalFormat}, {normalFormat, velocityFormat},
-                                                     {VK_FORMAT_UNDEFINED, normalFormat, velocityFormat}};
+  const VkFormat normalFormat = kOthers[1];
+  struct Order {
+    std::vector<VkFormat> others;
+    VkFormat velocity;
+  };
+  const std::vector<Order> orders = {{{kOthers[0], normalFormat}, kOthers[0]},
+                                     {{normalFormat, kOthers[0]}, kOthers[0]},
+                                     {{VK_FORMAT_UNDEFINED, normalFormat, kOthers[0]}, kOthers[0]},
+                                     {{kWideVelocity, normalFormat}, kWideVelocity}};
   for (const VkSampleCountFlagBits samples : {VK_SAMPLE_COUNT_1_BIT, VK_SAMPLE_COUNT_4_BIT})
-  for (const std::vector<VkFormat>& others : orders) {
+  for (const auto& [others, velocityFormat] : orders) {
     const auto at = [&](VkFormat f) { return std::size_t(std::find(others.begin(), others.end(), f) - others.begin()); };
     const int velocityIndex = int(at(velocityFormat));
+    const std::size_t texelBytes = velocityFormat == kWideVelocity ? 8 : 4;
     SCOPED_TRACE(std::to_string(int(samples)) + " sample(s), velocity attachment otherColors[" +
                  std::to_string(velocityIndex) + "] of " + std::to_string(others.size()));
     hp::RendererSettings s = frameSettings(hp::RasterMode::Compute, true, samples);
@@ -256,7 +271,7 @@ TEST_F(VulkanTest, VelocityOutputWritesTheHairsMotionWhereItCoversEnough) {
     std::size_t covered = 0, uncovered = 0, wrongCovered = 0, wrongUncovered = 0;
     float worst = 0.0f;
     for (std::size_t p = 0; p < coverage.size(); ++p) {
-      const glm::vec2 v = velocityAt(velocity, p);
+      const glm::vec2 v = velocityAt(velocity, p, texelBytes);
       // Within half-float rounding of the threshold either answer is right.
       if (coverage[p] > kMinCoverage + 0.002f) {
         ++covered;
@@ -274,6 +289,12 @@ TEST_F(VulkanTest, VelocityOutputWritesTheHairsMotionWhereItCoversEnough) {
     EXPECT_EQ(wrongCovered, 0u);
     EXPECT_EQ(wrongUncovered, 0u);
     EXPECT_EQ(texelsChanged(normal, kNormalClear, 4), 0u);
+    if (velocityFormat == kWideVelocity) {  // the engine's blue and alpha, in every texel
+      std::size_t blueAlphaChanged = 0;
+      for (std::size_t p = 0; p < coverage.size(); ++p)
+        blueAlphaChanged += std::memcmp(velocity.data() + p * 8 + 4, kWideVelocityBlueAlpha, 4) != 0;
+      EXPECT_EQ(blueAlphaChanged, 0u);
+    }
   }
 }
 
@@ -293,11 +314,13 @@ TEST_F(VulkanTest, VelocityOutputIsRefusedByField) {
   s.velocityOutput.scaleY = std::nanf("");
   EXPECT_NE(refusal(s).find("RendererSettings.velocityOutput.scaleY must be finite, got NaN"), std::string::npos);
   s.velocityOutput.scaleY = 1.0f;
-  s.velocityOutput.minCoverage = 0.0f;
-  EXPECT_NE(refusal(s).find("RendererSettings.velocityOutput.minCoverage must be in (0, 1], got 0"), std::string::npos);
+  s.velocityOutput.minCoverage = 1.0f;  // nothing is covered by more than all of it
+  EXPECT_NE(refusal(s).find("RendererSettings.velocityOutput.minCoverage must be in [0, 1), got 1"), std::string::npos);
   s.velocityOutput.minCoverage = 0.5f;
   s.formats.otherColors[0] = VK_FORMAT_R16G16_SINT;
   EXPECT_NE(refusal(s).find("formats.otherColors[0] is an integer format (VkFormat 82)"), std::string::npos);
+  s.formats.otherColors[0] = VK_FORMAT_R8G8B8A8_SRGB;
+  EXPECT_NE(refusal(s).find("formats.otherColors[0] is an SRGB format (VkFormat 43)"), std::string::npos);
   s.formats.otherColors[0] = VK_FORMAT_UNDEFINED;
   EXPECT_NE(refusal(s).find("formats.otherColors[0] is an unused slot (VK_FORMAT_UNDEFINED)"), std::string::npos);
   s.formats.otherColors[0] = VK_FORMAT_R16G16_SFLOAT;

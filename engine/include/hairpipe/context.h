@@ -42,7 +42,8 @@ struct DeviceHandles {  // an application's device, which stays the application'
   VkQueue queue = VK_NULL_HANDLE;
   bool debugUtilsEnabled = false;  // the instance has VK_EXT_debug_utils: hairpipe names its objects
   // The device was created with VkPhysicalDeviceFeatures::independentBlend: needed for
-  // AttachmentFormats::otherColors (hairpipe leaves them unwritten while it blends into the first colour).
+  // AttachmentFormats::otherColors (hairpipe's pipelines write the first colour and, where
+  // RendererSettings::velocityOutput names one, the velocity's two channels, each attachment its own mask).
   bool independentBlendEnabled = false;
 };
 

@@ -36,7 +36,7 @@
 //       recordDraw (Renderer::occluderTargets lists the barriers).
 //   recordDraw(cmd, frame, view, instances)   inside the application's vkCmdBeginRendering (dynamic
 //       rendering, begun by the application) whose attachments have RendererSettings::formats (its colour,
-//       then formats.otherColors, which hairpipe leaves unwritten) and cover
+//       then formats.otherColors, which recordDraw leaves unwritten) and cover
 //       view.extent from (0, 0): colour in COLOR_ATTACHMENT_OPTIMAL, depth in DEPTH_ATTACHMENT_OPTIMAL or
 //       DEPTH_STENCIL_ATTACHMENT_OPTIMAL, a stencil attachment exactly where formats.stencil names one
 //       (the depth's combined image; hairpipe neither tests nor writes stencil). Depth convention: test
@@ -65,7 +65,8 @@
 //      application's resolve attachments, if any, here), in which recordComposite(cmd, extent) blends the
 //      hair over the colour (multisampled: per sample, with the coverage recordRaster took from the
 //      heads' depth samples) and, with RendererSettings::velocityOutput, writes the hair's motion into that
-//      one of the other colour attachments (step 4's colour barrier then covers it too).
+//      one of the other colour attachments: step 4's colour barrier must then cover that image too (the
+//      first rendering and the composite both write it).
 // Calls that submit to the context's queue and wait for it: Renderer::create, always; createInstance,
 // Instance::setMaterial (a new material's tables), Instance::setDensity, setRasterTarget and
 // createRasterTarget until that Renderer's first recorded frame. From then on none of these five submits or

@@ -41,7 +41,7 @@ struct AttachmentFormats {  // the application's attachments recordDraw / record
   // The rendering's further colour attachments after `color`, in attachment order (locations 1, 2, ...: an
   // engine's velocity or normal target in its main pass), each a colour format or VK_FORMAT_UNDEFINED for a slot
   // the rendering leaves unused (a null image view there), at most 7 and together with `color` at most the
-  // device's maxColorAttachments. hairpipe's draws leave them as they are (colour write
+  // device's maxColorAttachments. hairpipe's draws leave them as they are (but for RendererSettings::velocityOutput's; colour write
   // mask 0), so its pipelines match a pass that renders into them too. With any, the device must have the
   // independentBlend feature enabled (a headless Context enables it where the device has it).
   std::vector<VkFormat> otherColors;
@@ -52,14 +52,18 @@ struct AttachmentFormats {  // the application's attachments recordDraw / record
 // pixel by more than minCoverage its motion replaces what the attachment holds there; elsewhere the attachment
 // is left as it is. The engine's temporal passes then see the hair move without a pass of their own.
 struct VelocityOutput {
-  int attachment = -1;  // index into otherColors (a float, UNORM or SNORM format, not UNDEFINED); -1: none (default)
-  // Written per pixel: (motion.x * scaleX + offsetX, motion.y * scaleY + offsetY, 0, 0), motion being
-  // Renderer::motionImage's (pixels, this frame's position minus the previous frame's, x right, y down). For
-  // example scaleX = 1 / width, scaleY = -1 / height for UV units with y up; negative scales for previous
-  // minus current; an offset of 0.5 for a UNORM target. Finite; the format clamps or rounds what it cannot hold.
+  // Index into otherColors (a float, UNORM or SNORM format: not UNDEFINED, SRGB or integer); -1: none (default).
+  int attachment = -1;
+  // Written per pixel into the attachment's first two channels (the others keep theirs): motion.x * scaleX +
+  // offsetX and motion.y * scaleY + offsetY, motion being Renderer::motionImage's (pixels, this frame's
+  // unjittered position minus the previous frame's, x right, y down). For example scaleX = 1 / width,
+  // scaleY = -1 / height for UV units with y up; negative scales for previous minus current; an offset of 0.5
+  // for a UNORM target. Finite; the format clamps or rounds what it cannot hold.
   float scaleX = 1.0f, scaleY = 1.0f;
   float offsetX = 0.0f, offsetY = 0.0f;
-  float minCoverage = 0.5f;  // (0, 1]: the hair's coverage (the alpha recordComposite blends with) must exceed it
+  // [0, 1): the hair's coverage of the pixel (the alpha recordComposite leaves there; over several samples,
+  // their mean) must exceed it. Every sample of such a pixel takes the motion.
+  float minCoverage = 0.5f;
 };
 
 // The opacity shadow maps the Renderer shares among its instances (one light).
@@ -111,6 +115,12 @@ struct RendererSettings {
   bool applicationOccluders = false;
   RasterMode raster = RasterMode::Graphics;
   std::uint32_t tileBudget = 16384;    // compute raster: list entries kept per 8x8 tile, [1, 2^24]
+  // Compute raster: the tile lists (most of a raster target's device memory) start at 2 entries per strand
+  // segment plus 16 per tile and grow, to twice a frame's need, once a frame's views ask for more than 3/4 of
+  // them (known framesInFlight frames later, when that frame is complete), up to what false reserves from
+  // the start: 8 per segment plus 16 per tile, enough for close-ups. Until they have grown, a sudden close-up
+  // loses its farthest hair in its densest tiles for up to framesInFlight + 1 frames.
+  bool growRasterLists = false;
   // Compute raster: where a render strand's vertices 2j and 2j + 2 lie within this many pixels of each other on
   // screen (and the strand turns there by at most ~28 degrees on screen), the odd vertex between them is not
   // shaded and takes their mean radiance, [0, 4096]; 0 shades every vertex. Shading is most of the hair's
