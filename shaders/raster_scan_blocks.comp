@@ -39,7 +39,7 @@ void main() {
   }
   if (lane == RASTER_SCAN_SIZE - 1u) {
     uint total = rows[src][lane];
-    state.entries.z = total > params.capacity ? total - params.capacity : 0u;
+    state.entries.z += total > params.capacity ? total - params.capacity : 0u;  // past the scan's share (none)
     state.entries.w = min(total, params.capacity);
   }
   for (uint c = lane; c < params.chunkCount; c += RASTER_SCAN_SIZE) {

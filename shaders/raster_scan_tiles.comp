@@ -1,8 +1,10 @@
 #version 460
 // Compute rasterizer, one invocation per tile: walks the tile's depth bins near to far, keeps at most
-// `tileBudget` entries (the farthest bins lose theirs first, counted in RasterState.entries.y), writes
-// each key's offset within the tile and re-arms its counter as the scatter cursor; then an exclusive
-// scan of the kept totals within each block of RASTER_SCAN_SIZE tiles (block totals to `blocks`).
+// `tileBudget` entries (the farthest bins lose theirs first, counted in RasterState.entries.y) and, where the
+// frame's budgeted entries (raster_budget_tiles.comp) exceed the lists' capacity, that share of them scaled by
+// capacity / budgeted (again the farthest bins first, counted in entries.z), writes each key's offset within
+// the tile and re-arms its counter as the scatter cursor; then an exclusive scan of the kept totals within
+// each block of RASTER_SCAN_SIZE tiles (block totals to `blocks`).
 #include "shared/raster.h"
 #include "common.glsl"
 
@@ -23,17 +25,22 @@ void main() {
   uint kept = 0u;
   if (t < params.tilesX * params.tilesY) {
     uint requested = 0u;
+    for (uint b = 0u; b < RASTER_DEPTH_BINS; ++b) requested += counts[t * RASTER_DEPTH_BINS + b];
+    uint budgeted = min(requested, params.tileBudget);
+    uint total = state.budgeted.x;
+    // The sum of the tiles' floors stays within the capacity; the factor absorbs the ratio's rounding.
+    uint limit = total > params.capacity
+                     ? uint(float(budgeted) * (float(params.capacity) / float(total)) * 0.99999)
+                     : budgeted;
     for (uint b = 0u; b < RASTER_DEPTH_BINS; ++b) {
       uint key = t * RASTER_DEPTH_BINS + b;
-      uint c = counts[key];
-      uint k = min(c, params.tileBudget - kept);
+      uint k = min(counts[key], limit - kept);
       keys[key] = uvec2(kept, k);
       counts[key] = 0u;
       kept += k;
-      requested += c;
     }
-    if (requested > 0u) atomicAdd(state.entries.x, requested);
-    if (requested > kept) atomicAdd(state.entries.y, requested - kept);
+    if (requested > budgeted) atomicAdd(state.entries.y, requested - budgeted);
+    if (budgeted > kept) atomicAdd(state.entries.z, budgeted - kept);
   }
   rows[0][lane] = kept;
   barrier();

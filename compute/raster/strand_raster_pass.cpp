@@ -184,6 +184,7 @@ StrandRasterPass::StrandRasterPass(const vk::Context& ctx, std::span<const Raste
     sourceVertices_.push_back(std::uint32_t(layout.strandVertexCount()));
   }
   const std::uint64_t tiles = std::uint64_t(tilesX_) * tilesY_;
+  segments_ = segments;
   const std::size_t chunks = chunkCount(sources);
   maxCapacity_ = rasterListCapacity(segments, tiles, limit);
   screen_ = rasterBuffer(ctx, vertices * 16, kTexelUsage, "screen vertices", limit);
@@ -225,6 +226,7 @@ StrandRasterPass::StrandRasterPass(const vk::Context& ctx, std::span<const Raste
                                {gpu::RASTER_MODE_COUNT}, cache);
   scatter_ = vk::ComputePipeline(ctx, "raster_bin.comp", gpu::RASTER_WORKGROUP_SIZE, {setLayout}, 0, "raster scatter",
                                  {gpu::RASTER_MODE_SCATTER}, cache);
+  budgetTiles_ = pipeline("raster_budget_tiles.comp", gpu::RASTER_SCAN_SIZE, "raster budget tiles");
   scanTiles_ = pipeline("raster_scan_tiles.comp", gpu::RASTER_SCAN_SIZE, "raster scan tiles");
   scanBlocks_ = pipeline("raster_scan_blocks.comp", gpu::RASTER_SCAN_SIZE, "raster scan blocks");
   const bool staged = walk_ == FineWalk::Staged;
@@ -309,15 +311,11 @@ void StrandRasterPass::useLists(std::uint32_t slot, std::uint64_t need) {
   slotLists_[slot] = list_;
 }
 
-VkDeviceSize StrandRasterPass::listBytes() const {
-  VkDeviceSize bytes = 0;
-  std::vector<const TileList*> counted;
-  for (const std::shared_ptr<const TileList>& list : slotLists_) {
-    if (std::find(counted.begin(), counted.end(), list.get()) != counted.end()) continue;
-    counted.push_back(list.get());
-    bytes += list->buffer.size();
-  }
-  return bytes;
+std::uint32_t StrandRasterPass::listEntriesPerSegment() const {
+  const std::uint64_t tileEntries = std::uint64_t(tilesX_) * tilesY_ * 16;
+  const std::uint64_t beyond = list_->capacity > tileEntries ? list_->capacity - tileEntries : 0;
+  const std::uint64_t perSegment = segments_ ? (beyond + segments_ - 1) / segments_ : 1;
+  return std::uint32_t(std::clamp<std::uint64_t>(perSegment, 1, 8));
 }
 
 void StrandRasterPass::recordStateCopy(VkCommandBuffer cmd, const vk::Buffer& dst, VkDeviceSize offset) const {
@@ -476,6 +474,8 @@ void StrandRasterPass::recordBinning(VkCommandBuffer cmd, vk::GpuProfiler* profi
   recordOnce(cmd, tileDepthPipeline_, tiles, slot);
   chain(ctx_, cmd);
   recordPerChunk(cmd, count_, 1, strandLimits, slot);
+  chain(ctx_, cmd);
+  recordOnce(cmd, budgetTiles_, divUp(tiles, gpu::RASTER_SCAN_SIZE) * gpu::RASTER_SCAN_SIZE, slot);
   chain(ctx_, cmd);
   recordOnce(cmd, scanTiles_, divUp(tiles, gpu::RASTER_SCAN_SIZE) * gpu::RASTER_SCAN_SIZE, slot);
   chain(ctx_, cmd);

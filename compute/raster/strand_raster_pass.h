@@ -25,8 +25,8 @@
 // caller keeps in flight), so rebindShading() can point one slot's sets at new shading resources while
 // frames recorded with the other slots still run: the caller rewrites a slot only once the last frame
 // recorded with it is complete, and names the slot in record(). List overflow is never silent:
-// readStats() reports entries dropped by the tile
-// budget and past the list capacity (capacity derived from the segment count and the frame size).
+// readStats() reports entries dropped by the tile budget and for the list capacity (derived from the segment
+// count and the frame size, or grown: RasterSettings::growLists); a full list cuts every tile's far bins alike.
 #include "hairpipe_volk.h"
 
 #include <array>
@@ -160,8 +160,9 @@ class StrandRasterPass {
   VkExtent2D extent() const { return extent_; }
   std::uint32_t capacity() const { return list_->capacity; }  // of the newest lists
   std::uint32_t maxCapacity() const { return maxCapacity_; }
-  // The lists' device memory (every list a slot still binds).
-  VkDeviceSize listBytes() const;
+  // The newest lists' entries per segment beyond their 16 per tile, rounded up, in [1, 8]: where a rebuilt
+  // pass (new strands, another extent) starts its growing lists (RasterSettings::listStartPerSegment).
+  std::uint32_t listEntriesPerSegment() const;
   // Blocking readback of the last recorded frame's statistics (outside the frame loop).
   RasterStats readStats() const;
   // Blocking readback of the last frame's hair coverage per pixel (rows top to bottom), averaged over the
@@ -210,6 +211,7 @@ class StrandRasterPass {
   std::uint32_t headSamples_;
   std::uint32_t frameSlots_;
   std::uint32_t tilesX_, tilesY_, maxCapacity_ = 0;
+  std::uint64_t segments_ = 0;  // of every source
   FineWalk walk_ = FineWalk::Direct;  // Auto resolved
   std::vector<std::uint32_t> sourceVertices_;  // render vertices of each source (bind() must match)
   vk::Buffer screen_, colors_, state_, counts_, keys_, tiles_, blocks_, tileDepth_;
@@ -224,7 +226,7 @@ class StrandRasterPass {
   vk::Sampler sampler_;
   VkImageView depth_ = VK_NULL_HANDLE;
   std::vector<Chunk> chunks_;
-  vk::ComputePipeline project_, tileDepthPipeline_, count_, scatter_, scanTiles_, scanBlocks_, fine_;
+  vk::ComputePipeline project_, tileDepthPipeline_, count_, scatter_, budgetTiles_, scanTiles_, scanBlocks_, fine_;
   std::optional<ShadePipelines> shade_;
 };
 

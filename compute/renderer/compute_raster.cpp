@@ -14,10 +14,12 @@
 
 namespace hp {
 namespace {
-compute::RasterSettings rasterSettingsOf(const RendererSettings& settings) {
+compute::RasterSettings rasterSettingsOf(const RendererSettings& settings, const ComputeRaster* previous) {
   compute::RasterSettings r = settings.rasterSettings;
   r.motion = settings.motionVectors;
   r.reversedDepth = settings.formats.reversedDepth;
+  // A rebuilt target's growing lists start where its predecessor's had grown (no frames of full lists again).
+  if (previous) r.listStartPerSegment = std::max(r.listStartPerSegment, previous->listEntriesPerSegment());
   return r;
 }
 
@@ -42,13 +44,14 @@ std::vector<vk::Buffer> ComputeRaster::makeFrameBlocks(const vk::Context& ctx, s
 
 ComputeRaster::ComputeRaster(const vk::Context& ctx, const RendererSettings& settings,
                              const render::ShadowMaps& shadows, VkExtent2D extent, VkImageView depth,
-                             std::span<HairInstance* const> instances, VkPipelineCache cache)
+                             std::span<HairInstance* const> instances, VkPipelineCache cache,
+                             const ComputeRaster* previous)
     : ctx_(ctx),
       shadows_(shadows),
       instances_(instances.begin(), instances.end()),
       frames_(makeFrameBlocks(ctx, instances.size())),
       depth_(depth),
-      pass_(ctx, sources(), extent, rasterSettingsOf(settings), std::uint32_t(settings.formats.samples), cache,
+      pass_(ctx, sources(), extent, rasterSettingsOf(settings, previous), std::uint32_t(settings.formats.samples), cache,
             settings.framesInFlight),
       stale_(settings.framesInFlight, std::vector<bool>(instances.size(), false)),
       composite_(ctx, settings.formats, settings.velocityOutput, cache),
@@ -88,7 +91,7 @@ void ComputeRaster::shadingChanged(const HairInstance* instance) {
   for (std::vector<bool>& slot : stale_) slot[std::size_t(it - instances_.begin())] = true;
 }
 
-void ComputeRaster::prepareSlot(std::uint64_t frame, std::uint32_t slot) {
+void ComputeRaster::prepareSlot(FrameId frame, std::uint32_t slot) {
   if (lastFrame_ == frame) return;  // a later view of the same frame: its sets are bound already
   lastFrame_ = frame;
   for (std::size_t source = 0; source < instances_.size(); ++source) {
@@ -138,9 +141,9 @@ ComputeRaster::SourceFrames ComputeRaster::recordFrameBlocks(VkCommandBuffer cmd
   return sources;
 }
 
-void ComputeRaster::record(VkCommandBuffer cmd, std::uint64_t frame, const View& view,
+void ComputeRaster::record(VkCommandBuffer cmd, FrameId frame, const View& view,
                            const render::FrameLights& lights, vk::GpuProfiler* profiler) {
-  const auto slot = std::uint32_t(frame % stale_.size());  // the frame slot: one per frame in flight
+  const auto slot = std::uint32_t(frame.frame % stale_.size());  // the frame slot: one per frame in flight
   prepareSlot(frame, slot);
   const SourceFrames sources = recordFrameBlocks(cmd, view, lights, slot);
   // The graphics readers' states (recordShadows) extended to compute for the pass, then back, so the

@@ -31,12 +31,19 @@ class HairInstance;
 
 class ComputeRaster {
  public:
-  // `cache`: the Renderer's pipeline cache, which the target's own pipelines are built through.
+  // `cache`: the Renderer's pipeline cache, which the target's own pipelines are built through. `previous`:
+  // the raster this one replaces (its growing lists' size per segment is where this one's start), or null.
   ComputeRaster(const vk::Context& ctx, const RendererSettings& settings, const render::ShadowMaps& shadows,
                 VkExtent2D extent, VkImageView depth, std::span<HairInstance* const> instances,
-                VkPipelineCache cache = VK_NULL_HANDLE);
+                VkPipelineCache cache = VK_NULL_HANDLE, const ComputeRaster* previous = nullptr);
 
-  void record(VkCommandBuffer cmd, std::uint64_t frame, const View& view, const render::FrameLights& lights,
+  // A frame: its number within a numbering epoch (Renderer::recordEpoch: the numbers may start again after
+  // releaseRetired, when nothing is in flight).
+  struct FrameId {
+    std::uint64_t epoch = 0, frame = 0;
+    bool operator==(const FrameId&) const = default;
+  };
+  void record(VkCommandBuffer cmd, FrameId frame, const View& view, const render::FrameLights& lights,
               vk::GpuProfiler* profiler);
   // `instance` (held) shades with new resources (its material's LUTs) from its next frame on.
   void shadingChanged(const HairInstance* instance);
@@ -50,6 +57,7 @@ class ComputeRaster {
   const vk::Image& motionImage() const { return pass_.motionOutput(); }
   std::vector<glm::vec2> readMotion() const { return pass_.readMotion(); }
   compute::RasterStats readStats() const { return pass_.readStats(); }
+  std::uint32_t listEntriesPerSegment() const { return pass_.listEntriesPerSegment(); }
   std::vector<float> readCoverage() const { return pass_.readCoverage(); }
 
  private:
@@ -58,7 +66,7 @@ class ComputeRaster {
   compute::ShadingWriter shadingWriter(std::size_t source) const;
   // The first view of `frame`: the stale shading bindings of its slot rewritten and, with growing lists, the
   // lists the slot binds sized by its last frame's views (StrandRasterPass::useLists).
-  void prepareSlot(std::uint64_t frame, std::uint32_t slot);
+  void prepareSlot(FrameId frame, std::uint32_t slot);
   // What each instance draws in a view: its strands (the level of detail's prefix) and its shade variant.
   struct SourceFrames {
     std::vector<std::uint32_t> strandLimits;
@@ -76,7 +84,7 @@ class ComputeRaster {
   VkImageView depth_;
   compute::StrandRasterPass pass_;
   std::vector<std::vector<bool>> stale_;   // [frame slot][instance]: its shading bindings name old resources
-  std::optional<std::uint64_t> lastFrame_;  // the frame of the views most recently recorded
+  std::optional<FrameId> lastFrame_;  // the frame of the views most recently recorded
   render::CompositePass composite_;
   // Growing lists (RasterSettings::growLists): per frame slot, each view's RasterState copied after its
   // binning, and how many views the slot's latest frame recorded; empty when the lists do not grow.

@@ -88,14 +88,16 @@ void Renderer::destroyInstance(std::unique_ptr<HairInstance> instance) {
 }
 
 std::shared_ptr<ComputeRaster> Renderer::buildRaster(VkExtent2D extent, VkImageView depth,
-                                                     std::span<HairInstance* const> instances) {
+                                                     std::span<HairInstance* const> instances,
+                                                     const ComputeRaster* previous) {
   if (raster_ != RasterMode::Compute) throw Error("Renderer: a raster target needs the compute raster (the raster mode is not compute)");
   if (depth == VK_NULL_HANDLE) throw Error("Renderer: the depth view is VK_NULL_HANDLE");
   for (const HairInstance* i : instances)
     if (!i || &i->renderer_ != this) throw Error("Renderer: an instance is null or belongs to another Renderer");
   std::shared_ptr<ComputeRaster> raster;
   withUploads("raster target", [&] {
-    raster = std::make_shared<ComputeRaster>(ctx_, settings_, *shadows_, extent, depth, instances, pipelines_.cache());
+    raster = std::make_shared<ComputeRaster>(ctx_, settings_, *shadows_, extent, depth, instances, pipelines_.cache(),
+                                             previous);
   });
   return raster;
 }
@@ -118,7 +120,7 @@ void Renderer::setRasterTarget(VkExtent2D extent, VkImageView depth, std::span<H
     targets_.push_back(ownTarget_);
     return;
   }
-  std::shared_ptr<ComputeRaster> raster = buildRaster(extent, depth, instances);
+  std::shared_ptr<ComputeRaster> raster = buildRaster(extent, depth, instances, ownTarget_->raster_.get());
   if (ownTarget_->raster_) retire(ownTarget_->raster_);  // frames in flight may still use its buffers and descriptors
   ownTarget_->raster_ = std::move(raster);
 }
@@ -152,7 +154,7 @@ void Renderer::instanceChanged(const HairInstance& instance, bool removed) {
       std::vector<HairInstance*> kept;
       for (HairInstance* i : old->instances())
         if (!removed || i != &instance) kept.push_back(i);
-      if (!kept.empty()) target.raster_ = buildRaster(old->extent(), old->depth(), kept);
+      if (!kept.empty()) target.raster_ = buildRaster(old->extent(), old->depth(), kept, old.get());
     } catch (...) {
       if (!failure) failure = std::current_exception();
     }
@@ -192,7 +194,7 @@ void Renderer::recordRaster(VkCommandBuffer cmd, std::uint64_t frame, const View
                 std::to_string(t.extent().width) + "x" + std::to_string(t.extent().height));
   beginFrame(frame, t.instances());
   for (HairInstance* i : t.instances()) i->noteViewFraction(frame, i->lodFraction(view.camera.position));
-  t.record(cmd, frame, view, frameLights_[frame % settings_.framesInFlight], profiler);
+  t.record(cmd, {recordEpoch_, frame}, view, frameLights_[frame % settings_.framesInFlight], profiler);
 }
 
 void Renderer::recordComposite(VkCommandBuffer cmd, VkExtent2D extent, const RasterTarget& target,

@@ -188,7 +188,9 @@ class Renderer {
   // setRasterTarget's (throws before it was called).
   const RasterTarget& ownTarget() const;
   // Checks a target's instances and builds its raster (uploads batched by withUploads).
-  std::shared_ptr<ComputeRaster> buildRaster(VkExtent2D extent, VkImageView depth, std::span<HairInstance* const> instances);
+  // `previous`: the raster the new one replaces, if any (its growing lists' size carries over).
+  std::shared_ptr<ComputeRaster> buildRaster(VkExtent2D extent, VkImageView depth, std::span<HairInstance* const> instances,
+                                             const ComputeRaster* previous = nullptr);
   // f(RasterTarget&) for each target someone still holds (the own one and createRasterTarget's), forgetting
   // the others; allocates nothing (the material and strand changes that call it must not fail after their swap).
   template <class F>

@@ -131,7 +131,8 @@ struct CompositeVelocityPush {
 struct RasterState {
   uvec4 depthBits;  // x, y = orderedFromFloat of the min / max view depth of the visible vertices
   uvec4 entries;    // x = (segment, tile) entries requested, y = dropped by the tile budget,
-                    // z = dropped past the list capacity, w = entries kept
+                    // z = dropped for the list capacity, w = entries kept
+  uvec4 budgeted;   // x = entries within the tile budgets (raster_budget_tiles.comp), which the capacity may cut
 };
 
 // Per chunk, fixed for the pass's life: a read-only storage buffer, not push constants (lavapipe in
@@ -228,7 +229,7 @@ HP_RASTER_FN float rasterVisibleShare(uint bandSamples, uint coveredSamples, uin
 HP_END
 
 #ifdef __cplusplus
-static_assert(sizeof(hp::gpu::RasterState) == 32);
+static_assert(sizeof(hp::gpu::RasterState) == 48);
 static_assert(sizeof(hp::gpu::RasterParams) == 64);
 static_assert(hp::gpu::RASTER_FINE_SIZE == hp::gpu::RASTER_TILE_SIZE * hp::gpu::RASTER_TILE_SIZE);
 #endif

@@ -4,6 +4,7 @@
 // is the one the worst-case lists draw. Under synchronization validation.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <iostream>
 #include <memory>
 #include <vector>
@@ -11,6 +12,7 @@
 #include "compute/renderer/renderer.h"
 #include "engine/vk/submit.h"
 #include "samples/tools/offscreen_renderer.h"
+#include "tests/support/frame_slots.h"
 #include "tests/support/rgba_luminance.h"
 #include "tests/support/small_frame.h"
 #include "tests/support/vk_fixture.h"
@@ -22,20 +24,32 @@ namespace {
 struct Frame {
   hp::compute::RasterStats stats;
   std::vector<std::uint8_t> display;
+  std::vector<float> coverage;  // per pixel
 };
 
-// `count` frames of the small frame's head (3,000 strands) from far off, each submitted and waited for (so
-// every earlier frame is complete, as the frame contract asks), with growing lists that start at one entry
-// per segment (this view asks ~1.1 per segment: the default start, 2, would hold it) or the worst-case lists.
-std::vector<Frame> frames(const hp::vk::Context& ctx, bool grow, int count) {
-  hp::render::OffscreenRenderer target(ctx, hp::test::kSmallWidth, hp::test::kSmallHeight, 1, hp::RasterMode::Compute);
+// Per band of 8 rows (a row of tiles), the hair's coverage summed over its pixels.
+std::vector<double> bandCoverage(const std::vector<float>& coverage) {
+  std::vector<double> bands((hp::test::kSmallHeight + 7) / 8, 0.0);
+  for (std::size_t p = 0; p < coverage.size(); ++p) bands[p / hp::test::kSmallWidth / 8] += coverage[p];
+  return bands;
+}
+
+hp::RendererSettings listSettings(const hp::render::OffscreenRenderer& target, bool grow) {
   hp::RendererSettings s;
   s.formats = target.formats();
   s.raster = hp::RasterMode::Compute;
   s.opacity.resolution = 128;
   s.rasterSettings.growLists = grow;
   s.rasterSettings.listStartPerSegment = 1;
-  hp::Renderer renderer(ctx, s);
+  return s;
+}
+
+// `count` frames of the small frame's head (3,000 strands) from far off, each submitted and waited for (so
+// every earlier frame is complete, as the frame contract asks), with growing lists that start at one entry
+// per segment (this view asks ~1.1 per segment: the default start, 2, would hold it) or the worst-case lists.
+std::vector<Frame> frames(const hp::vk::Context& ctx, bool grow, int count) {
+  hp::render::OffscreenRenderer target(ctx, hp::test::kSmallWidth, hp::test::kSmallHeight, 1, hp::RasterMode::Compute);
+  hp::Renderer renderer(ctx, listSettings(target, grow));
   auto hair = renderer.createInstance(hp::test::defaultHeadWithStrands(3000), {});
   hp::HairInstance* one[] = {hair.get()};
   target.attach(renderer, one);
@@ -46,7 +60,7 @@ std::vector<Frame> frames(const hp::vk::Context& ctx, bool grow, int count) {
       renderer.recordShadows(cmd, std::uint64_t(f), hp::LightSpec{}, one);
       target.record(cmd, renderer, std::uint64_t(f), hp::test::smallFrontView(1.6f), one, 1.0f);
     }, "list growth frame");
-    out.push_back({renderer.rasterStats(), target.readDisplay()});
+    out.push_back({renderer.rasterStats(), target.readDisplay(), renderer.rasterCoverage()});
   }
   return out;
 }
@@ -74,13 +88,89 @@ TEST_F(VulkanTest, GrowingTileListsGrowOnceAFrameAsksForMoreAndThenDrawAsTheWors
     EXPECT_EQ(grown[f].stats.droppedByCapacity, 0u);
     EXPECT_EQ(worst[f].stats.droppedByCapacity, 0u);
   }
+  // A frame whose lists were full cut every tile's farthest bins alike: each row of tiles keeps nearly all of
+  // its coverage (the cut hair is mostly behind nearer hair). Cutting the entries past the capacity instead,
+  // the last tiles in row order lost all theirs: the lowest rows with hair went bare (ratio 0 there).
+  const std::vector<double> full = bandCoverage(grown[0].coverage), reserved = bandCoverage(worst[0].coverage);
+  double lowest = 1.0;
+  for (std::size_t band = 0; band < full.size(); ++band)
+    if (reserved[band] > 1.0) lowest = std::min(lowest, full[band] / reserved[band]);
+  std::cout << "full lists: the lowest share of a tile row's coverage kept " << lowest << "\n";
+  EXPECT_GT(lowest, 0.9);
   // The images: a grown frame is the worst-case lists' within the compute raster's run-to-run noise (segments
   // of one depth bin composite in their atomics' order; 0 pixels here on lavapipe). A frame that dropped
-  // entries differs by more (87 pixels: the farthest bins of the densest tiles, mostly behind nearer hair).
+  // entries differs by more (31 pixels).
   const std::size_t pixels = grown.back().display.size() / 4;
   const std::size_t droppedApart = pixelsApart(grown[0].display, worst[0].display, 1);
   const std::size_t grownApart = pixelsApart(grown.back().display, worst.back().display, 1);
   std::cout << "pixels apart from the worst-case lists' frame: " << droppedApart << " while dropping, " << grownApart
             << " once grown, of " << pixels << "\n";
   EXPECT_LE(grownApart, pixels / 50);
+}
+
+// The same with two frames really in flight (each submitted before the one two earlier is waited for), under
+// synchronization validation: the lists grow while frames run, each slot takes the new ones when its own last
+// frame is done, and the old ones go only then; the last frame, read once all are done, asks for no more than
+// the grown lists hold and is the worst-case lists' frame within the compute raster's noise.
+TEST_F(VulkanTest, GrowingTileListsGrowWithFramesInFlight) {
+  hp::render::OffscreenRenderer target(*ctx, hp::test::kSmallWidth, hp::test::kSmallHeight, 1, hp::RasterMode::Compute);
+  hp::Renderer renderer(*ctx, listSettings(target, true));
+  auto hair = renderer.createInstance(hp::test::defaultHeadWithStrands(3000), {});
+  hp::HairInstance* one[] = {hair.get()};
+  target.attach(renderer, one);
+  std::uint32_t start = 0;
+  {
+    hp::test::FrameSlots slots(*ctx, 2);
+    for (std::uint64_t frame = 0; frame < 6; ++frame) {
+      VkCommandBuffer cmd = slots.begin(frame % 2);  // waits for frame - 2
+      renderer.recordUpdate(cmd, frame, one);
+      renderer.recordShadows(cmd, frame, hp::LightSpec{}, one);
+      target.record(cmd, renderer, frame, hp::test::smallFrontView(1.6f), one, 1.0f);
+      slots.submit(frame % 2);
+      if (frame == 0) {
+        slots.wait(0);
+        start = renderer.rasterStats().listCapacity;
+      }
+    }
+  }  // every frame waited for
+  const hp::compute::RasterStats last = renderer.rasterStats();
+  const std::vector<std::uint8_t> image = target.readDisplay();
+  const std::vector<Frame> worst = frames(*ctx, false, 6);  // its frame 5: the hair as simulated as far
+  std::cout << "in flight: capacity " << start << " -> " << last.listCapacity << ", the last frame asked "
+            << last.kept + last.droppedByCapacity << " and dropped " << last.droppedByCapacity << "; "
+            << pixelsApart(image, worst.back().display, 1) << " pixels apart from the worst-case lists' frame\n";
+  EXPECT_GT(last.listCapacity, start);
+  EXPECT_EQ(last.droppedByCapacity, 0u);
+  EXPECT_LE(pixelsApart(image, worst.back().display, 1), image.size() / 4 / 50);
+}
+
+// A target the Renderer rebuilds (here: the instance's strands set again) starts its lists at the size per
+// segment its predecessor's had grown to, so the frames after the rebuild do not run with full lists again.
+TEST_F(VulkanTest, ARebuiltTargetStartsItsListsWhereThePreviousOnesHadGrown) {
+  hp::render::OffscreenRenderer target(*ctx, hp::test::kSmallWidth, hp::test::kSmallHeight, 1, hp::RasterMode::Compute);
+  hp::Renderer renderer(*ctx, listSettings(target, true));
+  const hp::HairAsset asset = hp::test::defaultHeadWithStrands(3000);
+  auto hair = renderer.createInstance(asset, {});
+  hp::HairInstance* one[] = {hair.get()};
+  target.attach(renderer, one);
+  std::uint64_t frame = 0;
+  const auto draw = [&] {
+    hp::vk::submitAndWait(*ctx, [&](VkCommandBuffer cmd) {
+      renderer.recordUpdate(cmd, frame, one);
+      renderer.recordShadows(cmd, frame, hp::LightSpec{}, one);
+      target.record(cmd, renderer, frame, hp::test::smallFrontView(1.6f), one, 1.0f);
+    }, "rebuilt target frame");
+    ++frame;
+    return renderer.rasterStats();
+  };
+  const std::uint32_t start = draw().listCapacity;
+  draw();
+  const std::uint32_t grown = draw().listCapacity;  // frame 2: frame 0's slot again
+  hair->setStrands(asset.topology, hair->settings().strands);  // the target is rebuilt for the new buffers
+  const hp::compute::RasterStats rebuilt = draw();
+  std::cout << "lists: start " << start << ", grown " << grown << ", the rebuilt target's first frame " << rebuilt.listCapacity
+            << " (dropped " << rebuilt.droppedByCapacity << ")\n";
+  EXPECT_GT(grown, start);
+  EXPECT_GE(rebuilt.listCapacity, grown);
+  EXPECT_EQ(rebuilt.droppedByCapacity, 0u);
 }

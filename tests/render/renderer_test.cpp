@@ -28,6 +28,7 @@
 #include "engine/vk/submit.h"
 #include "engine/vk/transfer.h"
 #include "tests/support/device_call_counter.h"
+#include "tests/support/frame_slots.h"
 #include "tests/support/rgba_luminance.h"
 #include "tests/support/vk_fixture.h"
 
@@ -174,55 +175,6 @@ TEST_F(VulkanTest, SeveralViewsOfOneFrameReuseItsShadows) {
 }
 
 namespace {
-// The application's side of frames in flight: one command buffer and fence per slot.
-struct FrameSlots {
-  const hp::vk::Context& ctx;
-  VkCommandPool pool = VK_NULL_HANDLE;
-  std::vector<VkCommandBuffer> cmds;
-  std::vector<VkFence> fences;
-  std::vector<bool> pending;
-
-  FrameSlots(const hp::vk::Context& c, std::uint32_t count) : ctx(c), cmds(count), fences(count), pending(count) {
-    VkCommandPoolCreateInfo pi{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
-    pi.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
-    pi.queueFamilyIndex = ctx.queueFamily();
-    HP_VK_CHECK(vkCreateCommandPool(ctx.device(), &pi, nullptr, &pool));
-    VkCommandBufferAllocateInfo ai{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
-    ai.commandPool = pool;
-    ai.commandBufferCount = count;
-    HP_VK_CHECK(vkAllocateCommandBuffers(ctx.device(), &ai, cmds.data()));
-    VkFenceCreateInfo fi{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
-    for (VkFence& f : fences) HP_VK_CHECK(vkCreateFence(ctx.device(), &fi, nullptr, &f));
-  }
-  ~FrameSlots() {
-    for (std::size_t i = 0; i < fences.size(); ++i) wait(i);
-    for (VkFence f : fences) vkDestroyFence(ctx.device(), f, nullptr);
-    vkDestroyCommandPool(ctx.device(), pool, nullptr);
-  }
-  void wait(std::size_t slot) {
-    if (!pending[slot]) return;
-    HP_VK_CHECK(vkWaitForFences(ctx.device(), 1, &fences[slot], VK_TRUE, UINT64_MAX));
-    HP_VK_CHECK(vkResetFences(ctx.device(), 1, &fences[slot]));
-    pending[slot] = false;
-  }
-  VkCommandBuffer begin(std::size_t slot) {
-    wait(slot);
-    VkCommandBufferBeginInfo bi{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
-    bi.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
-    HP_VK_CHECK(vkBeginCommandBuffer(cmds[slot], &bi));
-    return cmds[slot];
-  }
-  void submit(std::size_t slot) {
-    HP_VK_CHECK(vkEndCommandBuffer(cmds[slot]));
-    VkCommandBufferSubmitInfo ci{VK_STRUCTURE_TYPE_COMMAND_BUFFER_SUBMIT_INFO};
-    ci.commandBuffer = cmds[slot];
-    VkSubmitInfo2 si{VK_STRUCTURE_TYPE_SUBMIT_INFO_2};
-    si.commandBufferInfoCount = 1;
-    si.pCommandBufferInfos = &ci;
-    HP_VK_CHECK(vkQueueSubmit2(ctx.queue(), 1, &si, fences[slot]));
-    pending[slot] = true;
-  }
-};
 
 // Three frames of two heads into three targets, `inFlight` frames pending at most; the material of the
 // second head changes after frame 2 was submitted (the queue submissions and waits it makes counted).
@@ -241,7 +193,7 @@ std::vector<std::vector<std::uint8_t>> threeFrames(const hp::vk::Context& ctx, s
   hp::CameraSpec cam;
   cam.target = {0.15f, -0.05f, 0.0f};
   const hp::View view{hp::orbitCamera(cam, 1.5f), {96, 64}, false, 0};
-  FrameSlots slots(ctx, inFlight);
+  hp::test::FrameSlots slots(ctx, inFlight);
   std::unique_ptr<hp::test::DeviceCallCounter> counter;  // the change and the frame that applies it
   for (std::uint64_t frame = 0; frame < 3; ++frame) {
     const std::size_t slot = frame % inFlight;
@@ -440,7 +392,7 @@ std::vector<std::vector<std::uint8_t>> computeFramesInFlight(const hp::vk::Conte
   const VkImage image = renderer.rasterImage().handle();
   hp::CameraSpec cam;
   const hp::View view{hp::orbitCamera(cam, 1.5f), {96, 64}, false, 0};
-  FrameSlots slots(ctx, 2);
+  hp::test::FrameSlots slots(ctx, 2);
   std::unique_ptr<hp::test::DeviceCallCounter> counter;
   std::vector<std::vector<std::uint8_t>> images;
   for (std::uint64_t frame = 0; frame < 5; ++frame) {

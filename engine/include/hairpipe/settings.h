@@ -118,8 +118,10 @@ struct RendererSettings {
   // Compute raster: the tile lists (most of a raster target's device memory) start at 2 entries per strand
   // segment plus 16 per tile and grow, to twice a frame's need, once a frame's views ask for more than 3/4 of
   // them (known framesInFlight frames later, when that frame is complete), up to what false reserves from
-  // the start: 8 per segment plus 16 per tile, enough for close-ups. Until they have grown, a sudden close-up
-  // loses its farthest hair in its densest tiles for up to framesInFlight + 1 frames.
+  // the start: 8 per segment plus 16 per tile, enough for close-ups. Until they have grown, a cut to a view
+  // that asks for more than they hold (a close-up) draws for framesInFlight frames with every tile's
+  // farthest entries cut in proportion (the nearest hair kept), as a full list always does. A target the
+  // Renderer rebuilds (a density change, another extent) starts at the size per segment it had grown to.
   bool growRasterLists = false;
   // Compute raster: where a render strand's vertices 2j and 2j + 2 lie within this many pixels of each other on
   // screen (and the strand turns there by at most ~28 degrees on screen), the odd vertex between them is not
