@@ -1,7 +1,7 @@
 #version 460
 // Compute rasterizer, one invocation per tile, before raster_scan_tiles.comp: the entries the tile asks for and
 // those within its tileBudget (nearest bins first) summed over the frame, into RasterState.entries.x and
-// budgeted.x. The scan then knows before it keeps anything whether the lists can hold the budgeted total, and
+// budgeted.x, and the tiles that ask for any into budgeted.y. The scan then knows before it keeps anything whether the lists can hold the budgeted total, and
 // where they cannot, every tile gives up its farthest bins in proportion (not the last tiles their all).
 #include "shared/raster.h"
 #include "common.glsl"
@@ -19,4 +19,5 @@ void main() {
   if (requested == 0u) return;
   atomicAdd(state.entries.x, requested);
   atomicAdd(state.budgeted.x, min(requested, params.tileBudget));
+  atomicAdd(state.budgeted.y, 1u);
 }

@@ -1,7 +1,8 @@
 #version 460
 // Compute rasterizer, one workgroup: exclusive scan of the block totals of raster_scan_tiles in place
 // (each invocation sums a run of blocks, a shared scan of the runs, then each run is written out), and
-// the list statistics: entries kept within the capacity, entries past it (dropped by the scatter); and the
+// the list statistics: entries kept within the capacity (raster_scan_tiles already cut a full list's to fit;
+// anything past it would be dropped by the scatter and is counted with the cut); and the
 // indirect shade dispatch of every chunk from its listed vertices (2D past maxGroupsX, as dispatch()).
 #include "shared/raster.h"
 

@@ -273,7 +273,7 @@ void printText(const nlohmann::json& row) {
               row["resident_growth_mib_per_frame"].get<double>());
   if (const double target = row.value("raster_target_mib", 0.0); target > 0.0)
     std::printf("  raster target %.1f MiB of device memory (its lists and images%s)\n", target,
-                row.value("grow_lists", false) ? ", the lists grown in the frames" : "");
+                row["grow_lists"].is_boolean() && row["grow_lists"].get<bool>() ? ", the lists grown in the frames" : "");
   std::printf("  copy yardstick %.2f GB/s alone (transfer %.2f, compute %.2f; transfer: %u submissions, %s), %.2f GB/s inside the frame%s\n",
               row["copy_gb_per_s"].get<double>(), row["copy_transfer_gb_per_s"].get<double>(),
               row["copy_compute_gb_per_s"].get<double>(), row["copy_runs"].get<unsigned>(),

@@ -132,7 +132,8 @@ struct RasterState {
   uvec4 depthBits;  // x, y = orderedFromFloat of the min / max view depth of the visible vertices
   uvec4 entries;    // x = (segment, tile) entries requested, y = dropped by the tile budget,
                     // z = dropped for the list capacity, w = entries kept
-  uvec4 budgeted;   // x = entries within the tile budgets (raster_budget_tiles.comp), which the capacity may cut
+  uvec4 budgeted;   // x = entries within the tile budgets, which the capacity may cut; y = tiles with any
+                    // (raster_budget_tiles.comp)
 };
 
 // Per chunk, fixed for the pass's life: a read-only storage buffer, not push constants (lavapipe in

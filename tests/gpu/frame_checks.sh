@@ -2,6 +2,8 @@
 # It runs compare_binaries.sh (beside it in the bundle), then:
 # - the opacity maps' strand budget (`bench --shadow-strands`): 0, 131,072 and 262,144 at 1,000,000 strands and
 #   0 and 65,536 at 136,320, at 1920x1080: bench/shadow_strands_1m.json, bench/shadow_strands_136k.json;
+# - the tile lists reserved or grown (`bench --grow-lists off,on`) at 136,320 and 1,000,000 strands at 1920x1080:
+#   the frame's passes and the raster target's device memory, bench/grow_lists.json;
 # - two renders of one frame (136,320 strands at 1920x1080, the compute raster) compared with `hairpipe
 #   compare`: a depth bin's entries composite in the atomics' order, so how far apart two runs land says how
 #   much a still frame may shimmer on this device (lavapipe: 60 dB at 1280x720). Keeps render_1.png,
@@ -17,6 +19,8 @@ step checks/shadow_strands_large 90 "$DEADLINE" - "$H" bench --raster compute --
   --resolution ${FC_W}x$FC_H --frames $FC_FRAMES --shadow-strands $FC_BUDGETS_L --json "$OUT/bench/shadow_strands_1m.json"
 step checks/shadow_strands_small 60 "$DEADLINE" - "$H" bench --raster compute --strands $FC_SMALL \
   --resolution ${FC_W}x$FC_H --frames $FC_FRAMES --shadow-strands $FC_BUDGETS_S --json "$OUT/bench/shadow_strands_136k.json"
+step checks/grow_lists 90 "$DEADLINE" - "$H" bench --raster compute --strands $FC_SMALL,$FC_LARGE \
+  --resolution ${FC_W}x$FC_H --frames $FC_FRAMES --grow-lists off,on --json "$OUT/bench/grow_lists.json"
 for k in 1 2; do
   step checks/render_$k 60 "$DEADLINE" - "$H" render --density $FC_SMALL --width $FC_W --height $FC_H --raster compute \
     --export-frame "$OUT/render_$k" --out "$OUT/render_$k.png"

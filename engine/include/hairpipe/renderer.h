@@ -60,7 +60,8 @@
 //      DEPTH_STENCIL_ATTACHMENT_READ|WRITE, layout back to step 1's; colour COLOR_ATTACHMENT_OUTPUT,
 //      COLOR_ATTACHMENT_WRITE -> COLOR_ATTACHMENT_OUTPUT, COLOR_ATTACHMENT_READ|WRITE (the heads' colour
 //      before the composite's blend; same layout).
-//   5. a rendering of the same attachments with LOAD_OP_LOAD on colour (and the depth attached: the
+//   5. a rendering of the same attachments with LOAD_OP_LOAD on colour (and on the velocity attachment with
+//      RendererSettings::velocityOutput: pixels without hair keep what step 1 wrote; the depth attached: the
 //      composite's pipeline is made for RendererSettings::formats; it neither tests nor writes depth; the
 //      application's resolve attachments, if any, here), in which recordComposite(cmd, extent) blends the
 //      hair over the colour (multisampled: per sample, with the coverage recordRaster took from the

@@ -41,8 +41,9 @@ struct AttachmentFormats {  // the application's attachments recordDraw / record
   // The rendering's further colour attachments after `color`, in attachment order (locations 1, 2, ...: an
   // engine's velocity or normal target in its main pass), each a colour format or VK_FORMAT_UNDEFINED for a slot
   // the rendering leaves unused (a null image view there), at most 7 and together with `color` at most the
-  // device's maxColorAttachments. hairpipe's draws leave them as they are (but for RendererSettings::velocityOutput's; colour write
-  // mask 0), so its pipelines match a pass that renders into them too. With any, the device must have the
+  // device's maxColorAttachments. hairpipe's draws leave them as they are (colour write mask 0), so its
+  // pipelines match a pass that renders into them too, except that recordComposite writes the attachment
+  // RendererSettings::velocityOutput names. With any, the device must have the
   // independentBlend feature enabled (a headless Context enables it where the device has it).
   std::vector<VkFormat> otherColors;
 };
@@ -117,11 +118,12 @@ struct RendererSettings {
   std::uint32_t tileBudget = 16384;    // compute raster: list entries kept per 8x8 tile, [1, 2^24]
   // Compute raster: the tile lists (most of a raster target's device memory) start at 2 entries per strand
   // segment plus 16 per tile and grow, to twice a frame's need, once a frame's views ask for more than 3/4 of
-  // them (known framesInFlight frames later, when that frame is complete), up to what false reserves from
-  // the start: 8 per segment plus 16 per tile, enough for close-ups. Until they have grown, a cut to a view
-  // that asks for more than they hold (a close-up) draws for framesInFlight frames with every tile's
-  // farthest entries cut in proportion (the nearest hair kept), as a full list always does. A target the
-  // Renderer rebuilds (a density change, another extent) starts at the size per segment it had grown to.
+  // them (known framesInFlight frames later, when that frame is complete), up to what growRasterLists = false
+  // reserves from the start: 8 per segment plus 16 per tile, enough for close-ups. Until they have grown,
+  // after a camera cut to a view that asks for more than they hold (a close-up) framesInFlight frames are
+  // drawn with full lists: every tile's farthest entries thinned alike (its nearest kept), as ever when full.
+  // A target the Renderer rebuilds (a density change, another extent) starts at the size per segment it had
+  // grown to.
   bool growRasterLists = false;
   // Compute raster: where a render strand's vertices 2j and 2j + 2 lie within this many pixels of each other on
   // screen (and the strand turns there by at most ~28 degrees on screen), the odd vertex between them is not
