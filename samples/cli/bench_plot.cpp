@@ -38,7 +38,8 @@ std::string frameCaseName(const FrameCase& c) {
         c.fineWalk == compute::FineWalk::Auto ? "" : std::string(", ") + compute::fineWalkName(c.fineWalk) + " fine walk";
     std::ostringstream spacing;
     if (c.shadingSpacing != compute::RasterSettings{}.shadingSpacing) spacing << ", shading spacing " << c.shadingSpacing;
-    return (c.skinBounce ? "compute" : "compute, no skin bounce") + head + shading + walk + spacing.str();
+    return (c.skinBounce ? "compute" : "compute, no skin bounce") + head + shading + walk + spacing.str() +
+           (c.growLists ? ", grown lists" : "");
   }
   return "graphics msaa" + std::to_string(c.msaa) + shading;
 }

@@ -238,6 +238,25 @@ TEST(CliBench, FineWalkListIsCheckedThenBenched) {
 
 // `bench --shading-spacing` takes pixels in [0, 4096] (refused by name before a frame runs); each spacing is a
 // case of its own, and the report says how many vertices its frame shaded: fewer where pairs share them.
+// `bench --grow-lists` takes off and/or on (refused by name before a frame runs); each is a case of its own,
+// and the grown lists' raster target holds less device memory than the close-up reserve's.
+TEST(CliBench, GrowListsIsCheckedThenBenched) {
+  auto bad = runCli({"bench", "--raster", "compute", "--grow-lists", "maybe", "--frames", "1"});
+  EXPECT_EQ(bad.exitCode, 1);
+  EXPECT_NE(bad.err.find("bench: --grow-lists takes off and/or on, got 'maybe'"), std::string::npos) << bad.err;
+  EXPECT_EQ(bad.out.find("median of"), std::string::npos) << "a frame ran: " << bad.out;
+  const nlohmann::json report = tinyComputeBench({"--grow-lists", "off,on"}, "bench_grow_lists.json");
+  ASSERT_FALSE(report.is_null());
+  ASSERT_EQ(report["results"].size(), 2u);
+  const nlohmann::json &reserved = report["results"][0], &grown = report["results"][1];
+  EXPECT_FALSE(reserved["grow_lists"].get<bool>());
+  EXPECT_TRUE(grown["grow_lists"].get<bool>());
+  EXPECT_EQ(reserved["raster"], "compute");
+  EXPECT_EQ(grown["raster"], "compute, grown lists");
+  EXPECT_LT(grown["raster_target_mib"].get<double>(), reserved["raster_target_mib"].get<double>());
+  EXPECT_EQ(grown["raster_overflow"].get<std::uint64_t>(), 0u);
+}
+
 TEST(CliBench, ShadingSpacingListIsCheckedThenBenched) {
   auto bad = runCli({"bench", "--raster", "compute", "--shading-spacing", "8,-1", "--frames", "1"});
   EXPECT_EQ(bad.exitCode, 1);
