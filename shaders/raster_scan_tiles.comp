@@ -27,14 +27,9 @@ void main() {
     uint requested = 0u;
     for (uint b = 0u; b < RASTER_DEPTH_BINS; ++b) requested += counts[t * RASTER_DEPTH_BINS + b];
     uint budgeted = min(requested, params.tileBudget);
-    uint total = state.budgeted.x, tilesAsking = state.budgeted.y;
-    // Over the capacity: each asking tile keeps its nearest entry and a share of the capacity left after one
-    // per tile (a sparse tile's only hair, often a silhouette's, is not cut). Summed: at most tilesAsking +
-    // (capacity - tilesAsking) = capacity; the factor absorbs the ratio's rounding. The capacity holds at least
-    // 16 entries per tile, so it is above tilesAsking.
-    uint limit = budgeted;
-    if (total > params.capacity && budgeted > 0u)
-      limit = min(budgeted, 1u + uint(float(budgeted) * (float(params.capacity - tilesAsking) / float(total)) * 0.99999));
+    // Over the capacity: each asking tile keeps its nearest entry and a share of the rest (a sparse tile's only
+    // hair, often a silhouette's, is not cut).
+    uint limit = rasterTileShare(budgeted, state.budgeted.x, state.budgeted.y, params.capacity);
     for (uint b = 0u; b < RASTER_DEPTH_BINS; ++b) {
       uint key = t * RASTER_DEPTH_BINS + b;
       uint k = min(counts[key], limit - kept);

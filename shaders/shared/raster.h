@@ -158,6 +158,19 @@ struct RasterParams {
 };
 HP_END
 
+// The entries a tile keeps of its `budgeted` (those within its tile budget) when the frame's budgeted `total`,
+// over `tilesAsking` tiles, may exceed the lists' `capacity` (raster_scan_tiles.comp): all of them where the
+// total fits; else its nearest entry and a share of the capacity left after one per tile. Summed over the
+// tiles: at most tilesAsking + (capacity - tilesAsking) = capacity; the factor absorbs the float ratio's
+// rounding (GLSL's division may be off by 2.5 ulp). The capacity holds 16 entries per tile, so it exceeds
+// tilesAsking.
+HP_BEGIN
+HP_RASTER_FN uint rasterTileShare(uint budgeted, uint total, uint tilesAsking, uint capacity) {
+  if (total <= capacity || budgeted == 0u) return budgeted;
+  return min(budgeted, 1u + uint(float(budgeted) * (float(capacity - tilesAsking) / float(total)) * 0.99999f));
+}
+HP_END
+
 // Coverage of a pixel (unit square centred on its centre) by a straight band of width w (pixels) whose
 // centre line passes at signed distance d (pixels) from the centre, with unit normal n: the exact area
 // of the intersection. The square's projection onto n is the sum of two uniform variables of

@@ -6,9 +6,12 @@
 // its samples.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "engine/core/error.h"
 #include "engine/vk/transfer.h"
@@ -73,6 +76,38 @@ double boxCoverage(double d, double w) {
 
 std::size_t at(int x, int y) { return std::size_t(y) * kExtent.width + x; }
 }  // namespace
+
+// A full list's share per tile (shared/raster.h rasterTileShare, what raster_scan_tiles.comp keeps): over
+// frames of many tiles, small and full, and totals from just over the capacity to 30 times it, every asking
+// tile keeps at least one entry and at most its own, and the tiles together stay within the capacity; where
+// the total fits, every tile keeps all.
+TEST(RasterLists, AFullListsShareKeepsEveryTileAnEntryAndFitsTheCapacity) {
+  std::uint32_t seed = 12345u;
+  const auto next = [&] { return seed = seed * 1664525u + 1013904223u; };
+  for (int frame = 0; frame < 200; ++frame) {
+    std::vector<std::uint32_t> budgeted(1 + next() % 40000);
+    std::uint64_t total = 0;
+    for (std::uint32_t& b : budgeted) {
+      const std::uint32_t kind = next() % 10;  // sparse edges, ordinary tiles and a few at the 16,384 budget
+      b = kind < 3 ? 1 + next() % 3 : kind < 9 ? next() % 600 : 16384;
+      total += b;
+    }
+    const auto asking = std::uint32_t(std::count_if(budgeted.begin(), budgeted.end(), [](std::uint32_t b) { return b > 0; }));
+    const double fraction = frame % 4 == 0 ? 1.0 : 0.033 + (next() % 1000) / 1000.0 * 0.96;
+    const auto capacity = std::max<std::uint32_t>(std::uint32_t(double(total) * fraction), 16u * std::uint32_t(budgeted.size()));
+    std::uint64_t kept = 0;
+    for (const std::uint32_t b : budgeted) {
+      const std::uint32_t k = hp::gpu::rasterTileShare(b, std::uint32_t(total), asking, capacity);
+      ASSERT_LE(k, b);
+      if (b > 0) ASSERT_GE(k, 1u);
+      if (total <= capacity) ASSERT_EQ(k, b);
+      kept += k;
+    }
+    ASSERT_LE(kept, std::uint64_t(capacity)) << "frame " << frame;
+    // Little left unused: each tile's share rounds down by less than one entry, and the factor takes 1e-5.
+    if (total > capacity) EXPECT_GE(kept + asking + capacity / 50000, std::uint64_t(capacity)) << "frame " << frame;
+  }
+}
 
 TEST(RasterCoverage, BandCoverageIsTheExactPixelAreaAtAnyAngle) {
   for (double deg : {0.0, 10.0, 30.0, 45.0, 72.0, 90.0, 135.0})

@@ -96,8 +96,8 @@ TEST_F(VulkanTest, GrowingTileListsGrowOnceAFrameAsksForMoreAndThenDrawAsTheWors
   for (std::size_t band = 0; band < full.size(); ++band)
     if (reserved[band] > 1.0) lowest = std::min(lowest, full[band] / reserved[band]);
   // And no tile with hair went bare (the last tiles did, before). Each keeps at least its nearest entry, so a
-  // sparse tile's only strand stays too; this view's 18 tiles with hair are all dense, so that part of the rule
-  // is not what this count tells apart.
+  // sparse tile's only strand stays too: this view's 18 tiles with hair are all dense, so that part of the rule
+  // is tested on the CPU (RasterLists.AFullListsShareKeepsEveryTileAnEntryAndFitsTheCapacity).
   std::size_t bareTiles = 0, hairTiles = 0;
   for (std::uint32_t ty = 0; ty < hp::test::kSmallHeight / 8; ++ty)
     for (std::uint32_t tx = 0; tx < hp::test::kSmallWidth / 8; ++tx) {
