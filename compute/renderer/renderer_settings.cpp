@@ -43,14 +43,13 @@ void validateVelocityOutput(const hairpipe::VelocityOutput& v, const hairpipe::A
                 " of them), got " + std::to_string(v.attachment));
   if (v.attachment < 0) return;
   if (!motionVectors) throw Error(field + "attachment needs RendererSettings.motionVectors: the motion it writes");
-  if (formats.otherColors[std::size_t(v.attachment)] == VK_FORMAT_UNDEFINED)
-    throw Error(field + "attachment: formats.otherColors[" + std::to_string(v.attachment) + "] is an unused slot (VK_FORMAT_UNDEFINED)");
-  if (vk::isSrgbFormat(formats.otherColors[std::size_t(v.attachment)]))
-    throw Error(field + "attachment: formats.otherColors[" + std::to_string(v.attachment) + "] is an SRGB format (VkFormat " +
-                std::to_string(int(formats.otherColors[std::size_t(v.attachment)])) + "); the motion would be gamma-encoded");
-  if (vk::isIntegerColorFormat(formats.otherColors[std::size_t(v.attachment)]))
-    throw Error(field + "attachment: formats.otherColors[" + std::to_string(v.attachment) + "] is an integer format (VkFormat " +
-                std::to_string(int(formats.otherColors[std::size_t(v.attachment)])) + "); the motion is written as floats");
+  const VkFormat format = formats.otherColors[std::size_t(v.attachment)];
+  const std::string target = field + "attachment: formats.otherColors[" + std::to_string(v.attachment) + "] is ";
+  const std::string named = " (VkFormat " + std::to_string(int(format)) + ")";
+  if (format == VK_FORMAT_UNDEFINED) throw Error(target + "an unused slot (VK_FORMAT_UNDEFINED)");
+  if (vk::isSrgbFormat(format)) throw Error(target + "an SRGB format" + named + "; the motion would be gamma-encoded");
+  if (vk::isIntegerColorFormat(format))
+    throw Error(target + "an integer format" + named + "; the motion is written as floats");
   for (const auto& [value, name] : {std::pair{v.scaleX, "scaleX"}, {v.scaleY, "scaleY"}, {v.offsetX, "offsetX"},
                                     {v.offsetY, "offsetY"}})
     if (!std::isfinite(value)) throw Error(field + name + " must be finite, got " + numberText(value));

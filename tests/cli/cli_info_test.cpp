@@ -162,37 +162,36 @@ TEST(CliBench, SimRefusesABadGridChoice) {
   EXPECT_EQ(r.out.find("simulation on"), std::string::npos) << "a benchmark ran: " << r.out;
 }
 
+namespace {
+// A bench command refused before a frame runs: exit status 1, `message` in its error output, no frame reported.
+void expectBenchRefused(const std::vector<std::string>& args, const std::string& message) {
+  const auto r = runCli(args);
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_NE(r.err.find(message), std::string::npos) << r.err;
+  EXPECT_EQ(r.out.find("median of"), std::string::npos) << "a frame ran: " << r.out;
+}
+}  // namespace
+
 // `bench --skin-bounce` and `--skin-indirect` take off and/or on, `--bounce-samples` values in [2, 256];
 // anything else is refused by name before a frame runs.
 TEST(CliBench, RefusesBadSkinBounceAndBounceSampleValues) {
-  auto r = runCli({"bench", "--raster", "compute", "--skin-bounce", "off,maybe", "--frames", "1"});
-  EXPECT_EQ(r.exitCode, 1);
-  EXPECT_NE(r.err.find("bench: --skin-bounce takes off and/or on, got 'maybe'"), std::string::npos) << r.err;
-  EXPECT_EQ(r.out.find("median of"), std::string::npos) << "a frame ran: " << r.out;
-  auto indirect = runCli({"bench", "--skin-indirect", "on,sometimes", "--frames", "1"});
-  EXPECT_EQ(indirect.exitCode, 1);
-  EXPECT_NE(indirect.err.find("bench: --skin-indirect takes off and/or on, got 'sometimes'"), std::string::npos)
-      << indirect.err;
-  EXPECT_EQ(indirect.out.find("median of"), std::string::npos) << "a frame ran: " << indirect.out;
-  auto samples = runCli({"bench", "--raster", "compute", "--bounce-samples", "8,1", "--frames", "1"});
-  EXPECT_EQ(samples.exitCode, 1);
-  EXPECT_NE(samples.err.find("bench: --bounce-samples values must be in [2, 256], got 1"), std::string::npos)
-      << samples.err;
-  EXPECT_EQ(samples.out.find("median of"), std::string::npos) << "a frame ran: " << samples.out;
+  expectBenchRefused({"bench", "--raster", "compute", "--skin-bounce", "off,maybe", "--frames", "1"},
+                     "bench: --skin-bounce takes off and/or on, got 'maybe'");
+  expectBenchRefused({"bench", "--skin-indirect", "on,sometimes", "--frames", "1"},
+                     "bench: --skin-indirect takes off and/or on, got 'sometimes'");
+  expectBenchRefused({"bench", "--raster", "compute", "--bounce-samples", "8,1", "--frames", "1"},
+                     "bench: --bounce-samples values must be in [2, 256], got 1");
 }
 
 // `bench --msaa` values are sample counts a render target takes, `--resolution` two sides in [1, 16384]: refused
 // by name before a model is built (a side past 2^32 wrapped around to a small one, and a frame ran).
 TEST(CliBench, RefusesBadMsaaAndResolutionValues) {
-  auto r = runCli({"bench", "--raster", "compute", "--msaa", "4,3", "--frames", "1"});
-  EXPECT_EQ(r.exitCode, 1);
-  EXPECT_NE(r.err.find("bench: --msaa values must be 1, 2, 4 or 8, got 3"), std::string::npos) << r.err;
-  EXPECT_EQ(r.out.find("median of"), std::string::npos) << "a frame ran: " << r.out;
+  expectBenchRefused({"bench", "--raster", "compute", "--msaa", "4,3", "--frames", "1"},
+                     "bench: --msaa values must be 1, 2, 4 or 8, got 3");
   for (const char* size : {"4294967328x4294967320", "-5x24", "32x24x", "32x0", "x24", "32 x24"}) {
-    auto bad = runCli({"bench", "--raster", "compute", "--resolution", size, "--frames", "1", "--strands", "100"});
-    EXPECT_EQ(bad.exitCode, 1) << size;
-    EXPECT_NE(bad.err.find("--resolution must be WxH with each in [1, 16384]"), std::string::npos) << bad.err;
-    EXPECT_EQ(bad.out.find("median of"), std::string::npos) << "a frame ran: " << bad.out;
+    SCOPED_TRACE(size);
+    expectBenchRefused({"bench", "--raster", "compute", "--resolution", size, "--frames", "1", "--strands", "100"},
+                       "--resolution must be WxH with each in [1, 16384]");
   }
 }
 
@@ -215,11 +214,8 @@ nlohmann::json tinyComputeBench(std::vector<std::string> extra, const std::strin
 // `bench --fine-walk` takes auto, direct and/or staged (refused by name before a frame runs); each walk is a
 // case of its own, named in the report.
 TEST(CliBench, FineWalkListIsCheckedThenBenched) {
-  auto bad = runCli({"bench", "--raster", "compute", "--fine-walk", "staged,sideways", "--frames", "1"});
-  EXPECT_EQ(bad.exitCode, 1);
-  EXPECT_NE(bad.err.find("bench: --fine-walk takes auto, direct and/or staged, got 'sideways'"), std::string::npos)
-      << bad.err;
-  EXPECT_EQ(bad.out.find("median of"), std::string::npos) << "a frame ran: " << bad.out;
+  expectBenchRefused({"bench", "--raster", "compute", "--fine-walk", "staged,sideways", "--frames", "1"},
+                     "bench: --fine-walk takes auto, direct and/or staged, got 'sideways'");
   const nlohmann::json report =
       tinyComputeBench({"--fine-walk", "direct,staged,auto"}, "bench_fine_walks.json");
   ASSERT_FALSE(report.is_null());
@@ -236,15 +232,11 @@ TEST(CliBench, FineWalkListIsCheckedThenBenched) {
   EXPECT_EQ(run, (std::vector<std::string>{"direct", "staged", "direct"}));
 }
 
-// `bench --shading-spacing` takes pixels in [0, 4096] (refused by name before a frame runs); each spacing is a
-// case of its own, and the report says how many vertices its frame shaded: fewer where pairs share them.
 // `bench --grow-lists` takes off and/or on (refused by name before a frame runs); each is a case of its own,
 // and the grown lists' raster target holds less device memory than the close-up reserve's.
 TEST(CliBench, GrowListsIsCheckedThenBenched) {
-  auto bad = runCli({"bench", "--raster", "compute", "--grow-lists", "maybe", "--frames", "1"});
-  EXPECT_EQ(bad.exitCode, 1);
-  EXPECT_NE(bad.err.find("bench: --grow-lists takes off and/or on, got 'maybe'"), std::string::npos) << bad.err;
-  EXPECT_EQ(bad.out.find("median of"), std::string::npos) << "a frame ran: " << bad.out;
+  expectBenchRefused({"bench", "--raster", "compute", "--grow-lists", "maybe", "--frames", "1"},
+                     "bench: --grow-lists takes off and/or on, got 'maybe'");
   const nlohmann::json report = tinyComputeBench({"--grow-lists", "off,on"}, "bench_grow_lists.json");
   ASSERT_FALSE(report.is_null());
   ASSERT_EQ(report["results"].size(), 2u);
@@ -257,11 +249,11 @@ TEST(CliBench, GrowListsIsCheckedThenBenched) {
   EXPECT_EQ(grown["raster_overflow"].get<std::uint64_t>(), 0u);
 }
 
+// `bench --shading-spacing` takes pixels in [0, 4096] (refused by name before a frame runs); each spacing is a
+// case of its own, and the report says how many vertices its frame shaded: fewer where pairs share them.
 TEST(CliBench, ShadingSpacingListIsCheckedThenBenched) {
-  auto bad = runCli({"bench", "--raster", "compute", "--shading-spacing", "8,-1", "--frames", "1"});
-  EXPECT_EQ(bad.exitCode, 1);
-  EXPECT_NE(bad.err.find("bench: --shading-spacing values must be in [0, 4096] pixels"), std::string::npos) << bad.err;
-  EXPECT_EQ(bad.out.find("median of"), std::string::npos) << "a frame ran: " << bad.out;
+  expectBenchRefused({"bench", "--raster", "compute", "--shading-spacing", "8,-1", "--frames", "1"},
+                     "bench: --shading-spacing values must be in [0, 4096] pixels");
   const nlohmann::json report = tinyComputeBench({"--shading-spacing", "0,24"}, "bench_shading_spacing.json");
   ASSERT_FALSE(report.is_null());
   ASSERT_EQ(report["results"].size(), 2u);
@@ -276,10 +268,8 @@ TEST(CliBench, ShadingSpacingListIsCheckedThenBenched) {
 
 // `bench --groom` takes scene and/or none (refused by name before a frame runs); each is a case of its own.
 TEST(CliBench, GroomListIsCheckedThenBenched) {
-  auto bad = runCli({"bench", "--raster", "compute", "--groom", "scene,curly", "--frames", "1"});
-  EXPECT_EQ(bad.exitCode, 1);
-  EXPECT_NE(bad.err.find("bench: --groom takes scene and/or none, got 'curly'"), std::string::npos) << bad.err;
-  EXPECT_EQ(bad.out.find("median of"), std::string::npos) << "a frame ran: " << bad.out;
+  expectBenchRefused({"bench", "--raster", "compute", "--groom", "scene,curly", "--frames", "1"},
+                     "bench: --groom takes scene and/or none, got 'curly'");
   const nlohmann::json report = tinyComputeBench({"--groom", "scene,none"}, "bench_grooms.json");
   ASSERT_FALSE(report.is_null());
   std::vector<std::string> names, grooms;
@@ -294,14 +284,10 @@ TEST(CliBench, GroomListIsCheckedThenBenched) {
 // `bench --scattering` and `--lut-mode` are refused by name before a frame runs; dual with a model other than
 // the physical one (which has no dual tables) is benchmarked as single scattering, once.
 TEST(CliBench, ScatteringAndLutModeListsAreCheckedThenCombined) {
-  auto scattering = runCli({"bench", "--raster", "compute", "--scattering", "dual,triple", "--frames", "1"});
-  EXPECT_EQ(scattering.exitCode, 1);
-  EXPECT_NE(scattering.err.find("bench: --scattering: scattering must be single or dual, got 'triple'"), std::string::npos)
-      << scattering.err;
-  auto lut = runCli({"bench", "--raster", "compute", "--lut-mode", "physical,glossy", "--frames", "1"});
-  EXPECT_EQ(lut.exitCode, 1);
-  EXPECT_NE(lut.err.find("bench: --lut-mode: unknown LUT mode 'glossy'"), std::string::npos) << lut.err;
-  EXPECT_EQ(lut.out.find("median of"), std::string::npos) << "a frame ran: " << lut.out;
+  expectBenchRefused({"bench", "--raster", "compute", "--scattering", "dual,triple", "--frames", "1"},
+                     "bench: --scattering: scattering must be single or dual, got 'triple'");
+  expectBenchRefused({"bench", "--raster", "compute", "--lut-mode", "physical,glossy", "--frames", "1"},
+                     "bench: --lut-mode: unknown LUT mode 'glossy'");
   const nlohmann::json report =
       tinyComputeBench({"--lut-mode", "float,physical", "--scattering", "single,dual"}, "bench_shadings.json");
   ASSERT_FALSE(report.is_null());
