@@ -64,6 +64,7 @@ hp::RendererSettings renderer(const RendererSettings& s) {
   r.rasterSettings.tileBudget = s.tileBudget;
   r.rasterSettings.shadingSpacing = s.shadingSpacing;
   r.rasterSettings.growLists = s.growRasterLists;
+  r.rasterSettings.listShrinkFrames = s.rasterListShrinkFrames;
   r.pipelineCache = s.pipelineCache;
   return r;
 }

@@ -202,6 +202,8 @@ StrandRasterPass::StrandRasterPass(const vk::Context& ctx, std::span<const Raste
   setUpFineWalk(settings.fineWalk, vertices);  // before bind(): the chunk sets take the walk's views
   list_ = makeList(settings.growLists ? listStartCapacity(segments, tiles, settings.listStartPerSegment, maxCapacity_)
                                       : maxCapacity_);
+  if (settings.growLists)
+    sizing_.emplace(listStartCapacity(segments, tiles, 1, maxCapacity_), maxCapacity_, settings.listShrinkFrames);
   output_ = outputImage(ctx, extent, true, VK_FORMAT_R16G16B16A16_SFLOAT, "raster hair image");
   nearOutput_ = outputImage(ctx, extent, multisampled(), VK_FORMAT_R16G16B16A16_SFLOAT, "raster hair image (near layer)");
   nearMask_ = outputImage(ctx, extent, multisampled(), VK_FORMAT_R32_UINT, "raster near-layer sample mask");
@@ -298,10 +300,10 @@ std::shared_ptr<const StrandRasterPass::TileList> StrandRasterPass::makeList(std
 void StrandRasterPass::useLists(std::uint32_t slot, std::uint64_t need) {
   if (slot >= frameSlots_)
     throw Error("compute raster: frame slot " + std::to_string(slot) + " of " + std::to_string(frameSlots_));
-  const std::uint32_t capacity = list_->capacity;
-  if (settings_.growLists && !growthFailed_ && need * 4 > std::uint64_t(capacity) * 3 && capacity < maxCapacity_) {
+  const std::uint32_t capacity = sizing_ && !growthFailed_ ? sizing_->next(need, list_->capacity) : 0;
+  if (capacity != 0) {
     try {
-      list_ = makeList(std::uint32_t(std::min<std::uint64_t>(need * 2, maxCapacity_)));
+      list_ = makeList(capacity);
     } catch (const Error&) {
       growthFailed_ = true;  // out of device memory: the lists stay; their overflow is counted as before
     }
@@ -471,17 +473,25 @@ void StrandRasterPass::recordBinning(VkCommandBuffer cmd, vk::GpuProfiler* profi
   recordPerChunk(cmd, project_, 0, strandLimits, slot);
   end(cmd, profiler);
   begin(cmd, profiler, "raster bin");
+  begin(cmd, profiler, "raster tile depth");
   recordOnce(cmd, tileDepthPipeline_, tiles, slot);
   chain(ctx_, cmd);
+  end(cmd, profiler);
+  begin(cmd, profiler, "raster count");
   recordPerChunk(cmd, count_, 1, strandLimits, slot);
   chain(ctx_, cmd);
+  end(cmd, profiler);
+  begin(cmd, profiler, "raster scan");
   recordOnce(cmd, budgetTiles_, divUp(tiles, gpu::RASTER_SCAN_SIZE) * gpu::RASTER_SCAN_SIZE, slot);
   chain(ctx_, cmd);
   recordOnce(cmd, scanTiles_, divUp(tiles, gpu::RASTER_SCAN_SIZE) * gpu::RASTER_SCAN_SIZE, slot);
   chain(ctx_, cmd);
   recordOnce(cmd, scanBlocks_, gpu::RASTER_SCAN_SIZE, slot);
   chain(ctx_, cmd);
+  end(cmd, profiler);
+  begin(cmd, profiler, "raster scatter");
   recordPerChunk(cmd, scatter_, 1, strandLimits, slot);
+  end(cmd, profiler);
   end(cmd, profiler);
 }
 

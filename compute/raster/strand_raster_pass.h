@@ -37,6 +37,7 @@
 #include <string>
 #include <vector>
 
+#include "compute/raster/list_sizing.h"
 #include "compute/raster/shade_variant.h"
 #include "compute/strands/strand_buffers.h"
 #include "engine/vk/buffer.h"
@@ -72,9 +73,11 @@ struct RasterSettings {
   bool reversedDepth = false;        // the head's depth and the view's projection are reversed-Z (near 1, far 0)
   FineWalk fineWalk = FineWalk::Auto;
   // The tile lists start at listStartCapacity (listStartPerSegment entries per segment plus 16 per tile) and
-  // grow by useLists with the frames' need, up to rasterListCapacity; false: rasterListCapacity from the start.
+  // grow by useLists with the frames' need, up to rasterListCapacity, and shrink after listShrinkFrames frames
+  // that needed under a quarter of them (ListSizing; 0: never); false: rasterListCapacity from the start.
   bool growLists = false;
   std::uint32_t listStartPerSegment = 2;  // [1, 8]
+  std::uint32_t listShrinkFrames = 300;   // 5 s at 60 Hz
   void validate() const;
 };
 
@@ -116,10 +119,12 @@ class StrandRasterPass {
   // Outside the frame loop: rewrite descriptors after the shading resources changed (same strand sizes).
   void bind(std::span<const RasterSource> sources);
   // settings.growLists, in the frame loop before the first record() of a frame with `slot`, when no pending
-  // frame was recorded with that slot: where `need` (the most list entries a recent frame's view asked for
-  // within the tile budget, listNeed) is over 3/4 of the newest lists, new lists of twice the need (within
-  // maxCapacity) become the newest; the slot's sets are pointed at the newest lists. The older lists go
-  // when no slot binds them. A failed allocation keeps the lists (their overflow stays in readStats()).
+  // frame was recorded with that slot: `need` (the most list entries the slot's last frame asked for within
+  // the tile budget, listNeed) goes to the lists' ListSizing (compute/raster/list_sizing.h), and new lists of
+  // the size it answers become the newest: twice the need when over 3/4 of the newest lists (within
+  // maxCapacity), or smaller after settings.listShrinkFrames frames under a quarter. The slot's sets are
+  // pointed at the newest lists; older lists go when no slot binds them. A failed allocation keeps the lists
+  // and stops their growth (their overflow stays in readStats()).
   void useLists(std::uint32_t slot, std::uint64_t need);
   // After record(): its RasterState copied into `dst` (host-visible) at `offset`, for listNeed once the
   // frame is complete.
@@ -220,6 +225,7 @@ class StrandRasterPass {
   vk::BufferView screenTexels_, colorTexels_;
   std::shared_ptr<const TileList> list_;                  // the newest lists
   std::vector<std::shared_ptr<const TileList>> slotLists_;  // per frame slot: the lists its sets bind
+  std::optional<ListSizing> sizing_;                      // growLists only
   bool growthFailed_ = false;                             // an allocation failed: no further attempt
   vk::Buffer shadeFlags_, shadeList_, shadeArgs_, motion_;
   vk::Image output_, nearOutput_, nearMask_, motionOutput_;

@@ -191,3 +191,67 @@ TEST_F(VulkanTest, ARebuiltTargetStartsItsListsWhereThePreviousOnesHadGrown) {
   EXPECT_GE(rebuilt.listCapacity, grown);
   EXPECT_EQ(rebuilt.droppedByCapacity, 0u);
 }
+
+// Frames of the small frame's head at three times its size (480x288, the same aspect) at the given camera
+// distances, each waited for, with growing lists that shrink after `shrinkFrames` quiet frames or with the
+// worst-case lists; each frame's device memory in use beside its statistics.
+std::vector<std::pair<GrowthFrame, std::uint64_t>> framesAt(const hp::vk::Context& ctx, bool grow,
+                                                            std::uint32_t shrinkFrames,
+                                                            const std::vector<float>& distances) {
+  constexpr std::uint32_t kWidth = 3 * hp::test::kSmallWidth, kHeight = 3 * hp::test::kSmallHeight;
+  hp::render::OffscreenRenderer target(ctx, kWidth, kHeight, 1, hp::RasterMode::Compute);
+  hp::RendererSettings settings = listSettings(target, grow);
+  settings.rasterSettings.listShrinkFrames = shrinkFrames;
+  settings.rasterSettings.tileBudget = 8192;  // the far head's 4 tiles need at most 32,768 entries
+  hp::Renderer renderer(ctx, settings);
+  auto hair = renderer.createInstance(hp::test::defaultHeadWithStrands(3000), {});
+  hp::HairInstance* one[] = {hair.get()};
+  target.attach(renderer, one);
+  std::vector<std::pair<GrowthFrame, std::uint64_t>> out;
+  for (std::size_t f = 0; f < distances.size(); ++f) {
+    hp::vk::submitAndWait(ctx, [&](VkCommandBuffer cmd) {
+      renderer.recordUpdate(cmd, f, one);
+      renderer.recordShadows(cmd, f, hp::LightSpec{}, one);
+      hp::View view = hp::test::smallFrontView(distances[f]);
+      view.extent = {kWidth, kHeight};
+      target.record(cmd, renderer, f, view, one, 1.0f);
+    }, "list shrink frame");
+    out.push_back({{renderer.rasterStats(), target.readDisplay(), {}}, ctx.allocatedBytes()});
+  }
+  return out;
+}
+
+// Lists grown for a near view shrink back once the view has needed under a quarter of them for
+// listShrinkFrames frames in a row (compute/raster/list_sizing.h) and free their memory; the frames after
+// that draw from the smaller lists without dropping an entry, as the worst-case lists draw them.
+TEST_F(VulkanTest, GrownTileListsShrinkBackAfterQuietFramesAndFreeTheirMemory) {
+  // Frames 0-4 near (the lists grow at frame 2); 5-11 far, where the head covers 4 tiles and their tile
+  // budget bounds the need. A slot's need is its last frame's: frames 5-7 are read as quiet at frames 7-9, so
+  // frame 9's slot takes new lists, frame 10's too, and then no slot binds the old ones.
+  std::vector<float> distances(5, 0.6f);
+  distances.resize(12, 60.0f);
+  const auto grown = framesAt(*ctx, true, 3, distances);
+  const auto worst = framesAt(*ctx, false, 3, distances);
+  const hp::compute::RasterStats& near = grown[4].first.stats;
+  std::cout << "near lists " << near.listCapacity << " (asked " << near.kept + near.droppedByCapacity
+            << "); far frames' capacity, device memory:";
+  for (std::size_t f = 5; f < grown.size(); ++f)
+    std::cout << " " << grown[f].first.stats.listCapacity << " (" << grown[f].second / 1024 << " KiB)";
+  std::cout << "; the last frame asked " << grown.back().first.stats.kept + grown.back().first.stats.droppedByCapacity
+            << "\n";
+  EXPECT_EQ(near.droppedByCapacity, 0u);
+  EXPECT_GT(near.listCapacity, grown[0].first.stats.listCapacity);  // grown for the near view
+  EXPECT_EQ(grown[8].first.stats.listCapacity, near.listCapacity);   // two quiet frames read: not yet
+  // Back to the lists' floor (one entry per segment and 16 per tile: the shrink's twice-the-need is less).
+  const std::uint32_t shrunk = grown.back().first.stats.listCapacity;
+  EXPECT_EQ(grown[9].first.stats.listCapacity, shrunk);
+  EXPECT_LT(shrunk * 4ull, near.listCapacity * 3ull);
+  // The old lists' memory is gone once both slots bind the new ones.
+  const std::uint64_t freed = grown[4].second - std::min(grown[4].second, grown.back().second);
+  EXPECT_GE(freed, (std::uint64_t(near.listCapacity) - shrunk) * 8 * 9 / 10);
+  for (std::size_t f = 5; f < grown.size(); ++f) {
+    EXPECT_EQ(grown[f].first.stats.droppedByCapacity, 0u) << "frame " << f;
+    EXPECT_LE(pixelsApart(grown[f].first.display, worst[f].first.display, 1), grown[f].first.display.size() / 4 / 50)
+        << "frame " << f;
+  }
+}

@@ -123,8 +123,11 @@ struct RendererSettings {
   // after a camera cut to a view that asks for more than they hold (a close-up) framesInFlight frames are
   // drawn with full lists: every tile's farthest entries thinned alike (its nearest kept), as ever when full.
   // A target the Renderer rebuilds (a density change, another extent) starts at the size per segment it had
-  // grown to.
+  // grown to. Grown lists shrink back, to twice the most those frames asked (at least 1 per segment plus 16
+  // per tile), after rasterListShrinkFrames frames in a row that each asked for under 1/4 of them; 0 keeps
+  // them at their largest (no reallocation after a close-up).
   bool growRasterLists = false;
+  std::uint32_t rasterListShrinkFrames = 300;  // 5 s at 60 Hz
   // Compute raster: where a render strand's vertices 2j and 2j + 2 lie within this many pixels of each other on
   // screen (and the strand turns there by at most ~28 degrees on screen), the odd vertex between them is not
   // shaded and takes their mean radiance, [0, 4096]; 0 shades every vertex. Shading is most of the hair's
