@@ -48,7 +48,8 @@ void retire(std::unique_ptr<RasterTarget::Impl> impl) noexcept {
 }
 
 // Retires the instance through its Renderer, which keeps it until the frames in flight are done
-// (destroyInstance retires it before it rebuilds a raster target, which may fail).
+// (destroyInstance retires it before it rebuilds a raster target, which may fail before the first frame; in
+// the frame loop the rebuild waits for the next frame, where a failure empties the target, named by recordRaster).
 void retire(std::unique_ptr<Instance::Impl> impl) noexcept {
   if (!impl) return;
   try {

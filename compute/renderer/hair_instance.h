@@ -80,6 +80,9 @@ class HairInstance {
   const InstanceSettings& settings() const { return settings_; }
   const glm::mat4& headToWorld() const { return motion_.to; }
   const compute::StrandBuffers& strands() const { return geometry_->buffers; }
+  // A recordUpdate has computed the strands' positions (false after construction and setStrands until then:
+  // the Renderer refuses to draw them before).
+  bool strandsComputed() const { return geometry_->computed; }
   const render::MarschnerTextures& marschner() const { return *marschner_; }
   // What its hair passes on forward to a diffuse receiver beneath it (render::hairForward): the material and
   // look in effect.
@@ -107,6 +110,7 @@ class HairInstance {
     render::OpacityPass opacity;
     render::StrandBouncePass bounce;  // the skin's bounce along the strands, read by both rasters' shading
     bool previousKept = false;  // the buffers' previous positions hold a frame (recordUpdate copied them once)
+    bool computed = false;      // a recordUpdate has written the positions (undefined in new buffers until then)
     // occluders: the heads' depth map's framing for the application's occluders (none: radius 0).
     Geometry(Renderer& r, const SimulatePass& sim, const InterpolationTopology& topology, const HeadMesh& head,
              const render::HeadSphere& occluders, const InstanceSettings& s, const vk::Buffer& bounceFrame);

@@ -9,6 +9,7 @@
 #include "engine/core/shading/lut_cache.h"
 #include "compute/renderer/frame_recorder.h"
 #include "engine/vk/application_attachments.h"
+#include "engine/vk/check.h"
 #include "engine/vk/context.h"
 
 namespace hp {
@@ -39,7 +40,10 @@ Renderer::Renderer(const vk::Context& ctx, const RendererSettings& settings)
 // The raster targets first: they refer to instances, and nothing may draw from them any more.
 Renderer::~Renderer() {
   for (const std::weak_ptr<RasterTarget>& weak : targets_)
-    if (const std::shared_ptr<RasterTarget> target = weak.lock()) target->raster_.reset();
+    if (const std::shared_ptr<RasterTarget> target = weak.lock()) {
+      target->raster_.reset();
+      target->rebuild_.reset();
+    }
   ownTarget_.reset();
   retired_.clear();
   retiredWithDeferred_.clear();
@@ -63,6 +67,7 @@ void Renderer::withUploads(const std::string& name, const std::function<void()>&
 }
 
 void Renderer::executeDeferred(VkCommandBuffer cmd) {
+  rebuildChangedTargets();
   if (deferred_.empty()) return;
   std::vector<VkCommandBuffer> buffers;
   for (const auto& work : deferred_) buffers.push_back(work->commandBuffer());
@@ -77,6 +82,21 @@ void Renderer::requireNoDeferredWork(const char* call) const {
   if (!deferred_.empty())
     throw Error(std::string("Renderer::") + call + ": a change made since this frame's recordShadows waits for "
                 "the next recordUpdate or recordShadows (make changes between frames)");
+}
+
+void Renderer::requireShadows(const char* call, std::uint64_t frame) const {
+  if (shadowsFrame_ != frame)
+    throw Error(std::string("Renderer::") + call + ": frame " + std::to_string(frame) +
+                " has no recordShadows before it (its lights, its shadow maps and the barrier that makes the strands "
+                "drawable come from that call, after recordUpdate)");
+}
+
+void Renderer::requireComputedStrands(const char* call, std::span<HairInstance* const> instances) {
+  for (std::size_t n = 0; n < instances.size(); ++n)
+    if (instances[n] && !instances[n]->geometry_->computed)
+      throw Error(std::string("Renderer::") + call + ": instance " + std::to_string(n) +
+                  " has strands no recordUpdate has computed yet (new since createInstance or setDensity): give it to "
+                  "a recordUpdate first");
 }
 
 void Renderer::destroyInstance(std::unique_ptr<HairInstance> instance) {
@@ -123,6 +143,8 @@ void Renderer::setRasterTarget(VkExtent2D extent, VkImageView depth, std::span<H
   std::shared_ptr<ComputeRaster> raster = buildRaster(extent, depth, instances, ownTarget_->raster_.get());
   if (ownTarget_->raster_) retire(ownTarget_->raster_);  // frames in flight may still use its buffers and descriptors
   ownTarget_->raster_ = std::move(raster);
+  ownTarget_->rebuild_.reset();  // the application's new set of instances replaces a waiting rebuild's
+  ownTarget_->failure_.clear();
 }
 
 std::shared_ptr<RasterTarget> Renderer::createRasterTarget(VkExtent2D extent, VkImageView depth,
@@ -138,23 +160,25 @@ void Renderer::destroyRasterTarget(const std::shared_ptr<RasterTarget>& target) 
   if (!target) return;
   if (target->raster_) retire(std::move(target->raster_));
   target->raster_.reset();
+  target->rebuild_.reset();
   std::erase_if(targets_, [&](const std::weak_ptr<RasterTarget>& t) { return t.lock() == target; });
 }
 
-// Every target holding the instance is rebuilt, each on its own: a failed rebuild leaves that target empty,
-// the others are still rebuilt, and the first failure is thrown once all were tried.
+// Every target holding the instance is rebuilt, each on its own. In the frame loop the rebuild waits for the
+// next frame's first record call (rebuildChangedTargets): this frame's draws and shadows already hold the
+// instance, and several changes of one frame then cost one rebuild. Before it, a failed rebuild leaves that
+// target empty, the others are still rebuilt, and the first failure is thrown once all were tried.
 void Renderer::instanceChanged(const HairInstance& instance, bool removed) {
   std::exception_ptr failure;
   forEachTarget([&](RasterTarget& target) {
     if (!target.holds(&instance)) return;
-    const std::shared_ptr<ComputeRaster> old = std::move(target.raster_);
-    target.raster_.reset();
-    try {
-      retire(old);
-      std::vector<HairInstance*> kept;
-      for (HairInstance* i : old->instances())
-        if (!removed || i != &instance) kept.push_back(i);
-      if (!kept.empty()) target.raster_ = buildRaster(old->extent(), old->depth(), kept, old.get());
+    try {  // (the list too: nothing may escape a setter after its swap)
+      std::vector<HairInstance*> kept = target.rebuild_ ? *target.rebuild_ : target.raster_->instances();
+      if (removed) std::erase(kept, &instance);
+      if (lastFrame_)
+        target.rebuild_ = std::move(kept);
+      else
+        rebuildTarget(target, kept);
     } catch (...) {
       if (!failure) failure = std::current_exception();
     }
@@ -162,18 +186,45 @@ void Renderer::instanceChanged(const HairInstance& instance, bool removed) {
   if (failure) std::rethrow_exception(failure);
 }
 
+void Renderer::rebuildTarget(RasterTarget& target, std::span<HairInstance* const> instances) {
+  const std::shared_ptr<ComputeRaster> old = std::move(target.raster_);
+  target.raster_.reset();
+  target.rebuild_.reset();
+  if (!old) return;
+  retire(old);
+  if (!instances.empty()) target.raster_ = buildRaster(old->extent(), old->depth(), instances, old.get());
+}
+
+void Renderer::rebuildChangedTargets() {
+  forEachTarget([&](RasterTarget& target) {
+    if (!target.rebuild_) return;
+    const std::vector<HairInstance*> instances = *target.rebuild_;
+    try {
+      rebuildTarget(target, instances);
+      target.failure_.clear();
+    } catch (const vk::DeviceLost&) {
+      throw;  // the application's recovery needs to see it
+    } catch (const std::exception& e) {
+      target.failure_ = e.what();  // the target is empty: recordRaster says why
+    }
+  });
+}
+
 void Renderer::materialChanged(const HairInstance& instance) {
   forEachTarget([&](RasterTarget& target) {
-    if (target.holds(&instance)) target.raster_->shadingChanged(&instance);
+    if (target.holds(&instance) && target.raster_ && target.raster_->holds(&instance))
+      target.raster_->shadingChanged(&instance);
   });
 }
 
 void Renderer::forgetInstance(const HairInstance& instance) noexcept {
   for (const std::weak_ptr<RasterTarget>& weak : targets_) {
     const std::shared_ptr<RasterTarget> target = weak.lock();
+    // A target waiting to be rebuilt without it is not dropped: its raster draws nothing before the rebuild.
     if (!target || !target->holds(&instance)) continue;
     retire(std::move(target->raster_));  // only allocates: out of memory here ends the process (noexcept)
     target->raster_.reset();
+    target->rebuild_.reset();
   }
 }
 
@@ -192,6 +243,8 @@ void Renderer::recordRaster(VkCommandBuffer cmd, std::uint64_t frame, const View
     throw Error("Renderer::recordRaster: View.extent " + std::to_string(view.extent.width) + "x" +
                 std::to_string(view.extent.height) + " differs from the raster target's " +
                 std::to_string(t.extent().width) + "x" + std::to_string(t.extent().height));
+  requireShadows("recordRaster", frame);
+  requireComputedStrands("recordRaster", t.instances());
   beginFrame(frame, t.instances());
   for (HairInstance* i : t.instances()) i->noteViewFraction(frame, i->lodFraction(view.camera.position));
   t.record(cmd, {recordEpoch_, frame}, view, frameLights_[frame % settings_.framesInFlight], profiler);
@@ -200,7 +253,14 @@ void Renderer::recordRaster(VkCommandBuffer cmd, std::uint64_t frame, const View
 void Renderer::recordComposite(VkCommandBuffer cmd, VkExtent2D extent, const RasterTarget& target,
                                vk::GpuProfiler* profiler) const {
   requireNoDeferredWork("recordComposite");
-  target.raster().recordComposite(cmd, extent, profiler);
+  const ComputeRaster& t = target.raster();
+  // The composite fetches the hair image at each fragment's pixel: an attachment of another size would read
+  // past the image or leave hair out.
+  if (extent.width != t.extent().width || extent.height != t.extent().height)
+    throw Error("Renderer::recordComposite: the extent " + std::to_string(extent.width) + "x" +
+                std::to_string(extent.height) + " differs from the raster target's " + std::to_string(t.extent().width) +
+                "x" + std::to_string(t.extent().height));
+  t.recordComposite(cmd, extent, profiler);
 }
 
 void Renderer::requireMotionVectors() const {
@@ -311,6 +371,7 @@ void Renderer::recordUpdate(VkCommandBuffer cmd, std::uint64_t frame, std::span<
   recordUpdatePasses(ctx_, cmd, work, profiler);
   for (HairInstance* i : instances) {
     i->geometry_->previousKept = i->geometry_->buffers.keepsPrevious();
+    i->geometry_->computed = true;
     i->recordCharacterCopies(ctx_, cmd);
   }
 }
@@ -318,6 +379,7 @@ void Renderer::recordUpdate(VkCommandBuffer cmd, std::uint64_t frame, std::span<
 void Renderer::recordShadows(VkCommandBuffer cmd, std::uint64_t frame, std::span<const LightSpec> lights,
                              std::span<HairInstance* const> instances, vk::GpuProfiler* profiler) {
   render::FrameLights frameLights = render::assignShadowSlots(lights, shadows_->slots());  // validates them
+  requireComputedStrands("recordShadows", instances);
   beginFrame(frame, instances);
   applyReadyMaterials(instances);
   executeDeferred(cmd);
@@ -395,6 +457,8 @@ void Renderer::recordDraw(VkCommandBuffer cmd, std::uint64_t frame, const View& 
                           std::span<HairInstance* const> instances, vk::GpuProfiler* profiler) {
   requireNoDeferredWork("recordDraw");
   view.validate(settings_.maxViewsPerFrame, settings_.formats.reversedDepth);
+  requireShadows("recordDraw", frame);
+  requireComputedStrands("recordDraw", instances);
   beginFrame(frame, instances);
   const render::FrameLights& lights = frameLights_[frame % settings_.framesInFlight];
   // Every instance's block first: a view index another view of this frame took is refused before anything is

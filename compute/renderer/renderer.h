@@ -39,7 +39,11 @@
 // createRasterTarget (graphics mode, no instance, device limits) and recordRaster/recordComposite/rasterImage
 // without a raster target or with an empty one (none set, its instances destroyed, a rebuild failed, or
 // dropped because one of its instances was destroyed without destroyInstance); recordDraw, recordRaster and recordComposite while a change's work waits for the next
-// recordUpdate or recordShadows. Nothing else in the record calls throws.
+// recordUpdate or recordShadows; recordDraw and recordRaster before the frame's recordShadows; recordShadows,
+// recordDraw and recordRaster for an instance whose strands no recordUpdate has computed; recordComposite at an
+// extent other than its target's. Nothing else in the record calls throws. In the frame loop, an instance
+// destroyed or given new strands has its raster targets rebuilt by the next frame's first recordUpdate or
+// recordShadows (the current frame draws the target as it was).
 #include <functional>
 #include <memory>
 #include <optional>
@@ -178,8 +182,14 @@ class Renderer {
   void beginFrame(std::uint64_t frame, std::span<HairInstance* const> instances);
   // Instances whose new material's tables a worker finished take them (before the frame's deferred work).
   void applyReadyMaterials(std::span<HairInstance* const> instances);
-  // An instance's strands changed, or it goes (`removed`): a raster target holding it is rebuilt.
+  // An instance's strands changed, or it goes (`removed`): a raster target holding it is rebuilt (in the frame
+  // loop at the next frame's first record call).
   void instanceChanged(const HairInstance& instance, bool removed = false);
+  // The target's raster rebuilt for `instances` (the old one retired; none: the target is empty).
+  void rebuildTarget(RasterTarget& target, std::span<HairInstance* const> instances);
+  // The rebuilds changes in the frame loop left waiting, before the deferred work is executed (a failed one
+  // leaves its target empty, with the reason for recordRaster's refusal).
+  void rebuildChangedTargets();
   // An instance's material changed: a raster target holding it rebinds its LUTs slot by slot (not rebuilt).
   void materialChanged(const HairInstance& instance);
   // An instance destroyed without destroyInstance(): a raster target holding it is dropped (retired, not
@@ -201,6 +211,12 @@ class Renderer {
   // recordDraw / recordRaster: every change's work was executed (a change between a frame's record calls
   // would draw resources not yet uploaded).
   void requireNoDeferredWork(const char* call) const;
+  // recordDraw / recordRaster: this frame's recordShadows came first (its lights, and the barrier that makes the
+  // strands drawable).
+  void requireShadows(const char* call, std::uint64_t frame) const;
+  // Every instance's strands were computed by a recordUpdate (a new instance's or setDensity's buffers hold no
+  // positions before it).
+  static void requireComputedStrands(const char* call, std::span<HairInstance* const> instances);
   // The heads into the head bounce map when an instance's look asks for the skin's bounce (after the shadows).
   void recordHeadBounce(VkCommandBuffer cmd, const render::FrameLights& lights,
                         std::span<HairInstance* const> instances, vk::GpuProfiler* profiler);

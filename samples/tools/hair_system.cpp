@@ -78,7 +78,7 @@ void HairSystem::setGroom(const GroomSettings& groom) {
 }
 
 void HairSystem::setStrands(const InterpolationTopology& topology) {
-  instance_->setStrands(topology, settings_.strands);  // and the raster target with the new strands
+  instance_->setStrands(topology, settings_.strands);  // the raster target follows at the next frame
 }
 
 void HairSystem::setRasterTarget(VkExtent2D extent, VkImageView depth) {

@@ -79,8 +79,11 @@ class HairSystem {
   void setMaterial(const HairMaterial& material, LutMode mode);
   void setLook(const render::LookSettings& look);
   void setGroom(const GroomSettings& groom);
-  // A new density (interpolation topology): new strand buffers, and a new rasterizer reading them.
+  // A new density (interpolation topology): new strand buffers, and a raster target rebuilt for them (by the
+  // next frame's first record call, once frames were recorded). Until a recordUpdate has computed the new
+  // strands (needsUpdate), the frame's recordPrepareDraw refuses them.
   void setStrands(const InterpolationTopology& topology);
+  bool needsUpdate() const { return !instance_->strandsComputed(); }
 
   SimulatePass& simulation() { return instance_->simulationForTools(); }
   const compute::StrandBuffers& strands() const { return instance_->strands(); }

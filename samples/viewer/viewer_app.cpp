@@ -313,7 +313,9 @@ void Viewer::record(FrameSlot& slot, std::uint32_t image, std::uint32_t slotInde
   vk::GpuProfiler& prof = *slot.profiler;
   prof.reset(cmd);
   HairSystem& hair = gpu_->hair();
-  if (!state_.paused) hair.recordUpdate(cmd, nextMotion(), &prof);
+  // Paused, the hair still takes one step where its strands are new (a density change, a restarted device):
+  // the Renderer draws no strands a recordUpdate has not computed.
+  if (!state_.paused || hair.needsUpdate()) hair.recordUpdate(cmd, nextMotion(), &prof);
   const DrawView view = makeView();
   hair.recordPrepareDraw(cmd, view, &prof);
   gpu_->targets().record(cmd, hair, view, tunables_.exposure, &prof);

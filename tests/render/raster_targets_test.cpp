@@ -29,11 +29,7 @@ using hp::test::VulkanTest;
 
 namespace {
 hp::RendererSettings computeSettings(const hp::render::OffscreenRenderer& target) {
-  hp::RendererSettings s;
-  s.formats = target.formats();
-  s.raster = hp::RasterMode::Compute;
-  s.opacity.resolution = 256;
-  return s;
+  return hp::test::computeRendererSettings(target.formats(), 256);
 }
 
 // A side view at another extent than the small front one.
@@ -114,9 +110,9 @@ TEST_F(VulkanTest, TwoRasterTargetsDrawTwoViewsOfAFrameAsEachIsDrawnAlone) {
   EXPECT_GT(turned, sidePixels / 10);
 }
 
-// A created target follows its instances as the Renderer's own does: rebuilt in place when one changes its
-// strands (its raster image replaced, the handle kept), rebuilt without an instance that is destroyed, and
-// empty once none is left, when it refuses to draw by name; destroying it retires its raster for the frames
+// A created target follows its instances as the Renderer's own does: rebuilt in place (by the next frame's
+// first record call) when one changes its strands (its raster image replaced, the handle kept), rebuilt
+// without an instance that is destroyed, and empty once none is left, when it refuses to draw by name; destroying it retires its raster for the frames
 // in flight, and its device memory comes back once they are done. Each frame in between draws both targets.
 TEST_F(VulkanTest, ACreatedRasterTargetFollowsItsInstancesAndIsRetiredWhenDestroyed) {
   TwoViews views(*ctx);
@@ -146,17 +142,21 @@ TEST_F(VulkanTest, ACreatedRasterTargetFollowsItsInstancesAndIsRetiredWhenDestro
   sparse.totalStrands = 200;
   a->setStrands(hp::buildInterpolationTopology(asset.guides.roots(), asset.topology.triangles, sparse),
                 a->settings().strands);
+  // In the frame loop the targets are rebuilt by the next frame's first record call, not at once.
+  EXPECT_EQ(side->raster().image().handle(), sideImage);
+  drawBoth(both);
   EXPECT_NE(renderer.rasterImage().handle(), ownImage);  // both rebuilt for A's new strands
   EXPECT_NE(side->raster().image().handle(), sideImage);
   EXPECT_EQ(side->raster().instances().size(), 2u);
-  drawBoth(both);
 
   renderer.destroyInstance(std::move(b));  // the side target keeps A
+  drawBoth(onlyA);
   ASSERT_EQ(side->raster().instances().size(), 1u);
   EXPECT_EQ(side->raster().instances().front(), a.get());
-  drawBoth(onlyA);
 
-  renderer.destroyInstance(std::move(a));  // both targets empty
+  renderer.destroyInstance(std::move(a));  // both targets empty from the next frame's first record call
+  hp::vk::submitAndWait(*ctx, [&](VkCommandBuffer cmd) { renderer.recordUpdate(cmd, frame, {}); }, "no instance");
+  ++frame;
   const auto refusal = [&](const std::function<void()>& call) {
     try {
       call();

@@ -17,7 +17,13 @@
 // stages), so those two need a primary command buffer with no query active (vkCmdExecuteCommands). A
 // change between recordUpdate and recordShadows of one frame runs in recordShadows, after that frame's
 // update: new strands (setDensity) are filled by the next frame's recordUpdate. So changes go between frames: recordDraw and recordRaster refuse to run while a change's work
-// waits for them. Before the first frame, construction submits its uploads once and waits for them.
+// waits for them. Destroying an Instance is the exception: it makes no such work, and inside a frame the
+// raster targets holding it still draw it in that frame (its shadows hold it), then are rebuilt without it by
+// the next frame's first recordUpdate or recordShadows (a rebuild that fails there empties the target, and
+// its recordRaster names the failure). Before the first frame, construction submits its
+// uploads once and waits for them. An instance's strands hold no positions until a recordUpdate has computed
+// them (after createInstance and setDensity): recordShadows, recordDraw and recordRaster refuse one before
+// that, and recordDraw and recordRaster refuse to run in a frame whose recordShadows has not been recorded.
 // Instances are destroyed before their Renderer, and a Renderer before its Context; the application waits
 // for the GPU before destroying the Renderer.
 //
@@ -102,7 +108,8 @@ class Instance {
   Instance(Instance&&) noexcept;
   // Retires the instance held before (as the destructor does), then takes the other's.
   Instance& operator=(Instance&&) noexcept;
-  // Retires the instance's GPU objects through its Renderer (destroyed after the frames in flight). The
+  // Retires the instance's GPU objects through its Renderer (destroyed after the frames in flight); may run
+  // at any point of a frame (see the frame contract above: a raster target draws it until the next frame). The
   // Renderer's shared objects live on while any of its instances does. A moved-from Instance holds
   // nothing: its setters return a failure.
   ~Instance();
@@ -218,10 +225,12 @@ class Renderer {
 
   // Compute raster (raster() == RasterMode::Compute): the instances whose hair recordRaster draws, all in
   // one set of tile lists, into an image of `extent` against `depth`. Rebuilt by the Renderer when one of
-  // them changes density or is destroyed (a material change keeps it: it takes the new tables from the
-  // next frame on); call again for another extent or set.
+  // them changes density or is destroyed (after the first frame: by the next frame's first recordUpdate or
+  // recordShadows; a material change keeps it: it takes the new tables from the next frame on); call again
+  // for another extent or set (which replaces such a waiting rebuild).
   Status setRasterTarget(VkExtent2D extent, VkImageView depth, std::span<Instance* const> instances) noexcept;
   Status recordRaster(VkCommandBuffer cmd, std::uint64_t frame, const View& view) noexcept;
+  // `extent`: the raster target's (the composite reads its image pixel for pixel); another is refused.
   Status recordComposite(VkCommandBuffer cmd, VkExtent2D extent) noexcept;
   // More views of a frame with the compute raster: a target for each, made like setRasterTarget's (outside the
   // frame loop, or in it: its uploads then go into the next recordUpdate or recordShadows), and the same
