@@ -86,7 +86,7 @@ test: build
 # the Vulkan library, the tool, every suite and the CLI fuzzer (a second full build: too slow for CI).
 SAN_SCOPE ?= all
 HOST_FUZZERS := fuzz_hair fuzz_tfx fuzz_tfxbone fuzz_gltf fuzz_ply fuzz_tfxmesh fuzz_obj fuzz_scene fuzz_brdf_csv fuzz_pfm \
-	fuzz_albedo_obj
+	fuzz_albedo_obj fuzz_hdr
 ifeq ($(SAN_SCOPE),host)
 SAN_TARGETS := hair_tests shading_tests $(HOST_FUZZERS)
 SAN_LABEL := -L host

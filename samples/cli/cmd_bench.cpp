@@ -18,6 +18,7 @@
 #include <nlohmann/json.hpp>
 
 #include "engine/core/error.h"
+#include "engine/core/number_text.h"
 #include "engine/core/hair/atomic_write.h"
 #include "engine/core/hair/input_file.h"
 #include "samples/tools/copy_reference.h"
@@ -29,6 +30,7 @@
 #include "samples/cli/material_options.h"
 #include "samples/cli/output_paths.h"
 #include "samples/cli/scene_options.h"
+#include "samples/tools/host/json_text.h"
 
 namespace hp::cli::cmd_bench {  // per subcommand: file-local names stay apart in a unity build
 
@@ -149,7 +151,8 @@ void checkRanges(const BenchOptions& o) {
   for (std::uint32_t m : o.msaa)
     if (m != 1 && m != 2 && m != 4 && m != 8) throw hp::Error("bench: --msaa values must be 1, 2, 4 or 8, got " + std::to_string(m));
   for (float f : o.lodFractions)
-    if (!(f > 0.0f && f <= 1.0f)) throw hp::Error("bench: --lod-fraction values must be in (0, 1], got " + std::to_string(f));
+    if (!(f >= 0.001f && f <= 1.0f))  // LodSettings.minFraction's range: drawn strands widen by 1 / f
+      throw hp::Error("bench: --lod-fraction values must be in [0.001, 1], got " + hp::numberText(f));
   for (std::uint32_t n : o.lights)
     if (n < 1 || n > 4) throw hp::Error("bench: --lights values must be in [1, 4], got " + std::to_string(n));
   for (std::uint32_t n : o.bounceSamples)
@@ -323,7 +326,7 @@ void run(const BenchOptions& o) {
     report["results"].push_back(toJson(results.back()));
     printText(report["results"].back());
   }
-  if (!o.json.empty()) writeText(o.json, report.dump(2) + "\n");
+  if (!o.json.empty()) writeText(o.json, hp::jsonText(report) + "\n");
   if (!o.plot.empty()) writeText(o.plot, hp::cli::benchPlotSvg(results));
 }
 

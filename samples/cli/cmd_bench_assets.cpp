@@ -20,6 +20,7 @@
 #include "samples/tools/host/synthetic_hair.h"
 #include "samples/cli/bench_context.h"
 #include "samples/cli/command.h"
+#include "samples/tools/host/json_text.h"
 
 namespace hp::cli::cmd_bench_assets {  // per subcommand: file-local names stay apart in a unity build
 
@@ -90,7 +91,7 @@ void run(const BenchOptions& o) {
                       {"triangles", triangles}, {"read_s", best.read}, {"resample_s", best.resample},
                       {"triangulate_s", best.triangulate}, {"topology_s", best.topology}, {"total_s", bestTotal}};
   if (o.json) {
-    std::cout << j.dump(2) << "\n";
+    std::cout << hp::jsonText(j) << "\n";
     return;
   }
   std::printf("asset loading: %u strands, %u points, %zu root triangles (best of %u)\n", o.strands, o.points,

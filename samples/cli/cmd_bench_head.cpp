@@ -20,6 +20,7 @@
 #include "engine/core/hair/skin_transfer.h"
 #include "samples/cli/bench_context.h"
 #include "samples/cli/command.h"
+#include "samples/tools/host/json_text.h"
 
 namespace hp::cli::cmd_bench_head {  // per subcommand: file-local names stay apart in a unity build
 
@@ -93,7 +94,7 @@ void run(const Options& o) {
       {"skin_transfer", {{"rays_per_vertex", hp::SkinTransferOptions{}.raysPerVertex}, {"time", toJson(transferS)}}},
       {"collider_mesh_grid", {{"triangles", tris.size()}, {"nodes", colliderGrid.values.size()}, {"time", toJson(colliderS)}}}};
   if (o.json) {
-    std::cout << j.dump(2) << "\n";
+    std::cout << hp::jsonText(j) << "\n";
     return;
   }
   std::printf("default head, best of %u, seconds wall (CPU, all threads):\n", o.repeat);

@@ -31,6 +31,7 @@
 #include "samples/cli/bench_context.h"
 #include "samples/cli/command.h"
 #include "samples/tools/offscreen_renderer.h"
+#include "samples/tools/host/json_text.h"
 
 namespace hp::cli::cmd_bench_instances {  // per subcommand: file-local names stay apart in a unity build
 
@@ -163,7 +164,7 @@ void run(const BenchOptions& o) {
     std::fflush(stdout);
     report["results"].push_back(row);
   }
-  if (o.json) std::cout << report.dump(2) << "\n";
+  if (o.json) std::cout << hp::jsonText(report) << "\n";
 }
 
 void setup(CLI::App& app) {

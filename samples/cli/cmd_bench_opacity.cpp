@@ -18,6 +18,7 @@
 #include "engine/vk/submit.h"
 #include "samples/cli/bench_context.h"
 #include "samples/cli/command.h"
+#include "samples/tools/host/json_text.h"
 
 namespace hp::cli::cmd_bench_opacity {  // per subcommand: file-local names stay apart in a unity build
 
@@ -89,7 +90,7 @@ void run(const BenchOptions& o) {
         report["results"].push_back(row);
       }
   }
-  if (o.json) std::cout << report.dump(2) << "\n";
+  if (o.json) std::cout << hp::jsonText(report) << "\n";
 }
 
 void setup(CLI::App& app) {

@@ -19,6 +19,7 @@
 #include "engine/vk/submit.h"
 #include "samples/cli/command.h"
 #include "samples/cli/bench_context.h"
+#include "samples/tools/host/json_text.h"
 
 namespace hp::cli::cmd_bench_sim {  // per subcommand: file-local names stay apart in a unity build
 
@@ -104,7 +105,7 @@ void runBench(const BenchOptions& o) {
     if (o.grid != "off") report["results"].push_back(benchOne(*ctx, asset, o.frames, copy, true));
   }
   if (o.json) {
-    std::cout << report.dump(2) << "\n";
+    std::cout << hp::jsonText(report) << "\n";
     return;
   }
   std::cout << "simulation on " << report["device"].get<std::string>() << " (median of " << o.frames

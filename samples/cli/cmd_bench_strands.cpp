@@ -30,6 +30,7 @@
 #include "samples/cli/groom_options.h"
 #include "samples/cli/bench_context.h"
 #include "samples/cli/command.h"
+#include "samples/tools/host/json_text.h"
 
 namespace hp::cli::cmd_bench_strands {  // per subcommand: file-local names stay apart in a unity build
 
@@ -179,7 +180,7 @@ void run(BenchOptions& o) {
   for (std::uint32_t s : o.strands)
     for (hp::compute::InterpolateWalk w : walks) report["results"].push_back(toJson(benchOne(*ctx, s, w, o)));
   if (o.json)
-    std::cout << report.dump(2) << "\n";
+    std::cout << hp::jsonText(report) << "\n";
   else
     printText(report);
 }

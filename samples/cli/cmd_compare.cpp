@@ -7,6 +7,7 @@
 
 #include "samples/cli/command.h"
 #include "samples/tools/image_compare.h"
+#include "samples/tools/host/json_text.h"
 
 namespace hp::cli::cmd_compare {  // per subcommand: file-local names stay apart in a unity build
 
@@ -24,7 +25,7 @@ void runCompare(const CompareOptions& o) {
                                  {"red_blue_image", c.redBlueImage}, {"red_blue_reference", c.redBlueReference},
                                  {"pixels", c.pixels}};
   if (o.json) {
-    std::cout << report.dump(2) << "\n";
+    std::cout << hp::jsonText(report) << "\n";
     return;
   }
   std::cout << "PSNR " << c.psnrDb << " dB, SSIM " << c.ssim << ", luminance ratio " << c.luminanceRatio

@@ -11,6 +11,7 @@
 #include "engine/vk/context.h"
 #include "engine/vk/device_probe.h"
 #include "samples/cli/command.h"
+#include "samples/tools/host/json_text.h"
 
 namespace hp::cli::cmd_info {  // per subcommand: file-local names stay apart in a unity build
 
@@ -92,7 +93,7 @@ void runInfo(const InfoOptions& opt) {
                            {"selected", *choice.chosen},
                            {"devices", devices}};
   if (opt.json)
-    std::cout << report.dump(2) << "\n";
+    std::cout << hp::jsonText(report) << "\n";
   else
     printText(report);
 }

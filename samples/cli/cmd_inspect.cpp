@@ -21,6 +21,7 @@
 #include "engine/core/hair/tfx_bone_file.h"
 #include "engine/core/hair/tfx_file.h"
 #include "samples/cli/command.h"
+#include "samples/tools/host/json_text.h"
 
 namespace hp::cli::cmd_inspect {  // per subcommand: file-local names stay apart in a unity build
 
@@ -197,7 +198,7 @@ void run(const InspectOptions& o) {
   else if (ext == ".obj") j = inspectObj(path);
   else if (const auto kind = meshKindOf(path)) j = inspectMesh(path, *kind);
   else throw hp::Error(o.file + ": unknown file type (expected .hair, .tfx, .tfxbone, .obj, .ply, .gltf, .glb or .tfxmesh)");
-  if (o.json) std::cout << j.dump(2) << "\n";
+  if (o.json) std::cout << hp::jsonText(j) << "\n";
   else printText(j);
 }
 

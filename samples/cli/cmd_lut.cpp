@@ -18,6 +18,7 @@
 #include "samples/cli/command.h"
 #include "samples/cli/material_options.h"
 #include "samples/cli/output_paths.h"
+#include "samples/tools/host/json_text.h"
 
 namespace hp::cli::cmd_lut {  // per subcommand: file-local names stay apart in a unity build
 
@@ -57,7 +58,7 @@ void run(const LutOptions& o) {
   for (const hp::LutTexture& t : lut.textures) writeTexture(dir, t, files);
   desc["files"] = files;
   desc["pfm_values"] = "stored texel values; physical value = stored * scale (per channel)";
-  hp::writeFileAtomically(dir / "lut.json", bytesOf(desc.dump(2) + "\n"));
+  hp::writeFileAtomically(dir / "lut.json", bytesOf(hp::jsonText(desc) + "\n"));
   std::cout << "wrote " << lut.textures.size() << " " << o.mode << " textures to " << dir.string() << "\n";
 }
 

@@ -18,6 +18,7 @@
 #include "samples/tools/png_file.h"
 #include "samples/tools/reference/fibre.h"
 #include "samples/tools/reference/path_tracer.h"
+#include "samples/tools/host/json_text.h"
 
 namespace hp::cli::cmd_reference {  // per subcommand: file-local names stay apart in a unity build
 
@@ -102,7 +103,7 @@ void runReference(const ReferenceOptions& o, const CLI::App& cmd) {
                                  {"threads", r.threads}, {"seconds", r.seconds}, {"paths", r.paths},
                                  {"fibre_model", frame.fibreModel}, {"strands", frame.strands.strandCount}};
   if (o.json) {
-    std::cout << report.dump(2) << "\n";
+    std::cout << hp::jsonText(report) << "\n";
     return;
   }
   std::cout << "wrote " << o.out << " (" << r.radiance.width << "x" << r.radiance.height << ", " << settings.spp

@@ -20,6 +20,7 @@
 #include "samples/tools/frame_export.h"
 #include "samples/tools/reference/fibre.h"
 #include "samples/cli/output_paths.h"
+#include "samples/tools/host/json_text.h"
 
 namespace hp::cli::cmd_render {  // per subcommand: file-local names stay apart in a unity build
 
@@ -119,7 +120,7 @@ void runRender(const RenderOptions& o, const CLI::App& cmd) {
   if (result.strandDump) report["strands_dump"] = o.dumpStrands;
   if (result.frame) report["export_frame"] = o.exportFrame;
   if (o.json) {
-    std::cout << report.dump(2) << "\n";
+    std::cout << hp::jsonText(report) << "\n";
     return;
   }
   std::cout << "wrote " << o.out << " (" << result.width << "x" << result.height << ", " << result.strands

@@ -16,6 +16,7 @@
 #include "samples/cli/hair_grid_options.h"
 #include "samples/cli/scene_options.h"
 #include "samples/cli/output_paths.h"
+#include "samples/tools/host/json_text.h"
 
 namespace hp::cli::cmd_simulate {  // per subcommand: file-local names stay apart in a unity build
 
@@ -162,7 +163,7 @@ void runSimulate(const SimulateOptions& opt) {
   hp::cli::checkValidation(*ctx);
   nlohmann::json report = simulateReport(*ctx, pass, driver, asset, positions, previous, opt.frames, animation);
   if (clip.clip) report["animation"] = opt.animate;
-  if (opt.json) std::cout << report.dump(2) << "\n";
+  if (opt.json) std::cout << hp::jsonText(report) << "\n";
   else printReport(report);
   // A diverged run is a failure, and its guides are not written: the report above says where it stood.
   const std::size_t nonFinite = report["nan_count"].get<std::size_t>();

@@ -22,6 +22,7 @@
 #include "samples/cli/scene_options.h"
 #include "shaders/shared/strands.h"
 #include "samples/cli/output_paths.h"
+#include "samples/tools/host/json_text.h"
 
 namespace hp::cli::cmd_strands {  // per subcommand: file-local names stay apart in a unity build
 
@@ -70,7 +71,7 @@ void report(const StrandsOptions& o, const hp::HairAsset& asset, const hp::compu
                       {"gpu_ms", {{"tessellate", scopeMs(run, "tessellate")}, {"interpolate", scopeMs(run, "interpolate")}}},
                       {"device", ctx.properties().deviceName}};
   if (o.json) {
-    std::cout << j.dump(2) << "\n";
+    std::cout << hp::jsonText(j) << "\n";
     return;
   }
   std::cout << "wrote " << l.strandCount << (l.guidesOnly ? " smoothed guides" : " render strands") << " x "

@@ -9,6 +9,7 @@
 #include "samples/tools/contact_sheet.h"
 #include "samples/tools/interrupt_flag.h"
 #include "samples/tools/progress_reporter.h"
+#include "samples/tools/host/json_text.h"
 
 namespace hp::cli {
 namespace {
@@ -88,7 +89,7 @@ void runSequence(const SequenceOptions& o, std::uint32_t frames, const RenderReq
   nlohmann::json r = report(o, frames, last, seconds, *ctx);
   if (!guessed.empty()) r["guessed"] = guessed;
   if (json) {
-    std::cout << r.dump(2) << "\n";
+    std::cout << hp::jsonText(r) << "\n";
     return;
   }
   std::cout << "wrote " << frames << " frames " << o.dir << "/" << sequenceFrameName(1) << " .. "

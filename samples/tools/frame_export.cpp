@@ -15,6 +15,7 @@
 #include "samples/tools/reference/fibre.h"
 #include "samples/tools/render_targets.h"
 #include "shaders/shared/strands.h"
+#include "samples/tools/host/json_text.h"
 
 namespace hp {
 namespace {
@@ -174,7 +175,11 @@ HairMaterial readMaterial(JsonObject o) {
   o.read("tilt_variation_rad", m.tiltVariation);
   o.read("roughness_variation", m.roughnessVariation);
   o.finish();
-  m.validate();
+  try {
+    m.validate();
+  } catch (const Error& e) {
+    throw Error(o.here() + ": " + e.what());  // "frame.json: /fibre/material: HairMaterial.eta = 5 is invalid"
+  }
   return m;
 }
 
@@ -253,12 +258,8 @@ void readCamera(JsonObject o, FrameCameraSpec& c) {
 }
 
 void readFrameJson(ExportedFrame& f, const std::filesystem::path& path) {
-  nlohmann::json root;
-  try {
-    root = nlohmann::json::parse(readInputText(path, kMaxTextFileBytes));
-  } catch (const nlohmann::json::exception& e) {  // syntax, and numbers past float range (1e999)
-    throw Error(path.string() + ": not valid JSON: " + e.what());
-  }
+  // The scene file's parser: syntax, numbers past a double's range (1e999) and nesting past kMaxJsonDepth.
+  const nlohmann::json root = parseJsonText(readInputText(path, kMaxTextFileBytes), path.string());
   JsonObject o(root, "", path.string());
   std::string format, units, up;
   std::uint32_t version = 0;
@@ -386,7 +387,7 @@ void writeFrameExport(const std::filesystem::path& dir, const ExportedFrame& fra
   writeHairFile(dir / FrameExportFiles::strands, frame.strands);
   writeAlbedoObj(dir / FrameExportFiles::head, {frame.headPositions, frame.headNormals, frame.headAlbedo, frame.headIndices});
   if (frame.environmentMap) writePfm(dir / FrameExportFiles::environment, environmentImage(*frame.environmentMap));
-  const std::string text = frameJson(frame).dump(2) + "\n";
+  const std::string text = hp::jsonText(frameJson(frame)) + "\n";
   writeFileAtomically(dir / FrameExportFiles::json, std::as_bytes(std::span(text.data(), text.size())));
 }
 

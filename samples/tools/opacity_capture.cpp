@@ -13,6 +13,7 @@
 #include "engine/core/shading/half_float.h"
 #include "samples/tools/host/lut_export.h"
 #include "engine/vk/transfer.h"
+#include "samples/tools/host/json_text.h"
 
 namespace hp::render {
 namespace {
@@ -137,6 +138,6 @@ void writeOpacityDump(const std::filesystem::path& dir, const OpacityCapture& c)
   std::uint32_t side = 0;
   const std::vector<std::uint8_t> sheet = contactSheet(c, side);
   writePng(dir / "opacity_contact_sheet.png", side, side, 3, sheet);
-  writeFileAtomically(dir / "opacity_slices.json", bytesOf(sliceJson(c).dump(2) + "\n"));
+  writeFileAtomically(dir / "opacity_slices.json", bytesOf(hp::jsonText(sliceJson(c)) + "\n"));
 }
 }  // namespace hp::render

@@ -29,6 +29,7 @@ class ByteReader {
       out.push_back(c);
     }
   }
+  std::size_t remaining() const { return bytes_.size() - at_; }
   [[noreturn]] void fail(const std::string& why) const { throw Error(source_ + ": " + why); }
 
  private:
@@ -58,6 +59,13 @@ void readSize(ByteReader& in, std::uint64_t maxTexels, std::uint32_t& width, std
             std::to_string(maxTexels) + " texels allowed");
   width = std::uint32_t(w);
   height = std::uint32_t(h);
+}
+
+// The fewest bytes a scanline of `width` can take: run-length coded (where readScanline allows it), its 4-byte
+// start and per channel one run of up to 127 texels per 2 bytes; else 4 bytes a texel.
+std::uint64_t smallestScanline(std::uint32_t width) {
+  if (width >= 8 && width < 32768) return 4 + 4 * 2 * ((std::uint64_t(width) + 126) / 127);
+  return 4 * std::uint64_t(width);
 }
 
 // One scanline of RGBE quadruples into `row` (4 x width bytes).
@@ -92,6 +100,10 @@ RgbFloatImage decodeRadianceHdr(std::span<const std::byte> bytes, std::uint64_t 
   readHeader(in);
   RgbFloatImage image;
   readSize(in, maxTexels, image.width, image.height);
+  // A header may claim any size within maxTexels: the file must be able to hold it before the image is made.
+  if (smallestScanline(image.width) * image.height > in.remaining())
+    in.fail("truncated: " + std::to_string(in.remaining()) + " bytes cannot hold " + std::to_string(image.height) +
+            " scanlines of " + std::to_string(image.width) + " texels");
   image.rgb.resize(std::size_t(image.width) * image.height * 3);
   std::vector<std::uint8_t> row(std::size_t(image.width) * 4);
   for (std::uint32_t y = 0; y < image.height; ++y) {

@@ -6,6 +6,7 @@
 
 #include "samples/tools/simulation_driver.h"
 #include "engine/core/error.h"
+#include "engine/core/number_text.h"
 #include "samples/tools/offscreen_renderer.h"
 #include "engine/vk/context.h"
 #include "engine/vk/submit.h"
@@ -115,7 +116,8 @@ HairSystemSettings systemSettings(const RenderRequest& r, const hairpipe::Attach
 
 void validateRequest(const RenderRequest& r) {
   if (r.settleFrames > 100000) throw Error("settle frames must be at most 100000");
-  if (!(r.exposure > 0.0f) || !std::isfinite(r.exposure)) throw Error("exposure must be a positive number");
+  // Above 1e6 the exposed half-float radiance could pass float's range in the tonemap (an image of black).
+  if (!(r.exposure > 0.0f && r.exposure <= 1.0e6f)) throw Error("exposure must be in (0, 1e6], got " + numberText(r.exposure));
   validateLights(frameLights(r));  // also catches a hand-built LightSpec that skipped the scene parser
 }
 

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "engine/core/error.h"
+#include "engine/core/number_text.h"
 #include "samples/tools/character_clip.h"
 #include "samples/tools/host/camera_fit.h"
 #include "engine/vk/check.h"
@@ -15,6 +16,7 @@
 #include "samples/cli/material_options.h"
 #include "samples/cli/output_paths.h"
 #include "samples/viewer/viewer_app.h"
+#include "samples/tools/host/json_text.h"
 
 namespace {
 constexpr std::uint32_t kMaxFrames = 1000000;
@@ -110,7 +112,7 @@ hp::viewer::ViewerOptions viewerOptions(const ViewOptions& o, const CLI::App& cm
   r.lutMode = hp::parseLutMode(o.lutMode);
   if (const auto clip = hp::clipOfAnimate(o.animate)) r.characterClip = *clip;
   else r.animation = hp::parseHeadAnimation(o.animate);
-  if (!(o.exposure > 0.0f) || !std::isfinite(o.exposure)) throw hp::Error("--exposure must be a positive number");
+  if (!(o.exposure > 0.0f && o.exposure <= 1.0e6f)) throw hp::Error("--exposure must be in (0, 1e6], got " + hp::numberText(o.exposure));
   r.exposure = o.exposure;
   if (o.frames > kMaxFrames) throw hp::Error("--frames must be at most 1000000 (0: until the window closes)");
   v.frames = o.frames;
@@ -141,7 +143,7 @@ void runView(const ViewOptions& o, const CLI::App& cmd) {
                             {"raster", report.raster},
                             {"screenshot", v.screenshot}};
   if (o.json) {
-    std::cout << j.dump(2) << "\n";
+    std::cout << hp::jsonText(j) << "\n";
     return;
   }
   std::cout << "viewed " << report.frames << " frames (" << report.extent.width << "x" << report.extent.height

@@ -345,7 +345,9 @@ TEST_F(PublicApi, InstanceSettingsAndSettersAreRefusedByField) {
   EXPECT_THAT(failureOf(head.setLod(lod)), HasSubstr("hairpipe::Instance::setLod: LodSettings: the distances"));
   lod = {};
   lod.minFraction = 0.0f;
-  EXPECT_THAT(failureOf(head.setLod(lod)), HasSubstr("LodSettings.minFraction must be in (0, 1], got 0"));
+  EXPECT_THAT(failureOf(head.setLod(lod)), HasSubstr("LodSettings.minFraction must be in [0.001, 1], got 0"));
+  lod.minFraction = 1e-9f;  // widened a billion times (and 0 in the blend's float arithmetic)
+  EXPECT_THAT(failureOf(head.setLod(lod)), HasSubstr("LodSettings.minFraction must be in [0.001, 1], got 1e-09"));
   bad = {};
   bad.lod.startDistance = kNaN;
   EXPECT_THAT(failureOf(renderer_->createInstance(*asset_, bad)), HasSubstr("LodSettings: the distances"));

@@ -57,6 +57,21 @@ TEST(CliHairInspect, ReportsAHairModelAsJson) {
                   hp::importHairAsset(d, hp::HairImportOptions{}, "m.hair").colliders.at(0).radius);
 }
 
+// The info field is free text from the file: bytes that are not UTF-8 are reported as U+FFFD, not a failed
+// report (nlohmann's dump throws on them by default).
+TEST(CliHairInspect, AnInfoFieldThatIsNotUtf8IsReportedAsJson) {
+  hp::test::TempDir dir;
+  hp::HairFileData d = hp::makeSyntheticHair({});
+  const char text[] = "made \xff\xfe here";
+  d.info.fill('\0');
+  std::memcpy(d.info.data(), text, sizeof(text) - 1);
+  hp::writeHairFile(dir / "m.hair", d);
+  auto r = runCli({"inspect", (dir / "m.hair").string(), "--json"});
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["info"], "made \ufffd\ufffd here");
+}
+
 TEST(CliHairInspect, TextOutput) {
   hp::test::TempDir dir;
   hp::writeHairFile(dir / "m.hair", hp::makeSyntheticHair({}));

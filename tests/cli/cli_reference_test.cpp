@@ -114,6 +114,7 @@ TEST(CliReference, ExportValuesOutOfRangeAreRefusedByName) {
       {[](nlohmann::json& j) { j["skin"]["color"] = {0.5, 2.0, 0.5}; }, "color"},
       {[](nlohmann::json& j) { j["fibre"]["albedo"] = {-1.0, 0.5, 0.5}; }, "albedo"},
       {[](nlohmann::json& j) { j["fibre"]["lut_mode"] = "bogus\x01"; }, "lut_mode"},
+      {[](nlohmann::json& j) { j["fibre"]["material"]["eta"] = 5.0; }, "frame.json: /fibre/material: HairMaterial"},
   };
   for (const auto& [edit, needle] : cases) {
     edited(edit);
@@ -124,7 +125,7 @@ TEST(CliReference, ExportValuesOutOfRangeAreRefusedByName) {
   ASSERT_NE(at, std::string::npos);
   overflow.insert(at + 12, "1e999, \"x\": ");  // "exposure": 1e999, "x": <old value>
   std::ofstream(dir / "frame.json") << overflow;
-  expectRefused({"reference", "--frame", dir.string(), "--out", out.string()}, {{{}, "frame.json: not valid JSON"}}, out);
+  expectRefused({"reference", "--frame", dir.string(), "--out", out.string()}, {{{}, "frame.json: invalid JSON: number overflow"}}, out);
   std::ofstream(dir / "frame.json") << json;
   std::string badAlbedo = obj;
   const std::size_t v = badAlbedo.find("\nv ");

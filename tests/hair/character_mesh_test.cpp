@@ -240,6 +240,15 @@ TEST(CharacterMesh, PlyFilesReadInEveryFormat) {
   EXPECT_ERROR_CONTAINS(parsePly(corrupt("element vertex 4", "element vertex 4000000000"), "q"), "more than the file holds");
   EXPECT_ERROR_CONTAINS(parsePly(corrupt("4 0 1 2 3", "4 0 1 2 4"), "q"), "refers to vertex 4");
   EXPECT_ERROR_CONTAINS(parsePly(corrupt("4 0 1 2 3", "2 0 1 2 3"), "q"), "outside 3..1024");
+  // Indices of a float type: only whole numbers name a vertex (NaN became vertex 0, 1.7 vertex 1).
+  const auto floatIndices = [&](const std::string& face) {
+    return textBytes(replaced(replaced(ascii, "list uchar uint", "list uchar float"), "4 0 1 2 3", face));
+  };
+  EXPECT_EQ(parsePly(floatIndices("4 0 1 2 3"), "f").triangleCount(), 2u);
+  EXPECT_ERROR_CONTAINS(parsePly(floatIndices("4 0 nan 2 3"), "f"), "refers to vertex NaN");
+  EXPECT_ERROR_CONTAINS(parsePly(floatIndices("4 0 1.7 2 3"), "f"), "refers to vertex 1.7");
+  EXPECT_ERROR_CONTAINS(parsePly(textBytes(replaced(ascii, "list uchar uint", "list float uint")), "f"),
+                        "a list counted by a float");
   EXPECT_ERROR_CONTAINS(parsePly(corrupt("1 1 0 0 0 1", "1 inf 0 0 0 1"), "q"), "not finite");
   EXPECT_ERROR_CONTAINS(parsePly(corrupt("format ascii", "format utf8"), "q"), "unknown format");
   EXPECT_ERROR_CONTAINS(parsePly(corrupt("end_header", "end_head"), "q"), "unknown header line");

@@ -237,6 +237,12 @@ TEST(HairFile, RejectsOnePointStrand) {
   b.put(std::uint16_t(2)).put(std::uint16_t(0));
   for (int i = 0; i < 12; ++i) b.put(0.0f);
   EXPECT_THAT_ERROR_CONTAINS_IMPL(decodeError(b), "m.hair: strand 1 has 1 point (0 segments); a strand needs at least 2");
+  // A default of 2^32 - 1 segments is 2^32 points a strand, not 0 (the count once wrapped to "1 point").
+  Bytes huge;
+  huge.header("HAIR", 1, 4, 2, 0xFFFFFFFFu);
+  for (int i = 0; i < 12; ++i) huge.put(0.0f);
+  EXPECT_THAT_ERROR_CONTAINS_IMPL(decodeError(huge),
+                                  "m.hair: the strands' segments + 1 sum to 4294967296 points but the point count is 4");
 }
 
 TEST(HairFile, CorruptedBytesAreRefusedOrReadNeverCrash) {

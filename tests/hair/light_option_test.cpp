@@ -69,6 +69,9 @@ TEST(LightOption, BadSpecsAreRefusedNamingTheKeyAndValue) {
       {"directional:intensity=2x", "intensity=2x: expected a number"},
       {"directional:intensity=", "intensity=: expected a number"},
       {"directional:color=1,-0.5,1", "color=1,-0.5,1: components must be >= 0"},
+      // Finite but past what the half-float radiance images hold: the lit hair came out black.
+      {"directional:intensity=3e38:color=10,10,10", "light intensity x colour must be at most 10000, got Inf"},
+      {"directional:intensity=2000:color=1,6,1", "light intensity x colour must be at most 10000, got 12000"},
       {"directional:dir=0,0,0", "dir=0,0,0: must be a non-zero vector"},
       {"directional:dir=1e30,1e30,1e30", "dir=1e30,1e30,1e30: components must be within +-10000"},  // was "non-zero"
       {"spot:pos=1e30,0,0", "pos=1e30,0,0: components must be within +-10000"},  // was "a unit vector"

@@ -69,6 +69,19 @@ TEST(SdfMesh, BadMeshesAreRefused) {
   std::vector<glm::vec3> nan{{0, 0, 0}, {1, 0, 0}, {0, std::nanf(""), 0}};
   EXPECT_THROW(meshSdf(nan, std::vector<glm::uvec3>{{0, 1, 2}}), Error);
   EXPECT_THROW(meshSdf(pos, std::vector<glm::uvec3>{{0, 1, 2}}, 1e-5f), Error);  // too many nodes
+  // Forty triangles each across the whole unit cube at a cell of 1/190: the grid (7.8M nodes) fits, their near
+  // band (~290M distance tests, minutes) does not, and is refused before any test is made.
+  const std::vector<glm::vec3> corners{{0, 0, 0}, {1, 1, 0}, {0, 1, 1}, {1, 0, 1}};
+  std::vector<glm::uvec3> spanning;
+  for (std::uint32_t t = 0; t < 40; ++t) spanning.push_back(t % 2 ? glm::uvec3(0, 1, 2) : glm::uvec3(1, 2, 3));
+  try {
+    meshSdf(corners, spanning, 1.0f / 190.0f);
+    ADD_FAILURE() << "the near band's cost was not refused";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("collider mesh: 40 triangles at a cell of 0.00526316 need"), std::string::npos)
+        << e.what();
+    EXPECT_NE(std::string(e.what()).find("more than the 250000000 allowed"), std::string::npos) << e.what();
+  }
 }
 
 TEST(SdfMesh, SceneMeshColliderReplacesTheHeadField) {

@@ -135,6 +135,17 @@ TEST(TopologyDensity, RejectsBadInput) {
   d = {};
   d.strandsPerTriangle = 0;
   EXPECT_ERROR_CONTAINS(d.validate(), "density: strandsPerTriangle must be in [1, 4096], got 0");
+  // Within bounds per triangle, past them in all: 4,097 triangles x 4,096 strands is refused before binding.
+  d = {};
+  d.mode = DensityOptions::Mode::PerTriangle;
+  d.strandsPerTriangle = 4096;
+  const std::vector<glm::uvec3> many(4097, glm::uvec3(0, 1, 2));
+  EXPECT_ERROR_CONTAINS(buildInterpolationTopology(roots, many, d),
+                        "density: strandsPerTriangle 4096 on 4097 scalp triangles makes 16781312 strands, more than the "
+                        "16777216 allowed");
+  const std::vector<glm::uvec3> fewer(4096, glm::uvec3(0, 1, 2));
+  d.strandsPerTriangle = 1;
+  EXPECT_EQ(buildInterpolationTopology(roots, fewer, d).strands.size(), 4096u);
 }
 
 std::vector<glm::dvec3> fibonacci(int n) {

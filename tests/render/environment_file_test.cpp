@@ -1,7 +1,8 @@
 // Environment files (samples/tools/environment_file.h), on the host: a Radiance .hdr (flat and run-length) and a
 // 3-channel .pfm read back their texels exactly; what is not an environment is refused by a message naming the
-// file and the problem (another format, a size past 8192x4096 before anything is decoded, a 1-channel PFM, a
-// negative radiance, a file that is not RGBE at all, a truncated file, a broken run).
+// file and the problem (another format, a size past 8192x4096 or past what the file can hold before anything
+// is decoded, a 1-channel PFM, a negative radiance, a file that is not RGBE at all, a truncated file, a broken
+// run).
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -56,9 +57,10 @@ TEST(EnvironmentFile, ReadsRunLengthScanlinesAndRefusesBrokenRuns) {
   EXPECT_EQ(map.texels[7], glm::vec3(1.0f, 0.5f, 0.25f));
   writeHdr(dir / "cut.hdr", 8, 1, start + runs.substr(0, 3));
   EXPECT_NE(errorOf(dir / "cut.hdr").find("truncated"), std::string::npos) << errorOf(dir / "cut.hdr");
-  writeHdr(dir / "zero.hdr", 8, 1, start + std::string(1, '\0'));
+  const std::string padding(8, '\x01');  // the rest of a scanline's smallest size, after the broken run
+  writeHdr(dir / "zero.hdr", 8, 1, start + std::string(1, '\0') + padding);
   EXPECT_NE(errorOf(dir / "zero.hdr").find("a run of 0"), std::string::npos) << errorOf(dir / "zero.hdr");
-  writeHdr(dir / "long.hdr", 8, 1, start + std::string("\x89\x80", 2));
+  writeHdr(dir / "long.hdr", 8, 1, start + std::string("\x89\x80", 2) + padding);
   EXPECT_NE(errorOf(dir / "long.hdr").find("a run of 9 past its scanline"), std::string::npos) << errorOf(dir / "long.hdr");
   writeHdr(dir / "flat_cut.hdr", 3, 2, std::string("\x80\x40\x20\x81", 4));
   EXPECT_NE(errorOf(dir / "flat_cut.hdr").find("truncated"), std::string::npos) << errorOf(dir / "flat_cut.hdr");
@@ -83,6 +85,11 @@ TEST(EnvironmentFile, RefusesWhatIsNotAnEnvironmentByName) {
   writeHdr(dir / "huge.hdr", 9000, 9000, "");
   EXPECT_NE(errorOf(dir / "huge.hdr").find("9000x9000 texels is empty or larger than"), std::string::npos)
       << errorOf(dir / "huge.hdr");
+  // Within the size allowed but not in the file: refused before the 400 MB image is made.
+  writeHdr(dir / "claims.hdr", 8192, 4096, std::string("\x02\x02\x20\x00", 4));
+  EXPECT_NE(errorOf(dir / "claims.hdr").find("truncated: 4 bytes cannot hold 4096 scanlines of 8192 texels"),
+            std::string::npos)
+      << errorOf(dir / "claims.hdr");
   std::ofstream(dir / "text.hdr") << "not an image\n";
   EXPECT_NE(errorOf(dir / "text.hdr").find("not a Radiance .hdr"), std::string::npos) << errorOf(dir / "text.hdr");
   std::ofstream(dir / "sky.exr") << "x";

@@ -77,11 +77,12 @@ void checkHeader(std::span<const std::byte> bytes, const std::string& source) {
 void checkStrandSizes(const HairFileData& d, const std::string& source) {
   std::uint64_t sum = 0;
   for (std::uint32_t i = 0; i < d.strandCount; ++i) {
-    std::uint32_t n = d.strandPointCount(i);
-    if (n < 2)
+    // In 64 bits: a default of 2^32 - 1 segments would wrap strandPointCount to 0.
+    const std::uint64_t segments = d.segments.empty() ? d.defaultSegments : d.segments[i];
+    if (segments == 0)
       throw Error(source + ": strand " + std::to_string(i) +
                   " has 1 point (0 segments); a strand needs at least 2");
-    sum += n;
+    sum += segments + 1;
   }
   if (sum != d.points.size())
     throw Error(source + ": the strands' segments + 1 sum to " + std::to_string(sum) +

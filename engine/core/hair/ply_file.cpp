@@ -193,7 +193,7 @@ void readRecord(Values& in, const Element& e, const Layout& l, std::uint64_t r, 
       }
       continue;
     }
-    const double count = in.next(p.countType, what + " count");
+    const double count = in.next(p.countType, what + " count");  // an integer type (the header refuses others)
     const bool kept = face && l.indices == int(i);
     if (kept && (count < 3 || count > double(kMaxPolygonCorners)))
       throw Error(what + " count " + numberText(count) + " is outside 3.." + std::to_string(kMaxPolygonCorners));
@@ -202,7 +202,7 @@ void readRecord(Values& in, const Element& e, const Layout& l, std::uint64_t r, 
     for (std::uint64_t k = 0; k < std::uint64_t(count); ++k) {
       const double v = in.next(p.type, what);
       if (!kept) continue;
-      if (v < 0 || v >= double(m.positions.size()))
+      if (!(v >= 0 && v < double(m.positions.size()) && v == std::floor(v)))  // NaN and 1.7 name no vertex
         throw Error(what + " refers to vertex " + numberText(v) + " of " + std::to_string(m.positions.size()));
       corners.push_back(std::uint32_t(v));
     }

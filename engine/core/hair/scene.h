@@ -33,6 +33,10 @@ struct ModelSpec {
 // The model kind a file's extension names (.hair, .tfx, .obj, in any case); none for another extension.
 std::optional<ModelSpec::Kind> modelKindOf(const std::filesystem::path& path);
 
+// The brightest a light may be (intensity x its largest colour component): the default light's 3,333 times,
+// within what the half-float radiance images hold after shading.
+inline constexpr float kMaxLightRadiance = 1.0e4f;
+
 // One light. `direction` always points from the lit hair toward the light: for a directional light
 // that is all there is; for a spot it is minus the spot's axis (the spot shines along -direction from
 // `position`); a point light shines from `position` in every direction (direction unused, but kept a unit
@@ -42,7 +46,7 @@ struct LightSpec {
   Type type = Type::Directional;
   glm::vec3 direction = glm::normalize(glm::vec3(0.5f, 0.8f, 0.6f));  // unit, from the hair toward the light
   glm::vec3 color{1.0f};  // linear RGB radiance colour
-  float intensity = 3.0f;
+  float intensity = 3.0f;  // intensity x the largest colour component at most kMaxLightRadiance
   glm::vec3 position{0.0f};  // spot: world position
   float coneDeg = 30.0f;     // spot: cone half-angle in degrees, (0, 80]; the last 20% of it fades out
   float range = 0.0f;        // spot, point: inverse-square falloff (range / distance)^2 normalised at this

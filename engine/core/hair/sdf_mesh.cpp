@@ -4,8 +4,10 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include <utility>
 
 #include "engine/core/error.h"
+#include "engine/core/number_text.h"
 
 namespace hp {
 // Closest point by Voronoi region of the triangle (vertex, edge, face), then its distance.
@@ -35,6 +37,8 @@ float pointTriangleDistance(const glm::vec3& p, const glm::vec3& a, const glm::v
 
 namespace {
 constexpr std::uint32_t kNoTriangle = 0xffffffffu;
+// ~5-10 s of CPU: a body of a million small triangles needs ~1e8 near a grid's default cell.
+constexpr std::uint64_t kMaxNearBandTests = 250'000'000;
 
 struct Builder {
   std::span<const glm::vec3> pos;
@@ -53,11 +57,30 @@ struct Builder {
     return glm::uvec3(glm::clamp(glm::ceil((p - g.origin) / g.cell), glm::vec3(0.0f), glm::vec3(g.dims - 1u)));
   }
 
+  // Triangle t's near band: the nodes of its box padded by 1.5 cells, [lo, hi].
+  std::pair<glm::uvec3, glm::uvec3> bandOf(std::uint32_t t) const {
+    const glm::vec3 &a = pos[tris[t].x], &b = pos[tris[t].y], &c = pos[tris[t].z];
+    const glm::vec3 pad(1.5f * g.cell);
+    return {nodeFloor(glm::min(a, glm::min(b, c)) - pad), nodeCeil(glm::max(a, glm::max(b, c)) + pad)};
+  }
+
+  // The near band's point-triangle tests, refused past kMaxNearBandTests before any is made: a few large
+  // triangles each spanning much of a fine grid would take minutes (the grid's own size is bounded elsewhere).
+  void checkNearBandCost() const {
+    std::uint64_t tests = 0;
+    for (std::uint32_t t = 0; t < tris.size(); ++t) {
+      const auto [lo, hi] = bandOf(t);
+      tests += std::uint64_t(hi.x - lo.x + 1) * (hi.y - lo.y + 1) * (hi.z - lo.z + 1);
+    }
+    if (tests > kMaxNearBandTests)
+      throw Error("collider mesh: " + std::to_string(tris.size()) + " triangles at a cell of " + numberText(g.cell) +
+                  " need " + std::to_string(tests) + " distance tests near the surface, more than the " +
+                  std::to_string(kMaxNearBandTests) + " allowed (a larger cell, or smaller triangles)");
+  }
+
   void nearBand() {
     for (std::uint32_t t = 0; t < tris.size(); ++t) {
-      const glm::vec3 &a = pos[tris[t].x], &b = pos[tris[t].y], &c = pos[tris[t].z];
-      const glm::vec3 pad(1.5f * g.cell);
-      const glm::uvec3 lo = nodeFloor(glm::min(a, glm::min(b, c)) - pad), hi = nodeCeil(glm::max(a, glm::max(b, c)) + pad);
+      const auto [lo, hi] = bandOf(t);
       for (std::uint32_t k = lo.z; k <= hi.z; ++k)
         for (std::uint32_t j = lo.y; j <= hi.y; ++j)
           for (std::uint32_t i = lo.x; i <= hi.x; ++i) {
@@ -145,6 +168,7 @@ SdfGrid meshSdf(std::span<const glm::vec3> positions, std::span<const glm::uvec3
   Builder b{positions, triangles, {}, {}};
   b.g = sampleField([](const glm::vec3&) { return std::numeric_limits<float>::max(); }, lo - pad, hi + pad, cell,
                     maxNodes);
+  b.checkNearBandCost();
   b.nearest.assign(b.g.values.size(), kNoTriangle);
   b.nearBand();
   for (int s = 0; s < 8; ++s) b.sweep({s & 1 ? -1 : 1, s & 2 ? -1 : 1, s & 4 ? -1 : 1});

@@ -6,7 +6,8 @@
 // through each node row (inside: odd). The grid pads the mesh's box by `padding` cells. cell <= 0
 // picks one so the longest side has about 64 cells. Meant for closed meshes; an open one gets a sign
 // that is only as good as its holes allow. Throws hp::Error for no triangles, a non-finite vertex,
-// or a grid past maxNodes. Deterministic.
+// a grid past maxNodes, or near-surface work past 250M point-triangle tests (triangles that each span much
+// of a fine grid). Deterministic.
 #include <glm/glm.hpp>
 
 #include <span>

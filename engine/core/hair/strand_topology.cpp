@@ -106,6 +106,12 @@ InterpolationTopology bindStrands(std::span<const glm::vec3> roots, std::vector<
     return ownStrands(roots.size(), std::move(triangles), density.seed);
   std::vector<std::uint32_t> counts = strandsPerTriangle(roots, triangles, density);
   const std::size_t total = std::accumulate(counts.begin(), counts.end(), std::size_t(0));
+  // Per triangle the density is bounded, in all not: a large scalp times strandsPerTriangle is refused here,
+  // before gigabytes of bindings (the same bound as totalStrands).
+  if (total > kMaxTotalStrands)
+    throw Error("density: strandsPerTriangle " + std::to_string(density.strandsPerTriangle) + " on " +
+                std::to_string(triangles.size()) + " scalp triangles makes " + std::to_string(total) +
+                " strands, more than the " + std::to_string(kMaxTotalStrands) + " allowed");
   std::vector<StrandBinding> made;
   std::vector<std::pair<float, std::uint32_t>> order;  // (LOD rank, index in `made`)
   made.reserve(total);

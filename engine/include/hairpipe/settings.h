@@ -278,7 +278,7 @@ struct LodSettings {
   bool enabled = false;
   float startDistance = 1.5f;  // scene units, >= 0
   float endDistance = 6.0f;    // > startDistance
-  float minFraction = 0.25f;   // (0, 1]
+  float minFraction = 0.25f;   // [0.001, 1]
 };
 
 // Groom detail added to each render strand at interpolation, deterministic per strand (the same shape in
@@ -353,6 +353,8 @@ struct Light {
   Type type = Type::Directional;
   Vec3 direction{0.4472136f, 0.7155418f, 0.5366563f};  // unit
   Vec3 color{1.0f, 1.0f, 1.0f};                        // linear RGB
+  // intensity x the largest colour component in [0, 10000]: hairpipe's radiance images are half floats (scale
+  // physical units down and the exposure up)
   float intensity = 3.0f;
   Vec3 position{};        // spot, point
   float coneDeg = 30.0f;  // spot: (0, 80]

@@ -34,6 +34,7 @@ class JsonObject {
 
   std::string pointer(const char* key) const;  // keys are quoted as a short excerpt
   std::string where(const std::string& pointer) const { return file_ + ": " + (pointer.empty() ? "/" : pointer); }
+  std::string here() const { return where(pointer_); }  // the object's own place: "file: /fibre/material"
   [[noreturn]] void fail(const char* key, const std::string& message) const;
   void finish() const;  // throws on the first key no read asked for
   const std::string& file() const { return file_; }
