@@ -85,6 +85,13 @@ TEST(FrameExportLights, AListOfLightsRoundTripsBitForBit) {
   f.lights.clear();  // no light at all: the sky alone
   writeFrameExport(dir, f);
   EXPECT_TRUE(readFrameExport(dir).lights.empty());
+  // A new export whose strands cannot be written (a folder in their place) leaves no frame.json of the old one
+  // to be read with whatever else is there.
+  std::filesystem::remove(dir / FrameExportFiles::strands);
+  std::filesystem::create_directories(dir / FrameExportFiles::strands / "blocked");
+  EXPECT_NE(test::refusalOf([&] { writeFrameExport(dir, f); }), "(accepted)");
+  EXPECT_FALSE(std::filesystem::exists(dir / FrameExportFiles::json));
+  EXPECT_NE(readError(dir).find("frame.json"), std::string::npos) << readError(dir);
   std::filesystem::remove_all(dir);
 }
 
