@@ -8,7 +8,7 @@ layout(local_size_x = BRDF_EVAL_WORKGROUP_SIZE) in;
 
 layout(std430, binding = BRDF_EVAL_BINDING_INPUT) readonly buffer Inputs { BrdfEvalInput rows[]; };
 layout(std430, binding = BRDF_EVAL_BINDING_OUTPUT) writeonly buffer Outputs { vec4 results[]; };
-layout(std140, binding = BRDF_EVAL_BINDING_PARAMS) uniform Params { MarschnerParams marschner; };
+layout(std140, binding = BRDF_EVAL_BINDING_PARAMS) readonly buffer Params { MarschnerParams marschner; };
 #include "marschner.glsl"  // after `marschner`: its table functions read the block in place
 layout(binding = BRDF_EVAL_BINDING_M) uniform sampler2D mTex;
 layout(binding = BRDF_EVAL_BINDING_N0) uniform sampler2D n0Tex;

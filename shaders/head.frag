@@ -7,7 +7,7 @@
 // forward; looked up over a few texels) and by the heads (their depth map): frame_shadows.glsl.
 #include "shared/render.h"
 
-layout(std140, binding = RENDER_BINDING_FRAME) uniform Frame { RenderFrame frame; };
+layout(std140, binding = RENDER_BINDING_FRAME) readonly buffer Frame { RenderFrame frame; };
 layout(binding = RENDER_BINDING_OPACITY) uniform sampler2DArray opacityMaps;
 layout(binding = RENDER_BINDING_HEAD_SHADOW) uniform sampler2DArrayShadow headShadowMap;
 layout(std430, binding = RENDER_BINDING_LIGHT) readonly buffer Light { LightSpace lightSpaces[]; };

@@ -9,7 +9,7 @@
 // pi, the light a white Lambertian skin sends back, goes to head.frag.
 #include "shared/render.h"
 
-layout(std140, binding = RENDER_BINDING_FRAME) uniform Frame { RenderFrame frame; };
+layout(std140, binding = RENDER_BINDING_FRAME) readonly buffer Frame { RenderFrame frame; };
 layout(std430, binding = RENDER_BINDING_POSITIONS) readonly buffer Positions { vec4 positions[]; };
 layout(std430, binding = RENDER_BINDING_TANGENTS) readonly buffer Normals { vec4 normals[]; };
 layout(std430, binding = RENDER_BINDING_ATTRIBUTES) readonly buffer Indices { uint indices[]; };

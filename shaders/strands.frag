@@ -7,8 +7,8 @@
 #include "shared/marschner.h"
 #include "shared/strands.h"
 
-layout(std140, binding = RENDER_BINDING_FRAME) uniform Frame { RenderFrame frame; };
-layout(std140, binding = RENDER_BINDING_MARSCHNER) uniform Marschner { MarschnerParams marschner; };
+layout(std140, binding = RENDER_BINDING_FRAME) readonly buffer Frame { RenderFrame frame; };
+layout(std140, binding = RENDER_BINDING_MARSCHNER) readonly buffer Marschner { MarschnerParams marschner; };
 #include "marschner.glsl"  // after `marschner`: its table functions read the block in place
 layout(binding = RENDER_BINDING_LUT_M) uniform sampler2D lutM;
 layout(binding = RENDER_BINDING_LUT_N0) uniform sampler2D lutN0;

@@ -8,7 +8,7 @@
 #include "shared/render.h"
 #include "shared/strands.h"
 
-layout(std140, binding = RENDER_BINDING_FRAME) uniform Frame { RenderFrame frame; };
+layout(std140, binding = RENDER_BINDING_FRAME) readonly buffer Frame { RenderFrame frame; };
 layout(std430, binding = RENDER_BINDING_POSITIONS) readonly buffer Positions { vec4 positions[]; };
 layout(std430, binding = RENDER_BINDING_TANGENTS) readonly buffer Tangents { vec4 tangents[]; };
 layout(std430, binding = RENDER_BINDING_ATTRIBUTES) readonly buffer Attributes { StrandAttributes attributes[]; };

@@ -9,7 +9,7 @@ namespace hp::render {
 namespace {
 constexpr VkBufferUsageFlags kHeadUsage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
 const vk::Binding kHeadBindings[] = {
-    {gpu::RENDER_BINDING_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT},
+    {gpu::RENDER_BINDING_FRAME, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER_DYNAMIC, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT},
     {gpu::RENDER_BINDING_POSITIONS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, vk::kVertex},
     {gpu::RENDER_BINDING_TANGENTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, vk::kVertex},
     {gpu::RENDER_BINDING_ATTRIBUTES, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, vk::kVertex},
@@ -38,7 +38,7 @@ HeadPass::HeadPass(const vk::Context& ctx, const HeadMesh& mesh, std::shared_ptr
   for (std::uint32_t i : mesh.indices)
     if (i >= mesh.positions.size()) throw Error("head mesh: index " + std::to_string(i) + " is out of range");
   set_ = vk::DescriptorSet(ctx, kHeadBindings, "head");
-  set_.writeBuffer(gpu::RENDER_BINDING_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, frameBlock.handle(), 0,
+  set_.writeBuffer(gpu::RENDER_BINDING_FRAME, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER_DYNAMIC, frameBlock.handle(), 0,
                    sizeof(gpu::RenderFrame));
   set_.writeSampledImage(gpu::RENDER_BINDING_OPACITY, shadows.opacityView, shadows.sampler);  // hair shadows
   set_.writeSampledImage(gpu::RENDER_BINDING_HEAD_SHADOW, shadows.headShadowView, shadows.headShadowSampler);

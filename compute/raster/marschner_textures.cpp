@@ -89,7 +89,7 @@ MarschnerTextures::MarschnerTextures(const vk::Context& ctx, const MarschnerLut&
   vk::uploadImage(ctx, dummy_, zero, vk::ImageUse::GraphicsSampled);
   makeVisibleToComputeToo(ctx, {&dummy_});
   paramsBuffer_ = vk::Buffer(ctx, sizeof(gpu::MarschnerParams),
-                             VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                             VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                              vk::MemoryKind::Upload, "Marschner params UBO");
   upload(lut, params);
 }
@@ -139,8 +139,8 @@ const vk::Image& MarschnerTextures::slotImage(std::uint32_t slot) const {
 
 void MarschnerTextures::writeDescriptors(const vk::DescriptorSet& set, std::uint32_t paramsBinding,
                                          std::uint32_t mBinding, std::uint32_t n0Binding,
-                                         std::uint32_t n1Binding, VkDescriptorType paramsType) const {
-  set.writeBuffer(paramsBinding, paramsType, paramsBuffer_.handle());
+                                         std::uint32_t n1Binding) const {
+  set.writeStorageBuffer(paramsBinding, paramsBuffer_.handle());
   const std::uint32_t bindings[3] = {mBinding, n0Binding, n1Binding};
   for (std::uint32_t slot = 0; slot < 3; ++slot)
     set.writeSampledImage(bindings[slot], slotImage(slot).view(), sampler_.handle(),

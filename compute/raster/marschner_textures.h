@@ -59,12 +59,10 @@ class MarschnerTextures {
   std::uint32_t buildCount() const { return buildCount_; }  // 1 after construction, +1 per real rebuild
 
   // Writes the parameter block and the three combined image samplers (M, N0, N1; dummies where the mode
-  // has no texture) into `set`. The set's layout must declare paramsBinding as `paramsType` (a uniform
-  // buffer, or a storage buffer for the compute raster, which reads no uniform blocks) and the others as
-  // COMBINED_IMAGE_SAMPLER.
+  // has no texture) into `set`. The set's layout must declare paramsBinding as a STORAGE_BUFFER (no shader
+  // reads a uniform block: docs/DESIGN.md, driver notes) and the others as COMBINED_IMAGE_SAMPLER.
   void writeDescriptors(const vk::DescriptorSet& set, std::uint32_t paramsBinding, std::uint32_t mBinding,
-                        std::uint32_t n0Binding, std::uint32_t n1Binding,
-                        VkDescriptorType paramsType = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER) const;
+                        std::uint32_t n0Binding, std::uint32_t n1Binding) const;
 
   // The image behind slot 0/1/2 (M/N0/N1), for tests and debugging; the dummy where the mode has none.
   const vk::Image& slotImage(std::uint32_t slot) const;

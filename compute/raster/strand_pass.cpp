@@ -7,8 +7,8 @@ namespace hp::render {
 namespace {
 constexpr VkShaderStageFlags kBoth = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
 const vk::Binding kStrandBindings[] = {
-    {gpu::RENDER_BINDING_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, kBoth},
-    {gpu::RENDER_BINDING_MARSCHNER, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, vk::kFragment},
+    {gpu::RENDER_BINDING_FRAME, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER_DYNAMIC, kBoth},
+    {gpu::RENDER_BINDING_MARSCHNER, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, vk::kFragment},
     {gpu::RENDER_BINDING_LUT_M, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, vk::kFragment},
     {gpu::RENDER_BINDING_LUT_N0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, vk::kFragment},
     {gpu::RENDER_BINDING_LUT_N1, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, vk::kFragment},
@@ -46,7 +46,7 @@ StrandPass::StrandPass(const vk::Context& ctx, const compute::StrandBuffers& str
     : strands_(&strands), samples_(formats.samples) {
   for (const auto& chunk : strands.chunks()) {
     vk::DescriptorSet set(ctx, kStrandBindings, "strands chunk " + std::to_string(sets_.size()));
-    set.writeBuffer(gpu::RENDER_BINDING_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, frameBlock.handle(), 0,
+    set.writeBuffer(gpu::RENDER_BINDING_FRAME, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER_DYNAMIC, frameBlock.handle(), 0,
                     sizeof(gpu::RenderFrame));
     marschner.writeDescriptors(set, gpu::RENDER_BINDING_MARSCHNER, gpu::RENDER_BINDING_LUT_M,
                                gpu::RENDER_BINDING_LUT_N0, gpu::RENDER_BINDING_LUT_N1);

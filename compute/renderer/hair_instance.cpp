@@ -73,9 +73,10 @@ HairInstance::HairInstance(Renderer& renderer, const HairAsset& asset, const Ins
       marschner_(renderer.marschner(settings.material, settings.lutMode)) {
   const vk::Context& ctx = renderer.context();
   const RendererSettings& rs = renderer.settings();
-  frameStride_ = alignedSize(sizeof(gpu::RenderFrame), ctx.properties().limits.minUniformBufferOffsetAlignment);
+  // Read as a storage buffer with dynamic offsets (no shader reads a uniform block: docs/DESIGN.md, driver notes).
+  frameStride_ = alignedSize(sizeof(gpu::RenderFrame), ctx.properties().limits.minStorageBufferOffsetAlignment);
   frames_ = vk::Buffer(ctx, VkDeviceSize(frameStride_) * rs.framesInFlight * rs.maxViewsPerFrame,
-                       VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, vk::MemoryKind::Upload, "render frame ring");
+                       VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, vk::MemoryKind::Upload, "render frame ring");
   // Valid blocks from the start, so a draw before any prepared view reads sane values.
   blockWrites_.resize(rs.maxViewsPerFrame);
   for (std::uint32_t slot = 0; slot < rs.framesInFlight * rs.maxViewsPerFrame; ++slot)

@@ -9,9 +9,8 @@
 
 namespace hp::vk {
 namespace {
-// Every descriptor type hairpipe's passes bind.
-constexpr VkDescriptorType kTypes[] = {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER,
-                                       VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC,
+// Every descriptor type hairpipe's passes bind (no uniform buffer: docs/DESIGN.md, driver notes).
+constexpr VkDescriptorType kTypes[] = {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER_DYNAMIC,
                                        VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE,
                                        VK_DESCRIPTOR_TYPE_UNIFORM_TEXEL_BUFFER};
 }  // namespace

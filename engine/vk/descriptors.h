@@ -49,9 +49,6 @@ class DescriptorSet {
   void writeStorageBuffer(std::uint32_t binding, VkBuffer buffer) const {
     writeBuffer(binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, buffer);
   }
-  void writeUniformBuffer(std::uint32_t binding, VkBuffer buffer) const {
-    writeBuffer(binding, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, buffer);
-  }
   void writeSampledImage(std::uint32_t binding, VkImageView view, VkSampler sampler,
                          VkImageLayout layout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL) const;
   // A uniform texel buffer (engine/vk/buffer_view.h).
