@@ -3,7 +3,7 @@
 // (the mesh's skin transfer, a SkinTransferBuffer the caller computes once per mesh), the hair colour where
 // HeadMesh::scalp marks hair roots (so the scalp does not show bare between strands), depth test and write
 // on, into the caller's dynamic rendering. Owns the mesh buffers (uploaded once), pipeline and descriptor set; reads the frame block the caller keeps up to date (RenderFrame, shaders/shared/render.h;
-// a dynamic uniform buffer, draw() names the slot's offset) and the shadows (ShadowInputs): hair shadows
+// a dynamic read-only storage buffer, draw() names the slot's offset) and the shadows (ShadowInputs): hair shadows
 // from the opacity maps, the head's own from its depth map.
 // draw() must be called inside vkCmdBeginRendering with attachments matching `formats`.
 #include <glm/glm.hpp>

@@ -90,7 +90,7 @@ MarschnerTextures::MarschnerTextures(const vk::Context& ctx, const MarschnerLut&
   makeVisibleToComputeToo(ctx, {&dummy_});
   paramsBuffer_ = vk::Buffer(ctx, sizeof(gpu::MarschnerParams),
                              VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
-                             vk::MemoryKind::Upload, "Marschner params UBO");
+                             vk::MemoryKind::Upload, "Marschner params");
   upload(lut, params);
 }
 

@@ -3,18 +3,18 @@
 // the lookup textures built on the CPU by buildLut() and uploaded as sampled images (RGBA8 UNORM for
 // paper, RGBA16F for float; formats and sizes come from the LutTexture), one linear clamp-to-edge
 // sampler, a 1x1 dummy image for the slots a mode does not sample (direct: all three; paper: N1), and
-// a uniform buffer holding gpu::MarschnerParams. Any pass binds the same resources through
+// a storage buffer holding gpu::MarschnerParams (read-only in the shaders). Any pass binds the same resources through
 // writeDescriptors(), so the strand fragment shader and the brdf_eval kernel see identical data.
 //
 // Layout and visibility: after construction and after rebuild() every image is in
 // SHADER_READ_ONLY_OPTIMAL (vk::ImageUse::FragmentSampled == ComputeSampled == GraphicsSampled layout),
 // and the uploads are made visible to sampled reads in the vertex, fragment and compute stages of any
-// later submission on the context's queue; the UBO is host-coherent memory written before those
+// later submission on the context's queue; the parameter block is host-coherent memory written before those
 // submissions. A frame that only samples them needs no barrier and must not transition them.
 //
 // Rebuilding happens outside the frame loop and only when the material or the mode changed (rebuild()
 // returns false and touches nothing otherwise). It blocks on the context's queue (uploads through
-// submitAndWait) and rewrites images and UBO in place, so THE CALLER must make sure the GPU no longer
+// submitAndWait) and rewrites images and the parameter block in place, so THE CALLER must make sure the GPU no longer
 // uses them (e.g. its frame fences, or Context::waitIdle in an owner that owns the queue); hairpipe never
 // waits idle on its own. Image views survive a rebuild when every texture's size and format is unchanged;
 // a mode change, or a physical material's roughness variation turning on or off (the M texture gains or loses
@@ -48,7 +48,7 @@ class MarschnerTextures {
   MarschnerTextures(const MarschnerTextures&) = delete;
   MarschnerTextures& operator=(const MarschnerTextures&) = delete;
 
-  // Rebuilds the LUTs and the UBO for `material` in `mode` when either differs from the current one;
+  // Rebuilds the LUTs and the parameter block for `material` in `mode` when either differs from the current one;
   // returns whether it did. See the contract above for what the caller must guarantee.
   bool rebuild(const HairMaterial& material, LutMode mode);
 

@@ -3,7 +3,7 @@
 // the caller's dynamic rendering: depth test and write on; with MSAA a sub-pixel strand writes its
 // coverage as a dithered sample mask (strands.frag), without MSAA it blends with alpha = coverage.
 // Vertex pulling from the interpolate pass's chunk buffers (one descriptor set per chunk). Reads the
-// frame block (gpu::RenderFrame, a dynamic uniform buffer: draw() names the slot's offset), the Marschner
+// frame block (gpu::RenderFrame, a dynamic read-only storage buffer: draw() names the slot's offset), the Marschner
 // resources and the shadows (ShadowInputs: opacity maps and head depth map sampled in the
 // fragment shader, read in the vertex shader); the caller keeps them current and orders the strand
 // buffers' ComputeWrite before this pass's VertexRead. draw() goes inside vkCmdBeginRendering with

@@ -99,7 +99,7 @@ class GraphicsPipeline : public PipelineBase {
  public:
   GraphicsPipeline() = default;
   GraphicsPipeline(const Context& ctx, const GraphicsPipelineDesc& desc, VkPipelineCache cache = VK_NULL_HANDLE);
-  // `dynamicOffset`: the offset of the set's one dynamic uniform buffer, if its layout has one.
+  // `dynamicOffset`: the offset of the set's one dynamic storage buffer, if its layout has one.
   void bind(VkCommandBuffer cmd, VkDescriptorSet set, VkExtent2D extent,
             std::optional<std::uint32_t> dynamicOffset = std::nullopt) const;
   // One non-indexed, non-instanced draw of `vertexCount` vertices (vertex pulling) after bind().

@@ -116,7 +116,8 @@ HairSystemSettings systemSettings(const RenderRequest& r, const hairpipe::Attach
 
 void validateRequest(const RenderRequest& r) {
   if (r.settleFrames > 100000) throw Error("settle frames must be at most 100000");
-  // Above 1e6 the exposed half-float radiance could pass float's range in the tonemap (an image of black).
+  // 1e6 is past any useful exposure and keeps radiance x exposure (at most 65504 x 1e6) far inside float's
+  // range; 3e38 made every lit pixel infinite, which the tonemap turned black.
   if (!(r.exposure > 0.0f && r.exposure <= 1.0e6f)) throw Error("exposure must be in (0, 1e6], got " + numberText(r.exposure));
   validateLights(frameLights(r));  // also catches a hand-built LightSpec that skipped the scene parser
 }

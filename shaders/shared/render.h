@@ -10,8 +10,8 @@
 
 HP_BEGIN
 // Set 0 of the strand and head pipelines.
-HP_CONST(uint, RENDER_BINDING_FRAME, 0)       // UBO RenderFrame
-HP_CONST(uint, RENDER_BINDING_MARSCHNER, 1)   // UBO MarschnerParams (shaders/shared/marschner.h)
+HP_CONST(uint, RENDER_BINDING_FRAME, 0)       // RenderFrame (read-only storage buffer, std140)
+HP_CONST(uint, RENDER_BINDING_MARSCHNER, 1)   // MarschnerParams (read-only storage buffer, std140; shaders/shared/marschner.h)
 HP_CONST(uint, RENDER_BINDING_LUT_M, 2)       // sampler2D
 HP_CONST(uint, RENDER_BINDING_LUT_N0, 3)      // sampler2D
 HP_CONST(uint, RENDER_BINDING_LUT_N1, 4)      // sampler2D

@@ -3,7 +3,7 @@
 //   positions  xyz world position now (w = 1)
 //   previous   xyz world position one substep ago (Verlet's implicit velocity)
 //   rest       xyz rest position in head space, w = rest length of the segment ending here (0 at root)
-// The frame block (std140 UBO) is written by the host into the command buffer every frame.
+// The frame block (std140 layout, read as a read-only storage buffer) is written by the host into the command buffer every frame.
 // Scalp input (scalpMode): where each guide's root and rest pose are, as a per-guide "root matrix" that maps
 // the head-space rest pose to the world (the rest pose is carried in the root frame, so the pull toward it
 // works under skinning), interpolated over the substeps from its value at the frame's start to its end:

@@ -64,6 +64,13 @@ TEST(EnvironmentFile, ReadsRunLengthScanlinesAndRefusesBrokenRuns) {
   EXPECT_NE(errorOf(dir / "long.hdr").find("a run of 9 past its scanline"), std::string::npos) << errorOf(dir / "long.hdr");
   writeHdr(dir / "flat_cut.hdr", 3, 2, std::string("\x80\x40\x20\x81", 4));
   EXPECT_NE(errorOf(dir / "flat_cut.hdr").find("truncated"), std::string::npos) << errorOf(dir / "flat_cut.hdr");
+  // Long enough for two run-length scanlines at their smallest, but the first spends its bytes on literal
+  // runs: the second ends early, found while decoding.
+  std::string literal = start;
+  for (int channel = 0; channel < 4; ++channel) literal += std::string(1, '\x08') + std::string(8, '\x40');
+  writeHdr(dir / "late_cut.hdr", 8, 2, literal + start);
+  EXPECT_NE(errorOf(dir / "late_cut.hdr").find("truncated: the pixels end early"), std::string::npos)
+      << errorOf(dir / "late_cut.hdr");
   std::filesystem::remove_all(dir);
 }
 

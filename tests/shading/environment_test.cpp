@@ -175,6 +175,22 @@ TEST(EnvironmentSplit, TheSunBecomesALightAndTheSkyStaysInTheHarmonics) {
   for (int c = 0; c < 3; ++c) EXPECT_NEAR(split.residual[0][c] + y0 * sun.irradiance[c], whole[0][c], 1e-6 * whole[0][c]);
 }
 
+// A sun whose gathered irradiance passes what a light may be (light_limits.h) is refused naming the
+// environment, not taken as a light a frame then refuses by index.
+TEST(EnvironmentSplit, ASunBrighterThanALightMayBeIsRefused) {
+  EnvironmentMap map = skyWithSun(glm::normalize(glm::dvec3(0.4, 0.8, 0.45)), 3.0);
+  for (glm::vec3& t : map.texels) t *= 100.0f;  // the sun's radiance 5,000
+  map.intensity = 1000.0;                       // its irradiance ~43,000
+  try {
+    splitEnvironment(map);
+    ADD_FAILURE() << "a sun past the light bound was accepted";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("environment: a bright region becomes a light of"), std::string::npos) << e.what();
+  }
+  map.intensity = 20.0;  // ~860: within the bound
+  EXPECT_EQ(splitEnvironment(map).lights.size(), 1u);
+}
+
 TEST(EnvironmentSplit, TheStudioGivesItsRimAndItsSoftBoxBrightestFirst) {
   const EnvironmentSplit split = splitEnvironment(studioEnvironment());
   ASSERT_EQ(split.lights.size(), 2u);

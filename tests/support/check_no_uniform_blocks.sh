@@ -4,7 +4,10 @@
 # (docs/DESIGN.md, driver notes). Per-frame blocks are read-only storage buffers instead.
 set -euo pipefail
 shaders=${1:?usage: check_no_uniform_blocks.sh SHADER_DIR}
-found=$(grep -nE '\buniform[[:space:]]+[A-Za-z_][A-Za-z0-9_]*[[:space:]]*\{' -r "$shaders" | grep -v 'push_constant' || true)
+# A block's name followed by `{` on its line or at the line's end (the brace on the next); samplers and images
+# end in `;`; comment lines are skipped.
+found=$(grep -nE '\buniform[[:space:]]+[A-Za-z_][A-Za-z0-9_]*[[:space:]]*(\{|$)' -r "$shaders" | grep -v 'push_constant' |
+  grep -vE '^[^:]+:[0-9]+:[[:space:]]*//' || true)
 if [ -n "$found" ]; then
   echo "uniform blocks (read them as readonly storage buffers):" >&2
   echo "$found" >&2

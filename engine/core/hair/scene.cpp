@@ -44,8 +44,8 @@ void LightSpec::validate() const {
   if (!finiteVec(color) || !glm::all(glm::greaterThanEqual(color, glm::vec3(0.0f))))
     throw Error("light color components must be >= 0");
   if (!(std::isfinite(intensity) && intensity >= 0.0f)) throw Error("light intensity must be >= 0");
-  // The hair's radiance images are half floats (at most 65504): a brighter light turns the lit hair infinite,
-  // then black. Physical units (a sun of 100,000 lux) are scaled down, and the exposure up, by the caller.
+  // engine/core/shading/light_limits.h: a directional light's bound (a spot or point light may exceed it
+  // nearer than its range, where its falloff grows).
   const float brightest = intensity * std::max({color.r, color.g, color.b});
   if (!(brightest <= kMaxLightRadiance))
     throw Error("light intensity x colour must be at most " + numberText(kMaxLightRadiance) + ", got " +

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "engine/core/shading/light_limits.h"
 #include "engine/core/hair/groom.h"
 #include "engine/core/hair/collider.h"
 #include "engine/core/hair/guide_growth.h"
@@ -32,10 +33,6 @@ struct ModelSpec {
 };
 // The model kind a file's extension names (.hair, .tfx, .obj, in any case); none for another extension.
 std::optional<ModelSpec::Kind> modelKindOf(const std::filesystem::path& path);
-
-// The brightest a light may be (intensity x its largest colour component): the default light's 3,333 times,
-// within what the half-float radiance images hold after shading.
-inline constexpr float kMaxLightRadiance = 1.0e4f;
 
 // One light. `direction` always points from the lit hair toward the light: for a directional light
 // that is all there is; for a spot it is minus the spot's axis (the spot shines along -direction from

@@ -4,6 +4,8 @@
 #include <cmath>
 
 #include "engine/core/error.h"
+#include "engine/core/number_text.h"
+#include "engine/core/shading/light_limits.h"
 #include "engine/core/shading/luminance.h"
 #include "engine/core/shading/math_constants.h"
 
@@ -98,6 +100,12 @@ EnvironmentSplit splitEnvironment(const EnvironmentMap& map, const EnvironmentSp
     split.lights.push_back(table.gather(map.texelDirection(x, y), cosCluster));
   }
   split.residual = table.residual();
+  // A bright region becomes a light like any other: within the same bound (light_limits.h).
+  for (const EnvironmentLight& light : split.lights)
+    if (!(light.intensity() <= double(kMaxLightRadiance)))
+      throw Error("environment: a bright region becomes a light of " + numberText(light.intensity()) +
+                  ", more than the " + numberText(kMaxLightRadiance) +
+                  " a light may be (the radiance images are half floats): lower the environment's intensity");
   return split;
 }
 }  // namespace hp

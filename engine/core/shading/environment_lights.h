@@ -6,7 +6,8 @@
 // the brightest bright texel starts a light, which takes every bright texel within `clusterDeg` of it, and
 // so on. A light's direction is its texels' luminance-weighted mean direction, its irradiance the sum of
 // their radiance x solid angle (what a surface facing it receives, the region treated as a point). Bright
-// texels no light took stay in the SH. Every texel's light lands in exactly one of the two (tested). Pure
+// texels no light took stay in the SH. Every texel's light lands in exactly one of the two (tested). A
+// light brighter than kMaxLightRadiance (light_limits.h) is refused (hp::Error naming the environment). Pure
 // host code; docs/SHADING.md "Environment".
 #include <cstdint>
 #include <vector>
