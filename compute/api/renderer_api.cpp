@@ -183,6 +183,10 @@ Status Renderer::releaseRetired() noexcept {
   return guardedStatus("hairpipe::Renderer::releaseRetired", [&] { implementation(impl_).releaseRetired(); });
 }
 
+Status Renderer::recordChanges(VkCommandBuffer cmd, std::uint64_t frame, std::span<Instance* const> instances) noexcept {
+  return guardedStatus("hairpipe::Renderer::recordChanges",
+                       [&] { implementation(impl_).recordChanges(cmd, frame, implementations(instances)); });
+}
 Status Renderer::recordUpdate(VkCommandBuffer cmd, std::uint64_t frame, std::span<Instance* const> instances) noexcept {
   return guardedStatus("hairpipe::Renderer::recordUpdate",
                        [&] { implementation(impl_).recordUpdate(cmd, frame, implementations(instances)); });

@@ -80,8 +80,9 @@ void Renderer::executeDeferred(VkCommandBuffer cmd) {
 
 void Renderer::requireNoDeferredWork(const char* call) const {
   if (!deferred_.empty())
-    throw Error(std::string("Renderer::") + call + ": a change made since this frame's recordShadows waits for "
-                "the next recordUpdate or recordShadows (make changes between frames)");
+    throw Error(std::string("Renderer::") + call + ": a change made since this frame's recordShadows (or its "
+                "recordChanges) waits for the next frame's recordChanges, recordUpdate or recordShadows (make changes "
+                "between frames)");
 }
 
 void Renderer::requireShadows(const char* call, std::uint64_t frame) const {
@@ -358,11 +359,23 @@ void Renderer::beginFrame(std::uint64_t frame, std::span<HairInstance* const> in
   std::erase_if(retired_, [&](const Retired& r) { return !r.after || frame >= *r.after + settings_.framesInFlight; });
 }
 
-void Renderer::recordUpdate(VkCommandBuffer cmd, std::uint64_t frame, std::span<HairInstance* const> instances,
-                            vk::GpuProfiler* profiler) {
+void Renderer::recordChanges(VkCommandBuffer cmd, std::uint64_t frame, std::span<HairInstance* const> instances) {
   beginFrame(frame, instances);
   applyReadyMaterials(instances);
   executeDeferred(cmd);
+  changesFrame_ = {recordEpoch_, frame};
+}
+
+void Renderer::applyChanges(VkCommandBuffer cmd, std::uint64_t frame, std::span<HairInstance* const> instances) {
+  if (changesFrame_ == ComputeRaster::FrameId{recordEpoch_, frame}) return;  // the application's recordChanges took them
+  applyReadyMaterials(instances);
+  executeDeferred(cmd);
+}
+
+void Renderer::recordUpdate(VkCommandBuffer cmd, std::uint64_t frame, std::span<HairInstance* const> instances,
+                            vk::GpuProfiler* profiler) {
+  beginFrame(frame, instances);
+  applyChanges(cmd, frame, instances);
   std::vector<UpdateWork> work;
   work.reserve(instances.size());
   for (HairInstance* i : instances)
@@ -381,8 +394,7 @@ void Renderer::recordShadows(VkCommandBuffer cmd, std::uint64_t frame, std::span
   render::FrameLights frameLights = render::assignShadowSlots(lights, shadows_->slots());  // validates them
   requireComputedStrands("recordShadows", instances);
   beginFrame(frame, instances);
-  applyReadyMaterials(instances);
-  executeDeferred(cmd);
+  applyChanges(cmd, frame, instances);
   render::FrameLights& current = frameLights_[frame % settings_.framesInFlight];
   current = std::move(frameLights);
   shadowsFrame_ = frame;

@@ -74,6 +74,11 @@ class Renderer {
   // Destroys the instance after the frames that may still use it are done.
   void destroyInstance(std::unique_ptr<HairInstance> instance);
 
+  // Optional, before the frame's other record calls, in a primary command buffer outside any rendering: the
+  // changes' waiting work (new materials whose tables are ready for `instances`, uploads, raster target
+  // rebuilds; vkCmdExecuteCommands of secondaries). That frame's recordUpdate and recordShadows then execute
+  // none, so they may be recorded into secondary command buffers; changes made after it wait for the next frame.
+  void recordChanges(VkCommandBuffer cmd, std::uint64_t frame, std::span<HairInstance* const> instances);
   void recordUpdate(VkCommandBuffer cmd, std::uint64_t frame, std::span<HairInstance* const> instances,
                     vk::GpuProfiler* profiler = nullptr);
   void recordShadows(VkCommandBuffer cmd, std::uint64_t frame, std::span<const LightSpec> lights,
@@ -208,6 +213,9 @@ class Renderer {
   void requireMotionVectors() const;
   // The deferred work of changes since the last frame into `cmd` (outside any rendering), retired after it.
   void executeDeferred(VkCommandBuffer cmd);
+  // recordUpdate / recordShadows: ready materials applied and the deferred work executed, unless the frame's
+  // recordChanges did it.
+  void applyChanges(VkCommandBuffer cmd, std::uint64_t frame, std::span<HairInstance* const> instances);
   // recordDraw / recordRaster: every change's work was executed (a change between a frame's record calls
   // would draw resources not yet uploaded).
   void requireNoDeferredWork(const char* call) const;
@@ -252,6 +260,7 @@ class Renderer {
   bool numberingRestarts_ = false;  // releaseRetired: the next frame number may be below lastFrame_
   std::uint64_t recordEpoch_ = 0;
   std::optional<std::uint64_t> shadowsFrame_;  // the frame of the latest recordShadows
+  std::optional<ComputeRaster::FrameId> changesFrame_;  // the frame of the latest recordChanges
   std::shared_ptr<RasterTarget> ownTarget_;  // setRasterTarget's; a replaced raster is retired through retire()
   std::vector<std::weak_ptr<RasterTarget>> targets_;  // every target made, the own one too: rebuilt on changes
   std::vector<std::shared_ptr<vk::DeferredWork>> deferred_;  // changes' uploads not yet executed

@@ -153,3 +153,45 @@ TEST_F(VulkanTest, AnInstanceDestroyedInsideAFrameWithOneFrameInFlightOrReleased
   destroyInsideAFrame(*ctx, 1, false);
   destroyInsideAFrame(*ctx, 2, true);
 }
+
+// An engine that records its passes into secondary command buffers: recordChanges, first in the frame's
+// primary, executes the work a change left waiting (here new strands: their buffers' uploads and the raster
+// target's rebuild), so the frame's recordUpdate and recordShadows, recorded into a secondary, execute none
+// (vkCmdExecuteCommands in a secondary is invalid: the validation layer would say so and fail the test).
+TEST_F(VulkanTest, AfterRecordChangesTheUpdateAndShadowsMayBeRecordedIntoASecondary) {
+  OrderScene s(*ctx);
+  const hp::View view = hp::test::smallFrontView(1.6f);
+  const std::vector<hp::HairInstance*> one = s.one();
+  hp::vk::submitAndWait(*ctx, [&](VkCommandBuffer cmd) {
+    s.renderer.recordUpdate(cmd, 0, one);
+    s.renderer.recordShadows(cmd, 0, hp::LightSpec{}, one);
+    s.target.record(cmd, s.renderer, 0, view, one, 1.0f);
+  }, "frame 0");
+  s.hair->setStrands(hp::test::defaultHeadWithStrands(800).topology, s.hair->settings().strands);
+  VkCommandPool pool = VK_NULL_HANDLE;
+  VkCommandPoolCreateInfo pi{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
+  pi.queueFamilyIndex = ctx->queueFamily();
+  ASSERT_EQ(vkCreateCommandPool(ctx->device(), &pi, nullptr, &pool), VK_SUCCESS);
+  VkCommandBufferAllocateInfo ai{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
+  ai.commandPool = pool;
+  ai.level = VK_COMMAND_BUFFER_LEVEL_SECONDARY;
+  ai.commandBufferCount = 1;
+  VkCommandBuffer secondary = VK_NULL_HANDLE;
+  ASSERT_EQ(vkAllocateCommandBuffers(ctx->device(), &ai, &secondary), VK_SUCCESS);
+  hp::vk::submitAndWait(*ctx, [&](VkCommandBuffer primary) {
+    s.renderer.recordChanges(primary, 1, one);
+    VkCommandBufferInheritanceInfo inheritance{VK_STRUCTURE_TYPE_COMMAND_BUFFER_INHERITANCE_INFO};
+    VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+    begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+    begin.pInheritanceInfo = &inheritance;
+    ASSERT_EQ(vkBeginCommandBuffer(secondary, &begin), VK_SUCCESS);
+    s.renderer.recordUpdate(secondary, 1, one);
+    s.renderer.recordShadows(secondary, 1, hp::LightSpec{}, one);
+    ASSERT_EQ(vkEndCommandBuffer(secondary), VK_SUCCESS);
+    vkCmdExecuteCommands(primary, 1, &secondary);
+    s.target.record(primary, s.renderer, 1, view, one, 1.0f);
+  }, "frame 1: update and shadows in a secondary");
+  vkDestroyCommandPool(ctx->device(), pool, nullptr);
+  EXPECT_EQ(s.renderer.rasterStats().droppedByCapacity, 0u);
+  EXPECT_GT(s.renderer.rasterStats().kept, 0u);  // the rebuilt target drew the new strands
+}

@@ -14,7 +14,8 @@
 // work of a change (setMaterial, setDensity, createInstance, setRasterTarget, createRasterTarget: uploads of
 // new tables and buffers) makes no submission and no wait on the application's queue: it is recorded into the next
 // recordUpdate or recordShadows (executed commands, outside any rendering, in TRANSFER and the shader
-// stages), so those two need a primary command buffer with no query active (vkCmdExecuteCommands). A
+// stages), so those two need a primary command buffer with no query active (vkCmdExecuteCommands), unless
+// the frame's Renderer::recordChanges recorded that work first (in a primary: then they may be secondaries). A
 // change between recordUpdate and recordShadows of one frame runs in recordShadows, after that frame's
 // update: new strands (setDensity) are filled by the next frame's recordUpdate. So changes go between frames: recordDraw and recordRaster refuse to run while a change's work
 // waits for them. Destroying an Instance is the exception: it makes no such work, and inside a frame the
@@ -214,6 +215,12 @@ class Renderer {
   Result<Instance> createInstance(const Asset& asset, const InstanceSettings& settings,
                                   const Mat4& initialHeadToWorld = {}) noexcept;
 
+  // Optional, first in a frame, in a primary command buffer outside any rendering with no query active: the
+  // work that changes since the last frame left waiting (new materials' tables once built, new buffers,
+  // raster targets rebuilt: vkCmdExecuteCommands of hairpipe's secondaries). That frame's recordUpdate and
+  // recordShadows then record none of it, so an engine may record them into secondary command buffers or
+  // inside a query; a change made after it waits for the next frame.
+  Status recordChanges(VkCommandBuffer cmd, std::uint64_t frame, std::span<Instance* const> instances) noexcept;
   Status recordUpdate(VkCommandBuffer cmd, std::uint64_t frame, std::span<Instance* const> instances) noexcept;
   // The frame's lights (at most 8; shadow slots as hairpipe::Light says), or one light.
   Status recordShadows(VkCommandBuffer cmd, std::uint64_t frame, std::span<const Light> lights,
