@@ -43,6 +43,8 @@ class ComputeRaster {
     std::uint64_t epoch = 0, frame = 0;
     bool operator==(const FrameId&) const = default;
   };
+  // The frame record() last drew (none before the first).
+  std::optional<FrameId> drawnFrame() const { return lastFrame_; }
   void record(VkCommandBuffer cmd, FrameId frame, const View& view, const render::FrameLights& lights,
               vk::GpuProfiler* profiler);
   // `instance` (held) shades with new resources (its material's LUTs) from its next frame on.

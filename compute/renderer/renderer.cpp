@@ -261,6 +261,10 @@ void Renderer::recordComposite(VkCommandBuffer cmd, VkExtent2D extent, const Ras
     throw Error("Renderer::recordComposite: the extent " + std::to_string(extent.width) + "x" +
                 std::to_string(extent.height) + " differs from the raster target's " + std::to_string(t.extent().width) +
                 "x" + std::to_string(t.extent().height));
+  // Its image is the frame recordRaster last drew: without this frame's, an older frame's hair would be
+  // composited (the hair a frame behind its heads).
+  if (!lastFrame_ || t.drawnFrame() != ComputeRaster::FrameId{recordEpoch_, *lastFrame_})
+    throw Error("Renderer::recordComposite: the raster target has not drawn this frame (recordRaster comes first)");
   t.recordComposite(cmd, extent, profiler);
 }
 

@@ -41,7 +41,7 @@
 // dropped because one of its instances was destroyed without destroyInstance); recordDraw, recordRaster and recordComposite while a change's work waits for the next
 // recordUpdate or recordShadows; recordDraw and recordRaster before the frame's recordShadows; recordShadows,
 // recordDraw and recordRaster for an instance whose strands no recordUpdate has computed; recordComposite at an
-// extent other than its target's. Nothing else in the record calls throws. In the frame loop, an instance
+// extent other than its target's or before the frame's recordRaster of it. Nothing else in the record calls throws. In the frame loop, an instance
 // destroyed or given new strands has its raster targets rebuilt by the next frame's first recordUpdate or
 // recordShadows (the current frame draws the target as it was).
 #include <functional>

@@ -1,6 +1,6 @@
 // The frame loop's order (compute/renderer/renderer.h): a recordUpdate computes an instance's strands before
 // anything draws them, a frame's recordShadows comes before its recordDraw and recordRaster, and
-// recordComposite draws at its target's extent; each broken order is refused by name before anything is
+// recordComposite draws at its target's extent after its recordRaster; each broken order is refused by name before anything is
 // recorded. An instance destroyed inside a frame is still drawn by that frame (its shadows hold it) and is gone
 // from the next, without a refused call. Under synchronization validation.
 #include <gtest/gtest.h>
@@ -89,6 +89,27 @@ TEST_F(VulkanTest, ACompositeOfAnotherExtentThanItsTargetIsRefused) {
   OrderScene s(*ctx);
   const std::string message = refusalOf([&] { s.renderer.recordComposite(VK_NULL_HANDLE, {80, 96}); });
   EXPECT_NE(message.find("the extent 80x96 differs from the raster target's 160x96"), std::string::npos) << message;
+}
+
+// The composite draws the target's image as recordRaster last left it: without this frame's recordRaster it
+// would put the previous frame's hair over this frame's heads.
+TEST_F(VulkanTest, ACompositeWithoutItsFramesRasterIsRefused) {
+  OrderScene s(*ctx);
+  const hp::View view = hp::test::smallFrontView(1.6f);
+  const std::vector<hp::HairInstance*> one = s.one();
+  const VkExtent2D extent{hp::test::kSmallWidth, hp::test::kSmallHeight};
+  const std::string notDrawn = "the raster target has not drawn this frame";
+  EXPECT_NE(refusalOf([&] { s.renderer.recordComposite(VK_NULL_HANDLE, extent); }).find(notDrawn), std::string::npos);
+  hp::vk::submitAndWait(*ctx, [&](VkCommandBuffer cmd) {
+    s.renderer.recordUpdate(cmd, 0, one);
+    s.renderer.recordShadows(cmd, 0, hp::LightSpec{}, one);
+    s.target.record(cmd, s.renderer, 0, view, one, 1.0f);  // raster, then composite: drawn
+  }, "frame 0");
+  hp::vk::submitAndWait(*ctx, [&](VkCommandBuffer cmd) {
+    s.renderer.recordUpdate(cmd, 1, one);
+    s.renderer.recordShadows(cmd, 1, hp::LightSpec{}, one);
+    EXPECT_NE(refusalOf([&] { s.renderer.recordComposite(cmd, extent); }).find(notDrawn), std::string::npos);
+  }, "frame 1 without its raster");
 }
 
 // Two heads side by side on one raster target; the right one destroyed after frame 2's shadows. That frame

@@ -237,7 +237,8 @@ class Renderer {
   // for another extent or set (which replaces such a waiting rebuild).
   Status setRasterTarget(VkExtent2D extent, VkImageView depth, std::span<Instance* const> instances) noexcept;
   Status recordRaster(VkCommandBuffer cmd, std::uint64_t frame, const View& view) noexcept;
-  // `extent`: the raster target's (the composite reads its image pixel for pixel); another is refused.
+  // `extent`: the raster target's (the composite reads its image pixel for pixel); another is refused, as is
+  // a composite before the frame's recordRaster of that target (it would draw the previous frame's hair).
   Status recordComposite(VkCommandBuffer cmd, VkExtent2D extent) noexcept;
   // More views of a frame with the compute raster: a target for each, made like setRasterTarget's (outside the
   // frame loop, or in it: its uploads then go into the next recordUpdate or recordShadows), and the same
