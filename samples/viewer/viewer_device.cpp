@@ -9,7 +9,7 @@
 
 namespace hp::viewer {
 namespace {
-constexpr std::uint32_t kMaxScopes = 48;  // the passes and six per shadowed light (up to 4)
+constexpr std::uint32_t kMaxScopes = 64;  // the passes (the raster bin with its 4 steps) and six per shadowed light (up to 4)
 
 vk::ContextOptions windowExtensions() {
   vk::ContextOptions o;
