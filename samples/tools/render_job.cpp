@@ -114,11 +114,15 @@ HairSystemSettings systemSettings(const RenderRequest& r, const hairpipe::Attach
   return s;
 }
 
-void validateRequest(const RenderRequest& r) {
-  if (r.settleFrames > 100000) throw Error("settle frames must be at most 100000");
+void validateExposure(float exposure, const std::string& name) {
   // 1e6 is past any useful exposure and keeps radiance x exposure (at most 65504 x 1e6) far inside float's
   // range; 3e38 made every lit pixel infinite, which the tonemap turned black.
-  if (!(r.exposure > 0.0f && r.exposure <= 1.0e6f)) throw Error("exposure must be in (0, 1e6], got " + numberText(r.exposure));
+  if (!(exposure > 0.0f && exposure <= 1.0e6f)) throw Error(name + " must be in (0, 1e6], got " + numberText(exposure));
+}
+
+void validateRequest(const RenderRequest& r) {
+  if (r.settleFrames > 100000) throw Error("settle frames must be at most 100000");
+  validateExposure(r.exposure, "exposure");
   validateLights(frameLights(r));  // also catches a hand-built LightSpec that skipped the scene parser
 }
 

@@ -6,6 +6,7 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "engine/core/hair/hair_file.h"
@@ -83,4 +84,6 @@ std::uint32_t renderSequence(const vk::Context& ctx, const HairAsset& asset, con
 HairSystemSettings systemSettings(const RenderRequest& request, const hairpipe::AttachmentFormats& formats);
 // Throws hp::Error for a request renderStill would refuse (frame counts, exposure, lights).
 void validateRequest(const RenderRequest& request);
+// Throws hp::Error "<name> must be in (0, 1e6], got E" for an exposure the tonemap cannot take (render, view).
+void validateExposure(float exposure, const std::string& name);
 }  // namespace hp

@@ -7,9 +7,9 @@
 #include <nlohmann/json.hpp>
 
 #include "engine/core/error.h"
-#include "engine/core/number_text.h"
 #include "samples/tools/character_clip.h"
 #include "samples/tools/host/camera_fit.h"
+#include "samples/tools/render_job.h"
 #include "engine/vk/check.h"
 #include "samples/cli/command.h"
 #include "samples/cli/frame_options.h"
@@ -112,7 +112,7 @@ hp::viewer::ViewerOptions viewerOptions(const ViewOptions& o, const CLI::App& cm
   r.lutMode = hp::parseLutMode(o.lutMode);
   if (const auto clip = hp::clipOfAnimate(o.animate)) r.characterClip = *clip;
   else r.animation = hp::parseHeadAnimation(o.animate);
-  if (!(o.exposure > 0.0f && o.exposure <= 1.0e6f)) throw hp::Error("--exposure must be in (0, 1e6], got " + hp::numberText(o.exposure));
+  hp::validateExposure(o.exposure, "--exposure");
   r.exposure = o.exposure;
   if (o.frames > kMaxFrames) throw hp::Error("--frames must be at most 1000000 (0: until the window closes)");
   v.frames = o.frames;

@@ -83,6 +83,7 @@ TEST(CliRender, BadOptionsExitWithAMessageAndWriteNothing) {
       {{"--lines", "--raster", "compute"}, "--lines"},
       {{"--lut-mode", "bogus"}, "bogus"},   {{"--light-dir", "0,0,0"}, "light-dir"},
       {{"--exposure", "-1"}, "exposure"},   {{"--eta", "0.5"}, "eta"},
+      {{"--exposure", "3e38"}, "exposure must be in (0, 1e6], got 3e+38"},
       {{"--animate", "spin"}, "spin"},      {{"--density", "0"}, "total"},
       {{"--width", "16385"}, "--width/--height must be in [1, 16384]"},
       {{"--camera-orbit", "inf"}, "--camera-orbit must be a finite angle"},

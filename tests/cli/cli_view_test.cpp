@@ -113,6 +113,7 @@ TEST(CliView, BadOptionsAreRefusedBeforeAWindowOpens) {
       {{"--frames", "2", "--width", "0"}, "width"},
       {{"--frames", "2000000"}, "at most 1000000"},
       {{"--frames", "2", "--opacity-resolution", "8"}, "resolution"},
+      {{"--frames", "2", "--exposure", "3e38"}, "--exposure must be in (0, 1e6], got 3e+38"},
       {{"--frames", "2", "--minimise-at", "1:0"}, "--minimise-at"},
       {{"--frames", "2", "--fault-at", "1:vkAcquireNextImageKHR:VK_ERROR_OUT_OF_DATE_KHR"}, "--fault-at"},
       {{"--frames", "2", "--fault-at", "1:vkWaitForFences:VK_ERROR_OUT_OF_DATE_KHR"}, "--fault-at"},
