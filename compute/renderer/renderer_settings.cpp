@@ -71,10 +71,10 @@ void validate(const hairpipe::LodSettings& lod) {
       !(lod.endDistance > lod.startDistance))
     throw Error("LodSettings: the distances must be finite with 0 <= startDistance < endDistance, got " +
                 std::to_string(lod.startDistance) + " and " + std::to_string(lod.endDistance));
-  // The strands drawn are widened by 1 / fraction: below a thousandth they would be widths of whole heads
-  // (and a fraction that rounds to 0 a division by it).
-  if (!(lod.minFraction >= 0.001f && lod.minFraction <= 1.0f))
-    throw Error("LodSettings.minFraction must be in [0.001, 1], got " + numberText(lod.minFraction));
+  // (A fraction that rounds to 0 in lodFraction's blend would be a division by it.)
+  if (!(lod.minFraction >= kMinLodFraction && lod.minFraction <= 1.0f))
+    throw Error("LodSettings.minFraction must be in [" + numberText(kMinLodFraction) + ", 1], got " +
+                numberText(lod.minFraction));
 }
 
 float lodFraction(const hairpipe::LodSettings& lod, float distance) {

@@ -24,6 +24,9 @@
 namespace hp {
 inline constexpr std::uint32_t kMaxFramesInFlight = 8;
 inline constexpr std::uint32_t kMaxViewsPerFrame = 16;
+// The fewest of its strands a level of detail may draw (LodSettings.minFraction, bench --lod-fraction): the
+// strands drawn are widened by 1 / fraction, and below a thousandth they would be widths of whole heads.
+inline constexpr float kMinLodFraction = 0.001f;
 
 struct RendererSettings {
   hairpipe::AttachmentFormats formats;  // the application's attachments the draws go into
@@ -68,7 +71,8 @@ struct InstanceSettings {
 // an unused, SRGB or integer format, with motion vectors on, finite scales and offsets and minCoverage in [0, 1).
 void validateVelocityOutput(const hairpipe::VelocityOutput& v, const hairpipe::AttachmentFormats& formats,
                             bool motionVectors);
-// hp::Error naming the field unless the distances are finite, 0 <= start < end, and minFraction in (0, 1].
+// hp::Error naming the field unless the distances are finite, 0 <= start < end, and minFraction in
+// [kMinLodFraction, 1].
 void validate(const hairpipe::LodSettings& lod);
 // The fraction of the strands drawn at `distance` (1 when LOD is off; see hairpipe::LodSettings).
 float lodFraction(const hairpipe::LodSettings& lod, float distance);

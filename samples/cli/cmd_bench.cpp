@@ -151,8 +151,9 @@ void checkRanges(const BenchOptions& o) {
   for (std::uint32_t m : o.msaa)
     if (m != 1 && m != 2 && m != 4 && m != 8) throw hp::Error("bench: --msaa values must be 1, 2, 4 or 8, got " + std::to_string(m));
   for (float f : o.lodFractions)
-    if (!(f >= 0.001f && f <= 1.0f))  // LodSettings.minFraction's range: drawn strands widen by 1 / f
-      throw hp::Error("bench: --lod-fraction values must be in [0.001, 1], got " + hp::numberText(f));
+    if (!(f >= hp::kMinLodFraction && f <= 1.0f))
+      throw hp::Error("bench: --lod-fraction values must be in [" + hp::numberText(hp::kMinLodFraction) + ", 1], got " +
+                      hp::numberText(f));
   for (std::uint32_t n : o.lights)
     if (n < 1 || n > 4) throw hp::Error("bench: --lights values must be in [1, 4], got " + std::to_string(n));
   for (std::uint32_t n : o.bounceSamples)

@@ -183,11 +183,14 @@ TEST(CliBench, RefusesBadSkinBounceAndBounceSampleValues) {
                      "bench: --bounce-samples values must be in [2, 256], got 1");
 }
 
-// `bench --msaa` values are sample counts a render target takes, `--resolution` two sides in [1, 16384]: refused
-// by name before a model is built (a side past 2^32 wrapped around to a small one, and a frame ran).
-TEST(CliBench, RefusesBadMsaaAndResolutionValues) {
+// `bench --msaa` values are sample counts a render target takes, `--resolution` two sides in [1, 16384], and
+// `--lod-fraction` values in LodSettings.minFraction's range: refused by name before a model is built (a side
+// past 2^32 wrapped around to a small one, and a frame ran).
+TEST(CliBench, RefusesBadMsaaResolutionAndLodFractionValues) {
   expectBenchRefused({"bench", "--raster", "compute", "--msaa", "4,3", "--frames", "1"},
                      "bench: --msaa values must be 1, 2, 4 or 8, got 3");
+  expectBenchRefused({"bench", "--raster", "compute", "--lod-fraction", "0.5,0.0001", "--frames", "1"},
+                     "bench: --lod-fraction values must be in [0.001, 1], got 0.0001");
   for (const char* size : {"4294967328x4294967320", "-5x24", "32x24x", "32x0", "x24", "32 x24"}) {
     SCOPED_TRACE(size);
     expectBenchRefused({"bench", "--raster", "compute", "--resolution", size, "--frames", "1", "--strands", "100"},
