@@ -85,6 +85,13 @@ void Renderer::requireNoDeferredWork(const char* call) const {
                 "between frames)");
 }
 
+void Renderer::requireTargetExtent(const char* what, VkExtent2D extent, const ComputeRaster& target) {
+  if (extent.width != target.extent().width || extent.height != target.extent().height)
+    throw Error(std::string(what) + " " + std::to_string(extent.width) + "x" + std::to_string(extent.height) +
+                " differs from the raster target's " + std::to_string(target.extent().width) + "x" +
+                std::to_string(target.extent().height));
+}
+
 void Renderer::requireShadows(const char* call, std::uint64_t frame) const {
   if (shadowsFrame_ != frame)
     throw Error(std::string("Renderer::") + call + ": frame " + std::to_string(frame) +
@@ -240,10 +247,7 @@ void Renderer::recordRaster(VkCommandBuffer cmd, std::uint64_t frame, const View
   ComputeRaster& t = target.raster();
   view.validate(settings_.maxViewsPerFrame, settings_.formats.reversedDepth);
   // The strands' width in pixels comes from the view's extent, the tiles from the target's: they must agree.
-  if (view.extent.width != t.extent().width || view.extent.height != t.extent().height)
-    throw Error("Renderer::recordRaster: View.extent " + std::to_string(view.extent.width) + "x" +
-                std::to_string(view.extent.height) + " differs from the raster target's " +
-                std::to_string(t.extent().width) + "x" + std::to_string(t.extent().height));
+  requireTargetExtent("Renderer::recordRaster: View.extent", view.extent, t);
   requireShadows("recordRaster", frame);
   requireComputedStrands("recordRaster", t.instances());
   beginFrame(frame, t.instances());
@@ -257,10 +261,7 @@ void Renderer::recordComposite(VkCommandBuffer cmd, VkExtent2D extent, const Ras
   const ComputeRaster& t = target.raster();
   // The composite fetches the hair image at each fragment's pixel: an attachment of another size would read
   // past the image or leave hair out.
-  if (extent.width != t.extent().width || extent.height != t.extent().height)
-    throw Error("Renderer::recordComposite: the extent " + std::to_string(extent.width) + "x" +
-                std::to_string(extent.height) + " differs from the raster target's " + std::to_string(t.extent().width) +
-                "x" + std::to_string(t.extent().height));
+  requireTargetExtent("Renderer::recordComposite: the extent", extent, t);
   // Its image is the frame recordRaster last drew: without this frame's, an older frame's hair would be
   // composited (the hair a frame behind its heads).
   if (!lastFrame_ || t.drawnFrame() != ComputeRaster::FrameId{recordEpoch_, *lastFrame_})

@@ -219,6 +219,8 @@ class Renderer {
   // recordDraw / recordRaster: every change's work was executed (a change between a frame's record calls
   // would draw resources not yet uploaded).
   void requireNoDeferredWork(const char* call) const;
+  // recordRaster / recordComposite: `extent` is the target's ("<what> WxH differs from the raster target's WxH").
+  static void requireTargetExtent(const char* what, VkExtent2D extent, const ComputeRaster& target);
   // recordDraw / recordRaster: this frame's recordShadows came first (its lights, and the barrier that makes the
   // strands drawable).
   void requireShadows(const char* call, std::uint64_t frame) const;

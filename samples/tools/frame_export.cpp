@@ -386,9 +386,7 @@ ExportedFrame makeExportedFrame(const RenderRequest& request, const HairAsset& a
 void writeFrameExport(const std::filesystem::path& dir, const ExportedFrame& frame) {
   // frame.json goes first and comes back last: an export whose later file fails to write leaves no frame.json
   // beside the new files, rather than an earlier export's that `reference --frame` would read with them.
-  std::error_code ec;
-  std::filesystem::remove(dir / FrameExportFiles::json, ec);
-  if (ec) throw Error("cannot replace " + (dir / FrameExportFiles::json).string() + ": " + ec.message());
+  removeBeforeRewrite(dir / FrameExportFiles::json);
   writeHairFile(dir / FrameExportFiles::strands, frame.strands);
   writeAlbedoObj(dir / FrameExportFiles::head, {frame.headPositions, frame.headNormals, frame.headAlbedo, frame.headIndices});
   if (frame.environmentMap) writePfm(dir / FrameExportFiles::environment, environmentImage(*frame.environmentMap));

@@ -134,9 +134,7 @@ void writeOpacityDump(const std::filesystem::path& dir, const OpacityCapture& c)
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
   if (ec) throw Error("cannot create " + dir.string() + ": " + ec.message());
-  // The JSON that describes the slices goes first and comes back last (a failed dump leaves none beside them).
-  std::filesystem::remove(dir / "opacity_slices.json", ec);
-  if (ec) throw Error("cannot replace " + (dir / "opacity_slices.json").string() + ": " + ec.message());
+  removeBeforeRewrite(dir / "opacity_slices.json");  // the JSON describing the slices goes first, comes back last
   for (std::uint32_t s = 0; s < gpu::OPACITY_SLICES; ++s) writeFileAtomically(dir / sliceName(s + 1), sliceOfPfm(c, s));
   std::uint32_t side = 0;
   const std::vector<std::uint8_t> sheet = contactSheet(c, side);

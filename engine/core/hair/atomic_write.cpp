@@ -76,4 +76,10 @@ void writeFileAtomically(const std::filesystem::path& given, std::span<const std
 void replaceCacheFile(const std::filesystem::path& path, std::span<const std::byte> bytes) {
   writeAndRename(path, bytes, false);
 }
+
+void removeBeforeRewrite(const std::filesystem::path& path) {
+  std::error_code ec;
+  std::filesystem::remove(path, ec);  // none there: not an error
+  if (ec) throw Error("cannot replace " + path.string() + ": " + ec.message());
+}
 }  // namespace hp

@@ -16,6 +16,11 @@ std::filesystem::path atomicWriteDestination(const std::filesystem::path& path);
 
 void writeFileAtomically(const std::filesystem::path& path, std::span<const std::byte> bytes);
 
+// Removes the file at `path` if there is one, before a set of files it describes is rewritten (it is then
+// written last, so a failure half way leaves none beside files it does not describe). Throws hp::Error naming
+// the path if it cannot be removed.
+void removeBeforeRewrite(const std::filesystem::path& path);
+
 // The same for files that are only a cache of values that can be made again (engine/core/disk_cache.h): whatever
 // is at `path` but a folder is replaced, a link itself and not the file it names (a link planted in a cache folder
 // cannot redirect the write), and the file is not flushed to the disk before the rename (a torn file after a crash
