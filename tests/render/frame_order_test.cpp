@@ -36,6 +36,15 @@ struct OrderScene {
     target.attach(renderer, one());
   }
   std::vector<hp::HairInstance*> one() const { return {hair.get()}; }
+  // A whole frame in order: update, shadows, then the heads, the raster and the composite.
+  void recordFrame(VkCommandBuffer cmd, std::uint64_t frame, const hp::View& view) {
+    renderer.recordUpdate(cmd, frame, one());
+    renderer.recordShadows(cmd, frame, hp::LightSpec{}, one());
+    target.record(cmd, renderer, frame, view, one(), 1.0f);
+  }
+  void drawFrame(const hp::vk::Context& ctx, std::uint64_t frame, const hp::View& view) {
+    hp::vk::submitAndWait(ctx, [&](VkCommandBuffer cmd) { recordFrame(cmd, frame, view); }, "frame in order");
+  }
   hp::render::OffscreenRenderer target;
   hp::Renderer renderer;
   std::unique_ptr<hp::HairInstance> hair;
@@ -70,18 +79,14 @@ TEST_F(VulkanTest, StrandsNoUpdateComputedAreRefusedUntilOneDoes) {
   hp::vk::submitAndWait(*ctx, [&](VkCommandBuffer cmd) {
     EXPECT_NE(refusalOf([&] { s.renderer.recordShadows(cmd, 0, hp::LightSpec{}, one); }).find(notComputed),
               std::string::npos);
-    s.renderer.recordUpdate(cmd, 0, one);
-    s.renderer.recordShadows(cmd, 0, hp::LightSpec{}, one);
-    s.target.record(cmd, s.renderer, 0, view, one, 1.0f);
+    s.recordFrame(cmd, 0, view);
   }, "frame 0");
   // New strands (another density) between frames: their buffers hold nothing until the next update.
   s.hair->setStrands(hp::test::defaultHeadWithStrands(800).topology, s.hair->settings().strands);
   hp::vk::submitAndWait(*ctx, [&](VkCommandBuffer cmd) {
     EXPECT_NE(refusalOf([&] { s.renderer.recordShadows(cmd, 1, hp::LightSpec{}, one); }).find(notComputed),
               std::string::npos);
-    s.renderer.recordUpdate(cmd, 1, one);
-    s.renderer.recordShadows(cmd, 1, hp::LightSpec{}, one);
-    s.target.record(cmd, s.renderer, 1, view, one, 1.0f);
+    s.recordFrame(cmd, 1, view);
   }, "frame 1");
 }
 
@@ -100,11 +105,7 @@ TEST_F(VulkanTest, ACompositeWithoutItsFramesRasterIsRefused) {
   const VkExtent2D extent{hp::test::kSmallWidth, hp::test::kSmallHeight};
   const std::string notDrawn = "the raster target has not drawn this frame";
   EXPECT_NE(refusalOf([&] { s.renderer.recordComposite(VK_NULL_HANDLE, extent); }).find(notDrawn), std::string::npos);
-  hp::vk::submitAndWait(*ctx, [&](VkCommandBuffer cmd) {
-    s.renderer.recordUpdate(cmd, 0, one);
-    s.renderer.recordShadows(cmd, 0, hp::LightSpec{}, one);
-    s.target.record(cmd, s.renderer, 0, view, one, 1.0f);  // raster, then composite: drawn
-  }, "frame 0");
+  s.drawFrame(*ctx, 0, view);  // raster, then composite: drawn
   hp::vk::submitAndWait(*ctx, [&](VkCommandBuffer cmd) {
     s.renderer.recordUpdate(cmd, 1, one);
     s.renderer.recordShadows(cmd, 1, hp::LightSpec{}, one);
@@ -183,11 +184,7 @@ TEST_F(VulkanTest, AfterRecordChangesTheUpdateAndShadowsMayBeRecordedIntoASecond
   OrderScene s(*ctx);
   const hp::View view = hp::test::smallFrontView(1.6f);
   const std::vector<hp::HairInstance*> one = s.one();
-  hp::vk::submitAndWait(*ctx, [&](VkCommandBuffer cmd) {
-    s.renderer.recordUpdate(cmd, 0, one);
-    s.renderer.recordShadows(cmd, 0, hp::LightSpec{}, one);
-    s.target.record(cmd, s.renderer, 0, view, one, 1.0f);
-  }, "frame 0");
+  s.drawFrame(*ctx, 0, view);
   s.hair->setStrands(hp::test::defaultHeadWithStrands(800).topology, s.hair->settings().strands);
   VkCommandPool pool = VK_NULL_HANDLE;
   VkCommandPoolCreateInfo pi{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
