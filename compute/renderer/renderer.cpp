@@ -368,11 +368,11 @@ void Renderer::recordChanges(VkCommandBuffer cmd, std::uint64_t frame, std::span
   beginFrame(frame, instances);
   applyReadyMaterials(instances);
   executeDeferred(cmd);
-  changesFrame_ = {recordEpoch_, frame};
+  changesFrame_ = frame;
 }
 
 void Renderer::applyChanges(VkCommandBuffer cmd, std::uint64_t frame, std::span<HairInstance* const> instances) {
-  if (changesFrame_ == ComputeRaster::FrameId{recordEpoch_, frame}) return;  // the application's recordChanges took them
+  if (changesFrame_ == frame) return;  // the application's recordChanges took them
   applyReadyMaterials(instances);
   executeDeferred(cmd);
 }

@@ -171,6 +171,7 @@ class Renderer {
     numberingRestarts_ = true;
     ++recordEpoch_;
     shadowsFrame_.reset();
+    changesFrame_.reset();
   }
   // The lights and heads' depth map framings of the current frame's recordShadows: none before it (a later
   // frame's recordUpdate, or a restarted numbering, makes the latest one another frame's).
@@ -262,7 +263,7 @@ class Renderer {
   bool numberingRestarts_ = false;  // releaseRetired: the next frame number may be below lastFrame_
   std::uint64_t recordEpoch_ = 0;
   std::optional<std::uint64_t> shadowsFrame_;  // the frame of the latest recordShadows
-  std::optional<ComputeRaster::FrameId> changesFrame_;  // the frame of the latest recordChanges
+  std::optional<std::uint64_t> changesFrame_;  // the frame of the latest recordChanges
   std::shared_ptr<RasterTarget> ownTarget_;  // setRasterTarget's; a replaced raster is retired through retire()
   std::vector<std::weak_ptr<RasterTarget>> targets_;  // every target made, the own one too: rebuilt on changes
   std::vector<std::shared_ptr<vk::DeferredWork>> deferred_;  // changes' uploads not yet executed
